@@ -1,0 +1,491 @@
+"""Arrangement: the one core data type of strew.
+
+A set of placed elements stored column-wise. Each element has a ``kind`` (index into the
+shape library), a position ``x, y``, a ``rotation`` (radians) and a uniform ``scale``, and
+may carry optional columns (``color``, ``sub_id``, ``radius``, ``neighborhood_radius``,
+``void``, ``layer`` ...). The arrangement also carries its shape library (kind name ->
+:class:`~strew.shape.Shape`), an optional :class:`~strew.region.Region` and ``meta``.
+
+Transform convention (DESIGN.md): element ``i`` maps a local point ``p`` to::
+
+    p_world = (x_i, y_i) + scale_i * R(rotation_i) @ p,   R(t) = [[cos t, -sin t],
+                                                                   [sin t,  cos t]]
+
+in SVG's y-down coordinates; this is exactly ``translate(x y) rotate(deg(t)) scale(s)``.
+
+Arrangements are immutable: every operation returns a new one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+import shapely
+
+from ._errors import InputError
+from .region import Region
+from .shape import Shape
+
+__all__ = ["Arrangement", "concat", "transform_points", "CORE_COLUMNS"]
+
+CORE_COLUMNS = ("kind", "x", "y", "rotation", "scale")
+
+
+def transform_points(points: np.ndarray, x: float, y: float, rotation: float, scale: float) -> np.ndarray:
+    """Map local points to world space with the strew convention.
+
+    Parameters
+    ----------
+    points : (n, 2) float
+    x, y, rotation, scale : float
+
+    Returns
+    -------
+    (n, 2) float
+
+    Examples
+    --------
+    >>> transform_points(np.array([[1.0, 0.0]]), 10, 20, np.pi / 2, 2).round(9).tolist()
+    [[10.0, 22.0]]
+    """
+    c, s = np.cos(rotation), np.sin(rotation)
+    p = np.asarray(points, dtype=float)
+    return np.c_[x + scale * (c * p[:, 0] - s * p[:, 1]), y + scale * (s * p[:, 0] + c * p[:, 1])]
+
+
+def _readonly(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, copy=True)
+    a.setflags(write=False)
+    return a
+
+
+def _column_array(name: str, values: Any, n: int) -> np.ndarray:
+    if isinstance(values, np.ndarray):
+        arr = values
+    else:
+        values = list(values)
+        try:
+            arr = np.asarray(values)
+        except ValueError:  # ragged
+            arr = np.empty(len(values), dtype=object)
+            arr[:] = values
+        if arr.dtype.kind == "U":
+            obj = np.empty(len(values), dtype=object)
+            obj[:] = values
+            arr = obj
+    if arr.ndim == 0 or len(arr) != n:
+        got = "a scalar" if arr.ndim == 0 else f"length {len(arr)}"
+        raise InputError(f"elements.{name}: {got} does not match elements.kind length {n}")
+    return _readonly(arr)
+
+
+class Arrangement:
+    """Placed elements, column-wise, with their shape library.
+
+    Parameters
+    ----------
+    shapes : mapping of str to Shape
+        The shape library; its order fixes kind indices.
+    kind : (n,) int or str
+        Kind of each element: an index into ``shapes`` or a kind name.
+    x, y : (n,) float
+        Positions.
+    rotation : (n,) float, optional
+        Radians (default 0).
+    scale : (n,) float, optional
+        Uniform scale (default 1).
+    columns : mapping of str to (n, ...) array, optional
+        Extra per-element columns; they travel through every operation and round-trip.
+    region : Region, optional
+        The domain the elements fill.
+    meta : mapping, optional
+        How the arrangement was made (generator, method, seed, params, command).
+    extra : mapping, optional
+        Other top-level document entries (e.g. connectivity), kept for the round trip.
+
+    Examples
+    --------
+    >>> from strew import Shape
+    >>> a = Arrangement({"dot": Shape.circle(1)}, ["dot", "dot"], [0, 5], [0, 0])
+    >>> len(a), a.kinds
+    (2, ('dot',))
+    >>> a.select(a.x > 1).x.tolist()
+    [5.0]
+    """
+
+    def __init__(
+        self,
+        shapes: Mapping[str, Shape],
+        kind: Sequence[int] | Sequence[str] | np.ndarray,
+        x: Sequence[float] | np.ndarray,
+        y: Sequence[float] | np.ndarray,
+        rotation: Sequence[float] | np.ndarray | None = None,
+        scale: Sequence[float] | np.ndarray | None = None,
+        *,
+        columns: Mapping[str, Any] | None = None,
+        region: Region | None = None,
+        meta: Mapping[str, Any] | None = None,
+        extra: Mapping[str, Any] | None = None,
+    ) -> None:
+        shapes = dict(shapes)
+        for name, sh in shapes.items():
+            if not isinstance(name, str) or not name:
+                raise InputError(f"shapes: kind names must be non-empty strings, got {name!r}")
+            if not isinstance(sh, Shape):
+                raise InputError(f"shapes.{name}: must be a Shape, got {type(sh).__name__}")
+        self._shapes = shapes
+        self._kinds = tuple(shapes)
+        kind_arr = np.asarray(kind)
+        n = len(kind_arr) if kind_arr.ndim else 0
+        if kind_arr.ndim != 1 and not (kind_arr.ndim == 0 or kind_arr.size == 0):
+            raise InputError("elements.kind: must be a list")
+        if kind_arr.size == 0:
+            n = 0
+            kind_idx = np.zeros(0, dtype=np.int32)
+        elif kind_arr.dtype.kind in "iu":
+            kind_idx = kind_arr.astype(np.int32)
+            bad = np.flatnonzero((kind_idx < 0) | (kind_idx >= len(self._kinds)))
+            if len(bad):
+                raise InputError(
+                    f"elements.kind[{bad[0]}]: unknown kind index {kind_arr[bad[0]]} (library has {len(self._kinds)} kinds)"
+                )
+        else:
+            lookup = {k: i for i, k in enumerate(self._kinds)}
+            kind_idx = np.empty(n, dtype=np.int32)
+            for i, k in enumerate(kind_arr.tolist()):
+                j = lookup.get(k) if isinstance(k, str) else None
+                if j is None:
+                    known = ", ".join(self._kinds) or "none"
+                    raise InputError(f"elements.kind[{i}]: unknown kind {k!r} (known: {known})")
+                kind_idx[i] = j
+        self._kind = _readonly(kind_idx)
+
+        def core(name: str, values: Any, default: float) -> np.ndarray:
+            if values is None:
+                return _readonly(np.full(n, default, dtype=float))
+            try:
+                arr = np.asarray(values, dtype=float)
+            except (TypeError, ValueError):
+                raise InputError(f"elements.{name}: must be numbers") from None
+            if arr.ndim != 1 or len(arr) != n:
+                got = f"length {len(arr)}" if arr.ndim == 1 else f"shape {arr.shape}"
+                raise InputError(f"elements.{name}: {got} does not match elements.kind length {n}")
+            bad = np.flatnonzero(~np.isfinite(arr))
+            if len(bad):
+                raise InputError(f"elements.{name}[{bad[0]}]: NaN or inf coordinate")
+            return _readonly(arr)
+
+        self._x = core("x", x, 0.0)
+        self._y = core("y", y, 0.0)
+        self._rotation = core("rotation", rotation, 0.0)
+        self._scale = core("scale", scale, 1.0)
+        cols: dict[str, np.ndarray] = {}
+        for name, values in dict(columns or {}).items():
+            if name in CORE_COLUMNS:
+                raise InputError(f"columns: {name!r} is a core column, pass it directly")
+            cols[str(name)] = _column_array(name, values, n)
+        self._columns = cols
+        if region is not None and not isinstance(region, Region):
+            raise InputError(f"region: must be a Region, got {type(region).__name__}")
+        self._region = region
+        self._meta = dict(meta or {})
+        self._extra = dict(extra or {})
+
+    # -- columns ----------------------------------------------------------------------
+    @property
+    def shapes(self) -> dict[str, Shape]:
+        """Shape library, kind name -> Shape (a copy)."""
+        return dict(self._shapes)
+
+    @property
+    def kinds(self) -> tuple[str, ...]:
+        """Kind names in index order."""
+        return self._kinds
+
+    @property
+    def kind(self) -> np.ndarray:
+        """(n,) int32 kind indices into :attr:`kinds`."""
+        return self._kind
+
+    @property
+    def kind_names(self) -> np.ndarray:
+        """(n,) object array of kind names."""
+        names = np.empty(len(self._kinds), dtype=object)
+        names[:] = self._kinds
+        return names[self._kind] if len(self._kinds) else np.zeros(0, dtype=object)
+
+    @property
+    def x(self) -> np.ndarray:
+        """(n,) float positions."""
+        return self._x
+
+    @property
+    def y(self) -> np.ndarray:
+        """(n,) float positions."""
+        return self._y
+
+    @property
+    def xy(self) -> np.ndarray:
+        """(n, 2) float positions."""
+        return np.c_[self._x, self._y]
+
+    @property
+    def rotation(self) -> np.ndarray:
+        """(n,) float rotations in radians."""
+        return self._rotation
+
+    @property
+    def scale(self) -> np.ndarray:
+        """(n,) float uniform scales."""
+        return self._scale
+
+    @property
+    def columns(self) -> dict[str, np.ndarray]:
+        """Extra columns (name -> read-only array)."""
+        return dict(self._columns)
+
+    @property
+    def region(self) -> Region | None:
+        return self._region
+
+    @property
+    def meta(self) -> dict[str, Any]:
+        """Metadata (a copy)."""
+        return dict(self._meta)
+
+    @property
+    def extra(self) -> dict[str, Any]:
+        """Other top-level document entries (a copy)."""
+        return dict(self._extra)
+
+    def __len__(self) -> int:
+        return len(self._kind)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        """Column by name: a core column or an extra one."""
+        if name in CORE_COLUMNS:
+            return getattr(self, name)
+        try:
+            return self._columns[name]
+        except KeyError:
+            raise KeyError(f"no column {name!r}; have {', '.join(CORE_COLUMNS + tuple(self._columns))}") from None
+
+    def __contains__(self, name: object) -> bool:
+        return name in CORE_COLUMNS or name in self._columns
+
+    # -- derived ----------------------------------------------------------------------
+    @cached_property
+    def geometry(self) -> np.ndarray:
+        """(n,) shapely geometries in world space (see the module's transform convention)."""
+        return self.geometry_of("geometry")
+
+    def geometry_of(self, which: str = "geometry") -> np.ndarray:
+        """(n,) world-space geometries of a shape attribute.
+
+        Parameters
+        ----------
+        which : {"geometry", "area_geometry", "line_geometry"}
+        """
+        out = np.empty(len(self), dtype=object)
+        for k, name in enumerate(self._kinds):
+            idx = np.flatnonzero(self._kind == k)
+            if len(idx) == 0:
+                continue
+            local = getattr(self._shapes[name], which)
+            if local.is_empty:
+                out[idx] = local
+                continue
+            ncoords = int(shapely.get_num_coordinates(local))
+            c = np.repeat(np.cos(self._rotation[idx]) * self._scale[idx], ncoords)
+            s = np.repeat(np.sin(self._rotation[idx]) * self._scale[idx], ncoords)
+            tx = np.repeat(self._x[idx], ncoords)
+            ty = np.repeat(self._y[idx], ncoords)
+
+            def f(p: np.ndarray, c=c, s=s, tx=tx, ty=ty) -> np.ndarray:
+                return np.c_[tx + c * p[:, 0] - s * p[:, 1], ty + s * p[:, 0] + c * p[:, 1]]
+
+            out[idx] = shapely.transform(np.full(len(idx), local, dtype=object), f)
+        return out
+
+    @cached_property
+    def sindex(self) -> shapely.STRtree:
+        """STRtree over :attr:`geometry` (indices are element indices)."""
+        return shapely.STRtree(self.geometry)
+
+    @property
+    def bounds(self) -> tuple[float, float, float, float]:
+        """World bounds of all elements; the region's when empty."""
+        if len(self) == 0:
+            if self._region is not None:
+                return self._region.bounds
+            return (0.0, 0.0, 0.0, 0.0)
+        b = shapely.total_bounds(self.geometry)
+        if not np.all(np.isfinite(b)):  # only empty shapes
+            return (float(self._x.min()), float(self._y.min()), float(self._x.max()), float(self._y.max()))
+        return tuple(float(v) for v in b)  # type: ignore[return-value]
+
+    def counts(self) -> dict[str, int]:
+        """Number of elements per kind name."""
+        c = np.bincount(self._kind, minlength=len(self._kinds))
+        return {k: int(c[i]) for i, k in enumerate(self._kinds)}
+
+    # -- operations -------------------------------------------------------------------
+    def replace(self, **changes: Any) -> Arrangement:
+        """Copy with some of ``shapes, kind, x, y, rotation, scale, columns, region, meta, extra`` replaced."""
+        args: dict[str, Any] = dict(
+            shapes=self._shapes,
+            kind=self._kind,
+            x=self._x,
+            y=self._y,
+            rotation=self._rotation,
+            scale=self._scale,
+            columns=self._columns,
+            region=self._region,
+            meta=self._meta,
+            extra=self._extra,
+        )
+        unknown = set(changes) - set(args)
+        if unknown:
+            raise TypeError(f"replace: unknown field(s) {', '.join(sorted(unknown))}")
+        args.update(changes)
+        return Arrangement(**args)
+
+    def with_columns(self, **columns: Any) -> Arrangement:
+        """Copy with extra columns added or replaced (core columns too)."""
+        core = {k: v for k, v in columns.items() if k in CORE_COLUMNS}
+        extra = {k: v for k, v in columns.items() if k not in CORE_COLUMNS}
+        return self.replace(columns={**self._columns, **extra}, **core)
+
+    def without_columns(self, *names: str) -> Arrangement:
+        """Copy without the named extra columns."""
+        return self.replace(columns={k: v for k, v in self._columns.items() if k not in names})
+
+    def with_meta(self, **meta: Any) -> Arrangement:
+        """Copy with metadata entries added or replaced."""
+        return self.replace(meta={**self._meta, **meta})
+
+    def select(self, which: np.ndarray | Sequence[int] | Sequence[bool] | slice) -> Arrangement:
+        """Subset of elements by boolean mask, indices or slice (shape library kept)."""
+        if isinstance(which, slice):
+            idx = np.arange(len(self))[which]
+        else:
+            w = np.asarray(which)
+            if w.dtype == bool:
+                if w.shape != (len(self),):
+                    raise InputError(f"select: mask has shape {w.shape}, expected ({len(self)},)")
+                idx = np.flatnonzero(w)
+            else:
+                idx = w.astype(np.intp).ravel()
+        return Arrangement(
+            self._shapes,
+            self._kind[idx],
+            self._x[idx],
+            self._y[idx],
+            self._rotation[idx],
+            self._scale[idx],
+            columns={k: v[idx] for k, v in self._columns.items()},
+            region=self._region,
+            meta=self._meta,
+            extra=self._extra,
+        )
+
+    def concat(self, *others: Arrangement) -> Arrangement:
+        """This arrangement followed by ``others``; see :func:`concat`."""
+        return concat([self, *others])
+
+    # -- display ----------------------------------------------------------------------
+    def to_svg(self, **kwargs: Any) -> str:
+        """SVG text; see :func:`strew.io.svg.to_svg`."""
+        from .io.svg import to_svg
+
+        return to_svg(self, **kwargs)
+
+    def _repr_svg_(self) -> str:
+        return self.to_svg(width=480)
+
+    def __repr__(self) -> str:
+        counts = ", ".join(f"{k}: {v}" for k, v in self.counts().items())
+        cols = f", columns={list(self._columns)}" if self._columns else ""
+        return f"Arrangement({len(self)} elements {{{counts}}}{cols})"
+
+    def equals(self, other: Arrangement) -> bool:
+        """Exact equality of shapes, columns, region, meta and extra."""
+        if not isinstance(other, Arrangement) or len(self) != len(other):
+            return False
+        if self._kinds != other._kinds or any(self._shapes[k] != other._shapes[k] for k in self._kinds):
+            return False
+        for name in CORE_COLUMNS:
+            if not np.array_equal(getattr(self, name), getattr(other, name)):
+                return False
+        if self._columns.keys() != other._columns.keys():
+            return False
+        for k, v in self._columns.items():
+            w = other._columns[k]
+            if v.shape != w.shape or v.tolist() != w.tolist():
+                return False
+        if (self._region is None) != (other._region is None):
+            return False
+        if self._region is not None and self._region != other._region:
+            return False
+        return self._meta == other._meta and self._extra == other._extra
+
+
+def _column_concat(name: str, parts: list[np.ndarray | None], lengths: list[int]) -> np.ndarray:
+    present = [p for p in parts if p is not None]
+    ref = present[0]
+    filled = []
+    for p, n in zip(parts, lengths):
+        if p is None:
+            if ref.dtype.kind == "f":
+                p = np.full((n, *ref.shape[1:]), np.nan)
+            elif ref.dtype.kind == "b":
+                p = np.zeros((n, *ref.shape[1:]), dtype=bool)
+            elif ref.dtype.kind in "iu":
+                p = np.zeros((n, *ref.shape[1:]), dtype=ref.dtype)
+            else:
+                p = np.empty((n, *ref.shape[1:]), dtype=object)
+        filled.append(p)
+    try:
+        return np.concatenate(filled)
+    except ValueError as exc:
+        raise InputError(f"concat: column {name!r} has incompatible shapes ({exc})") from None
+
+
+def concat(arrangements: Iterable[Arrangement]) -> Arrangement:
+    """Join arrangements into one.
+
+    Shape libraries are merged by kind name; the same name must denote the same shape.
+    A column missing from some inputs is filled with NaN (floats), False (bools), 0
+    (ints) or None. The region and meta of the first input are kept.
+    """
+    arrs = list(arrangements)
+    if not arrs:
+        raise InputError("concat: nothing to concatenate")
+    shapes: dict[str, Shape] = {}
+    for a in arrs:
+        for name, sh in a._shapes.items():
+            if name in shapes and shapes[name] != sh:
+                raise InputError(f"concat: kind {name!r} names different shapes in the inputs")
+            shapes.setdefault(name, sh)
+    index = {k: i for i, k in enumerate(shapes)}
+    kind = np.concatenate([np.array([index[k] for k in a._kinds], dtype=np.int32)[a._kind] if len(a) else np.zeros(0, np.int32) for a in arrs])
+    lengths = [len(a) for a in arrs]
+    names: list[str] = []
+    for a in arrs:
+        names.extend(k for k in a._columns if k not in names)
+    columns = {k: _column_concat(k, [a._columns.get(k) for a in arrs], lengths) for k in names}
+    return Arrangement(
+        shapes,
+        kind,
+        np.concatenate([a._x for a in arrs]),
+        np.concatenate([a._y for a in arrs]),
+        np.concatenate([a._rotation for a in arrs]),
+        np.concatenate([a._scale for a in arrs]),
+        columns=columns,
+        region=arrs[0]._region,
+        meta=arrs[0]._meta,
+        extra=arrs[0]._extra,
+    )

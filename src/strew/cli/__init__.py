@@ -1,0 +1,68 @@
+"""The ``strew`` command line: a thin click layer over the library.
+
+Commands live in their own modules (``strew.cli.<name>``) and are imported only when
+run, so that ``strew --help`` answers quickly. To add a command, write
+``src/strew/cli/<name>.py`` defining a click command called ``command`` and add one line
+to :data:`COMMANDS`.
+
+Exit codes (DESIGN.md): 0 success; 2 bad input or usage, with a one-line message that
+names the problem; 1 internal error.
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+
+import click
+
+from .._version import __version__
+
+__all__ = ["main", "cli", "COMMANDS"]
+
+# name -> (module, one-line help). Keep the help here so that `strew --help` imports nothing.
+COMMANDS: dict[str, tuple[str, str]] = {
+    "render": ("strew.cli.render", "Convert between .json, .svg and .png."),
+    "info": ("strew.cli.info", "Counts per kind, bounds and metrics of an arrangement."),
+    "demo": ("strew.cli.demo", "Write a gallery of examples (SVG, PNG and index.html)."),
+}
+
+
+class LazyGroup(click.Group):
+    """A click group whose subcommands are imported on first use."""
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted(COMMANDS)
+
+    def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
+        if name not in COMMANDS:
+            return None
+        module = importlib.import_module(COMMANDS[name][0])
+        return module.command
+
+    def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        rows = [(name, COMMANDS[name][1]) for name in self.list_commands(ctx)]
+        if rows:
+            with formatter.section("Commands"):
+                formatter.write_dl(rows)
+
+
+@click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, "--version", prog_name="strew", message="%(prog)s %(version)s")
+def cli() -> None:
+    """strew: fill 2D regions with many small vector elements.
+
+    Every command reads .json (strew documents) or .svg, and writes whatever --out
+    names: .json, .svg or .png. --seed makes runs repeatable.
+    """
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point of the ``strew`` script; returns the exit code."""
+    from ._common import run_main
+
+    return run_main(cli, argv)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

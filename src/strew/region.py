@@ -1,0 +1,211 @@
+"""Region: the domain to fill, a set of polygons with holes.
+
+Regions come from ``--size WxH`` (the rectangle ``[0, W] x [0, H]``), from closed SVG
+paths (holes by the even-odd rule) or from the ``region`` entry of a strew document.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+import shapely
+
+from ._errors import InputError
+from .shape import Path, _normalise_path, paths_to_polygon
+
+__all__ = ["Region", "parse_size"]
+
+
+def parse_size(text: str) -> tuple[float, float]:
+    """Parse ``"WxH"`` (e.g. ``"600x520"``) into positive ``(W, H)``.
+
+    Examples
+    --------
+    >>> parse_size("600x520")
+    (600.0, 520.0)
+    """
+    parts = str(text).lower().replace("×", "x").split("x")
+    try:
+        if len(parts) != 2:
+            raise ValueError
+        w, h = float(parts[0]), float(parts[1])
+    except ValueError:
+        raise InputError(f"--size: expected WxH such as 600x520, got {text!r}") from None
+    if not (np.isfinite(w) and np.isfinite(h)) or w <= 0 or h <= 0:
+        raise InputError(f"--size: width and height must be positive and finite, got {text!r}")
+    return w, h
+
+
+class Region:
+    """A domain to fill: polygons with holes.
+
+    Parameters
+    ----------
+    geometry : shapely Polygon or MultiPolygon
+        Must have positive area. Invalid input (self-intersections) is repaired.
+
+    Examples
+    --------
+    >>> r = Region.rectangle(10, 5)
+    >>> r.area, r.bounds
+    (50.0, (0.0, 0.0, 10.0, 5.0))
+    >>> r.contains([[1, 1], [11, 1]]).tolist()
+    [True, False]
+    """
+
+    __slots__ = ("_geometry", "__dict__")
+
+    def __init__(self, geometry: shapely.Geometry) -> None:
+        if not isinstance(geometry, (shapely.Polygon, shapely.MultiPolygon)):
+            raise InputError(f"region: must be polygonal, got {geometry.geom_type}")
+        if not geometry.is_valid:
+            geometry = shapely.make_valid(geometry)
+            parts = [g for g in shapely.get_parts(geometry) if isinstance(g, (shapely.Polygon, shapely.MultiPolygon))]
+            geometry = shapely.union_all(parts) if parts else shapely.Polygon()
+        if geometry.is_empty or geometry.area <= 0:
+            raise InputError("region: has no area")
+        coords = shapely.get_coordinates(geometry)
+        if not np.all(np.isfinite(coords)):
+            raise InputError("region: NaN or inf coordinate")
+        self._geometry = geometry
+
+    # -- constructors -----------------------------------------------------------------
+    @classmethod
+    def rectangle(cls, width: float, height: float, x0: float = 0.0, y0: float = 0.0) -> Region:
+        """The rectangle ``[x0, x0 + width] x [y0, y0 + height]``."""
+        if not (width > 0 and height > 0):
+            raise InputError(f"region: width and height must be positive, got {width} x {height}")
+        return cls(shapely.box(x0, y0, x0 + width, y0 + height))
+
+    @classmethod
+    def from_size(cls, text: str) -> Region:
+        """Region for a ``--size WxH`` string."""
+        return cls.rectangle(*parse_size(text))
+
+    @classmethod
+    def circle(cls, cx: float, cy: float, radius: float, segments: int = 128) -> Region:
+        """A disc approximated by a regular polygon."""
+        if not radius > 0:
+            raise InputError(f"region: radius must be positive, got {radius}")
+        t = np.linspace(0, 2 * np.pi, segments, endpoint=False)
+        return cls(shapely.Polygon(np.c_[cx + radius * np.cos(t), cy + radius * np.sin(t)]))
+
+    @classmethod
+    def from_paths(cls, paths: Iterable[Path | Sequence | Mapping]) -> Region:
+        """Region bounded by closed paths; nested paths make holes (even-odd rule)."""
+        norm = [_normalise_path(p, f"region.paths[{i}]") for i, p in enumerate(paths)]
+        closed = [p for p in norm if p.closed and len(p.points) >= 3]
+        if not closed:
+            raise InputError("region: no closed path with at least three points")
+        return cls(paths_to_polygon(closed))
+
+    # -- properties -------------------------------------------------------------------
+    @property
+    def geometry(self) -> shapely.Geometry:
+        """The shapely (Multi)Polygon."""
+        return self._geometry
+
+    @cached_property
+    def prepared(self) -> shapely.Geometry:
+        """A prepared copy for fast repeated predicates."""
+        g = shapely.from_wkb(shapely.to_wkb(self._geometry))
+        shapely.prepare(g)
+        return g
+
+    @cached_property
+    def boundary(self) -> shapely.Geometry:
+        """The boundary rings as lines."""
+        return self._geometry.boundary
+
+    @property
+    def area(self) -> float:
+        return float(self._geometry.area)
+
+    @property
+    def bounds(self) -> tuple[float, float, float, float]:
+        """``(minx, miny, maxx, maxy)``."""
+        return tuple(float(v) for v in self._geometry.bounds)  # type: ignore[return-value]
+
+    @property
+    def centroid(self) -> tuple[float, float]:
+        c = self._geometry.centroid
+        return (float(c.x), float(c.y))
+
+    @property
+    def paths(self) -> list[Path]:
+        """Closed rings (exteriors and holes) as paths."""
+        out = []
+        for poly in shapely.get_parts(self._geometry):
+            for ring in [poly.exterior, *poly.interiors]:
+                out.append(Path(np.asarray(ring.coords)[:-1], True))
+        return out
+
+    # -- queries ----------------------------------------------------------------------
+    def contains(self, points: np.ndarray | Sequence[Sequence[float]]) -> np.ndarray:
+        """(n,) bool: which points lie inside (boundary excluded).
+
+        Parameters
+        ----------
+        points : (n, 2) float
+        """
+        pts = np.asarray(points, dtype=float).reshape(-1, 2)
+        return shapely.contains_xy(self.prepared, pts[:, 0], pts[:, 1])
+
+    def contains_geometry(self, geoms: np.ndarray | shapely.Geometry, tolerance: float = 0.0) -> np.ndarray:
+        """(n,) bool: which geometries lie wholly inside the region.
+
+        ``tolerance`` grows the region by that distance first, to absorb rounding.
+        """
+        target = self.prepared if tolerance == 0 else shapely.buffer(self._geometry, tolerance)
+        return np.atleast_1d(shapely.covers(target, geoms))
+
+    def distance_to_boundary(self, points: np.ndarray) -> np.ndarray:
+        """(n,) float: distance of each point to the region boundary."""
+        pts = np.asarray(points, dtype=float).reshape(-1, 2)
+        return shapely.distance(self.boundary, shapely.points(pts))
+
+    def rasterize(self, resolution: float) -> tuple[np.ndarray, tuple[float, float, float]]:
+        """Inside mask on a grid of square cells of side ``resolution``.
+
+        Returns
+        -------
+        mask : (rows, cols) bool
+            True where the cell centre is inside.
+        transform : (x0, y0, cell)
+            Cell ``(r, c)`` has centre ``(x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell)``.
+        """
+        if not resolution > 0:
+            raise InputError(f"resolution: must be positive, got {resolution}")
+        x0, y0, x1, y1 = self.bounds
+        cols = max(1, int(np.ceil((x1 - x0) / resolution)))
+        rows = max(1, int(np.ceil((y1 - y0) / resolution)))
+        xs = x0 + (np.arange(cols) + 0.5) * resolution
+        ys = y0 + (np.arange(rows) + 0.5) * resolution
+        gx, gy = np.meshgrid(xs, ys)
+        mask = shapely.contains_xy(self.prepared, gx.ravel(), gy.ravel()).reshape(rows, cols)
+        return mask, (x0, y0, float(resolution))
+
+    # -- serialisation ----------------------------------------------------------------
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dict, as in the strew document's ``region`` entry."""
+        return {"paths": [{"points": p.points.tolist(), "closed": True} for p in self.paths]}
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Region:
+        if not isinstance(data, Mapping) or "paths" not in data or not isinstance(data["paths"], list):
+            raise InputError("region.paths: missing or not a list")
+        return cls.from_paths(data["paths"])
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Region):
+            return NotImplemented
+        return bool(shapely.equals_exact(self._geometry, other._geometry, 0.0))
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        b = tuple(round(v, 3) for v in self.bounds)
+        return f"Region(area={self.area:.6g}, bounds={b})"
