@@ -424,7 +424,12 @@ class Arrangement:
             return False
         for k, v in self._columns.items():
             w = other._columns[k]
-            if v.shape != w.shape or v.tolist() != w.tolist():
+            if v.shape != w.shape:
+                return False
+            if v.dtype.kind == "f" and w.dtype.kind == "f":
+                if not np.array_equal(v, w, equal_nan=True):
+                    return False
+            elif v.tolist() != w.tolist():
                 return False
         if (self._region is None) != (other._region is None):
             return False

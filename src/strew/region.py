@@ -56,9 +56,9 @@ class Region:
     [True, False]
     """
 
-    __slots__ = ("_geometry", "__dict__")
+    __slots__ = ("_geometry", "_paths", "__dict__")
 
-    def __init__(self, geometry: shapely.Geometry) -> None:
+    def __init__(self, geometry: shapely.Geometry, *, paths: Sequence[Path] | None = None) -> None:
         if not isinstance(geometry, (shapely.Polygon, shapely.MultiPolygon)):
             raise InputError(f"region: must be polygonal, got {geometry.geom_type}")
         if not geometry.is_valid:
@@ -71,6 +71,8 @@ class Region:
         if not np.all(np.isfinite(coords)):
             raise InputError("region: NaN or inf coordinate")
         self._geometry = geometry
+        # The paths it was made from, when known, so that documents round-trip exactly.
+        self._paths = list(paths) if paths is not None else None
 
     # -- constructors -----------------------------------------------------------------
     @classmethod
@@ -100,7 +102,7 @@ class Region:
         closed = [p for p in norm if p.closed and len(p.points) >= 3]
         if not closed:
             raise InputError("region: no closed path with at least three points")
-        return cls(paths_to_polygon(closed))
+        return cls(paths_to_polygon(closed), paths=closed)
 
     # -- properties -------------------------------------------------------------------
     @property
@@ -137,6 +139,8 @@ class Region:
     @property
     def paths(self) -> list[Path]:
         """Closed rings (exteriors and holes) as paths."""
+        if self._paths is not None:
+            return list(self._paths)
         out = []
         for poly in shapely.get_parts(self._geometry):
             for ring in [poly.exterior, *poly.interiors]:
@@ -202,7 +206,7 @@ class Region:
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Region):
             return NotImplemented
-        return bool(shapely.equals_exact(self._geometry, other._geometry, 0.0))
+        return bool(shapely.equals(self._geometry, other._geometry))
 
     __hash__ = None  # type: ignore[assignment]
 

@@ -1,0 +1,1 @@
+"""Gallery sections of the foundation (see :mod:`strew.demo`)."""

@@ -1,0 +1,65 @@
+"""Shared fixtures and hypothesis strategies for the strew test suite."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, settings
+from hypothesis import strategies as st
+
+settings.register_profile("strew", deadline=None, suppress_health_check=[HealthCheck.too_slow], max_examples=60)
+settings.load_profile("strew")
+
+
+@pytest.fixture
+def two_kind_arrangement():
+    from strew import Arrangement, Region, Shape
+
+    shapes = {"dot": Shape.circle(1.0), "bar": Shape.rectangle(3.0, 1.0, style={"fill": "#c33"})}
+    return Arrangement(
+        shapes,
+        ["dot", "bar", "dot", "bar"],
+        [1.0, 5.0, 9.0, 5.0],
+        [1.0, 1.0, 1.0, 5.0],
+        [0.0, np.pi / 3, 0.0, -0.5],
+        [1.0, 1.0, 0.5, 2.0],
+        columns={"color": ["#111", "#222", "#333", "#444"], "weight": [0.5, 1.5, 2.5, 3.5]},
+        region=Region.rectangle(12, 8),
+        meta={"method": "test", "seed": 3},
+    )
+
+
+finite = st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False)
+angles = st.floats(-np.pi, np.pi, allow_nan=False, exclude_min=True)
+scales = st.floats(0.1, 10.0, allow_nan=False)
+
+
+@st.composite
+def arrangements(draw, max_elements: int = 12, extra_columns: bool = True):
+    """Random arrangements with 1-3 kinds, optional extra columns and meta."""
+    from strew import Arrangement, Shape
+
+    nk = draw(st.integers(1, 3))
+    shapes = {}
+    for k in range(nk):
+        w = draw(st.floats(0.5, 5))
+        h = draw(st.floats(0.5, 5))
+        shapes[f"kind{k}"] = Shape.polygon([(-w, -h), (w, -h), (0.3 * w, h), (-w, 0.2 * h)])
+    n = draw(st.integers(0, max_elements))
+    kind = draw(st.lists(st.integers(0, nk - 1), min_size=n, max_size=n))
+    xs = draw(st.lists(finite, min_size=n, max_size=n))
+    ys = draw(st.lists(finite, min_size=n, max_size=n))
+    rot = draw(st.lists(angles, min_size=n, max_size=n))
+    sc = draw(st.lists(scales, min_size=n, max_size=n))
+    columns = {}
+    if extra_columns:
+        if draw(st.booleans()):
+            columns["color"] = draw(st.lists(st.sampled_from(["#fff", "#a0b", "red"]), min_size=n, max_size=n))
+        if draw(st.booleans()):
+            columns["sub_id"] = draw(st.lists(st.integers(0, 1000), min_size=n, max_size=n))
+        if draw(st.booleans()):
+            columns["radius"] = draw(st.lists(st.floats(0, 100, allow_nan=False), min_size=n, max_size=n))
+        if draw(st.booleans()):
+            columns["void"] = draw(st.lists(st.booleans(), min_size=n, max_size=n))
+    meta = {"seed": draw(st.integers(0, 99)), "params": {"a": draw(st.floats(0, 1))}, "note": "héllo"}
+    return Arrangement(shapes, np.array(kind, dtype=int), xs, ys, rot, sc, columns=columns, meta=meta)
