@@ -3,16 +3,18 @@
 The core is one immutable, column-wise type, :class:`Arrangement`, with its
 :class:`Shape` library and an optional :class:`Region`. Every method reads and writes
 it, and :func:`load` / :func:`save` move it to and from strew documents, SVG and PNG.
+
+Names are imported lazily (PEP 562), so that ``strew --help`` does not pay for numpy,
+shapely and scipy.
 """
 
 from __future__ import annotations
 
+import importlib
+from typing import TYPE_CHECKING, Any
+
 from ._errors import Cancelled, InputError
 from ._version import __version__
-from .arrangement import Arrangement, concat
-from .io import load, load_region, load_shapes, save
-from .region import Region
-from .shape import Path, Shape
 
 __all__ = [
     "__version__",
@@ -28,3 +30,34 @@ __all__ = [
     "load_shapes",
     "save",
 ]
+
+_LAZY = {
+    "Arrangement": "strew.arrangement",
+    "concat": "strew.arrangement",
+    "Region": "strew.region",
+    "Shape": "strew.shape",
+    "Path": "strew.shape",
+    "load": "strew.io",
+    "save": "strew.io",
+    "load_shapes": "strew.io",
+    "load_region": "strew.io",
+}
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .arrangement import Arrangement, concat
+    from .io import load, load_region, load_shapes, save
+    from .region import Region
+    from .shape import Path, Shape
+
+
+def __getattr__(name: str) -> Any:
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'strew' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

@@ -1,0 +1,149 @@
+"""The foundation commands: render, info, --version, --help, exit codes and atomic writes."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import strew
+from strew.cli import main
+from strew.io.document import dumps
+
+
+@pytest.fixture
+def doc_path(tmp_path, two_kind_arrangement):
+    p = tmp_path / "in.json"
+    p.write_text(dumps(two_kind_arrangement))
+    return p
+
+
+def test_version(capsys):
+    assert main(["--version"]) == 0
+    assert capsys.readouterr().out.strip() == f"strew {strew.__version__}"
+
+
+def test_render_json_to_json_is_exact(doc_path, tmp_path):
+    out = tmp_path / "out.json"
+    assert main(["render", str(doc_path), "--out", str(out), "-q"]) == 0
+    assert out.read_bytes() == doc_path.read_bytes()
+
+
+def test_render_to_several_formats(doc_path, tmp_path):
+    outs = [tmp_path / "a.svg", tmp_path / "a.png", tmp_path / "b.json"]
+    args = ["render", str(doc_path), "-q"]
+    for o in outs:
+        args += ["--out", str(o)]
+    assert main(args) == 0
+    assert outs[0].read_text().count("<use ") == 4
+    assert outs[1].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert strew.load(outs[2]).equals(strew.load(doc_path))
+
+
+def test_render_json_svg_json_keeps_elements(doc_path, tmp_path):
+    svg, back = tmp_path / "a.svg", tmp_path / "back.json"
+    assert main(["render", str(doc_path), "--out", str(svg), "-q"]) == 0
+    assert main(["render", str(svg), "--out", str(back), "-q"]) == 0
+    a, b = strew.load(doc_path), strew.load(back)
+    assert len(a) == len(b)
+    assert b.kind_names.tolist() == a.kind_names.tolist()
+    for col in ("x", "y", "rotation", "scale"):
+        np.testing.assert_allclose(b[col], a[col], atol=1e-4)
+
+
+def test_info_prints_counts_bounds_and_metrics(doc_path, capsys):
+    assert main(["info", str(doc_path)]) == 0
+    out = capsys.readouterr().out
+    for word in ("dot", "bar", "bounds", "overlaps", "coverage", "density CV", "nearest neighbour"):
+        assert word in out
+    assert main(["info", str(doc_path), "--json"]) == 0
+    s = json.loads(capsys.readouterr().out)
+    assert s["counts"] == {"dot": 2, "bar": 2} and s["count"] == 4
+
+
+def _doc(**elements):
+    base = {"kind": ["a", "a"], "x": [0, 1], "y": [0, 1], "rotation": [0, 0], "scale": [1, 1]}
+    base.update(elements)
+    return json.dumps(
+        {
+            "format": "strew.arrangement",
+            "version": 1,
+            "shapes": {"a": {"paths": [{"points": [[0, 0], [1, 0], [0, 1]], "closed": True}]}},
+            "elements": base,
+        }
+    )
+
+
+BAD = {
+    "malformed.json": ("{ this is not json", "malformed JSON"),
+    "nan.json": (_doc(x=[0, float("nan")]), "elements.x[1]: NaN or inf"),
+    "inf.json": (_doc(y=[float("inf"), 0]), "elements.y[0]: NaN or inf"),
+    "mismatch.json": (_doc(y=[0]), "elements.y: length 1 does not match"),
+    "unknown.json": (_doc(kind=["a", "b"]), "elements.kind[1]: unknown kind 'b'"),
+    "version.json": (_doc().replace('"version": 1', '"version": 7'), "version: unsupported version 7"),
+    "noshapes.svg": ('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><text>hi</text></svg>', "no shapes"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(BAD))
+@pytest.mark.parametrize("fmt", ["json", "svg", "png"])
+def test_bad_input_exits_2_with_one_line_and_no_output(name, fmt, tmp_path, capsys):
+    text, message = BAD[name]
+    src = tmp_path / name
+    src.write_text(text)
+    out = tmp_path / f"out.{fmt}"
+    code = main(["render", str(src), "--out", str(out)])
+    err = capsys.readouterr().err.strip()
+    assert code == 2
+    assert len(err.splitlines()) == 1 and err.startswith("strew: error:")
+    assert message in err
+    assert not out.exists()
+    assert [p.name for p in tmp_path.iterdir()] == [name]  # no temporary leftovers
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["render", "missing.json", "--out", "x.json"], "no such file"),
+        (["render", "IN", "--out", "x.txt"], "unsupported extension '.txt'"),
+        (["render", "IN", "--out", "nofolder/x.json"], "does not exist"),
+        (["render", "IN"], "--out"),
+        (["nonsense"], "No such command"),
+        (["info", "IN", "--bogus"], "No such option"),
+    ],
+)
+def test_usage_errors_exit_2(args, message, doc_path, tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    args = [str(doc_path) if a == "IN" else a for a in args]
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert message in err and len(err.strip().splitlines()) == 1
+
+
+def test_failed_write_keeps_old_file(doc_path, tmp_path, monkeypatch):
+    out = tmp_path / "keep.json"
+    out.write_text("old")
+
+    def boom(*a, **k):
+        raise strew.InputError("cannot render")
+
+    monkeypatch.setattr("strew.io.document.dumps", boom)
+    assert main(["render", str(doc_path), "--out", str(out), "-q"]) == 2
+    assert out.read_text() == "old"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.json", "keep.json"]
+
+
+def test_help_imports_no_heavy_module():
+    code = (
+        "import sys\n"
+        "from strew.cli import main\n"
+        "rc = main(['--help'])\n"
+        "heavy = [m for m in ('numpy', 'shapely', 'scipy', 'numba', 'svgelements', 'matplotlib', 'rich') if m in sys.modules]\n"
+        "print('HEAVY', heavy)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert "HEAVY []" in out
+    assert "render" in out and "info" in out and "demo" in out
