@@ -1,0 +1,34 @@
+"""Run every benchmark script in this folder, one after another.
+
+    python benchmarks/run_all.py [--quick]
+
+Each script prints its own table (medians and ratios against its baseline, measured in
+the same run) and writes JSON to benchmarks/results/.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+
+def main() -> int:
+    here = Path(__file__).resolve().parent
+    extra = sys.argv[1:]
+    failed = []
+    for script in sorted(here.glob("*.py")):
+        if script.name.startswith("_") or script.name == "run_all.py":
+            continue
+        print(f"\n=== {script.name} ===", flush=True)
+        rc = subprocess.run([sys.executable, str(script), *extra], cwd=here).returncode
+        if rc != 0:
+            failed.append(script.name)
+    if failed:
+        print(f"\nfailed: {', '.join(failed)}")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
