@@ -55,7 +55,7 @@ class Reporter:
         self.total = total
         self.message = message
         self.interval = interval
-        self._last = 0.0
+        self._last = float("-inf")
 
     def tick(self, done: int, *, total: int | None = None, message: str | None = None, force: bool = False) -> None:
         """Report ``done`` units of work and raise :class:`Cancelled` if asked to stop."""
