@@ -5,7 +5,7 @@ and in browsers. Element ``i`` is written as::
 
     <use xlink:href="#k-NAME" transform="translate(x y) rotate(deg) scale(s)"/>
 
-which is the strew transform convention. ``meta`` goes into ``<metadata>`` as JSON,
+which is the strew transform convention. ``meta`` goes into ``<metadata>`` as JSON (the RDF ``dc:description`` with id ``strew-meta``),
 the region into a layer ``strew-region``, and scalar extra columns into ``data-*``
 attributes so that :func:`strew.io.svg.read_svg` can bring them back.
 """
@@ -29,6 +29,9 @@ SVG_NS = "http://www.w3.org/2000/svg"
 XLINK_NS = "http://www.w3.org/1999/xlink"
 INKSCAPE_NS = "http://www.inkscape.org/namespaces/inkscape"
 STREW_NS = "urn:strew:document"
+RDF_NS = "http://www.w3.org/1999/02/22-rdf-syntax-ns#"
+CC_NS = "http://creativecommons.org/ns#"
+DC_NS = "http://purl.org/dc/elements/1.1/"
 
 DEFAULT_AREA_STYLE = {"fill": "#8a8f99", "stroke": "#2b2f36"}
 DEFAULT_LINE_STYLE = {"fill": "none", "stroke": "#2b2f36"}
@@ -151,12 +154,17 @@ def to_svg(
     out.append('<?xml version="1.0" encoding="UTF-8"?>')
     out.append(
         f'<svg xmlns="{SVG_NS}" xmlns:xlink="{XLINK_NS}" xmlns:inkscape="{INKSCAPE_NS}" '
-        f'xmlns:strew="{STREW_NS}" version="1.1" '
+        f'xmlns:rdf="{RDF_NS}" xmlns:cc="{CC_NS}" xmlns:dc="{DC_NS}" version="1.1" '
         f'width="{_num(disp_w)}" height="{_num(disp_h)}" '
         f'viewBox="{" ".join(_num(v) for v in vb)}">'
     )
+    # meta as JSON in the RDF description that Inkscape shows under Document Metadata
     meta_json = json.dumps(arr.meta, sort_keys=False, default=_json_default)
-    out.append(f'<metadata id="strew-metadata"><strew:meta>{escape(meta_json)}</strew:meta></metadata>')
+    out.append(
+        f'<metadata id="strew-metadata"><rdf:RDF><cc:Work rdf:about="">'
+        f"<dc:format>image/svg+xml</dc:format><dc:source>strew</dc:source>"
+        f'<dc:description id="strew-meta">{escape(meta_json)}</dc:description></cc:Work></rdf:RDF></metadata>'
+    )
     out.append("<defs>")
     ids = []
     for i, (name, shape) in enumerate(arr.shapes.items()):
