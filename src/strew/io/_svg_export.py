@@ -115,7 +115,8 @@ def to_svg(
     ----------
     arr : Arrangement
     width : float, optional
-        Display width (``width`` attribute); default: the drawing's own width in user units.
+        Display width (``width`` attribute); default: the drawing's own width in user
+        units, enlarged so that the longer side is at least 400 for small drawings.
     margin : float
         Fraction of the drawing size left around it.
     background : str, optional
@@ -141,7 +142,8 @@ def to_svg(
         x0, y0, w, h = cx - s / 2, cy - s / 2, s, s
     pad = margin * max(w, h)
     vb = (x0 - pad, y0 - pad, w + 2 * pad, h + 2 * pad)
-    disp_w = float(width) if width else vb[2]
+    # Default page size: 1 user unit = 1 px, but small drawings are enlarged to 400 px.
+    disp_w = float(width) if width else max(vb[2], 400.0 * vb[2] / max(vb[2], vb[3]))
     disp_h = disp_w * vb[3] / vb[2]
 
     radii = [sh.radius for sh in arr.shapes.values() if sh.radius > 0]
