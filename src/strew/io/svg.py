@@ -3,5 +3,6 @@
 from __future__ import annotations
 
 from ._svg_export import path_data, to_svg
+from ._svg_import import read_svg, read_svg_region, read_svg_shapes
 
-__all__ = ["to_svg", "path_data"]
+__all__ = ["to_svg", "path_data", "read_svg", "read_svg_shapes", "read_svg_region"]

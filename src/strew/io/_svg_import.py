@@ -1,0 +1,1201 @@
+"""SVG import: exemplars, shape libraries and regions from SVG, parsed with svgelements.
+
+Three entry points share one reading of the document:
+
+- :func:`read_svg` reads an *exemplar* as an artist draws it in Inkscape (or as
+  :func:`strew.io.svg.to_svg` writes it) into an :class:`~strew.arrangement.Arrangement`;
+- :func:`read_svg_shapes` reads the distinct shapes of any SVG into a shape library;
+- :func:`read_svg_region` reads the closed paths of an SVG into a :class:`~strew.region.Region`.
+
+How elements and kinds are found
+--------------------------------
+The XML tree is walked with :mod:`xml.etree.ElementTree`; svgelements parses path data,
+basic shapes and transforms. Curves are flattened here (not by svgelements) so that the
+largest deviation *after* all transforms is at most ``tolerance`` user units.
+
+*Elements* are the objects drawn outside ``<defs>``: every ``<use>`` (a clone), every
+basic shape or path, and every group that is one object. The root, Inkscape layers
+(``inkscape:groupmode="layer"``), ``<a>`` and ``<switch>`` are containers; a plain ``<g>``
+is one object when it carries ``data-kind`` or ``inkscape:label``, or when its children
+touch one another (a leaf drawn as blade + vein); a group of separate objects, or one
+holding clones, is a container. Elements inside a hidden (``display:none``) container are
+skipped; a hidden element itself counts, with ``void = True`` (strew exports void elements so).
+
+*Kinds* come, in this order, from
+
+1. clones: a ``<use>`` of a ``<symbol>`` or of another object gives the kind of what it
+   refers to (named by that object's ``data-kind``, ``inkscape:label`` or id); the clone's
+   full transform (parent groups, the use's own transform and its ``x``/``y``) gives the
+   element's x, y, rotation and scale;
+2. ``data-kind``, else ``inkscape:label``, else an id that is not an editor's automatic
+   one (``path123``), with a trailing number dropped (``stone-3`` -> ``stone``);
+3. identical geometry: objects equal up to a similarity transform (translation, rotation,
+   uniform scale) share a kind, and their rotation and scale are recovered.
+
+Objects with the same name but different geometry are split into ``name``, ``name-2``, ...,
+since a kind has one shape.
+
+Transforms that are not similarities
+------------------------------------
+The strew convention ``p_world = (x, y) + s R(t) p_local`` has no skew, no non-uniform
+scale and no reflection. A clone's linear part ``L`` is replaced by the closest
+similarity in the least-squares sense (mean scale, ``t = atan2(L10 - L01, L00 + L11)``).
+A *reflected* clone (``det L < 0``) gets its own kind, ``NAME-mirrored``, whose shape is
+the kind's shape mirrored in its local x axis, so that its geometry stays exact.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path as FsPath
+from typing import Any
+
+import numpy as np
+import shapely
+
+from .._errors import InputError
+from ..arrangement import Arrangement
+from ..region import Region
+from ..shape import Path, Shape, paths_to_polygon
+
+__all__ = ["read_svg", "read_svg_shapes", "read_svg_region"]
+
+SVG_NS = "http://www.w3.org/2000/svg"
+XLINK_NS = "http://www.w3.org/1999/xlink"
+INKSCAPE_NS = "http://www.inkscape.org/namespaces/inkscape"
+STREW_NS = "urn:strew:document"
+
+_SHAPE_TAGS = {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}
+_GROUP_TAGS = {"g", "a", "switch", "svg"}
+# Not rendered in place (or not geometry strew can use).
+_SKIP_TAGS = {
+    "defs", "symbol", "metadata", "title", "desc", "style", "script", "clipPath", "mask",
+    "pattern", "marker", "linearGradient", "radialGradient", "filter", "text", "image",
+    "foreignObject", "view", "cursor", "font", "font-face",
+}
+_AUTO_ID = re.compile(
+    r"^(path|rect|circle|ellipse|line|polyline|polygon|g|group|use|clone|symbol|svg|layer|"
+    r"text|tspan|image|defs|shape|object|copy)[-_]?\d*([-_]\d+)*$",
+    re.IGNORECASE,
+)
+_UNITS = {"": 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0, "pt": 96 / 72, "pc": 16.0}
+_LENGTH = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-z]*)\s*$")
+_MAX_SEGMENT_POINTS = 20000
+_IDENTITY = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+_MIRROR = np.array([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+
+
+# -- small helpers --------------------------------------------------------------------
+def _local(tag: Any) -> str | None:
+    """Local name of an SVG-namespace (or un-namespaced) tag; None for other namespaces."""
+    if not isinstance(tag, str):  # comments, processing instructions
+        return None
+    if tag.startswith("{"):
+        ns, _, name = tag[1:].partition("}")
+        return name if ns == SVG_NS else None
+    return tag
+
+
+def _compose(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """2x3 affine ``a @ b`` (apply ``b`` first)."""
+    out = np.empty((2, 3))
+    out[:, :2] = a[:, :2] @ b[:, :2]
+    out[:, 2] = a[:, :2] @ b[:, 2] + a[:, 2]
+    return out
+
+
+def _invert(m: np.ndarray) -> np.ndarray:
+    lin = np.linalg.inv(m[:, :2])
+    return np.c_[lin, -lin @ m[:, 2]]
+
+
+def _translate(x: float, y: float) -> np.ndarray:
+    return np.array([[1.0, 0.0, x], [0.0, 1.0, y]])
+
+
+def _apply(m: np.ndarray, pts: np.ndarray) -> np.ndarray:
+    return pts @ m[:, :2].T + m[:, 2]
+
+
+def _sigma_max(m: np.ndarray) -> float:
+    return float(np.linalg.norm(m[:, :2], 2))
+
+
+def _similarity(lin: np.ndarray) -> tuple[float, float]:
+    """Rotation (radians) and scale of the similarity closest to a 2x2 matrix (least squares)."""
+    p, q = lin[0, 0] + lin[1, 1], lin[1, 0] - lin[0, 1]
+    return math.atan2(q, p), math.hypot(p, q) / 2
+
+
+def _parse_style(text: str | None) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for item in (text or "").split(";"):
+        key, sep, val = item.partition(":")
+        if sep:
+            out[key.strip()] = val.strip()
+    return out
+
+
+def _props(el: ET.Element) -> dict[str, str]:
+    """Presentation properties of an element: attributes, overridden by ``style``."""
+    props = {k: v for k in ("fill", "stroke", "stroke-width", "display", "fill-rule") if (v := el.get(k)) is not None}
+    props.update({k: v for k, v in _parse_style(el.get("style")).items() if k in ("fill", "stroke", "stroke-width", "display", "fill-rule")})
+    return props
+
+
+def _hidden(el: ET.Element) -> bool:
+    return _props(el).get("display", "").strip() == "none"
+
+
+def _label(el: ET.Element) -> str | None:
+    return el.get(f"{{{INKSCAPE_NS}}}label")
+
+
+def _is_layer(el: ET.Element) -> bool:
+    return el.get(f"{{{INKSCAPE_NS}}}groupmode") == "layer"
+
+
+def _href(el: ET.Element) -> str | None:
+    ref = el.get(f"{{{XLINK_NS}}}href") or el.get("href")
+    if ref is None:
+        return None
+    ref = ref.strip()
+    return ref[1:] if ref.startswith("#") else ref
+
+
+def _key_of(el: ET.Element) -> str | None:
+    """The name an artist gave an object: ``data-kind``, ``inkscape:label`` or a chosen id."""
+    for key in (el.get("data-kind"), _label(el)):
+        if key is not None and key.strip():
+            return key.strip()
+    ident = el.get("id")
+    if ident and not _AUTO_ID.match(ident):
+        # ids are unique, so artists number them: stone-1, stone-2 name one kind "stone".
+        base = re.sub(r"[-_.]?\d+$", "", ident)
+        return base or ident
+    return None
+
+
+def _name_of_target(el: ET.Element) -> str | None:
+    """Kind name of a cloned symbol or object: its ``data-kind``, label or id."""
+    for key in (el.get("data-kind"), _label(el), el.get("id")):
+        if key is not None and key.strip():
+            return key.strip()
+    return None
+
+
+def _is_region_el(el: ET.Element, strew_doc: bool) -> bool:
+    """The region: id ``strew-region``; outside strew's own files also id or label ``region``."""
+    ident = (el.get("id") or "").lower()
+    if strew_doc:  # in a strew export a kind may be called "region": only the layer's id counts
+        return ident == "strew-region"
+    return ident in ("region", "strew-region") or (_label(el) or "").lower() == "region"
+
+
+def _fmt(v: float) -> str:
+    s = format(float(v), ".12g")
+    return "0" if s in ("-0", "0") else s
+
+
+# -- the document -----------------------------------------------------------------------
+@dataclass
+class _Part:
+    """One drawable leaf (or a label point) with its map to the frame it is read in."""
+
+    el: ET.Element
+    m: np.ndarray  # (2, 3) element coordinates -> frame
+    props: dict[str, str]
+    label: str | None = None  # a ``<circle data-label=..>``: a named point, not geometry
+
+
+@dataclass
+class _Flat:
+    """Flattened parts: paths in the frame, labels, and whether any segment was a curve."""
+
+    paths: list[Path]
+    labels: dict[str, tuple[float, float]]
+    curves: bool
+
+
+class _Doc:
+    def __init__(self, source: Any, tolerance: float) -> None:
+        if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float)) or not (math.isfinite(tolerance) and tolerance > 0):
+            raise InputError(f"tolerance: must be a positive number, got {tolerance!r}")
+        self.tolerance = float(tolerance)
+        self.name, text = _source_text(source)
+        try:
+            self.root = ET.fromstring(text)
+        except ET.ParseError as exc:
+            raise InputError(f"{self.name}: malformed XML: {exc}") from None
+        if _local(self.root.tag) != "svg":
+            raise InputError(f"{self.name}: not an SVG document (root element is <{self.root.tag}>)")
+        self.parent: dict[ET.Element, ET.Element] = {}
+        self.ids: dict[str, ET.Element] = {}
+        for el in self.root.iter():
+            for child in el:
+                self.parent[child] = el
+            ident = el.get("id")
+            if ident is not None and ident not in self.ids:
+                self.ids[ident] = el
+        self.meta: dict[str, Any] | None = None
+        for md in self.root.iter(f"{{{SVG_NS}}}metadata"):
+            # strew writes meta as JSON in <dc:description id="strew-meta"> (older: <strew:meta>).
+            for node in md.iter():
+                if node.get("id") != "strew-meta" and node.tag != f"{{{STREW_NS}}}meta":
+                    continue
+                try:
+                    meta = json.loads(node.text or "{}")
+                except json.JSONDecodeError as exc:
+                    raise InputError(f"{self.name}: <strew:meta>: malformed JSON: {exc.msg}") from None
+                if not isinstance(meta, dict):
+                    raise InputError(f"{self.name}: <strew:meta>: must be a JSON object")
+                self.meta = meta
+        # A document written by strew keeps each symbol's own origin as the local origin.
+        self.is_strew = self.meta is not None
+        self._transforms: dict[int, np.ndarray] = {}
+        self.referenced = {_href(el) for el in self.root.iter() if _local(el.tag) == "use"}
+
+    # -- transforms ---------------------------------------------------------------------
+    def transform(self, el: ET.Element) -> np.ndarray:
+        """(2, 3) the element's own ``transform`` (and a nested ``<svg>``'s x, y)."""
+        key = id(el)
+        cached = self._transforms.get(key)
+        if cached is not None:
+            return cached
+        m = _IDENTITY
+        text = el.get("transform")
+        if text and text.strip():
+            import svgelements as se
+
+            try:
+                sm = se.Matrix(text)
+            except (ValueError, IndexError, TypeError):
+                raise InputError(f"{self.name}: {self.where(el)}: bad transform {text!r}") from None
+            m = np.array([[sm.a, sm.c, sm.e], [sm.b, sm.d, sm.f]], dtype=float)
+            if not np.all(np.isfinite(m)):
+                raise InputError(f"{self.name}: {self.where(el)}: transform {text!r} is not finite")
+        if _local(el.tag) == "svg" and el is not self.root:
+            # A nested <svg> is read as a group moved by (x, y); its viewBox is ignored.
+            m = _compose(m, _translate(self.length(el, "x"), self.length(el, "y")))
+        self._transforms[key] = m
+        return m
+
+    def world(self, el: ET.Element) -> np.ndarray:
+        """(2, 3) map from the element's own coordinates (after its transform) to user units.
+
+        The root's viewBox and size are ignored: positions are in the root's user units.
+        """
+        m = _IDENTITY
+        node: ET.Element | None = el
+        while node is not None and node is not self.root:
+            m = _compose(self.transform(node), m)
+            node = self.parent.get(node)
+        return m
+
+    def where(self, el: ET.Element) -> str:
+        ident = el.get("id")
+        tag = _local(el.tag) or str(el.tag)
+        return f"<{tag} id={ident!r}>" if ident else f"<{tag}>"
+
+    def length(self, el: ET.Element, attr: str, default: float = 0.0) -> float:
+        text = el.get(attr)
+        if text is None or not text.strip():
+            return default
+        m = _LENGTH.match(text)
+        if not m or m.group(2) not in _UNITS:
+            raise InputError(f"{self.name}: {self.where(el)}: {attr}={text!r} is not a length in user units")
+        v = float(m.group(1)) * _UNITS[m.group(2)]
+        if not math.isfinite(v):
+            raise InputError(f"{self.name}: {self.where(el)}: {attr}={text!r} is not finite")
+        return v
+
+    def target(self, use: ET.Element) -> ET.Element:
+        ref = _href(use)
+        if not ref:
+            raise InputError(f"{self.name}: {self.where(use)}: <use> without href")
+        tgt = self.ids.get(ref)
+        if tgt is None:
+            raise InputError(f"{self.name}: {self.where(use)}: <use> refers to missing #{ref}")
+        return tgt
+
+    def use_matrix(self, use: ET.Element, outer: np.ndarray) -> np.ndarray:
+        """Map from the referenced element's coordinates to ``outer``'s frame."""
+        m = _compose(outer, self.transform(use))
+        return _compose(m, _translate(self.length(use, "x"), self.length(use, "y")))
+
+    # -- parts --------------------------------------------------------------------------
+    def parts(self, el: ET.Element, m: np.ndarray, props: dict[str, str], stack: tuple[int, ...] = ()) -> list[_Part]:
+        """Drawable leaves below ``el`` (clones expanded); ``m`` maps ``el``'s parent frame."""
+        tag = _local(el.tag)
+        if tag is None or tag in _SKIP_TAGS - {"symbol"}:
+            return []
+        own = _props(el)
+        if tag == "circle" and el.get("data-label") is not None:
+            return [_Part(el, _compose(m, self.transform(el)), props, label=el.get("data-label"))]
+        if own.get("display", "").strip() == "none":
+            return []
+        props = {**props, **{k: v for k, v in own.items() if k != "display"}}
+        if tag in _SHAPE_TAGS:
+            return [_Part(el, _compose(m, self.transform(el)), props)]
+        if tag == "use":
+            if id(el) in stack:
+                raise InputError(f"{self.name}: {self.where(el)}: <use> refers to itself")
+            tgt = self.target(el)
+            inner = self.use_matrix(el, m)
+            if _local(tgt.tag) == "symbol":
+                return [p for child in tgt for p in self.parts(child, inner, props, (*stack, id(el)))]
+            return self.parts(tgt, inner, props, (*stack, id(el)))
+        if tag in _GROUP_TAGS or tag == "symbol":
+            inner = _compose(m, self.transform(el))
+            return [p for child in el for p in self.parts(child, inner, props, stack)]
+        return []
+
+    def inherited_props(self, el: ET.Element) -> dict[str, str]:
+        chain = []
+        node = self.parent.get(el)
+        while node is not None:
+            chain.append(node)
+            node = self.parent.get(node)
+        props: dict[str, str] = {}
+        for node in reversed(chain):
+            props.update({k: v for k, v in _props(node).items() if k != "display"})
+        return props
+
+    def flatten(self, parts: list[_Part], frame: np.ndarray, tolerance: float) -> _Flat:
+        """Flatten parts into ``frame`` (a 2x3 map applied after each part's own map)."""
+        paths: list[Path] = []
+        labels: dict[str, tuple[float, float]] = {}
+        curves = False
+        for part in parts:
+            m = _compose(frame, part.m)
+            if part.label is not None:
+                pt = _apply(m, np.array([[self.length(part.el, "cx"), self.length(part.el, "cy")]]))[0]
+                labels[part.label] = (float(pt[0]), float(pt[1]))
+                continue
+            smax = _sigma_max(m)
+            if smax == 0:
+                continue
+            for pts, closed, curved in self.flatten_element(part.el, tolerance / smax):
+                curves |= curved
+                paths.append(Path(_apply(m, pts), closed))
+        return _Flat(paths, labels, curves)
+
+    def segments(self, el: ET.Element) -> list[Any]:
+        """svgelements segments of a path or basic shape, in the element's coordinates."""
+        import svgelements as se
+
+        tag = _local(el.tag)
+        try:
+            if tag == "path":
+                return list(se.Path(el.get("d") or "").segments())
+            num = {a: _fmt(self.length(el, a)) for a in ("x", "y", "width", "height", "cx", "cy", "r", "x1", "y1", "x2", "y2")}
+            if tag == "rect":
+                vals = {k: num[k] for k in ("x", "y", "width", "height")}
+                for k in ("rx", "ry"):
+                    if el.get(k) is not None:
+                        vals[k] = _fmt(self.length(el, k))
+                if float(vals["width"]) <= 0 or float(vals["height"]) <= 0:
+                    return []
+                shape = se.Rect(vals)
+            elif tag == "circle":
+                if float(num["r"]) <= 0:
+                    return []
+                shape = se.Circle({k: num[k] for k in ("cx", "cy", "r")})
+            elif tag == "ellipse":
+                rx, ry = self.length(el, "rx"), self.length(el, "ry")
+                if rx <= 0 or ry <= 0:
+                    return []
+                shape = se.Ellipse({"cx": num["cx"], "cy": num["cy"], "rx": _fmt(rx), "ry": _fmt(ry)})
+            elif tag == "line":
+                shape = se.SimpleLine({k: num[k] for k in ("x1", "y1", "x2", "y2")})
+            elif tag == "polyline":
+                shape = se.Polyline({"points": el.get("points") or ""})
+            elif tag == "polygon":
+                shape = se.Polygon({"points": el.get("points") or ""})
+            else:
+                return []
+            return list(se.Path(shape).segments())
+        except InputError:
+            raise
+        except Exception as exc:  # svgelements raises assorted errors on bad path data
+            raise InputError(f"{self.name}: {self.where(el)}: cannot read its geometry ({type(exc).__name__})") from None
+
+    def flatten_element(self, el: ET.Element, tol: float) -> list[tuple[np.ndarray, bool, bool]]:
+        """Subpaths of one element as ``(points (n, 2), closed, curved)`` in its coordinates.
+
+        Curves are sampled uniformly in their parameter with ``n`` steps chosen so that the
+        chord error ``h^2 max|B''| / 8`` stays within ``tol``.
+        """
+        import svgelements as se
+
+        out: list[tuple[np.ndarray, bool, bool]] = []
+        cur: list[np.ndarray] = []
+        curved = False
+        closed = False
+
+        def finish() -> None:
+            nonlocal cur, curved, closed
+            if cur:
+                pts = np.concatenate(cur)
+                keep = np.r_[True, np.any(np.abs(np.diff(pts, axis=0)) > 1e-12, axis=1)]
+                pts = pts[keep]
+                is_closed = closed or (len(pts) >= 4 and np.allclose(pts[0], pts[-1], atol=1e-9))
+                if is_closed and len(pts) > 1 and np.allclose(pts[0], pts[-1], atol=1e-9):
+                    pts = pts[:-1]
+                if len(pts) >= 2:
+                    out.append((pts, bool(is_closed), curved))
+            cur, curved, closed = [], False, False
+
+        for seg in self.segments(el):
+            if isinstance(seg, se.Move):
+                finish()
+                if seg.end is not None:
+                    cur = [np.array([[seg.end.x, seg.end.y]], dtype=float)]
+                continue
+            if isinstance(seg, se.Close):
+                closed = True
+                finish()
+                if seg.end is not None:
+                    cur = []
+                continue
+            if seg.start is None or seg.end is None:
+                continue
+            if not cur:
+                cur = [np.array([[seg.start.x, seg.start.y]], dtype=float)]
+            if isinstance(seg, se.Line):
+                cur.append(np.array([[seg.end.x, seg.end.y]], dtype=float))
+                continue
+            if isinstance(seg, se.QuadraticBezier):
+                p = np.array([[seg.start.x, seg.start.y], [seg.control.x, seg.control.y], [seg.end.x, seg.end.y]])
+                bound = 2 * np.linalg.norm(p[0] - 2 * p[1] + p[2])
+            elif isinstance(seg, se.CubicBezier):
+                p = np.array([[seg.start.x, seg.start.y], [seg.control1.x, seg.control1.y], [seg.control2.x, seg.control2.y], [seg.end.x, seg.end.y]])
+                bound = 6 * max(np.linalg.norm(p[0] - 2 * p[1] + p[2]), np.linalg.norm(p[1] - 2 * p[2] + p[3]))
+            elif isinstance(seg, se.Arc):
+                bound = float(seg.sweep) ** 2 * max(float(seg.rx), float(seg.ry))
+            else:
+                cur.append(np.array([[seg.end.x, seg.end.y]], dtype=float))
+                continue
+            n = int(min(_MAX_SEGMENT_POINTS, max(1, math.ceil(math.sqrt(bound / (8 * tol))))))
+            t = np.linspace(0.0, 1.0, n + 1)[1:]
+            pts = np.asarray(seg.npoint(t), dtype=float).reshape(-1, 2)
+            cur.append(pts)
+            curved = True
+        finish()
+        return [(p, c, cv) for p, c, cv in out if np.all(np.isfinite(p))]
+
+    def path_data(self, parts: list[_Part], frame: np.ndarray) -> str | None:
+        """Exact path data of ``parts`` mapped by ``frame``, or None where it cannot be exact.
+
+        A part whose map is the identity keeps its ``d`` text; a similarity map is applied
+        to the segments (arcs included); anything else (skew, non-uniform scale,
+        reflection) gives None.
+        """
+        import svgelements as se
+
+        pieces: list[str] = []
+        for part in parts:
+            if part.label is not None:
+                continue
+            m = _compose(frame, part.m)
+            if _local(part.el.tag) == "path" and np.allclose(m, _IDENTITY, rtol=0, atol=1e-12):
+                pieces.append((part.el.get("d") or "").strip())
+                continue
+            lin = m[:, :2]
+            rot, s = _similarity(lin)
+            if s == 0 or np.linalg.det(lin) < 0 or not np.allclose(lin, s * np.array([[math.cos(rot), -math.sin(rot)], [math.sin(rot), math.cos(rot)]]), atol=1e-9 * max(1.0, s)):
+                return None
+
+            def pt(p: Any) -> str:
+                q = _apply(m, np.array([[p.x, p.y]], dtype=float))[0]
+                return f"{_fmt(q[0])},{_fmt(q[1])}"
+
+            out: list[str] = []
+            for seg in self.segments(part.el):
+                if isinstance(seg, se.Move):
+                    if seg.end is not None:
+                        out.append("M" + pt(seg.end))
+                elif isinstance(seg, se.Close):
+                    out.append("Z")
+                elif seg.start is None or seg.end is None:
+                    continue
+                elif isinstance(seg, se.Line):
+                    out.append("L" + pt(seg.end))
+                elif isinstance(seg, se.QuadraticBezier):
+                    out.append(f"Q{pt(seg.control)} {pt(seg.end)}")
+                elif isinstance(seg, se.CubicBezier):
+                    out.append(f"C{pt(seg.control1)} {pt(seg.control2)} {pt(seg.end)}")
+                elif isinstance(seg, se.Arc):
+                    large = int(abs(float(seg.sweep)) > math.pi)
+                    sweep = int(float(seg.sweep) > 0)
+                    axis = math.degrees(float(seg.get_rotation()) + rot)
+                    out.append(f"A{_fmt(s * float(seg.rx))},{_fmt(s * float(seg.ry))} {_fmt(axis)} {large},{sweep} {pt(seg.end)}")
+                else:
+                    out.append("L" + pt(seg.end))
+            pieces.append(" ".join(out))
+        text = " ".join(p for p in pieces if p)
+        return text or None
+
+    # -- the rendering tree -------------------------------------------------------------
+    def walk(self) -> Iterator[tuple[str, ET.Element, np.ndarray]]:
+        """Top-level objects in document order: ``(what, element, parent_matrix)``.
+
+        ``what`` is ``"use"``, ``"object"``, ``"void-use"``, ``"void-object"`` or ``"region"``.
+        """
+        yield from self._walk_children(self.root, _IDENTITY)
+
+    def _walk_children(self, el: ET.Element, m: np.ndarray) -> Iterator[tuple[str, ET.Element, np.ndarray]]:
+        for child in el:
+            tag = _local(child.tag)
+            if tag is None or tag in _SKIP_TAGS:
+                continue
+            if tag not in _SHAPE_TAGS and tag not in _GROUP_TAGS and tag != "use":
+                continue
+            if _is_region_el(child, self.is_strew):
+                yield ("region", child, m)
+                continue
+            hidden = _hidden(child)
+            if tag == "use":
+                yield ("void-use" if hidden else "use", child, m)
+            elif tag in _SHAPE_TAGS:
+                if child.get("data-label") is None:
+                    yield ("void-object" if hidden else "object", child, m)
+            elif hidden:
+                # A hidden layer or group (a sketch, a reference) is not part of the exemplar.
+                continue
+            elif self._is_container(child, m):
+                yield from self._walk_children(child, _compose(m, self.transform(child)))
+            else:
+                yield ("object", child, m)
+
+    def _is_container(self, el: ET.Element, m: np.ndarray) -> bool:
+        if el is self.root or _is_layer(el) or _local(el.tag) in ("a", "switch"):
+            return True
+        if el.get("data-kind") is not None or _label(el) is not None:
+            return False
+        kids = [c for c in el if _local(c.tag) in _SHAPE_TAGS | _GROUP_TAGS | {"use"} and not _hidden(c)]
+        if any(_local(c.tag) == "use" for c in kids):
+            return True
+        if len(kids) <= 1:
+            return False
+        # A group is one object when its children touch one another (one connected piece).
+        inner = _compose(m, self.transform(el))
+        geoms = []
+        for c in kids:
+            flat = self.flatten(self.parts(c, inner, {}), _IDENTITY, self.tolerance)
+            g = _geometry(flat.paths)
+            if not g.is_empty:
+                geoms.append(g)
+        if len(geoms) <= 1:
+            return False
+        return not _connected(geoms)
+
+
+def _source_text(source: Any) -> tuple[str, str | bytes]:
+    if isinstance(source, bytes):
+        return "<svg text>", source
+    if isinstance(source, str) and source.lstrip("\ufeff \t\r\n").startswith("<"):
+        return "<svg text>", source
+    if not isinstance(source, (str, os.PathLike)):
+        raise InputError(f"source: expected a path or SVG text, got {type(source).__name__}")
+    path = FsPath(source)
+    try:
+        return path.name, path.read_bytes()
+    except FileNotFoundError:
+        raise InputError(f"{str(source)!r}: no such file") from None
+    except IsADirectoryError:
+        raise InputError(f"{str(source)!r}: is a folder, expected a file") from None
+
+
+# -- geometry: moments and similarity matching ----------------------------------------
+def _geometry(paths: list[Path]) -> shapely.Geometry:
+    area = paths_to_polygon(paths)
+    if not area.is_empty:
+        return area
+    lines = [shapely.LineString(p.points) for p in paths if not p.closed and len(p.points) >= 2]
+    lines += [shapely.LinearRing(p.points) for p in paths if p.closed and len(p.points) >= 3]
+    if not lines:
+        return shapely.LineString()
+    return lines[0] if len(lines) == 1 else shapely.MultiLineString([shapely.LineString(g.coords) for g in lines])
+
+
+def _connected(geoms: list[shapely.Geometry]) -> bool:
+    n = len(geoms)
+    seen = {0}
+    todo = [0]
+    while todo:
+        i = todo.pop()
+        for j in range(n):
+            if j not in seen and shapely.intersects(geoms[i], geoms[j]):
+                seen.add(j)
+                todo.append(j)
+    return len(seen) == n
+
+
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
+_GL_T = (_GL_X + 1) / 2
+_GL_W = _GL_W / 2
+_KMAX = 8
+
+
+@dataclass
+class _Signature:
+    """Similarity invariants of a flattened geometry (complex moments about its centroid)."""
+
+    points: np.ndarray  # (n, 2) all vertices
+    outline: shapely.Geometry  # boundary lines, for distance checks
+    size: float  # area, or length for line-only geometry
+    is_area: bool
+    centroid: np.ndarray  # (2,)
+    moments: np.ndarray  # (_KMAX + 1,) complex: c_k = integral of (z - centroid)^k
+    gyration: float  # radius of gyration
+    radius: float  # largest vertex distance from the centroid
+
+
+def _edges(geom: shapely.Geometry, is_area: bool) -> tuple[np.ndarray, np.ndarray]:
+    """(m,) complex start and end points of the oriented edges of a geometry."""
+    starts, ends = [], []
+    if is_area:
+        geom = shapely.orient_polygons(geom) if hasattr(shapely, "orient_polygons") else _orient(geom)
+        rings = [r for poly in shapely.get_parts(geom) for r in [poly.exterior, *poly.interiors]]
+    else:
+        rings = list(shapely.get_parts(geom))
+    for ring in rings:
+        c = np.asarray(ring.coords)
+        z = c[:, 0] + 1j * c[:, 1]
+        starts.append(z[:-1])
+        ends.append(z[1:])
+    if not starts:
+        return np.zeros(0, complex), np.zeros(0, complex)
+    return np.concatenate(starts), np.concatenate(ends)
+
+
+def _orient(geom: shapely.Geometry) -> shapely.Geometry:
+    from shapely.geometry.polygon import orient
+
+    polys = [orient(p, 1.0) for p in shapely.get_parts(geom)]
+    return polys[0] if len(polys) == 1 else shapely.MultiPolygon(polys)
+
+
+def _moments(a: np.ndarray, b: np.ndarray, is_area: bool, shift: complex) -> tuple[np.ndarray, float]:
+    """Complex moments ``c_k`` (k = 0.._KMAX) and the polar moment about ``shift``.
+
+    Area moments use Green's theorem, ``integral z^k dA = 1/(2i) contour z^k conj(z) dz``;
+    line moments integrate ``z^k ds``. Both are exact for polygons (Gauss-Legendre).
+    """
+    a = a - shift
+    b = b - shift
+    d = b - a
+    z = a[:, None] + _GL_T[None, :] * d[:, None]  # (m, q)
+    ks = np.arange(_KMAX + 1)
+    zk = z[:, :, None] ** ks[None, None, :]  # (m, q, K)
+    if is_area:
+        integrand = zk * np.conj(z)[:, :, None] * d[:, None, None]
+        c = (integrand * _GL_W[None, :, None]).sum(axis=(0, 1)) / 2j
+        polar = float(np.real(((z * np.conj(z) * np.conj(z) / 2) * d[:, None] * _GL_W).sum() / 2j))
+    else:
+        ds = np.abs(d)
+        c = (zk * (ds[:, None] * _GL_W[None, :])[:, :, None]).sum(axis=(0, 1))
+        polar = float(((np.abs(z) ** 2) * ds[:, None] * _GL_W).sum())
+    return c, polar
+
+
+def _signature(paths: list[Path]) -> _Signature | None:
+    geom = _geometry(paths)
+    if geom.is_empty:
+        return None
+    is_area = geom.geom_type in ("Polygon", "MultiPolygon")
+    a, b = _edges(geom, is_area)
+    c0, _ = _moments(a, b, is_area, 0j)
+    size = float(np.real(c0[0]))
+    if not size > 0:
+        return None
+    centroid = c0[1] / c0[0]
+    c, polar = _moments(a, b, is_area, centroid)
+    pts = np.concatenate([p.points for p in paths])
+    cen = np.array([centroid.real, centroid.imag])
+    outline = geom.boundary if is_area else geom
+    return _Signature(
+        points=pts,
+        outline=outline,
+        size=size,
+        is_area=is_area,
+        centroid=cen,
+        moments=c,
+        gyration=math.sqrt(max(polar, 0.0) / size),
+        radius=float(np.sqrt(((pts - cen) ** 2).sum(axis=1)).max()),
+    )
+
+
+def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float, float] | None:
+    """Similarity ``other = s R(t) (ref - ref.centroid) + other.centroid``, or None.
+
+    The rotation comes from the phase of the first complex moment ``c_k`` (k >= 2) that
+    the shape's symmetry does not cancel: ``c_k`` turns by ``k t`` under a rotation by ``t``.
+    Each candidate is checked by the largest vertex-to-outline distance both ways.
+    """
+    if ref.is_area != other.is_area:
+        return None
+    s = math.sqrt(other.size / ref.size) if ref.is_area else other.size / ref.size
+    if abs(other.radius - s * ref.radius) > 2 * tolerance + 0.02 * other.radius:
+        return None
+    if abs(other.gyration - s * ref.gyration) > 2 * tolerance + 0.02 * other.gyration:
+        return None
+    candidates: list[float] = []
+    norm_r = ref.size * max(ref.gyration, 1e-300)
+    norm_o = other.size * max(other.gyration, 1e-300)
+    for k in range(2, _KMAX + 1):
+        mr = abs(ref.moments[k]) / (norm_r * ref.gyration ** (k - 1))
+        mo = abs(other.moments[k]) / (norm_o * other.gyration ** (k - 1))
+        if mr > 0.02 and mo > 0.02:
+            base = (np.angle(other.moments[k]) - np.angle(ref.moments[k])) / k
+            candidates.extend(base + 2 * math.pi * j / k for j in range(k))
+            if len(candidates) >= 2:
+                break
+    if not candidates:
+        # Nearly round: align the farthest vertex, else try no rotation.
+        far = np.argmax(((other.points - other.centroid) ** 2).sum(axis=1))
+        vo = other.points[far] - other.centroid
+        vr = ref.points - ref.centroid
+        rr = np.sqrt((vr**2).sum(axis=1))
+        near = np.flatnonzero(np.abs(s * rr - np.hypot(*vo)) <= 2 * tolerance + 0.01 * other.radius)
+        candidates = [0.0] + [math.atan2(vo[1], vo[0]) - math.atan2(vr[i, 1], vr[i, 0]) for i in near[:32]]
+    limit = 2 * tolerance + 1e-3 * other.radius
+    best: tuple[float, float] | None = None
+    best_err = math.inf
+    for t in candidates:
+        c, sn = math.cos(t), math.sin(t)
+        rot = s * np.array([[c, -sn], [sn, c]])
+        moved = (ref.points - ref.centroid) @ rot.T + other.centroid
+        err = float(shapely.distance(other.outline, shapely.points(moved)).max())
+        if err > limit:
+            continue
+        outline = shapely.transform(ref.outline, lambda p, rot=rot: (p - ref.centroid) @ rot.T + other.centroid)
+        err = max(err, float(shapely.distance(outline, shapely.points(other.points)).max()))
+        if err <= limit and err < best_err:
+            best, best_err = (float(math.atan2(sn, c)), s), err
+    return best
+
+
+# -- kinds and elements -----------------------------------------------------------------
+@dataclass
+class _Kind:
+    name: str
+    key: str | None  # the name it was asked for (None: geometry only)
+    parts: list[_Part]  # in the reference frame
+    origin: np.ndarray  # (2,) local origin in the reference frame
+    mirrored: bool = False
+    style: dict[str, Any] = field(default_factory=dict)
+    signature: _Signature | None = None
+    max_scale: float = 1.0
+    matchable: bool = True
+
+
+@dataclass
+class _Element:
+    kind: _Kind
+    x: float
+    y: float
+    rotation: float
+    scale: float
+    void: bool
+    attrs: dict[str, str]
+
+
+class _Reader:
+    """Find the elements and kinds of a document (see the module docstring)."""
+
+    def __init__(self, doc: _Doc) -> None:
+        self.doc = doc
+        self.kinds: list[_Kind] = []
+        self.by_target: dict[tuple[int, bool], _Kind] = {}
+        self.names: set[str] = set()
+        self.elements: list[_Element] = []
+        self.region_els: list[tuple[ET.Element, np.ndarray]] = []
+
+    def unique(self, name: str) -> str:
+        if name not in self.names:
+            self.names.add(name)
+            return name
+        i = 2
+        while f"{name}-{i}" in self.names:
+            i += 1
+        self.names.add(f"{name}-{i}")
+        return f"{name}-{i}"
+
+    def new_kind(self, name: str, key: str | None, parts: list[_Part], *, keep_origin: bool, mirrored: bool = False) -> _Kind:
+        flat = self.doc.flatten(parts, _IDENTITY, self.doc.tolerance)
+        if keep_origin:
+            origin = np.zeros(2)
+        else:
+            bounds = _bounds(flat.paths)
+            origin = np.array([(bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2])
+        kind = _Kind(self.unique(name), key, parts, origin, mirrored, style=_style(self.doc, parts))
+        kind.signature = _signature(flat.paths)
+        self.kinds.append(kind)
+        return kind
+
+    def symbol_kinds(self) -> None:
+        """Every ``<symbol>`` is a kind, in document order (unused ones too)."""
+        for el in self.doc.root.iter():
+            if _local(el.tag) == "symbol":
+                self.target_kind(el, mirrored=False)
+
+    def target_kind(self, tgt: ET.Element, mirrored: bool) -> _Kind:
+        key = (id(tgt), mirrored)
+        kind = self.by_target.get(key)
+        if kind is not None:
+            return kind
+        if mirrored:
+            base = self.target_kind(tgt, False)
+            kind = _Kind(self.unique(f"{base.name}-mirrored"), None, base.parts, base.origin, True, dict(base.style), None, 1.0, False)
+            self.kinds.append(kind)
+        else:
+            is_symbol = _local(tgt.tag) == "symbol"
+            if is_symbol:
+                parts = [p for child in tgt for p in self.doc.parts(child, _IDENTITY, _props_no_display(tgt))]
+            else:
+                parent = self.doc.parent.get(tgt)
+                pm = self.doc.world(parent) if parent is not None else _IDENTITY
+                parts = self.doc.parts(tgt, pm, self.doc.inherited_props(tgt))
+            name = _name_of_target(tgt) or "kind"
+            kind = self.new_kind(name, _name_of_target(tgt), parts, keep_origin=is_symbol and self.doc.is_strew)
+        self.by_target[key] = kind
+        return kind
+
+    def add_clone(self, use: ET.Element, m: np.ndarray, void: bool) -> None:
+        doc = self.doc
+        g = doc.use_matrix(use, m)
+        tgt = doc.target(use)
+        seen = {id(use)}
+        while _local(tgt.tag) == "use":  # a clone of a clone
+            if id(tgt) in seen:
+                raise InputError(f"{doc.name}: {doc.where(use)}: <use> refers to itself")
+            seen.add(id(tgt))
+            g = doc.use_matrix(tgt, g)
+            tgt = doc.target(tgt)
+        if _local(tgt.tag) != "symbol":
+            # The clone draws the object with the object's own transform but not its
+            # parents'; relative to the object as drawn, it is moved by g T W_ref^-1.
+            ref = doc.world(tgt)
+            if abs(np.linalg.det(ref[:, :2])) < 1e-300:
+                return
+            g = _compose(_compose(g, doc.transform(tgt)), _invert(ref))
+        mirrored = bool(np.linalg.det(g[:, :2]) < 0)
+        kind = self.target_kind(tgt, mirrored)
+        self.place(kind, g, void, use)
+
+    def place(self, kind: _Kind, g: np.ndarray, void: bool, el: ET.Element) -> None:
+        """Element of ``kind`` drawn by ``g`` (reference frame -> world)."""
+        lin = g[:, :2] @ (_MIRROR[:, :2] if kind.mirrored else np.eye(2))
+        rot, s = _similarity(lin)
+        if not (s > 0):
+            return
+        x, y = _apply(g, kind.origin[None, :])[0]
+        kind.max_scale = max(kind.max_scale, s)
+        self.elements.append(_Element(kind, float(x), float(y), rot, s, void, _data_attrs(el)))
+
+    def add_object(self, el: ET.Element, m: np.ndarray, void: bool) -> None:
+        doc = self.doc
+        if (id(el), False) in self.by_target:  # the original of clones: its own kind
+            self.place(self.by_target[(id(el), False)], _IDENTITY, void, el)
+            return
+        if el.get("id") is not None and el.get("id") in doc.referenced:
+            self.place(self.target_kind(el, False), _IDENTITY, void, el)
+            return
+        parts = doc.parts(el, m, doc.inherited_props(el)) if not void else _visible_parts(doc, el, m)
+        flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
+        sig = _signature(flat.paths)
+        if sig is None and not flat.paths:
+            return
+        key = _key_of(el)
+        if sig is not None:
+            for kind in self.kinds:
+                if not kind.matchable or kind.signature is None or (key is not None and kind.key != key):
+                    continue
+                found = _match(kind.signature, sig, doc.tolerance)
+                if found is None:
+                    continue
+                t, s = found
+                c, sn = math.cos(t), math.sin(t)
+                lin = s * np.array([[c, -sn], [sn, c]])
+                # world = lin (p_ref - ref.centroid) + centroid: a map from the reference frame.
+                g = np.c_[lin, sig.centroid - lin @ kind.signature.centroid]
+                self.place(kind, g, void, el)
+                return
+        name = key or "shape"
+        kind = self.new_kind(name, key, parts, keep_origin=False)
+        self.place(kind, _IDENTITY, void, el)
+
+    def read(self, *, all_symbols: bool) -> None:
+        doc = self.doc
+        if all_symbols:
+            self.symbol_kinds()
+        for what, el, m in doc.walk():
+            if what == "region":
+                self.region_els.append((el, m))
+            elif what in ("use", "void-use"):
+                self.add_clone(el, m, what == "void-use")
+            else:
+                self.add_object(el, m, what == "void-object")
+
+    def shape(self, kind: _Kind, *, centred: bool) -> Shape:
+        """The kind's shape in its local frame (flattened finely enough for its largest copy)."""
+        doc = self.doc
+        origin = kind.origin
+        frame = _translate(-origin[0], -origin[1])
+        if kind.mirrored:
+            frame = _compose(_MIRROR, frame)
+        tol = doc.tolerance / max(1.0, kind.max_scale)
+        flat = doc.flatten(kind.parts, frame, tol)
+        if centred:
+            b = _bounds(flat.paths)
+            shift = _translate(-(b[0] + b[2]) / 2, -(b[1] + b[3]) / 2)
+            if not np.allclose(shift[:, 2], 0, atol=1e-12):
+                frame = _compose(shift, frame)
+                flat = doc.flatten(kind.parts, frame, tol)
+        d = doc.path_data(kind.parts, frame) if flat.curves else None
+        return Shape(tuple(flat.paths), d, kind.style, flat.labels)
+
+
+def _props_no_display(el: ET.Element) -> dict[str, str]:
+    return {k: v for k, v in _props(el).items() if k != "display"}
+
+
+def _visible_parts(doc: _Doc, el: ET.Element, m: np.ndarray) -> list[_Part]:
+    """Parts of a hidden (void) object, read as if it were shown."""
+    props = doc.inherited_props(el)
+    tag = _local(el.tag)
+    if tag in _SHAPE_TAGS:
+        own = {k: v for k, v in _props(el).items() if k != "display"}
+        return [_Part(el, _compose(m, doc.transform(el)), {**props, **own})]
+    return []
+
+
+def _bounds(paths: list[Path]) -> tuple[float, float, float, float]:
+    if not paths:
+        return (0.0, 0.0, 0.0, 0.0)
+    pts = np.concatenate([p.points for p in paths])
+    return (float(pts[:, 0].min()), float(pts[:, 1].min()), float(pts[:, 0].max()), float(pts[:, 1].max()))
+
+
+def _style(doc: _Doc, parts: list[_Part]) -> dict[str, Any]:
+    """``fill``, ``stroke`` and ``stroke_width`` of the first drawable part (in the kind's frame)."""
+    for part in parts:
+        if part.label is not None:
+            continue
+        style: dict[str, Any] = {}
+        for key in ("fill", "stroke"):
+            if key in part.props:
+                style[key] = part.props[key]
+        if "stroke-width" in part.props:
+            m = _LENGTH.match(part.props["stroke-width"])
+            if m and m.group(2) in _UNITS:
+                scale = math.sqrt(abs(np.linalg.det(part.m[:, :2])))
+                style["stroke_width"] = float(m.group(1)) * _UNITS[m.group(2)] * scale
+        return style
+    return {}
+
+
+def _data_attrs(el: ET.Element) -> dict[str, str]:
+    return {k[5:]: v for k, v in el.attrib.items() if k.startswith("data-") and k not in ("data-kind", "data-label")}
+
+
+def _decode(text: str) -> Any:
+    try:
+        return json.loads(text)
+    except (json.JSONDecodeError, ValueError):
+        return text
+
+
+# -- public functions -------------------------------------------------------------------
+def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> Arrangement:
+    """Read an exemplar (or a strew SVG export) into an arrangement.
+
+    Parameters
+    ----------
+    source : path, or SVG text (a ``str`` starting with ``<``, or bytes)
+    tolerance : float
+        Largest distance, in user units after all transforms, between a curve and its
+        flattening. Recorded in ``meta["svg_import"]["tolerance"]``.
+
+    Returns
+    -------
+    Arrangement
+        One element per clone or object (see the module docstring for how kinds are
+        found); x, y, rotation (radians) and scale follow
+        ``p_world = (x, y) + s R(t) p_local``. A layer or path with id ``strew-region``
+        or ``region`` (or label ``region``) becomes the region. From a strew export,
+        ``<metadata><strew:meta>`` becomes ``meta``, ``data-<col>`` attributes (JSON)
+        become columns and ``data-index`` restores the element order; symbol circles
+        with ``data-label`` become ``Shape.labels``. Hidden elements count, with
+        ``void = True``.
+
+    Raises
+    ------
+    InputError
+        Malformed XML, no shapes, a ``<use>`` of a missing id, bad lengths.
+
+    Examples
+    --------
+    >>> svg = '''<svg xmlns="http://www.w3.org/2000/svg"><defs>
+    ...   <symbol id="dot"><circle r="1"/></symbol></defs>
+    ...   <use href="#dot" transform="translate(5 2) rotate(90)"/>
+    ...   <use href="#dot" x="9"/></svg>'''
+    >>> arr = read_svg(svg)
+    >>> arr.kinds, arr.x.tolist(), arr.y.tolist()
+    (('dot',), [5.0, 9.0], [2.0, 0.0])
+    >>> round(float(arr.rotation[0]), 6)
+    1.570796
+    """
+    doc = _Doc(source, tolerance)
+    reader = _Reader(doc)
+    reader.read(all_symbols=doc.is_strew)
+    elements = reader.elements
+    if not elements and not doc.is_strew:
+        raise InputError(f"{doc.name}: no shapes found (no path, basic shape or clone outside <defs>)")
+    kinds = [k for k in reader.kinds if doc.is_strew or any(e.kind is k for e in elements)]
+    shapes = {k.name: reader.shape(k, centred=False) for k in kinds}
+    order = np.arange(len(elements))
+    index = [e.attrs.get("index") for e in elements]
+    if elements and all(i is not None for i in index):
+        try:
+            idx = np.array([int(i) for i in index])  # type: ignore[arg-type]
+        except ValueError:
+            idx = None
+        if idx is not None and np.array_equal(np.sort(idx), np.arange(len(idx))):
+            order = np.argsort(idx, kind="stable")
+    elements = [elements[i] for i in order]
+    columns: dict[str, list[Any]] = {}
+    names = [n for n in dict.fromkeys(k for e in elements for k in e.attrs) if n != "index" and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.-]*", n)]
+    for n in names:
+        columns[n] = [_decode(e.attrs[n]) if n in e.attrs else None for e in elements]
+    if any(e.void for e in elements) and "void" not in columns:
+        columns["void"] = [e.void for e in elements]
+    region = _region_of(doc, reader.region_els) if reader.region_els else None
+    meta = dict(doc.meta or {})
+    meta["svg_import"] = {"source": doc.name, "tolerance": doc.tolerance}
+    try:
+        return Arrangement(
+            shapes,
+            [e.kind.name for e in elements],
+            [e.x for e in elements],
+            [e.y for e in elements],
+            [e.rotation for e in elements],
+            [e.scale for e in elements],
+            columns=columns,
+            region=region,
+            meta=meta,
+        )
+    except InputError as exc:
+        raise InputError(f"{doc.name}: {exc}") from None
+
+
+def read_svg_shapes(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> dict[str, Shape]:
+    """The distinct shapes of any SVG, one per kind, centred on their bounding boxes.
+
+    Paths (curves and arcs flattened within ``tolerance`` user units after transforms),
+    basic shapes and clones are read, with nested group transforms; every ``<symbol>``
+    is a shape too, used or not. Kinds are found as in :func:`read_svg`. Each shape's
+    local origin is the bounding-box centre of the kind's reference instance, unrotated
+    and at unit scale; ``Shape.d`` keeps exact path data where it can be exact in local
+    coordinates, and ``Shape.style`` the fill, stroke and stroke width.
+
+    Parameters
+    ----------
+    source : path, or SVG text
+    tolerance : float
+
+    Returns
+    -------
+    dict of str to Shape
+
+    Raises
+    ------
+    InputError
+        When the SVG has no shapes, or cannot be read.
+
+    Examples
+    --------
+    >>> shapes = read_svg_shapes('<svg xmlns="http://www.w3.org/2000/svg">'
+    ...                          '<rect id="brick" x="10" y="10" width="4" height="2"/></svg>')
+    >>> list(shapes), shapes["brick"].bounds
+    (['brick'], (-2.0, -1.0, 2.0, 1.0))
+    """
+    doc = _Doc(source, tolerance)
+    reader = _Reader(doc)
+    reader.read(all_symbols=True)
+    shapes = {}
+    for kind in reader.kinds:
+        if kind.mirrored:
+            continue
+        shape = reader.shape(kind, centred=True)
+        if not shape.is_empty:
+            shapes[kind.name] = shape
+    if not shapes:
+        raise InputError(f"{doc.name}: no shapes found (no path, basic shape, symbol or clone)")
+    return shapes
+
+
+def read_svg_region(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> Region:
+    """A region from the closed paths of an SVG.
+
+    The element with id ``region`` or ``strew-region`` (or label ``region``) when there
+    is one; otherwise every closed subpath of every drawn element. Within an element,
+    subpaths combine under the even-odd rule (a nested subpath is a hole); separate
+    elements are united.
+
+    Parameters
+    ----------
+    source : path, or SVG text
+    tolerance : float
+        Flattening tolerance for curves, in user units.
+
+    Returns
+    -------
+    Region
+
+    Raises
+    ------
+    InputError
+        When there is no closed path, or the SVG cannot be read.
+
+    Examples
+    --------
+    >>> r = read_svg_region('<svg xmlns="http://www.w3.org/2000/svg">'
+    ...                     '<path d="M0,0 H10 V10 H0 Z M2,2 H4 V4 H2 Z"/></svg>')
+    >>> r.area
+    96.0
+    """
+    doc = _Doc(source, tolerance)
+    chosen = [(el, m) for what, el, m in doc.walk() if what == "region"]
+    if not chosen:
+        chosen = [(el, m) for what, el, m in doc.walk() if what in ("object", "use")]
+    region = _region_of(doc, chosen)
+    if region is None:
+        raise InputError(f"{doc.name}: no closed path found for a region")
+    return region
+
+
+def _region_of(doc: _Doc, items: list[tuple[ET.Element, np.ndarray]]) -> Region | None:
+    polys = []
+    all_paths: list[Path] = []
+    for el, m in items:
+        parts = doc.parts(el, m, {})
+        flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
+        closed = [p for p in flat.paths if p.closed and len(p.points) >= 3]
+        area = paths_to_polygon(closed)
+        if not area.is_empty:
+            polys.append(area)
+            all_paths.extend(closed)
+    if not polys:
+        return None
+    if len(polys) == 1:
+        return Region(polys[0], paths=all_paths)
+    return Region(shapely.union_all(polys))
