@@ -1,0 +1,298 @@
+"""``strew.pack.pack``: dense non-periodic aggregates (Sakurai & Miyata).
+
+Two methods over the same exclusive regions (§3.1) and exact placement tests:
+
+``"naive"`` (§3.2)
+    Dart throwing: random position, rotation and scale; cancel on collision; stop after
+    ``max_failures`` consecutive cancellations (10,000 in the paper's §3.3).
+``"fill-gap"`` (§4)
+    Step 1 (§4.1): sparse placement at Poisson-disk points whose circles circumscribe
+    the exclusive regions, so that no test can fail. Step 2 (§4.2): rounds of P = 100
+    candidates drawn from the distance field to the placed regions and the boundary with
+    probability ``d**16``; stop after 200 consecutive cancellations.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import shapely
+
+from .._errors import InputError
+from .._progress import Reporter
+from .._rng import as_rng
+from ..arrangement import Arrangement
+from ..region import Region
+from ..shape import Shape
+from ._exclusive import ExclusiveRegion, build_exclusive_regions, element_origin
+from ._field import DistanceField
+from ._placer import Placer
+from ._poisson import poisson_disk
+
+__all__ = ["pack", "METHODS", "DEFAULTS"]
+
+METHODS = ("fill-gap", "naive")
+
+# Every constant of the method, with the paper's values.
+DEFAULTS: dict[str, Any] = {
+    "max_failures": {"fill-gap": 200, "naive": 10_000},  # §4.2 / §3.3
+    "candidates": 100,  # P per round, §4
+    "power": 16.0,  # alpha = d**n, §4.2
+    "poisson_candidates": 30,  # Bridson's k for Step 1
+    "naive_batch": 256,  # darts tested per bulk query (does not change the result's law)
+}
+
+
+def _as_shapes(shapes: Any) -> dict[str, Shape]:
+    if isinstance(shapes, Shape):
+        return {"shape": shapes}
+    if isinstance(shapes, Mapping):
+        out = dict(shapes)
+    elif isinstance(shapes, Sequence) and not isinstance(shapes, str):
+        out = {f"shape{i}": s for i, s in enumerate(shapes)}
+    else:
+        raise InputError(f"shapes: expected a Shape, a list of shapes or a mapping of name -> Shape, got {type(shapes).__name__}")
+    if not out:
+        raise InputError("shapes: no shape given")
+    return out
+
+
+def _as_region(region: Any) -> Region:
+    if isinstance(region, Region):
+        return region
+    if isinstance(region, (shapely.Polygon, shapely.MultiPolygon)):
+        return Region(region)
+    if isinstance(region, str):
+        return Region.from_size(region)
+    if isinstance(region, (tuple, list)) and len(region) == 2:
+        return Region.rectangle(float(region[0]), float(region[1]))
+    raise InputError(f"region: expected a Region, a polygon, 'WxH' or (W, H), got {type(region).__name__}")
+
+
+def _weights(weights: Any, kinds: list[str]) -> np.ndarray | None:
+    if weights is None:
+        return None
+    if isinstance(weights, Mapping):
+        unknown = [k for k in weights if k not in kinds]
+        if unknown:
+            raise InputError(f"weights: unknown kind {unknown[0]!r} (kinds: {', '.join(kinds)})")
+        w = [weights.get(k, 0.0) for k in kinds]
+    else:
+        w = list(weights)
+        if len(w) != len(kinds):
+            raise InputError(f"weights: {len(w)} given for {len(kinds)} kinds")
+    try:
+        arr = np.asarray(w, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"weights: must be numbers, got {weights!r}") from None
+    if not np.all(np.isfinite(arr)) or np.any(arr < 0) or arr.sum() <= 0:
+        raise InputError(f"weights: must be non-negative, finite and not all zero, got {arr.tolist()}")
+    return arr / arr.sum()
+
+
+def _positive_int(value: Any, name: str) -> int:
+    try:
+        v = int(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: must be an integer, got {value!r}") from None
+    if v < 1 or v != value:
+        raise InputError(f"{name}: must be a positive integer, got {value!r}")
+    return v
+
+
+def _default_cell(kinds: list[ExclusiveRegion], region: Region) -> float:
+    """Pixel side of the distance field: a sixth of the smallest element's size,
+    coarsened so that the raster stays under about 400,000 pixels."""
+    size = min(np.sqrt(k.area) * k.scale[0] for k in kinds)
+    return float(max(size / 6.0, np.sqrt(region.area / 400_000.0)))
+
+
+def pack(
+    shapes: Mapping[str, Shape] | Sequence[Shape] | Shape,
+    region: Region | Any,
+    *,
+    method: str = "fill-gap",
+    rotation: Any = (0.0, 2 * np.pi),
+    scale: Any = (1.0, 1.0),
+    margin: Any = 0.0,
+    exclusive: Mapping[str, Shape] | None = None,
+    weights: Sequence[float] | Mapping[str, float] | None = None,
+    max_failures: int | None = None,
+    candidates: int = DEFAULTS["candidates"],
+    power: float = DEFAULTS["power"],
+    resolution: float | None = None,
+    rng: int | np.random.Generator | None = None,
+    progress: Callable[[int, int | None, str], None] | None = None,
+    should_cancel: Callable[[], bool] | None = None,
+) -> Arrangement:
+    """Pack elements densely and non-periodically into a region.
+
+    Parameters
+    ----------
+    shapes : Shape, sequence of Shape or mapping of kind name -> Shape
+        Element kinds: any polygons, concave, elongated or with holes.
+    region : Region, shapely polygon, ``"WxH"`` or (W, H)
+        The domain; elements lie wholly inside it (holes included).
+    method : {"fill-gap", "naive"}
+        Fill-gap (§4) or naive dart throwing (§3.2).
+    rotation : (lo, hi) or mapping of kind -> (lo, hi)
+        Rotation range in radians (default the full turn). A mapping may use the key
+        ``"*"`` for the kinds it does not name.
+    scale : (lo, hi) or mapping of kind -> (lo, hi)
+        Uniform scale range (positive; default 1).
+    margin : float or mapping of kind -> float
+        The exclusive region is the element (or its ``exclusive`` shape) grown by this
+        buffer distance: gaps between elements are at least twice the margin, and
+        elements keep the margin from the boundary. Negative values shrink it.
+    exclusive : mapping of kind -> Shape, optional
+        Exclusive shapes in each element's local coordinates (§3.1). An exclusive shape
+        smaller than its element lets elements overlap.
+    weights : sequence or mapping of kind -> float, optional
+        Choose kinds at random with these weights; default: cyclically (§3.2).
+    max_failures : int, optional
+        Stop after this many consecutive cancellations; default 200 for fill-gap
+        (§4.2) and 10,000 for naive (§3.3).
+    candidates : int
+        Fill-gap: points P tried per round (100, §4).
+    power : float
+        Fill-gap: exponent n of ``alpha = d**n`` (16, §4.2).
+    resolution : float, optional
+        Fill-gap: pixel side of the distance field; default a sixth of the smallest
+        element's size (the raster only proposes candidates).
+    rng : int, Generator or None
+    progress, should_cancel : callables, optional
+        See :mod:`strew._progress`.
+
+    Returns
+    -------
+    Arrangement
+        The placed elements, with the domain as its region. ``meta["pack"]`` records
+        the method, the number of trials and why it stopped. It is empty when nothing
+        fits (``meta["pack"]["stopped"]`` says so).
+
+    Raises
+    ------
+    InputError
+        Zero-area exclusive regions, inverted ranges, unknown methods or kinds.
+
+    Examples
+    --------
+    >>> from strew import Shape, Region
+    >>> arr = pack(Shape.rectangle(4, 1), Region.rectangle(20, 20), rng=1)
+    >>> from strew.metrics import overlaps, outside
+    >>> len(arr) > 20, len(overlaps(arr)[0]), len(outside(arr))
+    (True, 0, 0)
+    """
+    if method not in METHODS:
+        raise InputError(f"method: unknown method {method!r}; use one of {', '.join(METHODS)}")
+    lib = _as_shapes(shapes)
+    dom = _as_region(region)
+    kinds = build_exclusive_regions(lib, rotation=rotation, scale=scale, margin=margin, exclusive=exclusive)
+    w = _weights(weights, list(lib))
+    limit = _positive_int(DEFAULTS["max_failures"][method] if max_failures is None else max_failures, "max_failures")
+    p_count = _positive_int(candidates, "candidates")
+    try:
+        power = float(power)
+    except (TypeError, ValueError):
+        raise InputError(f"power: must be a number, got {power!r}") from None
+    if not (np.isfinite(power) and power > 0):
+        raise InputError(f"power: must be positive, got {power}")
+    if resolution is not None:
+        try:
+            resolution = float(resolution)
+        except (TypeError, ValueError):
+            raise InputError(f"resolution: must be a number, got {resolution!r}") from None
+        if not (np.isfinite(resolution) and resolution > 0):
+            raise InputError(f"resolution: must be positive, got {resolution}")
+    gen = as_rng(rng)
+    rep = Reporter(progress, should_cancel, message=f"pack ({method})")
+    placer = Placer(kinds, dom, w, limit)
+    info: dict[str, Any] = {"algorithm": method, "max_failures": limit}
+    if all(k.area * k.scale[0] ** 2 > dom.area for k in kinds):
+        info["stopped"] = "no shape fits: the region is smaller than every shape"
+    elif method == "naive":
+        info["stopped"] = _naive(placer, dom, gen, rep)
+    else:
+        cell = _default_cell(kinds, dom) if resolution is None else resolution
+        info.update(candidates=p_count, power=power, resolution=cell)
+        info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, info)
+    if len(placer) == 0 and "no shape fits" not in info["stopped"]:
+        info["stopped"] = f"no shape fits in the region ({info['stopped']})"
+    info["trials"] = placer.trials
+    rep.done(len(placer))
+    return _arrangement(lib, kinds, placer, dom, info)
+
+
+def _arrangement(lib: dict[str, Shape], kinds: list[ExclusiveRegion], placer: Placer, dom: Region, info: dict) -> Arrangement:
+    n = len(placer)
+    kind = np.asarray(placer.kind, dtype=np.int32)
+    xy = np.asarray(placer.xy, dtype=float).reshape(n, 2)
+    rot = np.asarray(placer.rotation, dtype=float)
+    sc = np.asarray(placer.scale, dtype=float)
+    origin = np.zeros((n, 2))
+    for k, ex in enumerate(kinds):
+        idx = np.flatnonzero(kind == k)
+        if len(idx):
+            origin[idx] = element_origin(ex.centre, xy[idx], rot[idx], sc[idx])
+    return Arrangement(lib, kind, origin[:, 0], origin[:, 1], rot, sc, region=dom, meta={"method": "pack", "pack": info})
+
+
+def _uniform_in_region(dom: Region, gen: np.random.Generator, m: int) -> np.ndarray:
+    """(m', 2) points uniform in the domain (darts from its bounding box that land inside)."""
+    x0, y0, x1, y1 = dom.bounds
+    pts = np.c_[x0 + gen.random(m) * (x1 - x0), y0 + gen.random(m) * (y1 - y0)]
+    return pts[dom.contains(pts)]
+
+
+def _naive(placer: Placer, dom: Region, gen: np.random.Generator, rep: Reporter) -> str:
+    """Naive dart throwing (§3.2): (1) random placement, (2) exact collision test,
+    (3) cancel on overlap; stop after ``max_failures`` consecutive cancellations."""
+    batch = DEFAULTS["naive_batch"]
+    while not placer.done:
+        xy = _uniform_in_region(dom, gen, batch)
+        m = len(xy)
+        u_rot, u_sc = gen.random(m), gen.random(m)
+        placer.try_batch(xy, u_rot, u_sc, placer.draw_kinds(gen, m))
+        rep.tick(len(placer), message=f"{len(placer)} placed, {placer.consecutive} consecutive cancellations")
+    return f"{placer.max_failures} consecutive cancellations"
+
+
+def _fill_gap(
+    placer: Placer,
+    dom: Region,
+    gen: np.random.Generator,
+    rep: Reporter,
+    p_count: int,
+    power: float,
+    cell: float,
+    info: dict,
+) -> str:
+    kinds = placer.kinds
+    # Step 1 (§4.1): Poisson-disk points with the circumscribed circle O of the largest
+    # exclusive region at its largest scale, in the domain shrunk by that radius, so that
+    # regions neither overlap nor leave the domain.
+    radius = max(k.radius * k.scale[1] for k in kinds)
+    inner = shapely.buffer(dom.geometry, -radius)
+    sparse = 0
+    if not inner.is_empty and inner.area > 0:
+        pts = poisson_disk(inner, 2 * radius, candidates=DEFAULTS["poisson_candidates"], rng=gen)
+        m = len(pts)
+        placed = placer.try_batch(pts, gen.random(m), gen.random(m), placer.draw_kinds(gen, m), collide=False)
+        sparse = len(placed)
+        # Step 1 places no cancellations on purpose; only Step 2 counts them.
+        placer.consecutive = 0
+    info["sparse"] = sparse
+    rep.tick(len(placer), message=f"step 1: {sparse} placed", force=True)
+    field = DistanceField(dom, cell, placer.geoms)
+    # Step 2 (§4.2): rounds of P candidates from the normalised distance field.
+    while not placer.done:
+        xy = field.sample(p_count, power, gen)
+        m = len(xy)
+        if m == 0:
+            return "the distance field has no free pixel left"
+        new = placer.try_batch(xy, gen.random(m), gen.random(m), placer.draw_kinds(gen, m))
+        field.occupy([placer.geoms[i] for i in new])
+        rep.tick(len(placer), message=f"{len(placer)} placed, {placer.consecutive} consecutive cancellations")
+    return f"{placer.max_failures} consecutive cancellations"
