@@ -1,0 +1,703 @@
+"""Synthesis by local growth (Ijiri et al. 2008, §5).
+
+One seed is placed; then, repeatedly, the seed nearest the initial seed is replaced by
+the best matching reference element (§5.2, §5.3) and the unpaired elements of that
+reference's 1-ring become new seeds (§5.4), subject to the heuristics of Fig. 6. A
+windowed least-squares relaxation (§5.5) keeps ring shapes close to the reference.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import shapely
+
+from .._errors import InputError
+from .._progress import Reporter
+from .._rng import as_rng
+from ..arrangement import Arrangement
+from ..region import Region
+from ._analysis import Reference
+from ._match import MODES, W1, W2, W3, match_references, order_target
+from ._relax import relax_positions
+
+__all__ = ["GrowParams", "grow_reference"]
+
+DEAD, SEED, ELEMENT = 0, 1, 2
+
+
+@dataclass
+class GrowParams:
+    """Parameters of :func:`grow_reference` (validated by :func:`strew.grow.grow`)."""
+
+    count: int | None = None
+    region: Region | None = None
+    start: tuple[float, float] | None = None
+    mode: str = "fixed"
+    flow: Callable[[np.ndarray], np.ndarray] | None = None
+    boundary: Sequence[np.ndarray] = ()
+    spray: np.ndarray | None = None
+    spray_radius: float | None = None
+    priority: dict[str, float] | None = None
+    jitter_scale: float = 0.0
+    jitter_rotation: float = 0.0
+    jitter_color: float = 0.0
+    relax: bool = True
+    relax_every: int = 8
+    relax_hops: int = 1
+    weights: tuple[float, float, float] = (W1, W2, W3)
+    avoid_overlaps: bool = True
+    connectivity: bool = False
+    max_elements: int = 2_000_000
+
+
+def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
+    """True when segments pq and ab cross at a point interior to both."""
+
+    def orient(u, v, w) -> float:
+        return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0])
+
+    d1 = orient(a, b, p)
+    d2 = orient(a, b, q)
+    d3 = orient(p, q, a)
+    d4 = orient(p, q, b)
+    return ((d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0)) and ((d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0))
+
+
+def _parse_hex(c: Any) -> tuple[float, float, float] | None:
+    if not isinstance(c, str) or not c.startswith("#") or len(c) not in (4, 7):
+        return None
+    try:
+        if len(c) == 4:
+            return tuple(int(ch * 2, 16) / 255 for ch in c[1:])  # type: ignore[return-value]
+        return tuple(int(c[i : i + 2], 16) / 255 for i in (1, 3, 5))  # type: ignore[return-value]
+    except ValueError:
+        return None
+
+
+class _Grower:
+    def __init__(self, ref: Reference, p: GrowParams, rng: np.random.Generator) -> None:
+        self.ref = ref
+        self.p = p
+        self.rng = rng
+        ex = ref.exemplar
+        self.rings = ref.ring_arrays()
+        self.ref_ids = self.rings["ids"]
+        self.ex_kind = ex.kind.astype(np.int64)
+        self.ex_rot = ex.rotation
+        self.ex_scale = ex.scale
+        self.n_kinds = len(ex.kinds)
+        self.l = ref.mean_edge
+        self.l_short = 0.5 * ref.shortest_edge  # §5.4: half of the shortest reference edge
+        self.mode_code = MODES[p.mode]
+        # per-reference: angular gaps of the ring, mean ring edge length
+        n_ref = len(self.ref_ids)
+        self.ring_gap_min = []  # (k,) smallest of the two gaps beside each ring slot
+        self.ring_edge_mean = np.zeros(n_ref)
+        for a in range(n_ref):
+            k = int(self.rings["n"][a])
+            rel = self.rings["rel"][a, :k]
+            ang = np.arctan2(rel[:, 1], rel[:, 0])
+            gaps = np.mod(np.diff(np.r_[ang, ang[0]]), 2 * np.pi)  # gap after slot j
+            self.ring_gap_min.append(np.minimum(gaps, np.roll(gaps, 1)))
+            self.ring_edge_mean[a] = float(np.linalg.norm(rel - np.roll(rel, -1, axis=0), axis=1).mean())
+        ref_kind = self.ex_kind[self.ref_ids]
+        self.kind_candidates = [ref_kind == k for k in range(self.n_kinds)]
+        self.all_candidates = np.ones(n_ref, dtype=bool)
+        # priorities (§5.1)
+        prio = np.zeros(self.n_kinds)
+        for name, v in (p.priority or {}).items():
+            prio[ex.kinds.index(name)] = v
+        self.kind_prio = prio
+        self.use_prio = bool(prio.max() > prio.min())
+        self.none_prio = float(prio.min())
+        # geometry for the overlap guard
+        self.local_geom = [ex.shapes[k].geometry for k in ex.kinds]
+        self.local_coords = [None] * self.n_kinds
+        self.kind_radius = np.array([max(ex.shapes[k].radius, 0.0) for k in ex.kinds])
+        self.areal = [not g.is_empty and g.area > 0 for g in self.local_geom]
+        # colours (§3: per-element colour variation)
+        base = ex.columns.get("color")
+        self.ex_color: list[Any] = []
+        for i in range(len(ex)):
+            c = base[i] if base is not None and base.ndim == 1 else None
+            if c is None:
+                c = ex.shapes[ex.kinds[ex.kind[i]]].style.get("fill")
+            self.ex_color.append(c)
+        self.want_color = p.jitter_color > 0 or base is not None
+        # state
+        cap = 1024
+        self.pos = np.zeros((cap, 2))
+        self.state = np.zeros(cap, dtype=np.int8)
+        self.kind = np.full(cap, -1, dtype=np.int64)
+        self.sub = np.full(cap, -1, dtype=np.int64)
+        self.rot = np.zeros(cap)
+        self.scl = np.ones(cap)
+        self.fixed = np.zeros(cap, dtype=bool)
+        self.refslot = np.full(cap, -1, dtype=np.int64)  # reference row of each element
+        self.n = 0
+        self.adj: list[set[int]] = []
+        self.target: list[dict[int, tuple[float, float]] | None] = []  # ring offsets r_ji
+        self.geom: list[Any] = []
+        self.color: list[Any] = []
+        self.order: list[int] = []  # elements in placement order
+        self.cell = max(self.l, 1e-9)
+        self.grid: dict[tuple[int, int], list[int]] = {}
+        self.edge_grid: dict[tuple[int, int], list[tuple[int, int]]] = {}
+        self.edges: set[tuple[int, int]] = set()
+        self.max_edge = 0.0
+        self.heap: list[tuple[float, int]] = []
+        self.deferred: set[int] = set()
+        self.origin = (0.0, 0.0)
+        # tools
+        self.region = p.region
+        self.boundary = None
+        if p.boundary:
+            lines = [shapely.LineString(b) for b in p.boundary if len(b) >= 2]
+            if lines:
+                self.boundary = shapely.MultiLineString(lines)
+                shapely.prepare(self.boundary)
+        self.spray_area = None
+        if p.spray is not None:
+            sp = np.asarray(p.spray, dtype=float)
+            g = shapely.LineString(sp) if len(sp) >= 2 else shapely.Point(sp[0])
+            self.spray_area = g.buffer(float(p.spray_radius))
+            shapely.prepare(self.spray_area)
+        self.dirty: set[int] = set()
+        self.steps_since_relax = 0
+        self.ring_n: dict[int, int] = {}
+        self.max_scale = 1.0
+        self._last_nb = np.zeros(0, dtype=np.int64)
+
+    # -- storage ------------------------------------------------------------------------
+    def _grow_capacity(self) -> None:
+        cap = 2 * len(self.state)
+        for name in ("pos", "state", "kind", "sub", "rot", "scl", "fixed", "refslot"):
+            old = getattr(self, name)
+            new = np.zeros((cap, *old.shape[1:]), dtype=old.dtype)
+            if name in ("kind", "sub", "refslot"):
+                new[:] = -1
+            if name == "scl":
+                new[:] = 1.0
+            new[: len(old)] = old
+            setattr(self, name, new)
+
+    def _cell(self, x: float, y: float) -> tuple[int, int]:
+        return (math.floor(x / self.cell), math.floor(y / self.cell))
+
+    def new_object(self, x: float, y: float, kind: int) -> int:
+        if self.n == len(self.state):
+            self._grow_capacity()
+        i = self.n
+        self.n += 1
+        self.pos[i] = (x, y)
+        self.state[i] = SEED
+        self.kind[i] = kind
+        self.adj.append(set())
+        self.target.append(None)
+        self.geom.append(None)
+        self.color.append(None)
+        self.grid.setdefault(self._cell(x, y), []).append(i)
+        heapq.heappush(self.heap, (math.hypot(x - self.origin[0], y - self.origin[1]), i))
+        self.dirty.add(i)
+        return i
+
+    def near(self, x: float, y: float, r: float, states: tuple[int, ...] = (SEED, ELEMENT)) -> list[int]:
+        h = self.cell
+        cx0, cy0 = math.floor((x - r) / h), math.floor((y - r) / h)
+        cx1, cy1 = math.floor((x + r) / h), math.floor((y + r) / h)
+        out = []
+        r2 = r * r
+        pos = self.pos
+        st = self.state
+        for cx in range(cx0, cx1 + 1):
+            for cy in range(cy0, cy1 + 1):
+                lst = self.grid.get((cx, cy))
+                if not lst:
+                    continue
+                for i in lst:
+                    if st[i] in states:
+                        dx = pos[i, 0] - x
+                        dy = pos[i, 1] - y
+                        if dx * dx + dy * dy <= r2:
+                            out.append(i)
+        return out
+
+    def _move(self, i: int, x: float, y: float) -> None:
+        old = self._cell(*self.pos[i])
+        new = self._cell(x, y)
+        self.pos[i] = (x, y)
+        if old != new:
+            self.grid[old].remove(i)
+            self.grid.setdefault(new, []).append(i)
+            # edges are indexed by midpoint: reinsert the ones of i
+            for j in self.adj[i]:
+                self._index_edge(i, j)
+
+    # -- edges --------------------------------------------------------------------------
+    def _index_edge(self, a: int, b: int) -> None:
+        e = (a, b) if a < b else (b, a)
+        pa, pb = self.pos[a], self.pos[b]
+        L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+        self.max_edge = max(self.max_edge, L)
+        c = self._cell(0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]))
+        lst = self.edge_grid.setdefault(c, [])
+        if e not in lst:
+            lst.append(e)
+
+    def add_edge(self, a: int, b: int) -> None:
+        if a == b or b in self.adj[a]:
+            return
+        self.adj[a].add(b)
+        self.adj[b].add(a)
+        self.edges.add((a, b) if a < b else (b, a))
+        self._index_edge(a, b)
+
+    def remove_edge(self, a: int, b: int) -> None:
+        self.adj[a].discard(b)
+        self.adj[b].discard(a)
+        self.edges.discard((a, b) if a < b else (b, a))
+
+    def crosses_edges(self, a: int | None, pa: tuple[float, float], b: int | None, pb: tuple[float, float]) -> bool:
+        """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge?"""
+        mx, my = 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1])
+        half = 0.5 * math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+        r = half + 0.5 * self.max_edge + self.cell
+        h = self.cell
+        seen: set[tuple[int, int]] = set()
+        pos = self.pos
+        for cx in range(math.floor((mx - r) / h), math.floor((mx + r) / h) + 1):
+            for cy in range(math.floor((my - r) / h), math.floor((my + r) / h) + 1):
+                lst = self.edge_grid.get((cx, cy))
+                if not lst:
+                    continue
+                live = []
+                for e in lst:
+                    if e not in self.edges:
+                        continue
+                    live.append(e)
+                    if e in seen:
+                        continue
+                    seen.add(e)
+                    u, v = e
+                    if u == a or u == b or v == a or v == b:
+                        continue
+                    if _segments_cross(pa, pb, (pos[u, 0], pos[u, 1]), (pos[v, 0], pos[v, 1])):
+                        self.edge_grid[(cx, cy)] = live + [x for x in lst[len(live) :] if x in self.edges]
+                        return True
+                self.edge_grid[(cx, cy)] = live
+        return False
+
+    def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
+        if self.boundary is None:
+            return False
+        return bool(shapely.intersects(self.boundary, shapely.LineString([pa, pb])))
+
+    def kill(self, i: int) -> None:
+        for j in list(self.adj[i]):
+            self.remove_edge(i, j)
+        self.state[i] = DEAD
+        self.deferred.discard(i)
+
+    # -- geometry guard -----------------------------------------------------------------
+    def element_geometry(self, kind: int, x: float, y: float, rot: float, scale: float) -> Any:
+        local = self.local_geom[kind]
+        c, s = math.cos(rot) * scale, math.sin(rot) * scale
+        return shapely.transform(local, lambda q: np.c_[x + c * q[:, 0] - s * q[:, 1], y + s * q[:, 0] + c * q[:, 1]])
+
+    def overlaps_any(self, g: Any, kind: int, x: float, y: float, scale: float, skip: set[int] | None = None) -> bool:
+        r = self.kind_radius[kind] * scale + self.kind_radius.max() * self.max_scale
+        others = [j for j in self.near(x, y, r, (ELEMENT,)) if not skip or j not in skip]
+        if not others:
+            return False
+        gs = np.array([self.geom[j] for j in others], dtype=object)
+        hit = shapely.intersects(g, gs)
+        if not hit.any():
+            return False
+        if not self.areal[kind]:
+            return True
+        for j in np.flatnonzero(hit):
+            if not self.areal[self.kind[others[j]]]:
+                return True
+            if shapely.intersection(g, gs[j]).area > 1e-9 * max(g.area, 1e-300):
+                return True
+        return False
+
+    # -- growth -------------------------------------------------------------------------
+    def seed_priority(self, i: int) -> float:
+        k = self.kind[i]
+        return self.none_prio if k < 0 else float(self.kind_prio[k])
+
+    def outranked(self, i: int) -> bool:
+        """§5.1: grow only seeds of the highest priority within 5 * l."""
+        if not self.use_prio:
+            return False
+        pi = self.seed_priority(i)
+        x, y = self.pos[i]
+        for j in self.near(x, y, 5 * self.l, (SEED,)):
+            if j != i and self.seed_priority(j) > pi:
+                return True
+        return False
+
+    def release_deferred(self, i: int) -> None:
+        if not self.deferred:
+            return
+        x, y = self.pos[i]
+        for j in self.near(x, y, 5 * self.l, (SEED,)):
+            if j in self.deferred:
+                self.deferred.discard(j)
+                heapq.heappush(self.heap, (math.hypot(self.pos[j, 0] - self.origin[0], self.pos[j, 1] - self.origin[1]), j))
+
+    def in_domain(self, x: float, y: float) -> bool:
+        if self.region is not None and not shapely.contains_xy(self.region.prepared, x, y):
+            return False
+        return True
+
+    def choose(self, s: int) -> tuple[int, int, float] | None:
+        """§5.2: the reference element minimising Eq. 3 for seed ``s``."""
+        nb = [j for j in self.adj[s] if self.state[j] == ELEMENT]
+        ps = self.pos[s]
+        if nb:
+            rel = self.pos[nb] - ps
+            order = order_target(rel)
+            nb_arr = np.asarray(nb)[order]
+            rel = rel[order]
+        else:
+            nb_arr = np.zeros(0, dtype=np.int64)
+            rel = np.zeros((0, 2))
+        k = self.kind[s]
+        cand = self.all_candidates
+        if k >= 0 and self.kind_candidates[k].any():
+            cand = self.kind_candidates[k]
+        flow_theta = 0.0
+        if self.mode_code == 2:
+            v = self.p.flow(ps[None, :])[0]
+            flow_theta = math.atan2(v[1], v[0])
+        err, shift, theta = match_references(
+            self.rings, rel, self.kind[nb_arr], self.sub[nb_arr], mode=self.p.mode, flow_theta=flow_theta, candidates=cand, weights=self.p.weights
+        )
+        best = float(err.min()) if len(err) else math.inf
+        if not math.isfinite(best):
+            return None
+        ties = np.flatnonzero(err <= best + 1e-9 * (1.0 + best))
+        a = int(ties[0]) if len(ties) == 1 else int(ties[self.rng.integers(len(ties))])
+        self._last_nb = nb_arr
+        return a, int(shift[a]), float(theta[a])
+
+    def place(self, s: int, a: int, k: int, th: float) -> bool:
+        """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
+        p = self.p
+        r = int(self.ref_ids[a])
+        kind = int(self.ex_kind[r])
+        x, y = float(self.pos[s, 0]), float(self.pos[s, 1])
+        rot = float(self.ex_rot[r]) + th
+        scale = float(self.ex_scale[r])
+        if p.jitter_rotation > 0:
+            rot += float(self.rng.uniform(-p.jitter_rotation, p.jitter_rotation))
+        if p.jitter_scale > 0:
+            scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
+        g = None
+        if p.avoid_overlaps:
+            g = self.element_geometry(kind, x, y, rot, scale)
+            if self.overlaps_any(g, kind, x, y, scale):
+                return False
+        else:
+            g = self.element_geometry(kind, x, y, rot, scale)
+        self.state[s] = ELEMENT
+        self.kind[s] = kind
+        self.sub[s] = r
+        self.rot[s] = rot
+        self.scl[s] = scale
+        self.refslot[s] = a
+        self.geom[s] = g
+        self.color[s] = self._color(r) if self.want_color else None
+        self.order.append(s)
+        self.dirty.add(s)
+
+        n_ring = int(self.rings["n"][a])
+        c, sn = math.cos(th), math.sin(th)
+        rel = self.rings["rel"][a, :n_ring]
+        ring_pos = np.c_[x + c * rel[:, 0] - sn * rel[:, 1], y + sn * rel[:, 0] + c * rel[:, 1]]
+        ring_kind = self.rings["kind"][a, :n_ring]
+        slot_of: dict[int, int] = {}
+        nb = self._last_nb
+        for i, j in enumerate(nb.tolist()):
+            slot_of[j] = (k + i) % n_ring
+        paired = set(slot_of.values())
+        gap_min = self.ring_gap_min[a]
+        # New seeds (Fig. 2g) with the heuristics of Fig. 6 (b)-(d).
+        for j in range(n_ring):
+            if j in paired:
+                continue
+            cx, cy = float(ring_pos[j, 0]), float(ring_pos[j, 1])
+            if not self.in_domain(cx, cy):
+                continue
+            if self.crosses_boundary((x, y), (cx, cy)):
+                self.fixed[s] = True  # Eq. 6: elements at user boundaries are constrained
+                continue
+            # (b) merge with an object within l_short
+            close = self.near(cx, cy, self.l_short)
+            close = [o for o in close if o != s]
+            if close:
+                o = min(close, key=lambda o: (self.pos[o, 0] - cx) ** 2 + (self.pos[o, 1] - cy) ** 2)
+                if o not in self.adj[s]:
+                    po = (float(self.pos[o, 0]), float(self.pos[o, 1]))
+                    if not self.crosses_edges(s, (x, y), o, po) and not self.crosses_boundary((x, y), po):
+                        self.add_edge(s, o)
+                        slot_of.setdefault(o, j)
+                continue
+            # (c) angle check against the neighbours already around s
+            ang = math.atan2(cy - y, cx - x)
+            too_close = False
+            for o in self.adj[s]:
+                d = abs(math.atan2(self.pos[o, 1] - y, self.pos[o, 0] - x) - ang)
+                d = min(d, 2 * math.pi - d)
+                if d < 0.5 * gap_min[j]:
+                    too_close = True
+                    break
+            if too_close:
+                continue
+            # (d) edge collision
+            if self.crosses_edges(s, (x, y), None, (cx, cy)):
+                continue
+            t = self.new_object(cx, cy, int(ring_kind[j]))
+            self.add_edge(s, t)
+            slot_of[t] = j
+        # (h) edges between consecutive ring members, and (e) extra seeds on long ones
+        self._ring_edges(s, a, slot_of, rel, c, sn)
+        # ring targets r_ji for the relaxation (§5.5)
+        tgt = {}
+        for o, j in slot_of.items():
+            if o in self.adj[s]:
+                tgt[o] = (c * rel[j, 0] - sn * rel[j, 1], sn * rel[j, 0] + c * rel[j, 1])
+        self.target[s] = tgt
+        self.ring_n[s] = n_ring
+        return True
+
+    def _ring_edges(self, s: int, a: int, slot_of: dict[int, int], rel: np.ndarray, c: float, sn: float) -> None:
+        x, y = self.pos[s]
+        nbrs = list(self.adj[s])
+        if len(nbrs) < 2:
+            return
+        angs = [math.atan2(self.pos[o, 1] - y, self.pos[o, 0] - x) for o in nbrs]
+        order = sorted(range(len(nbrs)), key=lambda q: angs[q])
+        m = len(order)
+        for q in range(m):
+            ia, ib = order[q], order[(q + 1) % m]
+            oa, ob = nbrs[ia], nbrs[ib]
+            gap = (angs[ib] - angs[ia]) % (2 * math.pi)
+            if m == 2 and q == 1:
+                break
+            if gap <= 1e-9 or gap >= math.pi - 1e-9 or ob in self.adj[oa]:
+                continue
+            pa = (float(self.pos[oa, 0]), float(self.pos[oa, 1]))
+            pb = (float(self.pos[ob, 0]), float(self.pos[ob, 1]))
+            ja, jb = slot_of.get(oa), slot_of.get(ob)
+            if ja is not None and jb is not None:
+                orig = float(np.hypot(*(rel[ja] - rel[jb])))
+            else:
+                orig = float(self.ring_edge_mean[a])
+            L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+            if L > 1.5 * orig:
+                # (e) l_long = 1.5 * original length: an extra seed on the bisector, at the
+                # average length of the two adjacent edges, without a symbol id
+                mid = angs[ia] + 0.5 * gap
+                la = math.hypot(pa[0] - x, pa[1] - y)
+                lb = math.hypot(pb[0] - x, pb[1] - y)
+                d = 0.5 * (la + lb)
+                ex, ey = float(x + d * math.cos(mid)), float(y + d * math.sin(mid))
+                if not self.in_domain(ex, ey) or self.crosses_boundary((x, y), (ex, ey)):
+                    continue
+                if self.near(ex, ey, self.l_short):
+                    continue
+                if self.crosses_edges(s, (x, y), None, (ex, ey)):
+                    continue
+                t = self.new_object(ex, ey, -1)
+                self.add_edge(s, t)
+                for o, po in ((oa, pa), (ob, pb)):
+                    # (f) edges that would collide are left out
+                    if not self.crosses_edges(o, po, t, (ex, ey)) and not self.crosses_boundary(po, (ex, ey)):
+                        self.add_edge(o, t)
+            else:
+                if not self.crosses_edges(oa, pa, ob, pb) and not self.crosses_boundary(pa, pb):
+                    self.add_edge(oa, ob)
+
+    def _color(self, r: int) -> Any:
+        base = self.ex_color[r]
+        amt = self.p.jitter_color
+        if amt <= 0:
+            return base
+        rgb = _parse_hex(base)
+        if rgb is None:
+            return base
+        f = 1.0 + float(self.rng.uniform(-amt, amt))
+        out = [min(1.0, max(0.0, v * f)) for v in rgb]
+        return "#" + "".join(f"{int(round(v * 255)):02x}" for v in out)
+
+    # -- relaxation (§5.5) ----------------------------------------------------------------
+    def ring_target(self, i: int, j: int) -> tuple[float, float]:
+        t = self.target[i]
+        if t is not None and j in t and len(t) == len(self.adj[i]) and len(t) == self.ring_n.get(i, -1):
+            return t[j]
+        # §5.5: seeds, and elements that lost or gained an edge, use their current shape
+        return (self.pos[j, 0] - self.pos[i, 0], self.pos[j, 1] - self.pos[i, 1])
+
+    def relax_window(self) -> None:
+        win = {i for i in self.dirty if self.state[i] != DEAD}
+        self.dirty = set()
+        for _ in range(self.p.relax_hops):
+            win |= {j for i in win for j in self.adj[i]}
+        win = [i for i in win if not self.fixed[i]]
+        if not win:
+            return
+        wset = set(win)
+        src, dst, off = [], [], []
+        for i in win:
+            for j in self.adj[i]:
+                src.append(i)
+                dst.append(j)
+                off.append(self.ring_target(i, j))
+                if j not in wset:
+                    src.append(j)
+                    dst.append(i)
+                    off.append(self.ring_target(j, i))
+        if not src:
+            return
+        nodes = sorted(wset | set(dst) | set(src))
+        local = {g: q for q, g in enumerate(nodes)}
+        pos = self.pos[nodes]
+        free = np.array([g in wset for g in nodes])
+        new = relax_positions(pos, [local[g] for g in src], [local[g] for g in dst], np.asarray(off), free)
+        moved = [g for g in win]
+        newpos = {g: new[local[g]] for g in moved}
+        if self.p.avoid_overlaps:
+            # keep the no-overlap guarantee: a relaxation that would make elements
+            # overlap is not applied
+            old = {g: (self.pos[g].copy(), self.geom[g]) for g in moved}
+            for g in moved:
+                self._move(g, float(newpos[g][0]), float(newpos[g][1]))
+            els = [g for g in moved if self.state[g] == ELEMENT]
+            for g in els:
+                self.geom[g] = self.element_geometry(int(self.kind[g]), self.pos[g, 0], self.pos[g, 1], self.rot[g], self.scl[g])
+            bad = False
+            for g in els:
+                if self.overlaps_any(self.geom[g], int(self.kind[g]), self.pos[g, 0], self.pos[g, 1], self.scl[g], skip={g}):
+                    bad = True
+                    break
+            if bad:
+                for g in moved:
+                    self._move(g, float(old[g][0][0]), float(old[g][0][1]))
+                    self.geom[g] = old[g][1]
+        else:
+            for g in moved:
+                self._move(g, float(newpos[g][0]), float(newpos[g][1]))
+            for g in moved:
+                if self.state[g] == ELEMENT:
+                    self.geom[g] = self.element_geometry(int(self.kind[g]), self.pos[g, 0], self.pos[g, 1], self.rot[g], self.scl[g])
+
+    # -- main loop --------------------------------------------------------------------------
+    def run(self, start: tuple[float, float], rep: Reporter) -> None:
+        p = self.p
+        self.max_scale = float(self.ex_scale.max()) * (1.0 + p.jitter_scale)
+        self.origin = start
+        s0 = self.new_object(start[0], start[1], -1)
+        first = True
+        target = p.count if p.count is not None else p.max_elements
+        while self.heap and len(self.order) < target:
+            _, s = heapq.heappop(self.heap)
+            if self.state[s] != SEED or s in self.deferred:
+                continue
+            x, y = self.pos[s]
+            if self.spray_area is not None and not shapely.contains_xy(self.spray_area, x, y):
+                continue  # §5.1 spray tool: only seeds within the radius grow; others wait
+            if not self.in_domain(x, y):
+                self.kill(s)
+                continue
+            if self.outranked(s):
+                self.deferred.add(s)
+                continue
+            pick = self.choose(s)
+            if pick is None or not self.place(s, *pick):
+                self.kill(s)
+                self.release_deferred(s)
+                continue
+            if first:
+                self.fixed[s0] = True  # Eq. 6: the initial element holds its position
+                first = False
+            self.release_deferred(s)
+            self.steps_since_relax += 1
+            if p.relax and self.steps_since_relax >= p.relax_every:
+                self.relax_window()
+                self.steps_since_relax = 0
+            rep.tick(len(self.order))
+        if p.relax and self.dirty:
+            self.relax_window()
+
+    def result(self, meta: dict[str, Any]) -> Arrangement:
+        ex = self.ref.exemplar
+        idx = np.asarray(self.order, dtype=np.intp)
+        columns: dict[str, Any] = {"sub_id": self.sub[idx].copy()}
+        if self.want_color:
+            columns["color"] = [self.color[i] for i in idx]
+        extra: dict[str, Any] = {}
+        if self.p.connectivity:
+            new = np.full(self.n, -1, dtype=np.int64)
+            new[idx] = np.arange(len(idx))
+            e = np.array(sorted(self.edges), dtype=np.int64).reshape(-1, 2)
+            e = new[e] if len(e) else e
+            e = e[(e >= 0).all(axis=1)] if len(e) else e
+            e = np.sort(e, axis=1)
+            extra["connectivity"] = {"count": int(len(idx)), "edges": np.unique(e, axis=0).tolist() if len(e) else []}
+        return Arrangement(
+            ex.shapes,
+            self.kind[idx],
+            self.pos[idx, 0].copy(),
+            self.pos[idx, 1].copy(),
+            self.rot[idx].copy(),
+            self.scl[idx].copy(),
+            columns=columns,
+            region=self.region,
+            meta=meta,
+            extra=extra,
+        )
+
+    def live_edges(self) -> np.ndarray:
+        """(m, 2) edges between elements, in element ids of this grower."""
+        e = [(a, b) for a, b in self.edges if self.state[a] == ELEMENT and self.state[b] == ELEMENT]
+        return np.array(sorted(e), dtype=np.int64).reshape(-1, 2)
+
+
+def grow_reference(
+    ref: Reference,
+    params: GrowParams,
+    *,
+    rng: int | np.random.Generator | None = None,
+    progress: Callable[[int, int | None, str], None] | None = None,
+    should_cancel: Callable[[], bool] | None = None,
+    meta: dict[str, Any] | None = None,
+) -> Arrangement:
+    """Grow from one seed with an analysed reference (§5). See :func:`strew.grow.grow`."""
+    g = _Grower(ref, params, as_rng(rng))
+    start = params.start
+    if start is None:
+        if params.spray is not None:
+            start = (float(params.spray[0][0]), float(params.spray[0][1]))
+        elif params.region is not None:
+            c = params.region.geometry.centroid
+            if not params.region.contains([[c.x, c.y]])[0]:
+                c = params.region.geometry.representative_point()
+            start = (float(c.x), float(c.y))
+        else:
+            start = (0.0, 0.0)
+    if params.region is not None and not params.region.contains([start])[0]:
+        raise InputError(f"--start {start[0]:g},{start[1]:g}: lies outside the region")
+    total = params.count
+    rep = Reporter(progress, should_cancel, total=total, message="growing")
+    g.run((float(start[0]), float(start[1])), rep)
+    rep.done(len(g.order))
+    return g.result(meta or {})

@@ -1,0 +1,183 @@
+"""Finding the best matching reference element (Ijiri et al. 2008, §5.2, §5.3).
+
+Target and reference neighbours are ordered counter-clockwise. The set ``F`` of
+matchings pairs the target neighbours ``t_0 .. t_{T-1}`` with consecutive reference
+neighbours ``r_k .. r_{k+T-1}`` (cyclically), one matching per start ``k``: no skipping,
+no flipping. Each matching is scored by Eq. 2 and a reference by the minimum over ``F``
+(Eq. 3). References with fewer neighbours than the target are skipped.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+__all__ = ["MODES", "match_references", "matching_set", "order_target", "W1", "W2", "W3"]
+
+#: rotation modes (§5.3) and their codes in the kernel
+MODES = {"fixed": 0, "rotate": 1, "flow": 2}
+#: §5.2: "We set w1 = 1.0, w2 = 1.0, and w3 = 100.0"
+W1, W2, W3 = 1.0, 1.0, 100.0
+
+
+def matching_set(n_target: int, n_reference: int) -> list[list[tuple[int, int]]]:
+    """The set F of cyclic matchings without skipping or flipping (§5.2, Fig. 4).
+
+    Returns one list of ``(target index, reference index)`` pairs per start ``k``;
+    empty when the reference has fewer neighbours than the target.
+
+    Examples
+    --------
+    >>> len(matching_set(4, 6)), matching_set(2, 3)[2]
+    (6, [(0, 2), (1, 0)])
+    """
+    if n_target > n_reference:
+        return []
+    return [[(i, (k + i) % n_reference) for i in range(n_target)] for k in range(n_reference)]
+
+
+def order_target(rel: np.ndarray) -> np.ndarray:
+    """Counter-clockwise order of target neighbours, starting at the boundary (§5.2).
+
+    The target neighbourhood of a seed is partial; it starts with the neighbour that
+    follows the largest angular gap, so that consecutive neighbours are matched to
+    consecutive reference neighbours.
+
+    Parameters
+    ----------
+    rel : (T, 2) float
+        Neighbour positions relative to the seed.
+
+    Returns
+    -------
+    (T,) int
+    """
+    if len(rel) == 0:
+        return np.zeros(0, dtype=np.intp)
+    a = np.arctan2(rel[:, 1], rel[:, 0])
+    order = np.argsort(a, kind="stable")
+    a = a[order]
+    gaps = np.diff(np.r_[a, a[0] + 2 * np.pi])
+    start = (int(np.argmax(gaps)) + 1) % len(a)
+    return np.roll(order, -start)
+
+
+@numba.njit(cache=True)
+def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub, mode, flow_theta, w1, w2, w3, out_err, out_shift, out_theta):  # pragma: no cover - compiled
+    R = ref_rel.shape[0]
+    T = t_rel.shape[0]
+    for r in range(R):
+        out_err[r] = np.inf
+        out_shift[r] = -1
+        out_theta[r] = 0.0
+        nr = ref_n[r]
+        if not cand[r] or nr < T:
+            continue
+        # w3 * subid: a target neighbour with the same sub-id as this reference element
+        pen = 0.0
+        for i in range(T):
+            if t_sub[i] == ref_sub[r]:
+                pen += w3
+        best = np.inf
+        best_k = 0
+        best_th = 0.0
+        for k in range(nr):
+            th = 0.0
+            if mode == 1 and T > 0:
+                # Eq. 4: the rotation minimising the positional difference (shape matching)
+                a = 0.0
+                b = 0.0
+                for i in range(T):
+                    j = (k + i) % nr
+                    px = ref_rel[r, j, 0]
+                    py = ref_rel[r, j, 1]
+                    a += px * t_rel[i, 0] + py * t_rel[i, 1]
+                    b += px * t_rel[i, 1] - py * t_rel[i, 0]
+                th = np.arctan2(b, a)
+            elif mode == 2:
+                th = flow_theta
+            c = np.cos(th)
+            s = np.sin(th)
+            e = 0.0
+            for i in range(T):
+                j = (k + i) % nr
+                px = c * ref_rel[r, j, 0] - s * ref_rel[r, j, 1]
+                py = s * ref_rel[r, j, 0] + c * ref_rel[r, j, 1]
+                dx = t_rel[i, 0] - px
+                dy = t_rel[i, 1] - py
+                e += w1 * np.sqrt(dx * dx + dy * dy)
+                if t_kind[i] != ref_kind[r, j]:
+                    e += w2
+            if e < best:
+                best = e
+                best_k = k
+                best_th = th
+        out_err[r] = best + pen
+        out_shift[r] = best_k
+        out_theta[r] = best_th
+
+
+def match_references(
+    rings: dict[str, np.ndarray],
+    target_rel: np.ndarray,
+    target_kind: np.ndarray,
+    target_sub: np.ndarray,
+    *,
+    mode: str = "fixed",
+    flow_theta: float = 0.0,
+    candidates: np.ndarray | None = None,
+    weights: tuple[float, float, float] = (W1, W2, W3),
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """ERROR(w(e_tar), w(e_ref)) of Eq. 3 for every reference element.
+
+    Parameters
+    ----------
+    rings : dict
+        :meth:`Reference.ring_arrays` (``rel`` (r, K, 2), ``kind``, ``sub`` (r, K),
+        ``n`` (r,), ``ids`` (r,)).
+    target_rel : (T, 2) float
+        Target neighbours relative to the seed, in the order of :func:`order_target`.
+    target_kind, target_sub : (T,) int
+        Their symbol ids and sub-ids.
+    mode : {"fixed", "rotate", "flow"}
+        §5.3 rotation mode.
+    flow_theta : float
+        Flow direction at the seed (radians), for ``mode="flow"``.
+    candidates : (r,) bool, optional
+        References allowed (a seed with a symbol id admits only that kind).
+    weights : (w1, w2, w3)
+
+    Returns
+    -------
+    error : (r,) float
+        ``inf`` for skipped references.
+    shift : (r,) int
+        The best matching ``f_k``: target ``i`` pairs with reference neighbour ``(k + i) % n``.
+    theta : (r,) float
+        Rotation applied to the reference ring (0 in ``fixed`` mode).
+    """
+    R = len(rings["n"])
+    cand = np.ones(R, dtype=np.bool_) if candidates is None else np.asarray(candidates, dtype=np.bool_)
+    err = np.empty(R)
+    shift = np.empty(R, dtype=np.int64)
+    theta = np.empty(R)
+    t_rel = np.ascontiguousarray(target_rel, dtype=np.float64).reshape(-1, 2)
+    _match_kernel(
+        rings["rel"],
+        rings["kind"],
+        rings["n"],
+        rings["ids"],
+        cand,
+        t_rel,
+        np.ascontiguousarray(target_kind, dtype=np.int64),
+        np.ascontiguousarray(target_sub, dtype=np.int64),
+        MODES[mode],
+        float(flow_theta),
+        float(weights[0]),
+        float(weights[1]),
+        float(weights[2]),
+        err,
+        shift,
+        theta,
+    )
+    return err, shift, theta
