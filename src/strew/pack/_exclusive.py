@@ -152,13 +152,6 @@ def build_exclusive_regions(
             raise InputError(f"margin[{name}]: must be finite, got {m}")
         source = exclusive.get(name, shape)
         which = "exclusive shape" if name in exclusive else "shape"
-        bad = _self_intersecting_paths(source)
-        if bad:
-            warnings.warn(
-                f"{which} {name!r}: path {bad[0]} intersects itself; repaired under the even-odd rule",
-                PackWarning,
-                stacklevel=3,
-            )
         body = source.geometry
         if not body.is_empty and not body.is_valid:
             body = shapely.make_valid(body)
@@ -169,6 +162,13 @@ def build_exclusive_regions(
         if body.is_empty or body.area <= 0:
             hint = " (it has only open strokes; give a margin > 0)" if not source.line_geometry.is_empty else ""
             raise InputError(f"{which} {name!r}: exclusive region has zero area{hint}")
+        bad = _self_intersecting_paths(source)
+        if bad:
+            warnings.warn(
+                f"{which} {name!r}: path {bad[0]} intersects itself; repaired under the even-odd rule",
+                PackWarning,
+                stacklevel=3,
+            )
         x0, y0, x1, y1 = body.bounds
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
         body = shapely.transform(body, lambda p, c=c: p - c)
