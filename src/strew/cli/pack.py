@@ -103,7 +103,7 @@ def command(
     weights = None
     if weight:
         w = _per_kind(weight, "--weight", number, 1.0)
-        weights = {k: w.get(k, w["*"]) for k in lib} if set(w) - {"*"} <= set(lib) else w
+        weights = {**{k: w["*"] for k in lib}, **{k: v for k, v in w.items() if k != "*"}}
     params = {
         "method": method,
         "max_failures": max_failures,
