@@ -23,6 +23,7 @@ __all__ = ["DemoItem", "SECTIONS", "build_gallery"]
 # (section title, module). Each module defines ``items(rng) -> list[DemoItem]``.
 SECTIONS: list[tuple[str, str]] = [
     ("Basics: exemplars drawn for strew", "strew._demos.basics"),
+    ("Packing: fill-gap (Sakurai & Miyata)", "strew.pack._demo"),
 ]
 
 
