@@ -1,0 +1,741 @@
+"""Arrangements as functions, and the partition, mapping and merging operators.
+
+§3 "Functional programming": an arrangement is a function that takes a region and
+returns a collection of curves; every operator (partition, mapping, merging) returns an
+arrangement; evaluating an arrangement on a region gives a planar map (§4).
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+import shapely
+
+from .._errors import InputError
+from ..region import Region
+from ._context import Context, current, evaluation, top
+from ._curves import EMPTY, Curve, Curves, as_labels, concat_curves
+from ._planar_map import DEFAULT_GRID, Face, PlanarMap, Vertex, Edge, _Cell
+from ._sampling import poisson, poisson_disk
+
+__all__ = [
+    "ArrangementFunction",
+    "Border",
+    "CROP",
+    "CROP_ADD_BOUNDARY",
+    "KEEP_INSIDE",
+    "KEEP_OUTSIDE",
+    "StripesProperties",
+    "IrregularProperties",
+    "MapperError",
+    "as_arrangement",
+    "as_region_geometry",
+    "stripes_properties",
+    "set_edge_labels",
+    "set_face_labels",
+    "stripes_partition",
+    "grid_partition",
+    "irregular_properties",
+    "set_weighted_vertex_labels",
+    "set_weighted_edge_labels",
+    "set_weighted_face_labels",
+    "uniform_partition",
+    "random_partition",
+    "map_to_vertices",
+    "map_to_edges",
+    "map_to_faces",
+    "union",
+    "inside",
+    "outside",
+    "edge_curve",
+]
+
+
+class MapperError(InputError):
+    """An exception raised inside a mapper, or a mapper that returned a wrong type.
+
+    The message names the mapper, its file and line.
+    """
+
+
+class Border(enum.Enum):
+    """Border management options (§5.2, Fig. 6)."""
+
+    CROP = "crop"
+    CROP_ADD_BOUNDARY = "crop_add_boundary"
+    KEEP_INSIDE = "keep_inside"
+    KEEP_OUTSIDE = "keep_outside"
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+CROP = Border.CROP
+CROP_ADD_BOUNDARY = Border.CROP_ADD_BOUNDARY
+KEEP_INSIDE = Border.KEEP_INSIDE
+KEEP_OUTSIDE = Border.KEEP_OUTSIDE
+
+
+def _check_border(b: Any, where: str) -> Border:
+    if isinstance(b, Border):
+        return b
+    if isinstance(b, str) and b.upper() in Border.__members__:
+        return Border[b.upper()]
+    raise InputError(f"{where}: border must be CROP, CROP_ADD_BOUNDARY, KEEP_INSIDE or KEEP_OUTSIDE, got {b!r}")
+
+
+# -- regions ------------------------------------------------------------------------------
+def as_region_geometry(region: Any) -> shapely.Geometry:
+    """The polygonal region an arrangement is evaluated on.
+
+    Accepts a size ``N`` (the square [0, N]^2), a :class:`strew.Region`, a shapely
+    (Multi)Polygon, or a bounded :class:`Face` (``arrangement(face)`` inside a mapper).
+    """
+    if isinstance(region, Face):
+        if region.is_unbounded:
+            raise InputError("region: the unbounded face cannot be partitioned")
+        return region.polygon
+    if isinstance(region, Region):
+        return region.geometry
+    if isinstance(region, (shapely.Polygon, shapely.MultiPolygon)):
+        if region.is_empty or region.area <= 0:
+            raise InputError("region: empty polygon")
+        return region
+    if isinstance(region, (int, float, np.integer, np.floating)) and not isinstance(region, bool):
+        n = float(region)
+        if not (math.isfinite(n) and n > 0):
+            raise InputError(f"region: size must be a positive number, got {region!r}")
+        return shapely.box(0.0, 0.0, n, n)
+    raise InputError(
+        f"region: expected a size, a Region, a shapely polygon or a face, got {type(region).__name__}"
+    )
+
+
+# -- arrangements -------------------------------------------------------------------------
+class ArrangementFunction:
+    """An arrangement: a function of a region that returns curves (§3).
+
+    Calling it on a region gives a :class:`PlanarMap`::
+
+        pm = arrangement(2000)           # the square [0, 2000]^2
+        pm = arrangement(face)           # inside a mapper: a sub-scale arrangement
+
+    Parameters
+    ----------
+    fn : callable
+        ``fn(region_geometry, context) -> Curves``.
+    name : str
+        The operator that made it (for messages).
+    """
+
+    def __init__(self, fn: Callable[[shapely.Geometry, Context], Curves], name: str) -> None:
+        self._fn = fn
+        self.name = name
+
+    def _eval(self, geom: shapely.Geometry, ctx: Context) -> Curves:
+        out = self._fn(geom, ctx)
+        if not isinstance(out, Curves):  # pragma: no cover - internal invariant
+            raise TypeError(f"{self.name} produced {type(out).__name__}")
+        return out
+
+    def curves(self, region: Any, *, seed: int | None = None) -> Curves:
+        """The curves of this arrangement on ``region`` (no planar map is induced)."""
+        geom = as_region_geometry(region)
+        ctx = current()
+        if ctx is not None and seed is None:
+            return self._eval(geom, ctx)
+        root = int(seed) if seed is not None else top().root
+        ctx = Context(root, root)
+        with evaluation(ctx):
+            return self._eval(geom, ctx)
+
+    def __call__(self, region: Any, *, seed: int | None = None, grid: float = DEFAULT_GRID) -> PlanarMap:
+        """Evaluate on ``region``; returns the induced planar map."""
+        return PlanarMap(self.curves(region, seed=seed), grid)
+
+    def __repr__(self) -> str:
+        return f"<arrangement {self.name}>"
+
+
+def as_arrangement(a: Any, where: str) -> ArrangementFunction:
+    """An arrangement from an arrangement, or a constant one from Curves or a PlanarMap."""
+    if isinstance(a, ArrangementFunction):
+        return a
+    if isinstance(a, PlanarMap):
+        a = a.curves
+    if isinstance(a, Curves):
+        const = a
+        return ArrangementFunction(lambda geom, ctx: const, "curves")
+    raise InputError(f"{where}: expected an arrangement (or curves), got {type(a).__name__}")
+
+
+# -- curve helpers ------------------------------------------------------------------------
+def edge_curve(edge: Edge, *, sides: tuple[bool, bool] = (True, True)) -> Curve:
+    """An edge as a curve carrying its labels and its faces' labels (§4)."""
+    t = edge._map._t
+    i = edge._i
+    lf, rf = int(t.edge_left[i]), int(t.edge_right[i])
+    left = t.face_labels[lf] if sides[0] else EMPTY
+    right = t.face_labels[rf] if sides[1] else EMPTY
+    return Curve(t.edge_points[i], False, t.edge_labels[i], left, right)
+
+
+def _map_curves(pm: PlanarMap) -> Curves:
+    """Every edge of a planar map as a curve (with the map's vertex labels as marks)."""
+    t = pm._t
+    curves = tuple(edge_curve(Edge(pm, i)) for i in range(pm.n_edges))
+    marks = tuple((float(x), float(y), labs) for (x, y), labs in zip(pm.vertex_xy.tolist(), t.vertex_labels) if labs)
+    return Curves(curves, {}, marks)
+
+
+def _crop(curves: Curves, area: shapely.Geometry, keep_inside: bool) -> Curves:
+    """Curves cut along the boundary of ``area``; the part inside (or outside) is kept."""
+    if not curves.curves:
+        return curves
+    lines = np.array([shapely.LineString(c.polyline) if len(c.polyline) >= 2 else shapely.LineString() for c in curves.curves], dtype=object)
+    prepared = area
+    shapely.prepare(prepared)
+    inside = shapely.covered_by(lines, prepared)
+    disjoint = ~shapely.intersects(lines, prepared)
+    out: list[Curve] = []
+    for c, line, ins, dis in zip(curves.curves, lines, inside.tolist(), disjoint.tolist()):
+        if line.is_empty:
+            continue
+        if (ins and keep_inside) or (dis and not keep_inside):
+            out.append(c)
+            continue
+        if (dis and keep_inside) or (ins and not keep_inside):
+            continue
+        cut = shapely.intersection(line, area) if keep_inside else shapely.difference(line, area)
+        # GEOS keeps the direction of the input line; pieces of a closed curve are open
+        for part in shapely.get_parts(shapely.line_merge(cut) if cut.geom_type == "MultiLineString" else cut):
+            if isinstance(part, shapely.LineString) and not part.is_empty and part.length > 0:
+                out.append(Curve(np.asarray(part.coords), False, c.labels, c.left, c.right))
+    return Curves(tuple(out), curves.points, curves.marks)
+
+
+def _boundary_curves(geom: shapely.Geometry) -> list[Curve]:
+    out = []
+    for poly in shapely.get_parts(geom):
+        if isinstance(poly, shapely.Polygon):
+            for ring in [poly.exterior, *poly.interiors]:
+                out.append(Curve(np.asarray(ring.coords), True))
+    return out
+
+
+def _keep_faces(curves: Curves, geom: shapely.Geometry, keep_inside: bool) -> Curves:
+    """The edges of the faces of ``curves``' planar map inside (or meeting) ``geom``."""
+    pm = PlanarMap(curves)
+    t = pm._t
+    polys = np.array(t.face_polygons[1:], dtype=object)
+    if len(polys) == 0:
+        return Curves()
+    if keep_inside:
+        area = geom.buffer(10 * pm.grid)
+        sel = shapely.covered_by(polys, area)
+    else:
+        sel = shapely.relate_pattern(polys, geom, "T********")
+    selected = np.r_[False, sel]
+    out = []
+    for e in range(pm.n_edges):
+        ls, rs = bool(selected[t.edge_left[e]]), bool(selected[t.edge_right[e]])
+        if ls or rs:
+            out.append(edge_curve(Edge(pm, e), sides=(ls, rs)))
+    return Curves(tuple(out), curves.points, curves.marks)
+
+
+def _apply_border(curves: Curves, geom: shapely.Geometry, border: Border) -> Curves:
+    """§5.2: crop the partition at the region's boundary, add it, or keep whole cells."""
+    if border is Border.CROP:
+        return _crop(curves, geom, True)
+    if border is Border.CROP_ADD_BOUNDARY:
+        c = _crop(curves, geom, True)
+        return Curves(c.curves + tuple(_boundary_curves(geom)), c.points, c.marks)
+    return _keep_faces(curves, geom, border is Border.KEEP_INSIDE)
+
+
+def _padded_bounds(geom: shapely.Geometry, pad: float) -> tuple[float, float, float, float]:
+    x0, y0, x1, y1 = geom.bounds
+    return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+
+
+# -- label groups -------------------------------------------------------------------------
+def _label_list(labels: tuple[Any, ...], where: str) -> tuple[str, ...]:
+    if not labels:
+        raise InputError(f"{where}: give at least one label")
+    out = []
+    for lab in labels:
+        if not isinstance(lab, str) or not lab:
+            raise InputError(f"{where}: labels must be non-empty strings, got {lab!r}")
+        out.append(lab)
+    return tuple(out)
+
+
+def _weighted_list(args: tuple[Any, ...], where: str) -> tuple[tuple[str, float], ...]:
+    if not args or len(args) % 2:
+        raise InputError(f"{where}: expected pairs label, weight (label1, w1, label2, w2, ...)")
+    out = []
+    for lab, w in zip(args[::2], args[1::2]):
+        if not isinstance(lab, str) or not lab:
+            raise InputError(f"{where}: labels must be non-empty strings, got {lab!r}")
+        try:
+            wf = float(w)
+        except (TypeError, ValueError):
+            raise InputError(f"{where}: weight of {lab!r} must be a number, got {w!r}") from None
+        if not (math.isfinite(wf) and wf >= 0):
+            raise InputError(f"{where}: weight of {lab!r} must be finite and >= 0, got {w!r}")
+        out.append((lab, wf))
+    return tuple(out)
+
+
+def _draw_labels(groups: tuple[tuple[tuple[str, float], ...], ...], n: int, rng: np.random.Generator) -> list[frozenset[str]]:
+    """One label per group per cell, drawn with the group's apparition probabilities.
+
+    Weights are probabilities; when they sum to less than 1 the rest is "no label", and
+    when they sum to more they are normalised.
+    """
+    out: list[set[str]] = [set() for _ in range(n)]
+    for group in groups:
+        labs = [g[0] for g in group]
+        w = np.array([g[1] for g in group], dtype=float)
+        cum = np.cumsum(w) / max(1.0, float(w.sum()))
+        u = rng.random(n)
+        idx = np.searchsorted(cum, u, side="right")
+        for i, k in enumerate(idx.tolist()):
+            if k < len(labs):
+                out[i].add(labs[k])
+    return [frozenset(s) for s in out]
+
+
+# -- regular partitions (Table 1) ---------------------------------------------------------
+@dataclass(frozen=True)
+class StripesProperties:
+    """Stripes properties: angle, cycle of widths, and cycles of edge and face labels."""
+
+    angle: float
+    widths: tuple[float, ...]
+    edge_labels: tuple[tuple[str, ...], ...] = ()
+    face_labels: tuple[tuple[str, ...], ...] = ()
+
+
+def stripes_properties(a: float, w1: float, *widths: float) -> StripesProperties:
+    """StripesProperties(Scalar a, Scalar w1 [, Scalar w2, ...]): sets stripes properties.
+
+    Parameters
+    ----------
+    a : float
+        Angle of the lines, in radians (0: horizontal lines).
+    w1, *widths : float
+        Widths between successive lines, repeated as a cycle (§5.1).
+    """
+    try:
+        angle = float(a)
+        ws = tuple(float(w) for w in (w1, *widths))
+    except (TypeError, ValueError):
+        raise InputError("stripes_properties: angle and widths must be numbers") from None
+    if not math.isfinite(angle):
+        raise InputError(f"stripes_properties: angle must be finite, got {a!r}")
+    for w in ws:
+        if not (math.isfinite(w) and w > 0):
+            raise InputError(f"stripes_properties: widths must be positive, got {w!r}")
+    return StripesProperties(angle, ws)
+
+
+def set_edge_labels(p: StripesProperties, l1: str, *labels: str) -> StripesProperties:
+    """SetEdgeLabels(Properties p, String l1 [, String l2, ...]): adds edge labels to ``p``.
+
+    Lines take the labels in turn, as a cycle (§5.1). Each call adds one cycle, so a line
+    may carry several labels.
+    """
+    if not isinstance(p, StripesProperties):
+        raise InputError(f"set_edge_labels: expected stripes properties, got {type(p).__name__} (use set_weighted_edge_labels for irregular properties)")
+    return replace(p, edge_labels=p.edge_labels + (_label_list((l1, *labels), "set_edge_labels"),))
+
+
+def set_face_labels(p: StripesProperties, l1: str, *labels: str) -> StripesProperties:
+    """SetFaceLabels(Properties p, String l1 [, String l2, ...]): adds face labels to ``p``.
+
+    Stripes (the faces between two successive lines) take the labels in turn. In a grid
+    each face gets one label per stripes set (§5.1: "each single face receives a total of
+    two labels").
+    """
+    if not isinstance(p, StripesProperties):
+        raise InputError(f"set_face_labels: expected stripes properties, got {type(p).__name__} (use set_weighted_face_labels for irregular properties)")
+    return replace(p, face_labels=p.face_labels + (_label_list((l1, *labels), "set_face_labels"),))
+
+
+def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float]) -> list[Curve]:
+    """Lines of a stripes set covering ``bounds``; line 0 passes through the origin.
+
+    The phase is fixed in the plane (not by the region), so a stripes set is the same
+    wherever it is evaluated.
+    """
+    x0, y0, x1, y1 = bounds
+    d = np.array([math.cos(p.angle), math.sin(p.angle)])
+    nrm = np.array([-d[1], d[0]])
+    corners = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+    proj = corners @ nrm
+    tmin, tmax = float(proj.min()), float(proj.max())
+    c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+    half = 0.5 * math.hypot(x1 - x0, y1 - y0) + 1.0
+    m = len(p.widths)
+    cum = np.r_[0.0, np.cumsum(p.widths)]
+    period = float(cum[-1])
+    q0, q1 = math.floor(tmin / period) - 1, math.ceil(tmax / period) + 1
+    lines = []
+    for q in range(q0, q1 + 1):
+        for r in range(m):
+            tk = q * period + cum[r]
+            if tk < tmin - period or tk > tmax + period:
+                continue
+            k = q * m + r
+            labs = frozenset(g[k % len(g)] for g in p.edge_labels)
+            # stripe k lies between line k and line k + 1, on the +normal side of line k;
+            # +normal is the math-left of d, i.e. the right as seen in y-down coordinates
+            right = frozenset(g[k % len(g)] for g in p.face_labels)
+            left = frozenset(g[(k - 1) % len(g)] for g in p.face_labels)
+            base = c + (tk - float(c @ nrm)) * nrm
+            pts = np.array([base - half * d, base + half * d])
+            lines.append(Curve(pts, False, labs, left, right))
+    return lines
+
+
+def stripes_partition(p: StripesProperties, *, border: Border = CROP) -> ArrangementFunction:
+    """StripesPartition(Properties p): creates a stripes partition.
+
+    Stripes partitions are always cropped, as their faces are infinite (§5.2). With the
+    keyword ``border=CROP_ADD_BOUNDARY`` (an addition to the paper's signature) the
+    region's outline is added so that the stripes become faces that carry face labels.
+    """
+    if not isinstance(p, StripesProperties):
+        raise InputError(f"stripes_partition: expected stripes properties, got {type(p).__name__}")
+    b = _check_border(border, "stripes_partition")
+    if b not in (Border.CROP, Border.CROP_ADD_BOUNDARY):
+        raise InputError("stripes_partition: stripes faces are infinite; border must be CROP or CROP_ADD_BOUNDARY")
+
+    def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
+        lines = _stripe_lines(p, _padded_bounds(geom, 1.0))
+        return _apply_border(Curves(tuple(lines)), geom, b)
+
+    return ArrangementFunction(fn, "stripes_partition")
+
+
+def grid_partition(s1: StripesProperties, s2: StripesProperties, b: Border) -> ArrangementFunction:
+    """GridPartition(Stripes S1, Stripes S2, Border b): creates a grid partition.
+
+    The grid is the union of two stripes sets; with ``KEEP_INSIDE`` / ``KEEP_OUTSIDE``
+    whole grid cells are kept (§5.2).
+    """
+    for name, s in (("S1", s1), ("S2", s2)):
+        if not isinstance(s, StripesProperties):
+            raise InputError(f"grid_partition: {name} must be stripes properties, got {type(s).__name__}")
+    border = _check_border(b, "grid_partition")
+    if abs(math.sin(s1.angle - s2.angle)) < 1e-9:
+        raise InputError("grid_partition: the two stripes sets are parallel")
+
+    def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
+        pad = 2.0 * max(max(s1.widths), max(s2.widths)) / max(abs(math.sin(s1.angle - s2.angle)), 0.05) + 1.0
+        bounds = _padded_bounds(geom, pad)
+        lines = _stripe_lines(s1, bounds) + _stripe_lines(s2, bounds)
+        return _apply_border(Curves(tuple(lines)), geom, border)
+
+    return ArrangementFunction(fn, "grid_partition")
+
+
+# -- irregular partitions -----------------------------------------------------------------
+@dataclass(frozen=True)
+class IrregularProperties:
+    """Irregular partition properties: density and weighted label groups."""
+
+    density: float
+    vertex_labels: tuple[tuple[tuple[str, float], ...], ...] = ()
+    edge_labels: tuple[tuple[tuple[str, float], ...], ...] = ()
+    face_labels: tuple[tuple[tuple[str, float], ...], ...] = ()
+
+
+def irregular_properties(d: float) -> IrregularProperties:
+    """IrregularProperties(Scalar d): sets the partition density (samples per unit area)."""
+    try:
+        dens = float(d)
+    except (TypeError, ValueError):
+        raise InputError(f"irregular_properties: density must be a number, got {d!r}") from None
+    if not (math.isfinite(dens) and dens > 0):
+        raise InputError(f"irregular_properties: density must be positive, got {d!r}")
+    return IrregularProperties(dens)
+
+
+def _check_irregular(p: Any, where: str) -> IrregularProperties:
+    if not isinstance(p, IrregularProperties):
+        raise InputError(f"{where}: expected irregular properties, got {type(p).__name__}")
+    return p
+
+
+def set_weighted_vertex_labels(p: IrregularProperties, l1: str, w1: float, *more: Any) -> IrregularProperties:
+    """SetWeightedVertexLabels(Properties p, String l1, Scalar w1 [, String l2, Scalar w2, ...]).
+
+    Adds vertex labels to ``p``: each vertex draws one of the labels with the given
+    apparition probabilities (normalised when they sum above 1; below 1 the rest is no
+    label).
+    """
+    p = _check_irregular(p, "set_weighted_vertex_labels")
+    return replace(p, vertex_labels=p.vertex_labels + (_weighted_list((l1, w1, *more), "set_weighted_vertex_labels"),))
+
+
+def set_weighted_edge_labels(p: IrregularProperties, l1: str, w1: float, *more: Any) -> IrregularProperties:
+    """SetWeightedEdgeLabels(Properties p, String l1, Scalar w1 [, String l2, Scalar w2, ...]).
+
+    Adds edge labels to ``p``, drawn per edge with the given probabilities.
+    """
+    p = _check_irregular(p, "set_weighted_edge_labels")
+    return replace(p, edge_labels=p.edge_labels + (_weighted_list((l1, w1, *more), "set_weighted_edge_labels"),))
+
+
+def set_weighted_face_labels(p: IrregularProperties, l1: str, w1: float, *more: Any) -> IrregularProperties:
+    """SetWeightedFaceLabels(Properties p, String l1, Scalar w1 [, String l2, Scalar w2, ...]).
+
+    Adds face labels to ``p``, drawn per face with the given probabilities.
+    """
+    p = _check_irregular(p, "set_weighted_face_labels")
+    return replace(p, face_labels=p.face_labels + (_weighted_list((l1, w1, *more), "set_weighted_face_labels"),))
+
+
+def _voronoi_curves(sites: np.ndarray, p: IrregularProperties, bounds: tuple[float, float, float, float], rng: np.random.Generator) -> Curves:
+    """Voronoi edges of ``sites`` as labelled curves (face labels on their sides)."""
+    from scipy.spatial import Voronoi
+
+    n = len(sites)
+    if n < 2:
+        return Curves()
+    x0, y0, x1, y1 = bounds
+    span = max(x1 - x0, y1 - y0)
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    # four far guard sites make every real cell bounded, whatever the number of sites
+    guards = np.array([[cx - 20 * span, cy], [cx + 20 * span, cy], [cx, cy - 20 * span], [cx, cy + 20 * span]])
+    vor = Voronoi(np.vstack([sites, guards]), qhull_options="Qbb Qc Qz")
+    face_labs = _draw_labels(p.face_labels, n, rng)
+    rp = vor.ridge_points
+    rv = np.array(vor.ridge_vertices, dtype=np.int64)
+    keep = (rp.min(axis=1) < n) & (rv.min(axis=1) >= 0)
+    rp, rv = rp[keep], rv[keep]
+    edge_labs = _draw_labels(p.edge_labels, len(rp), rng)
+    curves = []
+    V = vor.vertices
+    for (a, b), (va, vb), elab in zip(rp.tolist(), rv.tolist(), edge_labs):
+        pa, pb = V[va], V[vb]
+        d = pb - pa
+        w = vor.points[a] - pa
+        la = face_labs[a] if a < n else EMPTY
+        lb = face_labs[b] if b < n else EMPTY
+        # cross(d, w) < 0: site a is on the left as seen in y-down coordinates
+        if d[0] * w[1] - d[1] * w[0] < 0:
+            left, right = la, lb
+        else:
+            left, right = lb, la
+        curves.append(Curve(np.array([pa, pb]), False, elab, left, right))
+    marks: tuple[tuple[float, float, frozenset[str]], ...] = ()
+    if p.vertex_labels:
+        used = np.unique(rv)
+        vlabs = _draw_labels(p.vertex_labels, len(used), rng)
+        marks = tuple((float(V[k, 0]), float(V[k, 1]), lab) for k, lab in zip(used.tolist(), vlabs) if lab)
+    return Curves(tuple(curves), {}, marks)
+
+
+def _irregular_partition(p: IrregularProperties, b: Border, name: str, sampler: Callable[..., np.ndarray]) -> ArrangementFunction:
+    p = _check_irregular(p, name)
+    border = _check_border(b, name)
+
+    def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
+        rng = ctx.rng(name, p)
+        spacing = 1.0 / math.sqrt(p.density)
+        x0, y0, x1, y1 = geom.bounds
+        expected = p.density * (x1 - x0 + 8 * spacing) * (y1 - y0 + 8 * spacing)
+        if expected > 5e6:
+            raise InputError(f"{name}: density {p.density:g} asks for about {expected:.3g} cells on this region; lower it")
+        # sites in a margin of 4 mean spacings, so that cells near the border are exact
+        bounds = _padded_bounds(geom, 4 * spacing)
+        sites = sampler(bounds, p.density, rng)
+        return _apply_border(_voronoi_curves(sites, p, bounds, rng), geom, border)
+
+    return ArrangementFunction(fn, name)
+
+
+def uniform_partition(p: IrregularProperties, b: Border) -> ArrangementFunction:
+    """UniformPartition(Properties p, Border b): creates a uniform partition.
+
+    The Voronoi diagram of a Poisson-disk set of the given density (§5.1).
+    """
+    return _irregular_partition(p, b, "uniform_partition", poisson_disk)
+
+
+def random_partition(p: IrregularProperties, b: Border) -> ArrangementFunction:
+    """RandomPartition(Properties p, Border b): creates a random partition.
+
+    The Voronoi diagram of a Poisson set of the given density (§5.1).
+    """
+    return _irregular_partition(p, b, "random_partition", poisson)
+
+
+# -- mapping operators (Table 2) ----------------------------------------------------------
+def _mapper_location(mapper: Callable[..., Any], tb: Any) -> str:
+    code = getattr(mapper, "__code__", None)
+    fname = code.co_filename if code is not None else None
+    line = code.co_firstlineno if code is not None else None
+    while tb is not None:
+        if fname is not None and tb.tb_frame.f_code.co_filename == fname:
+            line = tb.tb_lineno
+        tb = tb.tb_next
+    name = getattr(mapper, "__name__", type(mapper).__name__)
+    if fname is None:
+        return f"mapper {name}"
+    from pathlib import Path
+
+    return f"{Path(fname).name} line {line}, in mapper {name}"
+
+
+def _as_mapper_result(res: Any, mapper: Callable[..., Any]) -> Curves:
+    if isinstance(res, Curves):
+        return res
+    if isinstance(res, PlanarMap):
+        return res.curves
+    code = getattr(mapper, "__code__", None)
+    name = getattr(mapper, "__name__", type(mapper).__name__)
+    where = f"mapper {name}"
+    if code is not None:
+        from pathlib import Path
+
+        where = f"{Path(code.co_filename).name} line {code.co_firstlineno}, mapper {name}"
+    if isinstance(res, ArrangementFunction):
+        raise MapperError(f"{where}: returned an arrangement; evaluate it on the cell's face first: arrangement(face)")
+    if res is None:
+        raise MapperError(f"{where}: returned None; a mapper must return curves (use nothing() for no curves)")
+    raise MapperError(f"{where}: returned {type(res).__name__}; a mapper must return curves (Curves, a planar map, or nothing())")
+
+
+def _run_mapper(mapper: Callable[..., Any], cell: _Cell, ctx: Context) -> Curves:
+    child = ctx.child("mapper", getattr(mapper, "__qualname__", repr(type(mapper))), cell.key)
+    try:
+        with evaluation(child):
+            res = mapper(cell)
+    except MapperError:
+        raise
+    except Exception as exc:
+        import sys
+
+        tb = sys.exc_info()[2]
+        msg = str(exc).replace("\n", " ")
+        raise MapperError(f"{_mapper_location(mapper, tb.tb_next if tb else None)}: {type(exc).__name__}: {msg}") from exc
+    return _as_mapper_result(res, mapper)
+
+
+def _mapping(mapper: Any, a: Any, kind: str) -> ArrangementFunction:
+    name = f"map_to_{kind}"
+    if not callable(mapper):
+        raise InputError(f"{name}: the mapper must be a function of one cell, got {type(mapper).__name__}")
+    arr = as_arrangement(a, name)
+
+    def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
+        pm = PlanarMap(arr._eval(geom, ctx))
+        if kind == "vertices":
+            cells: list[_Cell] = [Vertex(pm, i) for i in range(pm.n_vertices)]
+        elif kind == "edges":
+            cells = [Edge(pm, i) for i in range(pm.n_edges)]
+        else:
+            cells = [Face(pm, i) for i in range(1, pm.n_faces)]
+        # §6: the mapper is applied homogeneously to every cell; each call gets its own
+        # context, so the order of the calls does not matter
+        return concat_curves([_run_mapper(mapper, c, ctx) for c in cells])
+
+    return ArrangementFunction(fn, name)
+
+
+def map_to_vertices(m: Callable[[Vertex], Any], a: Any) -> ArrangementFunction:
+    """MapToVertices(Mapper m, Arrangement A): applies ``m`` to all vertices of ``A``."""
+    return _mapping(m, a, "vertices")
+
+
+def map_to_edges(m: Callable[[Edge], Any], a: Any) -> ArrangementFunction:
+    """MapToEdges(Mapper m, Arrangement A): applies ``m`` to all edges of ``A``."""
+    return _mapping(m, a, "edges")
+
+
+def map_to_faces(m: Callable[[Face], Any], a: Any) -> ArrangementFunction:
+    """MapToFaces(Mapper m, Arrangement A): applies ``m`` to all faces of ``A``.
+
+    The mapper sees the bounded faces; the unbounded face has no centroid or contour
+    and is left out.
+    """
+    return _mapping(m, a, "faces")
+
+
+# -- merging operators (Table 4) ----------------------------------------------------------
+def union(a1: Any, a2: Any) -> ArrangementFunction:
+    """Union(Arrangement A1, Arrangement A2): all the curves from ``A1`` and ``A2`` (§7)."""
+    x1, x2 = as_arrangement(a1, "union: A1"), as_arrangement(a2, "union: A2")
+
+    def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
+        return concat_curves([x1._eval(geom, ctx), x2._eval(geom, ctx)])
+
+    return ArrangementFunction(fn, "union")
+
+
+def _mask(a1: Any, a2: Any, b: Any, keep_inside_faces: bool, name: str) -> ArrangementFunction:
+    x1, x2 = as_arrangement(a1, f"{name}: A1"), as_arrangement(a2, f"{name}: A2")
+    border = _check_border(b, name)
+
+    def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
+        pm1 = PlanarMap(x1._eval(geom, ctx))
+        pm2 = PlanarMap(x2._eval(geom, ctx))
+        polys = [p for p in pm2._t.face_polygons[1:]]
+        edges = _map_curves(pm1)
+        if not polys:
+            return edges if not keep_inside_faces else Curves()
+        area = shapely.union_all(polys)
+        if border in (Border.CROP, Border.CROP_ADD_BOUNDARY):
+            out = _crop(edges, area, keep_inside_faces)
+            if border is Border.CROP_ADD_BOUNDARY:
+                t2 = pm2._t
+                outline = tuple(
+                    Curve(t2.edge_points[e])
+                    for e in range(pm2.n_edges)
+                    if t2.edge_left[e] != 0 or t2.edge_right[e] != 0
+                )
+                out = Curves(out.curves + outline, out.points, out.marks)
+            return out
+        lines = np.array([shapely.LineString(c.points) for c in edges.curves], dtype=object)
+        if len(lines) == 0:
+            return edges
+        shapely.prepare(area)
+        within = shapely.covered_by(lines, area.buffer(10 * pm1.grid))
+        meets = shapely.relate_pattern(lines, area, "T********")
+        if keep_inside_faces:
+            keep = within if border is Border.KEEP_INSIDE else meets
+        else:
+            keep = ~meets if border is Border.KEEP_INSIDE else ~within
+        return edges.select(keep.tolist())
+
+    return ArrangementFunction(fn, name)
+
+
+def inside(a1: Any, a2: Any, b: Border) -> ArrangementFunction:
+    """Inside(Arrangement A1, Arrangement A2, Border b): edges of ``A1`` inside ``A2``'s faces.
+
+    ``CROP`` cuts ``A1``'s edges at the boundary of ``A2``'s bounded faces,
+    ``CROP_ADD_BOUNDARY`` also adds those faces' outlines, ``KEEP_INSIDE`` keeps only the
+    edges wholly inside, ``KEEP_OUTSIDE`` every edge that enters a face (§7, Fig. 8).
+    """
+    return _mask(a1, a2, b, True, "inside")
+
+
+def outside(a1: Any, a2: Any, b: Border) -> ArrangementFunction:
+    """Outside(Arrangement A1, Arrangement A2, Border b): edges of ``A1`` outside ``A2``'s faces.
+
+    ``CROP`` cuts ``A1``'s edges at the boundary of ``A2``'s bounded faces,
+    ``CROP_ADD_BOUNDARY`` also adds those faces' outlines, ``KEEP_INSIDE`` keeps only the
+    edges wholly outside, ``KEEP_OUTSIDE`` every edge that leaves the faces (§7, Fig. 8).
+    """
+    return _mask(a1, a2, b, False, "outside")

@@ -1,0 +1,594 @@
+"""Planar maps induced from labelled curves (Loi et al. §4).
+
+The planar map of a collection of curves is the set of cells partitioning the plane:
+
+- *edges*: the maximal pairwise-disjoint subcurves, each oriented by the curve it comes
+  from (source and target vertex);
+- *vertices*: the end points of edges (crossings, curve ends, and the first point of a
+  closed curve, which needs one vertex);
+- *faces*: the maximal connected parts of the plane minus the curves; face 0 is the
+  unbounded face;
+- an incidence graph between them, and labels on every cell.
+
+Robustness (§4 "Implementation"). The paper uses CGAL with exact rationals. Here every
+curve is snap-rounded onto a precision grid (``grid``, default 1e-6 units) by GEOS'
+fixed-precision overlay (``shapely.union_all(..., grid_size=grid)``), which nodes all
+crossings and merges overlapping pieces; every vertex then has integer grid
+coordinates, so two vertices closer than the grid are one vertex, no duplicate vertex
+appears, and faces are built by ``shapely.polygonize`` from exactly those coordinates.
+
+Face labels (§4 "Face labels reconstruction", after Asente et al. [3]) are stored on
+curves (each curve's left and right side labels) and rebuilt here: a face gets the side
+labels of every edge side facing it. Edges that carry no label on either side (curves
+drawn without face labels, e.g. imported drawings) are transparent: the faces they
+separate inherit the labels of the face they split, so that labels survive re-noding
+and merging. The unbounded face never has labels.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+import shapely
+
+from .._errors import InputError
+from ._curves import EMPTY, Curve, Curves
+
+__all__ = ["PlanarMap", "Vertex", "Edge", "Face", "induce", "DEFAULT_GRID"]
+
+#: Precision grid (document units) onto which every planar map is snap-rounded.
+DEFAULT_GRID = 1e-6
+
+
+def _hash_bytes(tag: bytes, data: bytes) -> bytes:
+    return hashlib.blake2b(tag + b"\0" + data, digest_size=16).digest()
+
+
+@dataclass(frozen=True)
+class _Topology:
+    grid: float
+    vertex_ij: np.ndarray  # (V, 2) int64 grid coordinates
+    vertex_labels: tuple[frozenset[str], ...]
+    edge_points: tuple[np.ndarray, ...]  # each (n, 2) float
+    edge_ij: tuple[np.ndarray, ...]  # each (n, 2) int64
+    edge_source: np.ndarray  # (E,) int
+    edge_target: np.ndarray  # (E,) int
+    edge_left: np.ndarray  # (E,) int face index
+    edge_right: np.ndarray  # (E,) int face index
+    edge_labels: tuple[frozenset[str], ...]
+    face_polygons: tuple[Any, ...]  # (F,) shapely Polygon, None for the unbounded face 0
+    face_labels: tuple[frozenset[str], ...]
+
+
+class PlanarMap:
+    """The planar map induced from a collection of curves (§4).
+
+    Induction is lazy: the curves are kept, and the map is built on the first query. An
+    arrangement evaluated on a region returns a PlanarMap; a mapper may return one (the
+    result of ``arrangement(face)``), which contributes its curves.
+
+    Parameters
+    ----------
+    curves : Curves
+    grid : float
+        Precision grid of the snap rounding.
+
+    Attributes
+    ----------
+    n_vertices, n_edges, n_faces : int
+        Cell counts; ``n_faces`` counts the unbounded face.
+    """
+
+    def __init__(self, curves: Curves, grid: float = DEFAULT_GRID) -> None:
+        if not isinstance(curves, Curves):
+            raise InputError(f"planar map: expected Curves, got {type(curves).__name__}")
+        if not (grid > 0):
+            raise InputError(f"planar map: grid must be positive, got {grid!r}")
+        self.curves = curves
+        self.grid = float(grid)
+
+    @cached_property
+    def _t(self) -> _Topology:
+        return _induce(self.curves, self.grid)
+
+    # -- counts and cells ---------------------------------------------------------------
+    @property
+    def n_vertices(self) -> int:
+        return len(self._t.vertex_ij)
+
+    @property
+    def n_edges(self) -> int:
+        return len(self._t.edge_points)
+
+    @property
+    def n_faces(self) -> int:
+        return len(self._t.face_polygons)
+
+    @property
+    def vertices(self) -> list[Vertex]:
+        return [Vertex(self, i) for i in range(self.n_vertices)]
+
+    @property
+    def edges(self) -> list[Edge]:
+        return [Edge(self, i) for i in range(self.n_edges)]
+
+    @property
+    def faces(self) -> list[Face]:
+        """Every face; ``faces[0]`` is the unbounded face."""
+        return [Face(self, i) for i in range(self.n_faces)]
+
+    @property
+    def bounded_faces(self) -> list[Face]:
+        return [Face(self, i) for i in range(1, self.n_faces)]
+
+    @property
+    def unbounded_face(self) -> Face:
+        return Face(self, 0)
+
+    @property
+    def vertex_xy(self) -> np.ndarray:
+        """(V, 2) vertex positions."""
+        return self._t.vertex_ij * self.grid
+
+    def face_areas(self) -> np.ndarray:
+        """(F - 1,) areas of the bounded faces."""
+        return np.array([p.area for p in self._t.face_polygons[1:]], dtype=float)
+
+    # -- incidence (§4, Fig. 4) -----------------------------------------------------------
+    @cached_property
+    def _vertex_edges(self) -> list[list[int]]:
+        t = self._t
+        out: list[list[tuple[float, int]]] = [[] for _ in range(self.n_vertices)]
+        for e, pts in enumerate(t.edge_points):
+            s, d = int(t.edge_source[e]), int(t.edge_target[e])
+            a0 = pts[1] - pts[0]
+            out[s].append((float(np.arctan2(a0[1], a0[0])), e))
+            a1 = pts[-2] - pts[-1]
+            out[d].append((float(np.arctan2(a1[1], a1[0])), e))
+        res = []
+        for lst in out:
+            lst.sort()
+            seen: list[int] = []
+            for _, e in lst:
+                if e not in seen:
+                    seen.append(e)
+            res.append(seen)
+        return res
+
+    @cached_property
+    def _face_edges(self) -> list[list[int]]:
+        t = self._t
+        res: list[list[int]] = [[] for _ in range(self.n_faces)]
+        for e in range(self.n_edges):
+            for f in (int(t.edge_left[e]), int(t.edge_right[e])):
+                if e not in res[f][-1:]:
+                    res[f].append(e)
+        # order along the boundary: by angle about the face's centroid (local, stationary)
+        for f in range(1, self.n_faces):
+            c = np.asarray(t.face_polygons[f].centroid.coords[0])
+
+            def key(e: int, c: np.ndarray = c) -> float:
+                m = t.edge_points[e][len(t.edge_points[e]) // 2] - c
+                if len(t.edge_points[e]) == 2:
+                    m = t.edge_points[e].mean(axis=0) - c
+                return float(np.arctan2(m[1], m[0]))
+
+            res[f] = sorted(dict.fromkeys(res[f]), key=key)
+        return res
+
+    def cell_key(self, kind: str, i: int) -> bytes:
+        """A digest of a cell's own geometry (grid coordinates), independent of its index.
+
+        Per-cell random values (§6.1) are functions of this key, so they do not depend on
+        the order of cells, on execution order, or on the rest of the map.
+        """
+        t = self._t
+        if kind == "vertex":
+            return _hash_bytes(b"v", t.vertex_ij[i].tobytes())
+        if kind == "edge":
+            ij = t.edge_ij[i]
+            fwd, bwd = ij.tobytes(), ij[::-1].tobytes()
+            return _hash_bytes(b"e", min(fwd, bwd))
+        if i == 0:
+            return _hash_bytes(b"f", b"unbounded")
+        poly = t.face_polygons[i]
+        ij = np.rint(shapely.get_coordinates(poly) / t.grid).astype(np.int64)
+        ij = np.unique(ij, axis=0)
+        return _hash_bytes(b"f", ij.tobytes())
+
+    def __repr__(self) -> str:
+        if "_t" not in self.__dict__:
+            return f"PlanarMap({len(self.curves)} curves, not yet induced)"
+        return f"PlanarMap({self.n_vertices} vertices, {self.n_edges} edges, {self.n_faces} faces)"
+
+
+class _Cell:
+    """A cell of a planar map, seen by mappers only through the built-in operators."""
+
+    __slots__ = ("_map", "_i")
+    kind = "cell"
+
+    def __init__(self, pmap: PlanarMap, index: int) -> None:
+        self._map = pmap
+        self._i = int(index)
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and other._map is self._map and other._i == self._i  # type: ignore[attr-defined]
+
+    def __hash__(self) -> int:
+        return hash((type(self).__name__, id(self._map), self._i))
+
+    @property
+    def key(self) -> bytes:
+        return self._map.cell_key(self.kind, self._i)
+
+    def __repr__(self) -> str:
+        labs = getattr(self, "labels", EMPTY)
+        labs = f" {sorted(labs)}" if labs else ""
+        return f"<{type(self).__name__}{labs}>"
+
+
+class Vertex(_Cell):
+    """A vertex of a planar map."""
+
+    __slots__ = ()
+    kind = "vertex"
+
+    @property
+    def labels(self) -> frozenset[str]:
+        return self._map._t.vertex_labels[self._i]
+
+    @property
+    def xy(self) -> np.ndarray:
+        return self._map._t.vertex_ij[self._i] * self._map.grid
+
+
+class Edge(_Cell):
+    """An edge of a planar map: a maximal subcurve, oriented by its source curve."""
+
+    __slots__ = ()
+    kind = "edge"
+
+    @property
+    def labels(self) -> frozenset[str]:
+        return self._map._t.edge_labels[self._i]
+
+    @property
+    def points(self) -> np.ndarray:
+        """(n, 2) the polyline from source to target."""
+        return self._map._t.edge_points[self._i]
+
+
+class Face(_Cell):
+    """A face of a planar map; the unbounded face has no polygon."""
+
+    __slots__ = ()
+    kind = "face"
+
+    @property
+    def labels(self) -> frozenset[str]:
+        return self._map._t.face_labels[self._i]
+
+    @property
+    def is_unbounded(self) -> bool:
+        return self._i == 0
+
+    @property
+    def polygon(self) -> shapely.Polygon | None:
+        """The face as a shapely Polygon (with holes); None for the unbounded face."""
+        return self._map._t.face_polygons[self._i]
+
+
+def induce(curves: Curves, grid: float = DEFAULT_GRID) -> PlanarMap:
+    """The planar map induced from ``curves`` (built at once, not lazily)."""
+    pm = PlanarMap(curves, grid)
+    _ = pm._t
+    return pm
+
+
+# -- construction -------------------------------------------------------------------------
+def _point_segment_distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    ab = b - a
+    L2 = (ab**2).sum(axis=1)
+    t = np.where(L2 > 0, ((p - a) * ab).sum(axis=1) / np.where(L2 > 0, L2, 1.0), 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    q = a + t[:, None] * ab
+    return np.sqrt(((p - q) ** 2).sum(axis=1))
+
+
+def _match_rows(table: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs (i, j) with ``table[i] == rows[j]``; ``table`` holds unique (n, 2) int rows."""
+    if len(rows) == 0 or len(table) == 0:
+        return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+    _, inv = np.unique(np.concatenate([table, rows]), axis=0, return_inverse=True)
+    inv = inv.reshape(-1)
+    pos = np.full(int(inv.max()) + 1, -1, dtype=np.int64)
+    pos[inv[: len(table)]] = np.arange(len(table))
+    hit = pos[inv[len(table) :]]
+    j = np.flatnonzero(hit >= 0)
+    return hit[j], j
+
+
+def _empty_topology(grid: float) -> _Topology:
+    return _Topology(
+        grid,
+        np.zeros((0, 2), dtype=np.int64),
+        (),
+        (),
+        (),
+        np.zeros(0, dtype=np.int64),
+        np.zeros(0, dtype=np.int64),
+        np.zeros(0, dtype=np.int64),
+        np.zeros(0, dtype=np.int64),
+        (),
+        (None,),
+        (EMPTY,),
+    )
+
+
+def _induce(curves: Curves, grid: float) -> _Topology:
+    g = grid
+    # 1. source segments, one row per segment of every curve
+    polylines = [c.polyline for c in curves.curves]
+    if not polylines:
+        return _empty_topology(g)
+    lens = np.fromiter((len(p) for p in polylines), dtype=np.int64, count=len(polylines))
+    allp = np.concatenate(polylines) if lens.sum() else np.zeros((0, 2))
+    cid = np.repeat(np.arange(len(polylines)), lens)
+    # drop repeated consecutive points, then curves left with fewer than two points
+    keep = np.ones(len(allp), dtype=bool)
+    if len(allp) > 1:
+        keep[1:] = (cid[1:] != cid[:-1]) | np.any(allp[1:] != allp[:-1], axis=1)
+    allp, cid = allp[keep], cid[keep]
+    cnt = np.bincount(cid, minlength=len(polylines))
+    ok = cnt[cid] >= 2
+    allp, cid = allp[ok], cid[ok]
+    if len(allp) == 0:
+        return _empty_topology(g)
+    same_next = cid[1:] == cid[:-1]
+    sa, sb, scurve = allp[:-1][same_next], allp[1:][same_next], cid[:-1][same_next]
+    first_pt = np.r_[True, ~same_next]
+    last_pt = np.r_[~same_next, True]
+    breaks = [allp[first_pt], allp[last_pt]]
+    src_lines = shapely.linestrings(allp, indices=cid)
+
+    # 2. snap rounding + noding + merging of overlaps (GEOS OverlayNG, fixed precision)
+    noded = shapely.union_all(src_lines, grid_size=g)
+    coords, idx = shapely.get_coordinates(shapely.get_parts(noded), return_index=True)
+    if len(coords) == 0:
+        return _empty_topology(g)
+    ij = np.rint(coords / g).astype(np.int64)
+    same = idx[1:] == idx[:-1]
+    na_ij, nb_ij = ij[:-1][same], ij[1:][same]
+    nz = np.any(na_ij != nb_ij, axis=1)
+    na_ij, nb_ij = na_ij[nz], nb_ij[nz]
+    na, nb = na_ij * g, nb_ij * g
+    n_seg = len(na)
+    if n_seg == 0:
+        return _empty_topology(g)
+
+    # 3. attribute each noded segment to the source segments it lies along
+    tol = 4.0 * g
+    tree = shapely.STRtree(shapely.linestrings(np.stack([sa, sb], axis=1)))
+    mids = shapely.points((na + nb) / 2)
+    qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
+    ok = (_point_segment_distance(na[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(nb[qi], sa[qj], sb[qj]) <= tol)
+    qi, qj = qi[ok], qj[ok]
+    missing = np.setdiff1d(np.arange(n_seg), qi)
+    if len(missing):
+        mi, mj = tree.query_nearest(mids[missing], return_distance=False)
+        qi = np.r_[qi, missing[mi]]
+        qj = np.r_[qj, mj]
+    ndir = nb - na
+    sdir = sb[qj] - sa[qj]
+    orient = np.where((ndir[qi] * sdir).sum(axis=1) >= 0, 1, -1)
+    cur = scurve[qj]
+    # one (curve, orientation) per noded segment and curve
+    order = np.lexsort((orient, cur, qi))
+    qi, cur, orient = qi[order], cur[order], orient[order]
+    first = np.r_[True, (qi[1:] != qi[:-1]) | (cur[1:] != cur[:-1])]
+    qi, cur, orient = qi[first], cur[first], orient[first]
+    starts = np.flatnonzero(np.r_[True, qi[1:] != qi[:-1]])
+    ends = np.r_[starts[1:], len(qi)]
+    # attribution key per noded segment: the source curve when there is one (most
+    # segments), else an id for the tuple of (curve, orientation relative to the primary)
+    n_curves = len(curves.curves)
+    flip = np.zeros(n_seg, dtype=bool)
+    flip[qi[starts]] = orient[starts] < 0  # primary = lowest curve index
+    key_id = np.full(n_seg, -1, dtype=np.int64)
+    single = (ends - starts) == 1
+    key_id[qi[starts[single]]] = cur[starts[single]]
+    key_tuples: dict[tuple[tuple[int, int], ...], int] = {}
+    for s0, s1 in zip(starts[~single].tolist(), ends[~single].tolist()):
+        o0 = int(orient[s0])
+        kt = tuple((int(cur[k]), int(orient[k]) * o0) for k in range(s0, s1))
+        key_id[qi[s0]] = key_tuples.setdefault(kt, n_curves + len(key_tuples))
+    key_of_id = {v: k for k, v in key_tuples.items()}
+    # orient every noded segment along its primary curve
+    a_ij = np.where(flip[:, None], nb_ij, na_ij)
+    b_ij = np.where(flip[:, None], na_ij, nb_ij)
+
+    # 4. raw vertices (every noded point)
+    allij = np.concatenate([a_ij, b_ij])
+    uniq, inv = np.unique(allij, axis=0, return_inverse=True)
+    inv = inv.reshape(-1)
+    su, sv = inv[:n_seg], inv[n_seg:]
+    n_raw = len(uniq)
+    out_cnt = np.bincount(su, minlength=n_raw)
+    in_cnt = np.bincount(sv, minlength=n_raw)
+    is_break = (out_cnt != 1) | (in_cnt != 1)
+    bij = np.rint(np.concatenate(breaks) / g).astype(np.int64)
+    is_break[_match_rows(uniq, bij)[0]] = True
+    out_seg = np.full(n_raw, -1)
+    out_seg[su] = np.arange(n_seg)
+    in_seg = np.full(n_raw, -1)
+    in_seg[sv] = np.arange(n_seg)
+    # a pass-through vertex joins two segments of the same attribution
+    cand = np.flatnonzero(~is_break)
+    is_break[cand[key_id[in_seg[cand]] != key_id[out_seg[cand]]]] = True
+
+    # 5. chain segments into maximal edges
+    nxt = np.where(is_break[sv], -1, out_seg[sv])
+    visited = np.zeros(n_seg, dtype=bool)
+    chains: list[list[int]] = []
+    nxt_l = nxt.tolist()
+    for s in np.flatnonzero(is_break[su]).tolist():
+        chain = [s]
+        visited[s] = True
+        t = nxt_l[s]
+        while t >= 0 and not visited[t]:
+            chain.append(t)
+            visited[t] = True
+            t = nxt_l[t]
+        chains.append(chain)
+    for s in np.flatnonzero(~visited).tolist():  # closed loops with no vertex yet
+        if visited[s]:
+            continue
+        is_break[su[s]] = True
+        chain = [s]
+        visited[s] = True
+        t = nxt_l[s]
+        while t >= 0 and not visited[t]:
+            chain.append(t)
+            visited[t] = True
+            t = nxt_l[t]
+        chains.append(chain)
+
+    # map vertices: break vertices only, numbered in grid order
+    vmap = np.full(n_raw, -1)
+    vb = np.flatnonzero(is_break)
+    vmap[vb] = np.arange(len(vb))
+    vertex_ij = uniq[vb]
+
+    label_cache: dict[int, tuple[frozenset[str], frozenset[str], frozenset[str]]] = {}
+
+    def labels_of(kid: int) -> tuple[frozenset[str], frozenset[str], frozenset[str]]:
+        got = label_cache.get(kid)
+        if got is None:
+            key = ((kid, 1),) if kid < n_curves else key_of_id[kid]
+            labs, left, right = set(), set(), set()
+            for ci, o in key:
+                c: Curve = curves.curves[ci]
+                labs |= c.labels
+                if o > 0:
+                    left |= c.left
+                    right |= c.right
+                else:
+                    left |= c.right
+                    right |= c.left
+            got = (frozenset(labs), frozenset(left), frozenset(right))
+            label_cache[kid] = got
+        return got
+
+    # order edges deterministically by their grid coordinates (independent of input order)
+    n_e = len(chains)
+    clen = np.array([len(c) for c in chains], dtype=np.int64)
+    cseg = np.fromiter((s for c in chains for s in c), dtype=np.int64, count=int(clen.sum()))
+    coff = np.r_[0, np.cumsum(clen)]
+    chain_of_seg = np.repeat(np.arange(n_e), clen)
+    ev = np.empty(len(cseg) + n_e, dtype=np.int64)
+    ev[np.arange(len(cseg)) + chain_of_seg] = su[cseg]
+    ev[coff[1:] + np.arange(n_e)] = sv[cseg[coff[1:] - 1]]
+    voff = coff + np.arange(n_e + 1)
+    first_ij, second_ij, last_ij = uniq[ev[voff[:-1]]], uniq[ev[voff[:-1] + 1]], uniq[ev[voff[1:] - 1]]
+    eorder = np.lexsort((last_ij[:, 1], last_ij[:, 0], clen, second_ij[:, 1], second_ij[:, 0], first_ij[:, 1], first_ij[:, 0]))
+    chains = [chains[k] for k in eorder.tolist()]
+    ev_split = np.split(ev, voff[1:-1])
+    edge_vs = [ev_split[k] for k in eorder.tolist()]
+    edge_ij = tuple(uniq[v] for v in edge_vs)
+    edge_points = tuple(e * g for e in edge_ij)
+    edge_source = vmap[np.array([v[0] for v in edge_vs], dtype=np.int64)] if n_e else np.zeros(0, np.int64)
+    edge_target = vmap[np.array([v[-1] for v in edge_vs], dtype=np.int64)] if n_e else np.zeros(0, np.int64)
+    e_labels, e_left_l, e_right_l = [], [], []
+    for c in chains:
+        labs, left_l, right_l = labels_of(int(key_id[c[0]]))
+        e_labels.append(labs)
+        e_left_l.append(left_l)
+        e_right_l.append(right_l)
+
+    # 6. faces: polygonize the edges; a probe point just off each side of an edge's first
+    # segment finds its left and right faces (a point in no bounded face is in face 0)
+    polys: list[Any] = []
+    if n_e:
+        lines = shapely.linestrings(
+            np.concatenate(edge_points), indices=np.repeat(np.arange(n_e), [len(p) for p in edge_points])
+        )
+        polys = [p for p in shapely.get_parts(shapely.polygonize(lines)) if p.area > 0]
+    left = np.zeros(n_e, dtype=np.int64)
+    right = np.zeros(n_e, dtype=np.int64)
+    if polys:
+        parr = np.array(polys, dtype=object)
+        b4 = shapely.bounds(parr)
+        cxy = shapely.get_coordinates(shapely.centroid(parr))
+        areas = shapely.area(parr)
+        porder = np.lexsort((-areas, cxy[:, 1], cxy[:, 0], b4[:, 1], b4[:, 0]))
+        parr = parr[porder]
+        polys = list(parr)
+        areas = areas[porder]
+        p0 = np.array([p[0] for p in edge_points])
+        p1 = np.array([p[1] for p in edge_points])
+        d = p1 - p0
+        d = d / np.sqrt((d**2).sum(axis=1))[:, None]
+        mid = (p0 + p1) / 2
+        off = 0.25 * g
+        # screen-left of direction d in y-down coordinates is (d_y, -d_x)
+        nl = np.c_[d[:, 1], -d[:, 0]]
+        probes = np.concatenate([mid + off * nl, mid - off * nl])
+        ptree = shapely.STRtree(parr)
+        qi, qf = ptree.query(shapely.points(probes), predicate="within")
+        owner = np.zeros(len(probes), dtype=np.int64)
+        # nested faces cannot both contain a probe (holes), but keep the smallest anyway
+        order = np.argsort(-areas[qf], kind="stable")
+        owner[qi[order]] = qf[order] + 1
+        left, right = owner[:n_e], owner[n_e:]
+
+    # 7. face labels from side labels; transparent edges join faces (union-find)
+    n_f = len(polys) + 1
+    parent = list(range(n_f))
+
+    def find(a: int) -> int:
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+
+    for e in range(n_e):
+        lf, rf = int(left[e]), int(right[e])
+        if lf != rf and lf and rf and not e_left_l[e] and not e_right_l[e]:
+            ra, rb = find(lf), find(rf)
+            if ra != rb:
+                parent[max(ra, rb)] = min(ra, rb)
+    comp_labels: dict[int, set[str]] = {}
+    for e in range(n_e):
+        for f, labs in ((int(left[e]), e_left_l[e]), (int(right[e]), e_right_l[e])):
+            if f and labs:
+                comp_labels.setdefault(find(f), set()).update(labs)
+    face_labels = [EMPTY] + [frozenset(comp_labels.get(find(f), ())) for f in range(1, n_f)]
+
+    # 8. vertex labels: marks and named points lying on a vertex
+    vlabels: list[set[str]] = [set() for _ in range(len(vertex_ij))]
+    named = [(x, y, frozenset([name])) for name, (x, y) in curves.points.items()] + list(curves.marks)
+    if named and len(vertex_ij):
+        mij = np.rint(np.array([(x, y) for x, y, _ in named]) / g).astype(np.int64)
+        vk, mk = _match_rows(vertex_ij, mij)
+        for k, m in zip(vk.tolist(), mk.tolist()):
+            vlabels[k].update(named[m][2])
+
+    return _Topology(
+        g,
+        vertex_ij,
+        tuple(frozenset(s) for s in vlabels),
+        edge_points,
+        edge_ij,
+        edge_source,
+        edge_target,
+        left,
+        right,
+        tuple(e_labels),
+        (None, *polys),
+        tuple(face_labels),
+    )

@@ -1,0 +1,352 @@
+"""SVG in and out (Table 5: ImportSVG, ExportSVG), and running scripts (``strew run``).
+
+Output convention (§3, "Overview example"): induced faces are exported as closed paths
+and edges as open paths. Each cell is one element of a strew
+:class:`~strew.arrangement.Arrangement` with its own shape (bounded faces first, then
+edges), placed at its bounding-box centre, with columns ``cell`` ("face" / "edge") and
+``labels`` (space-separated).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import os
+import re
+import runpy
+import sys
+import traceback
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .._errors import InputError
+from ..arrangement import Arrangement
+from ..region import Region
+from ..shape import Path as ShapePath
+from ..shape import Shape
+from ._context import script_context, top
+from ._curves import Curve, Curves
+from ._operators import ArrangementFunction, MapperError, as_arrangement
+from ._planar_map import PlanarMap
+
+__all__ = ["import_svg", "export_svg", "to_strew", "run_script", "evaluate", "ScriptError"]
+
+_IN_RUN: ContextVar[bool] = ContextVar("strew_program_in_run", default=False)
+_AUTO_ID = re.compile(r"^(path|rect|circle|ellipse|polyline|polygon|line|g|layer|svg|use|text|tspan|shape)[-_]?\d+$")
+_INKSCAPE_LABEL = "{http://www.inkscape.org/namespaces/inkscape}label"
+_SVG_CACHE: dict[tuple[str, int, int], Curves] = {}
+
+
+class ScriptError(InputError):
+    """A program script failed; the message names the script and the line."""
+
+
+# -- import ---------------------------------------------------------------------------------
+def _element_label(el: Any) -> str | None:
+    values = getattr(el, "values", {}) or {}
+    lab = values.get(_INKSCAPE_LABEL) or values.get("inkscape:label")
+    if lab:
+        return str(lab)
+    ident = getattr(el, "id", None)
+    if ident and not _AUTO_ID.match(str(ident)):
+        return str(ident)
+    return None
+
+
+def _flatten(seg: Any, tol: float) -> np.ndarray:
+    import svgelements as se
+
+    if isinstance(seg, (se.Line, se.Close)):
+        return np.array([[seg.end.x, seg.end.y]], dtype=float)
+    length = float(seg.length(error=1e-4))
+    n = max(2, int(math.ceil(length / tol)))
+    ts = np.linspace(0.0, 1.0, n + 1)[1:]
+    pts = seg.npoint(ts)
+    return np.asarray(pts, dtype=float).reshape(-1, 2)
+
+
+def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = None) -> Curves:
+    """ImportSVG(String filename): loads curves from an SVG file.
+
+    Every path and basic shape becomes curves (one per sub-path, flattened to
+    polylines; closed sub-paths are closed curves), with every transform applied. An
+    element's Inkscape label, or else its id when the id is not an editor's automatic
+    one (``path123``), labels its curves (see :func:`curve_labeled`). A labelled
+    ``<circle>`` or ``<ellipse>`` is a labelled *point* at its centre, such as ``"start"``
+    and ``"end"`` (see :func:`point_labeled`), not a curve.
+
+    Parameters
+    ----------
+    filename : path
+    tolerance : float, optional
+        Flattening step for curved segments (default: 1/200 of the drawing's diagonal).
+    """
+    import svgelements as se
+
+    path = Path(filename)
+    try:
+        st = path.stat()
+    except FileNotFoundError:
+        raise InputError(f"import_svg: {str(filename)!r}: no such file") from None
+    key = (str(path.resolve()), st.st_mtime_ns, hash(tolerance))
+    if key in _SVG_CACHE:
+        return _SVG_CACHE[key]
+    try:
+        svg = se.SVG.parse(str(path), reify=True)
+    except Exception as exc:  # svgelements raises various errors on bad files
+        raise InputError(f"import_svg: {path.name}: not a readable SVG ({type(exc).__name__}: {exc})") from None
+    shapes = []
+    points: dict[str, tuple[float, float]] = {}
+    for el in svg.elements():
+        if not isinstance(el, se.Shape) or isinstance(el, se.SVG):
+            continue
+        label = _element_label(el)
+        if label is not None and isinstance(el, (se.Circle, se.Ellipse)):
+            points[label] = (float(el.cx), float(el.cy))
+            continue
+        shapes.append((el, label))
+    bbs = [se.Path(el).bbox() for el, _ in shapes]
+    bbs = [b for b in bbs if b is not None]
+    if tolerance is None:
+        if bbs:
+            arr = np.array(bbs, dtype=float)
+            diag = math.hypot(arr[:, 2].max() - arr[:, 0].min(), arr[:, 3].max() - arr[:, 1].min())
+        else:
+            diag = 1.0
+        tol = max(diag, 1e-9) / 200.0
+    else:
+        tol = float(tolerance)
+        if not (tol > 0):
+            raise InputError(f"import_svg: tolerance must be positive, got {tolerance!r}")
+    curves = []
+    for el, label in shapes:
+        p = se.Path(el)
+        for sub in p.as_subpaths():
+            sub = se.Path(sub)
+            pts: list[np.ndarray] = []
+            closed = False
+            for seg in sub:
+                if isinstance(seg, se.Move):
+                    pts = [np.array([[seg.end.x, seg.end.y]], dtype=float)]
+                    continue
+                if isinstance(seg, se.Close):
+                    closed = True
+                    continue
+                pts.append(_flatten(seg, tol))
+            if not pts:
+                continue
+            xy = np.concatenate(pts)
+            if len(xy) > 1 and np.allclose(xy[0], xy[-1]):
+                closed = True
+                xy = xy[:-1]
+            if len(xy) < 2:
+                continue
+            curves.append(Curve(xy, closed, frozenset([label]) if label else frozenset()))
+    if not curves and not points:
+        raise InputError(f"import_svg: {path.name}: no curves or labelled points found")
+    out = Curves(tuple(curves), points)
+    _SVG_CACHE[key] = out
+    return out
+
+
+# -- export ---------------------------------------------------------------------------------
+_PALETTE = ["#e8c547", "#5d9bd5", "#e07a5f", "#81b29a", "#b388d9", "#f2a65a", "#6cc3c1", "#d16b8f"]
+
+
+def _label_color(labels: frozenset[str]) -> str:
+    h = hashlib.blake2b(" ".join(sorted(labels)).encode(), digest_size=2).digest()
+    return _PALETTE[int.from_bytes(h, "little") % len(_PALETTE)]
+
+
+def to_strew(pm: PlanarMap, region: Region | None = None, *, stroke_width: float | None = None) -> Arrangement:
+    """A planar map as a strew Arrangement: faces as closed paths, edges as open paths.
+
+    Parameters
+    ----------
+    pm : PlanarMap
+    region : Region, optional
+        Recorded as the arrangement's region.
+    stroke_width : float, optional
+        Edge width (default: 1/1000 of the drawing's size).
+
+    Returns
+    -------
+    Arrangement
+        One element per bounded face (kind ``face-i``), then one per edge (``edge-i``);
+        columns ``cell`` and ``labels``.
+    """
+    t = pm._t
+    if stroke_width is None:
+        if region is not None:
+            x0, y0, x1, y1 = region.bounds
+        elif len(pm.vertex_xy):
+            (x0, y0), (x1, y1) = pm.vertex_xy.min(axis=0), pm.vertex_xy.max(axis=0)
+        else:
+            x0 = y0 = 0.0
+            x1 = y1 = 1000.0
+        stroke_width = max(x1 - x0, y1 - y0, 1e-9) / 1000.0
+    shapes: dict[str, Shape] = {}
+    xs, ys, cells, labels = [], [], [], []
+    for f in range(1, pm.n_faces):
+        poly = t.face_polygons[f]
+        x0, y0, x1, y1 = poly.bounds
+        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        paths = [ShapePath(np.asarray(r.coords)[:-1] - c, True) for r in [poly.exterior, *poly.interiors]]
+        labs = t.face_labels[f]
+        style = {"fill": _label_color(labs), "fill_opacity": 0.45, "stroke": "none"} if labs else {"fill": "none", "stroke": "none"}
+        shapes[f"face-{f}"] = Shape(tuple(paths), style=style)
+        xs.append(c[0])
+        ys.append(c[1])
+        cells.append("face")
+        labels.append(" ".join(sorted(labs)))
+    for e in range(pm.n_edges):
+        pts = t.edge_points[e]
+        c = (pts.min(axis=0) + pts.max(axis=0)) / 2
+        labs = t.edge_labels[e]
+        style = {"fill": "none", "stroke": _label_color(labs) if labs else "#1d1f24", "stroke_width": stroke_width}
+        shapes[f"edge-{e}"] = Shape((ShapePath(pts - c, False),), style=style)
+        xs.append(c[0])
+        ys.append(c[1])
+        cells.append("edge")
+        labels.append(" ".join(sorted(labs)))
+    kinds = list(shapes)
+    return Arrangement(
+        shapes,
+        np.arange(len(kinds), dtype=np.int64),
+        xs,
+        ys,
+        columns={"cell": cells, "labels": labels},
+        region=region,
+        meta={"method": "program"},
+    )
+
+
+def _square(size: Any) -> tuple[float, Region]:
+    try:
+        n = float(size)
+    except (TypeError, ValueError):
+        raise InputError(f"size must be a number, got {size!r}") from None
+    if not (math.isfinite(n) and n > 0):
+        raise InputError(f"size must be positive, got {size!r}")
+    return n, Region.rectangle(n, n)
+
+
+def evaluate(arrangement: Any, size: float = 2000, *, seed: int | None = None) -> tuple[PlanarMap, Arrangement]:
+    """Evaluate an arrangement on the square [0, size]^2.
+
+    Returns
+    -------
+    (PlanarMap, Arrangement)
+        The induced planar map (already induced) and its strew Arrangement.
+    """
+    arr = as_arrangement(arrangement, "evaluate")
+    n, region = _square(size)
+    pm = arr(region, seed=seed)
+    return pm, to_strew(pm, region)
+
+
+def export_svg(a: Any, size: float, filename: str | os.PathLike[str] | None = None) -> Path | None:
+    """ExportSVG(Arrangement A, Scalar size): exports ``A``, evaluated on [0, size]^2, in SVG.
+
+    Writes ``filename`` (default: the running script's name with ``.svg``, in the
+    current folder) and returns its path. Under ``strew run`` the outputs are the
+    ``--out`` files, so this call writes nothing and returns None.
+    """
+    arr = as_arrangement(a, "export_svg")
+    if _IN_RUN.get():
+        return None
+    from ..io import save
+
+    if filename is None:
+        stem = Path(sys.argv[0]).stem if sys.argv and sys.argv[0] not in ("", "-c") else "arrangement"
+        filename = f"{stem}.svg"
+    _, strew_arr = evaluate(arr, size, seed=top().root)
+    return save(strew_arr, filename)
+
+
+# -- running scripts ------------------------------------------------------------------------
+def _script_line(exc: BaseException, script: Path) -> int | None:
+    line = None
+    tb = exc.__traceback__
+    target = str(script.resolve())
+    while tb is not None:
+        if os.path.abspath(tb.tb_frame.f_code.co_filename) == target:
+            line = tb.tb_lineno
+        tb = tb.tb_next
+    return line
+
+
+@contextmanager
+def _script_environment(script: Path) -> Iterator[None]:
+    folder = str(script.parent.resolve())
+    old_argv = sys.argv
+    sys.argv = [str(script)]
+    sys.path.insert(0, folder)
+    token = _IN_RUN.set(True)
+    try:
+        yield
+    finally:
+        _IN_RUN.reset(token)
+        try:
+            sys.path.remove(folder)
+        except ValueError:
+            pass
+        sys.argv = old_argv
+
+
+def run_script(script: str | os.PathLike[str], *, size: float = 2000, seed: int = 0, name: str = "arrangement") -> tuple[PlanarMap, Arrangement]:
+    """Run a program script as ``python SCRIPT.py`` would, then evaluate its arrangement.
+
+    ``__file__`` is set and the script's folder is on ``sys.path``; the module-level
+    variable ``name`` (default ``arrangement``) is evaluated on [0, size]^2.
+
+    Raises
+    ------
+    ScriptError
+        The script is missing, does not compile, raises, has no ``arrangement``, or a
+        mapper fails; the message names the script line.
+    """
+    path = Path(script)
+    if not path.is_file():
+        raise ScriptError(f"{str(script)!r}: no such script")
+    n, region = _square(size)
+    with script_context(seed), _script_environment(path):
+        try:
+            glb = runpy.run_path(str(path), run_name="__main__")
+        except SyntaxError as exc:
+            raise ScriptError(f"{path.name} line {exc.lineno}: SyntaxError: {exc.msg}") from None
+        except MapperError:
+            raise
+        except SystemExit as exc:
+            if exc.code not in (None, 0):
+                raise ScriptError(f"{path.name}: the script exited with status {exc.code}") from None
+            raise ScriptError(f"{path.name}: the script exited before defining {name!r}") from None
+        except Exception as exc:
+            line = _script_line(exc, path)
+            where = f"{path.name} line {line}" if line else path.name
+            msg = str(exc).replace("\n", " ")
+            raise ScriptError(f"{where}: {type(exc).__name__}: {msg}") from exc
+        if name not in glb:
+            raise ScriptError(f"{path.name}: no module-level {name!r}; assign the final arrangement to it, e.g. `{name} = map_to_faces(mapper, partition)`")
+        value = glb[name]
+        if not isinstance(value, (ArrangementFunction, Curves)):
+            raise ScriptError(f"{path.name}: {name!r} is {type(value).__name__}, expected an arrangement (the result of a partition, mapping or merging operator)")
+        try:
+            pm = as_arrangement(value, name)(region, seed=seed)
+            _ = pm.n_faces  # induce inside the error handling
+        except MapperError:
+            raise
+        except InputError as exc:
+            line = _script_line(exc, path)
+            where = f"{path.name} line {line}" if line else path.name
+            raise ScriptError(f"{where}: {exc}") from exc
+    return pm, to_strew(pm, region)
+
+
+def _format_tb(exc: BaseException) -> str:  # pragma: no cover - debugging aid
+    return "".join(traceback.format_exception(exc))
