@@ -87,6 +87,7 @@ _AUTO_ID = re.compile(
 _UNITS = {"": 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0, "pt": 96 / 72, "pc": 16.0}
 _LENGTH = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-z]*)\s*$")
 _MAX_SEGMENT_POINTS = 20000
+_SIGNATURE_TOLERANCE = 0.125  # matching flattens at this fraction of the tolerance
 _IDENTITY = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 _MIRROR = np.array([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 
@@ -199,7 +200,10 @@ def _is_region_el(el: ET.Element, strew_doc: bool) -> bool:
 
 
 def _fmt(v: float) -> str:
-    s = format(float(v), ".12g")
+    v = float(v)
+    if abs(v) < 1e-10:  # rounding noise from transforms (e.g. -8.9e-16)
+        v = 0.0
+    s = format(v, ".12g")
     return "0" if s in ("-0", "0") else s
 
 
@@ -580,10 +584,10 @@ class _Doc:
         if el.get("data-kind") is not None or _label(el) is not None:
             return False
         kids = [c for c in el if _local(c.tag) in _SHAPE_TAGS | _GROUP_TAGS | {"use"} and not _hidden(c)]
-        if any(_local(c.tag) == "use" for c in kids):
+        if len(kids) <= 1:  # a group around one thing is that thing, moved
             return True
-        if len(kids) <= 1:
-            return False
+        if any(_local(d.tag) == "use" for d in el.iter()):  # clones are elements of their own
+            return True
         # A group is one object when its children touch one another (one connected piece).
         inner = _compose(m, self.transform(el))
         geoms = []
@@ -626,16 +630,23 @@ def _geometry(paths: list[Path]) -> shapely.Geometry:
 
 
 def _connected(geoms: list[shapely.Geometry]) -> bool:
+    """Whether geometries form one piece (each linked to the rest by intersections)."""
     n = len(geoms)
-    seen = {0}
-    todo = [0]
-    while todo:
-        i = todo.pop()
-        for j in range(n):
-            if j not in seen and shapely.intersects(geoms[i], geoms[j]):
-                seen.add(j)
-                todo.append(j)
-    return len(seen) == n
+    tree = shapely.STRtree(geoms)
+    i, j = tree.query(geoms, predicate="intersects")
+    parent = list(range(n))
+
+    def find(a: int) -> int:
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+
+    for a, b in zip(i.tolist(), j.tolist()):
+        ra, rb = find(a), find(b)
+        if ra != rb:
+            parent[ra] = rb
+    return len({find(a) for a in range(n)}) == 1
 
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
@@ -748,6 +759,7 @@ def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float,
     if abs(other.gyration - s * ref.gyration) > 2 * tolerance + 0.02 * other.gyration:
         return None
     candidates: list[float] = []
+    first_wins = False
     norm_r = ref.size * max(ref.gyration, 1e-300)
     norm_o = other.size * max(other.gyration, 1e-300)
     for k in range(2, _KMAX + 1):
@@ -766,6 +778,7 @@ def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float,
         rr = np.sqrt((vr**2).sum(axis=1))
         near = np.flatnonzero(np.abs(s * rr - np.hypot(*vo)) <= 2 * tolerance + 0.01 * other.radius)
         candidates = [0.0] + [math.atan2(vo[1], vo[0]) - math.atan2(vr[i, 1], vr[i, 0]) for i in near[:32]]
+        first_wins = True  # a round shape: keep rotation 0 when it fits
     limit = 2 * tolerance + 1e-3 * other.radius
     best: tuple[float, float] | None = None
     best_err = math.inf
@@ -780,6 +793,8 @@ def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float,
         err = max(err, float(shapely.distance(outline, shapely.points(other.points)).max()))
         if err <= limit and err < best_err:
             best, best_err = (float(math.atan2(sn, c)), s), err
+            if first_wins:
+                break
     return best
 
 
@@ -837,7 +852,7 @@ class _Reader:
             bounds = _bounds(flat.paths)
             origin = np.array([(bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2])
         kind = _Kind(self.unique(name), key, parts, origin, mirrored, style=_style(self.doc, parts))
-        kind.signature = _signature(flat.paths)
+        kind.signature = _signature(self.doc.flatten(parts, _IDENTITY, self.doc.tolerance * _SIGNATURE_TOLERANCE).paths)
         self.kinds.append(kind)
         return kind
 
@@ -910,7 +925,9 @@ class _Reader:
             self.place(self.target_kind(el, False), _IDENTITY, void, el)
             return
         parts = doc.parts(el, m, doc.inherited_props(el)) if not void else _visible_parts(doc, el, m)
-        flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
+        # Matching compares finer flattenings, so that scale and rotation do not depend on
+        # how coarsely each copy was flattened.
+        flat = doc.flatten(parts, _IDENTITY, doc.tolerance * _SIGNATURE_TOLERANCE)
         sig = _signature(flat.paths)
         if sig is None and not flat.paths:
             return
