@@ -103,9 +103,9 @@ def _positive_int(value: Any, name: str) -> int:
 
 
 def _default_cell(kinds: list[ExclusiveRegion], region: Region) -> float:
-    """Pixel side of the distance field: a sixth of the smallest element's size,
-    coarsened so that the raster stays under about 400,000 pixels."""
-    size = min(np.sqrt(k.area) * k.scale[0] for k in kinds)
+    """Pixel side of the distance field: a sixth of the smallest kind's size at its mean
+    scale, coarsened so that the raster stays under about 400,000 pixels."""
+    size = min(np.sqrt(k.area) * 0.5 * (k.scale[0] + k.scale[1]) for k in kinds)
     return float(max(size / 6.0, np.sqrt(region.area / 400_000.0)))
 
 
