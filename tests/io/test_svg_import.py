@@ -176,6 +176,28 @@ def test_symbol_labels_and_hidden_clones():
     assert shape.line_geometry.length == pytest.approx(10)
 
 
+def test_symbol_viewbox_scales_to_the_use_size():
+    svg = (
+        HEAD + '<defs><symbol id="box" viewBox="0 0 10 10"><rect x="0" y="0" width="10" height="10"/></symbol></defs>'
+        '<use xlink:href="#box" x="100" y="0" width="20" height="20"/></svg>'
+    )
+    arr = read_svg(svg)
+    assert arr.scale[0] == pytest.approx(2)
+    assert (arr.x[0], arr.y[0]) == pytest.approx((110, 10))
+    assert_same_geometry(arr.geometry[0], shapely.box(100, 0, 120, 20), 1e-9)
+
+
+def test_hidden_layer_is_skipped_hidden_object_is_void():
+    svg = (
+        HEAD + '<g inkscape:groupmode="layer" style="display:none"><rect width="5" height="5"/></g>'
+        '<rect x="10" width="5" height="5"/><rect x="20" width="5" height="5" style="display:none"/></svg>'
+    )
+    arr = read_svg(svg)
+    assert len(arr) == 2
+    assert arr["void"].tolist() == [False, True]
+    assert arr.x.tolist() == pytest.approx([12.5, 22.5])
+
+
 def test_missing_clone_target_is_named():
     with pytest.raises(InputError, match="missing #nothing"):
         read_svg(HEAD + '<use xlink:href="#nothing"/></svg>')

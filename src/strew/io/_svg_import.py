@@ -333,6 +333,31 @@ class _Doc:
         m = _compose(outer, self.transform(use))
         return _compose(m, _translate(self.length(use, "x"), self.length(use, "y")))
 
+    def symbol_viewport(self, use: ET.Element, symbol: ET.Element) -> np.ndarray:
+        """Map from a symbol's viewBox to the viewport a ``<use>`` gives it (identity without one).
+
+        Only a viewBox with an explicit ``width`` and ``height`` on the use (or the symbol)
+        is honoured, with the default ``preserveAspectRatio`` (xMidYMid meet); anything
+        else keeps the symbol's own coordinates.
+        """
+        box = (symbol.get("viewBox") or "").replace(",", " ").split()
+        w = use.get("width") or symbol.get("width")
+        h = use.get("height") or symbol.get("height")
+        if len(box) != 4 or w is None or h is None or "%" in w or "%" in h:
+            return _IDENTITY
+        try:
+            bx, by, bw, bh = (float(v) for v in box)
+        except ValueError:
+            return _IDENTITY
+        holder = use if use.get("width") is not None else symbol
+        vw, vh = self.length(holder, "width"), self.length(holder, "height")
+        if not (bw > 0 and bh > 0 and vw > 0 and vh > 0):
+            return _IDENTITY
+        k = min(vw / bw, vh / bh)
+        if (symbol.get("preserveAspectRatio") or "").strip().startswith("none"):
+            return np.array([[vw / bw, 0.0, -bx * vw / bw], [0.0, vh / bh, -by * vh / bh]])
+        return np.array([[k, 0.0, (vw - k * bw) / 2 - k * bx], [0.0, k, (vh - k * bh) / 2 - k * by]])
+
     # -- parts --------------------------------------------------------------------------
     def parts(self, el: ET.Element, m: np.ndarray, props: dict[str, str], stack: tuple[int, ...] = ()) -> list[_Part]:
         """Drawable leaves below ``el`` (clones expanded); ``m`` maps ``el``'s parent frame."""
@@ -353,6 +378,7 @@ class _Doc:
             tgt = self.target(el)
             inner = self.use_matrix(el, m)
             if _local(tgt.tag) == "symbol":
+                inner = _compose(inner, self.symbol_viewport(el, tgt))
                 return [p for child in tgt for p in self.parts(child, inner, props, (*stack, id(el)))]
             return self.parts(tgt, inner, props, (*stack, id(el)))
         if tag in _GROUP_TAGS or tag == "symbol":
@@ -887,15 +913,17 @@ class _Reader:
     def add_clone(self, use: ET.Element, m: np.ndarray, void: bool) -> None:
         doc = self.doc
         g = doc.use_matrix(use, m)
-        tgt = doc.target(use)
+        last, tgt = use, doc.target(use)
         seen = {id(use)}
         while _local(tgt.tag) == "use":  # a clone of a clone
             if id(tgt) in seen:
                 raise InputError(f"{doc.name}: {doc.where(use)}: <use> refers to itself")
             seen.add(id(tgt))
             g = doc.use_matrix(tgt, g)
-            tgt = doc.target(tgt)
-        if _local(tgt.tag) != "symbol":
+            last, tgt = tgt, doc.target(tgt)
+        if _local(tgt.tag) == "symbol":
+            g = _compose(g, doc.symbol_viewport(last, tgt))
+        else:
             # The clone draws the object with the object's own transform but not its
             # parents'; relative to the object as drawn, it is moved by g T W_ref^-1.
             ref = doc.world(tgt)
