@@ -362,7 +362,7 @@ class _Doc:
     def parts(self, el: ET.Element, m: np.ndarray, props: dict[str, str], stack: tuple[int, ...] = ()) -> list[_Part]:
         """Drawable leaves below ``el`` (clones expanded); ``m`` maps ``el``'s parent frame."""
         tag = _local(el.tag)
-        if tag is None or tag in _SKIP_TAGS - {"symbol"}:
+        if tag is None or tag in _SKIP_TAGS:  # a <symbol> is drawn only through a <use>
             return []
         own = _props(el)
         if tag == "circle" and el.get("data-label") is not None:
@@ -381,7 +381,7 @@ class _Doc:
                 inner = _compose(inner, self.symbol_viewport(el, tgt))
                 return [p for child in tgt for p in self.parts(child, inner, props, (*stack, id(el)))]
             return self.parts(tgt, inner, props, (*stack, id(el)))
-        if tag in _GROUP_TAGS or tag == "symbol":
+        if tag in _GROUP_TAGS:
             inner = _compose(m, self.transform(el))
             return [p for child in el for p in self.parts(child, inner, props, stack)]
         return []
