@@ -123,6 +123,7 @@ def pack(
     candidates: int = DEFAULTS["candidates"],
     power: float = DEFAULTS["power"],
     resolution: float | None = None,
+    sparse_candidates: int = DEFAULTS["poisson_candidates"],
     rng: int | np.random.Generator | None = None,
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
@@ -161,6 +162,8 @@ def pack(
     resolution : float, optional
         Fill-gap: pixel side of the distance field; default a sixth of the smallest
         element's size (the raster only proposes candidates).
+    sparse_candidates : int
+        Fill-gap Step 1: Bridson's trial points per active Poisson-disk sample (30).
     rng : int, Generator or None
     progress, should_cancel : callables, optional
         See :mod:`strew._progress`.
@@ -193,6 +196,7 @@ def pack(
     w = _weights(weights, list(lib))
     limit = _positive_int(DEFAULTS["max_failures"][method] if max_failures is None else max_failures, "max_failures")
     p_count = _positive_int(candidates, "candidates")
+    k_sparse = _positive_int(sparse_candidates, "sparse_candidates")
     try:
         power = float(power)
     except (TypeError, ValueError):
@@ -217,7 +221,7 @@ def pack(
     else:
         cell = _default_cell(kinds, dom) if resolution is None else resolution
         info.update(candidates=p_count, power=power, resolution=cell)
-        info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, info)
+        info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, k_sparse, info)
     if len(placer) == 0 and "no shape fits" not in info["stopped"]:
         info["stopped"] = f"no shape fits in the region ({info['stopped']})"
     info["trials"] = placer.trials
@@ -267,6 +271,7 @@ def _fill_gap(
     p_count: int,
     power: float,
     cell: float,
+    k_sparse: int,
     info: dict,
 ) -> str:
     kinds = placer.kinds
@@ -277,7 +282,7 @@ def _fill_gap(
     inner = shapely.buffer(dom.geometry, -radius)
     sparse = 0
     if not inner.is_empty and inner.area > 0:
-        pts = poisson_disk(inner, 2 * radius, candidates=DEFAULTS["poisson_candidates"], rng=gen)
+        pts = poisson_disk(inner, 2 * radius, candidates=k_sparse, rng=gen)
         m = len(pts)
         placed = placer.try_batch(pts, gen.random(m), gen.random(m), placer.draw_kinds(gen, m), collide=False)
         sparse = len(placed)

@@ -52,8 +52,6 @@ class Placer:
         self.xy: list[tuple[float, float]] = []
         self.rotation: list[float] = []
         self.scale: list[float] = []
-        self.last_tried = 0
-        self.last_accepted: list[int] = []
         self._tree: shapely.STRtree | None = None
         self._tree_n = 0
 
@@ -108,8 +106,6 @@ class Placer:
         """
         m = len(xy)
         placed: list[int] = []
-        self.last_tried = 0  # candidates of this batch tried before stopping
-        self.last_accepted: list[int] = []  # their positions in the batch
         if m == 0:
             return placed
         tree = self._tree_now() if collide else None
@@ -145,7 +141,6 @@ class Placer:
             geoms, ok, rot, sc, pos = cache[k]
             good = bool(ok[j])
             self.trials += 1
-            self.last_tried = j + 1
             if good and pending:
                 good = not bool(shapely.intersects(geoms[j], np.array(pending, dtype=object)).any())
             if not good:
@@ -154,7 +149,6 @@ class Placer:
                     break
                 continue
             self.consecutive = 0
-            self.last_accepted.append(j)
             placed.append(len(self.geoms))
             self.geoms.append(geoms[j])
             self.kind.append(k)
