@@ -1,0 +1,56 @@
+"""Example palettes and fast region-growing synthesis (Davison, Samavati, Jacob 2018).
+
+Discrete element texture synthesis from one or several exemplars held in a
+:class:`Palette` (§5.5): per-element radii (§4.1), point-based neighbourhood distance with
+greedy pairing (§4, Eq. 1), k-coherence and free-space points (§5.1), region growing
+(Algorithm 1) with horizon optimisation (§5.2-5.3), and the tools of §5.4: generative
+brush, filler and eraser, which work on a :class:`SynthState` one stroke segment at a time.
+
+Entry points
+------------
+synthesize
+    Exemplars + region (or a fill point, or a brush stroke) -> Arrangement.
+new_state, fill, brush, erase, set_selection
+    The incremental tools, for the studio.
+Palette, load_palette, save_palette
+    Example palettes.
+average_neighborhood_distance, energy
+    The measures of Eq. 5 and Eq. 2.
+"""
+
+from __future__ import annotations
+
+from ._api import as_selection, new_state, set_selection, synthesize
+from ._grow import brush, erase, fill, grow, seed_patch
+from ._metric import average_neighborhood_distance, energy, neighborhood_distances
+from ._optimize import optimize
+from ._palette import Palette, Selection, element_parameters, load_palette, save_palette
+from ._patch import patch_initialize
+from ._prepare import Prepared, prepare
+from ._state import SynthParams, SynthState
+
+__all__ = [
+    "synthesize",
+    "new_state",
+    "set_selection",
+    "as_selection",
+    "fill",
+    "brush",
+    "erase",
+    "grow",
+    "seed_patch",
+    "optimize",
+    "patch_initialize",
+    "Palette",
+    "Selection",
+    "load_palette",
+    "save_palette",
+    "element_parameters",
+    "prepare",
+    "Prepared",
+    "SynthParams",
+    "SynthState",
+    "average_neighborhood_distance",
+    "energy",
+    "neighborhood_distances",
+]

@@ -1,0 +1,361 @@
+"""Region growing (§5, Algorithm 1) and the tools of §5.4: brush, filler, eraser."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+import numpy as np
+import shapely
+from scipy.spatial import cKDTree
+
+from .._errors import InputError
+from .._progress import Reporter
+from . import _kernels as K
+from ._metric import sample_distance
+from ._optimize import match_neighborhoods, optimize
+from ._prepare import neighborhoods
+from ._state import SynthState, map_offsets
+
+__all__ = ["grow", "seed_patch", "fill", "brush", "erase", "update_free_space"]
+
+
+def seed_patch(state: SynthState, point: tuple[float, float], *, random: bool = False, exemplar: int | None = None) -> np.ndarray:
+    """Copy a patch of the selection around ``point`` (Algorithm 1, first line; §5.4).
+
+    The patch is the neighbourhood (radius r-bar) of the exemplar's central element, or
+    of a random interior element when ``random``; the exemplar is drawn by the
+    selection's weights. Elements outside the domain or intersecting the output are
+    left out.
+
+    Returns
+    -------
+    (m,) int
+        Indices of the new elements (they join the horizon).
+    """
+    prep = state.prep
+    rng = state.rng
+    if exemplar is None:
+        exemplar = int(rng.choice(len(prep.names), p=prep.weights)) if len(prep.names) > 1 else 0
+    if random:
+        pool = prep.interior[exemplar]
+        c = int(pool[rng.integers(len(pool))])
+    else:
+        c = int(prep.center[exemplar])
+    ids = np.flatnonzero(prep.source == exemplar)
+    off = prep.pos[ids] - prep.pos[c]
+    near = np.hypot(off[:, 0], off[:, 1]) <= prep.rbar[c]
+    ids, off = ids[near], off[near]
+    p = np.asarray(point, float)
+    pts = p + map_offsets(np.broadcast_to(p, off.shape), off)
+    ok = state.in_domain(pts) & ~state.conflicts(pts, prep.r[ids])
+    return state.add(ids[ok], pts[ok])
+
+
+def update_free_space(state: SynthState, elems: np.ndarray, tree: cKDTree) -> None:
+    """Remove free-space points covered by output elements and prune the horizon (§5.1).
+
+    A free-space point v is covered when an element o satisfies
+    ``|p_v - p_o| < max(factor (r_v + r_o), cover_v)``: no element of v's size fits
+    there, or an element already stands about where the exemplar puts one. An element
+    leaves the horizon when no live free-space point in the domain lies within its
+    neighbourhood radius.
+    """
+    if len(elems) == 0:
+        return
+    fpos, fr, fc, flag, _owner = state.free_points(elems)
+    if len(fpos):
+        covered = state.conflicts(fpos, fr, tree=tree, cover=fc)
+        state._alive[flag[covered]] = False
+        live = ~covered & state.in_domain(fpos)
+        fpos = fpos[live]
+    keep = np.zeros(len(elems), bool)
+    if len(fpos):
+        ftree = cKDTree(fpos)
+        keep = ftree.query_ball_point(state.pos[elems], r=state.rbar[elems], return_length=True) > 0
+    state._horizon[elems] = keep
+
+
+def _record(state: SynthState, t0: float, skipped: list[float]) -> None:
+    if state.trace is None:
+        return
+    t1 = time.perf_counter()
+    d = sample_distance(state, 200)
+    t2 = time.perf_counter()
+    state.trace.append((t1 - t0 - skipped[0], state.n, d))
+    skipped[0] += t2 - t1
+
+
+def grow(
+    state: SynthState,
+    *,
+    max_elements: int | None = None,
+    max_iterations: int = 100_000,
+    progress: Callable | None = None,
+    should_cancel: Callable | None = None,
+) -> int:
+    """Region growing from the current horizon until the domain is full (Algorithm 1).
+
+    Each iteration: select seeds (0.75 r-bar apart), generate from k-coherence
+    candidates that overlap free-space points (ratio test with c), expand free space,
+    optimise the (expanded) horizon, remove covered free-space points and prune the
+    horizon.
+
+    Returns
+    -------
+    int
+        Number of elements added.
+    """
+    prep = state.prep
+    prm = state.params
+    rep = Reporter(progress, should_cancel, message="synth")
+    start_n = state.n
+    t0 = time.perf_counter()
+    skipped = [0.0]
+    if state.n:
+        tree = cKDTree(state.pos)
+        update_free_space(state, np.flatnonzero(state.horizon), tree)
+    _record(state, t0, skipped)
+    k = prep.co.shape[1]
+    cell_r = float(prep.r.max())
+    for _ in range(max_iterations):
+        state.iterations += 1
+        hz = np.flatnonzero(state.horizon)
+        if len(hz) == 0 or (max_elements is not None and state.n >= max_elements):
+            break
+        rep.tick(state.n - start_n, message=f"{state.n} elements")
+        fpos, fr, fc, flag, _ = state.free_points(hz)
+        inside = state.in_domain(fpos)
+        fpos, fr, fc, flag = fpos[inside], fr[inside], fc[inside], flag[inside]
+        if len(fpos) == 0:
+            state._horizon[hz] = False
+            break
+        pos = state.pos
+        rbar = state.rbar
+        # -- seed selection (§5.1): 0.75 r-bar separation -----------------------------------
+        order = state.rng.permutation(hz)
+        seeds = K.greedy_separated(pos, order, prm.seed_separation * rbar)
+        tree = cKDTree(pos)
+        q_ptr, q_idx, q_off = neighborhoods(pos, rbar[seeds], tree=tree, query=seeds)
+        src = state.src
+        q_kind = prep.kind[src[q_idx]]
+        q_d = 2.0 * prep.r[src[q_idx]]
+        cands = prep.co[state.origin[seeds]]
+        cands = np.where((cands >= 0) & prep.selected_elements[np.maximum(cands, 0)], cands, -1)
+        costs = K.candidate_costs(q_ptr, q_off, q_kind, q_d, rbar[seeds], prep.kind[src[seeds]], 2.0 * prep.r[src[seeds]], cands, prep.nb_ptr, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind, prep.kind_cost)
+        sizes = np.where(cands >= 0, np.diff(prep.nb_ptr)[np.maximum(cands, 0)], 0).ravel()
+        out_ptr = np.zeros(len(sizes) + 1, np.int64)
+        np.cumsum(sizes, out=out_ptr[1:])
+        count, ex, ppos = K.generate_proposals(pos[seeds], q_ptr, q_off, q_kind, q_d, rbar[seeds], cands, prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind_cost, out_ptr)
+        valid = ex >= 0
+        exv = np.maximum(ex, 0)
+        pr = prep.r[exv]
+        ok = valid.copy()
+        if ok.any():
+            # candidates must overlap a free-space point (Algorithm 1) ...
+            ftree = cKDTree(fpos)
+            dv, jv = ftree.query(ppos[ok], k=1)
+            near_free = dv < np.maximum(pr[ok], fc[jv])
+            sub = np.flatnonzero(ok)
+            ok[sub[~near_free]] = False
+        if ok.any():
+            # ... not intersect O, and lie in the domain
+            sub = np.flatnonzero(ok)
+            good = ~state.conflicts(ppos[sub], pr[sub], tree=tree)
+            sub2 = sub[good]
+            good2 = state.in_domain(ppos[sub2])
+            ok[:] = False
+            ok[sub2[good2]] = True
+        placed, seed_ok = K.place_proposals(costs, out_ptr, count, ppos, pr, ok, prm.c, prep.factor, 2.0 * prep.factor * cell_r + 1e-12)
+        new_idx = np.flatnonzero(placed)
+        if max_elements is not None and state.n + len(new_idx) > max_elements:
+            new_idx = new_idx[: max(0, max_elements - state.n)]
+        new = state.add(ex[new_idx], ppos[new_idx])
+        # seeds that could not generate: count a failure on the free space they reach
+        failed = seeds[~seed_ok]
+        if len(failed):
+            ftree_all = cKDTree(fpos)
+            lists = ftree_all.query_ball_point(pos[failed], r=rbar[failed])
+            hit = np.fromiter((j for v in lists for j in v), dtype=np.int64)
+            if len(hit):
+                hit = np.unique(hit)
+                fl = flag[hit]
+                state._fails[fl] += 1
+                state._alive[fl[state._fails[fl] >= prm.max_failures]] = False
+        # -- optimisation (§5.2) ------------------------------------------------------------
+        if prm.optimize != "none" and len(new):
+            active = np.flatnonzero(state.horizon)
+            if prm.optimize == "global":
+                optimize(state, None)
+            else:
+                optimize(state, active)
+        # -- update free space and prune the horizon (§5.1) ----------------------------------
+        tree = cKDTree(state.pos)
+        update_free_space(state, np.flatnonzero(state.horizon), tree)
+        _record(state, t0, skipped)
+    rep.done(state.n - start_n)
+    return state.n - start_n
+
+
+def _first_point(state: SynthState) -> list[tuple[float, float]]:
+    if state.region is None:
+        raise InputError("fill: give a region (or a size) to fill")
+    pts = []
+    for poly in shapely.get_parts(state.region.geometry):
+        p = poly.point_on_surface()
+        c = poly.centroid
+        q = (c.x, c.y) if state.region.contains(np.array([[c.x, c.y]]))[0] else (p.x, p.y)
+        pts.append(q)
+    return pts
+
+
+def fill(state: SynthState, point: tuple[float, float] | None = None, **kwargs) -> int:
+    """Filler tool (§5.4): grow from ``point`` until no room is left in the region.
+
+    Without ``point``, each part of the region is filled from its centre. A point that is
+    already covered adds nothing.
+
+    Returns
+    -------
+    int
+        Elements added (voids included).
+    """
+    state.brush_points = np.zeros((0, 2))
+    state.brush_radii = np.zeros(0)
+    points = [tuple(map(float, point))] if point is not None else _first_point(state)
+    before = state.n
+    for p in points:
+        if state.region is not None and not state.region.contains(np.array([p]))[0]:
+            raise InputError(f"fill: point {p[0]:g},{p[1]:g} is outside the region")
+        seed_patch(state, p)
+        grow(state, **kwargs)
+    return state.n - before
+
+
+def brush(state: SynthState, points: np.ndarray, radii: np.ndarray | float, *, reoptimize: bool = True, **kwargs) -> int:
+    """Generative brush (§5.4) for one stroke segment.
+
+    The brush points ``(bp_i, br_i)`` join B and confine generation to their discs. When
+    no element is near the first point, a random patch of the selection seeds the
+    stroke. Existing elements under the brush are re-optimised toward the selection:
+    each takes the attributes of its most similar exemplar element in the selection and
+    their positions are relaxed (§5.4). Brush points with no free space left are
+    dropped from B.
+
+    Parameters
+    ----------
+    points : (m, 2) float
+    radii : (m,) float or float
+
+    Returns
+    -------
+    int
+        Elements added.
+    """
+    pts = np.asarray(points, float).reshape(-1, 2)
+    rad = np.broadcast_to(np.asarray(radii, float), (len(pts),)).copy()
+    if len(pts) == 0:
+        return 0
+    bad = np.flatnonzero(~(rad > 0))
+    if len(bad):
+        raise InputError(f"brush: radius must be positive, got {rad[bad[0]]:g}")
+    state.brush_points = np.concatenate([state.brush_points, pts])
+    state.brush_radii = np.concatenate([state.brush_radii, rad])
+    before = state.n
+    if state.n:
+        tree = cKDTree(state.pos)
+        under = np.unique(np.fromiter((j for v in tree.query_ball_point(pts, r=rad) for j in v), dtype=np.int64))
+    else:
+        under = np.zeros(0, np.int64)
+    near_first = state.n > 0 and len(cKDTree(state.pos).query_ball_point(pts[0], r=rad[0])) > 0
+    if not near_first:
+        seed_patch(state, tuple(pts[0]), random=True)
+    if len(under) and reoptimize:
+        _reoptimize(state, under)
+    # elements near the stroke take part in growth again
+    if state.n:
+        tree = cKDTree(state.pos)
+        reach = rad + float(state.prep.rbar.max())
+        near = np.unique(np.fromiter((j for v in tree.query_ball_point(pts, r=reach) for j in v), dtype=np.int64))
+        state._horizon[near] = True
+    grow(state, **kwargs)
+    _drop_spent_brush_points(state)
+    return state.n - before
+
+
+def _reoptimize(state: SynthState, idx: np.ndarray) -> None:
+    """Brushing over elements: re-match them over the whole selection and relax them."""
+    prep = state.prep
+    tree = cKDTree(state.pos)
+    allc = np.tile(np.flatnonzero(prep.selected_elements).astype(np.int64), (len(idx), 1))
+    best, _cost, *_ = match_neighborhoods(state, idx, tree, candidates=allc)
+    ok = best >= 0
+    changed = idx[ok][state.src[idx[ok]] != best[ok]]
+    state.reassign(changed, best[ok][state.src[idx[ok]] != best[ok]])
+    for _ in range(2):
+        optimize(state, idx)
+
+
+def _drop_spent_brush_points(state: SynthState) -> None:
+    if len(state.brush_radii) == 0:
+        return
+    hz = np.flatnonzero(state.horizon)
+    keep = np.zeros(len(state.brush_radii), bool)
+    if len(hz):
+        fpos, *_ = state.free_points(hz)
+        if len(fpos):
+            keep = cKDTree(fpos).query_ball_point(state.brush_points, r=state.brush_radii, return_length=True) > 0
+    state.brush_points = state.brush_points[keep]
+    state.brush_radii = state.brush_radii[keep]
+
+
+def erase(state: SynthState, points: np.ndarray, radius: float) -> int:
+    """Eraser (§5.4): remove elements and brush points within ``radius`` of a path.
+
+    Free space around the hole comes back to life so that a later fill or brush can
+    synthesize there again.
+
+    Parameters
+    ----------
+    points : (m, 2) float
+        The eraser path (a polyline; one point erases a disc).
+    radius : float
+
+    Returns
+    -------
+    int
+        Elements removed.
+    """
+    if not radius > 0:
+        raise InputError(f"eraser: radius must be positive, got {radius:g}")
+    pts = np.asarray(points, float).reshape(-1, 2)
+    if len(pts) == 0:
+        return 0
+    path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
+    shapely.prepare(path)
+
+    def near(p: np.ndarray) -> np.ndarray:
+        if len(p) == 0:
+            return np.zeros(0, bool)
+        return shapely.dwithin(path, shapely.points(p), radius)
+
+    if len(state.brush_radii):
+        keep = ~near(state.brush_points)
+        state.brush_points = state.brush_points[keep]
+        state.brush_radii = state.brush_radii[keep]
+    gone = near(state.pos)
+    if not gone.any():
+        return 0
+    removed = state.remove(gone)
+    # revive free space of elements around the hole
+    if state.n:
+        reach = radius + 2 * float(state.prep.rbar.max())
+        around = np.flatnonzero(shapely.dwithin(path, shapely.points(state.pos), reach))
+        for o in around:
+            b = state._free_base[o]
+            s = state.src[o]
+            m = state.prep.free_ptr[s + 1] - state.prep.free_ptr[s]
+            state._alive[b : b + m] = True
+            state._fails[b : b + m] = 0
+        state._horizon[around] = True
+    return removed

@@ -1,0 +1,517 @@
+"""Numba kernels of Davison et al.'s synthesis: pairing, matching, generation, constraints.
+
+Everything here works on plain arrays. Neighbourhoods are stored CSR-style: for the
+neighbourhood of element ``i``, rows ``ptr[i]:ptr[i + 1]`` of ``off`` (offsets
+``p_j - p_i``), ``kind`` and ``d`` (pairing thresholds ``d_j = 2 r_j``), sorted by
+distance from ``p_i`` (§4: "we sort elements in the output neighbourhood by distance").
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+__all__ = [
+    "map_offset",
+    "pair_cost",
+    "sort_segments",
+    "candidate_costs",
+    "generate_proposals",
+    "place_proposals",
+    "best_matches",
+    "greedy_separated",
+]
+
+INF = np.inf
+
+
+@numba.njit(cache=True)
+def map_offset(px: float, py: float, ox: float, oy: float) -> tuple[float, float]:
+    """m_p (§5.1, Eq. 3): map an example-space offset to output space at ``p``.
+
+    In the plane this is the identity; a surface (§5.7) would walk the orientation
+    field from ``p`` here. Every placement, free-space point and prediction goes
+    through this one function.
+    """
+    return ox, oy
+
+
+@numba.njit(cache=True)
+def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used):
+    """Neighbourhood distance |n(o) - n(e)| of Eq. 1 with greedy pair assignment (§4).
+
+    Parameters
+    ----------
+    o_off : (m, 2) float
+        Output neighbourhood offsets ``p_o' - p_o``, sorted by length.
+    o_kind : (m,) int
+    o_d : (m,) float
+        Pairing thresholds ``d_o' = 2 r_o'``.
+    e_off : (q, 2) float
+        Exemplar neighbourhood offsets ``p_e' - p_e``.
+    e_kind : (q,) int
+    e_d : (q,) float
+    kind_cost : float
+        Attribute mismatch cost omega, in units of ``d_o'^2``.
+    rim : float
+        Neighbourhood radius r-bar of the output element. Exemplar neighbourhoods reach a
+        little further (by the largest pairing threshold); a right-partial pair counts
+        only when its element lies at least ``d_e' / 2`` inside ``rim``, so that elements
+        on the rim of the neighbourhood do not flip the distance.
+    pair_out : (m,) int, output
+        Index into the exemplar neighbourhood of each output neighbour's pair, or -1 for
+        a left-partial pair (o', 0).
+    used : (q,) bool, output
+        True for exemplar neighbours in a full pair; the others are the right-partial
+        pairs (0, e').
+
+    Returns
+    -------
+    float
+        Sum over full pairs of ``|dp|^2 + omega``, plus ``d^2`` per partial pair.
+    """
+    m = o_off.shape[0]
+    q = e_off.shape[0]
+    for j in range(q):
+        used[j] = False
+    cost = 0.0
+    for i in range(m):
+        dd = o_d[i] * o_d[i]
+        best = -1
+        bestc = INF
+        ox = o_off[i, 0]
+        oy = o_off[i, 1]
+        for j in range(q):
+            if used[j]:
+                continue
+            dx = ox - e_off[j, 0]
+            dy = oy - e_off[j, 1]
+            r2 = dx * dx + dy * dy
+            if r2 > dd:  # too far apart: not paired (§4)
+                continue
+            c = r2
+            if o_kind[i] != e_kind[j]:
+                c += kind_cost * dd  # omega(o', e')
+            if c < bestc:
+                bestc = c
+                best = j
+        pair_out[i] = best
+        if best >= 0:
+            used[best] = True
+            cost += bestc
+        else:
+            cost += dd  # left-partial pair (o', 0)
+    for j in range(q):
+        if not used[j]:
+            lim = rim - 0.5 * e_d[j]
+            if lim > 0 and e_off[j, 0] ** 2 + e_off[j, 1] ** 2 <= lim * lim:
+                cost += e_d[j] * e_d[j]  # right-partial pair (0, e')
+    return cost
+
+
+@numba.njit(cache=True)
+def sort_segments(ptr, idx, off):
+    """Sort each CSR segment in place by offset length (ascending)."""
+    n = ptr.shape[0] - 1
+    for i in range(n):
+        a = ptr[i]
+        b = ptr[i + 1]
+        if b - a < 2:
+            continue
+        r2 = off[a:b, 0] ** 2 + off[a:b, 1] ** 2
+        order = np.argsort(r2, kind="mergesort")
+        idx[a:b] = idx[a:b][order]
+        off[a:b] = off[a:b][order]
+
+
+@numba.njit(cache=True)
+def _center_cost(ko, ke, d, kind_cost):
+    return kind_cost * d * d if ko != ke else 0.0
+
+
+@numba.njit(cache=True)
+def _inside_convex(hp, nh, x, y):
+    for t in range(nh):
+        if hp[t, 0] * x + hp[t, 1] * y > hp[t, 2]:
+            return False
+    return True
+
+
+@numba.njit(cache=True)
+def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d, q_pos, q_src, hp, hp_n, cands, e_ptr, e_off, e_kind, e_d, ex_kind, kind_cost):
+    """Like :func:`candidate_costs` between exemplar neighbourhoods, where a right-partial
+    pair only counts when its element would fall inside the query's own exemplar domain
+    (a convex polygon given as half-planes ``a x + b y <= c``).
+
+    Used for the k-coherence sets: an element near the edge of its exemplar lacks
+    neighbours beyond the edge, which must not count against interior candidates.
+    """
+    nq, k = cands.shape
+    out = np.full((nq, k), INF)
+    maxq = 1
+    for c in range(e_ptr.shape[0] - 1):
+        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
+    maxm = 1
+    for i in range(nq):
+        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
+    pair = np.empty(maxm, np.int64)
+    used = np.empty(maxq, np.bool_)
+    for i in range(nq):
+        a, b = q_ptr[i], q_ptr[i + 1]
+        s = q_src[i]
+        for j in range(k):
+            c = cands[i, j]
+            if c < 0:
+                continue
+            ea, eb = e_ptr[c], e_ptr[c + 1]
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            for t in range(eb - ea):
+                if not used[t] and not _inside_convex(hp[s], hp_n[s], q_pos[i, 0] + e_off[ea + t, 0], q_pos[i, 1] + e_off[ea + t, 1]):
+                    cost -= e_d[ea + t] * e_d[ea + t]
+            out[i, j] = cost + _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
+    return out
+
+
+@numba.njit(cache=True)
+def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d, cands, e_ptr, e_off, e_kind, e_d, ex_kind, kind_cost):
+    """|n(q) - n(c)| for every query neighbourhood ``q`` and each of its candidates.
+
+    Parameters
+    ----------
+    q_ptr, q_off, q_kind, q_d : CSR neighbourhoods of the queries (output elements).
+    q_rbar : (nq,) float
+        Neighbourhood radius of each query.
+    q_center_kind : (nq,) int
+    q_center_d : (nq,) float
+    cands : (nq, k) int
+        Candidate exemplar elements (-1 for none).
+    e_ptr, e_off, e_kind, e_d : CSR exemplar neighbourhoods.
+    ex_kind : (n_ex,) int
+
+    Returns
+    -------
+    (nq, k) float
+        Costs (inf where there is no candidate).
+    """
+    nq, k = cands.shape
+    out = np.full((nq, k), INF)
+    maxq = 0
+    for c in range(e_ptr.shape[0] - 1):
+        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
+    maxm = 0
+    for i in range(nq):
+        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
+    pair = np.empty(maxm, np.int64)
+    used = np.empty(maxq, np.bool_)
+    for i in range(nq):
+        a, b = q_ptr[i], q_ptr[i + 1]
+        for j in range(k):
+            c = cands[i, j]
+            if c < 0:
+                continue
+            ea, eb = e_ptr[c], e_ptr[c + 1]
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            out[i, j] = cost + _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
+    return out
+
+
+@numba.njit(cache=True)
+def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr):
+    """Right-partial pairs of each (seed, candidate), mapped to output space (§5.1).
+
+    The new position of a copied element is ``p_s + m_{p_s}(p_{e'} - p_c)``.
+
+    Parameters
+    ----------
+    seed_pos : (ns, 2) float
+    q_* : CSR output neighbourhoods of the seeds.
+    cands : (ns, k) int
+    e_ptr, e_idx, e_off, e_kind, e_d : CSR exemplar neighbourhoods (``e_idx`` holds
+        the exemplar index of each neighbour).
+    out_ptr : (ns * k + 1,) int
+        Upper-bound offsets (cumulative neighbourhood sizes of the candidates).
+
+    Returns
+    -------
+    count : (ns * k,) int
+        Number of proposals written for each (seed, candidate) from ``out_ptr``.
+    ex : (P,) int
+        Exemplar element to copy.
+    pos : (P, 2) float
+        Its output position.
+    """
+    ns, k = cands.shape
+    total = out_ptr[-1]
+    ex = np.full(total, -1, np.int64)
+    pos = np.zeros((total, 2))
+    count = np.zeros(ns * k, np.int64)
+    maxq = 0
+    for c in range(e_ptr.shape[0] - 1):
+        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
+    maxm = 1
+    for i in range(ns):
+        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
+    pair = np.empty(maxm, np.int64)
+    used = np.empty(max(maxq, 1), np.bool_)
+    for i in range(ns):
+        a, b = q_ptr[i], q_ptr[i + 1]
+        px, py = seed_pos[i, 0], seed_pos[i, 1]
+        for j in range(k):
+            c = cands[i, j]
+            if c < 0:
+                continue
+            ea, eb = e_ptr[c], e_ptr[c + 1]
+            pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            w = out_ptr[i * k + j]
+            n = 0
+            for t in range(eb - ea):
+                if used[t]:
+                    continue
+                mx, my = map_offset(px, py, e_off[ea + t, 0], e_off[ea + t, 1])
+                ex[w + n] = e_idx[ea + t]
+                pos[w + n, 0] = px + mx
+                pos[w + n, 1] = py + my
+                n += 1
+            count[i * k + j] = n
+    return count, ex, pos
+
+
+@numba.njit(cache=True)
+def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_ok, c_ratio, factor, cell):
+    """Sequential generation over seeds (Algorithm 1, §5.1).
+
+    For each seed, candidates are visited by increasing distance; the best one ``e_0``
+    is used if it can generate elements, otherwise ``e_i`` is considered while
+    ``|n(s) - n(e_i)| <= c |n(s) - n(e_0)|`` (the ratio test of §5.1); a seed whose
+    candidates all fail is abandoned. Elements of the chosen candidate that passed the
+    static checks (``prop_ok``) and do not intersect elements placed earlier in this
+    step are copied.
+
+    Parameters
+    ----------
+    costs : (ns, k) float
+    out_ptr, count : proposal layout from :func:`generate_proposals`.
+    prop_pos : (P, 2) float
+    prop_r : (P,) float
+        Bounding radii.
+    prop_ok : (P,) bool
+    c_ratio : float
+        The ratio constant c.
+    factor : float
+        Two elements intersect when ``|p - q| < factor (r_p + r_q)``.
+    cell : float
+        Grid cell for the dynamic intersection test (at least ``2 factor max r``).
+
+    Returns
+    -------
+    placed : (P,) bool
+        Proposals copied to the output.
+    seed_ok : (ns,) bool
+        Seeds that generated at least one element.
+    """
+    ns, k = costs.shape
+    P = prop_pos.shape[0]
+    placed = np.zeros(P, np.bool_)
+    seed_ok = np.zeros(ns, np.bool_)
+    if P == 0:
+        return placed, seed_ok
+    x0 = INF
+    y0 = INF
+    x1 = -INF
+    y1 = -INF
+    for p in range(P):
+        if prop_ok[p]:
+            x0 = min(x0, prop_pos[p, 0])
+            y0 = min(y0, prop_pos[p, 1])
+            x1 = max(x1, prop_pos[p, 0])
+            y1 = max(y1, prop_pos[p, 1])
+    if x0 == INF:
+        return placed, seed_ok
+    nx = int((x1 - x0) / cell) + 1
+    ny = int((y1 - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(P, -1, np.int64)
+    tmp = np.empty(P, np.int64)
+    for i in range(ns):
+        order = np.argsort(costs[i], kind="mergesort")
+        d0 = costs[i, order[0]]
+        if d0 == INF:
+            continue
+        for jj in range(k):
+            j = order[jj]
+            cj = costs[i, j]
+            if cj == INF or cj > c_ratio * d0 + 1e-12 * (1.0 + d0):
+                break  # bad suggestion: abandon the seed (§5.1)
+            w = out_ptr[i * k + j]
+            nt = 0
+            for t in range(w, w + count[i * k + j]):
+                if not prop_ok[t]:
+                    continue
+                px, py = prop_pos[t, 0], prop_pos[t, 1]
+                gx = int((px - x0) / cell)
+                gy = int((py - y0) / cell)
+                hit = False
+                for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+                    if hit:
+                        break
+                    for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                        q = head[ax * ny + ay]
+                        while q >= 0:
+                            dx = px - prop_pos[q, 0]
+                            dy = py - prop_pos[q, 1]
+                            lim = factor * (prop_r[t] + prop_r[q])
+                            if dx * dx + dy * dy < lim * lim:
+                                hit = True
+                                break
+                            q = nxt[q]
+                        if hit:
+                            break
+                if not hit:
+                    tmp[nt] = t
+                    nt += 1
+            if nt == 0:
+                continue
+            for u in range(nt):
+                t = tmp[u]
+                placed[t] = True
+                gx = int((prop_pos[t, 0] - x0) / cell)
+                gy = int((prop_pos[t, 1] - y0) / cell)
+                g = gx * ny + gy
+                nxt[t] = head[g]
+                head[g] = t
+            seed_ok[i] = True
+            break
+    return placed, seed_ok
+
+
+@numba.njit(cache=True)
+def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d, cands, e_ptr, e_idx, e_off, e_kind, e_d, ex_kind, kind_cost):
+    """Most similar exemplar neighbourhood for each query and its full pairs (§5.2).
+
+    Returns
+    -------
+    best : (nq,) int
+        Chosen exemplar element (-1 if none).
+    cost : (nq,) float
+    con_q : (C,) int
+        Query number of each full pair.
+    con_o : (C,) int
+        Output element ``h'`` of the pair (from ``q_idx``).
+    con_off : (C, 2) float
+        Target offset ``p_e' - p_e`` (prediction vector) in example space.
+    """
+    nq, k = cands.shape
+    best = np.full(nq, -1, np.int64)
+    bcost = np.full(nq, INF)
+    maxq = 1
+    for c in range(e_ptr.shape[0] - 1):
+        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
+    maxm = 1
+    for i in range(nq):
+        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
+    pair = np.empty(maxm, np.int64)
+    used = np.empty(maxq, np.bool_)
+    for i in range(nq):
+        a, b = q_ptr[i], q_ptr[i + 1]
+        for j in range(k):
+            c = cands[i, j]
+            if c < 0:
+                continue
+            ea, eb = e_ptr[c], e_ptr[c + 1]
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            cost += _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
+            if cost < bcost[i]:
+                bcost[i] = cost
+                best[i] = c
+    total = 0
+    for i in range(nq):
+        total += q_ptr[i + 1] - q_ptr[i]
+    con_q = np.empty(total, np.int64)
+    con_o = np.empty(total, np.int64)
+    con_off = np.empty((total, 2))
+    n = 0
+    for i in range(nq):
+        c = best[i]
+        if c < 0:
+            continue
+        a, b = q_ptr[i], q_ptr[i + 1]
+        ea, eb = e_ptr[c], e_ptr[c + 1]
+        pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+        for t in range(b - a):
+            if pair[t] >= 0:
+                con_q[n] = i
+                con_o[n] = q_idx[a + t]
+                con_off[n, 0] = e_off[ea + pair[t], 0]
+                con_off[n, 1] = e_off[ea + pair[t], 1]
+                n += 1
+    return best, bcost, con_q[:n], con_o[:n], con_off[:n]
+
+
+@numba.njit(cache=True)
+def greedy_separated(pos, order, sep):
+    """Greedy subset of ``order`` whose members are at least ``sep[i]`` apart (§5.1 seeds).
+
+    Parameters
+    ----------
+    pos : (n, 2) float
+    order : (m,) int
+        Indices into ``pos`` in visiting order.
+    sep : (n,) float
+        Separation radius of each element (0.75 r-bar for seeds).
+
+    Returns
+    -------
+    (s,) int
+        Chosen indices (a subset of ``order``, in order).
+    """
+    m = order.shape[0]
+    out = np.empty(m, np.int64)
+    ns = 0
+    if m == 0:
+        return out[:0]
+    cell = 0.0
+    for t in range(m):
+        cell = max(cell, sep[order[t]])
+    cell = max(cell, 1e-12)
+    x0 = INF
+    y0 = INF
+    x1 = -INF
+    y1 = -INF
+    for t in range(m):
+        i = order[t]
+        x0 = min(x0, pos[i, 0])
+        y0 = min(y0, pos[i, 1])
+        x1 = max(x1, pos[i, 0])
+        y1 = max(y1, pos[i, 1])
+    nx = int((x1 - x0) / cell) + 1
+    ny = int((y1 - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(m, -1, np.int64)
+    for t in range(m):
+        i = order[t]
+        gx = int((pos[i, 0] - x0) / cell)
+        gy = int((pos[i, 1] - y0) / cell)
+        ok = True
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                q = head[ax * ny + ay]
+                while q >= 0:
+                    j = out[q]
+                    dx = pos[i, 0] - pos[j, 0]
+                    dy = pos[i, 1] - pos[j, 1]
+                    lim = max(sep[i], sep[j])
+                    if dx * dx + dy * dy < lim * lim:
+                        ok = False
+                        break
+                    q = nxt[q]
+                if not ok:
+                    break
+            if not ok:
+                break
+        if ok:
+            out[ns] = i
+            g = gx * ny + gy
+            nxt[ns] = head[g]
+            head[g] = ns
+            ns += 1
+    return out[:ns]

@@ -1,0 +1,194 @@
+"""Optimisation of the expanded horizon (§5.2-5.3) by sparse least squares."""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+from scipy.sparse.linalg import splu
+from scipy.spatial import cKDTree
+
+from . import _kernels as K
+from ._prepare import neighborhoods
+from ._state import SynthState, map_offsets
+
+__all__ = ["optimize", "expanded_horizon", "prediction_weights", "match_neighborhoods"]
+
+
+def expanded_horizon(state: SynthState, horizon: np.ndarray, tree: cKDTree) -> np.ndarray:
+    """H-bar (§5.2): the horizon plus every element within the largest neighbourhood
+    radius of the selection from a horizon element.
+
+    Returns
+    -------
+    (m,) int, sorted
+    """
+    if len(horizon) == 0:
+        return horizon
+    reach = float(state.prep.rbar.max())
+    lists = tree.query_ball_point(state.pos[horizon], r=reach)
+    near = np.fromiter((j for v in lists for j in v), dtype=np.int64)
+    return np.union1d(horizon, near)
+
+
+def match_neighborhoods(state: SynthState, query: np.ndarray, tree: cKDTree, candidates: np.ndarray | None = None):
+    """Most similar exemplar neighbourhood for each query element and its full pairs.
+
+    ``candidates`` (m, c) defaults to the k-coherence set of each element's origin.
+    """
+    prep = state.prep
+    pos = state.pos
+    ptr, idx, off = neighborhoods(pos, state.rbar[query], tree=tree, query=query)
+    src = state.src
+    q_kind = prep.kind[src[idx]]
+    q_d = 2.0 * prep.r[src[idx]]
+    if candidates is None:
+        candidates = prep.co[state.origin[query]]
+    return K.best_matches(
+        ptr, idx, off, q_kind, q_d, state.rbar[query], prep.kind[src[query]], 2.0 * prep.r[src[query]], np.ascontiguousarray(candidates, np.int64),
+        prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind, prep.kind_cost,
+    )
+
+
+def prediction_weights(target: np.ndarray, pred: np.ndarray, eps: np.ndarray) -> np.ndarray:
+    """Weights alpha of Eq. 4: a multivariate Gaussian over each element's predictions.
+
+    For the predictions ``p_i`` of one element, with mean ``m`` and covariance
+    ``C = X^T X / n`` of the centred predictions ``X`` (its principal axes are the PCA
+    of the predictions, §5.3), ``alpha_i = exp(-(p_i - m)^T C^-1 (p_i - m) / 2)``.
+    ``eps`` (per element) is added to C's diagonal as ``eps^2`` so that a tight or
+    single prediction keeps weight 1.
+
+    Parameters
+    ----------
+    target : (c,) int
+        Element each prediction is for.
+    pred : (c, 2) float
+        Predicted positions.
+    eps : (c,) float
+
+    Returns
+    -------
+    (c,) float
+    """
+    if len(target) == 0:
+        return np.zeros(0)
+    u, g = np.unique(target, return_inverse=True)
+    cnt = np.bincount(g).astype(float)
+    mx = np.bincount(g, pred[:, 0]) / cnt
+    my = np.bincount(g, pred[:, 1]) / cnt
+    dx = pred[:, 0] - mx[g]
+    dy = pred[:, 1] - my[g]
+    e2 = np.bincount(g, eps**2) / cnt
+    cxx = np.bincount(g, dx * dx) / cnt + e2
+    cyy = np.bincount(g, dy * dy) / cnt + e2
+    cxy = np.bincount(g, dx * dy) / cnt
+    det = cxx * cyy - cxy * cxy
+    m2 = (cyy[g] * dx * dx - 2 * cxy[g] * dx * dy + cxx[g] * dy * dy) / det[g]
+    return np.exp(-0.5 * m2)
+
+
+def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDTree | None = None) -> float:
+    """One optimisation step of the expanded horizon (``horizon=None``: every element).
+
+    Predictions from paired neighbourhoods (§5.2) weighted by Eq. 4 (§5.3) become the
+    relative constraints ``p_h' - p_h = m_{p_h}(p_e' - p_e)``; frozen elements (in H-bar
+    but not in H) get a high weight on their old positions and low weights on their
+    predictions (§5.3). The normal equations are solved with a sparse LU factorisation
+    (an equivalent of the paper's sparse Cholesky). Moves that would leave the region or
+    make elements intersect are undone. Also re-assigns each element's origin to its
+    best match (k-coherence).
+
+    Returns
+    -------
+    float
+        Mean displacement of the optimised elements.
+    """
+    prm = state.params
+    n = state.n
+    if n < 2:
+        return 0.0
+    pos = state.pos
+    if tree is None:
+        tree = cKDTree(pos)
+    if horizon is None:
+        hbar = np.arange(n)
+        in_h = np.ones(n, bool)
+    else:
+        hbar = expanded_horizon(state, np.asarray(horizon, np.int64), tree)
+        in_h = np.zeros(n, bool)
+        in_h[horizon] = True
+    if len(hbar) == 0:
+        return 0.0
+    best, _cost, con_q, con_o, con_off = match_neighborhoods(state, hbar, tree)
+    ok = best >= 0
+    state._origin[hbar[ok]] = best[ok]
+    h = hbar[con_q]
+    hp = con_o
+    if len(h) == 0:
+        return 0.0
+    target = map_offsets(pos[h], con_off)
+    pred = pos[h] + target
+    r = state.r
+    w = prediction_weights(hp, pred, 0.25 * r[hp])
+    frozen_h = ~in_h[h]
+    frozen_hp = ~in_h[hp]
+    w = np.where(frozen_hp | frozen_h, w * prm.frozen_prediction_weight, w)
+    var = np.full(n, -1, np.int64)
+    var[hbar] = np.arange(len(hbar))
+    vh, vp = var[h], var[hp]
+    both = (vh >= 0) & (vp >= 0)
+    only_h = (vh >= 0) & (vp < 0)
+    nc = len(h)
+    sw = np.sqrt(w)
+    # rows: residual sqrt(w) * (x_h' - x_h - t)
+    rows_b = np.flatnonzero(both)
+    rows_h = np.flatnonzero(only_h)
+    anchor_w = np.where(in_h[hbar], prm.horizon_anchor, prm.frozen_weight)
+    na = len(hbar)
+    r_idx = np.concatenate([rows_b, rows_b, rows_h, nc + np.arange(na)])
+    c_idx = np.concatenate([vp[rows_b], vh[rows_b], vh[rows_h], np.arange(na)])
+    vals = np.concatenate([sw[rows_b], -sw[rows_b], -sw[rows_h], np.sqrt(anchor_w)])
+    A = sp.csr_matrix((vals, (r_idx, c_idx)), shape=(nc + na, na))
+    b = np.zeros((nc + na, 2))
+    b[rows_b] = sw[rows_b, None] * target[rows_b]
+    b[rows_h] = sw[rows_h, None] * (target[rows_h] - pos[hp[rows_h]])
+    b[nc:] = np.sqrt(anchor_w)[:, None] * pos[hbar]
+    M = (A.T @ A).tocsc()
+    rhs = A.T @ b
+    sol = splu(M).solve(np.asarray(rhs))
+    old = pos[hbar].copy()
+    new = old + prm.relaxation * (sol - old)
+    moved = hbar
+    # Guards: keep centres in the region and do not make elements intersect.
+    if state.region is not None:
+        out = ~state.region.contains(new)
+        new[out] = old[out]
+    state._pos[moved] = new
+    _undo_intersections(state, moved, old)
+    disp = np.hypot(*(state._pos[moved] - old).T)
+    return float(disp.mean())
+
+
+def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -> None:
+    """Put back moved elements that now intersect another element (up to 4 rounds)."""
+    f = state.prep.factor
+    for _ in range(4):
+        pos = state.pos
+        r = state.r
+        was = np.zeros(state.n, bool)
+        was[moved] = True
+        tree = cKDTree(pos)
+        pairs = tree.query_pairs(2 * f * float(r.max()), output_type="ndarray")
+        if len(pairs) == 0:
+            return
+        a, b = pairs[:, 0], pairs[:, 1]
+        d = np.hypot(*(pos[a] - pos[b]).T)
+        bad = (d < f * (r[a] + r[b])) & (was[a] | was[b])
+        if not bad.any():
+            return
+        culprits = np.unique(np.concatenate([a[bad][was[a[bad]]], b[bad][was[b[bad]]]]))
+        back = np.searchsorted(moved, culprits) if np.all(np.diff(moved) > 0) else None
+        if back is None:
+            lookup = {int(m): i for i, m in enumerate(moved)}
+            back = np.array([lookup[int(c)] for c in culprits])
+        state._pos[culprits] = old[back]

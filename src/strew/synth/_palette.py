@@ -1,0 +1,258 @@
+"""Example palettes (§5.5) and per-element parameters (§4.1).
+
+A :class:`Palette` holds several exemplars by name. Each exemplar element carries a
+bounding radius ``r_e`` (column ``radius``) and a neighbourhood radius ``r-bar_e``
+(column ``neighborhood_radius``); both default from the shapes and the exemplar's
+spacing and are copied to every output element made from it.
+
+A palette is saved as one strew document: the exemplars side by side, each element
+tagged with its exemplar's name in the column ``exemplar``, the radii as columns and
+the layout in ``extra["palette"]``. Loading splits it again.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from .._errors import InputError
+from ..arrangement import Arrangement, concat
+from ..shape import Shape
+
+__all__ = ["Palette", "Selection", "element_parameters", "load_palette", "save_palette", "average_spacing"]
+
+RING_FACTOR = 3.0  # r-bar = 3a, a "3-ring" neighbourhood (§6.1)
+
+
+def average_spacing(xy: np.ndarray) -> float:
+    """Average nearest-neighbour distance ``a`` of an exemplar (§6.1).
+
+    Parameters
+    ----------
+    xy : (n, 2) float, n >= 2
+    """
+    d, _ = cKDTree(xy).query(xy, k=2)
+    return float(np.mean(d[:, 1]))
+
+
+def _shape_radius(shape: Shape) -> float:
+    """Default bounding radius of a shape: its bounding circle about the local origin."""
+    return float(shape.radius)
+
+
+def element_parameters(exemplar: Arrangement, *, name: str = "exemplar") -> tuple[np.ndarray, np.ndarray]:
+    """Per-element radii ``r_e`` and ``r-bar_e`` of an exemplar (§4.1).
+
+    The columns ``radius`` and ``neighborhood_radius`` win where present (NaN entries
+    fall back to the defaults). Default ``r_e``: the radius of the element shape's
+    bounding circle about its origin, times its scale. Default ``r-bar_e``: three times the exemplar's
+    average spacing (§6.1).
+
+    Returns
+    -------
+    r : (n,) float
+    rbar : (n,) float
+    """
+    n = len(exemplar)
+    if n < 2:
+        raise InputError(f"exemplar {name!r}: needs at least 2 elements to learn neighbourhoods, has {n}")
+    xy = exemplar.xy
+    if len(np.unique(xy, axis=0)) < 2:
+        raise InputError(f"exemplar {name!r}: all elements sit at one point")
+    shapes = exemplar.shapes
+    per_kind = np.array([_shape_radius(shapes[k]) for k in exemplar.kinds])
+    r = per_kind[exemplar.kind] * np.abs(exemplar.scale)
+    if "radius" in exemplar:
+        given = np.asarray(exemplar["radius"], dtype=float)
+        r = np.where(np.isfinite(given), given, r)
+    a = average_spacing(xy)
+    rbar = np.full(n, RING_FACTOR * a)
+    if "neighborhood_radius" in exemplar:
+        given = np.asarray(exemplar["neighborhood_radius"], dtype=float)
+        rbar = np.where(np.isfinite(given), given, rbar)
+    for col, v in (("radius", r), ("neighborhood_radius", rbar)):
+        bad = np.flatnonzero(~(v > 0))
+        if len(bad):
+            raise InputError(f"exemplar {name!r}: {col}[{bad[0]}] must be positive, got {v[bad[0]]:g}")
+    zero = np.flatnonzero(r <= 1e-12)
+    if len(zero):
+        raise InputError(f"exemplar {name!r}: element {zero[0]} has an empty shape and no radius")
+    return r, rbar
+
+
+@dataclass(frozen=True)
+class Selection:
+    """The selection S of the palette that drives synthesis (§5): names and weights.
+
+    Weights choose which exemplar seeds a new patch (the first patch, a brush stroke
+    starting in empty space, a fill point).
+    """
+
+    palette: Palette
+    names: tuple[str, ...]
+    weights: tuple[float, ...]
+
+    def exemplars(self) -> list[Arrangement]:
+        return [self.palette[n] for n in self.names]
+
+
+class Palette:
+    """Several exemplars, by name (§5.5).
+
+    Parameters
+    ----------
+    exemplars : mapping of str to Arrangement
+        Each exemplar may carry the columns ``radius``, ``neighborhood_radius`` (per-element
+        parameters, §4.1) and ``void`` (invisible elements, §5.6).
+
+    Examples
+    --------
+    >>> from strew import Arrangement, Shape
+    >>> ex = Arrangement({"dot": Shape.circle(1)}, [0] * 4, [0, 4, 0, 4], [0, 0, 4, 4])
+    >>> pal = Palette({"dots": ex})
+    >>> pal.names, pal["dots"]["neighborhood_radius"].round(2).tolist()
+    (('dots',), [12.0, 12.0, 12.0, 12.0])
+    """
+
+    def __init__(self, exemplars: Mapping[str, Arrangement]) -> None:
+        if not exemplars:
+            raise InputError("palette: no exemplars")
+        self._ex: dict[str, Arrangement] = {}
+        for name, arr in exemplars.items():
+            if not isinstance(arr, Arrangement):
+                raise InputError(f"palette: exemplar {name!r} is not an Arrangement")
+            r, rbar = element_parameters(arr, name=name)
+            cols: dict[str, Any] = {"radius": r, "neighborhood_radius": rbar}
+            if "void" in arr:
+                cols["void"] = np.asarray(arr["void"]).astype(bool)
+            self._ex[str(name)] = arr.with_columns(**cols)
+
+    @classmethod
+    def from_arrangements(cls, arrangements: Iterable[Arrangement], names: Iterable[str] | None = None) -> Palette:
+        arrs = list(arrangements)
+        names = list(names) if names is not None else [f"exemplar{i}" for i in range(len(arrs))]
+        if len(set(names)) != len(names):
+            raise InputError(f"palette: duplicate exemplar names {names}")
+        return cls(dict(zip(names, arrs)))
+
+    @classmethod
+    def from_arrangement(cls, arr: Arrangement, name: str = "exemplar") -> Palette:
+        """One exemplar, or a saved palette document (split by its ``exemplar`` column)."""
+        if "exemplar" not in arr:
+            return cls({name: arr})
+        tags = np.asarray(arr["exemplar"]).astype(str)
+        layout = arr.extra.get("palette", {}).get("offsets", {})
+        out = {}
+        for tag in dict.fromkeys(tags.tolist()):
+            sub = arr.select(tags == tag).without_columns("exemplar")
+            dx, dy = layout.get(tag, (0.0, 0.0))
+            out[tag] = sub.replace(x=sub.x - dx, y=sub.y - dy, region=None, extra={})
+        return cls(out)
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(self._ex)
+
+    def __getitem__(self, name: str) -> Arrangement:
+        try:
+            return self._ex[name]
+        except KeyError:
+            raise InputError(f"palette: no exemplar {name!r} (have: {', '.join(self._ex)})") from None
+
+    def __len__(self) -> int:
+        return len(self._ex)
+
+    def __repr__(self) -> str:
+        return "Palette(" + ", ".join(f"{k}: {len(v)}" for k, v in self._ex.items()) + ")"
+
+    def select(self, which: str | Iterable[str] | Mapping[str, float] | None = None) -> Selection:
+        """A selection: one name, several names, or ``{name: weight}`` (None: everything)."""
+        if which is None:
+            items = {n: 1.0 for n in self._ex}
+        elif isinstance(which, str):
+            items = {which: 1.0}
+        elif isinstance(which, Mapping):
+            items = {str(k): float(v) for k, v in which.items()}
+        else:
+            items = {str(k): 1.0 for k in which}
+        if not items:
+            raise InputError("selection: empty (select at least one exemplar)")
+        for name, w in items.items():
+            self[name]
+            if not (np.isfinite(w) and w > 0):
+                raise InputError(f"selection: weight of {name!r} must be positive, got {w:g}")
+        return Selection(self, tuple(items), tuple(items.values()))
+
+    def to_arrangement(self, gap: float | None = None) -> Arrangement:
+        """The palette as one arrangement: exemplars side by side (a palette window)."""
+        parts = []
+        offsets: dict[str, list[float]] = {}
+        x = 0.0
+        for name, arr in self._ex.items():
+            b = arr.bounds
+            g = gap if gap is not None else 0.1 * max(b[2] - b[0], b[3] - b[1], 1e-9)
+            dx, dy = x - b[0], -b[1]
+            offsets[name] = [dx, dy]
+            parts.append(arr.replace(x=arr.x + dx, y=arr.y + dy, region=None, meta={}, extra={}).with_columns(exemplar=[name] * len(arr)))
+            x += (b[2] - b[0]) + g
+        out = concat(_rename_conflicting_kinds(parts))
+        return out.replace(meta={"method": "synth.palette"}, extra={"palette": {"offsets": offsets}})
+
+
+def _rename_conflicting_kinds(parts: list[Arrangement]) -> list[Arrangement]:
+    """Rename kinds whose names clash with a different shape of an earlier exemplar."""
+    seen: dict[str, Shape] = {}
+    out = []
+    for arr in parts:
+        shapes = arr.shapes
+        tag = str(arr["exemplar"][0]) if len(arr) else "x"
+        rename = {}
+        for k, sh in shapes.items():
+            if k in seen and seen[k] != sh:
+                rename[k] = f"{tag}.{k}"
+        if rename:
+            new_shapes = {rename.get(k, k): sh for k, sh in shapes.items()}
+            arr = arr.replace(shapes=new_shapes, kind=arr.kind)
+        for k, sh in arr.shapes.items():
+            seen.setdefault(k, sh)
+        out.append(arr)
+    return out
+
+
+def save_palette(palette: Palette, path: str | os.PathLike[str]) -> Path:
+    """Write a palette as a strew document (.json), or as a picture (.svg, .png)."""
+    from ..io import save
+
+    return save(palette.to_arrangement(), path)
+
+
+def load_palette(paths: str | os.PathLike[str] | Iterable[str | os.PathLike[str]]) -> Palette:
+    """Load exemplars and palettes (.json or .svg) into one palette.
+
+    A single-exemplar file is named after its file stem; a saved palette contributes
+    all its exemplars.
+    """
+    from ..io import load
+
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    exemplars: dict[str, Arrangement] = {}
+    for p in paths:
+        arr = load(p)
+        sub = Palette.from_arrangement(arr, name=Path(p).stem)
+        for name in sub.names:
+            key = name
+            i = 2
+            while key in exemplars:
+                key = f"{name}{i}"
+                i += 1
+            exemplars[key] = sub[name]
+    if not exemplars:
+        raise InputError("palette: no exemplar files given")
+    return Palette(exemplars)

@@ -1,0 +1,412 @@
+"""Analysis of the selection (§5.1): neighbourhoods, k-coherence sets, free-space vectors."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
+
+from .._errors import InputError
+from ..shape import Shape
+from . import _kernels as K
+from ._palette import Palette, Selection, _rename_conflicting_kinds
+
+__all__ = ["Prepared", "prepare", "neighborhoods", "k_coherence", "cluster_free_space", "dbscan"]
+
+
+@dataclass
+class Prepared:
+    """The selection S, analysed. Arrays have one row per exemplar element (n of them).
+
+    Attributes
+    ----------
+    shapes : dict of str to Shape
+        Merged shape library (kind names of different exemplars that clash are renamed).
+    pos : (n, 2) float
+    kind, rotation, scale : (n,) int32, float, float
+    r, rbar : (n,) float
+        Bounding and neighbourhood radii (§4.1).
+    void : (n,) bool
+    source : (n,) int
+        Exemplar number (index into ``names``).
+    nb_ptr, nb_idx, nb_off, nb_kind, nb_d : CSR neighbourhoods n(e) (self excluded),
+        sorted by distance; ``nb_d = 2 r`` of each neighbour.
+    co : (n, k) int
+        k-coherence sets co(e) (§5.1), most similar first; ``co[e, 0] == e``.
+    free_ptr, free_off, free_r, free_cover : CSR free-space vectors free(e) after
+        clustering, with the bounding radius r_v of a free-space point and its cover
+        radius (3/4 of the exemplar spacing around the elements it stands for): an output
+        element closer than that covers it.
+    factor : float
+        Intersection factor: two elements intersect when
+        ``|p - q| < factor (r_p + r_q)``; below 1 only when the exemplar's own bounding
+        discs overlap.
+    """
+
+    names: tuple[str, ...]
+    weights: np.ndarray
+    shapes: dict[str, Shape]
+    pos: np.ndarray
+    kind: np.ndarray
+    rotation: np.ndarray
+    scale: np.ndarray
+    r: np.ndarray
+    rbar: np.ndarray
+    void: np.ndarray
+    source: np.ndarray
+    columns: dict[str, np.ndarray]
+    nb_ptr: np.ndarray
+    nb_idx: np.ndarray
+    nb_off: np.ndarray
+    nb_kind: np.ndarray
+    nb_d: np.ndarray
+    co: np.ndarray
+    free_ptr: np.ndarray
+    free_off: np.ndarray
+    free_r: np.ndarray
+    free_cover: np.ndarray
+    factor: float
+    kind_cost: float
+    density: np.ndarray
+    center: np.ndarray
+    palette: Palette
+    selected: np.ndarray
+    interior: list[np.ndarray] = field(default_factory=list)
+    domains: list = field(default_factory=list)
+
+    def __len__(self) -> int:
+        return len(self.kind)
+
+    def set_selection(self, selection: Selection) -> None:
+        """Select exemplars of the (whole) palette with weights; the others get weight 0."""
+        w = np.zeros(len(self.names))
+        for name, wt in zip(selection.names, selection.weights):
+            w[self.names.index(name)] = wt
+        self.weights = w / w.sum()
+        self.selected = w > 0
+
+    @property
+    def selected_elements(self) -> np.ndarray:
+        """(n,) bool: exemplar elements of the selection."""
+        return self.selected[self.source]
+
+
+def neighborhoods(pos: np.ndarray, rbar: np.ndarray, group: np.ndarray | None = None, tree: cKDTree | None = None, query: np.ndarray | None = None):
+    """CSR neighbourhoods n(i): elements within ``rbar[i]`` of ``p_i`` (k-d tree, §4).
+
+    Parameters
+    ----------
+    pos : (n, 2) float
+        Points searched.
+    rbar : (m,) float
+        Radius per query.
+    group : (n,) int, optional
+        Only elements of the same group are neighbours (exemplars of a palette).
+    tree : cKDTree, optional
+        Tree over ``pos``.
+    query : (m,) int, optional
+        Indices of the query elements in ``pos`` (default: all of them).
+
+    Returns
+    -------
+    ptr : (m + 1,) int
+    idx : (N,) int
+    off : (N, 2) float
+        ``p_j - p_i``, each segment sorted by length, the query itself excluded.
+    """
+    if tree is None:
+        tree = cKDTree(pos)
+    if query is None:
+        query = np.arange(len(pos))
+    lists = tree.query_ball_point(pos[query], r=rbar)
+    lens = np.fromiter((len(v) for v in lists), dtype=np.int64, count=len(lists))
+    idx = np.fromiter((j for v in lists for j in v), dtype=np.int64, count=int(lens.sum()))
+    owner = np.repeat(query, lens)
+    keep = idx != owner
+    if group is not None:
+        keep &= group[idx] == group[owner]
+    idx = idx[keep]
+    owner_row = np.repeat(np.arange(len(query)), lens)[keep]
+    lens = np.bincount(owner_row, minlength=len(query))
+    ptr = np.zeros(len(query) + 1, dtype=np.int64)
+    np.cumsum(lens, out=ptr[1:])
+    off = pos[idx] - pos[query][owner_row]
+    K.sort_segments(ptr, idx, off)
+    return ptr, idx, off
+
+
+def k_coherence(ptr, off, pos, kind, nb_kind, nb_d, d_center, rbar, source, domains, interior, k: int, kind_cost: float) -> np.ndarray:
+    """k-coherence sets (§5.1): the k most similar exemplar elements to each one.
+
+    Similarity is the neighbourhood distance of Eq. 1 between n(e) and n(c). Candidates
+    are interior elements (whole neighbourhoods); an element near the edge of its
+    exemplar is compared only inside its exemplar's domain, so that it points to interior
+    elements that continue the texture beyond the edge. An interior element comes first
+    in its own set (distance 0).
+
+    Returns
+    -------
+    (n, k) int
+        -1 pads rows when there are fewer than k candidates.
+    """
+    n = len(kind)
+    k = int(k)
+    out = np.full((n, k), -1, dtype=np.int64)
+    cand_ids = np.flatnonzero(interior).astype(np.int64)
+    if n == 0 or len(cand_ids) == 0:
+        return out
+    hp, hp_n = domains
+    # query side: n(e) within r-bar only, as an output neighbourhood would be
+    qptr, qrows = truncate(ptr, off, rbar)
+    block = max(1, 2_000_000 // len(cand_ids))
+    for a in range(0, n, block):
+        b = min(n, a + block)
+        cands = np.tile(cand_ids, (b - a, 1))
+        rows = qrows[qptr[a] : qptr[b]]
+        cost = K.candidate_costs_in_domain(
+            qptr[a : b + 1] - qptr[a], off[rows], nb_kind[rows], nb_d[rows], rbar[a:b],
+            kind[a:b], d_center[a:b], pos[a:b], source[a:b], hp, hp_n, cands, ptr, off, nb_kind, nb_d, kind, kind_cost,
+        )
+        rows = np.arange(b - a)
+        selfcol = np.searchsorted(cand_ids, rows + a)
+        is_self = (selfcol < len(cand_ids)) & (cand_ids[np.minimum(selfcol, len(cand_ids) - 1)] == rows + a)
+        cost[rows[is_self], selfcol[is_self]] = -1.0  # the element itself first
+        order = np.argsort(cost, axis=1, kind="stable")[:, :k]
+        out[a:b, : order.shape[1]] = cand_ids[order]
+    return out
+
+
+def truncate(ptr: np.ndarray, off: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Rows of each CSR segment within ``radius[i]``: new pointers and the kept rows."""
+    owner = np.repeat(np.arange(len(ptr) - 1), np.diff(ptr))
+    keep = np.hypot(off[:, 0], off[:, 1]) <= radius[owner]
+    rows = np.flatnonzero(keep)
+    nptr = np.zeros(len(ptr), dtype=np.int64)
+    np.cumsum(np.bincount(owner[keep], minlength=len(ptr) - 1), out=nptr[1:])
+    return nptr, rows
+
+
+def exemplar_domain(points: np.ndarray, spacing: float):
+    """The exemplar's domain: convex hull of its elements grown by half the spacing.
+
+    Returns
+    -------
+    polygon : shapely Polygon
+    halfplanes : (m, 3) float
+        Rows ``(a, b, c)`` with ``a x + b y <= c`` inside.
+    """
+    import shapely
+    from shapely.geometry.polygon import orient
+
+    hull = shapely.convex_hull(shapely.multipoints(points))
+    poly = shapely.buffer(hull, max(0.5 * spacing, 1e-9), join_style="mitre")
+    poly = orient(poly, sign=1.0)
+    c = np.asarray(poly.exterior.coords)
+    x1, y1, x2, y2 = c[:-1, 0], c[:-1, 1], c[1:, 0], c[1:, 1]
+    # inside (counter-clockwise): (x2-x1)(y-y1) - (y2-y1)(x-x1) >= 0
+    a = y2 - y1
+    b = -(x2 - x1)
+    cc = a * x1 + b * y1
+    return poly, np.c_[a, b, cc]
+
+
+def dbscan(points: np.ndarray, eps: float, min_samples: int) -> np.ndarray:
+    """Density-based clustering (Ester et al.) with scipy: labels, -1 for noise.
+
+    Core points have at least ``min_samples`` points (themselves included) within
+    ``eps``; clusters are the connected components of core points over the radius
+    graph, and border points join a neighbouring core point's cluster.
+
+    Parameters
+    ----------
+    points : (n, 2) float
+
+    Returns
+    -------
+    (n,) int
+    """
+    n = len(points)
+    if n == 0:
+        return np.zeros(0, dtype=np.int64)
+    tree = cKDTree(points)
+    pairs = tree.query_pairs(eps, output_type="ndarray")
+    deg = np.ones(n, dtype=np.int64) + np.bincount(pairs[:, 0], minlength=n) + np.bincount(pairs[:, 1], minlength=n)
+    core = deg >= min_samples
+    cc = pairs[core[pairs[:, 0]] & core[pairs[:, 1]]]
+    g = coo_matrix((np.ones(len(cc)), (cc[:, 0], cc[:, 1])), shape=(n, n))
+    _, comp = connected_components(g, directed=False)
+    labels = np.full(n, -1, dtype=np.int64)
+    core_ids = np.flatnonzero(core)
+    _, labels[core_ids] = np.unique(comp[core_ids], return_inverse=True)
+    # border points: attach to a core neighbour
+    for i, j in pairs:
+        if labels[i] < 0 and core[j]:
+            labels[i] = labels[j]
+        elif labels[j] < 0 and core[i]:
+            labels[j] = labels[i]
+    return labels
+
+
+def cluster_free_space(vectors: np.ndarray, radii: np.ndarray, eps: float, min_samples: int) -> tuple[np.ndarray, np.ndarray]:
+    """Replace free-space vectors by the centroids of their DBSCAN clusters (§5.1).
+
+    Parameters
+    ----------
+    vectors : (m, 2) float
+    radii : (m, c) float
+        Per-vector values averaged over each cluster (radii of the elements pointed to).
+
+    Returns
+    -------
+    centroids : (q, 2) float
+    values : (q, c) float
+        Cluster means of ``radii``.
+    """
+    radii = np.asarray(radii, float).reshape(len(vectors), -1)
+    labels = dbscan(vectors, eps, min_samples)
+    keep = labels >= 0
+    if not keep.any():
+        return np.zeros((0, 2)), np.zeros((0, radii.shape[1]))
+    lab = labels[keep]
+    nc = lab.max() + 1
+    cnt = np.bincount(lab, minlength=nc)
+    cx = np.bincount(lab, vectors[keep, 0], nc) / cnt
+    cy = np.bincount(lab, vectors[keep, 1], nc) / cnt
+    vals = np.stack([np.bincount(lab, radii[keep, j], nc) / cnt for j in range(radii.shape[1])], axis=1)
+    return np.c_[cx, cy], vals
+
+
+def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prepared:
+    """Analyse the palette of a selection: neighbourhoods, k-coherence and free-space
+    points (§5.1), computed for every exemplar of the palette; the selection then picks
+    which of them drive synthesis.
+    """
+    if k < 1:
+        raise InputError(f"k: must be at least 1, got {k}")
+    palette = selection.palette
+    names = palette.names
+    exemplars = [palette[nm] for nm in names]
+    tagged = [ex.with_columns(exemplar=[name] * len(ex)) for name, ex in zip(names, exemplars)]
+    tagged = _rename_conflicting_kinds(tagged)
+    sources = np.concatenate([np.full(len(ex), i) for i, ex in enumerate(tagged)])
+    from ..arrangement import concat
+
+    arr = concat(tagged)
+    pos = arr.xy
+    r = np.asarray(arr["radius"], dtype=float)
+    rbar = np.asarray(arr["neighborhood_radius"], dtype=float)
+    void = np.asarray(arr["void"], dtype=bool) if "void" in arr else np.zeros(len(arr), bool)
+    kind = arr.kind.astype(np.int64)
+    # n(e) reaches past r-bar by the largest pairing threshold of its exemplar, so that
+    # output neighbours on the rim still find their pairs (see kernels.pair_cost).
+    margin = np.array([2.0 * r[sources == i].max() for i in range(len(tagged))])[sources]
+    ptr, idx, off = neighborhoods(pos, rbar + margin, group=sources)
+    nb_kind = kind[idx]
+    nb_d = 2.0 * r[idx]  # d_e = 2 r_e (§4)
+    # Exemplar domains and interior elements (whole neighbourhoods inside the domain).
+    import shapely
+
+    nsrc = len(tagged)
+    polys, planes = [], []
+    density = np.zeros(nsrc)
+    center = np.zeros(nsrc, dtype=np.int64)
+    interior_mask = np.zeros(len(arr), bool)
+    interior = []
+    for i in range(nsrc):
+        ids = np.flatnonzero(sources == i)
+        p = pos[ids]
+        a = _spacing(p)
+        poly, hp = exemplar_domain(p, a)
+        polys.append(poly)
+        planes.append(hp)
+        density[i] = len(ids) / max(poly.area, 1e-12)
+        depth = shapely.distance(poly.exterior, shapely.points(p))
+        inner = depth >= rbar[ids]
+        if inner.sum() < max(k, 4):
+            inner = np.zeros(len(ids), bool)
+            inner[np.argsort(-depth, kind="stable")[: max(k, 4)]] = True
+        interior_mask[ids[inner]] = True
+        interior.append(ids[inner])
+        center[i] = ids[np.argmax(depth)]
+    hp_n = np.array([len(h) for h in planes], dtype=np.int64)
+    hp = np.zeros((nsrc, int(hp_n.max()), 3))
+    for i, h in enumerate(planes):
+        hp[i, : len(h)] = h
+    co = k_coherence(ptr, off, pos, kind, nb_kind, nb_d, 2.0 * r, rbar, sources, (hp, hp_n), interior_mask, k, kind_cost)
+    # Free space (§5.1): free(e) = {p_c' - p_c | c' in n(c), c in co(e)}, clustered.
+    free_ptr = np.zeros(len(arr) + 1, dtype=np.int64)
+    free_off_parts = []
+    free_r_parts = []
+    min_samples = min(2, k)
+    # cover radius: 3/4 of the nearest-neighbour distance of each element in its exemplar
+    half_nn = np.zeros(len(arr))
+    for i in range(len(tagged)):
+        ids = np.flatnonzero(sources == i)
+        d, _ = cKDTree(pos[ids]).query(pos[ids], k=2)
+        half_nn[ids] = 0.75 * d[:, 1]
+    for e in range(len(arr)):
+        cs = co[e][co[e] >= 0]
+        segs = [np.arange(ptr[c], ptr[c + 1]) for c in cs]
+        rows = np.concatenate(segs) if segs else np.zeros(0, np.int64)
+        nb = idx[rows]
+        cent, vals = cluster_free_space(off[rows], np.c_[r[nb], half_nn[nb]], eps=0.33 * half_nn[e], min_samples=min_samples)
+        free_off_parts.append(cent)
+        free_r_parts.append(vals)
+        free_ptr[e + 1] = free_ptr[e] + len(cent)
+    free_off = np.concatenate(free_off_parts) if free_off_parts else np.zeros((0, 2))
+    fvals = np.concatenate(free_r_parts) if free_r_parts else np.zeros((0, 2))
+    free_r, free_cover = fvals[:, 0].copy(), fvals[:, 1].copy()
+    # Intersection factor: the exemplar's own closest approach, relative to r_p + r_q.
+    owner = np.repeat(np.arange(len(arr)), np.diff(ptr))
+    if len(idx):
+        ratio = np.hypot(off[:, 0], off[:, 1]) / (r[owner] + r[idx])
+        factor = float(min(1.0, 0.95 * ratio.min()))
+    else:
+        factor = 1.0
+    if factor <= 0:
+        raise InputError("exemplar: two elements share a position; cannot learn spacing")
+    columns = {k_: np.asarray(v) for k_, v in arr.columns.items() if k_ not in ("radius", "neighborhood_radius", "void", "exemplar")}
+    prep = Prepared(
+        names=names,
+        weights=np.zeros(len(names)),
+        shapes=arr.shapes,
+        pos=pos,
+        kind=kind,
+        rotation=np.asarray(arr.rotation, float),
+        scale=np.asarray(arr.scale, float),
+        r=r,
+        rbar=rbar,
+        void=void,
+        source=sources,
+        columns=columns,
+        nb_ptr=ptr,
+        nb_idx=idx,
+        nb_off=off,
+        nb_kind=nb_kind,
+        nb_d=nb_d,
+        co=co,
+        free_ptr=free_ptr,
+        free_off=free_off,
+        free_r=free_r,
+        free_cover=free_cover,
+        factor=factor,
+        kind_cost=float(kind_cost),
+        density=density,
+        center=center,
+        palette=palette,
+        selected=np.zeros(len(names), bool),
+        interior=interior,
+        domains=polys,
+    )
+    prep.set_selection(selection)
+    return prep
+
+
+def _spacing(p: np.ndarray) -> float:
+    if len(p) < 2:
+        return 0.0
+    d, _ = cKDTree(p).query(p, k=2)
+    return float(d[:, 1].mean())

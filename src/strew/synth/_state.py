@@ -1,0 +1,347 @@
+"""Synthesis state: the output O, its horizon, free space and brush points.
+
+The state is what the tools of §5.4 (generative brush, filler, eraser) work on, one call
+per stroke segment; :func:`strew.synth.synthesize` drives it for a whole region.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from .._errors import InputError
+from .._rng import as_rng
+from ..arrangement import Arrangement
+from ..region import Region
+from . import _kernels as K
+from ._prepare import Prepared
+
+__all__ = ["SynthParams", "SynthState", "map_offsets"]
+
+OPTIMIZE = ("horizon", "global", "none")
+
+
+@dataclass(frozen=True)
+class SynthParams:
+    """Parameters of region growing and optimisation (defaults from §5 and §6.1).
+
+    Attributes
+    ----------
+    k : int
+        Size of the k-coherence sets (§5.1; 5).
+    c : float
+        Ratio constant rejecting poor candidate neighbourhoods (§5.1; 2, > 1).
+    kind_cost : float
+        Attribute (kind) mismatch cost omega of Eq. 1, in units of the pair's squared
+        threshold ``d^2``.
+    seed_separation : float
+        Seeds are at least this fraction of their neighbourhood radius apart (§5.1; 0.75).
+    optimize : {"horizon", "global", "none"}
+        Optimise the expanded horizon (§5.2), every element (§6.4), or nothing.
+    relaxation : float
+        Fraction of the least-squares step taken per optimisation (0.8).
+    frozen_weight : float
+        Weight of a frozen element's old position (§5.3: high).
+    frozen_prediction_weight : float
+        Factor on predictions for frozen elements (§5.3: low).
+    horizon_anchor : float
+        Small weight keeping horizon elements near their old positions (regularisation).
+    max_failures : int
+        A free-space point is dropped after this many seeds near it failed to use it.
+    """
+
+    k: int = 5
+    c: float = 2.0
+    kind_cost: float = 1.0
+    seed_separation: float = 0.75
+    optimize: str = "horizon"
+    relaxation: float = 0.8
+    frozen_weight: float = 10.0
+    frozen_prediction_weight: float = 0.1
+    horizon_anchor: float = 0.01
+    max_failures: int = 3
+
+    def __post_init__(self) -> None:
+        if int(self.k) < 1:
+            raise InputError(f"k: must be at least 1, got {self.k}")
+        if not self.c > 1:
+            raise InputError(f"c: the ratio constant must be greater than 1, got {self.c}")
+        if self.optimize not in OPTIMIZE:
+            raise InputError(f"optimize: expected one of {', '.join(OPTIMIZE)}, got {self.optimize!r}")
+        if not (0 < self.relaxation <= 1):
+            raise InputError(f"relaxation: must be in (0, 1], got {self.relaxation}")
+        if not self.seed_separation > 0:
+            raise InputError(f"seed_separation: must be positive, got {self.seed_separation}")
+        if not self.kind_cost >= 0:
+            raise InputError(f"kind_cost: must be non-negative, got {self.kind_cost}")
+
+
+def map_offsets(p: np.ndarray, off: np.ndarray) -> np.ndarray:
+    """Vectorised m_p (§5.1): offsets ``off`` (n, 2) from example space at points ``p`` (n, 2)."""
+    return _map_offsets(np.ascontiguousarray(p, dtype=float), np.ascontiguousarray(off, dtype=float))
+
+
+import numba  # noqa: E402
+
+
+@numba.njit(cache=True)
+def _map_offsets(p, off):
+    out = np.empty_like(off)
+    for i in range(off.shape[0]):
+        mx, my = K.map_offset(p[i, 0], p[i, 1], off[i, 0], off[i, 1])
+        out[i, 0] = mx
+        out[i, 1] = my
+    return out
+
+
+class SynthState:
+    """The output domain during synthesis.
+
+    Parameters
+    ----------
+    prep : Prepared
+        The analysed selection.
+    region : Region, optional
+        New elements keep their centres inside it.
+    params : SynthParams
+    rng : int or Generator or None
+
+    Attributes
+    ----------
+    n : int
+        Number of output elements (voids included).
+    pos : (n, 2) float
+    src : (n,) int
+        Exemplar element each output element was copied from (its attributes and its
+        per-element parameters r, r-bar, §4.1).
+    origin : (n,) int
+        Exemplar element used for k-coherence search (o_e, §5.1); optimisation
+        re-assigns it to the best match.
+    horizon : (n,) bool
+    """
+
+    def __init__(self, prep: Prepared, region: Region | None = None, params: SynthParams | None = None, rng: Any = None) -> None:
+        self.prep = prep
+        self.region = region
+        self.params = params or SynthParams()
+        self.rng = as_rng(rng)
+        cap = 256
+        self.n = 0
+        self._pos = np.zeros((cap, 2))
+        self._src = np.zeros(cap, np.int64)
+        self._origin = np.zeros(cap, np.int64)
+        self._horizon = np.zeros(cap, bool)
+        self._free_base = np.zeros(cap, np.int64)
+        self._flags_n = 0
+        self._alive = np.zeros(1024, bool)
+        self._fails = np.zeros(1024, np.int16)
+        self.brush_points = np.zeros((0, 2))
+        self.brush_radii = np.zeros(0)
+        self.trace: list[tuple[float, int, float]] | None = None
+        self.iterations = 0
+
+    # -- element storage ---------------------------------------------------------------
+    @property
+    def pos(self) -> np.ndarray:
+        return self._pos[: self.n]
+
+    @property
+    def src(self) -> np.ndarray:
+        return self._src[: self.n]
+
+    @property
+    def origin(self) -> np.ndarray:
+        return self._origin[: self.n]
+
+    @property
+    def horizon(self) -> np.ndarray:
+        return self._horizon[: self.n]
+
+    @property
+    def r(self) -> np.ndarray:
+        return self.prep.r[self.src]
+
+    @property
+    def rbar(self) -> np.ndarray:
+        return self.prep.rbar[self.src]
+
+    @property
+    def kind(self) -> np.ndarray:
+        return self.prep.kind[self.src]
+
+    def _grow_to(self, n: int) -> None:
+        cap = len(self._src)
+        if n <= cap:
+            return
+        new = max(n, 2 * cap)
+        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base"):
+            old = getattr(self, name)
+            arr = np.zeros((new, *old.shape[1:]), dtype=old.dtype)
+            arr[: self.n] = old[: self.n]
+            setattr(self, name, arr)
+
+    def _alloc_flags(self, src: np.ndarray) -> np.ndarray:
+        """Fresh (alive) free-space flags for elements copied from ``src``; returns bases."""
+        counts = np.diff(self.prep.free_ptr)[src]
+        base = self._flags_n + np.concatenate([[0], np.cumsum(counts)[:-1]]) if len(src) else np.zeros(0, np.int64)
+        need = self._flags_n + int(counts.sum())
+        if need > len(self._alive):
+            new = max(need, 2 * len(self._alive))
+            a = np.zeros(new, bool)
+            a[: self._flags_n] = self._alive[: self._flags_n]
+            f = np.zeros(new, np.int16)
+            f[: self._flags_n] = self._fails[: self._flags_n]
+            self._alive, self._fails = a, f
+        self._alive[self._flags_n : need] = True
+        self._fails[self._flags_n : need] = 0
+        self._flags_n = need
+        return base.astype(np.int64)
+
+    def add(self, src: np.ndarray, pos: np.ndarray, *, horizon: bool = True) -> np.ndarray:
+        """Append elements copied from exemplar elements ``src`` at ``pos``; returns their indices."""
+        src = np.asarray(src, np.int64)
+        m = len(src)
+        self._grow_to(self.n + m)
+        idx = np.arange(self.n, self.n + m)
+        self._pos[idx] = pos
+        self._src[idx] = src
+        self._origin[idx] = src
+        self._horizon[idx] = horizon
+        self._free_base[idx] = self._alloc_flags(src)
+        self.n += m
+        return idx
+
+    def reassign(self, idx: np.ndarray, src: np.ndarray) -> None:
+        """Give elements new attributes (copied from ``src``) and fresh free space."""
+        idx = np.asarray(idx, np.int64)
+        src = np.asarray(src, np.int64)
+        self._src[idx] = src
+        self._origin[idx] = src
+        self._free_base[idx] = self._alloc_flags(src)
+
+    def remove(self, mask: np.ndarray) -> int:
+        """Delete elements where ``mask`` is True; returns how many."""
+        keep = ~np.asarray(mask, bool)
+        k = int(keep.sum())
+        removed = self.n - k
+        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base"):
+            arr = getattr(self, name)
+            arr[:k] = arr[: self.n][keep]
+        self.n = k
+        return removed
+
+    # -- free space (§5.1, Eq. 3) ------------------------------------------------------------
+    def free_points(self, elems: np.ndarray, alive_only: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Free-space points of ``elems``: ``F = {m_p(v) + p_o | v in free(o_e)}``.
+
+        Returns
+        -------
+        pos : (f, 2) float
+        r : (f,) float
+            Bounding radius r_v.
+        cover : (f,) float
+            Cover radius.
+        flag : (f,) int
+            Index into the alive/failure flags.
+        owner : (f,) int
+            Output element.
+        """
+        prep = self.prep
+        elems = np.asarray(elems, np.int64)
+        src = self._src[elems]
+        counts = prep.free_ptr[src + 1] - prep.free_ptr[src]
+        owner = np.repeat(elems, counts)
+        total = int(counts.sum())
+        local = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
+        rows = np.repeat(prep.free_ptr[src], counts) + local
+        flag = np.repeat(self._free_base[elems], counts) + local
+        if alive_only:
+            keep = self._alive[flag]
+            owner, rows, flag = owner[keep], rows[keep], flag[keep]
+        p = self._pos[owner]
+        fpos = p + map_offsets(p, prep.free_off[rows])
+        return fpos, prep.free_r[rows], prep.free_cover[rows], flag, owner
+
+    def in_domain(self, pts: np.ndarray) -> np.ndarray:
+        """(n,) bool: inside the region and, while brushing, inside a brush disc."""
+        ok = np.ones(len(pts), bool)
+        if self.region is not None and len(pts):
+            ok &= self.region.contains(pts)
+        if len(self.brush_radii) and len(pts):
+            tree = cKDTree(self.brush_points)
+            d, j = tree.query(pts, k=min(4, len(self.brush_radii)))
+            d = d.reshape(len(pts), -1)
+            j = j.reshape(len(pts), -1)
+            ok &= np.any(d <= self.brush_radii[np.minimum(j, len(self.brush_radii) - 1)], axis=1)
+        return ok
+
+    def conflicts(self, pts: np.ndarray, r: np.ndarray, tree: cKDTree | None = None, cover: np.ndarray | None = None) -> np.ndarray:
+        """(m,) bool: would an element of radius ``r`` at ``pts`` intersect an output element?
+
+        With ``cover`` (m,), an output element closer than ``cover`` also counts (free-space
+        points, §5.1).
+        """
+        if self.n == 0 or len(pts) == 0:
+            return np.zeros(len(pts), bool)
+        if tree is None:
+            tree = cKDTree(self.pos)
+        f = self.prep.factor
+        rr = self.r
+        kq = min(8, self.n)
+        bound = f * (float(np.max(r)) + float(rr.max()))
+        if cover is not None:
+            bound = max(bound, float(np.max(cover)))
+        d, j = tree.query(pts, k=kq, distance_upper_bound=bound + 1e-12)
+        d = d.reshape(len(pts), kq)
+        j = j.reshape(len(pts), kq)
+        valid = j < self.n
+        jj = np.where(valid, j, 0)
+        lim = f * (r[:, None] + rr[jj])
+        if cover is not None:
+            lim = np.maximum(lim, cover[:, None])
+        hit = valid & (d < lim)
+        return hit.any(axis=1)
+
+    # -- output ------------------------------------------------------------------------
+    def to_arrangement(self, *, keep_voids: bool = False, clip: bool = True, meta: dict | None = None) -> Arrangement:
+        """The output as an arrangement.
+
+        Parameters
+        ----------
+        keep_voids : bool
+            Keep void elements (§5.6), flagged in the ``void`` column; by default they
+            are hidden (left out).
+        clip : bool
+            Leave out elements whose geometry is not wholly inside the region.
+        """
+        prep = self.prep
+        src = self.src
+        keep = np.ones(self.n, bool) if keep_voids else ~prep.void[src]
+        cols: dict[str, Any] = {
+            "radius": prep.r[src],
+            "neighborhood_radius": prep.rbar[src],
+            "exemplar": np.asarray(prep.names, dtype=object)[prep.source[src]],
+        }
+        if keep_voids:
+            cols["void"] = prep.void[src]
+        for name, col in prep.columns.items():
+            cols[name] = col[src]
+        arr = Arrangement(
+            prep.shapes,
+            prep.kind[src].astype(np.int64),
+            self.pos[:, 0],
+            self.pos[:, 1],
+            prep.rotation[src],
+            prep.scale[src],
+            columns=cols,
+            region=self.region,
+            meta=meta or {},
+        )
+        arr = arr.select(keep)
+        if clip and self.region is not None and len(arr):
+            inside = self.region.contains_geometry(arr.geometry, tolerance=1e-9 * max(1.0, *map(abs, self.region.bounds)))
+            arr = arr.select(inside)
+        return arr
