@@ -1,0 +1,675 @@
+"""The growth framework: repeatedly grow into the largest empty circle (Wong et al. 1998, §4.1).
+
+Pseudocode of §4.1, as implemented by :class:`_Grower`::
+
+    initialize element tree with seed points
+    render boundary elements into buffer
+    compute initial MAT
+    initialize empty exclude list
+    repeat
+        C <- FindEmptyCircle()
+        find elements within delta of C
+        try elements in order of distance from C
+            try rules in order specified in rule file
+            if rule succeeds, break
+        if some rule succeeded
+            update element tree; render new elements into buffer
+            incrementally update MAT
+            remove points on exclude list within epsilon of C
+        else
+            add center of empty circle to exclude list
+
+The raster buffer and distance fields live in :mod:`._raster`. The circle found on the
+raster is then measured exactly against the proxies (shapely / analytic circles), and
+all intersection and containment tests that rules ask for are exact.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import shapely
+from scipy import ndimage
+
+from .._errors import InputError
+from .._progress import Reporter
+from .._rng import as_rng
+from ..region import Region
+from ._pattern import Element, Pattern, load_pattern
+from ._proxies import Arc, Bezier, Circle, Point, Polygon, Proxy, Segment, vec
+from ._raster import climb, cover_disc, cover_polygon, cover_polyline, lower_wave, scan_blocks
+
+__all__ = ["Goal", "RuleContext", "Ornament", "grow_elements", "default_seed"]
+
+_BLOCK = 16
+
+
+@dataclass(frozen=True)
+class Goal:
+    """The empty circle C that a rule grows into (``$goal``).
+
+    Attributes
+    ----------
+    center : (2,) float
+    radius : float
+    """
+
+    center: np.ndarray
+    radius: float
+
+
+class _Placed:
+    """Placed proxies: bounding circles in growable arrays, exact geometry on demand."""
+
+    def __init__(self) -> None:
+        self.n = 0
+        cap = 256
+        self.bx = np.empty(cap)
+        self.by = np.empty(cap)
+        self.br = np.empty(cap)
+        self.round = np.empty(cap, bool)  # point or circle: exact analytic tests
+        self.owner = np.empty(cap, np.int64)
+        self.proxies: list[Proxy] = []
+
+    def add(self, proxy: Proxy, owner: int) -> None:
+        if self.n == len(self.bx):
+            for name in ("bx", "by", "br", "round", "owner"):
+                a = getattr(self, name)
+                b = np.empty(2 * len(a), a.dtype)
+                b[: self.n] = a
+                setattr(self, name, b)
+        cx, cy, r = proxy.bounding_circle()
+        i = self.n
+        self.bx[i], self.by[i], self.br[i] = cx, cy, r
+        self.round[i] = isinstance(proxy, (Circle, Point))
+        self.owner[i] = owner
+        self.proxies.append(proxy)
+        self.n += 1
+
+    def segments(self, i: int) -> np.ndarray:
+        """(m, 4) outline segments of proxy ``i`` (closed outlines include the closing edge)."""
+        pr = self.proxies[i]
+        pts = pr.polyline()
+        if pr.closed:
+            pts = np.vstack([pts, pts[:1]])
+        if len(pts) == 1:
+            pts = np.vstack([pts, pts])
+        return np.c_[pts[:-1], pts[1:]]
+
+    def near(self, cx: float, cy: float, reach: float) -> np.ndarray:
+        """Indices of proxies whose bounding circle comes within ``reach`` of ``(cx, cy)``."""
+        n = self.n
+        dx = self.bx[:n] - cx
+        dy = self.by[:n] - cy
+        lim = self.br[:n] + reach
+        return np.flatnonzero(dx * dx + dy * dy <= lim * lim)
+
+    def distances(self, idx: np.ndarray, cx: float, cy: float) -> np.ndarray:
+        """Exact distances from ``(cx, cy)`` to proxies ``idx`` (0 inside a circle)."""
+        d = np.hypot(self.bx[idx] - cx, self.by[idx] - cy) - self.br[idx]
+        other = ~self.round[idx]
+        if other.any():
+            geoms = [self.proxies[i].geometry for i in idx[other]]
+            d[other] = shapely.distance(np.asarray(geoms, dtype=object), shapely.Point(cx, cy))
+        return np.maximum(d, 0.0)
+
+
+def _proxies_of(item: Any) -> list[Proxy]:
+    if isinstance(item, Proxy):
+        return [item]
+    if isinstance(item, Element):
+        return list(item.proxies)
+    if isinstance(item, (list, tuple)):
+        out: list[Proxy] = []
+        for x in item:
+            out.extend(_proxies_of(x))
+        return out
+    raise InputError(f"expected an element, a proxy or a list of them, got {type(item).__name__}")
+
+
+class RuleContext:
+    """What a rule body sees besides its parent and children (§4.2).
+
+    Attributes
+    ----------
+    goal : Goal
+        The empty circle C (``$goal``).
+    state : SimpleNamespace
+        The pattern's global state for this run (``state.phase`` is the current phase).
+    rng : numpy.random.Generator
+        The run's random generator; use it for every random choice.
+    region : Region
+        The panel.
+    elements : list of Element
+        The placed elements, in placement order (read only).
+    """
+
+    def __init__(self, grower: _Grower, goal: Goal, parent: Element) -> None:
+        self._g = grower
+        self.goal = goal
+        self.parent = parent
+        self.state = grower.state
+        self.rng = grower.rng
+        self.region = grower.region
+        self.elements = grower.elements
+        self.dynamic: list[Element] = []
+
+    def new_child(self, type_name: str, **fields: Any) -> Element:
+        """Create a dynamic child of ``type_name`` (the paper's ``new`` plus ``new_child``)."""
+        et = self._g.pattern.types.get(type_name)
+        if et is None:
+            raise InputError(f"new_child: unknown element type {type_name!r} (declared: {', '.join(self._g.pattern.types)})")
+        el = Element(et)
+        for k, v in fields.items():
+            setattr(el, k, v)
+        self.dynamic.append(el)
+        return el
+
+    def intersects(self, item: Any, *, ignore: Iterable[Element] = ()) -> bool:
+        """Whether ``item`` (element, proxy or list) overlaps a placed element, exactly.
+
+        Touching does not count for circles (a dot tangent to its parent is fine); lines
+        and polygons use shapely's ``intersects``. Elements in ``ignore`` are skipped.
+        """
+        return self._g.intersects(_proxies_of(item), {e.index for e in ignore})
+
+    def inside(self, item: Any) -> bool:
+        """Whether ``item`` lies wholly inside the region (exact)."""
+        return self._g.inside(_proxies_of(item))
+
+    def hits_boundary(self, item: Any) -> bool:
+        """Whether ``item`` crosses the region boundary or lies outside."""
+        return not self.inside(item)
+
+    def boundary_distance(self, point: Any) -> float:
+        """Distance from ``point`` to the region boundary: positive inside, negative outside."""
+        p = vec(point)
+        d = float(shapely.distance(self._g.region.boundary, shapely.Point(p)))
+        return d if self._g.region.contains(p[None])[0] else -d
+
+    def clearance(self, point: Any, *, ignore: Iterable[Element] = ()) -> float:
+        """Radius of the largest empty circle at ``point``: distance to the nearest placed
+        element (``ignore`` skipped) or to the boundary, whichever is nearer (<= 0 outside)."""
+        p = vec(point)
+        d = self.boundary_distance(p)
+        if d <= 0:
+            return d
+        return min(d, self._g.element_distance(p, {e.index for e in ignore}, d))
+
+    def clear_exclude(self) -> None:
+        """Empty the exclude list (§4.1: a state change may open new possibilities)."""
+        self._g.clear_exclude_all()
+
+
+@dataclass
+class Ornament:
+    """The grown geometry: elements with proxies, before rendering.
+
+    Attributes
+    ----------
+    pattern : Pattern
+    region : Region
+    elements : list of Element
+        In placement order; seeds first.
+    seeds : (k, 2) float
+    stats : dict
+        ``iterations``, ``successes``, ``failures`` (exclude-list additions),
+        ``rejected`` (circles discarded after the exact test), ``largest_circle`` (radius
+        of the largest eligible circle when growth stopped), ``seconds``, ``resolution``.
+    params : dict
+    """
+
+    pattern: Pattern
+    region: Region
+    elements: list[Element]
+    seeds: np.ndarray
+    stats: dict[str, Any] = field(default_factory=dict)
+    params: dict[str, Any] = field(default_factory=dict)
+
+    def of_type(self, name: str) -> list[Element]:
+        """Placed elements of one type."""
+        return [e for e in self.elements if e.type == name]
+
+    def render(self, style: str = "outline", **kwargs: Any) -> Any:
+        """The ornament drawn in a named style as an :class:`~strew.Arrangement`."""
+        from ._render import render_ornament
+
+        return render_ornament(self, style, **kwargs)
+
+
+def default_seed(region: Region) -> np.ndarray:
+    """A sensible default seed: the centre of the largest circle inscribed in the region."""
+    g = region.geometry
+    try:
+        mic = shapely.maximum_inscribed_circle(g, tolerance=max(1e-9, 1e-3 * math.sqrt(region.area)))
+        p = np.asarray(shapely.get_coordinates(mic)[0], dtype=float)
+    except AttributeError:  # shapely < 2.1
+        p = np.asarray(g.representative_point().coords[0], dtype=float)
+    return p.reshape(1, 2)
+
+
+class _Grower:
+    def __init__(
+        self,
+        pattern: Pattern,
+        region: Region,
+        seeds: np.ndarray,
+        rng: np.random.Generator,
+        resolution: int | None,
+        min_radius: float,
+        delta: float | None,
+        epsilon: float | None,
+        max_elements: int | None,
+        reporter: Reporter,
+    ) -> None:
+        self.pattern = pattern
+        self.region = region
+        self.rng = rng
+        self.state = pattern.new_state()
+        self.min_radius = min_radius
+        self.delta = delta
+        self.epsilon = epsilon
+        self.max_elements = max_elements
+        self.rep = reporter
+        self.elements: list[Element] = []
+        self.placed = _Placed()
+        self.rules_by_parent: dict[str, list] = {}
+        for r in pattern.rules:
+            self.rules_by_parent.setdefault(r.parent, []).append(r)
+        bx0, by0, bx1, by1 = region.bounds
+        size = max(bx1 - bx0, by1 - by0)
+        if resolution is None:
+            # cells of half the minimum radius, between 256 and 2048 along the longer side
+            resolution = int(np.clip(np.ceil(size / (0.5 * min_radius)), 256, 2048))
+        if not (isinstance(resolution, (int, np.integer)) and 8 <= resolution <= 8192):
+            raise InputError(f"resolution: expected an integer between 8 and 8192 cells, got {resolution!r}")
+        self.resolution = int(resolution)
+        h = size / resolution
+        self.h = h
+        self.pad = h * math.sqrt(0.5)
+        self.tol = 1e-9 * max(1.0, size)
+        self.x0, self.y0 = bx0 - h, by0 - h
+        self.cols = int(np.ceil((bx1 - bx0) / h)) + 2
+        self.rows = int(np.ceil((by1 - by0) / h)) + 2
+        rows, cols = self.rows, self.cols
+        # -- render the boundary of R into the buffer (§4.1) ---------------------------
+        xs = self.x0 + (np.arange(cols) + 0.5) * h
+        ys = self.y0 + (np.arange(rows) + 0.5) * h
+        gx, gy = np.meshgrid(xs, ys)
+        inside = shapely.contains_xy(region.prepared, gx.ravel(), gy.ravel()).reshape(rows, cols)
+        covered = np.where(inside, 0, 1).astype(np.int8)
+        for p in region.paths:
+            ring = np.vstack([p.points, p.points[:1]])
+            covered.flat[cover_polyline(rows, cols, self.x0, self.y0, h, ring, self.pad)] |= 1
+        self.covered = covered
+        # -- initial distance transform (the MAT's values) ------------------------------
+        d, (ii, jj) = ndimage.distance_transform_edt(covered == 0, return_indices=True)
+        self.dist_all = d.astype(np.float64)
+        self.near_all = (ii.astype(np.int64) * cols + jj).astype(np.int64)
+        self.dist_el = np.full((rows, cols), np.inf)
+        self.near_el = np.full((rows, cols), -1, np.int64)
+        self.skip = np.zeros((rows, cols), bool)
+        self._ring = np.empty(rows * cols, np.int64)
+        self._inq = np.zeros(rows * cols, bool)
+        br, bc = -(-rows // _BLOCK), -(-cols // _BLOCK)
+        self.dirty = np.ones((br, bc), bool)
+        self.best_val = np.full((br, bc), -1.0)
+        self.best_idx = np.full((br, bc), -1, np.int64)
+        self.ex = np.empty((64, 2))
+        self.n_ex = 0
+        self.adj_tol = 2.0  # cells: raster pre-filter of "stopped by an element"
+        rings = []
+        for p in region.paths:
+            ring = np.vstack([p.points, p.points[:1]])
+            rings.append(np.c_[ring[:-1], ring[1:]])
+        self.boundary_segs = np.ascontiguousarray(np.vstack(rings), dtype=np.float64)
+        self.region_cover = shapely.buffer(region.geometry, 1e-7 * max(1.0, size))
+        shapely.prepare(self.region_cover)
+        self.stats: dict[str, Any] = dict(iterations=0, successes=0, failures=0, rejected=0, outside=0)
+        seed_type = pattern.types["seed"]
+        for s in seeds:
+            el = Element(seed_type)
+            el.proxy.set(s)  # type: ignore[attr-defined]
+            self._commit(None, [el])
+
+    # -- exact environment queries --------------------------------------------------------
+    def element_distance(self, p: np.ndarray, ignore: set[int], reach: float) -> float:
+        idx = self.placed.near(p[0], p[1], reach)
+        if ignore:
+            idx = idx[~np.isin(self.placed.owner[idx], list(ignore))]
+        if len(idx) == 0:
+            return math.inf
+        return float(self.placed.distances(idx, p[0], p[1]).min())
+
+    def intersects(self, proxies: Sequence[Proxy], ignore: set[int]) -> bool:
+        pl = self.placed
+        tol = self.tol
+        for pr in proxies:
+            if not pr.is_set:
+                raise InputError(f"intersects: {pr.kind} proxy was not set")
+            cx, cy, r = pr.bounding_circle()
+            idx = pl.near(cx, cy, r + tol)
+            if ignore and len(idx):
+                idx = idx[~np.isin(pl.owner[idx], list(ignore))]
+            if len(idx) == 0:
+                continue
+            rnd = pl.round[idx]
+            if isinstance(pr, (Circle, Point)):
+                ci = idx[rnd]
+                if len(ci):
+                    d = np.hypot(pl.bx[ci] - cx, pl.by[ci] - cy) - pl.br[ci] - r
+                    if np.any(d < -tol):
+                        return True
+                oi = idx[~rnd]
+                if len(oi):
+                    geoms = np.asarray([pl.proxies[i].geometry for i in oi], dtype=object)
+                    if np.any(shapely.distance(geoms, shapely.Point(cx, cy)) < r - tol):
+                        return True
+            else:
+                g = pr.geometry
+                ci = idx[rnd]
+                if len(ci):
+                    d = shapely.distance(g, shapely.points(np.c_[pl.bx[ci], pl.by[ci]]))
+                    if np.any(d < pl.br[ci] - tol):
+                        return True
+                oi = idx[~rnd]
+                if len(oi):
+                    geoms = np.asarray([pl.proxies[i].geometry for i in oi], dtype=object)
+                    if np.any(shapely.intersects(g, geoms)):
+                        return True
+        return False
+
+    def inside(self, proxies: Sequence[Proxy]) -> bool:
+        for pr in proxies:
+            if not pr.is_set:
+                raise InputError(f"inside: {pr.kind} proxy was not set")
+            if isinstance(pr, (Circle, Point)):
+                c = pr.center
+                if not self.region.contains(c[None])[0]:  # type: ignore[index]
+                    return False
+                r = pr.radius if isinstance(pr, Circle) else 0.0
+                if r > 0 and float(shapely.distance(self.region.boundary, shapely.Point(c))) < r - self.tol:
+                    return False
+            elif not shapely.covers(self.region_cover, pr.geometry):
+                return False
+        return True
+
+    # -- buffer updates -----------------------------------------------------------------
+    def _cells(self, pr: Proxy) -> np.ndarray:
+        a = (self.rows, self.cols, self.x0, self.y0, self.h)
+        if isinstance(pr, Circle):
+            return cover_disc(*a, float(pr.center[0]), float(pr.center[1]), pr.radius, self.pad)  # type: ignore[index]
+        if isinstance(pr, Point):
+            return cover_disc(*a, float(pr.center[0]), float(pr.center[1]), 0.0, self.pad)  # type: ignore[index]
+        pts = np.ascontiguousarray(pr.polyline(), dtype=np.float64)
+        if isinstance(pr, Polygon):
+            ring = np.ascontiguousarray(np.vstack([pts, pts[:1]]))
+            return np.concatenate([cover_polygon(*a, pts), cover_polyline(*a, ring, self.pad)])
+        return cover_polyline(*a, pts, self.pad)
+
+    def _commit(self, parent: Element | None, children: list[Element]) -> None:
+        cells = []
+        for ch in children:
+            ch.parent = parent
+            if parent is not None:
+                parent.children.append(ch)
+            ch.index = len(self.elements)
+            ch.phase = self.state.phase
+            self.elements.append(ch)
+            for pr in ch.proxies:
+                self.placed.add(pr, ch.index)
+                cells.append(self._cells(pr))
+        if not cells:
+            return
+        c = np.unique(np.concatenate(cells))
+        if len(c) == 0:
+            return
+        self.covered.flat[c] |= 2
+        w = (self._ring, self._inq)
+        lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self.dist_all, 0.0, False, *w)
+        lower_wave(self.dist_el, self.near_el, self.skip, c, self.dirty, _BLOCK, self.dist_all, self.adj_tol + 1.0, True, *w)
+
+    # -- exclude list ---------------------------------------------------------------------
+    def _block_centres(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        idx = self.best_idx
+        valid = idx >= 0
+        i, j = np.divmod(np.where(valid, idx, 0), self.cols)
+        return valid, self.x0 + (j + 0.5) * self.h, self.y0 + (i + 0.5) * self.h
+
+    def add_exclude(self, p: np.ndarray) -> None:
+        if self.n_ex == len(self.ex):
+            self.ex = np.vstack([self.ex, np.empty_like(self.ex)])
+        self.ex[self.n_ex] = p
+        self.n_ex += 1
+        valid, cx, cy = self._block_centres()
+        r = self.best_val * self.h
+        self.dirty |= valid & ((cx - p[0]) ** 2 + (cy - p[1]) ** 2 < r * r)
+
+    def clear_exclude_near(self, p: np.ndarray, eps: float) -> None:
+        if self.n_ex == 0:
+            return
+        pts = self.ex[: self.n_ex]
+        gone = np.hypot(pts[:, 0] - p[0], pts[:, 1] - p[1]) <= eps
+        if not gone.any():
+            return
+        removed = pts[gone].copy()
+        keep = pts[~gone].copy()
+        self.n_ex = len(keep)
+        self.ex[: self.n_ex] = keep
+        # circles that contained a removed point may be eligible again: they lie within
+        # the largest circle radius of it
+        reach = float(self.dist_all[np.isfinite(self.dist_all)].max()) * self.h + 2 * self.h
+        bs = _BLOCK * self.h
+        br, bc = self.dirty.shape
+        bx0 = self.x0 + np.arange(bc) * bs
+        by0 = self.y0 + np.arange(br) * bs
+        for q in removed:
+            dx = np.maximum(0, np.maximum(bx0 - q[0], q[0] - (bx0 + bs)))
+            dy = np.maximum(0, np.maximum(by0 - q[1], q[1] - (by0 + bs)))
+            self.dirty |= (dy[:, None] ** 2 + dx[None, :] ** 2) <= reach * reach
+
+    def clear_exclude_all(self) -> None:
+        self.n_ex = 0
+        self.skip[:] = False
+        self.dirty[:] = True
+
+    def _measure(self, c: np.ndarray, reach: float) -> tuple[float, float, float, np.ndarray, np.ndarray]:
+        """Exact radius of the empty circle at ``c``: (rho, d_boundary, d_element, idx, dists)."""
+        d_b = float(shapely.distance(self.region.boundary, shapely.Point(c)))
+        idx = self.placed.near(c[0], c[1], reach)
+        dists = self.placed.distances(idx, c[0], c[1]) if len(idx) else np.empty(0)
+        d_e = float(dists.min()) if len(dists) else math.inf
+        return min(d_b, d_e), d_b, d_e, idx, dists
+
+    def _climb(self, c: np.ndarray, rho: float, reach: float, target: float) -> tuple[np.ndarray, float]:
+        """Pattern search for the exact centre of the largest empty circle near ``c``."""
+        pl = self.placed
+        idx = pl.near(c[0], c[1], reach)
+        rnd = pl.round[idx]
+        circ = np.c_[pl.bx[idx[rnd]], pl.by[idx[rnd]], pl.br[idx[rnd]]]
+        segs = [pl.segments(k) for k in idx[~rnd]]
+        b = self.boundary_segs
+        lo = np.minimum(b[:, :2], b[:, 2:])
+        hi = np.maximum(b[:, :2], b[:, 2:])
+        gap = np.maximum(np.maximum(lo - c, c - hi), 0)
+        segs.append(b[np.hypot(gap[:, 0], gap[:, 1]) <= reach])
+        allsegs = np.ascontiguousarray(np.vstack(segs))
+        x, y, v = climb(float(c[0]), float(c[1]), np.ascontiguousarray(circ), allsegs, 0.5 * self.h, 0.02 * self.h, target)
+        if v > rho and self.region.contains(np.array([[x, y]]))[0]:
+            return np.array([x, y]), float(v)
+        return c, rho
+
+    # -- main loop (§4.1) -----------------------------------------------------------------
+    def _phase_threshold(self, k: int) -> float:
+        phases = self.pattern.phases
+        if not phases or k >= len(phases) - 1:
+            return self.min_radius
+        mr = phases[k].min_radius
+        return self.min_radius if mr is None else max(mr, self.min_radius)
+
+    def run(self) -> None:
+        h = self.h
+        phase_k = 0
+        threshold = self._phase_threshold(0)
+        # Covered cells lie within sqrt(2)/2 cells of a proxy and the candidate centre
+        # within sqrt(2)/2 cells of the exact medial point: the raster radius may fall
+        # short of the exact one by up to about 1.5 cells.
+        slack = 1.5 * h
+        largest = 0.0
+        while True:
+            if self.max_elements is not None and len(self.elements) >= self.max_elements:
+                break
+            self.rep.tick(len(self.elements), message=f"{len(self.elements)} elements")
+            scan_blocks(
+                self.dist_all, self.dist_el, self.covered, self.skip, self.dirty, self.best_val, self.best_idx,
+                _BLOCK, self.adj_tol, self.ex[:, 0].copy(), self.ex[:, 1].copy(), self.n_ex, self.x0, self.y0, h,
+            )  # fmt: skip
+            k = int(np.argmax(self.best_val))
+            v = float(self.best_val.flat[k])
+            if v < 0 or v * h + slack < threshold:
+                if self.pattern.phases and phase_k < len(self.pattern.phases) - 1:
+                    phase_k += 1
+                    self.state.phase = self.pattern.phases[phase_k].name
+                    threshold = self._phase_threshold(phase_k)
+                    self.clear_exclude_all()
+                    continue
+                largest = max(0.0, v * h) if v >= 0 else 0.0
+                break
+            cell = int(self.best_idx.flat[k])
+            i, j = divmod(cell, self.cols)
+            c = np.array([self.x0 + (j + 0.5) * h, self.y0 + (i + 0.5) * h])
+            # -- exact radius of C, and whether an element (not the boundary) stopped it
+            reach = self.dist_el[i, j] * h + 4 * h + max(2 * h, 0.25 * (self.dist_all[i, j] * h + h))
+            rho, d_b, d_e, idx, dists = self._measure(c, reach)
+            if threshold - h <= rho < threshold and d_e <= d_b + h:
+                # The raster circle is centred on a cell; the exact medial point lies within
+                # about a cell of it (the clearance is 1-Lipschitz, hence the gate above), so
+                # climb to it before giving the circle up.
+                c, rho = self._climb(c, rho, reach + 2 * h, threshold)
+                rho, d_b, d_e, idx, dists = self._measure(c, reach + 2 * h)
+            if d_e > d_b + h or rho < threshold:
+                # §4.1: a circle stopped by the boundary before it reaches an element is
+                # discarded; so is one that is too small once measured exactly.
+                self.skip[i, j] = True
+                self.dirty[i // _BLOCK, j // _BLOCK] = True
+                self.stats["rejected"] += 1
+                continue
+            self.stats["iterations"] += 1
+            goal = Goal(c, rho)
+            delta = self.delta if self.delta is not None else max(2 * h, 0.1 * rho)
+            owners = self.placed.owner[idx]
+            order: dict[int, float] = {}
+            for o, dd in zip(owners.tolist(), dists.tolist()):
+                if dd - rho <= delta and (o not in order or dd < order[o]):
+                    order[o] = dd
+            cand = sorted(order, key=lambda o: (order[o], o))
+            success = self._try(goal, cand)
+            if success:
+                self.stats["successes"] += 1
+                eps = self.epsilon if self.epsilon is not None else 2 * rho
+                self.clear_exclude_near(c, eps)
+            else:
+                self.stats["failures"] += 1
+                self.add_exclude(c)
+        self.stats["largest_circle_raster"] = largest
+        self.stats["phase"] = self.state.phase
+
+    def _try(self, goal: Goal, candidates: list[int]) -> bool:
+        types = self.pattern.types
+        for o in candidates:
+            parent = self.elements[o]
+            if parent.sterile:
+                continue
+            for rule in self.rules_by_parent.get(parent.type, ()):
+                if rule.phase is not None and rule.phase != self.state.phase:
+                    continue  # state precondition (§5): the rule fails at once
+                if rule.when is not None and not rule.when(self.state):
+                    continue
+                children = [Element(types[t]) for t in rule.children]
+                ctx = RuleContext(self, goal, parent)
+                result = rule.body(ctx, parent, *children)
+                if not isinstance(result, (bool, np.bool_)):
+                    raise InputError(f"rule {rule.name!r} returned {result!r}; return SUCCESS or FAILURE")
+                if not result:
+                    continue
+                new = children + ctx.dynamic
+                for ch in new:
+                    for k, pr in enumerate(ch.proxies):
+                        if not pr.is_set:
+                            raise InputError(f"rule {rule.name!r}: proxy {k} ({pr.kind}) of child {ch.type!r} was not set")
+                # Not in the paper: the framework keeps every element inside the panel
+                # (a rule that places a child across the boundary fails).
+                if new and not self.inside([pr for ch in new for pr in ch.proxies]):
+                    self.stats["outside"] += 1
+                    continue
+                self._commit(parent, new)
+                if new:
+                    return True
+        return False
+
+
+def grow_elements(
+    pattern: Pattern | str,
+    region: Region,
+    *,
+    seeds: Sequence[Sequence[float]] | np.ndarray | None = None,
+    rng: int | np.random.Generator | None = None,
+    resolution: int | None = None,
+    min_radius: float | None = None,
+    delta: float | None = None,
+    epsilon: float | None = None,
+    max_elements: int | None = None,
+    progress: Callable[[int, int | None, str], None] | None = None,
+    should_cancel: Callable[[], bool] | None = None,
+) -> Ornament:
+    """Grow a pattern in a region; returns the elements and their proxies (no rendering).
+
+    See :func:`strew.ornament.grow_ornament` for the parameters.
+    """
+    import time
+
+    pat = load_pattern(pattern)
+    if not isinstance(region, Region):
+        raise InputError(f"region: expected a Region, got {type(region).__name__}")
+    if seeds is None or len(seeds) == 0:
+        pts = default_seed(region)
+    else:
+        pts = np.asarray(seeds, dtype=float).reshape(-1, 2)
+        if not np.all(np.isfinite(pts)):
+            raise InputError("seed points: NaN or inf coordinate")
+        outside = ~region.contains(pts)
+        if outside.any():
+            x, y = pts[np.flatnonzero(outside)[0]]
+            raise InputError(f"--seed-point {x:g},{y:g} lies outside the region")
+    mr = pat.min_radius if min_radius is None else float(min_radius)
+    if not (math.isfinite(mr) and mr > 0):
+        raise InputError(f"min_radius: must be positive, got {min_radius!r}")
+    for name, val in (("delta", delta), ("epsilon", epsilon)):
+        if val is not None and not (math.isfinite(val) and val >= 0):
+            raise InputError(f"{name}: must be a finite number >= 0, got {val!r}")
+    if max_elements is not None and max_elements < 0:
+        raise InputError(f"max_elements: must be >= 0, got {max_elements!r}")
+    rep = Reporter(progress, should_cancel, message="growing")
+    t0 = time.perf_counter()
+    g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep)
+    g.run()
+    rep.done(len(g.elements))
+    stats = dict(g.stats)
+    stats["seconds"] = time.perf_counter() - t0
+    stats["resolution"] = g.resolution
+    stats["cell"] = g.h
+    stats["exclude_list"] = g.n_ex
+    params = dict(
+        pattern=pat.name,
+        seeds=pts.tolist(),
+        resolution=g.resolution,
+        min_radius=mr,
+        delta=delta,
+        epsilon=epsilon,
+        max_elements=max_elements,
+    )
+    return Ornament(pat, region, g.elements, pts, stats, params)

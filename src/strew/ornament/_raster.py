@@ -1,0 +1,428 @@
+"""Raster buffer of the growth framework (Wong et al. 1998, §4.1), numba kernels.
+
+The framework keeps a low-resolution buffer into which the proxies of placed elements
+and the boundary of the region R are rendered, and a distance field over it whose
+local maxima (the medial axis) are the centres of the candidate empty circles.
+
+Grid convention: cell ``(i, j)`` has centre ``(x0 + (j + 0.5) h, y0 + (i + 0.5) h)``.
+Distances in the fields are in cells. Two fields are kept:
+
+``dist_all``
+    distance to the nearest covered cell of any kind (boundary or element): the radius
+    at which a test circle centred on the cell stops inflating;
+``dist_el``
+    distance to the nearest element cell: whether that circle was stopped by an element
+    (kept) or by the boundary (discarded).
+
+A cell is *covered* by a proxy when its centre lies within ``h * sqrt(2) / 2`` of the
+proxy, so that every point of the proxy lies in a covered cell; raster distances are
+then within about one cell of the exact ones, which the framework computes afterwards.
+
+§4.1 updates the medial axis transform incrementally after each placement; here the
+update is a "lower wave" (dynamic brushfire): starting from the newly covered cells, a
+cell's distance is lowered, and the wave spreads, only where the new element is nearer
+than the old nearest obstacle, so the work is proportional to the cells that change.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+__all__ = [
+    "cover_disc",
+    "cover_polyline",
+    "cover_polygon",
+    "lower_wave",
+    "scan_blocks",
+]
+
+_NB = dict(cache=True, nogil=True)
+
+
+@numba.njit(**_NB)
+def cover_disc(rows, cols, x0, y0, h, cx, cy, r, pad):
+    """Flat indices of cells whose centre lies within ``r + pad`` of ``(cx, cy)``."""
+    rr = r + pad
+    j0 = max(0, int(np.floor((cx - rr - x0) / h - 0.5)))
+    j1 = min(cols - 1, int(np.ceil((cx + rr - x0) / h - 0.5)))
+    i0 = max(0, int(np.floor((cy - rr - y0) / h - 0.5)))
+    i1 = min(rows - 1, int(np.ceil((cy + rr - y0) / h - 0.5)))
+    n = max(0, (i1 - i0 + 1)) * max(0, (j1 - j0 + 1))
+    out = np.empty(n, np.int64)
+    k = 0
+    r2 = rr * rr
+    for i in range(i0, i1 + 1):
+        py = y0 + (i + 0.5) * h - cy
+        for j in range(j0, j1 + 1):
+            px = x0 + (j + 0.5) * h - cx
+            if px * px + py * py <= r2:
+                out[k] = i * cols + j
+                k += 1
+    return out[:k]
+
+
+@numba.njit(**_NB)
+def _seg_dist2(px, py, ax, ay, bx, by):
+    dx = bx - ax
+    dy = by - ay
+    ll = dx * dx + dy * dy
+    t = 0.0
+    if ll > 0:
+        t = ((px - ax) * dx + (py - ay) * dy) / ll
+        if t < 0:
+            t = 0.0
+        elif t > 1:
+            t = 1.0
+    qx = ax + t * dx - px
+    qy = ay + t * dy - py
+    return qx * qx + qy * qy
+
+
+@numba.njit(**_NB)
+def cover_polyline(rows, cols, x0, y0, h, pts, pad):
+    """Flat indices (may repeat) of cells whose centre lies within ``pad`` of the polyline.
+
+    ``pts`` is ``(n, 2)``; consecutive points are joined.
+    """
+    total = 0
+    n = pts.shape[0]
+    out = np.empty(64, np.int64)
+    p2 = pad * pad
+    for s in range(max(1, n - 1)):
+        ax, ay = pts[s, 0], pts[s, 1]
+        if n > 1:
+            bx, by = pts[s + 1, 0], pts[s + 1, 1]
+        else:
+            bx, by = ax, ay
+        j0 = max(0, int(np.floor((min(ax, bx) - pad - x0) / h - 0.5)))
+        j1 = min(cols - 1, int(np.ceil((max(ax, bx) + pad - x0) / h - 0.5)))
+        i0 = max(0, int(np.floor((min(ay, by) - pad - y0) / h - 0.5)))
+        i1 = min(rows - 1, int(np.ceil((max(ay, by) + pad - y0) / h - 0.5)))
+        for i in range(i0, i1 + 1):
+            py = y0 + (i + 0.5) * h
+            for j in range(j0, j1 + 1):
+                px = x0 + (j + 0.5) * h
+                if _seg_dist2(px, py, ax, ay, bx, by) <= p2:
+                    if total == out.shape[0]:
+                        bigger = np.empty(2 * total, np.int64)
+                        bigger[:total] = out
+                        out = bigger
+                    out[total] = i * cols + j
+                    total += 1
+    return out[:total]
+
+
+@numba.njit(**_NB)
+def cover_polygon(rows, cols, x0, y0, h, pts):
+    """Flat indices of cells whose centre lies inside the polygon ``pts`` (n, 2) (even-odd)."""
+    n = pts.shape[0]
+    xmin, xmax = pts[:, 0].min(), pts[:, 0].max()
+    ymin, ymax = pts[:, 1].min(), pts[:, 1].max()
+    j0 = max(0, int(np.floor((xmin - x0) / h - 0.5)))
+    j1 = min(cols - 1, int(np.ceil((xmax - x0) / h - 0.5)))
+    i0 = max(0, int(np.floor((ymin - y0) / h - 0.5)))
+    i1 = min(rows - 1, int(np.ceil((ymax - y0) / h - 0.5)))
+    out = np.empty(max(0, i1 - i0 + 1) * max(0, j1 - j0 + 1), np.int64)
+    k = 0
+    for i in range(i0, i1 + 1):
+        py = y0 + (i + 0.5) * h
+        for j in range(j0, j1 + 1):
+            px = x0 + (j + 0.5) * h
+            inside = False
+            for a in range(n):
+                b = (a + 1) % n
+                ya, yb = pts[a, 1], pts[b, 1]
+                if (ya > py) != (yb > py):
+                    xa, xb = pts[a, 0], pts[b, 0]
+                    if px < xa + (py - ya) * (xb - xa) / (yb - ya):
+                        inside = not inside
+            if inside:
+                out[k] = i * cols + j
+                k += 1
+    return out[:k]
+
+
+@numba.njit(**_NB)
+def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, ring, inq):
+    """Lower the distance field from new obstacle cells; mark changed blocks dirty.
+
+    Parameters
+    ----------
+    dist : (rows, cols) float64
+        Distance in cells to the nearest obstacle cell; lowered in place.
+    near : (rows, cols) int64
+        Flat index of that nearest obstacle cell; updated in place.
+    skip : (rows, cols) bool
+        Cells rejected as candidates; cleared in place where the distance changes.
+    sources : (k,) int64
+        Flat indices of the newly covered cells.
+    dirty : (brows, bcols) bool
+        Blocks whose candidate circle must be recomputed; set in place (the blocks of
+        changed cells and their neighbours, since a change alters the neighbours'
+        local-maximum status).
+    block : int
+        Block side in cells.
+    cap : (rows, cols) float64
+        With ``use_cap``, the wave does not enter cells where the new distance exceeds
+        ``cap + cap_tol``. The element-distance field is capped by the all-obstacle field:
+        the framework only asks whether ``dist_el <= dist_all + tol``, and a cell beyond
+        the cap keeps the right answer (False) until ``dist_all`` drops there, which only
+        a nearer new element does, whose own wave then updates the cell.
+    cap_tol : float
+    use_cap : bool
+    ring : (rows * cols,) int64
+        Work space for the FIFO (each cell is queued at most once at a time).
+    inq : (rows * cols,) bool
+        Work space, all False on entry and on exit.
+
+    Returns
+    -------
+    int
+        Number of cell updates.
+    """
+    rows, cols = dist.shape
+    brows, bcols = dirty.shape
+    size = ring.shape[0]
+    touched = np.zeros((brows, bcols), np.bool_)
+    head = 0
+    count = 0
+    n = 0
+    for s in sources:
+        si = s // cols
+        sj = s - si * cols
+        if dist[si, sj] > 0.0:
+            dist[si, sj] = 0.0
+            near[si, sj] = s
+            skip[si, sj] = False
+            touched[si // block, sj // block] = True
+            count += 1
+            if not inq[s]:
+                inq[s] = True
+                ring[(head + n) % size] = s
+                n += 1
+    # A cell is (re)queued only when its distance strictly drops.
+    while n > 0:
+        p = ring[head]
+        head += 1
+        if head == size:
+            head = 0
+        n -= 1
+        inq[p] = False
+        pi = p // cols
+        pj = p - pi * cols
+        q = near[pi, pj]
+        qi = q // cols
+        qj = q - qi * cols
+        for di in range(-1, 2):
+            ni = pi + di
+            if ni < 0 or ni >= rows:
+                continue
+            a = ni - qi
+            for dj in range(-1, 2):
+                nj = pj + dj
+                if nj < 0 or nj >= cols:
+                    continue
+                b = nj - qj
+                d = np.sqrt(a * a + b * b)
+                if d < dist[ni, nj] - 1e-9:
+                    if use_cap and d > cap[ni, nj] + cap_tol:
+                        continue
+                    dist[ni, nj] = d
+                    near[ni, nj] = q
+                    skip[ni, nj] = False
+                    touched[ni // block, nj // block] = True
+                    count += 1
+                    c = ni * cols + nj
+                    if not inq[c]:
+                        inq[c] = True
+                        ring[(head + n) % size] = c
+                        n += 1
+    for bi in range(brows):
+        for bj in range(bcols):
+            if touched[bi, bj]:
+                for ui in range(max(0, bi - 1), min(brows, bi + 2)):
+                    for uj in range(max(0, bj - 1), min(bcols, bj + 2)):
+                        dirty[ui, uj] = True
+    return count
+
+
+@numba.njit(**_NB)
+def scan_blocks(dist_all, dist_el, covered, skip, dirty, best_val, best_idx, block, adj_tol, ex_x, ex_y, n_ex, x0, y0, h):
+    """Recompute the best candidate circle of every dirty block (§4.1 FindEmptyCircle).
+
+    A candidate centre is a free cell whose ``dist_all`` is at least that of its eight
+    neighbours (a medial-axis point of the distance transform), whose inflation stopped
+    at an element rather than at the boundary (``dist_el - dist_all <= adj_tol``), that
+    is not marked ``skip`` and whose circle contains no point of the exclude list
+    (``ex_x[:n_ex], ex_y[:n_ex]``, world coordinates). Each block keeps its largest one in
+    ``best_val`` (radius in cells, -1 when none) and ``best_idx`` (flat cell index).
+    """
+    rows, cols = dist_all.shape
+    brows, bcols = dirty.shape
+    for bi in range(brows):
+        for bj in range(bcols):
+            if not dirty[bi, bj]:
+                continue
+            dirty[bi, bj] = False
+            bv = -1.0
+            bidx = -1
+            for i in range(bi * block, min(rows, (bi + 1) * block)):
+                for j in range(bj * block, min(cols, (bj + 1) * block)):
+                    v = dist_all[i, j]
+                    if v <= bv or covered[i, j] != 0 or skip[i, j]:
+                        continue
+                    if dist_el[i, j] - v > adj_tol:
+                        continue
+                    ismax = True
+                    for di in range(-1, 2):
+                        ni = i + di
+                        if ni < 0 or ni >= rows:
+                            ismax = False
+                            break
+                        for dj in range(-1, 2):
+                            nj = j + dj
+                            if nj < 0 or nj >= cols:
+                                ismax = False
+                                break
+                            if dist_all[ni, nj] > v:
+                                ismax = False
+                                break
+                        if not ismax:
+                            break
+                    if not ismax:
+                        continue
+                    cx = x0 + (j + 0.5) * h
+                    cy = y0 + (i + 0.5) * h
+                    rw = v * h
+                    r2 = rw * rw
+                    excluded = False
+                    for e in range(n_ex):
+                        dx = ex_x[e] - cx
+                        dy = ex_y[e] - cy
+                        if dx * dx + dy * dy < r2:
+                            excluded = True
+                            break
+                    if excluded:
+                        continue
+                    bv = v
+                    bidx = i * cols + j
+            best_val[bi, bj] = bv
+            best_idx[bi, bj] = bidx
+
+
+@numba.njit(**_NB)
+def _clearance(px, py, circ, segs):
+    d = np.inf
+    for k in range(circ.shape[0]):
+        v = np.sqrt((px - circ[k, 0]) ** 2 + (py - circ[k, 1]) ** 2) - circ[k, 2]
+        if v < d:
+            d = v
+    for k in range(segs.shape[0]):
+        v = np.sqrt(_seg_dist2(px, py, segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3]))
+        if v < d:
+            d = v
+    return d
+
+
+@numba.njit(**_NB)
+def _ascent_dir(px, py, circ, segs, dmin, band):
+    """Direction increasing every obstacle distance within ``band`` of the minimum."""
+    gx = 0.0
+    gy = 0.0
+    ga = np.empty((circ.shape[0] + segs.shape[0], 2))
+    na = 0
+    for k in range(circ.shape[0]):
+        ux = px - circ[k, 0]
+        uy = py - circ[k, 1]
+        ln = np.sqrt(ux * ux + uy * uy)
+        if ln - circ[k, 2] <= dmin + band and ln > 0:
+            ga[na, 0] = ux / ln
+            ga[na, 1] = uy / ln
+            na += 1
+    for k in range(segs.shape[0]):
+        ax, ay, bx, by = segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3]
+        dx = bx - ax
+        dy = by - ay
+        ll = dx * dx + dy * dy
+        t = 0.0
+        if ll > 0:
+            t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / ll))
+        ux = px - (ax + t * dx)
+        uy = py - (ay + t * dy)
+        ln = np.sqrt(ux * ux + uy * uy)
+        if ln <= dmin + band and ln > 0:
+            ga[na, 0] = ux / ln
+            ga[na, 1] = uy / ln
+            na += 1
+    for k in range(na):
+        gx += ga[k, 0]
+        gy += ga[k, 1]
+    ln = np.sqrt(gx * gx + gy * gy)
+    if na == 0 or ln < 1e-12:
+        return 0.0, 0.0
+    gx /= ln
+    gy /= ln
+    for k in range(na):
+        if ga[k, 0] * gx + ga[k, 1] * gy <= 1e-9:
+            return 0.0, 0.0
+    return gx, gy
+
+
+@numba.njit(**_NB)
+def climb(cx, cy, circ, segs, step, min_step, target):
+    """Local search for the centre of the largest empty circle near ``(cx, cy)``.
+
+    Ascends the clearance (distance to the nearest obstacle) along the direction that
+    increases the distance to every nearly-nearest obstacle, then polishes with a compass
+    search; both halve their step on failure.
+
+    Parameters
+    ----------
+    circ : (k, 3) float64
+        Nearby circles ``(x, y, r)`` (points have r = 0).
+    segs : (m, 4) float64
+        Nearby line segments ``(x0, y0, x1, y1)``: outlines of other proxies and the
+        region boundary.
+    step, min_step : float
+        First and last step length.
+    target : float
+        Stop as soon as the clearance reaches it.
+
+    Returns
+    -------
+    (x, y, clearance)
+    """
+    best = _clearance(cx, cy, circ, segs)
+    s = step
+    while s > min_step and best < target:
+        ux, uy = _ascent_dir(cx, cy, circ, segs, best, s)
+        if ux == 0.0 and uy == 0.0:
+            s *= 0.5
+            continue
+        v = _clearance(cx + s * ux, cy + s * uy, circ, segs)
+        if v > best:
+            cx += s * ux
+            cy += s * uy
+            best = v
+        else:
+            s *= 0.5
+    s2 = np.sqrt(0.5)
+    dx = np.array([1.0, -1.0, 0.0, 0.0, s2, -s2, s2, -s2])
+    dy = np.array([0.0, 0.0, 1.0, -1.0, s2, -s2, -s2, s2])
+    s = step * 0.25
+    while s > min_step and best < target:
+        bk = -1
+        bv = best
+        for k in range(8):
+            v = _clearance(cx + s * dx[k], cy + s * dy[k], circ, segs)
+            if v > bv:
+                bv = v
+                bk = k
+        if bk >= 0:
+            cx += s * dx[bk]
+            cy += s * dy[bk]
+            best = bv
+        else:
+            s *= 0.5
+    return cx, cy, best

@@ -1,0 +1,351 @@
+"""Rendering the grown geometry (Wong et al. 1998, §4, Fig. 15e-g, Fig. 17).
+
+The paper generates an ornament in two steps: first the geometry (elements and their
+proxies), then a rendering of it "in any number of styles". The default rendering draws
+every proxy in outline (§4). A pattern may attach a render function to an element type
+for a named style; it returns :class:`Mark` objects (SVG paths with fill and stroke).
+:func:`tapered_stroke` and :func:`skeletal_stroke` give strokes whose width varies along a
+curve, a simple form of the skeletal strokes [Hsu and Lee 1994] the paper renders with.
+
+Generic styles, available for every pattern:
+
+``outline``
+    every proxy in outline (the paper's default rendering);
+``tapered``
+    curves as filled strokes thinning from start to end; circles and polygons filled;
+``filigree``
+    curves thickening from start to end (the reversed width variation of Fig. 13), closed
+    proxies in outline.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from .._errors import InputError
+from ..arrangement import Arrangement
+from ..shape import Path, Shape
+from ._pattern import Element
+from ._proxies import Arc, Bezier, Circle, Point, Polygon, Proxy, Segment
+
+if TYPE_CHECKING:
+    from ._engine import Ornament
+
+__all__ = [
+    "Mark",
+    "RenderContext",
+    "GENERIC_STYLES",
+    "tapered_stroke",
+    "skeletal_stroke",
+    "render_ornament",
+    "available_styles",
+]
+
+INK = "#2b2f36"
+
+
+@dataclass
+class Mark:
+    """One drawn path of an element: polylines in world coordinates with fill and stroke.
+
+    Parameters
+    ----------
+    paths : sequence of (n, 2) float
+        Polylines in document units.
+    closed : bool
+        Whether the paths are closed (filled under the even-odd rule when ``fill`` is set).
+    fill, stroke : str
+        SVG paints (``"none"`` for none).
+    stroke_width : float
+        In document units.
+    """
+
+    paths: Sequence[np.ndarray]
+    closed: bool = False
+    fill: str = "none"
+    stroke: str = INK
+    stroke_width: float = 0.25
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    @classmethod
+    def circle(cls, center: Any, radius: float, segments: int = 48, **kwargs: Any) -> Mark:
+        """A circle as a closed polyline."""
+        t = np.linspace(0, 2 * np.pi, segments, endpoint=False)
+        c = np.asarray(center, dtype=float)
+        return cls([c + radius * np.c_[np.cos(t), np.sin(t)]], closed=True, **kwargs)
+
+    @classmethod
+    def polygon(cls, points: Any, **kwargs: Any) -> Mark:
+        """A closed polygon, filled by default."""
+        kwargs.setdefault("fill", INK)
+        kwargs.setdefault("stroke", "none")
+        return cls([np.asarray(points, dtype=float)], closed=True, **kwargs)
+
+
+@dataclass
+class RenderContext:
+    """What a render function sees besides its element.
+
+    Attributes
+    ----------
+    ornament : Ornament
+    style : str
+    line_width : float
+        Base line width in document units.
+    """
+
+    ornament: Ornament
+    style: str
+    line_width: float
+    _counts: dict[str, int] = field(default_factory=dict)
+
+    def count(self, type_name: str) -> int:
+        """Number of placed elements of a type."""
+        if not self._counts:
+            for e in self.ornament.elements:
+                self._counts[e.type] = self._counts.get(e.type, 0) + 1
+        return self._counts.get(type_name, 0)
+
+
+def _arclength(points: np.ndarray) -> np.ndarray:
+    seg = np.hypot(*np.diff(points, axis=0).T)
+    s = np.r_[0.0, np.cumsum(seg)]
+    return s / s[-1] if s[-1] > 0 else np.linspace(0, 1, len(points))
+
+
+def _normals(points: np.ndarray) -> np.ndarray:
+    d = np.gradient(points, axis=0) if len(points) > 2 else np.repeat(points[-1:] - points[:1], len(points), axis=0)
+    n = np.c_[-d[:, 1], d[:, 0]]
+    ln = np.hypot(n[:, 0], n[:, 1])
+    ln[ln == 0] = 1.0
+    return n / ln[:, None]
+
+
+def tapered_stroke(points: np.ndarray, widths: Any) -> np.ndarray:
+    """Outline of a stroke whose width varies along a polyline.
+
+    Parameters
+    ----------
+    points : (n, 2) float
+        The centre line, n >= 2.
+    widths : float, (w0, w1) or (n,) float, or callable
+        Width at every point; a pair interpolates linearly by arc length from start to
+        end; a callable maps arc-length fraction t in [0, 1] to width.
+
+    Returns
+    -------
+    (2n, 2) float
+        Closed outline: one side forward, the other back.
+
+    Examples
+    --------
+    >>> out = tapered_stroke(np.array([[0.0, 0.0], [10.0, 0.0]]), (2.0, 0.0))
+    >>> out.shape, float(out[:, 1].max())
+    ((4, 2), 1.0)
+    """
+    pts = np.asarray(points, dtype=float)
+    if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) < 2:
+        raise InputError("tapered_stroke: points must have shape (n, 2) with n >= 2")
+    t = _arclength(pts)
+    if callable(widths):
+        w = np.asarray([float(widths(x)) for x in t])
+    else:
+        w = np.asarray(widths, dtype=float)
+        if w.ndim == 0:
+            w = np.full(len(pts), float(w))
+        elif w.shape == (2,) and len(pts) != 2:
+            w = w[0] + (w[1] - w[0]) * t
+        elif w.shape != (len(pts),):
+            raise InputError(f"tapered_stroke: widths must be a number, a pair or ({len(pts)},), got {w.shape}")
+    nrm = _normals(pts) * (np.maximum(w, 0) / 2)[:, None]
+    return np.vstack([pts + nrm, (pts - nrm)[::-1]])
+
+
+def skeletal_stroke(points: np.ndarray, art: np.ndarray, width: float) -> np.ndarray:
+    """Bend a piece of flat art along a path (a simple skeletal stroke, Hsu and Lee 1994).
+
+    Parameters
+    ----------
+    points : (n, 2) float
+        The path (skeleton).
+    art : (m, 2) float
+        The art in the stroke's frame: ``u`` in [0, 1] along the path, ``v`` in [-1, 1]
+        across it (v = +-1 is the stroke's edge).
+    width : float
+        Width of the stroke (distance between v = -1 and v = +1).
+
+    Returns
+    -------
+    (m, 2) float
+        The art in world coordinates.
+    """
+    pts = np.asarray(points, dtype=float)
+    art = np.asarray(art, dtype=float)
+    t = _arclength(pts)
+    nrm = _normals(pts)
+    u = np.clip(art[:, 0], 0, 1)
+    base = np.c_[np.interp(u, t, pts[:, 0]), np.interp(u, t, pts[:, 1])]
+    n = np.c_[np.interp(u, t, nrm[:, 0]), np.interp(u, t, nrm[:, 1])]
+    n /= np.maximum(np.hypot(n[:, 0], n[:, 1]), 1e-12)[:, None]
+    return base + n * (art[:, 1] * width / 2)[:, None]
+
+
+# -- generic styles -------------------------------------------------------------------------
+def _curve_points(pr: Proxy) -> np.ndarray | None:
+    if isinstance(pr, (Segment, Bezier, Arc)):
+        pts = pr.polyline()
+        if isinstance(pr, Segment):
+            pts = np.linspace(pts[0], pts[1], 8)
+        return pts
+    return None
+
+
+def _outline(el: Element, rc: RenderContext) -> list[Mark]:
+    marks = []
+    for pr in el.proxies:
+        if isinstance(pr, Point):
+            continue
+        marks.append(Mark([pr.polyline()], closed=pr.closed, stroke_width=rc.line_width))
+    return marks
+
+
+def _taper(el: Element, rc: RenderContext, reverse: bool) -> list[Mark]:
+    marks = []
+    for pr in el.proxies:
+        if isinstance(pr, Point):
+            continue
+        pts = _curve_points(pr)
+        if pts is None:
+            if reverse:
+                marks.append(Mark([pr.polyline()], closed=True, stroke_width=rc.line_width))
+            else:
+                marks.append(Mark([pr.polyline()], closed=True, fill=INK, stroke="none"))
+            continue
+        length = float(np.hypot(*np.diff(pts, axis=0).T).sum())
+        w = min(4 * rc.line_width, max(1.5 * rc.line_width, 0.06 * length))
+        ws = (0.15 * w, w) if reverse else (w, 0.15 * w)
+        marks.append(Mark.polygon(tapered_stroke(pts, ws)))
+    return marks
+
+
+GENERIC_STYLES: dict[str, Any] = {
+    "outline": lambda el, rc: _outline(el, rc),
+    "tapered": lambda el, rc: _taper(el, rc, False),
+    "filigree": lambda el, rc: _taper(el, rc, True),
+}
+GENERIC_HELP = {
+    "outline": "every proxy in outline (the paper's default rendering)",
+    "tapered": "curves as strokes thinning from start to end, closed proxies filled",
+    "filigree": "curves thickening from start to end, closed proxies in outline",
+}
+
+
+def available_styles(pattern: Any) -> dict[str, str]:
+    """Style names usable with a pattern, with one line of help each."""
+    out = dict(GENERIC_HELP)
+    for s in pattern.styles:
+        out[s] = pattern.style_help.get(s, "defined by the pattern")
+    return out
+
+
+def _key(local: list[np.ndarray], closed: bool, style: dict[str, Any]) -> tuple:
+    return (closed, tuple(np.round(p, 9).tobytes() for p in local), tuple(sorted(style.items())))
+
+
+def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: float | None = None, seeds: bool = False) -> Arrangement:
+    """Draw the grown ornament in a named style.
+
+    Parameters
+    ----------
+    ornament : Ornament
+    style : str
+        A generic style (``outline``, ``tapered``, ``filigree``) or one the pattern
+        defines; types without a function for a pattern style are drawn in outline.
+    line_width : float, optional
+        Base line width (default: a fifth of the pattern's minimum radius).
+    seeds : bool
+        Also draw the seed points (as small circles).
+
+    Returns
+    -------
+    Arrangement
+        One row per mark, with columns ``element`` (placement index), ``type``,
+        ``parent`` (placement index of the parent, -1 for none) and ``phase``. Marks are
+        stored as shapes relative to their bounding-box centre; identical marks share a
+        shape.
+    """
+    pat = ornament.pattern
+    styles = available_styles(pat)
+    if style not in styles:
+        raise InputError(f"--style: unknown style {style!r} for pattern {pat.name!r} (have: {', '.join(styles)})")
+    lw = float(line_width) if line_width is not None else 0.2 * float(ornament.params.get("min_radius", pat.min_radius))
+    rc = RenderContext(ornament, style, lw)
+    shapes: dict[str, Shape] = {}
+    keys: dict[tuple, str] = {}
+    per_type: dict[str, int] = {}
+    kind, xs, ys = [], [], []
+    col_el, col_type, col_parent, col_phase = [], [], [], []
+    for el in ornament.elements:
+        if el.type == "seed":
+            if not seeds:
+                continue
+            marks = [Mark.circle(el.proxy.center, 2 * lw, fill="#c33", stroke="none")]  # type: ignore[attr-defined]
+        else:
+            fn = pat.renderers.get((el.type, style)) or GENERIC_STYLES.get(style) or GENERIC_STYLES["outline"]
+            marks = fn(el, rc)
+        for m in marks:
+            paths = [np.asarray(p, dtype=float) for p in m.paths if len(p)]
+            if not paths:
+                continue
+            allp = np.vstack(paths)
+            if not np.all(np.isfinite(allp)):
+                raise InputError(f"render {pat.name!r}/{style!r}: NaN in a mark of element {el.index} ({el.type})")
+            lo, hi = allp.min(axis=0), allp.max(axis=0)
+            anchor = (lo + hi) / 2
+            local = [p - anchor for p in paths]
+            st = {"fill": m.fill, "stroke": m.stroke, "stroke_width": float(m.stroke_width), **m.extra}
+            key = _key(local, m.closed, st)
+            name = keys.get(key)
+            if name is None:
+                k = per_type.get(el.type, 0)
+                per_type[el.type] = k + 1
+                name = el.type if k == 0 else f"{el.type}-{k}"
+                shapes[name] = Shape(tuple(Path(p, m.closed) for p in local), style=st)
+                keys[key] = name
+            kind.append(name)
+            xs.append(anchor[0])
+            ys.append(anchor[1])
+            col_el.append(el.index)
+            col_type.append(el.type)
+            col_parent.append(el.parent.index if el.parent is not None else -1)
+            col_phase.append(el.phase or "")
+    if not shapes:
+        shapes = {"empty": Shape(())}
+    meta = {
+        "method": "ornament",
+        "ornament": {
+            "pattern": pat.name,
+            "style": style,
+            "elements": sum(1 for e in ornament.elements if e.type != "seed"),
+            **{k: (float(v) if isinstance(v, (np.floating, float)) else v) for k, v in ornament.stats.items()},
+        },
+        "params": {**ornament.params, "style": style},
+    }
+    return Arrangement(
+        shapes,
+        np.asarray(kind, dtype=object) if kind else np.zeros(0, int),
+        np.asarray(xs, dtype=float),
+        np.asarray(ys, dtype=float),
+        columns={
+            "element": np.asarray(col_el, dtype=np.int64),
+            "type": np.asarray(col_type, dtype=object),
+            "parent": np.asarray(col_parent, dtype=np.int64),
+            "phase": np.asarray(col_phase, dtype=object),
+        },
+        region=ornament.region,
+        meta=meta,
+    )

@@ -1,0 +1,5 @@
+"""Built-in rule files: ``dots``, ``flowers``, ``spirals``, ``hierarchy``.
+
+Each module is a plain rule file (it could be passed as a path to ``strew ornament``)
+that assigns ``pattern = Pattern(...)``; read them as examples of how to write one.
+"""
