@@ -87,7 +87,10 @@ _AUTO_ID = re.compile(
 _UNITS = {"": 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0, "pt": 96 / 72, "pc": 16.0}
 _LENGTH = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-z]*)\s*$")
 _MAX_SEGMENT_POINTS = 20000
-_SIGNATURE_TOLERANCE = 0.125  # matching flattens at this fraction of the tolerance
+# Matching flattens each object at this fraction of its own radius: a scale-invariant
+# tolerance samples similar copies at the same curve parameters, so that their vertex sets
+# are similar too and scale and rotation come out exact.
+_SIGNATURE_TOLERANCE = 1e-3
 _IDENTITY = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 _MIRROR = np.array([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 
@@ -520,6 +523,20 @@ class _Doc:
         finish()
         return [(p, c, cv) for p, c, cv in out if np.all(np.isfinite(p))]
 
+    def signature(self, parts: list[_Part], coarse: _Flat) -> _Signature | None:
+        """Similarity invariants of ``parts``, flattened relative to their size (see _SIGNATURE_TOLERANCE)."""
+        if not coarse.paths:
+            return None
+        pts = np.concatenate([p.points for p in coarse.paths])
+        radius = float(np.sqrt(((pts - pts.mean(axis=0)) ** 2).sum(axis=1)).max())
+        if not radius > 0:
+            return None
+        tol = _SIGNATURE_TOLERANCE * radius
+        sig = _signature(self.flatten(parts, _IDENTITY, tol).paths)
+        if sig is not None:
+            sig.tolerance = tol
+        return sig
+
     def path_data(self, parts: list[_Part], frame: np.ndarray) -> str | None:
         """Exact path data of ``parts`` mapped by ``frame``, or None where it cannot be exact.
 
@@ -693,6 +710,7 @@ class _Signature:
     moments: np.ndarray  # (_KMAX + 1,) complex: c_k = integral of (z - centroid)^k
     gyration: float  # radius of gyration
     radius: float  # largest vertex distance from the centroid
+    tolerance: float = 0.0  # the flattening tolerance it was computed at
 
 
 def _edges(geom: shapely.Geometry, is_area: bool) -> tuple[np.ndarray, np.ndarray]:
@@ -770,7 +788,7 @@ def _signature(paths: list[Path]) -> _Signature | None:
     )
 
 
-def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float, float] | None:
+def _match(ref: _Signature, other: _Signature) -> tuple[float, float] | None:
     """Similarity ``other = s R(t) (ref - ref.centroid) + other.centroid``, or None.
 
     The rotation comes from the phase of the first complex moment ``c_k`` (k >= 2) that
@@ -780,12 +798,14 @@ def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float,
     if ref.is_area != other.is_area:
         return None
     s = math.sqrt(other.size / ref.size) if ref.is_area else other.size / ref.size
+    tolerance = max(other.tolerance, s * ref.tolerance)
     if abs(other.radius - s * ref.radius) > 2 * tolerance + 0.02 * other.radius:
         return None
     if abs(other.gyration - s * ref.gyration) > 2 * tolerance + 0.02 * other.gyration:
         return None
     candidates: list[float] = []
     first_wins = False
+    used = 0
     norm_r = ref.size * max(ref.gyration, 1e-300)
     norm_o = other.size * max(other.gyration, 1e-300)
     for k in range(2, _KMAX + 1):
@@ -794,7 +814,8 @@ def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float,
         if mr > 0.02 and mo > 0.02:
             base = (np.angle(other.moments[k]) - np.angle(ref.moments[k])) / k
             candidates.extend(base + 2 * math.pi * j / k for j in range(k))
-            if len(candidates) >= 2:
+            used += 1
+            if used == 2:  # a second order guards against a noisy phase in the first
                 break
     if not candidates:
         # Nearly round: align the farthest vertex, else try no rotation.
@@ -805,7 +826,9 @@ def _match(ref: _Signature, other: _Signature, tolerance: float) -> tuple[float,
         near = np.flatnonzero(np.abs(s * rr - np.hypot(*vo)) <= 2 * tolerance + 0.01 * other.radius)
         candidates = [0.0] + [math.atan2(vo[1], vo[0]) - math.atan2(vr[i, 1], vr[i, 0]) for i in near[:32]]
         first_wins = True  # a round shape: keep rotation 0 when it fits
-    limit = 2 * tolerance + 1e-3 * other.radius
+    # Both outlines lie within ``tolerance`` of the true curves; allow a little more for
+    # the pose estimate and for rounding in the file's numbers.
+    limit = 3 * tolerance + 1e-4 * other.radius
     best: tuple[float, float] | None = None
     best_err = math.inf
     for t in candidates:
@@ -878,7 +901,7 @@ class _Reader:
             bounds = _bounds(flat.paths)
             origin = np.array([(bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2])
         kind = _Kind(self.unique(name), key, parts, origin, mirrored, style=_style(self.doc, parts))
-        kind.signature = _signature(self.doc.flatten(parts, _IDENTITY, self.doc.tolerance * _SIGNATURE_TOLERANCE).paths)
+        kind.signature = self.doc.signature(parts, flat)
         self.kinds.append(kind)
         return kind
 
@@ -953,18 +976,16 @@ class _Reader:
             self.place(self.target_kind(el, False), _IDENTITY, void, el)
             return
         parts = doc.parts(el, m, doc.inherited_props(el)) if not void else _visible_parts(doc, el, m)
-        # Matching compares finer flattenings, so that scale and rotation do not depend on
-        # how coarsely each copy was flattened.
-        flat = doc.flatten(parts, _IDENTITY, doc.tolerance * _SIGNATURE_TOLERANCE)
-        sig = _signature(flat.paths)
-        if sig is None and not flat.paths:
+        flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
+        if not flat.paths:
             return
+        sig = doc.signature(parts, flat)
         key = _key_of(el)
         if sig is not None:
             for kind in self.kinds:
                 if not kind.matchable or kind.signature is None or (key is not None and kind.key != key):
                     continue
-                found = _match(kind.signature, sig, doc.tolerance)
+                found = _match(kind.signature, sig)
                 if found is None:
                     continue
                 t, s = found
