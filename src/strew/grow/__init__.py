@@ -69,7 +69,7 @@ def grow(
     flips: Iterable[tuple[int, int]] = (),
     connectivity: bool = False,
     avoid_overlaps: bool = True,
-    relax_every: int = 8,
+    relax_every: int = 16,
     rng: int | np.random.Generator | None = None,
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,

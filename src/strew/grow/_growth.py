@@ -48,7 +48,7 @@ class GrowParams:
     jitter_rotation: float = 0.0
     jitter_color: float = 0.0
     relax: bool = True
-    relax_every: int = 8
+    relax_every: int = 16
     relax_hops: int = 1
     weights: tuple[float, float, float] = (W1, W2, W3)
     avoid_overlaps: bool = True
@@ -58,15 +58,15 @@ class GrowParams:
 
 def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
     """True when segments pq and ab cross at a point interior to both."""
-
-    def orient(u, v, w) -> float:
-        return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0])
-
-    d1 = orient(a, b, p)
-    d2 = orient(a, b, q)
-    d3 = orient(p, q, a)
-    d4 = orient(p, q, b)
-    return ((d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0)) and ((d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0))
+    ex, ey = b[0] - a[0], b[1] - a[1]
+    d1 = ex * (p[1] - a[1]) - ey * (p[0] - a[0])
+    d2 = ex * (q[1] - a[1]) - ey * (q[0] - a[0])
+    if not ((d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0)):
+        return False
+    fx, fy = q[0] - p[0], q[1] - p[1]
+    d3 = fx * (a[1] - p[1]) - fy * (a[0] - p[0])
+    d4 = fx * (b[1] - p[1]) - fy * (b[0] - p[0])
+    return (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0)
 
 
 def _parse_hex(c: Any) -> tuple[float, float, float] | None:
@@ -148,9 +148,8 @@ class _Grower:
         self.order: list[int] = []  # elements in placement order
         self.cell = max(self.l, 1e-9)
         self.grid: dict[tuple[int, int], list[int]] = {}
-        self.edge_grid: dict[tuple[int, int], list[tuple[int, int]]] = {}
+        self.edge_grid: dict[tuple[int, int], set[tuple[int, int]]] = {}
         self.edges: set[tuple[int, int]] = set()
-        self.max_edge = 0.0
         self.heap: list[tuple[float, int]] = []
         self.deferred: set[int] = set()
         self.origin = (0.0, 0.0)
@@ -240,15 +239,21 @@ class _Grower:
                 self._index_edge(i, j)
 
     # -- edges --------------------------------------------------------------------------
+    def _edge_cells(self, pa: Sequence[float], pb: Sequence[float]) -> list[tuple[int, int]]:
+        h = self.cell
+        x0, x1 = (pa[0], pb[0]) if pa[0] <= pb[0] else (pb[0], pa[0])
+        y0, y1 = (pa[1], pb[1]) if pa[1] <= pb[1] else (pb[1], pa[1])
+        return [
+            (cx, cy)
+            for cx in range(math.floor(x0 / h), math.floor(x1 / h) + 1)
+            for cy in range(math.floor(y0 / h), math.floor(y1 / h) + 1)
+        ]
+
     def _index_edge(self, a: int, b: int) -> None:
+        """Put edge (a, b) in every grid cell its bounding box covers."""
         e = (a, b) if a < b else (b, a)
-        pa, pb = self.pos[a], self.pos[b]
-        L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
-        self.max_edge = max(self.max_edge, L)
-        c = self._cell(0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]))
-        lst = self.edge_grid.setdefault(c, [])
-        if e not in lst:
-            lst.append(e)
+        for c in self._edge_cells(self.pos[a], self.pos[b]):
+            self.edge_grid.setdefault(c, set()).add(e)
 
     def add_edge(self, a: int, b: int) -> None:
         if a == b or b in self.adj[a]:
@@ -265,32 +270,27 @@ class _Grower:
 
     def crosses_edges(self, a: int | None, pa: tuple[float, float], b: int | None, pb: tuple[float, float]) -> bool:
         """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge?"""
-        mx, my = 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1])
-        half = 0.5 * math.hypot(pa[0] - pb[0], pa[1] - pb[1])
-        r = half + 0.5 * self.max_edge + self.cell
-        h = self.cell
-        seen: set[tuple[int, int]] = set()
         pos = self.pos
-        for cx in range(math.floor((mx - r) / h), math.floor((mx + r) / h) + 1):
-            for cy in range(math.floor((my - r) / h), math.floor((my + r) / h) + 1):
-                lst = self.edge_grid.get((cx, cy))
-                if not lst:
+        edges = self.edges
+        seen: set[tuple[int, int]] = set()
+        for c in self._edge_cells(pa, pb):
+            cell = self.edge_grid.get(c)
+            if not cell:
+                continue
+            stale = []
+            for e in cell:
+                if e in seen:
                     continue
-                live = []
-                for e in lst:
-                    if e not in self.edges:
-                        continue
-                    live.append(e)
-                    if e in seen:
-                        continue
-                    seen.add(e)
-                    u, v = e
-                    if u == a or u == b or v == a or v == b:
-                        continue
-                    if _segments_cross(pa, pb, (pos[u, 0], pos[u, 1]), (pos[v, 0], pos[v, 1])):
-                        self.edge_grid[(cx, cy)] = live + [x for x in lst[len(live) :] if x in self.edges]
-                        return True
-                self.edge_grid[(cx, cy)] = live
+                seen.add(e)
+                if e not in edges:
+                    stale.append(e)
+                    continue
+                u, v = e
+                if u == a or u == b or v == a or v == b:
+                    continue
+                if _segments_cross(pa, pb, (pos[u, 0], pos[u, 1]), (pos[v, 0], pos[v, 1])):
+                    return True
+            cell.difference_update(stale)
         return False
 
     def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
@@ -307,8 +307,9 @@ class _Grower:
     # -- geometry guard -----------------------------------------------------------------
     def element_geometry(self, kind: int, x: float, y: float, rot: float, scale: float) -> Any:
         local = self.local_geom[kind]
-        c, s = math.cos(rot) * scale, math.sin(rot) * scale
-        return shapely.transform(local, lambda q: np.c_[x + c * q[:, 0] - s * q[:, 1], y + s * q[:, 0] + c * q[:, 1]])
+        m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
+        t = np.array([x, y])
+        return shapely.transform(local, lambda q: q @ m.T + t)
 
     def overlaps_any(self, g: Any, kind: int, x: float, y: float, scale: float, skip: set[int] | None = None) -> bool:
         r = self.kind_radius[kind] * scale + self.kind_radius.max() * self.max_scale
@@ -422,7 +423,9 @@ class _Grower:
         n_ring = int(self.rings["n"][a])
         c, sn = math.cos(th), math.sin(th)
         rel = self.rings["rel"][a, :n_ring]
-        ring_pos = np.c_[x + c * rel[:, 0] - sn * rel[:, 1], y + sn * rel[:, 0] + c * rel[:, 1]]
+        ring_pos = np.empty((n_ring, 2))
+        ring_pos[:, 0] = x + c * rel[:, 0] - sn * rel[:, 1]
+        ring_pos[:, 1] = y + sn * rel[:, 0] + c * rel[:, 1]
         ring_kind = self.rings["kind"][a, :n_ring]
         slot_of: dict[int, int] = {}
         nb = self._last_nb

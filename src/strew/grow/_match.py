@@ -54,12 +54,16 @@ def order_target(rel: np.ndarray) -> np.ndarray:
     """
     if len(rel) == 0:
         return np.zeros(0, dtype=np.intp)
-    a = np.arctan2(rel[:, 1], rel[:, 0])
-    order = np.argsort(a, kind="stable")
-    a = a[order]
-    gaps = np.diff(np.r_[a, a[0] + 2 * np.pi])
-    start = (int(np.argmax(gaps)) + 1) % len(a)
-    return np.roll(order, -start)
+    a = np.arctan2(rel[:, 1], rel[:, 0]).tolist()
+    order = sorted(range(len(a)), key=a.__getitem__)
+    t = len(order)
+    best, start = -1.0, 0
+    for q in range(t):
+        nxt = a[order[(q + 1) % t]] + (2 * np.pi if q == t - 1 else 0.0)
+        gap = nxt - a[order[q]]
+        if gap > best:
+            best, start = gap, (q + 1) % t
+    return np.asarray(order[start:] + order[:start], dtype=np.intp)
 
 
 @numba.njit(cache=True)

@@ -69,19 +69,22 @@ def relax_positions(
         return out
     col = np.full(len(pos), -1, dtype=np.intp)
     col[free] = np.arange(nf)
-    # Each term is one row: x_dst - x_src = off.
-    m = len(src)
-    rows = np.r_[np.arange(m), np.arange(m)]
-    cols_all = np.r_[dst, src]
-    vals = np.r_[np.ones(m), -np.ones(m)]
-    rhs = off.copy()
-    fixed_part = ~free[cols_all]
-    # Move fixed unknowns to the right-hand side.
-    np.subtract.at(rhs, rows[fixed_part], vals[fixed_part, None] * pos[cols_all[fixed_part]])
-    keep = ~fixed_part
-    A = sp.csr_matrix((vals[keep], (rows[keep], col[cols_all[keep]])), shape=(m, nf))
-    N = (A.T @ A + regularization * sp.identity(nf, format="csr")).tocsc()
-    b = A.T @ rhs + regularization * pos[free]
+    # Normal equations of the terms r = x_d - x_s - off, assembled directly (a graph
+    # Laplacian over the free points); fixed points move to the right-hand side.
+    fd, fs = free[dst], free[src]
+    cd, cs = col[dst], col[src]
+    both = fd & fs
+    rows = np.concatenate([cd[fd], cs[fs], cd[both], cs[both], np.arange(nf)])
+    cols = np.concatenate([cd[fd], cs[fs], cs[both], cd[both], np.arange(nf)])
+    vals = np.concatenate([np.ones(int(fd.sum()) + int(fs.sum())), -np.ones(2 * int(both.sum())), np.full(nf, regularization)])
+    N = sp.csc_matrix((vals, (rows, cols)), shape=(nf, nf))
+    b = regularization * pos[free]
+    d_only = fd & ~fs
+    s_only = fs & ~fd
+    np.add.at(b, cd[fd], off[fd])
+    np.add.at(b, cd[d_only], pos[src[d_only]])
+    np.add.at(b, cs[fs], -off[fs])
+    np.add.at(b, cs[s_only], pos[dst[s_only]])
     sol = spsolve(N, b)
     out[free] = np.asarray(sol).reshape(nf, 2)
     return out
