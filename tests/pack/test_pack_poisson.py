@@ -76,6 +76,32 @@ def test_density_matches_a_maximal_poisson_disk_set():
     assert 0.44 < frac < 0.56
 
 
+def test_variable_radius_keeps_the_larger_radius_between_points():
+    def radius(p):
+        return np.where(p[:, 0] < 0.5, 0.02, 0.05)  # steps on a cell edge of the radius map
+
+    pts = poisson_disk((1.0, 1.0), radius, rng=4)
+    r = radius(pts)
+    tree = cKDTree(pts)
+    for i, j in tree.query_pairs(0.05):
+        assert np.hypot(*(pts[i] - pts[j])) >= max(r[i], r[j])
+    left, right = (pts[:, 0] < 0.5).sum(), (pts[:, 0] >= 0.5).sum()
+    assert left > 4 * right  # density follows 1 / r**2: (0.05 / 0.02)**2 = 6.25
+    # maximal: no point is farther than twice the largest radius within 0.05 of it
+    # (samples across the step keep the larger radius) from a sample
+    gx, gy = np.meshgrid(np.linspace(0, 1, 80), np.linspace(0, 1, 80))
+    grid = np.c_[gx.ravel(), gy.ravel()]
+    d, _ = tree.query(grid)
+    assert np.all(d < 2 * radius(grid + [0.05, 0.0]))
+
+
+def test_variable_radius_must_be_positive():
+    with pytest.raises(InputError, match="positive"):
+        poisson_disk((1, 1), lambda p: p[:, 0] - 0.5)
+    with pytest.raises(InputError, match="one radius per point"):
+        poisson_disk((1, 1), lambda p: 0.1)
+
+
 @pytest.mark.parametrize("radius", [0, -1, float("nan"), float("inf"), "x"])
 def test_bad_radius_is_rejected(radius):
     with pytest.raises(InputError, match="radius"):

@@ -12,6 +12,7 @@ caller's ``numpy.random.Generator``, so no global random state is touched.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numba
@@ -123,6 +124,89 @@ def _bridson(width: float, height: float, r: float, k: int, seed: np.uint64, max
     return pts[:n].copy()
 
 
+@numba.njit(cache=True)
+def _bridson_variable(
+    width: float, height: float, rmap: np.ndarray, mcell: float, rmin: float, rmax: float, k: int, seed: np.uint64, max_points: int
+) -> np.ndarray:
+    """Bridson sampling with a radius map: points p, q keep ``|p - q| >= max(r(p), r(q))``."""
+    state = np.empty(1, dtype=np.uint64)
+    state[0] = seed
+    mh, mw = rmap.shape
+    cell = rmin / np.sqrt(2.0)  # every pair is at least rmin apart: one point per cell
+    gw = max(1, int(np.ceil(width / cell)))
+    gh = max(1, int(np.ceil(height / cell)))
+    reach = int(np.ceil(rmax / cell))
+    grid = np.full((gh, gw), -1, dtype=np.int64)
+    cap = min(gw * gh, max_points)
+    pts = np.empty((cap, 2), dtype=np.float64)
+    rad = np.empty(cap, dtype=np.float64)
+    active = np.empty(cap, dtype=np.int64)
+    x = _next(state) * width
+    y = _next(state) * height
+    pts[0, 0] = x
+    pts[0, 1] = y
+    rad[0] = rmap[min(int(y / mcell), mh - 1), min(int(x / mcell), mw - 1)]
+    grid[min(int(y / cell), gh - 1), min(int(x / cell), gw - 1)] = 0
+    active[0] = 0
+    n = 1
+    na = 1
+    while na > 0 and n < cap:
+        a = min(int(_next(state) * na), na - 1)
+        i = active[a]
+        r = rad[i]
+        found = False
+        for _ in range(k):
+            while True:
+                ux = 2.0 * _next(state) - 1.0
+                uy = 2.0 * _next(state) - 1.0
+                q = ux * ux + uy * uy
+                if 1e-12 < q <= 1.0:
+                    break
+            t = np.sqrt(1.0 + 3.0 * _next(state)) / np.sqrt(q)
+            cx = pts[i, 0] + t * r * ux
+            cy = pts[i, 1] + t * r * uy
+            if cx < 0.0 or cy < 0.0 or cx >= width or cy >= height:
+                continue
+            rc = rmap[min(int(cy / mcell), mh - 1), min(int(cx / mcell), mw - 1)]
+            if rc > r:
+                # the annulus of the larger radius, so that growth crosses from small
+                # radii into large ones
+                cx = pts[i, 0] + t * rc * ux
+                cy = pts[i, 1] + t * rc * uy
+                if cx < 0.0 or cy < 0.0 or cx >= width or cy >= height:
+                    continue
+                rc = rmap[min(int(cy / mcell), mh - 1), min(int(cx / mcell), mw - 1)]
+            gx = min(int(cx / cell), gw - 1)
+            gy = min(int(cy / cell), gh - 1)
+            ok = True
+            for yy in range(max(gy - reach, 0), min(gy + reach + 1, gh)):
+                for xx in range(max(gx - reach, 0), min(gx + reach + 1, gw)):
+                    j = grid[yy, xx]
+                    if j >= 0:
+                        dx = pts[j, 0] - cx
+                        dy = pts[j, 1] - cy
+                        need = max(rc, rad[j])
+                        if dx * dx + dy * dy < need * need:
+                            ok = False
+                            break
+                if not ok:
+                    break
+            if ok:
+                pts[n, 0] = cx
+                pts[n, 1] = cy
+                rad[n] = rc
+                grid[gy, gx] = n
+                active[na] = n
+                na += 1
+                n += 1
+                found = True
+                break
+        if not found:
+            na -= 1
+            active[a] = active[na]
+    return pts[:n].copy()
+
+
 def _as_geometry(region: Any) -> shapely.Geometry | tuple[float, float, float, float]:
     """A polygonal geometry, or the bounds of a rectangle given as (W, H)."""
     from ..region import Region
@@ -141,7 +225,7 @@ def _as_geometry(region: Any) -> shapely.Geometry | tuple[float, float, float, f
 
 def poisson_disk(
     region: Any,
-    radius: float,
+    radius: float | Callable[[np.ndarray], np.ndarray],
     *,
     candidates: int = 30,
     max_points: int = 50_000_000,
@@ -157,9 +241,12 @@ def poisson_disk(
     ----------
     region : Region, shapely (Multi)Polygon or (W, H)
         ``(W, H)`` means the rectangle ``[0, W) x [0, H)``.
-    radius : float
+    radius : float or callable
         Minimum distance between two points (as ``scipy.stats.qmc.PoissonDisk``'s
-        ``radius``).
+        ``radius``). A callable ``radius(points) -> radii`` (``(m, 2)`` to ``(m,)``,
+        positive) gives a variable radius: it is sampled at the cell centres of a map
+        of 512 cells across the bounding box's longer side, and points ``p, q`` keep
+        ``|p - q| >= max(r(p), r(q))`` with ``r`` read from that map.
     candidates : int
         Trial points per active sample (Bridson's ``k``).
     max_points : int
@@ -178,12 +265,13 @@ def poisson_disk(
     >>> bool(pdist(pts).min() >= 0.1)
     True
     """
-    try:
-        radius = float(radius)
-    except (TypeError, ValueError):
-        raise InputError(f"radius: must be a number, got {radius!r}") from None
-    if not (np.isfinite(radius) and radius > 0):
-        raise InputError(f"radius: must be positive and finite, got {radius}")
+    if not callable(radius):
+        try:
+            radius = float(radius)
+        except (TypeError, ValueError):
+            raise InputError(f"radius: must be a number or a callable, got {radius!r}") from None
+        if not (np.isfinite(radius) and radius > 0):
+            raise InputError(f"radius: must be positive and finite, got {radius}")
     if int(candidates) < 1:
         raise InputError(f"candidates: must be at least 1, got {candidates}")
     gen = as_rng(rng)
@@ -197,11 +285,28 @@ def poisson_disk(
         x0, y0, x1, y1 = (float(v) for v in geom.bounds)
         poly = geom
     w, h = x1 - x0, y1 - y0
-    cells = (w / radius * np.sqrt(2) + 1) * (h / radius * np.sqrt(2) + 1)
+    rmap = None
+    if callable(radius):
+        mcell = max(w, h) / 512
+        mw, mh = max(1, int(np.ceil(w / mcell))), max(1, int(np.ceil(h / mcell)))
+        gx, gy = np.meshgrid(x0 + (np.arange(mw) + 0.5) * mcell, y0 + (np.arange(mh) + 0.5) * mcell)
+        rmap = np.asarray(radius(np.c_[gx.ravel(), gy.ravel()]), dtype=float)
+        if rmap.shape != (mw * mh,):
+            raise InputError(f"radius: the callable must return one radius per point, got shape {rmap.shape}")
+        if not (np.all(np.isfinite(rmap)) and np.all(rmap > 0)):
+            raise InputError("radius: the callable must return positive, finite radii")
+        rmap = rmap.reshape(mh, mw)
+        rmin = float(rmap.min())
+    else:
+        rmin = radius
+    cells = (w / rmin * np.sqrt(2) + 1) * (h / rmin * np.sqrt(2) + 1)
     if cells > 4 * max_points:
-        raise InputError(f"radius: {radius} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
+        raise InputError(f"radius: {rmin} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
     seed = np.uint64(gen.integers(0, 2**63, dtype=np.int64))
-    pts = _bridson(float(w), float(h), radius, int(candidates), seed, int(max_points))
+    if rmap is None:
+        pts = _bridson(float(w), float(h), radius, int(candidates), seed, int(max_points))
+    else:
+        pts = _bridson_variable(float(w), float(h), rmap, float(mcell), rmin, float(rmap.max()), int(candidates), seed, int(max_points))
     pts[:, 0] += x0
     pts[:, 1] += y0
     if poly is not None:
