@@ -12,7 +12,6 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-import shapely
 
 from .._errors import InputError
 from ._context import current, top, unit_random
@@ -58,6 +57,10 @@ def _need(obj: Any, types: tuple[type, ...], fn: str, what: str) -> None:
 
 
 def _curves_arg(c: Any, fn: str) -> Curves:
+    from ._planar_map import PlanarMap
+
+    if isinstance(c, PlanarMap):  # e.g. the result of arrangement(face)
+        return c.curves
     _need(c, (Curves,), fn, "curves")
     return c
 
@@ -212,10 +215,18 @@ def centroid(f: Face) -> np.ndarray:
 
 
 def contour(f: Face) -> Curves:
-    """Contour(Face f): the boundary of ``f`` as closed curves carrying its labels inside."""
+    """Contour(Face f): the boundary of ``f``, one curve per boundary edge.
+
+    Each ring of the face is cut at the map's vertices, so the contour keeps the face's
+    edge structure (a shrunk contour still has one edge per side, Fig. 7); a ring with no
+    vertex is one closed curve. The face's labels ride on the inner side of every curve.
+    """
     _need(f, (Face,), "contour", "a face")
     if f.is_unbounded:
         raise InputError("contour: the unbounded face has no contour")
+    from ._planar_map import _match_rows
+
+    t = f._map._t
     labs = f.labels
     out = []
     poly = f.polygon
@@ -225,7 +236,17 @@ def contour(f: Face) -> Curves:
         area2 = float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
         # the face is on the math-left (screen right) of a positive exterior ring
         face_on_right = (area2 > 0) == (k == 0)
-        out.append(Curve(pts, True, EMPTY, EMPTY if face_on_right else labs, labs if face_on_right else EMPTY))
+        left, right = (EMPTY, labs) if face_on_right else (labs, EMPTY)
+        ij = np.rint(pts / t.grid).astype(np.int64)
+        cut = np.sort(_match_rows(t.vertex_ij, ij)[1])
+        if len(cut) == 0:
+            out.append(Curve(pts, True, EMPTY, left, right))
+            continue
+        rolled = np.roll(pts, -int(cut[0]), axis=0)
+        marks = (cut - cut[0]).tolist() + [len(pts)]
+        closed_pts = np.vstack([rolled, rolled[:1]])
+        for a, b in zip(marks[:-1], marks[1:]):
+            out.append(Curve(closed_pts[a : b + 1], False, EMPTY, left, right))
     return Curves(tuple(out))
 
 
@@ -401,6 +422,3 @@ def nothing() -> Curves:
     """Nothing(): an empty set of curves."""
     return Curves()
 
-
-def _unused(_: Any = shapely) -> None:  # keep the import for type checkers
-    return None

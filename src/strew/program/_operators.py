@@ -94,7 +94,8 @@ def as_region_geometry(region: Any) -> shapely.Geometry:
     """The polygonal region an arrangement is evaluated on.
 
     Accepts a size ``N`` (the square [0, N]^2), a :class:`strew.Region`, a shapely
-    (Multi)Polygon, or a bounded :class:`Face` (``arrangement(face)`` inside a mapper).
+    (Multi)Polygon, a bounded :class:`Face` (``arrangement(face)`` inside a mapper), or
+    closed curves (the faces they enclose).
     """
     if isinstance(region, Face):
         if region.is_unbounded:
@@ -102,6 +103,13 @@ def as_region_geometry(region: Any) -> shapely.Geometry:
         return region.polygon
     if isinstance(region, Region):
         return region.geometry
+    if isinstance(region, (Curves, PlanarMap)):
+        # the bounded faces of the curves' planar map (e.g. a blob placed by a mapper)
+        pm = region if isinstance(region, PlanarMap) else PlanarMap(region)
+        polys = [p for p in pm._t.face_polygons[1:]]
+        if not polys:
+            raise InputError("region: these curves enclose no face")
+        return shapely.union_all(polys)
     if isinstance(region, (shapely.Polygon, shapely.MultiPolygon)):
         if region.is_empty or region.area <= 0:
             raise InputError("region: empty polygon")
@@ -112,7 +120,7 @@ def as_region_geometry(region: Any) -> shapely.Geometry:
             raise InputError(f"region: size must be a positive number, got {region!r}")
         return shapely.box(0.0, 0.0, n, n)
     raise InputError(
-        f"region: expected a size, a Region, a shapely polygon or a face, got {type(region).__name__}"
+        f"region: expected a size, a Region, a shapely polygon, a face or closed curves, got {type(region).__name__}"
     )
 
 
@@ -400,7 +408,7 @@ def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float
             right = frozenset(g[k % len(g)] for g in p.face_labels)
             left = frozenset(g[(k - 1) % len(g)] for g in p.face_labels)
             base = c + (tk - float(c @ nrm)) * nrm
-            pts = np.array([base - half * d, base + half * d])
+            pts = np.round(np.array([base - half * d, base + half * d]), 9)
             lines.append(Curve(pts, False, labs, left, right))
     return lines
 

@@ -338,6 +338,10 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         return _empty_topology(g)
     lens = np.fromiter((len(p) for p in polylines), dtype=np.int64, count=len(polylines))
     allp = np.concatenate(polylines) if lens.sum() else np.zeros((0, 2))
+    # round every input point onto the grid first, so that copies of one curve that
+    # differ by less than the grid (a curve and its own snapped outline) are identical
+    # before snap rounding, and are noded identically (no sliver between them)
+    allp = np.rint(allp / g) * g
     cid = np.repeat(np.arange(len(polylines)), lens)
     # drop repeated consecutive points, then curves left with fewer than two points
     keep = np.ones(len(allp), dtype=bool)

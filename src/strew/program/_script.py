@@ -84,7 +84,7 @@ def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = No
     ----------
     filename : path
     tolerance : float, optional
-        Flattening step for curved segments (default: 1/200 of the drawing's diagonal).
+        Flattening step for curved segments (default: 1/40 of the drawing's diagonal).
     """
     import svgelements as se
 
@@ -118,7 +118,7 @@ def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = No
             diag = math.hypot(arr[:, 2].max() - arr[:, 0].min(), arr[:, 3].max() - arr[:, 1].min())
         else:
             diag = 1.0
-        tol = max(diag, 1e-9) / 200.0
+        tol = max(diag, 1e-9) / 40.0
     else:
         tol = float(tolerance)
         if not (tol > 0):

@@ -1,0 +1,82 @@
+"""Fig. 7 of Loi et al.: using mappers.
+
+(top) Puzzle bricks: a grid with cycled labels, a mapper keeping vertical edges in
+staggered rows, then a puzzle tab matched on every edge with match_points.
+(middle) Rosettes: four construction lines matched on each face centroid of a uniform
+partition, then overlapping circles mapped on the resulting vertices.
+(bottom) Random cells shrunk, with a stroke picked from a small set on each edge.
+Run: strew run fig07_mappers.py --name rosettes --out rosettes.svg
+"""
+
+from pathlib import Path
+
+from strew.program import *
+from strew.program import pi
+
+here = Path(__file__).parent
+size = 2000
+tab = import_svg(here / "puzzle.svg")
+cross = scale(import_svg(here / "cross.svg"), 2.0)
+petal = scale(import_svg(here / "petal.svg"), 1.6)
+wiggles = import_svg(here / "wiggles.svg")
+
+# -- puzzle bricks ---------------------------------------------------------------------
+rows = set_face_labels(set_edge_labels(stripes_properties(0, 100), "row"), "odd", "even")
+cols = set_edge_labels(stripes_properties(pi / 2, 100), "A", "B")
+bricks = grid_partition(rows, cols, CROP_ADD_BOUNDARY)
+
+
+def keep_staggered(edge):
+    # horizontal lines and the boundary stay; vertical edges alternate with the rows
+    if is_boundary(edge) or has_label(edge, "row"):
+        return to_curve(edge)
+    row_odd = has_label(left_face(edge), "odd") or has_label(right_face(edge), "odd")
+    if has_label(edge, "A") == row_odd:
+        return to_curve(edge)
+    return nothing()
+
+
+def puzzle_edge(edge):
+    if is_boundary(edge):
+        return to_curve(edge)
+    src, dst = location(source_vertex(edge)), location(target_vertex(edge))
+    t = tab if random(edge, 0, 1, 0) < 0.5 else rotate(tab, pi)
+    return match_points(t, point_labeled(t, "start"), point_labeled(t, "end"), src, dst)
+
+
+puzzle = map_to_edges(puzzle_edge, map_to_edges(keep_staggered, bricks))
+
+# -- rosettes ----------------------------------------------------------------------------
+cells = uniform_partition(irregular_properties(1 / 110**2), KEEP_INSIDE)
+
+
+def construction_lines(face):
+    arms = rotate(cross, random(face, 0, pi / 2, 0))
+    return match_point(arms, point_labeled(arms, "center"), centroid(face))
+
+
+def flower(vertex):
+    return match_point(petal, point_labeled(petal, "center"), location(vertex))
+
+
+rosettes = map_to_vertices(flower, map_to_faces(construction_lines, cells))
+
+# -- shrunk random cells with strokes -----------------------------------------------------
+random_cells = random_partition(irregular_properties(1 / 160**2), KEEP_INSIDE)
+shrunk = map_to_faces(lambda face: scale(contour(face), 0.8), random_cells)
+
+
+def stroke(edge):
+    pick = ["w1", "w2", "w3"][int(random(edge, 0, 3, 0)) % 3]
+    w = curve_labeled(wiggles, pick)
+    return match_points(w, point_labeled(wiggles, "start"), point_labeled(wiggles, "end"), location(source_vertex(edge)), location(target_vertex(edge)))
+
+
+cells_with_curves = map_to_edges(stroke, shrunk)
+
+arrangement = puzzle
+demo_panels = ["puzzle", "rosettes", "cells_with_curves"]
+demo_size = 1000
+
+if __name__ == "__main__":
+    export_svg(arrangement, size)
