@@ -308,6 +308,32 @@ def test_identical_geometry_is_one_kind(copies):
         assert math.remainder(arr.rotation[i] - math.radians(r), 2 * math.pi) == pytest.approx(0, abs=1e-3)
 
 
+CURVY = [
+    LEAF,
+    "M -9,0 A 7,5.5 0 0 1 5,-4 L 10,0 L 5,4 A 7,5.5 0 0 1 -9,0 Z",
+    "M -9,-4 C -8,-9 0,-8 2,-5 C 4,-2 6,-8 9,-4 C 12,1 7,7 0,7 C -7,7 -11,2 -9,-4 Z",
+    "M 0,0 L 10,0 L 10,10 L 0,10 Z",
+    "M 0,0 L 10,0 L 10,10.3 L 0,10.3 Z",  # nearly the square: must stay a kind of its own
+]
+
+
+@settings(max_examples=10)
+@given(st.lists(st.tuples(st.integers(0, len(CURVY) - 1), similarity()), min_size=2, max_size=25))
+def test_copies_of_curved_shapes_group_exactly(copies):
+    body = "".join(
+        f'<path d="{CURVY[k]}" transform="translate({x!r} {y!r}) rotate({r!r}) scale({s!r})"/>' for k, (x, y, r, s) in copies
+    )
+    arr = read_svg(HEAD + body + "</svg>", tolerance=0.05)
+    truth = [k for k, _ in copies]
+    assert len(arr) == len(copies)
+    # the kinds found are exactly the drawn ones, relabelled
+    assert len({(t, int(g)) for t, g in zip(truth, arr.kind)}) == len(set(truth)) == len(arr.kinds)
+    for i, (k, (x, y, r, s)) in enumerate(copies):
+        # each element's world outline is the drawn one, read on its own (no matching)
+        alone = read_svg(HEAD + f'<path d="{CURVY[k]}" transform="translate({x!r} {y!r}) rotate({r!r}) scale({s!r})"/></svg>', tolerance=0.001)
+        assert_same_geometry(arr.geometry[i], alone.geometry[0], 0.1)
+
+
 def test_round_copies_of_a_circle_keep_rotation_zero():
     svg = HEAD + '<circle cx="10" cy="10" r="3"/><circle cx="50" cy="10" r="3"/><ellipse cx="90" cy="10" rx="6" ry="6"/></svg>'
     arr = read_svg(svg, tolerance=0.01)
