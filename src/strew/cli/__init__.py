@@ -25,6 +25,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "render": ("strew.cli.render", "Convert between .json, .svg and .png."),
     "info": ("strew.cli.info", "Counts per kind, bounds and metrics of an arrangement."),
     "demo": ("strew.cli.demo", "Write a gallery of examples (SVG, PNG and index.html)."),
+    "ornament": ("strew.cli.ornament", "Grow rule-driven floral ornament into a panel (adaptive clip art)."),
     "run": ("strew.cli.run", "Run a program script (planar maps, partitions, mappers) and write its arrangement."),
     "pack": ("strew.cli.pack", "Pack shapes densely and non-periodically into a region (fill-gap)."),
     "grow": ("strew.cli.grow", "Grow an arrangement from an exemplar, one element at a time (Ijiri et al.)."),

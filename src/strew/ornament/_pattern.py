@@ -153,6 +153,8 @@ class Pattern:
         Growth stops when no eligible empty circle is at least this large.
     description : str
         One line for listings and the demo.
+    draw_order : sequence of str
+        Element types drawn first to last (others follow in declaration order).
     """
 
     def __init__(
@@ -163,8 +165,10 @@ class Pattern:
         phases: Sequence[str | tuple[str, float] | Phase] | None = None,
         min_radius: float = 1.0,
         description: str = "",
+        draw_order: Sequence[str] = (),
     ) -> None:
         self.name = str(name)
+        self.draw_order = tuple(draw_order)
         self.state = dict(state or {})
         self.description = description
         if not min_radius > 0:
@@ -225,7 +229,7 @@ class Pattern:
 
     def rule(
         self,
-        parent: str,
+        parent: str | Sequence[str],
         children: Sequence[str] | str = (),
         *,
         when: Callable[[Any], bool] | None = None,
@@ -239,8 +243,9 @@ class Pattern:
 
         Parameters
         ----------
-        parent : str
-            The element type the rule acts on.
+        parent : str or sequence of str
+            The element type the rule acts on; several types (a sequence, or names
+            separated by spaces) declare the same body once for each.
         children : sequence of str
             Types of the static children, created fresh for each invocation.
         when : callable, optional
@@ -251,8 +256,11 @@ class Pattern:
         if isinstance(children, str):
             children = children.split()
 
+        parents = parent.split() if isinstance(parent, str) else [str(p) for p in parent]
+
         def deco(fn: Callable[..., Any]) -> Callable[..., Any]:
-            self.rules.append(Rule(name or fn.__name__, str(parent), tuple(children), fn, when, phase))
+            for par in parents:
+                self.rules.append(Rule(name or fn.__name__, par, tuple(children), fn, when, phase))
             return fn
 
         return deco

@@ -289,7 +289,8 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     per_type: dict[str, int] = {}
     kind, xs, ys = [], [], []
     col_el, col_type, col_parent, col_phase = [], [], [], []
-    for el in ornament.elements:
+    rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
+    for el in sorted(ornament.elements, key=lambda e: (rank.get(e.type, len(rank)), e.index)):
         if el.type == "seed":
             if not seeds:
                 continue

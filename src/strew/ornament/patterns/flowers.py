@@ -1,0 +1,131 @@
+"""``flowers``: flowers joined by stems, with a leaf on long stems (Wong et al. 1998, Appendix A, Figs. 15-16).
+
+Element types, as in the appendix's declaration section::
+
+    seed point            // the required seed element type
+    flower circle         // flower: a circle proxy, with a user field `color`
+    stem linesegment      // stem: a line segment proxy
+    leaf bezier bezier    // leaf: two Bezier segment proxies
+
+The rule ``flower --> stem flower * x leaf`` places a new flower at most 10 units from
+its parent towards the goal circle, joins them with a stem, and adds a leaf at the stem's
+midpoint only when the new flower is farther than 8 units. This file is a complete rule
+file: copy it to start your own.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from strew.ornament import (
+    FAILURE,
+    SUCCESS,
+    Bezier,
+    Circle,
+    Mark,
+    Pattern,
+    Point,
+    Segment,
+    angle_of,
+    distance,
+    offset,
+    polar,
+    tapered_stroke,
+)
+
+FLOWER_RADIUS = 3.0
+MAX_STEM = 10.0
+LEAF_MIN_STEM = 8.0  # "if the new flower was placed far enough away, add a leaf as well"
+LEAF_LENGTH = 3.0
+COLORS = ("#c8413b", "#e3a72f", "#4f7cc2")
+
+pattern = Pattern(
+    "flowers",
+    state={"flowers": 0},
+    # a new flower needs an empty circle of about its own diameter next to its parent
+    min_radius=FLOWER_RADIUS,
+    description="Appendix A: flowers on stems, a leaf on every stem longer than 8 units.",
+    draw_order=["stem", "leaf", "flower"],
+)
+
+pattern.element("seed", Point)
+pattern.element("flower", Circle, color=0)  # this element type has a user field
+pattern.element("stem", Segment)
+pattern.element("leaf", [Bezier, Bezier])
+
+
+@pattern.rule("seed", children=["flower"])
+def seed_to_flower(ctx, seed, flower):
+    # The appendix omits this rule's code: a flower on top of the seed, used once.
+    flower.proxy.set(seed.proxy.center, FLOWER_RADIUS)
+    flower.color = 0
+    seed.sterile = True
+    if not ctx.inside(flower):
+        return FAILURE
+    return SUCCESS
+
+
+@pattern.rule("flower", children=["stem", "flower"])
+def flower_to_flower(ctx, parent, stem, flower):
+    to_goal = ctx.goal.center - parent.proxy.center
+    # determine how far away to place the child flower.
+    dist = min(distance(ctx.goal.center, parent.proxy.center), MAX_STEM)
+    # place the flower centred `dist` units away in the direction of the goal, radius 3.
+    flower.proxy.set(offset(parent.proxy.center, to_goal, dist), FLOWER_RADIUS)
+    # if the new flower intersects any already-placed element, cancel this rule.
+    if ctx.intersects(flower):
+        return FAILURE
+    flower.color = (parent.color + 1) % len(COLORS)
+    # the stem extends from the centre of the parent flower to the centre of the child.
+    stem.proxy.set(parent.proxy.center, flower.proxy.center)
+    # if the new flower was placed far enough away, add a leaf as well.
+    if dist > LEAF_MIN_STEM:
+        # the base of the leaf is the stem midpoint. (Appendix A writes
+        # `($1.center - $.center) / 2`, half the stem vector; its comment and Fig. 15
+        # mean the midpoint, used here.)
+        leaf_base = (flower.proxy.center + parent.proxy.center) / 2
+        # place the leaf at a right angle to the stem, and make it 3 units long.
+        leaf_dir = angle_of(to_goal) + math.pi / 2
+        leaf_tip = offset(leaf_base, leaf_dir, LEAF_LENGTH)
+        leaf = ctx.new_child("leaf")
+        # a leaf is proxied by two Bezier segments, each placed by position, tangent
+        # direction and magnitude.
+        leaf.proxies[0].set(leaf_base, leaf_dir + math.pi / 4, 0.6, leaf_tip, leaf_dir, 0.4)
+        leaf.proxies[1].set(leaf_base, leaf_dir - math.pi / 4, 0.6, leaf_tip, leaf_dir, 0.4)
+        # Not in the appendix: a leaf that would overlap the ornament or leave the panel
+        # is left out (the flower and stem still grow), so leaves never cover flowers.
+        if ctx.intersects(leaf) or not ctx.inside(leaf):
+            ctx.dynamic.remove(leaf)
+    ctx.state.flowers += 1
+    return SUCCESS
+
+
+# -- an "ink" rendering (Fig. 15e-g): petals, tapered stems, filled leaves ----------------
+@pattern.render("flower", "ink", help="petalled flowers, tapered stems and filled leaves (Fig. 15e-g)")
+def ink_flower(flower, rc):
+    c, r = flower.proxy.center, flower.proxy.radius
+    t = np.linspace(0, 2 * np.pi, 121)
+    petals = c + (r * (0.72 + 0.28 * np.abs(np.cos(2.5 * t))))[:, None] * np.c_[np.cos(t), np.sin(t)]
+    return [
+        Mark([petals[:-1]], closed=True, fill=COLORS[flower.color % len(COLORS)], stroke="#2b2f36", stroke_width=rc.line_width),
+        Mark.circle(c, 0.3 * r, fill="#2b2f36", stroke="none"),
+    ]
+
+
+@pattern.render("stem", "ink")
+def ink_stem(stem, rc):
+    pts = np.linspace(stem.proxy.start, stem.proxy.end, 12)
+    return [Mark.polygon(tapered_stroke(pts, (2.5 * rc.line_width, 1.2 * rc.line_width)), fill="#3d6b35")]
+
+
+@pattern.render("leaf", "ink")
+def ink_leaf(leaf, rc):
+    a = leaf.proxies[0].polyline()
+    b = leaf.proxies[1].polyline()
+    outline = np.vstack([a, b[::-1][1:-1]])
+    return [Mark.polygon(outline, fill="#5d9b4a", stroke="#2b4d24", stroke_width=0.5 * rc.line_width)]
+
+
+_ = polar  # re-exported helper kept in the import list as a reminder for rule writers
