@@ -30,10 +30,16 @@ skipped; a hidden element itself counts, with ``void = True`` (strew exports voi
 2. ``data-kind``, else ``inkscape:label``, else an id that is not an editor's automatic
    one (``path123``), with a trailing number dropped (``stone-3`` -> ``stone``);
 3. identical geometry: objects equal up to a similarity transform (translation, rotation,
-   uniform scale) share a kind, and their rotation and scale are recovered.
+   uniform scale) share a kind, and their rotation and scale are recovered. The scale
+   comes from the area (or length) ratio and the rotation from the phase of the complex
+   moments ``c_k = integral (z - centroid)^k dA``, which turn by ``k t`` under a rotation
+   by ``t``; each candidate pose is then verified by the largest outline distance both
+   ways. Mirror images are different kinds.
 
 Objects with the same name but different geometry are split into ``name``, ``name-2``, ...,
-since a kind has one shape.
+since a kind has one shape. Positions are in the root's user units (its viewBox and size
+are ignored); ``<text>``, ``<image>``, CSS ``<style>`` sheets and clip paths are ignored.
+A symbol's viewBox is honoured only when the ``<use>`` gives an explicit width and height.
 
 Transforms that are not similarities
 ------------------------------------
