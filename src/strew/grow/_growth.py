@@ -69,6 +69,16 @@ def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[flo
     return (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0)
 
 
+def _skewed(p: Sequence[float], q: Sequence[float], r: Sequence[float]) -> bool:
+    """True when triangle pqr has an angle of 2π/3 or more (§4's skewed triangles)."""
+    a2 = (q[0] - r[0]) ** 2 + (q[1] - r[1]) ** 2
+    b2 = (p[0] - r[0]) ** 2 + (p[1] - r[1]) ** 2
+    c2 = (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2
+    a, b, c = math.sqrt(a2), math.sqrt(b2), math.sqrt(c2)
+    # cos(angle) <= -1/2 at any vertex
+    return b2 + c2 - a2 <= -b * c + 1e-12 or a2 + c2 - b2 <= -a * c + 1e-12 or a2 + b2 - c2 <= -a * b + 1e-12
+
+
 def _parse_hex(c: Any) -> tuple[float, float, float] | None:
     if not isinstance(c, str) or not c.startswith("#") or len(c) not in (4, 7):
         return None
@@ -526,7 +536,8 @@ class _Grower:
                     # (f) edges that would collide are left out
                     if not self.crosses_edges(o, po, t, (ex, ey)) and not self.crosses_boundary(po, (ex, ey)):
                         self.add_edge(o, t)
-            else:
+            elif not _skewed((x, y), pa, pb):
+                # the new edge closes triangle (s, a, b); like §4 we keep no skewed triangle
                 if not self.crosses_edges(oa, pa, ob, pb) and not self.crosses_boundary(pa, pb):
                     self.add_edge(oa, ob)
 
