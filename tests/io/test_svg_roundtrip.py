@@ -170,6 +170,12 @@ def test_void_elements_and_extra_columns_come_back(tmp_path, two_kind_arrangemen
     np.testing.assert_allclose(back["weight"].astype(float), arr["weight"])
 
 
+def test_background_is_not_an_element(tmp_path, two_kind_arrangement):
+    strew.save(two_kind_arrangement, tmp_path / "a.svg", background="#fafafa")
+    back = strew.load(tmp_path / "a.svg")
+    assert back.kind_names.tolist() == two_kind_arrangement.kind_names.tolist()
+
+
 def test_kind_named_region_is_not_the_region(tmp_path):
     arr = Arrangement({"region": Shape.circle(1)}, ["region", "region"], [0, 5], [0, 0], region=Region.rectangle(8, 3))
     strew.save(arr, tmp_path / "a.svg")

@@ -613,6 +613,8 @@ class _Doc:
             if _is_region_el(child, self.is_strew):
                 yield ("region", child, m)
                 continue
+            if el is self.root and self.is_strew and tag == "rect" and self._is_background(child):
+                continue
             hidden = _hidden(child)
             if tag == "use":
                 yield ("void-use" if hidden else "use", child, m)
@@ -626,6 +628,16 @@ class _Doc:
                 yield from self._walk_children(child, _compose(m, self.transform(child)))
             else:
                 yield ("object", child, m)
+
+    def _is_background(self, rect: ET.Element) -> bool:
+        """Whether a rect covers exactly the viewBox: the background ``to_svg`` may draw."""
+        box = (self.root.get("viewBox") or "").replace(",", " ").split()
+        try:
+            want = [float(v) for v in box]
+            got = [self.length(rect, a) for a in ("x", "y", "width", "height")]
+        except (ValueError, InputError):
+            return False
+        return len(want) == 4 and np.allclose(got, want, rtol=1e-9, atol=1e-9)
 
     def _is_container(self, el: ET.Element, m: np.ndarray) -> bool:
         if el is self.root or _is_layer(el) or _local(el.tag) in ("a", "switch"):
