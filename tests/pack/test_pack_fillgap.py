@@ -236,6 +236,7 @@ def test_region_smaller_than_every_shape_gives_an_empty_result_quickly(method):
         ({"candidates": 0}, "candidates"),
         ({"power": -1}, "power"),
         ({"resolution": 0}, "resolution"),
+        ({"resolution": 1e-3}, "resolution.*too fine"),
         ({"weights": [1, 2]}, "weights"),
         ({"weights": [0]}, "weights"),
         ({"exclusive": {"other": HOOK}}, "exclusive: unknown kind"),

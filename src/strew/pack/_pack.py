@@ -220,6 +220,9 @@ def pack(
         info["stopped"] = _naive(placer, dom, gen, rep)
     else:
         cell = _default_cell(kinds, dom) if resolution is None else resolution
+        x0, y0, x1, y1 = dom.bounds
+        if (x1 - x0) * (y1 - y0) / cell**2 > 2e7:
+            raise InputError(f"resolution: {cell:g} is too fine for a region of {x1 - x0:g} x {y1 - y0:g} (over 20 million pixels)")
         info.update(candidates=p_count, power=power, resolution=cell)
         info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, k_sparse, info)
     if len(placer) == 0 and "no shape fits" not in info["stopped"]:
