@@ -18,6 +18,7 @@ Arrangements are immutable: every operation returns a new one.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from functools import cached_property
 from typing import Any
@@ -32,6 +33,8 @@ from .shape import Shape
 __all__ = ["Arrangement", "concat", "transform_points", "CORE_COLUMNS"]
 
 CORE_COLUMNS = ("kind", "x", "y", "rotation", "scale")
+# characters that XML 1.0 cannot hold, so an SVG could not carry such a kind name
+_CONTROL = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
 
 
 def transform_points(points: np.ndarray, x: float, y: float, rotation: float, scale: float) -> np.ndarray:
@@ -134,6 +137,8 @@ class Arrangement:
         for name, sh in shapes.items():
             if not isinstance(name, str) or not name:
                 raise InputError(f"shapes: kind names must be non-empty strings, got {name!r}")
+            if _CONTROL.search(name):
+                raise InputError(f"shapes: kind name {name!r} contains control characters")
             if not isinstance(sh, Shape):
                 raise InputError(f"shapes.{name}: must be a Shape, got {type(sh).__name__}")
         self._shapes = shapes
