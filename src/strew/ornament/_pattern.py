@@ -181,7 +181,7 @@ class Pattern:
             elif isinstance(p, str):
                 ph.append(Phase(p))
             else:
-                ph.append(Phase(str(p[0]), float(p[1])))
+                ph.append(Phase(str(p[0]), None if p[1] is None else float(p[1])))
         self.phases: tuple[Phase, ...] = tuple(ph)
         self.types: dict[str, ElementType] = {}
         self.rules: list[Rule] = []

@@ -290,6 +290,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     kind, xs, ys = [], [], []
     col_el, col_type, col_parent, col_phase = [], [], [], []
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
+    layer: dict[str, tuple[int, int, int]] = {}
     for el in sorted(ornament.elements, key=lambda e: (rank.get(e.type, len(rank)), e.index)):
         if el.type == "seed":
             if not seeds:
@@ -298,7 +299,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         else:
             fn = pat.renderers.get((el.type, style)) or GENERIC_STYLES.get(style) or GENERIC_STYLES["outline"]
             marks = fn(el, rc)
-        for m in marks:
+        for slot, m in enumerate(marks):
             paths = [np.asarray(p, dtype=float) for p in m.paths if len(p)]
             if not paths:
                 continue
@@ -317,6 +318,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
                 name = el.type if k == 0 else f"{el.type}-{k}"
                 shapes[name] = Shape(tuple(Path(p, m.closed) for p in local), style=st)
                 keys[key] = name
+                layer[name] = (rank.get(el.type, len(rank)), slot, len(layer))
             kind.append(name)
             xs.append(anchor[0])
             ys.append(anchor[1])
@@ -324,6 +326,9 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             col_type.append(el.type)
             col_parent.append(el.parent.index if el.parent is not None else -1)
             col_phase.append(el.phase or "")
+    # SVG draws one layer per shape, in library order: order the library by draw order,
+    # then by the mark's place within its element (so a flower's centre lies on its petals)
+    shapes = {name: shapes[name] for name in sorted(shapes, key=layer.__getitem__)}
     if not shapes:
         shapes = {"empty": Shape(())}
     meta = {

@@ -1,0 +1,184 @@
+"""``hierarchy``: phased growth of vines, then flowers, then leaves, then fillers (Wong et al. 1998, §5, Fig. 10).
+
+"The pattern starts from the seed points by growing the vines. It then adds the red
+flowers and the yellow and blue shapes, connecting them to the main vine structure with
+shorter subsidiary vines. Next, leaves are added, either attached to a vine or floating
+on their own, and finally the small double-quote-shaped structure is used to fill in
+small gaps. This ordering of rule phases is imposed on the system by adding 'state'
+preconditions to each rule." Here each rule names its phase; a phase ends when no empty
+circle as large as its threshold remains, and the next begins. This file is a complete
+rule file: copy it to start your own.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from strew.ornament import (
+    FAILURE,
+    SUCCESS,
+    Bezier,
+    Circle,
+    Mark,
+    Pattern,
+    Point,
+    angle_of,
+    offset,
+    tapered_stroke,
+    unit,
+)
+
+COLORS = ("#c0392b", "#e0b030", "#3e6fb0")  # red flowers, yellow and blue shapes
+
+pattern = Pattern(
+    "hierarchy",
+    state={"vines": 0},
+    # (phase, the empty-circle radius at which it hands over to the next)
+    phases=[("vines", 12.0), ("flowers", 6.0), ("leaves", 3.0), ("fillers", None)],
+    min_radius=1.5,
+    description="Fig. 10: vines, then flowers on subsidiary vines, then leaves, then small fillers.",
+    draw_order=["vine", "twig", "leaf", "flower", "quote"],
+)
+
+pattern.element("seed", Point)
+pattern.element("vine", Bezier, orientation=1)
+pattern.element("twig", Bezier)  # a shorter subsidiary vine carrying a flower
+pattern.element("flower", Circle, color=0)
+pattern.element("leaf", [Bezier, Bezier])
+pattern.element("quote", [Circle, Bezier, Circle, Bezier])  # a double-quote-shaped filler
+
+
+def attachment(ctx, parent):
+    """Point of a curve parent nearest the goal centre, and the tangent there."""
+    ts = np.linspace(0.0, 1.0, 25)
+    pts = parent.proxy.point_at(ts)
+    k = int(np.argmin(np.hypot(*(pts - ctx.goal.center).T)))
+    t = parent.proxy.tangent_at(ts[k])
+    if np.dot(t, ctx.goal.center - pts[k]) < 0:
+        t = -t
+    return pts[k], t
+
+
+def fits(ctx, children, parent=None):
+    return not ctx.intersects(children, ignore=[parent] if parent is not None else []) and ctx.inside(children)
+
+
+# -- phase 1: vines ------------------------------------------------------------------------
+def grow_vine(ctx, parent, vine, start, heading, turn):
+    g, rho = ctx.goal.center, ctx.goal.radius
+    end = offset(g, g - start, -0.25 * rho)  # a little short of the goal centre
+    vine.proxy.set(start, angle_of(heading), 0.45, end, angle_of(end - start) + turn * 0.7, 0.35)
+    vine.orientation = turn
+    return fits(ctx, vine, parent)
+
+
+@pattern.rule("seed", children=["vine"], phase="vines")
+def seed_to_vine(ctx, seed, vine):
+    start = seed.proxy.center
+    if not grow_vine(ctx, seed, vine, start, ctx.goal.center - start, 1):
+        return FAILURE
+    seed.sterile = True
+    return SUCCESS
+
+
+@pattern.rule("vine", children=["vine"], phase="vines")
+def vine_to_vine(ctx, parent, vine):
+    start, heading = attachment(ctx, parent)
+    if not grow_vine(ctx, parent, vine, start, heading, -parent.orientation):
+        return FAILURE
+    ctx.state.vines += 1
+    return SUCCESS
+
+
+# -- phase 2: flowers on subsidiary vines ---------------------------------------------------
+@pattern.rule("vine twig", children=["twig", "flower"], phase="flowers")
+def flower_on_twig(ctx, parent, twig, flower):
+    g, rho = ctx.goal.center, ctx.goal.radius
+    start, heading = attachment(ctx, parent)
+    radius = min(6.0, 0.6 * rho)
+    flower.proxy.set(g, radius)
+    flower.color = int(ctx.rng.integers(len(COLORS)))
+    rim = offset(g, start - g, radius)
+    twig.proxy.set(start, angle_of(heading), 0.4, rim, angle_of(g - rim), 0.3)
+    return SUCCESS if fits(ctx, [twig, flower], parent) else FAILURE
+
+
+# -- phase 3: leaves, attached or floating ----------------------------------------------------
+def set_leaf(leaf, base, tip, spread=math.pi / 5):
+    d = angle_of(tip - base)
+    leaf.proxies[0].set(base, d + spread, 0.6, tip, d, 0.4)
+    leaf.proxies[1].set(base, d - spread, 0.6, tip, d, 0.4)
+
+
+@pattern.rule("vine twig", children=["leaf"], phase="leaves")
+def attached_leaf(ctx, parent, leaf):
+    start, _ = attachment(ctx, parent)
+    tip = offset(start, ctx.goal.center - start, min(1.6 * ctx.goal.radius, 9.0))
+    set_leaf(leaf, start, tip)
+    return SUCCESS if fits(ctx, leaf, parent) else FAILURE
+
+
+@pattern.rule("flower leaf", children=["leaf"], phase="leaves")
+def floating_leaf(ctx, parent, leaf):
+    g, rho = ctx.goal.center, ctx.goal.radius
+    across = unit(g - parent.proxy.bounding_circle()[:2])
+    axis = np.array([-across[1], across[0]])
+    set_leaf(leaf, g - 0.8 * rho * axis, g + 0.8 * rho * axis)
+    return SUCCESS if fits(ctx, leaf) else FAILURE
+
+
+# -- phase 4: small double-quote fillers ---------------------------------------------------------
+@pattern.rule("vine twig flower leaf quote", children=["quote"], phase="fillers")
+def quote_filler(ctx, parent, quote):
+    g, rho = ctx.goal.center, ctx.goal.radius
+    size = 0.9 * min(rho, 2.5)
+    down = unit(g - parent.proxy.bounding_circle()[:2])
+    side = np.array([-down[1], down[0]])
+    head = 0.28 * size
+    for k, s in enumerate((-1.0, 1.0)):
+        c = g + s * 0.38 * size * side - 0.3 * size * down
+        quote.proxies[2 * k].set(c, head)
+        p0 = c + head * down
+        quote.proxies[2 * k + 1].set(p0, angle_of(down), 0.5, p0 + 0.55 * size * down - 0.2 * size * side, angle_of(down) + 0.9, 0.4)
+    return SUCCESS if fits(ctx, quote) else FAILURE
+
+
+# -- a coloured rendering ---------------------------------------------------------------------------
+@pattern.render("vine", "color", help="tapered green vines, coloured flowers, filled leaves and fillers (Fig. 10)")
+def color_vine(vine, rc):
+    return [Mark.polygon(tapered_stroke(vine.proxy.polyline(24), (4 * rc.line_width, 1.5 * rc.line_width)), fill="#2f5d3a")]
+
+
+@pattern.render("twig", "color")
+def color_twig(twig, rc):
+    return [Mark.polygon(tapered_stroke(twig.proxy.polyline(16), (1.8 * rc.line_width, 1.0 * rc.line_width)), fill="#3f7a4a")]
+
+
+@pattern.render("flower", "color")
+def color_flower(flower, rc):
+    c, r = flower.proxy.center, flower.proxy.radius
+    t = np.linspace(0, 2 * np.pi, 97)[:-1]
+    n = (6, 3, 4)[flower.color % 3]
+    outline = c + (r * (0.7 + 0.3 * np.abs(np.cos(n / 2 * t))))[:, None] * np.c_[np.cos(t), np.sin(t)]
+    return [
+        Mark([outline], closed=True, fill=COLORS[flower.color % 3], stroke="#2b2f36", stroke_width=rc.line_width),
+        Mark.circle(c, 0.25 * r, fill="#2b2f36", stroke="none"),
+    ]
+
+
+@pattern.render("leaf", "color")
+def color_leaf(leaf, rc):
+    a, b = leaf.proxies[0].polyline(), leaf.proxies[1].polyline()
+    return [Mark.polygon(np.vstack([a, b[::-1][1:-1]]), fill="#6aa84f", stroke="#2b4d24", stroke_width=0.5 * rc.line_width)]
+
+
+@pattern.render("quote", "color")
+def color_quote(quote, rc):
+    marks = []
+    for k in (0, 2):
+        head, tail = quote.proxies[k], quote.proxies[k + 1]
+        marks.append(Mark.circle(head.center, head.radius, fill="#7a4b2a", stroke="none"))
+        marks.append(Mark.polygon(tapered_stroke(tail.polyline(12), (1.4 * head.radius, 0.1 * head.radius)), fill="#7a4b2a"))
+    return marks
