@@ -29,6 +29,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "run": ("strew.cli.run", "Run a program script (planar maps, partitions, mappers) and write its arrangement."),
     "pack": ("strew.cli.pack", "Pack shapes densely and non-periodically into a region (fill-gap)."),
     "grow": ("strew.cli.grow", "Grow an arrangement from an exemplar, one element at a time (Ijiri et al.)."),
+    "synth": ("strew.cli.synth", "Synthesize a texture from exemplars by fast region growing (Davison et al.)."),
 }
 
 

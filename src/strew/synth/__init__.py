@@ -20,6 +20,8 @@ average_neighborhood_distance, energy
 
 from __future__ import annotations
 
+from ._compare import compare_methods, plot_traces
+from ._stroke import brush_points, read_stroke
 from ._api import as_selection, new_state, set_selection, synthesize
 from ._grow import brush, erase, fill, grow, seed_patch
 from ._metric import average_neighborhood_distance, energy, neighborhood_distances
@@ -53,4 +55,8 @@ __all__ = [
     "average_neighborhood_distance",
     "energy",
     "neighborhood_distances",
+    "compare_methods",
+    "plot_traces",
+    "read_stroke",
+    "brush_points",
 ]

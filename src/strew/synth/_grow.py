@@ -48,7 +48,7 @@ def seed_patch(state: SynthState, point: tuple[float, float], *, random: bool = 
     ids, off = ids[near], off[near]
     p = np.asarray(point, float)
     pts = p + map_offsets(np.broadcast_to(p, off.shape), off)
-    ok = state.in_domain(pts) & ~state.conflicts(pts, prep.r[ids])
+    ok = state.in_domain(pts) & ~state.conflicts(pts, ids)
     return state.add(ids[ok], pts[ok])
 
 
@@ -65,7 +65,7 @@ def update_free_space(state: SynthState, elems: np.ndarray, tree: cKDTree) -> No
         return
     fpos, fr, fc, flag, _owner = state.free_points(elems)
     if len(fpos):
-        covered = state.conflicts(fpos, fr, tree=tree, cover=fc)
+        covered = state.conflicts(fpos, None, tree=tree, cover=fc, r=fr)
         state._alive[flag[covered]] = False
         live = ~covered & state.in_domain(fpos)
         fpos = fpos[live]
@@ -161,12 +161,12 @@ def grow(
         if ok.any():
             # ... not intersect O, and lie in the domain
             sub = np.flatnonzero(ok)
-            good = ~state.conflicts(ppos[sub], pr[sub], tree=tree)
+            good = ~state.conflicts(ppos[sub], exv[sub], tree=tree)
             sub2 = sub[good]
             good2 = state.in_domain(ppos[sub2])
             ok[:] = False
             ok[sub2[good2]] = True
-        placed, seed_ok = K.place_proposals(costs, out_ptr, count, ppos, pr, ok, prm.c, prep.factor, 2.0 * prep.factor * cell_r + 1e-12)
+        placed, seed_ok = K.place_proposals(costs, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, ok, prm.c, prep.factor, max(2.0 * prep.factor * cell_r, float(prep.min_dist.max())) + 1e-12)
         new_idx = np.flatnonzero(placed)
         if max_elements is not None and state.n + len(new_idx) > max_elements:
             new_idx = new_idx[: max(0, max_elements - state.n)]

@@ -277,7 +277,7 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
 
 
 @numba.njit(cache=True)
-def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_ok, c_ratio, factor, cell):
+def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell):
     """Sequential generation over seeds (Algorithm 1, §5.1).
 
     For each seed, candidates are visited by increasing distance; the best one ``e_0``
@@ -294,13 +294,17 @@ def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_ok, c_ratio, f
     prop_pos : (P, 2) float
     prop_r : (P,) float
         Bounding radii.
+    prop_sk : (P,) int
+        Kind-in-exemplar class of each proposal (see ``Prepared.min_dist``).
+    min_dist : (S, S) float
+        Closest approach of two classes in the exemplar (0 where unknown).
     prop_ok : (P,) bool
     c_ratio : float
         The ratio constant c.
     factor : float
         Two elements intersect when ``|p - q| < factor (r_p + r_q)``.
     cell : float
-        Grid cell for the dynamic intersection test (at least ``2 factor max r``).
+        Grid cell for the dynamic intersection test (at least the largest limit).
 
     Returns
     -------
@@ -359,7 +363,7 @@ def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_ok, c_ratio, f
                         while q >= 0:
                             dx = px - prop_pos[q, 0]
                             dy = py - prop_pos[q, 1]
-                            lim = factor * (prop_r[t] + prop_r[q])
+                            lim = max(factor * (prop_r[t] + prop_r[q]), min_dist[prop_sk[t], prop_sk[q]])
                             if dx * dx + dy * dy < lim * lim:
                                 hit = True
                                 break

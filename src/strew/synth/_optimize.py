@@ -170,7 +170,8 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
 
 
 def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -> None:
-    """Put back moved elements that now intersect another element (up to 4 rounds)."""
+    """Put back moved elements that now intersect another element or come closer than
+    the exemplar allows (up to 4 rounds)."""
     f = state.prep.factor
     for _ in range(4):
         pos = state.pos
@@ -178,12 +179,15 @@ def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -
         was = np.zeros(state.n, bool)
         was[moved] = True
         tree = cKDTree(pos)
-        pairs = tree.query_pairs(2 * f * float(r.max()), output_type="ndarray")
+        md = state.prep.min_dist
+        sk = state.prep.skind[state.src]
+        pairs = tree.query_pairs(max(2 * f * float(r.max()), float(md.max())), output_type="ndarray")
         if len(pairs) == 0:
             return
         a, b = pairs[:, 0], pairs[:, 1]
         d = np.hypot(*(pos[a] - pos[b]).T)
-        bad = (d < f * (r[a] + r[b])) & (was[a] | was[b])
+        lim = np.maximum(f * (r[a] + r[b]), md[sk[a], sk[b]])
+        bad = (d < lim) & (was[a] | was[b])
         if not bad.any():
             return
         culprits = np.unique(np.concatenate([a[bad][was[a[bad]]], b[bad][was[b[bad]]]]))

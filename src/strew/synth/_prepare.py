@@ -40,6 +40,12 @@ class Prepared:
         clustering, with the bounding radius r_v of a free-space point and its cover
         radius (3/4 of the exemplar spacing around the elements it stands for): an output
         element closer than that covers it.
+    skind : (n,) int
+        Class of each element: its kind within its exemplar.
+    min_dist : (S, S) float
+        0.95 times the closest approach of two classes in the exemplar (0 across
+        exemplars): no new element comes closer than that to an element (spacing learned
+        from the exemplar, on top of the bounding discs).
     factor : float
         Intersection factor: two elements intersect when
         ``|p - q| < factor (r_p + r_q)``; below 1 only when the exemplar's own bounding
@@ -68,6 +74,8 @@ class Prepared:
     free_off: np.ndarray
     free_r: np.ndarray
     free_cover: np.ndarray
+    skind: np.ndarray
+    min_dist: np.ndarray
     factor: float
     kind_cost: float
     density: np.ndarray
@@ -241,12 +249,11 @@ def dbscan(points: np.ndarray, eps: float, min_samples: int) -> np.ndarray:
     labels = np.full(n, -1, dtype=np.int64)
     core_ids = np.flatnonzero(core)
     _, labels[core_ids] = np.unique(comp[core_ids], return_inverse=True)
-    # border points: attach to a core neighbour
-    for i, j in pairs:
-        if labels[i] < 0 and core[j]:
-            labels[i] = labels[j]
-        elif labels[j] < 0 and core[i]:
-            labels[j] = labels[i]
+    # border points: join the cluster of a core neighbour
+    both = np.r_[pairs, pairs[:, ::-1]]
+    link = both[(labels[both[:, 0]] < 0) & core[both[:, 1]]]
+    if len(link):
+        labels[link[::-1, 0]] = labels[link[::-1, 1]]  # first core neighbour wins
     return labels
 
 
@@ -366,6 +373,15 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         factor = float(min(1.0, 0.95 * ratio.min()))
     else:
         factor = 1.0
+    _, skind = np.unique(np.c_[sources, kind], axis=0, return_inverse=True)
+    skind = skind.ravel().astype(np.int64)
+    ns = int(skind.max()) + 1
+    min_dist = np.full((ns, ns), np.inf)
+    if len(idx):
+        dist = np.hypot(off[:, 0], off[:, 1])
+        np.minimum.at(min_dist, (skind[owner], skind[idx]), dist)
+    # classes never seen within a neighbourhood of each other: no constraint beyond r
+    min_dist = np.where(np.isfinite(min_dist), 0.95 * min_dist, 0.0)
     if factor <= 0:
         raise InputError("exemplar: two elements share a position; cannot learn spacing")
     columns = {k_: np.asarray(v) for k_, v in arr.columns.items() if k_ not in ("radius", "neighborhood_radius", "void", "exemplar")}
@@ -392,6 +408,8 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         free_off=free_off,
         free_r=free_r,
         free_cover=free_cover,
+        skind=skind,
+        min_dist=min_dist,
         factor=factor,
         kind_cost=float(kind_cost),
         density=density,

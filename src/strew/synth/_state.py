@@ -278,20 +278,27 @@ class SynthState:
             ok &= np.any(d <= self.brush_radii[np.minimum(j, len(self.brush_radii) - 1)], axis=1)
         return ok
 
-    def conflicts(self, pts: np.ndarray, r: np.ndarray, tree: cKDTree | None = None, cover: np.ndarray | None = None) -> np.ndarray:
-        """(m,) bool: would an element of radius ``r`` at ``pts`` intersect an output element?
+    def conflicts(self, pts: np.ndarray, src: np.ndarray | None, tree: cKDTree | None = None, cover: np.ndarray | None = None, r: np.ndarray | None = None) -> np.ndarray:
+        """(m,) bool: would copies of exemplar elements ``src`` at ``pts`` intersect O?
 
-        With ``cover`` (m,), an output element closer than ``cover`` also counts (free-space
-        points, §5.1).
+        Two elements intersect when ``|p - q| < max(factor (r_p + r_q), min_dist)`` (see
+        :class:`Prepared`). With ``cover`` (m,), an output element closer than ``cover``
+        also counts (free-space points, §5.1); ``r`` overrides the radii of ``src``.
+        Without ``src`` (free-space points) only the discs and ``cover`` count.
         """
         if self.n == 0 or len(pts) == 0:
             return np.zeros(len(pts), bool)
+        prep = self.prep
         if tree is None:
             tree = cKDTree(self.pos)
-        f = self.prep.factor
+        f = prep.factor
+        rq = prep.r[np.asarray(src, np.int64)] if r is None else np.asarray(r, float)
         rr = self.r
-        kq = min(8, self.n)
-        bound = f * (float(np.max(r)) + float(rr.max()))
+        sk = self.prep.skind[self.src]
+        kq = min(16, self.n)
+        bound = f * (float(np.max(rq)) + float(rr.max()))
+        if src is not None:
+            bound = max(bound, float(prep.min_dist.max()))
         if cover is not None:
             bound = max(bound, float(np.max(cover)))
         d, j = tree.query(pts, k=kq, distance_upper_bound=bound + 1e-12)
@@ -299,7 +306,9 @@ class SynthState:
         j = j.reshape(len(pts), kq)
         valid = j < self.n
         jj = np.where(valid, j, 0)
-        lim = f * (r[:, None] + rr[jj])
+        lim = f * (rq[:, None] + rr[jj])
+        if src is not None:
+            lim = np.maximum(lim, prep.min_dist[prep.skind[np.asarray(src, np.int64)][:, None], sk[jj]])
         if cover is not None:
             lim = np.maximum(lim, cover[:, None])
         hit = valid & (d < lim)
