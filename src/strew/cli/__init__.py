@@ -30,6 +30,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "pack": ("strew.cli.pack", "Pack shapes densely and non-periodically into a region (fill-gap)."),
     "grow": ("strew.cli.grow", "Grow an arrangement from an exemplar, one element at a time (Ijiri et al.)."),
     "synth": ("strew.cli.synth", "Synthesize a texture from exemplars by fast region growing (Davison et al.)."),
+    "studio": ("strew.cli.studio", "Paint with example palettes in the browser (brush, spray, filler, eraser)."),
 }
 
 

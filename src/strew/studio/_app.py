@@ -1,0 +1,184 @@
+"""The studio's web server: FastAPI on uvicorn, a static front end and one websocket.
+
+``GET /`` serves the page, ``/static/...`` its JavaScript modules and stylesheet, and
+``/ws`` carries the protocol of :mod:`strew.studio._protocol`. Messages are handled one
+at a time by a worker thread, so that the receiving side stays responsive: consecutive
+stroke segments waiting in the queue are merged into one (the generative brush then
+works on a longer segment instead of falling behind), and ``stop`` takes effect at
+once.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from pathlib import Path
+from typing import Any
+from urllib.parse import urlsplit
+
+from fastapi import FastAPI, WebSocket, WebSocketDisconnect
+from fastapi.responses import FileResponse, JSONResponse
+from fastapi.staticfiles import StaticFiles
+
+from .._errors import Cancelled, InputError
+from ._protocol import MAX_MESSAGE_BYTES, MAX_POINTS, parse_message
+from ._session import Session
+
+__all__ = ["create_app", "STATIC_DIR", "LOCAL_HOSTS"]
+
+STATIC_DIR = Path(__file__).resolve().parent / "static"
+LOCAL_HOSTS = ("127.0.0.1", "localhost", "::1", "[::1]")
+
+
+def _dumps(msg: dict[str, Any]) -> str:
+    return json.dumps(msg, separators=(",", ":"), allow_nan=False, default=_plain)
+
+
+def _plain(obj: Any) -> Any:
+    import numpy as np
+
+    if isinstance(obj, np.generic):
+        return obj.item()
+    if isinstance(obj, np.ndarray):
+        return obj.tolist()
+    raise TypeError(f"{type(obj).__name__} is not JSON serialisable")
+
+
+def _origin_ok(origin: str | None, allowed_hosts: tuple[str, ...]) -> bool:
+    """A websocket from a page of another site is refused (cross-site websocket hijacking)."""
+    if origin is None:
+        return True
+    host = urlsplit(origin).hostname
+    return host is not None and (host in allowed_hosts or f"[{host}]" in allowed_hosts)
+
+
+def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[str, ...] = LOCAL_HOSTS) -> Any:
+    """The FastAPI application of a studio on ``project_dir``.
+
+    Parameters
+    ----------
+    project_dir : path
+        The only folder the studio reads and writes.
+    seed : int
+        Seed of each session's random generator.
+    allowed_hosts : tuple of str
+        Host names a page may be served under; a websocket whose ``Origin`` names another
+        host is refused.
+    """
+    root = Path(project_dir).resolve()
+    if not root.is_dir():
+        raise InputError(f"PROJECT_DIR {str(project_dir)!r}: no such folder")
+    app = FastAPI(title="strew studio", docs_url=None, redoc_url=None, openapi_url=None)
+    app.mount("/static", StaticFiles(directory=STATIC_DIR), name="static")
+    app.state.sessions = 0
+
+    @app.get("/")
+    def index() -> FileResponse:
+        return FileResponse(STATIC_DIR / "index.html", media_type="text/html")
+
+    @app.get("/health")
+    def health() -> JSONResponse:
+        return JSONResponse({"ok": True, "project": root.name})
+
+    @app.websocket("/ws")
+    async def ws(websocket: WebSocket) -> None:
+        if not _origin_ok(websocket.headers.get("origin"), allowed_hosts):
+            await websocket.close(code=1008)
+            return
+        await websocket.accept()
+        session = Session(root, seed=seed)
+        app.state.sessions += 1
+        loop = asyncio.get_running_loop()
+        inbox: asyncio.Queue[dict[str, Any] | None] = asyncio.Queue()
+        outbox: asyncio.Queue[str | None] = asyncio.Queue()
+
+        def emit(msg: dict[str, Any]) -> None:  # from the worker thread
+            loop.call_soon_threadsafe(outbox.put_nowait, _dumps(msg))
+
+        def error(message: str, ref: Any = None) -> str:
+            return _dumps({"type": "error", "message": message, "ref": ref if isinstance(ref, str) else None})
+
+        async def receiver() -> None:
+            try:
+                while True:
+                    data = await websocket.receive()
+                    if data["type"] == "websocket.disconnect":
+                        break
+                    text = data.get("text")
+                    if text is None:
+                        raw = data.get("bytes") or b""
+                        if len(raw) > MAX_MESSAGE_BYTES:
+                            await outbox.put(error(f"message: {len(raw)} bytes is over the limit of {MAX_MESSAGE_BYTES}"))
+                            continue
+                        text = raw.decode("utf-8", errors="replace")
+                    try:
+                        msg = parse_message(text)
+                    except InputError as exc:
+                        await outbox.put(error(str(exc)))
+                        continue
+                    if msg["type"] == "stop":  # takes effect while a fill runs
+                        session.cancel.set()
+                    await inbox.put(msg)
+            except WebSocketDisconnect:
+                pass
+            finally:
+                session.cancel.set()
+                await inbox.put(None)
+
+        def merge_moves(msg: dict[str, Any]) -> dict[str, Any]:
+            """Merge stroke segments already waiting in the queue into ``msg``."""
+            pts = msg.get("points")
+            if not isinstance(pts, list):
+                return msg
+            while not inbox.empty():
+                nxt = inbox._queue[0]  # type: ignore[attr-defined]
+                if nxt is None or nxt.get("type") != "stroke_move" or not isinstance(nxt.get("points"), list):
+                    break
+                if len(pts) + len(nxt["points"]) > MAX_POINTS:
+                    break
+                inbox.get_nowait()
+                pts = pts + nxt["points"]
+            return {**msg, "points": pts}
+
+        async def worker() -> None:
+            while True:
+                msg = await inbox.get()
+                if msg is None:
+                    break
+                if msg["type"] == "stroke_move":
+                    msg = merge_moves(msg)
+                try:
+                    replies = await asyncio.to_thread(session.handle, msg, emit)
+                except InputError as exc:
+                    await outbox.put(error(str(exc).replace("\n", " "), msg.get("type")))
+                    continue
+                except Cancelled:
+                    await outbox.put(error("cancelled", msg.get("type")))
+                    continue
+                except Exception as exc:  # the server keeps serving
+                    await outbox.put(error(f"internal error: {type(exc).__name__}: {exc}", msg.get("type")))
+                    continue
+                for r in replies:
+                    await outbox.put(_dumps(r))
+                await outbox.put(_dumps({"type": "done", "ref": msg["type"], "id": msg.get("id") if isinstance(msg.get("id"), int) else None}))
+            await outbox.put(None)
+
+        async def sender() -> None:
+            while True:
+                text = await outbox.get()
+                if text is None:
+                    break
+                try:
+                    await websocket.send_text(text)
+                except Exception:
+                    break
+
+        tasks = [asyncio.create_task(receiver()), asyncio.create_task(worker()), asyncio.create_task(sender())]
+        try:
+            await asyncio.gather(*tasks)
+        finally:
+            for t in tasks:
+                t.cancel()
+            app.state.sessions -= 1
+
+    return app

@@ -1,0 +1,980 @@
+"""One studio session: the example palette, the scene and their history.
+
+The session is plain Python, independent of the web server: :meth:`Session.handle`
+takes one parsed message and returns the replies; long operations (the filler) also
+stream partial results through an ``emit`` callback. It is a thin layer over the
+library:
+
+- Davison et al. (§5.4-5.5): the generative brush, the filler and the eraser work on a
+  :class:`strew.synth.SynthState` (``strew.synth.brush``, ``fill``, ``erase``); the
+  palette is a set of exemplars with a selection (``strew.synth.Palette``).
+- Ijiri et al. (§3): the spray, flow-field and boundary tools drive
+  :func:`strew.grow.grow`; the flow field is :func:`strew.fields.flow_field`;
+  connectivity edges of an exemplar come from :func:`strew.grow.analyze` and are
+  flipped with :func:`strew.grow.flip_edge`.
+
+The scene is two parts: ``fixed`` (an :class:`~strew.Arrangement` of elements that the
+current synthesis state does not own: sprayed elements, a loaded scene, elements made
+with an earlier palette) and ``state`` (the live synthesis output, which the brush
+re-optimises). The browser sees their concatenation.
+"""
+
+from __future__ import annotations
+
+import copy
+import threading
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import shapely
+
+from .._errors import Cancelled, InputError
+from ..arrangement import Arrangement, concat
+from ..region import Region
+from ..shape import Shape
+from ._paths import list_project_files, resolve_in_project
+from ._protocol import get_int, get_names, get_number, get_points, get_str
+
+__all__ = ["Session", "PALETTE_FILE", "SCENE_FILE", "TOOLS"]
+
+PALETTE_FILE = "palette.json"
+SCENE_FILE = "scene.json"
+TOOLS = ("brush", "spray", "erase", "flow", "boundary", "region")
+GROW_MODES = ("fixed", "rotate", "flow")
+MAX_HISTORY = 64
+MAX_SCENE = 200_000
+
+Emit = Callable[[dict[str, Any]], None]
+
+
+def _r(a: np.ndarray, digits: int = 3) -> list:
+    return np.round(np.asarray(a, dtype=float), digits).tolist()
+
+
+def _empty(shapes: dict[str, Shape]) -> Arrangement:
+    return Arrangement(shapes, np.zeros(0, np.int32), [], [])
+
+
+class Session:
+    """State of one studio: palette, selection, scene, strokes, region and history.
+
+    Parameters
+    ----------
+    project_dir : path
+        Every file the studio reads or writes lies inside it.
+    seed : int
+        Seed of the session's random generator (each operation draws its own seed from
+        it, so that a session replays identically).
+    size : (float, float)
+        The default region: the rectangle ``[0, W] x [0, H]``.
+    """
+
+    def __init__(self, project_dir: str | Path, *, seed: int = 0, size: tuple[float, float] = (800.0, 600.0)) -> None:
+        self.root = Path(project_dir).resolve()
+        if not self.root.is_dir():
+            raise InputError(f"PROJECT_DIR {str(project_dir)!r}: no such folder")
+        self.seed = int(seed)
+        self.rng = np.random.default_rng(self.seed)
+        self.shapes: dict[str, Shape] = {}
+        self.kinds: list[str] = []
+        self.palette: dict[str, Arrangement] = {}
+        self.selection: list[str] = []
+        self.region = Region.rectangle(*size)
+        self.fixed = _empty({})
+        self.state: Any = None
+        self.state_version = -1
+        self.palette_version = 0
+        self.flow_strokes: list[np.ndarray] = []
+        self.boundary_strokes: list[np.ndarray] = []
+        self.flow: Any = None
+        self.grow_mode = "fixed"
+        self.undo_stack: list[tuple] = []
+        self.redo_stack: list[tuple] = []
+        self.stroke: dict[str, Any] | None = None
+        self.distance = float("nan")
+        self.cancel = threading.Event()
+        self._sent: dict[str, np.ndarray] | None = None
+        self._refs: dict[tuple[str, int], Any] = {}
+
+    # ------------------------------------------------------------------ dispatch
+    def handle(self, msg: dict[str, Any], emit: Emit | None = None) -> list[dict[str, Any]]:
+        """Apply one message; returns the replies (``emit`` gets streamed partial results).
+
+        Raises
+        ------
+        InputError
+            For a bad field; the server turns it into an ``error`` reply.
+        """
+        handler = getattr(self, "_on_" + msg["type"])
+        return handler(msg, emit or (lambda m: None))
+
+    # ------------------------------------------------------------------ library
+    def _add_shapes(self, arr: Arrangement, prefix: str) -> Arrangement:
+        """Merge an arrangement's kinds into the session library (renaming clashes)."""
+        rename: dict[str, str] = {}
+        for name, sh in arr.shapes.items():
+            if name in self.shapes and self.shapes[name] != sh:
+                new = f"{prefix}.{name}"
+                i = 2
+                while new in self.shapes and self.shapes[new] != sh:
+                    new = f"{prefix}.{name}{i}"
+                    i += 1
+                rename[name] = new
+        if rename:
+            arr = arr.replace(shapes={rename.get(k, k): v for k, v in arr.shapes.items()}, kind=arr.kind)
+        for name, sh in arr.shapes.items():
+            if name not in self.shapes:
+                self.shapes[name] = sh
+                self.kinds.append(name)
+        return arr
+
+    def shapes_message(self) -> dict[str, Any]:
+        out = {}
+        for name in self.kinds:
+            sh = self.shapes[name]
+            out[name] = {
+                "paths": [{"points": _r(p.points, 4), "closed": bool(p.closed)} for p in sh.paths],
+                "style": {k: v for k, v in sh.style.items() if isinstance(v, (str, int, float))},
+                "radius": float(sh.radius),
+            }
+        return {"type": "shapes", "kinds": list(self.kinds), "shapes": out}
+
+    # ------------------------------------------------------------------ scene
+    def scene(self) -> Arrangement:
+        """The scene as one arrangement (fixed elements, then the synthesis output)."""
+        parts = [self.fixed]
+        if self.state is not None and self.state.n:
+            parts.append(self.state.to_arrangement(clip=False))
+        arr = concat(parts) if len(parts) > 1 else self.fixed
+        return arr.replace(region=self.region)
+
+    def _arrays(self) -> dict[str, np.ndarray]:
+        arr = self.scene()
+        lookup = np.array([self.kinds.index(k) for k in arr.kinds], dtype=np.int64) if arr.kinds else np.zeros(0, np.int64)
+        return {
+            "k": lookup[arr.kind] if len(arr) else np.zeros(0, np.int64),
+            "x": np.round(arr.x, 3),
+            "y": np.round(arr.y, 3),
+            "r": np.round(arr.rotation, 4),
+            "s": np.round(arr.scale, 4),
+        }
+
+    def scene_message(self, *, full: bool = False) -> dict[str, Any] | None:
+        """The change of the scene since the last message: ``replace`` or ``patch``.
+
+        A ``patch`` updates elements ``update.index`` in place and appends ``append``;
+        ``None`` when nothing changed.
+        """
+        new = self._arrays()
+        old = self._sent
+        self._sent = new
+        n1 = len(new["k"])
+        if full or old is None or n1 < len(old["k"]):
+            return {"type": "scene", "op": "replace", "n": n1, **{c: v.tolist() for c, v in new.items()}}
+        n0 = len(old["k"])
+        changed = np.zeros(n0, bool)
+        for c in new:
+            changed |= old[c] != new[c][:n0]
+        if 2 * changed.sum() > n0 + 1:
+            return {"type": "scene", "op": "replace", "n": n1, **{c: v.tolist() for c, v in new.items()}}
+        if n1 == n0 and not changed.any():
+            return None
+        idx = np.flatnonzero(changed)
+        return {
+            "type": "scene",
+            "op": "patch",
+            "n": n1,
+            "update": {"index": idx.tolist(), **{c: v[idx].tolist() for c, v in new.items()}},
+            "append": {c: v[n0:].tolist() for c, v in new.items()},
+        }
+
+    def _scene_count(self) -> int:
+        return len(self.fixed) + (self.state.n if self.state is not None else 0)
+
+    # ------------------------------------------------------------------ palette
+    def _usable(self) -> dict[str, Arrangement]:
+        """Exemplars that synthesis can use (Davison §4.1 needs two distinct positions)."""
+        from ..synth import element_parameters
+
+        out = {}
+        for name, ex in self.palette.items():
+            try:
+                element_parameters(ex, name=name)
+            except InputError:
+                continue
+            out[name] = ex
+        return out
+
+    def _selection(self) -> list[str]:
+        usable = self._usable()
+        sel = [n for n in self.selection if n in usable]
+        if not self.palette:
+            raise InputError("palette: empty; load an exemplar first")
+        if not sel:
+            raise InputError("selection: empty; select at least one exemplar with two or more elements")
+        return sel
+
+    def _palette_changed(self) -> None:
+        self.palette_version += 1
+        self._refs.clear()
+
+    def _ensure_state(self) -> Any:
+        """The synthesis state for the current palette and selection (Davison §5.5).
+
+        When the palette changed since the state was made, its elements move to the fixed
+        part of the scene and a new state starts from the new palette.
+        """
+        from .. import synth
+
+        sel = self._selection()
+        if self.state is not None and self.state_version != self.palette_version:
+            self.fixed = self.scene().replace(region=None)
+            self.state = None
+        if self.state is None:
+            from ..synth import Palette
+
+            self.state = synth.new_state(Palette(self._usable()), self.region, selection=sel, rng=int(self.rng.integers(2**31)))
+            self.state_version = self.palette_version
+        else:
+            synth.set_selection(self.state, sel)
+            self.state.region = self.region
+        return self.state
+
+    def _reference(self, name: str) -> Any:
+        """Ijiri §4 analysis of exemplar ``name`` (cached per palette version)."""
+        from ..grow import analyze
+
+        key = (name, self.palette_version)
+        if key not in self._refs:
+            self._refs[key] = analyze(self.palette[name])
+        return self._refs[key]
+
+    def _edges(self, name: str) -> tuple[list, str]:
+        try:
+            return self._reference(name).edges.tolist(), ""
+        except InputError as exc:
+            return [], str(exc)
+
+    def palette_message(self) -> dict[str, Any]:
+        from ..synth import element_parameters
+
+        items = []
+        for name, ex in self.palette.items():
+            lookup = np.array([self.kinds.index(k) for k in ex.kinds], dtype=np.int64) if ex.kinds else np.zeros(0, np.int64)
+            try:
+                r, rbar = element_parameters(ex, name=name)
+                note = ""
+            except InputError as exc:
+                r = np.array([ex.shapes[k].radius for k in ex.kind_names]) * ex.scale if len(ex) else np.zeros(0)
+                rbar = np.full(len(ex), np.nan)
+                note = str(exc)
+            edges, enote = self._edges(name)
+            items.append(
+                {
+                    "name": name,
+                    "n": len(ex),
+                    "selected": name in self.selection,
+                    "k": lookup[ex.kind].tolist() if len(ex) else [],
+                    "x": _r(ex.x),
+                    "y": _r(ex.y),
+                    "r": _r(ex.rotation, 4),
+                    "s": _r(ex.scale, 4),
+                    "radius": [None if not np.isfinite(v) else round(float(v), 3) for v in r],
+                    "nradius": [None if not np.isfinite(v) else round(float(v), 3) for v in rbar],
+                    "edges": edges,
+                    "note": note or enote,
+                }
+            )
+        return {"type": "palette", "exemplars": items, "selection": list(self.selection)}
+
+    # ------------------------------------------------------------------ strokes, field, status
+    def strokes_message(self) -> dict[str, Any]:
+        arrows: list[list[float]] = []
+        if self.flow is not None:
+            x0, y0, x1, y1 = self.region.bounds
+            step = max(x1 - x0, y1 - y0) / 24.0
+            gx, gy = np.meshgrid(np.arange(x0 + step / 2, x1, step), np.arange(y0 + step / 2, y1, step))
+            pts = np.c_[gx.ravel(), gy.ravel()]
+            pts = pts[self.region.contains(pts)]
+            if len(pts):
+                ang = self.flow.angle(pts)
+                arrows = np.round(np.c_[pts, ang], 4).tolist()
+        return {
+            "type": "strokes",
+            "flow": [_r(s) for s in self.flow_strokes],
+            "boundary": [_r(s) for s in self.boundary_strokes],
+            "arrows": arrows,
+            "arrow_length": float(max(self.region.bounds[2] - self.region.bounds[0], self.region.bounds[3] - self.region.bounds[1]) / 30.0),
+            "region": [_r(np.asarray(ring.coords)) for poly in shapely.get_parts(self.region.geometry) for ring in [poly.exterior, *poly.interiors]],
+        }
+
+    def status_message(self, message: str = "") -> dict[str, Any]:
+        rate = None
+        if self.stroke is not None and self.stroke.get("compute", 0) > 0:
+            rate = self.stroke["added"] / self.stroke["compute"]
+        return {
+            "type": "status",
+            "count": self._scene_count(),
+            "synth_rate": rate,
+            "distance": None if not np.isfinite(self.distance) else round(self.distance, 5),
+            "undo": len(self.undo_stack),
+            "redo": len(self.redo_stack),
+            "grow_mode": self.grow_mode,
+            "message": message,
+        }
+
+    def full_state(self) -> list[dict[str, Any]]:
+        """Everything the browser needs to draw the studio from scratch."""
+        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message()]
+        scene = self.scene_message(full=True)
+        if scene is not None:
+            msgs.append(scene)
+        msgs.append(self.files_message())
+        msgs.append(self.status_message())
+        return msgs
+
+    def files_message(self) -> dict[str, Any]:
+        from .._resources import examples_dir
+
+        try:
+            ex = sorted(p.name for p in (examples_dir() / "exemplars").iterdir() if p.suffix in (".svg", ".json"))
+        except FileNotFoundError:
+            ex = []
+        return {"type": "files", "files": list_project_files(self.root), "examples": ex}
+
+    def _measure(self) -> None:
+        """Average neighbourhood distance of the synthesis output (Davison Eq. 5), sampled."""
+        from ..synth import average_neighborhood_distance
+
+        if self.state is not None and self.state.n >= 2 and self.state_version == self.palette_version:
+            try:
+                self.distance = float(average_neighborhood_distance(self.state, sample=200))
+            except (InputError, ValueError):
+                self.distance = float("nan")
+
+    # ------------------------------------------------------------------ history
+    def _copy_state(self) -> Any:
+        if self.state is None:
+            return None
+        st = self.state
+        memo = {id(st.prep): st.prep, id(st.region): st.region}
+        return copy.deepcopy(st, memo)
+
+    def _snapshot(self) -> tuple:
+        return (
+            self.fixed,
+            self._copy_state(),
+            self.state_version,
+            dict(self.palette),
+            list(self.selection),
+            self.palette_version,
+            self.region,
+            list(self.flow_strokes),
+            list(self.boundary_strokes),
+        )
+
+    def _restore(self, snap: tuple) -> None:
+        (self.fixed, self.state, self.state_version, self.palette, self.selection, pv, self.region, self.flow_strokes, self.boundary_strokes) = snap
+        if pv != self.palette_version:
+            self._refs.clear()
+        self.palette_version = pv
+        self._rebuild_flow()
+        if self.state is not None and self.state_version == self.palette_version:
+            from .. import synth
+
+            sel = [n for n in self.selection if n in self.state.prep.names]
+            if sel:
+                synth.set_selection(self.state, sel)
+            self.state.region = self.region
+
+    def _push_history(self) -> None:
+        self.undo_stack.append(self._snapshot())
+        del self.undo_stack[:-MAX_HISTORY]
+        self.redo_stack.clear()
+
+    def _all_messages(self, message: str = "") -> list[dict[str, Any]]:
+        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message()]
+        scene = self.scene_message()
+        if scene is not None:
+            msgs.append(scene)
+        msgs.append(self.status_message(message))
+        return msgs
+
+    def _on_undo(self, msg: dict, emit: Emit) -> list[dict]:
+        if not self.undo_stack:
+            return [self.status_message("nothing to undo")]
+        self.redo_stack.append(self._snapshot())
+        self._restore(self.undo_stack.pop())
+        self._measure()
+        return self._all_messages("undone")
+
+    def _on_redo(self, msg: dict, emit: Emit) -> list[dict]:
+        if not self.redo_stack:
+            return [self.status_message("nothing to redo")]
+        self.undo_stack.append(self._snapshot())
+        self._restore(self.redo_stack.pop())
+        self._measure()
+        return self._all_messages("redone")
+
+    # ------------------------------------------------------------------ simple messages
+    def _on_hello(self, msg: dict, emit: Emit) -> list[dict]:
+        self._sent = None
+        return self.full_state()
+
+    def _on_ping(self, msg: dict, emit: Emit) -> list[dict]:
+        return [{"type": "pong", "t": msg.get("t") if isinstance(msg.get("t"), (int, float)) else None}]
+
+    def _on_list_files(self, msg: dict, emit: Emit) -> list[dict]:
+        return [self.files_message()]
+
+    def _on_stop(self, msg: dict, emit: Emit) -> list[dict]:
+        self.cancel.set()
+        return []
+
+    def _on_settings(self, msg: dict, emit: Emit) -> list[dict]:
+        if "grow_mode" in msg:
+            self.grow_mode = get_str(msg, "grow_mode", choices=GROW_MODES)
+        return [self.status_message()]
+
+    # ------------------------------------------------------------------ palette messages
+    def _on_load_exemplar(self, msg: dict, emit: Emit) -> list[dict]:
+        """Load an exemplar (SVG or JSON) from PROJECT_DIR, or one of strew's examples."""
+        from ..io import load
+
+        if "example" in msg:
+            from .._resources import examples_dir
+
+            name = get_str(msg, "example")
+            allowed = {p.name: p for p in (examples_dir() / "exemplars").iterdir()}
+            if name not in allowed:
+                raise InputError(f"example: no example exemplar {name[:60]!r}")
+            path = allowed[name]
+        else:
+            path = resolve_in_project(self.root, msg.get("path"), suffixes=(".svg", ".json"), must_exist=True)
+        arr = load(path)
+        if len(arr) == 0:
+            raise InputError(f"{path.name}: no elements in this exemplar")
+        self._push_history()
+        base = Path(path).stem
+        # a saved palette document holds several exemplars (an "exemplar" column)
+        if "exemplar" in arr and "palette" in arr.extra:
+            added = self._split_palette(arr)
+        else:
+            added = [self._add_exemplar(base, arr.replace(region=None, meta={}))]
+        if not any(n in self.selection for n in self.palette):
+            self.selection = [n for n in added if len(self.palette[n]) >= 2][:1]
+        self._palette_changed()
+        return self._all_messages(f"loaded {', '.join(added)}")
+
+    def _add_exemplar(self, base: str, arr: Arrangement) -> str:
+        name = base
+        i = 2
+        while name in self.palette:
+            name = f"{base}{i}"
+            i += 1
+        arr = self._add_shapes(arr, name)
+        for col in ("radius", "neighborhood_radius"):
+            if col in arr:
+                arr = arr.with_columns(**{col: np.asarray(arr[col], dtype=float)})
+        self.palette[name] = arr
+        return name
+
+    def _split_palette(self, arr: Arrangement) -> list[str]:
+        tags = np.asarray(arr["exemplar"]).astype(str)
+        info = arr.extra.get("palette", {}) if isinstance(arr.extra.get("palette"), dict) else {}
+        offsets = info.get("offsets", {}) if isinstance(info.get("offsets"), dict) else {}
+        conn = info.get("connectivity", {}) if isinstance(info.get("connectivity"), dict) else {}
+        added = []
+        for tag in dict.fromkeys(tags.tolist()):
+            sub = arr.select(tags == tag).without_columns("exemplar")
+            off = offsets.get(tag, (0.0, 0.0))
+            try:
+                dx, dy = float(off[0]), float(off[1])
+            except (TypeError, ValueError, IndexError):
+                raise InputError(f"palette.offsets.{tag}: must be [dx, dy]") from None
+            extra = {"connectivity": {"edges": conn[tag]}} if tag in conn else {}
+            sub = sub.replace(x=sub.x - dx, y=sub.y - dy, region=None, meta={}, extra=extra)
+            added.append(self._add_exemplar(tag, sub))
+        sel = info.get("selection")
+        if isinstance(sel, list):
+            self.selection = [s for s in sel if isinstance(s, str) and s in self.palette]
+        return added
+
+    def _exemplar(self, msg: dict) -> str:
+        name = get_str(msg, "exemplar")
+        if name not in self.palette:
+            raise InputError(f"exemplar: no exemplar {name[:60]!r} in the palette")
+        return name
+
+    def _on_select(self, msg: dict, emit: Emit) -> list[dict]:
+        names = get_names(msg)
+        for n in names:
+            if n not in self.palette:
+                raise InputError(f"select: no exemplar {n[:60]!r} in the palette")
+        self._push_history()
+        self.selection = list(dict.fromkeys(names))
+        return [self.palette_message(), self.status_message()]
+
+    def _on_palette_new(self, msg: dict, emit: Emit) -> list[dict]:
+        base = get_str(msg, "name", default="exemplar")
+        self._push_history()
+        name = self._add_exemplar(base, _empty(dict(self.shapes)))
+        self._palette_changed()
+        return [self.palette_message(), self.status_message(f"new exemplar {name}")]
+
+    def _on_palette_remove(self, msg: dict, emit: Emit) -> list[dict]:
+        name = self._exemplar(msg)
+        self._push_history()
+        del self.palette[name]
+        self.selection = [n for n in self.selection if n != name]
+        self._palette_changed()
+        return [self.palette_message(), self.status_message(f"removed {name}")]
+
+    def _on_palette_edit(self, msg: dict, emit: Emit) -> list[dict]:
+        """Edit an exemplar by hand: place, move, delete an element, or set its radii (§5.5)."""
+        name = self._exemplar(msg)
+        ex = self.palette[name]
+        op = get_str(msg, "op", choices=("place", "move", "delete", "radius"))
+        n = len(ex)
+        if op == "place":
+            kind = get_str(msg, "kind")
+            if kind not in self.shapes:
+                raise InputError(f"kind: unknown kind {kind[:60]!r}")
+            x, y = get_number(msg, "x", lo=-1e7, hi=1e7), get_number(msg, "y", lo=-1e7, hi=1e7)
+            same = ex.kind_names == kind if n else np.zeros(0, bool)
+            scale = float(np.median(ex.scale[same])) if np.any(same) else 1.0
+            new = Arrangement({kind: self.shapes[kind]}, [kind], [x], [y], [0.0], [scale])
+            out = concat([ex.replace(extra={}), new])
+        else:
+            i = get_int(msg, "index", lo=0, hi=max(n - 1, 0))
+            if n == 0:
+                raise InputError(f"index: exemplar {name!r} has no elements")
+            if op == "move":
+                x, y = get_number(msg, "x", lo=-1e7, hi=1e7), get_number(msg, "y", lo=-1e7, hi=1e7)
+                xs, ys = ex.x.copy(), ex.y.copy()
+                xs[i], ys[i] = x, y
+                out = ex.replace(x=xs, y=ys, extra={})
+            elif op == "delete":
+                keep = np.ones(n, bool)
+                keep[i] = False
+                out = ex.select(keep).replace(extra={})
+            else:
+                field = get_str(msg, "field", choices=("radius", "neighborhood_radius"), default="radius")
+                value = get_number(msg, "value", lo=1e-6, hi=1e7)
+                col = np.asarray(ex[field], dtype=float).copy() if field in ex else np.full(n, np.nan)
+                col[i] = value
+                out = ex.with_columns(**{field: col})
+        self._push_history()
+        self.palette[name] = out
+        self._palette_changed()
+        return [self.palette_message(), self.status_message(f"{op} in {name}")]
+
+    def _on_palette_flip(self, msg: dict, emit: Emit) -> list[dict]:
+        """Flip a connectivity edge of an exemplar (Ijiri §4, Fig. 3); kept as its edge list."""
+        from ..grow import flip_edge
+
+        name = self._exemplar(msg)
+        n = len(self.palette[name])
+        i, j = get_int(msg, "i", hi=max(n - 1, 0)), get_int(msg, "j", hi=max(n - 1, 0))
+        ref = flip_edge(self._reference(name), i, j)
+        self._push_history()
+        self.palette[name] = self.palette[name].replace(extra={"connectivity": {"edges": ref.edges.tolist()}})
+        self._palette_changed()
+        return [self.palette_message(), self.status_message(f"flipped edge {i},{j} of {name}")]
+
+    def _on_palette_from_scene(self, msg: dict, emit: Emit) -> list[dict]:
+        """A new exemplar from the scene elements inside a lasso (painting back, Davison §5.5)."""
+        base = get_str(msg, "name", default="painted")
+        scene = self.scene()
+        if "points" in msg:
+            poly = get_points(msg, min_points=3)
+            try:
+                area = Region(shapely.Polygon(poly))
+            except (InputError, ValueError) as exc:
+                raise InputError(f"points: not a usable lasso ({exc})") from None
+            scene = scene.select(area.contains(scene.xy)) if len(scene) else scene
+        if len(scene) < 2:
+            raise InputError("palette_from_scene: fewer than two scene elements in the lasso")
+        keep = [c for c in scene.columns if c in ("radius", "neighborhood_radius", "color")]
+        cols = {c: scene[c] for c in keep}
+        x0, y0 = scene.x.min(), scene.y.min()
+        used = sorted(set(scene.kind_names.tolist()))
+        arr = Arrangement({k: self.shapes[k] for k in used}, scene.kind_names, scene.x - x0, scene.y - y0, scene.rotation, scene.scale, columns=cols)
+        self._push_history()
+        name = self._add_exemplar(base, arr)
+        self._palette_changed()
+        return [self.palette_message(), self.status_message(f"new exemplar {name} from {len(arr)} scene elements")]
+
+    # ------------------------------------------------------------------ scene tools
+    def _on_region(self, msg: dict, emit: Emit) -> list[dict]:
+        if "size" in msg:
+            size = msg["size"]
+            if not (isinstance(size, list) and len(size) == 2):
+                raise InputError("size: must be [width, height]")
+            w = get_number({"w": size[0]}, "w", lo=1e-3, hi=1e7)
+            h = get_number({"h": size[1]}, "h", lo=1e-3, hi=1e7)
+            region = Region.rectangle(w, h)
+        else:
+            region = self._region_of(get_points(msg, min_points=3))
+        self._push_history()
+        self._set_region(region)
+        return [self.strokes_message(), self.status_message("region set")]
+
+    def _region_of(self, pts: np.ndarray) -> Region:
+        try:
+            return Region(shapely.Polygon(pts))
+        except (ValueError, shapely.errors.GEOSException) as exc:
+            raise InputError(f"region: not a usable outline ({exc})") from None
+
+    def _set_region(self, region: Region) -> None:
+        self.region = region
+        if self.state is not None:
+            self.state.region = region
+        self._rebuild_flow()
+
+    def _rebuild_flow(self) -> None:
+        from ..fields import flow_field
+
+        self.flow = flow_field(self.flow_strokes) if self.flow_strokes else None
+
+    def _on_clear(self, msg: dict, emit: Emit) -> list[dict]:
+        what = get_str(msg, "what", choices=("scene", "flow", "boundary"))
+        self._push_history()
+        if what == "scene":
+            self.fixed = _empty({})
+            self.state = None
+            self.distance = float("nan")
+        elif what == "flow":
+            self.flow_strokes = []
+            self._rebuild_flow()
+        else:
+            self.boundary_strokes = []
+        out = [self.strokes_message()]
+        scene = self.scene_message()
+        if scene is not None:
+            out.append(scene)
+        return out + [self.status_message(f"cleared {what}")]
+
+    def _on_stroke_start(self, msg: dict, emit: Emit) -> list[dict]:
+        tool = get_str(msg, "tool", choices=TOOLS)
+        target = get_str(msg, "target", choices=("scene", "palette"), default="scene")
+        radius = get_number(msg, "radius", default=30.0, lo=1e-3, hi=1e6)
+        pts = get_points(msg)
+        stroke = {"tool": tool, "target": target, "radius": radius, "points": [pts], "added": 0, "compute": 0.0, "t0": time.perf_counter()}
+        if target == "palette":
+            if tool != "brush":
+                raise InputError("target palette: only the generative brush paints into the palette")
+            stroke["exemplar"] = self._exemplar(msg)
+            self._selection()
+        elif tool in ("brush", "spray"):
+            self._selection()
+            if tool == "spray" and self.grow_mode == "flow" and self.flow is None:
+                raise InputError("spray: grow mode 'flow' needs a flow field; draw flow strokes first")
+        self._push_history()
+        self.stroke = stroke
+        self.cancel.clear()
+        return self._apply_segment(pts)
+
+    def _on_stroke_move(self, msg: dict, emit: Emit) -> list[dict]:
+        if self.stroke is None:
+            raise InputError("stroke_move: no stroke in progress (send stroke_start first)")
+        pts = get_points(msg)
+        self.stroke["points"].append(pts)
+        return self._apply_segment(pts)
+
+    def _on_stroke_end(self, msg: dict, emit: Emit) -> list[dict]:
+        if self.stroke is None:
+            raise InputError("stroke_end: no stroke in progress")
+        out: list[dict] = []
+        if msg.get("points"):
+            pts = get_points(msg)
+            self.stroke["points"].append(pts)
+            out += self._apply_segment(pts)
+        stroke = self.stroke
+        allpts = np.concatenate(stroke["points"])
+        tool = stroke["tool"]
+        note = ""
+        try:
+            if stroke["target"] == "palette":
+                note = self._paint_palette(stroke["exemplar"], allpts, stroke["radius"])
+                out.append(self.palette_message())
+            elif tool == "flow":
+                if len(allpts) < 2 or not np.any(np.linalg.norm(np.diff(allpts, axis=0), axis=1) > 0):
+                    raise InputError("flow: a flow stroke needs two distinct points")
+                self.flow_strokes.append(allpts)
+                self._rebuild_flow()
+                out.append(self.strokes_message())
+            elif tool == "boundary":
+                if len(allpts) < 2:
+                    raise InputError("boundary: a boundary stroke needs two points")
+                self.boundary_strokes.append(allpts)
+                out.append(self.strokes_message())
+            elif tool == "region":
+                self._set_region(self._region_of(allpts))
+                out.append(self.strokes_message())
+        except InputError:
+            self.stroke = None
+            self._restore(self.undo_stack.pop())
+            raise
+        if tool in ("brush", "spray", "erase"):
+            self._measure()
+            note = note or f"{tool}: {stroke['added']} elements added"
+        self.stroke = None
+        return out + [self.status_message(note)]
+
+    def _apply_segment(self, pts: np.ndarray) -> list[dict]:
+        """Run the stroke's tool on one segment; returns the streamed scene change."""
+        st = self.stroke
+        assert st is not None
+        tool = st["tool"]
+        if st["target"] == "palette" or tool in ("flow", "boundary", "region"):
+            return [{"type": "stroke_echo", "tool": tool, "points": _r(pts)}]
+        prev = self.stroke["points"][-2][-1:] if len(self.stroke["points"]) > 1 else np.zeros((0, 2))
+        seg = np.concatenate([prev, pts])
+        t = time.perf_counter()
+        before = self._scene_count()
+        if self._scene_count() >= MAX_SCENE and tool != "erase":
+            raise InputError(f"scene: over {MAX_SCENE} elements; erase some first")
+        if tool == "brush":
+            self._brush(seg, st["radius"])
+        elif tool == "spray":
+            self._spray(seg, st["radius"])
+        else:
+            self._erase(seg, st["radius"])
+        st["compute"] += time.perf_counter() - t
+        st["added"] += max(0, self._scene_count() - before)
+        msg = self.scene_message()
+        out = [msg] if msg is not None else []
+        return out + [self.status_message()]
+
+    def _brush(self, pts: np.ndarray, radius: float) -> None:
+        """Generative brush (Davison §5.4) on one stroke segment."""
+        from .. import synth
+
+        st = self._ensure_state()
+        n0 = st.n
+        synth.brush(st, pts, radius)
+        self._drop_state_overlaps(n0)
+
+    def _drop_state_overlaps(self, n0: int) -> None:
+        """Remove new synthesis elements (index >= n0) that overlap fixed scene elements."""
+        st = self.state
+        if st is None or st.n <= n0 or len(self.fixed) == 0:
+            return
+        prep = st.prep
+        src = st.src[n0:]
+        new = Arrangement(prep.shapes, prep.kind[src].astype(np.int64), st.pos[n0:, 0], st.pos[n0:, 1], prep.rotation[src], prep.scale[src])
+        hit = _overlapping(new, self.fixed)
+        if hit.any():
+            mask = np.zeros(st.n, bool)
+            mask[n0:] = hit
+            st.remove(mask)
+
+    def _spray(self, pts: np.ndarray, radius: float) -> None:
+        """Spray (Ijiri §3, Fig. 1c): grow from the segment's start, only within ``radius``."""
+        from ..grow import grow
+
+        name = self._selection()[0]
+        ref = self._reference(name)
+        inside = self.region.contains(pts)
+        if not inside.any():
+            return
+        start = pts[np.flatnonzero(inside)[0]]
+        out = grow(
+            ref,
+            region=self.region,
+            start=(float(start[0]), float(start[1])),
+            spray=pts,
+            spray_radius=radius,
+            mode=self.grow_mode,
+            flow=self.flow,
+            boundary=self.boundary_strokes or None,
+            rng=int(self.rng.integers(2**31)),
+        )
+        if len(out) == 0:
+            return
+        out = out.replace(meta={}, extra={}, region=None)
+        scene = self.scene()
+        if len(scene):
+            out = out.select(~_overlapping(out, scene))
+        if len(out):
+            self.fixed = concat([self.fixed, out]).replace(region=None) if len(self.fixed) else out
+
+    def _erase(self, pts: np.ndarray, radius: float) -> None:
+        """Eraser (Davison §5.4): elements whose centre lies within ``radius`` of the path."""
+        from .. import synth
+
+        if self.state is not None and self.state.n:
+            synth.erase(self.state, pts, radius)
+        if len(self.fixed):
+            path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
+            gone = shapely.dwithin(path, shapely.points(self.fixed.xy), radius)
+            if gone.any():
+                self.fixed = self.fixed.select(~gone)
+
+    def _paint_palette(self, name: str, pts: np.ndarray, radius: float) -> str:
+        """The brush painting into exemplar ``name`` from the selection (Davison §5.5)."""
+        from ..synth import Palette, synthesize
+
+        usable = {k: v for k, v in self._usable().items() if k != name}
+        sel = [n for n in self._selection() if n != name]
+        if not sel:
+            raise InputError("palette brush: select an exemplar other than the one painted into")
+        out = synthesize(Palette(usable), None, selection=sel, brush_points=pts, brush_radius=radius, rng=int(self.rng.integers(2**31)))
+        ex = self.palette[name]
+        if len(out) and len(ex):
+            out = out.select(~_overlapping(out, ex))
+        if len(out) == 0:
+            return "palette brush: no room"
+        keep = {c: out[c] for c in ("radius", "neighborhood_radius") if c in out}
+        out = Arrangement(out.shapes, out.kind_names, out.x, out.y, out.rotation, out.scale, columns=keep)
+        merged = concat([ex.replace(extra={}), out]) if len(ex) else out
+        self.palette[name] = merged.replace(meta={}, region=None)
+        self._palette_changed()
+        return f"painted {len(out)} elements into {name}"
+
+    def _on_fill(self, msg: dict, emit: Emit) -> list[dict]:
+        """Filler (Davison §5.4): grow from a point until no room is left in the region."""
+        from .. import synth
+
+        p = get_points(msg, "point")[0]
+        if not self.region.contains(p[None])[0]:
+            raise InputError(f"fill: point {p[0]:g},{p[1]:g} is outside the region")
+        self._selection()
+        self._push_history()
+        st = self._ensure_state()
+        self.cancel.clear()
+        n0 = st.n
+        t = time.perf_counter()
+
+        def progress(done: int, total: int | None, message: str) -> None:
+            m = self.scene_message()
+            if m is not None:
+                emit(m)
+                emit(self.status_message(f"filling: {done} elements"))
+
+        try:
+            synth.fill(st, (float(p[0]), float(p[1])), progress=progress, should_cancel=self.cancel.is_set)
+            note = "filled"
+        except Cancelled:
+            note = "fill stopped"
+        self._drop_state_overlaps(n0)
+        dt = time.perf_counter() - t
+        self._measure()
+        out = []
+        m = self.scene_message()
+        if m is not None:
+            out.append(m)
+        added = st.n - n0
+        return out + [self.status_message(f"{note}: {added} elements in {dt:.2f} s")]
+
+    # ------------------------------------------------------------------ files
+    def palette_arrangement(self) -> Arrangement:
+        """The palette as one strew document: exemplars side by side, tagged by name.
+
+        The layout is the one :class:`strew.synth.Palette` reads (column ``exemplar``,
+        ``extra["palette"]["offsets"]``), with the edited connectivity and the selection.
+        """
+        parts, offsets, conn = [], {}, {}
+        x = 0.0
+        for name, ex in self.palette.items():
+            if len(ex) == 0:
+                continue
+            b = ex.bounds
+            dx, dy = x - b[0], -b[1]
+            offsets[name] = [dx, dy]
+            if "connectivity" in ex.extra:
+                conn[name] = ex.extra["connectivity"]["edges"]
+            parts.append(ex.replace(x=ex.x + dx, y=ex.y + dy, region=None, meta={}, extra={}).with_columns(exemplar=[name] * len(ex)))
+            x += (b[2] - b[0]) + 0.1 * max(b[2] - b[0], b[3] - b[1], 1e-9)
+        if not parts:
+            raise InputError("save: the palette is empty")
+        arr = concat(parts)
+        return arr.replace(meta={"method": "studio.palette"}, extra={"palette": {"offsets": offsets, "connectivity": conn, "selection": list(self.selection)}})
+
+    def _meta(self) -> dict[str, Any]:
+        from .. import __version__
+
+        return {"generator": f"strew {__version__}", "method": "studio", "seed": self.seed}
+
+    def _on_save(self, msg: dict, emit: Emit) -> list[dict]:
+        """Save the project: ``palette.json`` and ``scene.json`` in PROJECT_DIR."""
+        from ..io import save
+
+        written = []
+        if self.palette:
+            save(self.palette_arrangement().with_meta(**self._meta()), self.root / PALETTE_FILE)
+            written.append(PALETTE_FILE)
+        scene = self.scene().replace(
+            meta=self._meta(),
+            extra={"studio": {"flow": [s.tolist() for s in self.flow_strokes], "boundary": [s.tolist() for s in self.boundary_strokes], "grow_mode": self.grow_mode}},
+        )
+        save(scene, self.root / SCENE_FILE)
+        written.append(SCENE_FILE)
+        return [{"type": "saved", "paths": written}, self.files_message(), self.status_message("saved " + ", ".join(written))]
+
+    def _on_load_project(self, msg: dict, emit: Emit) -> list[dict]:
+        """Load ``palette.json`` and ``scene.json`` from PROJECT_DIR (either may be missing)."""
+        from ..io import load
+
+        pal_path, scene_path = self.root / PALETTE_FILE, self.root / SCENE_FILE
+        if not pal_path.is_file() and not scene_path.is_file():
+            raise InputError(f"load_project: no {PALETTE_FILE} or {SCENE_FILE} in the project folder")
+        pal = load(pal_path) if pal_path.is_file() else None
+        scene = load(scene_path) if scene_path.is_file() else None
+        self._push_history()
+        if pal is not None:
+            self.palette = {}
+            self.selection = []
+            if "exemplar" in pal:
+                self._split_palette(pal)
+            else:
+                self._add_exemplar(pal_path.stem, pal.replace(region=None, meta={}, extra={}))
+            self._palette_changed()
+        if scene is not None:
+            studio = scene.extra.get("studio", {}) if isinstance(scene.extra.get("studio"), dict) else {}
+            self.flow_strokes = [get_points({"p": s}, "p") for s in studio.get("flow", [])]
+            self.boundary_strokes = [get_points({"p": s}, "p") for s in studio.get("boundary", [])]
+            if studio.get("grow_mode") in GROW_MODES:
+                self.grow_mode = studio["grow_mode"]
+            if scene.region is not None:
+                self.region = scene.region
+            self.fixed = self._add_shapes(scene.replace(region=None, meta={}, extra={}), "scene")
+            self.state = None
+            self._rebuild_flow()
+        self.distance = float("nan")
+        return self._all_messages("project loaded")
+
+    def _on_export(self, msg: dict, emit: Emit) -> list[dict]:
+        """Export the scene as .svg, .png or .json inside PROJECT_DIR."""
+        from ..io import save
+
+        path = resolve_in_project(self.root, msg.get("path"), suffixes=(".svg", ".png", ".json"))
+        scene = self.scene().replace(meta=self._meta())
+        save(scene, path)
+        rel = path.relative_to(self.root).as_posix()
+        return [{"type": "exported", "path": rel, "count": len(scene)}, self.files_message(), self.status_message(f"exported {rel}")]
+
+
+def _overlapping(new: Arrangement, existing: Arrangement) -> np.ndarray:
+    """(len(new),) bool: elements of ``new`` whose geometry intersects ``existing``'s."""
+    if len(new) == 0 or len(existing) == 0:
+        return np.zeros(len(new), bool)
+    # only existing elements near the new ones take part (bounding circles)
+    rn = np.array([new.shapes[k].radius for k in new.kinds])[new.kind] * new.scale
+    re = np.array([existing.shapes[k].radius for k in existing.kinds])[existing.kind] * existing.scale
+    from scipy.spatial import cKDTree
+
+    tree = cKDTree(new.xy)
+    near = tree.query_ball_point(existing.xy, r=re + rn.max())
+    cand = np.flatnonzero([len(v) > 0 for v in near])
+    if len(cand) == 0:
+        return np.zeros(len(new), bool)
+    sub = existing.select(cand)
+    hit = np.zeros(len(new), bool)
+    ia, _ = shapely.STRtree(sub.geometry).query(new.geometry, predicate="intersects")
+    hit[np.unique(ia)] = True
+    return hit
