@@ -26,7 +26,7 @@ def relax_positions(
     offsets: np.ndarray,
     free: np.ndarray,
     *,
-    regularization: float = 1e-6,
+    regularization: float = 1e-9,
 ) -> np.ndarray:
     """Least-squares fit of ring shapes (Eq. 5) with fixed elements (Eq. 6).
 
