@@ -150,7 +150,7 @@ def k_coherence(ptr, off, pos, kind, nb_kind, nb_d, d_center, rbar, source, doma
     """k-coherence sets (§5.1): the k most similar exemplar elements to each one.
 
     Similarity is the neighbourhood distance of Eq. 1 between n(e) and n(c). Candidates
-    are interior elements (whole neighbourhoods); an element near the edge of its
+    are interior elements (whole neighbourhoods) of the same exemplar; an element near the edge of its
     exemplar is compared only inside its exemplar's domain, so that it points to interior
     elements that continue the texture beyond the edge. An interior element comes first
     in its own set (distance 0).
@@ -173,6 +173,9 @@ def k_coherence(ptr, off, pos, kind, nb_kind, nb_d, d_center, rbar, source, doma
     for a in range(0, n, block):
         b = min(n, a + block)
         cands = np.tile(cand_ids, (b - a, 1))
+        # candidates come from the element's own exemplar: a texture of another scale
+        # would pair nothing and look deceptively close
+        cands = np.where(source[cands] == source[a:b, None], cands, -1)
         rows = qrows[qptr[a] : qptr[b]]
         cost = K.candidate_costs_in_domain(
             qptr[a : b + 1] - qptr[a], off[rows], nb_kind[rows], nb_d[rows], rbar[a:b],
@@ -183,7 +186,8 @@ def k_coherence(ptr, off, pos, kind, nb_kind, nb_d, d_center, rbar, source, doma
         is_self = (selfcol < len(cand_ids)) & (cand_ids[np.minimum(selfcol, len(cand_ids) - 1)] == rows + a)
         cost[rows[is_self], selfcol[is_self]] = -1.0  # the element itself first
         order = np.argsort(cost, axis=1, kind="stable")[:, :k]
-        out[a:b, : order.shape[1]] = cand_ids[order]
+        picked = np.where(np.isfinite(np.take_along_axis(cost, order, axis=1)), cand_ids[order], -1)
+        out[a:b, : order.shape[1]] = picked
     return out
 
 
@@ -347,7 +351,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     free_ptr = np.zeros(len(arr) + 1, dtype=np.int64)
     free_off_parts = []
     free_r_parts = []
-    min_samples = min(2, k)
+    min_samples = 1  # every vector is kept; DBSCAN merges those within eps
     # cover radius: 3/4 of the nearest-neighbour distance of each element in its exemplar
     half_nn = np.zeros(len(arr))
     for i in range(len(tagged)):
