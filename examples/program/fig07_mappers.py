@@ -76,7 +76,7 @@ cells_with_curves = map_to_edges(stroke, shrunk)
 
 arrangement = puzzle
 demo_panels = ["puzzle", "rosettes", "cells_with_curves"]
-demo_size = 1000
+demo_size = 800
 
 if __name__ == "__main__":
     export_svg(arrangement, size)

@@ -26,7 +26,7 @@ def age(face):
 
 
 arrangement = map_to_faces(age, mosaic)
-demo_size = 1000
+demo_size = 800
 
 if __name__ == "__main__":
     export_svg(arrangement, size)

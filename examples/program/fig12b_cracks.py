@@ -33,7 +33,7 @@ def fine_cracks(face):
 
 
 arrangement = union(large, map_to_faces(fine_cracks, large))
-demo_size = 1000
+demo_size = 800
 
 if __name__ == "__main__":
     export_svg(arrangement, size)
