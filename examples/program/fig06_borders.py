@@ -21,7 +21,7 @@ tiles = grid_partition(stripes_properties(0, 1000), stripes_properties(pi / 2, 1
 def panel(border):
     def mapper(face):
         domain = scale(match_face(blob, face), 0.8)
-        return append(domain, uniform_partition(props, border)(domain))
+        return uniform_partition(props, border)(domain)
 
     return map_to_faces(mapper, tiles)
 
