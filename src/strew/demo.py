@@ -24,6 +24,7 @@ __all__ = ["DemoItem", "SECTIONS", "build_gallery"]
 SECTIONS: list[tuple[str, str]] = [
     ("Basics: exemplars drawn for strew", "strew._demos.basics"),
     ("Packing: fill-gap (Sakurai & Miyata)", "strew.pack._demo"),
+    ("Growth from one seed (Ijiri et al.)", "strew.grow._demo"),
     ("Programmable arrangements: planar maps, partitions, mappers (Loi et al.)", "strew.program._demo"),
 ]
 
