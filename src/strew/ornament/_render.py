@@ -337,7 +337,8 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             "pattern": pat.name,
             "style": style,
             "elements": sum(1 for e in ornament.elements if e.type != "seed"),
-            **{k: (float(v) if isinstance(v, (np.floating, float)) else v) for k, v in ornament.stats.items()},
+            # the run's wall time stays out, so that outputs are byte-for-byte repeatable
+            **{k: (float(v) if isinstance(v, (np.floating, float)) else v) for k, v in ornament.stats.items() if k != "seconds"},
         },
         "params": {**ornament.params, "style": style},
     }

@@ -33,8 +33,11 @@ pattern.element("dot", Circle, order=0)  # number each dot in order of placement
 
 @pattern.rule("seed", children=["dot"])
 def seed_to_dot(ctx, seed, dot):
-    # place a maximum-sized dot on the initial seed
-    r = min(MAX_RADIUS, ctx.boundary_distance(seed.proxy.center))
+    # place a maximum-sized dot on the initial seed. (Appendix A uses 3.0 as is; here the
+    # dot also shrinks to fit near the boundary or near dots grown from another seed.)
+    r = min(MAX_RADIUS, ctx.clearance(seed.proxy.center, ignore=[seed]))
+    if r < 0.5:
+        return FAILURE
     dot.proxy.set(seed.proxy.center, r)
     dot.order = ctx.state.dot_count
     ctx.state.dot_count += 1
