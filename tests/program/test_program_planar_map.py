@@ -122,6 +122,9 @@ def test_empty_and_degenerate():
     assert induce(Curves()).n_faces == 1
     pm = induce(Curves((Curve([(1, 1), (1, 1)]),)))
     assert (pm.n_vertices, pm.n_edges, pm.n_faces) == (0, 0, 1)
+    # a degenerate curve before a good one is skipped, labels stay with the right curve
+    pm = induce(Curves((Curve([(1, 1)]), Curve([(2, 2), (2, 2)], labels="x"), Curve([(0, 0), (3, 0)], labels="y"))))
+    assert pm.n_edges == 1 and pm.edges[0].labels == {"y"}
 
 
 def test_lazy_map_keeps_curves():

@@ -19,7 +19,7 @@ import shapely
 from .._errors import InputError
 from ..region import Region
 from ._context import Context, current, evaluation, top
-from ._curves import EMPTY, Curve, Curves, as_labels, concat_curves
+from ._curves import EMPTY, Curve, Curves, concat_curves
 from ._planar_map import DEFAULT_GRID, Face, PlanarMap, Vertex, Edge, _Cell
 from ._sampling import poisson, poisson_disk
 

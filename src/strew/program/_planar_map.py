@@ -358,7 +358,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     first_pt = np.r_[True, ~same_next]
     last_pt = np.r_[~same_next, True]
     breaks = [allp[first_pt], allp[last_pt]]
-    src_lines = shapely.linestrings(allp, indices=cid)
+    src_lines = shapely.linestrings(allp, indices=np.unique(cid, return_inverse=True)[1].reshape(-1))
 
     # 2. snap rounding + noding + merging of overlaps (GEOS OverlayNG, fixed precision)
     noded = shapely.union_all(src_lines, grid_size=g)

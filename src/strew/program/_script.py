@@ -15,7 +15,6 @@ import os
 import re
 import runpy
 import sys
-import traceback
 from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -347,6 +346,3 @@ def run_script(script: str | os.PathLike[str], *, size: float = 2000, seed: int 
             raise ScriptError(f"{where}: {exc}") from exc
     return pm, to_strew(pm, region)
 
-
-def _format_tb(exc: BaseException) -> str:  # pragma: no cover - debugging aid
-    return "".join(traceback.format_exception(exc))
