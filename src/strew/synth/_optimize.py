@@ -159,10 +159,9 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     old = pos[hbar].copy()
     new = old + prm.relaxation * (sol - old)
     moved = hbar
-    # Guards: keep centres in the region and do not make elements intersect.
-    if state.region is not None:
-        out = ~state.region.contains(new)
-        new[out] = old[out]
+    # Guards: keep centres in the region (and brush) and do not make elements intersect.
+    out = ~state.in_domain(new) & state.in_domain(old)
+    new[out] = old[out]
     state._pos[moved] = new
     _undo_intersections(state, moved, old)
     disp = np.hypot(*(state._pos[moved] - old).T)
