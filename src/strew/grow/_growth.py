@@ -339,6 +339,26 @@ class _Grower:
                 return True
         return False
 
+    def overlapping(self, g: int) -> list[int]:
+        """Elements whose geometry overlaps element ``g`` (area overlap, or any contact of strokes)."""
+        kind = int(self.kind[g])
+        x, y = self.pos[g]
+        r = self.kind_radius[kind] * self.scl[g] + self.kind_radius.max() * self.max_scale
+        others = [j for j in self.near(x, y, r, (ELEMENT,)) if j != g]
+        if not others:
+            return []
+        geom = self.geom[g]
+        gs = np.array([self.geom[j] for j in others], dtype=object)
+        hit = np.flatnonzero(shapely.intersects(geom, gs))
+        out = []
+        for q in hit:
+            j = others[q]
+            if not (self.areal[kind] and self.areal[self.kind[j]]):
+                out.append(j)
+            elif shapely.intersection(geom, gs[q]).area > 1e-9 * max(geom.area, 1e-300):
+                out.append(j)
+        return out
+
     # -- growth -------------------------------------------------------------------------
     def seed_priority(self, i: int) -> float:
         k = self.kind[i]
@@ -587,32 +607,33 @@ class _Grower:
         pos = self.pos[nodes]
         free = np.array([g in wset for g in nodes])
         new = relax_positions(pos, [local[g] for g in src], [local[g] for g in dst], np.asarray(off), free)
-        moved = [g for g in win]
-        newpos = {g: new[local[g]] for g in moved}
-        if self.p.avoid_overlaps:
-            # keep the no-overlap guarantee: a relaxation that would make elements
-            # overlap is not applied
-            old = {g: (self.pos[g].copy(), self.geom[g]) for g in moved}
-            for g in moved:
-                self._move(g, float(newpos[g][0]), float(newpos[g][1]))
-            els = [g for g in moved if self.state[g] == ELEMENT]
-            for g in els:
+        tiny = 1e-9 * self.l
+        moved = [g for g in win if abs(new[local[g], 0] - self.pos[g, 0]) + abs(new[local[g], 1] - self.pos[g, 1]) > tiny]
+        old = {g: (float(self.pos[g, 0]), float(self.pos[g, 1]), self.geom[g]) for g in moved}
+        for g in moved:
+            self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
+            if self.state[g] == ELEMENT:
                 self.geom[g] = self.element_geometry(int(self.kind[g]), self.pos[g, 0], self.pos[g, 1], self.rot[g], self.scl[g])
-            bad = False
-            for g in els:
-                if self.overlaps_any(self.geom[g], int(self.kind[g]), self.pos[g, 0], self.pos[g, 1], self.scl[g], skip={g}):
-                    bad = True
-                    break
-            if bad:
-                for g in moved:
-                    self._move(g, float(old[g][0][0]), float(old[g][0][1]))
-                    self.geom[g] = old[g][1]
-        else:
-            for g in moved:
-                self._move(g, float(newpos[g][0]), float(newpos[g][1]))
-            for g in moved:
-                if self.state[g] == ELEMENT:
-                    self.geom[g] = self.element_geometry(int(self.kind[g]), self.pos[g, 0], self.pos[g, 1], self.rot[g], self.scl[g])
+        if not self.p.avoid_overlaps:
+            return
+        # Keep the no-overlap guarantee: elements that now overlap go back to where they
+        # were, with those they overlap, until no overlap is left (the positions before
+        # the relaxation had none, so this ends).
+        check = [g for g in moved if self.state[g] == ELEMENT]
+        while check:
+            back: set[int] = set()
+            for g in check:
+                hits = self.overlapping(g)
+                if hits:
+                    back.add(g)
+                    back.update(h for h in hits if h in old)
+            back = {g for g in back if (self.pos[g, 0], self.pos[g, 1]) != old[g][:2]}
+            for g in back:
+                self._move(g, old[g][0], old[g][1])
+                self.geom[g] = old[g][2]
+            check = [g for g in moved if self.state[g] == ELEMENT and g not in back and any(h in back for h in self.adj[g])] + sorted(back)
+            if not back:
+                break
 
     # -- main loop --------------------------------------------------------------------------
     def run(self, start: tuple[float, float], rep: Reporter) -> None:
