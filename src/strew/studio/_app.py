@@ -17,7 +17,7 @@ from typing import Any
 from urllib.parse import urlsplit
 
 from fastapi import FastAPI, WebSocket, WebSocketDisconnect
-from fastapi.responses import FileResponse, JSONResponse
+from fastapi.responses import FileResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
 
 from .._errors import Cancelled, InputError
@@ -52,7 +52,30 @@ def _origin_ok(origin: str | None, allowed_hosts: tuple[str, ...]) -> bool:
     return host is not None and (host in allowed_hosts or f"[{host}]" in allowed_hosts)
 
 
-def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[str, ...] = LOCAL_HOSTS) -> Any:
+def warm_up() -> None:
+    """Load the compiled kernels of synthesis and growth once (numba caches), so that
+    the first stroke of a session does not pay for it."""
+    import numpy as np
+
+    from .. import synth
+    from ..arrangement import Arrangement
+    from ..grow import grow
+    from ..shape import Shape
+
+    g = np.mgrid[0:5, 0:5].reshape(2, -1).T * 10.0
+    g[:, 0] += 5.0 * (np.arange(len(g)) % 2)
+    ex = Arrangement({"dot": Shape.circle(3.0, segments=8)}, [0] * len(g), g[:, 0], g[:, 1])
+    try:
+        st = synth.new_state(ex, None, rng=0)
+        synth.brush(st, np.array([[0.0, 0.0], [30.0, 0.0]]), 15.0)
+        synth.erase(st, np.array([[0.0, 0.0]]), 5.0)
+        synth.average_neighborhood_distance(st, sample=20)
+        grow(ex, count=12, rng=0)
+    except Exception:  # a warm-up failure must not take the server down
+        pass
+
+
+def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[str, ...] = LOCAL_HOSTS, warm: bool = True) -> Any:
     """The FastAPI application of a studio on ``project_dir``.
 
     Parameters
@@ -64,6 +87,8 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
     allowed_hosts : tuple of str
         Host names a page may be served under; a websocket whose ``Origin`` names another
         host is refused.
+    warm : bool
+        Load the compiled kernels in a background thread at once (:func:`warm_up`).
     """
     root = Path(project_dir).resolve()
     if not root.is_dir():
@@ -71,10 +96,18 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
     app = FastAPI(title="strew studio", docs_url=None, redoc_url=None, openapi_url=None)
     app.mount("/static", StaticFiles(directory=STATIC_DIR), name="static")
     app.state.sessions = 0
+    if warm:
+        import threading
+
+        threading.Thread(target=warm_up, name="strew-studio-warm-up", daemon=True).start()
 
     @app.get("/")
     def index() -> FileResponse:
         return FileResponse(STATIC_DIR / "index.html", media_type="text/html")
+
+    @app.get("/favicon.ico")
+    def favicon() -> Response:
+        return Response(status_code=204)
 
     @app.get("/health")
     def health() -> JSONResponse:

@@ -97,6 +97,7 @@ class Session:
         self.distance = float("nan")
         self.cancel = threading.Event()
         self._sent: dict[str, np.ndarray] | None = None
+        self._emit: Emit = lambda m: None
         self._refs: dict[tuple[str, int], Any] = {}
 
     # ------------------------------------------------------------------ dispatch
@@ -109,7 +110,8 @@ class Session:
             For a bad field; the server turns it into an ``error`` reply.
         """
         handler = getattr(self, "_on_" + msg["type"])
-        return handler(msg, emit or (lambda m: None))
+        self._emit = emit or (lambda m: None)
+        return handler(msg, self._emit)
 
     # ------------------------------------------------------------------ library
     def _add_shapes(self, arr: Arrangement, prefix: str) -> Arrangement:
@@ -220,6 +222,14 @@ class Session:
     def _palette_changed(self) -> None:
         self.palette_version += 1
         self._refs.clear()
+
+    def _prepare(self) -> None:
+        """Analyse the selection now (Davison §5.1 precomputation), so that the next
+        stroke starts without that delay; a palette that cannot be used yet is left be."""
+        try:
+            self._ensure_state()
+        except InputError:
+            pass
 
     def _ensure_state(self) -> Any:
         """The synthesis state for the current palette and selection (Davison §5.5).
@@ -467,6 +477,7 @@ class Session:
         if not any(n in self.selection for n in self.palette):
             self.selection = [n for n in added if len(self.palette[n]) >= 2][:1]
         self._palette_changed()
+        self._prepare()
         return self._all_messages(f"loaded {', '.join(added)}")
 
     def _add_exemplar(self, base: str, arr: Arrangement) -> str:
@@ -516,6 +527,7 @@ class Session:
                 raise InputError(f"select: no exemplar {n[:60]!r} in the palette")
         self._push_history()
         self.selection = list(dict.fromkeys(names))
+        self._prepare()
         return [self.palette_message(), self.status_message()]
 
     def _on_palette_new(self, msg: dict, emit: Emit) -> list[dict]:
@@ -739,7 +751,7 @@ class Session:
         if self._scene_count() >= MAX_SCENE and tool != "erase":
             raise InputError(f"scene: over {MAX_SCENE} elements; erase some first")
         if tool == "brush":
-            self._brush(seg, st["radius"])
+            self._brush(seg, st["radius"], self._emit)
         elif tool == "spray":
             self._spray(seg, st["radius"])
         else:
@@ -750,13 +762,44 @@ class Session:
         out = [msg] if msg is not None else []
         return out + [self.status_message()]
 
-    def _brush(self, pts: np.ndarray, radius: float) -> None:
-        """Generative brush (Davison §5.4) on one stroke segment."""
+    def _brush(self, pts: np.ndarray, radius: float, emit: Emit) -> None:
+        """Generative brush (Davison §5.4) on one stroke segment.
+
+        At the stroke's first point in empty space the random seed patch of §5.4 is
+        copied and shown at once, before region growing continues along the segment;
+        partial results stream out while a segment grows. Elements that existed before
+        the stroke are re-optimised toward the selection when the brush passes over them
+        (§5.4); those the stroke itself made are not re-optimised at every segment.
+        """
         from .. import synth
+        from scipy.spatial import cKDTree
 
         st = self._ensure_state()
+        stroke = self.stroke
+        assert stroke is not None
+        if "n_before" not in stroke:
+            stroke["n_before"] = st.n
+            near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(pts[0], r=radius)) > 0
+            if not near:
+                # §5.4: "If there are no elements near the first brush-point, a random patch
+                # from the example-palette selection is copied to the output domain".
+                st.brush_points = np.concatenate([st.brush_points, pts[:1]])
+                st.brush_radii = np.concatenate([st.brush_radii, [radius]])
+                synth.seed_patch(st, (float(pts[0, 0]), float(pts[0, 1])), random=True)
+                self._drop_state_overlaps(stroke["n_before"])
+                m = self.scene_message()
+                if m is not None:
+                    emit(m)
         n0 = st.n
-        synth.brush(st, pts, radius)
+        old = stroke["n_before"]
+        reopt = bool(old) and len(cKDTree(st.pos[:old]).query_ball_point(pts, r=radius, return_length=True).nonzero()[0]) > 0
+
+        def progress(done: int, total: int | None, message: str) -> None:
+            m = self.scene_message()
+            if m is not None:
+                emit(m)
+
+        synth.brush(st, pts, radius, reoptimize=reopt, progress=progress)
         self._drop_state_overlaps(n0)
 
     def _drop_state_overlaps(self, n0: int) -> None:

@@ -1,0 +1,311 @@
+// strew studio front end: the scene canvas, the tools, the websocket and the status bar.
+// Everything here only draws and sends JSON data; the server does the synthesis.
+
+import { View, Elements, Library, drawElements, drawPolyline, drawArrows } from "./render.js";
+import { PaletteEditor } from "./palette.js";
+
+const $ = (id) => document.getElementById(id);
+const canvas = $("scene");
+const ctx = canvas.getContext("2d");
+
+const studio = {
+  lib: new Library(),
+  scene: new Elements(),
+  view: new View(),
+  tool: "brush",
+  strokes: { flow: [], boundary: [], arrows: [], arrow_length: 10, region: [] },
+  palette: { exemplars: [], selection: [] },
+  files: { files: [], examples: [] },
+  live: null,          // the stroke being drawn: {tool, points}
+  cursor: null,        // world position of the pointer
+  errors: [],          // error messages received (for tests)
+  messages: [],        // status messages received
+  frames: 0,
+  stats: { strokeStart: null, countAtStart: 0, firstFrame: null, lastFrame: null, added: 0, rate: null },
+  connected: false,
+  pending: new Map(),
+};
+window.studio = studio;
+
+// ------------------------------------------------------------------ websocket
+let ws = null;
+let nextId = 1;
+function connect() {
+  const proto = location.protocol === "https:" ? "wss:" : "ws:";
+  ws = new WebSocket(`${proto}//${location.host}/ws`);
+  ws.onopen = () => { studio.connected = true; setConn("connected", "ok"); send({ type: "hello" }); };
+  ws.onclose = () => { studio.connected = false; setConn("disconnected", "bad"); };
+  ws.onmessage = (ev) => { let m; try { m = JSON.parse(ev.data); } catch { return; } onMessage(m); };
+}
+function send(msg) {
+  if (!ws || ws.readyState !== 1) return null;
+  const id = nextId++;
+  ws.send(JSON.stringify({ ...msg, id }));
+  return id;
+}
+// Send and resolve when the server says the message is done (or failed).
+function request(msg) {
+  return new Promise((resolve) => {
+    const id = send(msg);
+    if (id === null) { resolve({ type: "error", message: "not connected" }); return; }
+    studio.pending.set(id, resolve);
+  });
+}
+studio.send = send;
+studio.request = request;
+function setConn(text, cls) { const el = $("st-conn"); el.textContent = text; el.className = "conn " + cls; }
+
+function onMessage(m) {
+  switch (m.type) {
+    case "shapes": studio.lib.set(m); paletteEditor.libraryChanged(); dirty(); break;
+    case "scene": onScene(m); break;
+    case "palette": studio.palette = m; renderPaletteList(); paletteEditor.update(m); break;
+    case "strokes": studio.strokes = m; dirty(); break;
+    case "files": studio.files = m; renderFiles(); break;
+    case "status": onStatus(m); break;
+    case "error":
+      studio.errors.push(m.message); showMessage(m.message, true);
+      resolvePending(null, m); break;
+    case "done": resolvePending(m.id, m); break;
+    case "exported": studio.lastExport = m; break;
+    case "saved": studio.lastSave = m; break;
+    default: break;
+  }
+}
+function resolvePending(id, m) {
+  if (id !== null && id !== undefined && studio.pending.has(id)) {
+    const f = studio.pending.get(id); studio.pending.delete(id); f(m);
+  } else if (m.type === "error") {
+    // errors come before the 'done' that never follows them: resolve the oldest waiter
+    const first = studio.pending.keys().next();
+    if (!first.done) { const f = studio.pending.get(first.value); studio.pending.delete(first.value); f(m); }
+  }
+}
+
+function onScene(m) {
+  const before = studio.scene.n;
+  if (m.op === "replace") studio.scene.replace(m);
+  else { if (m.update.index.length) studio.scene.update(m.update); if (m.append.k.length) studio.scene.append(m.append); }
+  const grew = studio.scene.n > before;
+  if (studio.live && grew) studio.stats.pendingArrival = true;
+  dirty();
+}
+
+function onStatus(m) {
+  $("st-count").textContent = `${m.count} elements`;
+  $("st-dist").textContent = "avg. neighbourhood distance " + (m.distance === null ? "–" : m.distance.toPrecision(4));
+  $("undo").disabled = !m.undo; $("redo").disabled = !m.redo;
+  if (m.message) { studio.messages.push(m.message); showMessage(m.message, false); }
+  studio.status = m;
+}
+function showMessage(text, isError) {
+  const el = $("st-msg"); el.textContent = text; el.className = isError ? "error" : "";
+}
+
+// ------------------------------------------------------------------ drawing
+let needsDraw = true;
+function dirty() { if (!needsDraw) { needsDraw = true; requestAnimationFrame(draw); } }
+function resize() {
+  const dpr = window.devicePixelRatio || 1;
+  const r = canvas.getBoundingClientRect();
+  canvas.width = Math.max(1, Math.round(r.width * dpr));
+  canvas.height = Math.max(1, Math.round(r.height * dpr));
+  needsDraw = false; dirty();
+}
+function regionBounds() {
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (const ring of studio.strokes.region) for (const [x, y] of ring) { x0 = Math.min(x0, x); y0 = Math.min(y0, y); x1 = Math.max(x1, x); y1 = Math.max(y1, y); }
+  return isFinite(x0) ? [x0, y0, x1, y1] : [0, 0, 800, 600];
+}
+function fit() { const r = canvas.getBoundingClientRect(); studio.view.fit(regionBounds(), r.width, r.height); dirty(); }
+studio.fit = fit;
+
+function draw(t) {
+  needsDraw = false;
+  const dpr = window.devicePixelRatio || 1;
+  const w = canvas.width / dpr, h = canvas.height / dpr;
+  const view = studio.view;
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  ctx.fillStyle = "#eceae4"; ctx.fillRect(0, 0, w, h);
+  // region: white inside, dashed outline
+  ctx.fillStyle = "#fff"; ctx.beginPath();
+  for (const ring of studio.strokes.region) {
+    ring.forEach(([x, y], i) => { const [sx, sy] = view.toScreen(x, y); i ? ctx.lineTo(sx, sy) : ctx.moveTo(sx, sy); });
+    ctx.closePath();
+  }
+  ctx.fill("evenodd");
+  ctx.setLineDash([5, 4]); ctx.strokeStyle = "#999"; ctx.lineWidth = 1;
+  for (const ring of studio.strokes.region) drawPolyline(ctx, view, ring, true);
+  ctx.setLineDash([]);
+  // flow field arrows and strokes
+  if (studio.strokes.arrows.length) { ctx.strokeStyle = "rgba(40,110,200,.45)"; ctx.lineWidth = 1; drawArrows(ctx, view, studio.strokes.arrows, studio.strokes.arrow_length); }
+  drawElements(ctx, studio.lib, studio.scene, view, w, h, dpr);
+  ctx.lineWidth = 2; ctx.strokeStyle = "rgba(40,110,200,.9)";
+  for (const s of studio.strokes.flow) drawPolyline(ctx, view, s);
+  ctx.strokeStyle = "rgba(200,40,40,.9)"; ctx.lineWidth = 3;
+  for (const s of studio.strokes.boundary) drawPolyline(ctx, view, s);
+  // the stroke being drawn and the brush outline
+  if (studio.live) {
+    const colors = { brush: "rgba(60,120,220,.5)", spray: "rgba(60,160,90,.5)", erase: "rgba(220,60,60,.5)", flow: "rgba(40,110,200,.9)", boundary: "rgba(200,40,40,.9)", region: "rgba(80,80,80,.9)" };
+    ctx.strokeStyle = colors[studio.live.tool] || "#333"; ctx.lineWidth = 1.5;
+    drawPolyline(ctx, view, studio.live.points, studio.live.tool === "region");
+  }
+  if (studio.cursor && ["brush", "spray", "erase"].includes(studio.tool)) {
+    const [sx, sy] = view.toScreen(studio.cursor[0], studio.cursor[1]);
+    ctx.strokeStyle = "rgba(0,0,0,.35)"; ctx.lineWidth = 1; ctx.beginPath();
+    ctx.arc(sx, sy, radius() * view.zoom, 0, 2 * Math.PI); ctx.stroke();
+  }
+  studio.frames++;
+  // the first frame that shows elements of a stroke: latency and rate (status bar)
+  const st = studio.stats;
+  if (st.pendingArrival) {
+    st.pendingArrival = false;
+    const now = performance.now();
+    if (st.firstFrame === null) st.firstFrame = now;
+    st.lastFrame = now;
+    st.added = studio.scene.n - st.countAtStart;
+    const dt = (now - st.strokeStart) / 1000;
+    if (dt > 0 && st.added > 0) { st.rate = st.added / dt; $("st-rate").textContent = `${Math.round(st.rate)} el/s`; }
+  }
+}
+
+// ------------------------------------------------------------------ tools
+function radius() { return +$("radius").value; }
+function setTool(t) {
+  studio.tool = t;
+  for (const b of document.querySelectorAll("#tools button")) b.classList.toggle("active", b.dataset.tool === t);
+  dirty();
+}
+studio.setTool = setTool;
+for (const b of document.querySelectorAll("#tools button")) b.addEventListener("click", () => setTool(b.dataset.tool));
+$("radius").addEventListener("input", () => { $("radius-out").textContent = $("radius").value; dirty(); });
+$("grow-mode").addEventListener("change", () => send({ type: "settings", grow_mode: $("grow-mode").value }));
+$("undo").addEventListener("click", () => send({ type: "undo" }));
+$("redo").addEventListener("click", () => send({ type: "redo" }));
+$("stop").addEventListener("click", () => send({ type: "stop" }));
+$("fit").addEventListener("click", fit);
+$("clear").addEventListener("change", () => { const v = $("clear").value; if (v) send({ type: "clear", what: v }); $("clear").value = ""; });
+$("save").addEventListener("click", () => send({ type: "save" }));
+$("load").addEventListener("click", () => send({ type: "load_project" }));
+$("export").addEventListener("click", () => send({ type: "export", path: $("export-name").value.trim() }));
+
+let panning = null;
+let buffer = [];      // stroke points not sent yet
+let flushQueued = false;
+function eventWorld(ev) { const r = canvas.getBoundingClientRect(); return studio.view.toWorld(ev.clientX - r.left, ev.clientY - r.top); }
+const r3 = (p) => [Math.round(p[0] * 1000) / 1000, Math.round(p[1] * 1000) / 1000];
+
+function flush() {
+  flushQueued = false;
+  if (!studio.live || !buffer.length) return;
+  send({ type: "stroke_move", points: buffer }); buffer = [];
+}
+canvas.addEventListener("pointerdown", (ev) => {
+  canvas.focus();
+  const p = r3(eventWorld(ev));
+  if (ev.button === 1 || studio.tool === "pan" || spaceDown) {
+    panning = { x: ev.clientX, y: ev.clientY, ox: studio.view.ox, oy: studio.view.oy };
+    canvas.setPointerCapture(ev.pointerId); return;
+  }
+  if (ev.button !== 0) return;
+  if (studio.tool === "fill") { send({ type: "fill", point: [p] }); return; }
+  canvas.setPointerCapture(ev.pointerId);
+  studio.live = { tool: studio.tool, points: [p] };
+  const st = studio.stats;
+  Object.assign(st, { strokeStart: performance.now(), countAtStart: studio.scene.n, firstFrame: null, lastFrame: null, added: 0, rate: null, pendingArrival: false });
+  buffer = [];
+  send({ type: "stroke_start", tool: studio.tool, radius: radius(), points: [p] });
+  dirty();
+});
+canvas.addEventListener("pointermove", (ev) => {
+  studio.cursor = eventWorld(ev);
+  if (panning) {
+    studio.view.ox = panning.ox + ev.clientX - panning.x; studio.view.oy = panning.oy + ev.clientY - panning.y;
+    dirty(); return;
+  }
+  if (studio.live) {
+    const p = r3(studio.cursor);
+    const last = studio.live.points[studio.live.points.length - 1];
+    if (Math.hypot(p[0] - last[0], p[1] - last[1]) * studio.view.zoom < 2) { dirty(); return; }
+    studio.live.points.push(p); buffer.push(p);
+    // one segment per animation frame at most; the server merges segments it cannot keep up with
+    if (!flushQueued) { flushQueued = true; requestAnimationFrame(flush); }
+  }
+  dirty();
+});
+function endStroke(ev) {
+  if (panning) { panning = null; return; }
+  if (!studio.live) return;
+  send({ type: "stroke_end", points: buffer }); buffer = [];
+  studio.live = null; dirty();
+}
+canvas.addEventListener("pointerup", endStroke);
+canvas.addEventListener("pointercancel", endStroke);
+canvas.addEventListener("pointerleave", () => { studio.cursor = null; dirty(); });
+canvas.addEventListener("wheel", (ev) => {
+  ev.preventDefault();
+  const r = canvas.getBoundingClientRect();
+  studio.view.zoomAt(ev.clientX - r.left, ev.clientY - r.top, Math.exp(-ev.deltaY * 0.0015));
+  dirty();
+}, { passive: false });
+
+let spaceDown = false;
+const keys = { b: "brush", s: "spray", f: "fill", e: "erase", w: "flow", o: "boundary", r: "region" };
+window.addEventListener("keydown", (ev) => {
+  if (ev.target.tagName === "INPUT" || ev.target.tagName === "SELECT") return;
+  if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === "z") { send({ type: ev.shiftKey ? "redo" : "undo" }); ev.preventDefault(); return; }
+  if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === "y") { send({ type: "redo" }); ev.preventDefault(); return; }
+  if (ev.key === " ") { spaceDown = true; ev.preventDefault(); return; }
+  if (!ev.ctrlKey && !ev.metaKey && keys[ev.key]) setTool(keys[ev.key]);
+});
+window.addEventListener("keyup", (ev) => { if (ev.key === " ") spaceDown = false; });
+
+// ------------------------------------------------------------------ palette list and files
+function renderFiles() {
+  const sel = $("files"); const keep = sel.value; sel.innerHTML = "";
+  for (const f of studio.files.examples) { const o = document.createElement("option"); o.value = "example:" + f; o.textContent = "example: " + f; sel.appendChild(o); }
+  for (const f of studio.files.files) { const o = document.createElement("option"); o.value = "file:" + f; o.textContent = f; sel.appendChild(o); }
+  if (keep) sel.value = keep;
+}
+$("load-exemplar").addEventListener("click", () => {
+  const v = $("files").value; if (!v) return;
+  const [kind, ...rest] = v.split(":"); const name = rest.join(":");
+  send(kind === "example" ? { type: "load_exemplar", example: name } : { type: "load_exemplar", path: name });
+});
+function renderPaletteList() {
+  const ul = $("exemplars"); ul.innerHTML = "";
+  for (const ex of studio.palette.exemplars) {
+    const li = document.createElement("li");
+    li.dataset.name = ex.name;
+    li.classList.toggle("active", ex.name === paletteEditor.active);
+    const cb = document.createElement("input"); cb.type = "checkbox"; cb.checked = ex.selected; cb.title = "use in synthesis (select one or several)";
+    cb.addEventListener("click", (e) => {
+      e.stopPropagation();
+      const names = studio.palette.exemplars.filter((x) => (x.name === ex.name ? cb.checked : x.selected)).map((x) => x.name);
+      send({ type: "select", names });
+    });
+    const label = document.createElement("span"); label.textContent = ex.name;
+    const count = document.createElement("span"); count.className = "count"; count.textContent = ex.n;
+    li.append(cb, label, count);
+    li.addEventListener("click", () => { paletteEditor.setActive(ex.name); renderPaletteList(); });
+    ul.appendChild(li);
+  }
+}
+$("new-exemplar").addEventListener("click", () => send({ type: "palette_new", name: "exemplar" }));
+$("from-scene").addEventListener("click", () => send({ type: "palette_from_scene", name: "painted" }));
+$("remove-exemplar").addEventListener("click", () => { if (paletteEditor.active) send({ type: "palette_remove", exemplar: paletteEditor.active }); });
+
+const paletteEditor = new PaletteEditor($("palette-canvas"), studio, send, {
+  title: $("editor-title"), note: $("palette-note"), kind: $("place-kind"), radiusField: $("radius-field"),
+  radiusValue: $("radius-value"), showEdges: $("show-edges"), tools: document.querySelectorAll("#edit-tools button"), brushRadius: radius,
+});
+studio.paletteEditor = paletteEditor;
+
+// ------------------------------------------------------------------ start
+window.addEventListener("resize", () => { resize(); });
+setTool("brush");
+resize();
+let fitted = false;
+connect();
+// fit the view to the region once the first strokes message arrived
+const fitTimer = setInterval(() => { if (studio.strokes.region.length && !fitted) { fitted = true; fit(); clearInterval(fitTimer); } }, 30);
