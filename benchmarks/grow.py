@@ -20,10 +20,31 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
 
-from _runner import Bench, median_time, parse_args  # noqa: E402
+from _runner import Bench, parse_args  # noqa: E402
 
 TARGET_S = {1000: 0.5, 10000: 10.0}
 PAPER_S = {1000: 5.0}
+
+
+def timed_both(fn, repeat: int, warmup: int):
+    """Median wall and CPU (process) seconds of ``repeat`` runs after ``warmup`` runs.
+
+    The CPU time is reported too because the machine may be shared: wall time then
+    includes waiting for a core.
+    """
+    import statistics
+    import time
+
+    out = None
+    for _ in range(warmup):
+        out = fn()
+    walls, cpus = [], []
+    for _ in range(max(1, repeat)):
+        w, c = time.perf_counter(), time.process_time()
+        out = fn()
+        walls.append(time.perf_counter() - w)
+        cpus.append(time.process_time() - c)
+    return statistics.median(walls), statistics.median(cpus), out
 
 
 def hex_regularity(out, spacing: float) -> float:
@@ -54,12 +75,14 @@ def main() -> None:
         for n in sizes:
             repeat = 1 if (args.quick or n > 2000) else args.repeat
             warmup = 0 if n > 2000 else 1
-            t_relax, out = median_time(lambda: grow(ref, count=n, rng=1, relax=True), repeat=repeat, warmup=warmup)
-            t_plain, _ = median_time(lambda: grow(ref, count=n, rng=1, relax=False), repeat=repeat, warmup=warmup)
+            t_relax, c_relax, out = timed_both(lambda: grow(ref, count=n, rng=1, relax=True), repeat, warmup)
+            t_plain, c_plain, _ = timed_both(lambda: grow(ref, count=n, rng=1, relax=False), repeat, warmup)
             row = dict(
                 n=len(out),
                 relax_s=t_relax,
                 no_relax_s=t_plain,
+                relax_cpu_s=c_relax,
+                no_relax_cpu_s=c_plain,
                 relax_overhead=t_relax / t_plain,
                 relax_el_per_s=len(out) / t_relax,
                 no_relax_el_per_s=len(out) / t_plain,
@@ -67,6 +90,7 @@ def main() -> None:
             if n in TARGET_S:
                 row["target_s"] = TARGET_S[n]
                 row["target_over_time"] = TARGET_S[n] / t_relax
+                row["target_over_cpu"] = TARGET_S[n] / c_relax
             if n in PAPER_S:
                 row["paper_over_time"] = PAPER_S[n] / t_relax
             if n <= 2000:
@@ -75,7 +99,8 @@ def main() -> None:
                 row["six_nbr_share"] = hex_regularity(out, ref.shortest_edge)
             bench.row(f"{label} {n}", **row)
     bench.finish()
-    print("target_over_time >= 1 meets the target (1,000 with relaxation in 0.5 s; 10,000 in 10 s).")
+    print("target_over_time (wall) / target_over_cpu (process time) >= 1 meets the target "
+          "(1,000 with relaxation in 0.5 s; 10,000 in 10 s).")
 
 
 if __name__ == "__main__":
