@@ -26,6 +26,7 @@ SECTIONS: list[tuple[str, str]] = [
     ("Packing: fill-gap (Sakurai & Miyata)", "strew.pack._demo"),
     ("Growth from one seed (Ijiri et al.)", "strew.grow._demo"),
     ("Programmable arrangements: planar maps, partitions, mappers (Loi et al.)", "strew.program._demo"),
+    ("Adaptive clip art: rule-driven floral ornament (Wong et al.)", "strew.ornament._demo"),
     ("Example palettes and region-growing synthesis (Davison et al.)", "strew.synth._demo"),
 ]
 

@@ -251,8 +251,11 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
 def scan_blocks(dist_all, dist_el, covered, skip, dirty, best_val, best_idx, block, adj_tol, ex_x, ex_y, n_ex, x0, y0, h):
     """Recompute the best candidate circle of every dirty block (§4.1 FindEmptyCircle).
 
-    A candidate centre is a free cell whose ``dist_all`` is at least that of its eight
-    neighbours (a medial-axis point of the distance transform), whose inflation stopped
+    A candidate centre is a free cell on the medial axis of the distance transform (its
+    circle lies inside none of its eight neighbours' circles: the field rises by less than
+    0.85 of the step towards every neighbour; the paper's "at least as great as those of
+    its neighbors" would miss the rising ridges between the ornament and the boundary,
+    where the largest circle adjacent to the ornament often lies), whose inflation stopped
     at an element rather than at the boundary (``dist_el - dist_all <= adj_tol``), that
     is not marked ``skip`` and whose circle contains no point of the exclude list
     (``ex_x[:n_ex], ex_y[:n_ex]``, world coordinates). Each block keeps its largest one in
@@ -285,7 +288,11 @@ def scan_blocks(dist_all, dist_el, covered, skip, dirty, best_val, best_idx, blo
                             if nj < 0 or nj >= cols:
                                 ismax = False
                                 break
-                            if dist_all[ni, nj] > v:
+                            # medial-axis test: the circle at (i, j) is not inside a
+                            # neighbour's circle, i.e. the field rises slower than
+                            # its unit slope off the skeleton (0.85 < cos 22.5 deg)
+                            step = 1.0 if (di == 0 or dj == 0) else 1.4142135623730951
+                            if dist_all[ni, nj] - v > 0.85 * step:
                                 ismax = False
                                 break
                         if not ismax:

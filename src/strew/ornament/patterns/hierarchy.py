@@ -24,6 +24,7 @@ from strew.ornament import (
     Mark,
     Pattern,
     Point,
+    Polygon,
     angle_of,
     offset,
     tapered_stroke,
@@ -36,7 +37,7 @@ pattern = Pattern(
     "hierarchy",
     state={"vines": 0},
     # (phase, the empty-circle radius at which it hands over to the next)
-    phases=[("vines", 12.0), ("flowers", 6.0), ("leaves", 3.0), ("fillers", None)],
+    phases=[("vines", 8.0), ("flowers", 5.0), ("leaves", 2.5), ("fillers", None)],
     min_radius=1.5,
     description="Fig. 10: vines, then flowers on subsidiary vines, then leaves, then small fillers.",
     draw_order=["vine", "twig", "leaf", "flower", "quote"],
@@ -46,7 +47,9 @@ pattern.element("seed", Point)
 pattern.element("vine", Bezier, orientation=1)
 pattern.element("twig", Bezier)  # a shorter subsidiary vine carrying a flower
 pattern.element("flower", Circle, color=0)
-pattern.element("leaf", [Bezier, Bezier])
+# two Bezier edges, and their outline as a polygon so that the inside counts as filled
+# (with the edges alone, fillers would grow inside leaves)
+pattern.element("leaf", [Bezier, Bezier, Polygon])
 pattern.element("quote", [Circle, Bezier, Circle, Bezier])  # a double-quote-shaped filler
 
 
@@ -68,13 +71,20 @@ def fits(ctx, children, parent=None):
 # -- phase 1: vines ------------------------------------------------------------------------
 def grow_vine(ctx, parent, vine, start, heading, turn):
     g, rho = ctx.goal.center, ctx.goal.radius
-    end = offset(g, g - start, -0.25 * rho)  # a little short of the goal centre
-    vine.proxy.set(start, angle_of(heading), 0.45, end, angle_of(end - start) + turn * 0.7, 0.35)
-    vine.orientation = turn
-    return fits(ctx, vine, parent)
+    # towards the goal centre, bending to the side `turn`; shorter and then bending the
+    # other way if that does not fit
+    for short, bend in ((0.25, turn), (0.25, -turn), (0.6, turn), (0.6, -turn)):
+        end = offset(g, g - start, -short * rho)
+        vine.proxy.set(start, angle_of(heading), 0.45, end, angle_of(end - start) + bend * 0.7, 0.35)
+        vine.orientation = bend
+        if fits(ctx, vine, parent):
+            return True
+    return False
 
 
-@pattern.rule("seed", children=["vine"], phase="vines")
+# the seed starts a vine in whatever phase its turn comes (a seed whose first vine did
+# not fit early on may still start one later)
+@pattern.rule("seed", children=["vine"])
 def seed_to_vine(ctx, seed, vine):
     start = seed.proxy.center
     if not grow_vine(ctx, seed, vine, start, ctx.goal.center - start, 1):
@@ -110,6 +120,8 @@ def set_leaf(leaf, base, tip, spread=math.pi / 5):
     d = angle_of(tip - base)
     leaf.proxies[0].set(base, d + spread, 0.6, tip, d, 0.4)
     leaf.proxies[1].set(base, d - spread, 0.6, tip, d, 0.4)
+    a, b = leaf.proxies[0].polyline(12), leaf.proxies[1].polyline(12)
+    leaf.proxies[2].set(np.vstack([a, b[::-1][1:-1]]))
 
 
 @pattern.rule("vine twig", children=["leaf"], phase="leaves")

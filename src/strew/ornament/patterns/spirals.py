@@ -73,9 +73,9 @@ def grow_spiral(ctx, parent, start, tangent, turn):
         # leaves the parent, so that the joining segment bends least
         best = None
         for phi0 in np.linspace(0, 2 * math.pi, 16, endpoint=False):
-            pieces = spiral_controls(g, r0, phi0, turn, r_end)
-            s = pieces[0, 0]
-            t_s = unit(pieces[0, 1] - pieces[0, 0])
+            radial = np.array([math.cos(phi0), math.sin(phi0)])
+            s = g + r0 * radial
+            t_s = unit(-PITCH * radial + turn * np.array([-radial[1], radial[0]]))  # spiral tangent at its start
             chord = s - start
             if np.hypot(*chord) < 1e-9:
                 continue
@@ -83,10 +83,11 @@ def grow_spiral(ctx, parent, start, tangent, turn):
                 t_a = sign * tangent
                 score = _turning(t_a, chord) + _turning(chord, t_s)
                 if best is None or score < best[0]:
-                    best = (score, pieces, t_a)
+                    best = (score, phi0, t_a)
         if best is None:
             return FAILURE
-        _, pieces, t_a = best
+        _, phi0, t_a = best
+        pieces = spiral_controls(g, r0, phi0, turn, r_end)
         s = pieces[0, 0]
         length = float(np.hypot(*(s - start)))
         t_s = unit(pieces[0, 1] - pieces[0, 0])
