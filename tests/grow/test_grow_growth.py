@@ -266,3 +266,46 @@ def test_variation_jitter():
 def test_bad_parameters(kwargs, message):
     with pytest.raises(InputError, match=message):
         grow(hex_exemplar(), **kwargs)
+
+
+def test_grown_connectivity_round_trips_as_an_exemplar(tmp_path):
+    from strew import load, save
+
+    out = grow(hex_exemplar(), count=120, rng=1, connectivity=True)
+    p = tmp_path / "g.json"
+    save(out, p)
+    back = load(p)
+    ref = analyze(back)
+    assert {tuple(e) for e in ref.edges.tolist()} == {tuple(e) for e in out.extra["connectivity"]["edges"]}
+    with pytest.raises(InputError, match="made for 120 elements"):
+        analyze(back.select(np.arange(100)))
+
+
+def test_progress_and_cancellation():
+    from strew import Cancelled
+
+    seen = []
+    grow(hex_exemplar(), count=300, rng=1, progress=lambda d, t, m: seen.append((d, t)))
+    assert seen and seen[-1] == (300, 300)
+    assert all(a[0] <= b[0] for a, b in zip(seen, seen[1:]))
+    with pytest.raises(Cancelled):
+        grow(hex_exemplar(), count=300, rng=1, should_cancel=lambda: True)
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=8)
+@given(st.floats(-np.pi, np.pi), st.floats(0.5, 3.0), st.floats(-1e3, 1e3), st.floats(-1e3, 1e3))
+def test_similarity_transformed_lattice_grows_regularly(angle, s, tx, ty):
+    # rotate, scale and move the exemplar lattice: the grown pattern follows
+    ex = hex_exemplar()
+    R = s * np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]])
+    xy = ex.xy @ R.T + (tx, ty)
+    shapes = {k: sh.transformed(np.c_[s * np.eye(2), np.zeros(2)]) for k, sh in ex.shapes.items()}
+    moved = ex.replace(shapes=shapes, x=xy[:, 0], y=xy[:, 1], rotation=np.full(len(ex), angle))
+    out = grow(moved, count=200, mode="rotate", rng=0)
+    _, frac = six_neighbour_fraction(out, spacing=SPACING * s, margin=1.5)
+    assert frac >= 0.9
+    assert len(metrics.overlaps(out)[0]) == 0

@@ -214,6 +214,12 @@ def _edges_from_extra(exemplar: Arrangement) -> np.ndarray | None:
     edges = conn.get("edges") if isinstance(conn, dict) else None
     if not isinstance(edges, list):
         raise InputError("connectivity.edges: missing or not a list of [i, j] pairs")
+    count = conn.get("count")
+    if count is not None and count != len(exemplar):
+        raise InputError(
+            f"connectivity: made for {count} elements but the document has {len(exemplar)} "
+            "(elements were added or removed since); delete the connectivity entry to rebuild it"
+        )
     return _check_edges(edges, len(exemplar), "connectivity.edges")
 
 
