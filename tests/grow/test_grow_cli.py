@@ -147,3 +147,9 @@ def test_bad_options_exit_2(tmp_path, capsys, extra, message):
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and message in err
     assert not out.exists()
+
+
+def test_start_kind_option(tmp_path):
+    out = tmp_path / "k.json"
+    assert main(["grow", STONES, "--count", "10", "--start-kind", "small_stone", "-q", "--out", str(out)]) == 0
+    assert load(out).kind_names[0] == "small_stone"

@@ -309,3 +309,12 @@ def test_similarity_transformed_lattice_grows_regularly(angle, s, tx, ty):
     _, frac = six_neighbour_fraction(out, spacing=SPACING * s, margin=1.5)
     assert frac >= 0.9
     assert len(metrics.overlaps(out)[0]) == 0
+
+
+def test_initial_seed_with_a_symbol_id():
+    ex = stone_exemplar()
+    for name in ex.kinds:
+        out = grow(ex, count=5, rng=0, start_kind=name)
+        assert out.kind_names[0] == name
+    with pytest.raises(InputError, match="--start-kind"):
+        grow(ex, count=5, start_kind="nope")

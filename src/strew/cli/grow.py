@@ -12,6 +12,7 @@ from ._common import check_outputs, domain_options, echo, out_option, progress_b
 @click.option("--count", type=int, default=None, help="Stop at N elements [default: fill the region].")
 @domain_options()
 @click.option("--start", default=None, metavar="X,Y", help="Initial seed [default: the region's centre].")
+@click.option("--start-kind", default=None, metavar="KIND", help="Symbol id (kind) of the initial seed.")
 @click.option("--mode", type=click.Choice(["fixed", "rotate", "flow"]), default="fixed", show_default=True,
               help="Rotation mode (§5.3): keep, best-fit rotate, or follow --flow.")
 @click.option("--flow", "flow_path", type=click.Path(dir_okay=False), default=None,
@@ -37,6 +38,7 @@ def command(
     region: str | None,
     size: str | None,
     start: str | None,
+    start_kind: str | None,
     mode: str,
     flow_path: str | None,
     boundary_path: str | None,
@@ -109,6 +111,7 @@ def command(
             count=count,
             region=dom,
             start=start_pt,
+            start_kind=start_kind,
             mode=mode,
             flow=flow,
             boundary=boundary,
@@ -131,6 +134,7 @@ def command(
         "count": count,
         "mode": mode,
         "start": list(start_pt) if start_pt else None,
+        "start_kind": start_kind,
         "flow": flow_path,
         "boundary": boundary_path,
         "spray": spray_path,

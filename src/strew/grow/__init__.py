@@ -56,6 +56,7 @@ def grow(
     count: int | None = None,
     region: Region | None = None,
     start: tuple[float, float] | None = None,
+    start_kind: str | None = None,
     mode: str = "fixed",
     flow: Callable[[np.ndarray], np.ndarray] | None = None,
     boundary: Iterable[np.ndarray] | None = None,
@@ -88,6 +89,8 @@ def grow(
     start : (x, y), optional
         The initial seed; by default the region's centre (the spray path's start with
         ``spray``, the origin otherwise).
+    start_kind : str, optional
+        Symbol id of the initial seed (§5.1: a seed may carry one); any kind by default.
     mode : {"fixed", "rotate", "flow"}
         §5.3: keep the reference orientation, rotate it to the best fit (Eq. 4), or turn
         its local x axis to the flow direction at the seed.
@@ -191,12 +194,18 @@ def grow(
         start = tuple(float(v) for v in start)  # type: ignore[assignment]
         if len(start) != 2 or not all(np.isfinite(start)):
             raise InputError(f"--start: expected a finite point x,y, got {start!r}")
+    start_index = -1
+    if start_kind is not None:
+        if start_kind not in kinds:
+            raise InputError(f"--start-kind: unknown kind {start_kind!r} (exemplar kinds: {', '.join(kinds)})")
+        start_index = kinds.index(start_kind)
     if int(relax_every) < 1:
         raise InputError(f"relax_every: must be at least 1, got {relax_every!r}")
     params = GrowParams(
         count=count,
         region=region,
         start=start,  # type: ignore[arg-type]
+        start_kind=start_index,
         mode=mode,
         flow=flow,
         boundary=bounds,

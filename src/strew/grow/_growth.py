@@ -38,6 +38,7 @@ class GrowParams:
     count: int | None = None
     region: Region | None = None
     start: tuple[float, float] | None = None
+    start_kind: int = -1
     mode: str = "fixed"
     flow: Callable[[np.ndarray], np.ndarray] | None = None
     boundary: Sequence[np.ndarray] = ()
@@ -640,7 +641,7 @@ class _Grower:
         p = self.p
         self.max_scale = float(self.ex_scale.max()) * (1.0 + p.jitter_scale)
         self.origin = start
-        s0 = self.new_object(start[0], start[1], -1)
+        s0 = self.new_object(start[0], start[1], p.start_kind)
         first = True
         target = p.count if p.count is not None else p.max_elements
         while self.heap and len(self.order) < target:
