@@ -1,0 +1,149 @@
+"""The studio in a real browser: Playwright drives Debian's chromium headless.
+
+Loads an exemplar and paints a stroke; elements appear along the stroke and not
+elsewhere, on screen; erases part of them and undoes; exports SVG and checks the file.
+"""
+
+from __future__ import annotations
+
+import os
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+import shapely
+
+from strew.studio._background import CHROMIUM, CHROMIUM_ARGS
+
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.skipif(not os.path.exists(CHROMIUM), reason=f"{CHROMIUM} is not installed"),
+]
+
+
+@pytest.fixture(scope="module")
+def page(tmp_path_factory):
+    pytest.importorskip("fastapi")
+    sync_api = pytest.importorskip("playwright.sync_api")
+    from strew.studio._background import BackgroundStudio
+
+    project = tmp_path_factory.mktemp("studio_project")
+    with BackgroundStudio(project, seed=2) as server:
+        with sync_api.sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+            pg = browser.new_page(viewport={"width": 1200, "height": 760})
+            errors: list[str] = []
+            pg.on("pageerror", lambda e: errors.append(str(e)))
+            pg.goto(server.url)
+            pg.wait_for_function("window.studio && window.studio.connected && window.studio.strokes.region.length > 0")
+            pg.project = project
+            pg.page_errors = errors
+            yield pg
+            browser.close()
+
+
+def _screen(page, x, y):
+    box = page.locator("#scene").bounding_box()
+    sx, sy = page.evaluate(f"window.studio.view.toScreen({x}, {y})")
+    return box["x"] + sx, box["y"] + sy
+
+
+def _drag(page, points, steps=3):
+    page.mouse.move(*_screen(page, *points[0]))
+    page.mouse.down()
+    for p in points[1:]:
+        page.mouse.move(*_screen(page, *p), steps=steps)
+        page.wait_for_timeout(10)
+    page.mouse.up()
+
+
+def _wait_message(page, prefix, start):
+    page.wait_for_function(f"window.studio.messages.slice({start}).some(m => m.startsWith({prefix!r}))", timeout=20000)
+
+
+def _scene(page):
+    d = page.evaluate("(() => { const s = window.studio.scene; return {n: s.n, x: Array.from(s.x.subarray(0, s.n)), y: Array.from(s.y.subarray(0, s.n))}; })()")
+    return np.c_[d["x"], d["y"]]
+
+
+def _ink(page, x0, y0, x1, y1):
+    """Fraction of canvas pixels in a world box that differ from the white background."""
+    return page.evaluate(
+        f"""(() => {{
+        const c = document.getElementById('scene'), ctx = c.getContext('2d'), v = window.studio.view;
+        const d = window.devicePixelRatio || 1;
+        const [a, b] = v.toScreen({x0}, {y0}), [e, f] = v.toScreen({x1}, {y1});
+        const img = ctx.getImageData(Math.round(a * d), Math.round(b * d), Math.max(1, Math.round((e - a) * d)), Math.max(1, Math.round((f - b) * d))).data;
+        let ink = 0;
+        for (let i = 0; i < img.length; i += 4) if (img[i] < 235 || img[i + 1] < 235 || img[i + 2] < 235) ink++;
+        return ink / (img.length / 4);
+    }})()"""
+    )
+
+
+STROKE = [(150.0 + 25 * i, 300.0) for i in range(13)]  # (150, 300) to (450, 300)
+RADIUS = 40.0
+
+
+def test_paint_erase_undo_export(page):
+    assert page.evaluate("window.studio.scene.n") == 0
+    # load an exemplar into the palette through the panel
+    page.select_option("#files", "example:scales.svg")
+    page.click("#load-exemplar")
+    page.wait_for_function("window.studio.palette.exemplars.some(e => e.name === 'scales' && e.selected)")
+    page.evaluate(f"(() => {{ const r = document.getElementById('radius'); r.value = {RADIUS}; r.dispatchEvent(new Event('input')); }})()")
+
+    # paint a stroke with the generative brush
+    page.click("#tools button[data-tool=brush]")
+    start = len(page.evaluate("window.studio.messages"))
+    _drag(page, STROKE)
+    _wait_message(page, "brush:", start)
+    page.wait_for_timeout(100)
+    xy = _scene(page)
+    assert len(xy) >= 15
+    line = shapely.LineString(STROKE)
+    d = shapely.distance(line, shapely.points(xy))
+    assert np.all(d <= RADIUS + 1.0), "an element appeared away from the stroke"
+    assert xy[:, 0].min() < 200 and xy[:, 0].max() > 400, "elements do not follow the whole stroke"
+    # on screen: ink along the stroke, none elsewhere in the region
+    assert _ink(page, 160, 285, 440, 315) > 0.2
+    assert _ink(page, 100, 60, 700, 200) == 0.0
+    assert _ink(page, 100, 400, 700, 560) == 0.0
+    # the status bar counts them
+    assert page.inner_text("#st-count") == f"{len(xy)} elements"
+    assert page.evaluate("window.studio.stats.firstFrame !== null && window.studio.stats.rate > 0")
+
+    # erase part of them
+    before = xy.copy()
+    page.evaluate("(() => { const r = document.getElementById('radius'); r.value = 25; r.dispatchEvent(new Event('input')); })()")
+    page.click("#tools button[data-tool=erase]")
+    start = len(page.evaluate("window.studio.messages"))
+    cut = [(300.0, 230.0), (300.0, 300.0), (300.0, 370.0)]
+    _drag(page, cut)
+    _wait_message(page, "erase:", start)
+    page.wait_for_function(f"window.studio.scene.n < {len(before)}")
+    after = _scene(page)
+    gone = shapely.distance(shapely.LineString(cut), shapely.points(before)) <= 25.0
+    assert gone.any()
+    assert len(after) == len(before) - gone.sum()
+    assert np.all(shapely.distance(shapely.LineString(cut), shapely.points(after)) > 25.0)
+    assert _ink(page, 292, 285, 308, 315) == 0.0
+
+    # undo brings them back, exactly
+    start = len(page.evaluate("window.studio.messages"))
+    page.click("#undo")
+    _wait_message(page, "undone", start)
+    restored = _scene(page)
+    assert np.allclose(restored, before)
+    assert _ink(page, 292, 285, 308, 315) > 0.0
+
+    # export SVG into the project folder
+    page.fill("#export-name", "painted.svg")
+    page.click("#export")
+    page.wait_for_function("window.studio.lastExport && window.studio.lastExport.path === 'painted.svg'")
+    svg = page.project / "painted.svg"
+    root = ET.parse(svg).getroot()
+    assert root.tag.endswith("svg")
+    uses = [e for e in root.iter() if e.tag.endswith("use")]
+    assert len(uses) == len(before)
+    assert page.page_errors == []
