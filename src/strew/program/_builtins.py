@@ -224,9 +224,8 @@ def contour(f: Face) -> Curves:
     _need(f, (Face,), "contour", "a face")
     if f.is_unbounded:
         raise InputError("contour: the unbounded face has no contour")
-    from ._planar_map import _match_rows
-
     t = f._map._t
+    vindex = f._map.vertex_index
     labs = f.labels
     out = []
     poly = f.polygon
@@ -238,7 +237,7 @@ def contour(f: Face) -> Curves:
         face_on_right = (area2 > 0) == (k == 0)
         left, right = (EMPTY, labs) if face_on_right else (labs, EMPTY)
         ij = np.rint(pts / t.grid).astype(np.int64)
-        cut = np.sort(_match_rows(t.vertex_ij, ij)[1])
+        cut = np.array([k for k, (a, b) in enumerate(ij.tolist()) if (a, b) in vindex], dtype=np.int64)
         if len(cut) == 0:
             out.append(Curve(pts, True, EMPTY, left, right))
             continue

@@ -197,8 +197,14 @@ class PlanarMap:
             return _hash_bytes(b"f", b"unbounded")
         poly = t.face_polygons[i]
         ij = np.rint(shapely.get_coordinates(poly) / t.grid).astype(np.int64)
-        ij = np.unique(ij, axis=0)
-        return _hash_bytes(b"f", ij.tobytes())
+        ij = ij[np.lexsort((ij[:, 1], ij[:, 0]))]
+        ij = ij[np.r_[True, np.any(ij[1:] != ij[:-1], axis=1)]]
+        return _hash_bytes(b"f", np.ascontiguousarray(ij).tobytes())
+
+    @cached_property
+    def vertex_index(self) -> dict[tuple[int, int], int]:
+        """Vertex index by grid coordinates ``(round(x / grid), round(y / grid))``."""
+        return {(int(x), int(y)): k for k, (x, y) in enumerate(self._t.vertex_ij.tolist())}
 
     def __repr__(self) -> str:
         if "_t" not in self.__dict__:
@@ -300,12 +306,26 @@ def _point_segment_distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.n
     return np.sqrt(((p - q) ** 2).sum(axis=1))
 
 
+def _unique_rows(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(a, axis=0, return_inverse=True)`` for (n, 2) int rows, by lexsort."""
+    if len(a) == 0:
+        return a.reshape(0, 2), np.zeros(0, dtype=np.int64)
+    order = np.lexsort((a[:, 1], a[:, 0]))
+    s = a[order]
+    flag = np.empty(len(s), dtype=bool)
+    flag[0] = True
+    np.any(s[1:] != s[:-1], axis=1, out=flag[1:])
+    ids = np.cumsum(flag) - 1
+    inv = np.empty(len(a), dtype=np.int64)
+    inv[order] = ids
+    return s[flag], inv
+
+
 def _match_rows(table: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Pairs (i, j) with ``table[i] == rows[j]``; ``table`` holds unique (n, 2) int rows."""
     if len(rows) == 0 or len(table) == 0:
         return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    _, inv = np.unique(np.concatenate([table, rows]), axis=0, return_inverse=True)
-    inv = inv.reshape(-1)
+    _, inv = _unique_rows(np.concatenate([table, rows]))
     pos = np.full(int(inv.max()) + 1, -1, dtype=np.int64)
     pos[inv[: len(table)]] = np.arange(len(table))
     hit = pos[inv[len(table) :]]
@@ -418,8 +438,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
 
     # 4. raw vertices (every noded point)
     allij = np.concatenate([a_ij, b_ij])
-    uniq, inv = np.unique(allij, axis=0, return_inverse=True)
-    inv = inv.reshape(-1)
+    uniq, inv = _unique_rows(allij)
     su, sv = inv[:n_seg], inv[n_seg:]
     n_raw = len(uniq)
     out_cnt = np.bincount(su, minlength=n_raw)
