@@ -122,6 +122,8 @@ def test_weighted_labels_follow_probabilities():
     green = sum("green" in s for s in labs) / n
     none = sum(not s for s in labs) / n
     assert abs(red - 0.25) < 0.06 and abs(green - 0.5) < 0.06 and abs(none - 0.25) < 0.06
+    # one draw per cell: a face never gets its neighbours' labels (sides are right)
+    assert all(len(s) <= 1 for s in labs)
     assert all(e.labels == {"thick"} for e in pm.edges)
     dots = sum("dot" in v.labels for v in pm.vertices) / pm.n_vertices
     assert 0.35 < dots < 0.65
@@ -229,3 +231,12 @@ def test_arrangement_regions():
         g("big")
     with pytest.raises(strew.InputError, match="size must be a positive"):
         g(-1)
+
+
+def test_contour_and_to_curve_keep_face_labels():
+    g = grid_partition(set_face_labels(stripes_properties(0, 100), "a", "b"), set_face_labels(stripes_properties(pi / 2, 100), "c", "d"), KEEP_INSIDE)
+    ref = {tuple(np.round(centroid(f), 6)): f.labels for f in g(SQUARE).bounded_faces}
+    for m in (map_to_faces(contour, g), map_to_edges(to_curve, g), map_to_faces(lambda f: scale(contour(f), 0.5), g)):
+        got = {tuple(np.round(centroid(f), 6)): f.labels for f in m(SQUARE).bounded_faces}
+        assert got == ref and len(ref) == 16
+    assert {frozenset(v) for v in ref.values()} == {frozenset(x) for x in ({"a", "c"}, {"a", "d"}, {"b", "c"}, {"b", "d"})}
