@@ -519,3 +519,112 @@ def greedy_separated(pos, order, sep):
             head[g] = ns
             ns += 1
     return out[:ns]
+
+
+@numba.njit(cache=True)
+def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_sk, cell):
+    """Which query points would intersect an output element (uniform grid search).
+
+    A query ``i`` and an output element ``j`` intersect when ``|p_i - p_j|`` is below
+    ``factor (qr_i + orad_j)``, below ``min_dist[qsk_i, osk_j]`` (when ``use_sk``), or
+    below ``qcover_i``.
+
+    Parameters
+    ----------
+    pts : (m, 2) float
+    qr, qcover : (m,) float
+    qsk : (m,) int
+    opos : (n, 2) float
+    orad : (n,) float
+    osk : (n,) int
+    min_dist : (S, S) float
+    cell : float
+        At least the largest limit.
+
+    Returns
+    -------
+    (m,) bool
+    """
+    m = pts.shape[0]
+    n = opos.shape[0]
+    out = np.zeros(m, np.bool_)
+    if n == 0 or m == 0:
+        return out
+    x0 = opos[:, 0].min()
+    y0 = opos[:, 1].min()
+    nx = int((opos[:, 0].max() - x0) / cell) + 1
+    ny = int((opos[:, 1].max() - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(n, -1, np.int64)
+    for j in range(n):
+        g = int((opos[j, 0] - x0) / cell) * ny + int((opos[j, 1] - y0) / cell)
+        nxt[j] = head[g]
+        head[g] = j
+    for i in range(m):
+        gx = int(np.floor((pts[i, 0] - x0) / cell))
+        gy = int(np.floor((pts[i, 1] - y0) / cell))
+        hit = False
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    dx = pts[i, 0] - opos[j, 0]
+                    dy = pts[i, 1] - opos[j, 1]
+                    lim = factor * (qr[i] + orad[j])
+                    if use_sk:
+                        lim = max(lim, min_dist[qsk[i], osk[j]])
+                    lim = max(lim, qcover[i])
+                    if dx * dx + dy * dy < lim * lim:
+                        hit = True
+                        break
+                    j = nxt[j]
+                if hit:
+                    break
+            if hit:
+                break
+        out[i] = hit
+    return out
+
+
+@numba.njit(cache=True)
+def near_any(pts, centers, reach):
+    """(n,) bool: which ``pts`` lie within ``reach`` of some point of ``centers``."""
+    n = pts.shape[0]
+    m = centers.shape[0]
+    out = np.zeros(n, np.bool_)
+    if n == 0 or m == 0:
+        return out
+    cell = max(reach, 1e-12)
+    x0 = centers[:, 0].min()
+    y0 = centers[:, 1].min()
+    nx = int((centers[:, 0].max() - x0) / cell) + 1
+    ny = int((centers[:, 1].max() - y0) / cell) + 1
+    if nx * ny > 4 * (m + n) + 1024:  # too fine a grid: coarser cells
+        cell = max((centers[:, 0].max() - x0), (centers[:, 1].max() - y0)) / np.sqrt(4.0 * (m + n)) + cell
+        nx = int((centers[:, 0].max() - x0) / cell) + 1
+        ny = int((centers[:, 1].max() - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(m, -1, np.int64)
+    for j in range(m):
+        g = int((centers[j, 0] - x0) / cell) * ny + int((centers[j, 1] - y0) / cell)
+        nxt[j] = head[g]
+        head[g] = j
+    r2 = reach * reach
+    for i in range(n):
+        gx = int(np.floor((pts[i, 0] - x0) / cell))
+        gy = int(np.floor((pts[i, 1] - y0) / cell))
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            if out[i]:
+                break
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    dx = pts[i, 0] - centers[j, 0]
+                    dy = pts[i, 1] - centers[j, 1]
+                    if dx * dx + dy * dy <= r2:
+                        out[i] = True
+                        break
+                    j = nxt[j]
+                if out[i]:
+                    break
+    return out

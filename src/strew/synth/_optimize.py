@@ -25,9 +25,9 @@ def expanded_horizon(state: SynthState, horizon: np.ndarray, tree: cKDTree) -> n
     if len(horizon) == 0:
         return horizon
     reach = float(state.prep.rbar.max())
-    lists = tree.query_ball_point(state.pos[horizon], r=reach)
-    near = np.fromiter((j for v in lists for j in v), dtype=np.int64)
-    return np.union1d(horizon, near)
+    near = K.near_any(state.pos, np.ascontiguousarray(state.pos[horizon]), reach)
+    near[horizon] = True
+    return np.flatnonzero(near)
 
 
 def match_neighborhoods(state: SynthState, query: np.ndarray, tree: cKDTree, candidates: np.ndarray | None = None):

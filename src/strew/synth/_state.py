@@ -284,35 +284,26 @@ class SynthState:
         Two elements intersect when ``|p - q| < max(factor (r_p + r_q), min_dist)`` (see
         :class:`Prepared`). With ``cover`` (m,), an output element closer than ``cover``
         also counts (free-space points, §5.1); ``r`` overrides the radii of ``src``.
+        ``tree`` is accepted for symmetry and unused (a uniform grid is faster here).
         Without ``src`` (free-space points) only the discs and ``cover`` count.
         """
         if self.n == 0 or len(pts) == 0:
             return np.zeros(len(pts), bool)
         prep = self.prep
-        if tree is None:
-            tree = cKDTree(self.pos)
         f = prep.factor
         rq = prep.r[np.asarray(src, np.int64)] if r is None else np.asarray(r, float)
         rr = self.r
-        sk = self.prep.skind[self.src]
-        kq = min(16, self.n)
-        bound = f * (float(np.max(rq)) + float(rr.max()))
-        if src is not None:
-            bound = max(bound, float(prep.min_dist.max()))
-        if cover is not None:
-            bound = max(bound, float(np.max(cover)))
-        d, j = tree.query(pts, k=kq, distance_upper_bound=bound + 1e-12)
-        d = d.reshape(len(pts), kq)
-        j = j.reshape(len(pts), kq)
-        valid = j < self.n
-        jj = np.where(valid, j, 0)
-        lim = f * (rq[:, None] + rr[jj])
-        if src is not None:
-            lim = np.maximum(lim, prep.min_dist[prep.skind[np.asarray(src, np.int64)][:, None], sk[jj]])
-        if cover is not None:
-            lim = np.maximum(lim, cover[:, None])
-        hit = valid & (d < lim)
-        return hit.any(axis=1)
+        use_sk = src is not None
+        qsk = prep.skind[np.asarray(src, np.int64)] if use_sk else np.zeros(len(pts), np.int64)
+        qcover = np.zeros(len(pts)) if cover is None else np.asarray(cover, float)
+        cell = f * (float(np.max(rq)) + float(rr.max()))
+        if use_sk:
+            cell = max(cell, float(prep.min_dist.max()))
+        ext = float(np.ptp(self.pos, axis=0).max())
+        cell = max(cell, float(qcover.max()), ext / 2000.0, 1e-9)  # bounded grid size
+        return K.conflict_check(
+            np.ascontiguousarray(pts, dtype=float), rq.astype(float), qsk.astype(np.int64), qcover, self.pos, rr, prep.skind[self.src], prep.min_dist, f, use_sk, cell
+        )
 
     # -- output ------------------------------------------------------------------------
     def to_arrangement(self, *, keep_voids: bool = False, clip: bool = True, meta: dict | None = None) -> Arrangement:
