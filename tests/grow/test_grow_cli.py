@@ -153,3 +153,18 @@ def test_start_kind_option(tmp_path):
     out = tmp_path / "k.json"
     assert main(["grow", STONES, "--count", "10", "--start-kind", "small_stone", "-q", "--out", str(out)]) == 0
     assert load(out).kind_names[0] == "small_stone"
+
+
+def test_svg_exemplar_and_svg_strokes(tmp_path):
+    svg = tmp_path / "walls.svg"
+    svg.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="300" height="200" viewBox="0 0 300 200">'
+        '<path d="M 0 100 L 300 100" fill="none" stroke="blue" transform="translate(0 20)"/></svg>'
+    )
+    out = tmp_path / "s.json"
+    args = ["grow", str(example_path("exemplars", "tiles.svg")), "--size", "300x200", "--start", "150,40",
+            "--boundary", str(svg), "-q", "--out", str(out)]
+    assert main(args) == 0
+    arr = load(out)
+    assert len(arr) > 20
+    assert np.all(arr.y < 120)  # the wall at y = 100 + 20 (transform applied) stops growth
