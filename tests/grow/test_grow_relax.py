@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from strew import InputError, Region
+from strew import InputError
 from strew.fields import flow_field
 from strew.grow import delaunay_edges, grow, relax_positions
 from strew.grow._exemplars import hex_lattice

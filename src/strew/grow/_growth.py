@@ -362,6 +362,7 @@ class _Grower:
 
     # -- growth -------------------------------------------------------------------------
     def seed_priority(self, i: int) -> float:
+        # Extra seeds (no symbol id, §5.4e) take the lowest priority: they fill gaps.
         k = self.kind[i]
         return self.none_prio if k < 0 else float(self.kind_prio[k])
 
@@ -392,6 +393,8 @@ class _Grower:
 
     def choose(self, s: int) -> tuple[int, int, float] | None:
         """§5.2: the reference element minimising Eq. 3 for seed ``s``."""
+        # §5.2: w(e_tar) are the seed's immediate neighbours. We take the placed elements
+        # among them only: seeds have no sub-id yet and their positions are guesses.
         nb = [j for j in self.adj[s] if self.state[j] == ELEMENT]
         ps = self.pos[s]
         if nb:
@@ -405,6 +408,8 @@ class _Grower:
         k = self.kind[s]
         cand = self.all_candidates
         if k >= 0 and self.kind_candidates[k].any():
+            # §5.2: a seed with a symbol id examines only references of that id. A kind that
+            # occurs only on the exemplar's boundary has no reference: any element may go.
             cand = self.kind_candidates[k]
         flow_theta = 0.0
         if self.mode_code == 2:
@@ -416,6 +421,8 @@ class _Grower:
         best = float(err.min()) if len(err) else math.inf
         if not math.isfinite(best):
             return None
+        # Equally good references (e.g. every one for the very first seed) are chosen at
+        # random from ``rng``; the paper does not say how it breaks ties.
         ties = np.flatnonzero(err <= best + 1e-9 * (1.0 + best))
         a = int(ties[0]) if len(ties) == 1 else int(ties[self.rng.integers(len(ties))])
         self._last_nb = nb_arr
@@ -434,6 +441,8 @@ class _Grower:
         if p.jitter_scale > 0:
             scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
         g = None
+        # Not in the paper: a placement that would overlap an element is refused (the
+        # seed dies), so that an exemplar without overlaps grows a pattern without any.
         if p.avoid_overlaps:
             g = self.element_geometry(kind, x, y, rot, scale)
             if self.overlaps_any(g, kind, x, y, scale):
@@ -485,7 +494,8 @@ class _Grower:
                         self.add_edge(s, o)
                         slot_of.setdefault(o, j)
                 continue
-            # (c) angle check against the neighbours already around s
+            # (c) angle check against the neighbours already around s. The "original
+            # angle" is taken as the smaller of the two reference ring angles beside slot j.
             ang = math.atan2(cy - y, cx - x)
             too_close = False
             for o in self.adj[s]:
@@ -554,7 +564,9 @@ class _Grower:
                 t = self.new_object(ex, ey, -1)
                 self.add_edge(s, t)
                 for o, po in ((oa, pa), (ob, pb)):
-                    # (f) edges that would collide are left out
+                    # (f) edges that would collide are left out; the paper instead joins
+                    # the objects found inside triangle (e_tar, s0, s1), which Fig. 6f
+                    # shows but the text does not specify.
                     if not self.crosses_edges(o, po, t, (ex, ey)) and not self.crosses_boundary(po, (ex, ey)):
                         self.add_edge(o, t)
             elif not _skewed((x, y), pa, pb):
@@ -667,6 +679,10 @@ class _Grower:
                 first = False
             self.release_deferred(s)
             self.steps_since_relax += 1
+            # §5.5 relaxes after every growth step over the whole pattern. To keep the
+            # cost linear in the element count we relax every ``relax_every`` steps, over
+            # a window: the elements and seeds made since, and their 1-ring, with the
+            # rest held fixed (Eq. 6).
             if p.relax and self.steps_since_relax >= p.relax_every:
                 self.relax_window()
                 self.steps_since_relax = 0
@@ -701,11 +717,6 @@ class _Grower:
             meta=meta,
             extra=extra,
         )
-
-    def live_edges(self) -> np.ndarray:
-        """(m, 2) edges between elements, in element ids of this grower."""
-        e = [(a, b) for a, b in self.edges if self.state[a] == ELEMENT and self.state[b] == ELEMENT]
-        return np.array(sorted(e), dtype=np.int64).reshape(-1, 2)
 
 
 def grow_reference(
