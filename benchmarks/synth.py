@@ -29,8 +29,9 @@ from strew.synth._exemplars import EXEMPLARS
 from strew.synth._metric import average_neighborhood_distance
 from strew.synth._prepare import _spacing, exemplar_domain
 
-# region sizes giving about the paper's Table 1 counts (6,451 / 789 / 6,241 / 1,154)
-SIZES = {"rings": (620, 560), "grid": (800, 800), "stripes": (632, 632), "apples": (560, 560)}
+# region sizes: about 6,000 elements for rings, grid and stripes (Table 1: 6,451, 789, 6,241;
+# grid enlarged for the 6,000-element target); apples about 500 apples plus voids (Table 1: 1,154)
+SIZES = {"rings": (840, 760), "grid": (800, 800), "stripes": (632, 632), "apples": (800, 800)}
 QUICK = {"rings": (300, 260), "grid": (400, 400), "stripes": (320, 320), "apples": (300, 300)}
 
 

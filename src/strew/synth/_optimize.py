@@ -119,7 +119,7 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
         in_h[horizon] = True
     if len(hbar) == 0:
         return 0.0
-    best, _cost, con_q, con_o, con_off = match_neighborhoods(state, hbar, tree)
+    best, cost0, con_q, con_o, con_off = match_neighborhoods(state, hbar, tree)
     ok = best >= 0
     state._origin[hbar[ok]] = best[ok]
     h = hbar[con_q]
@@ -164,6 +164,19 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     new[out] = old[out]
     state._pos[moved] = new
     _undo_intersections(state, moved, old)
+    if prm.check_energy:
+        # Keep the step only if E(H-bar, S) (Eq. 2) went down; else try half of it, then
+        # none. The blend of greedy predictions can otherwise pull a structured texture
+        # away from every exemplar neighbourhood.
+        e0 = float(np.sum(cost0[ok]))
+        step = state._pos[moved].copy()
+        for frac in (1.0, 0.5):
+            state._pos[moved] = old + frac * (step - old)
+            _, cost1, *_ = match_neighborhoods(state, hbar, cKDTree(state.pos))
+            if float(np.sum(cost1[ok])) <= e0:
+                break
+        else:
+            state._pos[moved] = old
     disp = np.hypot(*(state._pos[moved] - old).T)
     return float(disp.mean())
 

@@ -51,6 +51,9 @@ class SynthParams:
         Small weight keeping horizon elements near their old positions (regularisation).
     max_failures : int
         A free-space point is dropped after this many seeds near it failed to use it.
+    check_energy : bool
+        Keep an optimisation step only when it lowers the energy of the expanded horizon
+        (Eq. 2), else half of it, else none.
     """
 
     k: int = 5
@@ -63,6 +66,7 @@ class SynthParams:
     frozen_prediction_weight: float = 0.1
     horizon_anchor: float = 0.01
     max_failures: int = 3
+    check_energy: bool = True
 
     def __post_init__(self) -> None:
         if int(self.k) < 1:
