@@ -185,3 +185,22 @@ def test_examples_run_without_slivers(script, name):
     if pm.n_faces > 1:
         assert pm.face_areas().min() > SLIVER_AREA
     assert len(arr) == pm.n_edges + pm.n_faces - 1
+
+
+def test_import_svg_inkscape_labels_and_transforms(tmp_path):
+    svg = tmp_path / "el.svg"
+    svg.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" viewBox="0 0 100 100">'
+        '<g transform="translate(10 20)">'
+        '<path id="path12" inkscape:label="stem" d="M 0 0 L 30 0" fill="none"/>'
+        '<path id="path13" d="M 0 10 L 30 10 L 30 40 Z"/>'
+        '<circle id="circle5" inkscape:label="start" cx="0" cy="0" r="1"/>'
+        '<circle id="circle6" cx="50" cy="50" r="5"/>'
+        "</g></svg>"
+    )
+    c = import_svg(svg)
+    assert c.points == {"start": (10.0, 20.0)}  # the group's transform is applied
+    stem = curve_labeled(c, "stem")
+    assert np.allclose(stem.curves[0].points, [(10, 20), (40, 20)]) and not stem.curves[0].closed
+    unlabelled = [k for k in c.curves if not k.labels]
+    assert len(unlabelled) == 2 and all(k.closed for k in unlabelled)  # the triangle and the plain circle
