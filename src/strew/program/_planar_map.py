@@ -402,7 +402,9 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
     ok = (_point_segment_distance(na[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(nb[qi], sa[qj], sb[qj]) <= tol)
     qi, qj = qi[ok], qj[ok]
-    missing = np.setdiff1d(np.arange(n_seg), qi)
+    covered = np.zeros(n_seg, dtype=bool)
+    covered[qi] = True
+    missing = np.flatnonzero(~covered)
     if len(missing):
         mi, mj = tree.query_nearest(mids[missing], return_distance=False)
         qi = np.r_[qi, missing[mi]]
