@@ -265,7 +265,11 @@ class _Grower:
         epsilon: float | None,
         max_elements: int | None,
         reporter: Reporter,
+        incremental: bool = True,
     ) -> None:
+        # incremental=False recomputes the whole distance transform after every placement
+        # instead of the lower wave: the baseline of benchmarks/ornament.py
+        self.incremental = incremental
         self.pattern = pattern
         self.region = region
         self.rng = rng
@@ -302,9 +306,12 @@ class _Grower:
         gx, gy = np.meshgrid(xs, ys)
         inside = shapely.contains_xy(region.prepared, gx.ravel(), gy.ravel()).reshape(rows, cols)
         covered = np.where(inside, 0, 1).astype(np.int8)
-        for p in region.paths:
-            ring = np.vstack([p.points, p.points[:1]])
-            covered.flat[cover_polyline(rows, cols, self.x0, self.y0, h, ring, self.pad)] |= 1
+        # Cells whose centre lies outside R are covered. Circles cover the cells whose
+        # centre they contain; lines and points cover the cells within half a cell
+        # diagonal, so that none slips between cell centres. Raster distances therefore
+        # overestimate the exact ones near circles and the boundary, and underestimate
+        # them by at most that half diagonal near lines (see `slack` in `run`).
+        self.has_lines = False
         self.covered = covered
         # -- initial distance transform (the MAT's values) ------------------------------
         d, (ii, jj) = ndimage.distance_transform_edt(covered == 0, return_indices=True)
@@ -402,9 +409,13 @@ class _Grower:
     def _cells(self, pr: Proxy) -> np.ndarray:
         a = (self.rows, self.cols, self.x0, self.y0, self.h)
         if isinstance(pr, Circle):
-            return cover_disc(*a, float(pr.center[0]), float(pr.center[1]), pr.radius, self.pad)  # type: ignore[index]
+            cells = cover_disc(*a, float(pr.center[0]), float(pr.center[1]), pr.radius, 0.0)  # type: ignore[index]
+            if len(cells):
+                return cells
+            return cover_disc(*a, float(pr.center[0]), float(pr.center[1]), 0.0, self.pad)  # type: ignore[index]
         if isinstance(pr, Point):
             return cover_disc(*a, float(pr.center[0]), float(pr.center[1]), 0.0, self.pad)  # type: ignore[index]
+        self.has_lines = True
         pts = np.ascontiguousarray(pr.polyline(), dtype=np.float64)
         if isinstance(pr, Polygon):
             ring = np.ascontiguousarray(np.vstack([pts, pts[:1]]))
@@ -429,6 +440,16 @@ class _Grower:
         if len(c) == 0:
             return
         self.covered.flat[c] |= 2
+        if not self.incremental:
+            d, (ii, jj) = ndimage.distance_transform_edt(self.covered == 0, return_indices=True)
+            changed = d < self.dist_all
+            self.dist_all, self.near_all = d, ii.astype(np.int64) * self.cols + jj
+            d, (ii, jj) = ndimage.distance_transform_edt((self.covered & 2) == 0, return_indices=True)
+            changed |= d < self.dist_el
+            self.dist_el, self.near_el = d, ii.astype(np.int64) * self.cols + jj
+            self.skip &= ~changed
+            self.dirty[:] = True
+            return
         w = (self._ring, self._inq)
         lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self.dist_all, 0.0, False, *w)
         lower_wave(self.dist_el, self.near_el, self.skip, c, self.dirty, _BLOCK, self.dist_all, self.adj_tol + 1.0, True, *w)
@@ -471,6 +492,23 @@ class _Grower:
             dx = np.maximum(0, np.maximum(bx0 - q[0], q[0] - (bx0 + bs)))
             dy = np.maximum(0, np.maximum(by0 - q[1], q[1] - (by0 + bs)))
             self.dirty |= (dy[:, None] ** 2 + dx[None, :] ** 2) <= reach * reach
+
+    def _skip_disc(self, c: np.ndarray, radius: float) -> None:
+        """Mark every cell centred within ``radius`` of ``c`` as rejected."""
+        if not radius > 0 or not math.isfinite(radius):
+            return
+        h = self.h
+        j0 = max(0, int((c[0] - radius - self.x0) / h))
+        j1 = min(self.cols, int((c[0] + radius - self.x0) / h) + 1)
+        i0 = max(0, int((c[1] - radius - self.y0) / h))
+        i1 = min(self.rows, int((c[1] + radius - self.y0) / h) + 1)
+        if j0 >= j1 or i0 >= i1:
+            return
+        xs = self.x0 + (np.arange(j0, j1) + 0.5) * h - c[0]
+        ys = self.y0 + (np.arange(i0, i1) + 0.5) * h - c[1]
+        inside = xs[None, :] ** 2 + ys[:, None] ** 2 < radius * radius
+        self.skip[i0:i1, j0:j1] |= inside
+        self.dirty[i0 // _BLOCK : (i1 - 1) // _BLOCK + 1, j0 // _BLOCK : (j1 - 1) // _BLOCK + 1] = True
 
     def clear_exclude_all(self) -> None:
         self.n_ex = 0
@@ -515,10 +553,9 @@ class _Grower:
         h = self.h
         phase_k = 0
         threshold = self._phase_threshold(0)
-        # Covered cells lie within sqrt(2)/2 cells of a proxy and the candidate centre
-        # within sqrt(2)/2 cells of the exact medial point: the raster radius may fall
-        # short of the exact one by up to about 1.5 cells.
-        slack = 1.5 * h
+        # The candidate centre lies within sqrt(2)/2 cells of the exact medial point, and
+        # near lines the raster radius may fall short by another sqrt(2)/2 cells.
+        slack = 0.75 * h
         largest = 0.0
         while True:
             if self.max_elements is not None and len(self.elements) >= self.max_elements:
@@ -530,7 +567,7 @@ class _Grower:
             )  # fmt: skip
             k = int(np.argmax(self.best_val))
             v = float(self.best_val.flat[k])
-            if v < 0 or v * h + slack < threshold:
+            if v < 0 or v * h + slack + (self.pad if self.has_lines else 0.0) < threshold:
                 if self.pattern.phases and phase_k < len(self.pattern.phases) - 1:
                     phase_k += 1
                     self.state.phase = self.pattern.phases[phase_k].name
@@ -545,7 +582,7 @@ class _Grower:
             # -- exact radius of C, and whether an element (not the boundary) stopped it
             reach = self.dist_el[i, j] * h + 4 * h + max(2 * h, 0.25 * (self.dist_all[i, j] * h + h))
             rho, d_b, d_e, idx, dists = self._measure(c, reach)
-            if threshold - h <= rho < threshold and d_e <= d_b + h:
+            if threshold - slack - self.pad <= rho < threshold and d_e <= d_b + h:
                 # The raster circle is centred on a cell; the exact medial point lies within
                 # about a cell of it (the clearance is 1-Lipschitz, hence the gate above), so
                 # climb to it before giving the circle up.
@@ -553,9 +590,14 @@ class _Grower:
                 rho, d_b, d_e, idx, dists = self._measure(c, reach + 2 * h)
             if d_e > d_b + h or rho < threshold:
                 # §4.1: a circle stopped by the boundary before it reaches an element is
-                # discarded; so is one that is too small once measured exactly.
+                # discarded; so is one that is too small once measured exactly. The
+                # clearance is 1-Lipschitz, so every circle centred within (threshold -
+                # rho) of c is too small as well (less `slack`: a cell stands for centres
+                # up to that far), and every centre within (d_e - d_b - h) / 2 is stopped
+                # by the boundary too: skip those cells at once.
                 self.skip[i, j] = True
                 self.dirty[i // _BLOCK, j // _BLOCK] = True
+                self._skip_disc(c, max(threshold - rho - slack, (d_e - d_b - h) / 2))
                 self.stats["rejected"] += 1
                 continue
             self.stats["iterations"] += 1

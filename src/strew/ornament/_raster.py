@@ -432,4 +432,72 @@ def climb(cx, cy, circ, segs, step, min_step, target):
             best = bv
         else:
             s *= 0.5
+    if best < target:
+        nx, ny = _newton3(cx, cy, best, circ, segs)
+        if abs(nx - cx) + abs(ny - cy) < 4 * step:
+            v = _clearance(nx, ny, circ, segs)
+            if v > best:
+                cx, cy, best = nx, ny, v
     return cx, cy, best
+
+
+@numba.njit(**_NB)
+def _nearest_on(px, py, circ, segs, k):
+    """Distance to obstacle k (circles first, then segments) and its unit gradient."""
+    nc = circ.shape[0]
+    if k < nc:
+        ux = px - circ[k, 0]
+        uy = py - circ[k, 1]
+        ln = np.sqrt(ux * ux + uy * uy)
+        if ln == 0:
+            return -circ[k, 2], 1.0, 0.0
+        return ln - circ[k, 2], ux / ln, uy / ln
+    j = k - nc
+    ax, ay, bx, by = segs[j, 0], segs[j, 1], segs[j, 2], segs[j, 3]
+    dx = bx - ax
+    dy = by - ay
+    ll = dx * dx + dy * dy
+    t = 0.0
+    if ll > 0:
+        t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / ll))
+    ux = px - (ax + t * dx)
+    uy = py - (ay + t * dy)
+    ln = np.sqrt(ux * ux + uy * uy)
+    if ln == 0:
+        return 0.0, 1.0, 0.0
+    return ln, ux / ln, uy / ln
+
+
+@numba.njit(**_NB)
+def _newton3(px, py, rho, circ, segs):
+    """Newton steps on the three nearest obstacles: the point equidistant from them.
+
+    At a local maximum of the clearance the nearest three obstacles are at the same
+    distance; solving ``d_i(p) = rho`` for them polishes a point found by local search.
+    """
+    n = circ.shape[0] + segs.shape[0]
+    if n < 3:
+        return px, py
+    d = np.empty(n)
+    for k in range(n):
+        d[k] = _nearest_on(px, py, circ, segs, k)[0]
+    idx = np.argsort(d)[:3]
+    for _ in range(12):
+        a = np.empty((3, 3))
+        f = np.empty(3)
+        for r in range(3):
+            dk, gx, gy = _nearest_on(px, py, circ, segs, idx[r])
+            a[r, 0] = gx
+            a[r, 1] = gy
+            a[r, 2] = -1.0
+            f[r] = dk - rho
+        det = np.linalg.det(a)
+        if abs(det) < 1e-12:
+            break
+        step = np.linalg.solve(a, -f)
+        px += step[0]
+        py += step[1]
+        rho += step[2]
+        if abs(step[0]) + abs(step[1]) + abs(step[2]) < 1e-12:
+            break
+    return px, py

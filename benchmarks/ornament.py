@@ -1,0 +1,119 @@
+"""Adaptive clip art (Wong et al. 1998): growth speed and the final largest empty circle.
+
+For each built-in pattern on three panel shapes, prints elements per second and the
+radius of the largest empty circle left when growth stops, measured independently of
+the framework (a fine grid of exact distances to the proxies, then a local ascent).
+
+Targets (issue 4): ``dots`` (radius <= 3) fills a 500 x 500 panel until no empty circle
+of radius >= 1 remains, at >= 1,000 elements/s.
+
+Baseline, measured in the same run: the same framework recomputing the whole distance
+transform after every placement (scipy EDT) instead of the incremental update of §4.1.
+
+Run: ``python benchmarks/ornament.py [--quick] [--repeat N]``.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import shapely
+
+sys.path.insert(0, str(Path(__file__).parent))
+from _runner import Bench, parse_args  # noqa: E402
+
+from strew import Region  # noqa: E402
+from strew._progress import Reporter  # noqa: E402
+from strew.ornament import grow_elements, load_pattern  # noqa: E402
+from strew.ornament._engine import _Grower, default_seed  # noqa: E402
+
+TARGET_RATE = 1000.0
+
+
+def panels(size: float) -> dict[str, Region]:
+    s = size
+    ring = shapely.Point(s / 2, s / 2).buffer(s / 2, quad_segs=64).difference(shapely.Point(s / 2, s / 2).buffer(s / 5, quad_segs=32))
+    return {"square": Region.rectangle(s, s), "disc": Region.circle(s / 2, s / 2, s / 2), "ring": Region(ring)}
+
+
+def largest_empty_circle(region: Region, orn, h: float) -> float:
+    """Radius of the largest circle inside the region that meets no proxy (exact distances)."""
+    geoms = [pr.geometry for e in orn.elements for pr in e.proxies if e.type != "seed"]
+    if not geoms:
+        return float("nan")
+    tree = shapely.STRtree(geoms)
+    x0, y0, x1, y1 = region.bounds
+    xs = np.arange(x0 + h / 2, x1, h)
+    ys = np.arange(y0 + h / 2, y1, h)
+    gx, gy = (a.ravel() for a in np.meshgrid(xs, ys))
+    inside = shapely.contains_xy(region.prepared, gx, gy)
+    pts = np.c_[gx[inside], gy[inside]]
+
+    def clearance(p: np.ndarray) -> np.ndarray:
+        pts_g = shapely.points(p)
+        _, d = tree.query_nearest(pts_g, return_distance=True, all_matches=False)
+        db = shapely.distance(region.boundary, pts_g)
+        ok = shapely.contains_xy(region.prepared, p[:, 0], p[:, 1])
+        return np.where(ok, np.minimum(d, db), -1.0)
+
+    d = clearance(pts)
+    best = 0.0
+    dirs = np.array([(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, -1), (1, -1), (-1, 1)]) / np.sqrt([1, 1, 1, 1, 2, 2, 2, 2])[:, None]
+    for k in np.argsort(d)[::-1][:60]:
+        p, v, step = pts[k], d[k], h
+        while step > 1e-4:
+            q = p + step * dirs
+            w = clearance(q)
+            j = int(np.argmax(w))
+            if w[j] > v:
+                p, v = q[j], w[j]
+            else:
+                step /= 2
+        best = max(best, float(v))
+    return best
+
+
+def main() -> None:
+    args = parse_args(__doc__.splitlines()[0])
+    bench = Bench("ornament", "adaptive clip art: elements/s and final largest empty circle", baseline="full EDT recompute per placement", json_path=args.json)
+    dots_size = 150 if args.quick else 500
+    other_size = 60 if args.quick else 160
+    load_pattern("dots")
+    grow_elements("dots", Region.rectangle(20, 20), rng=0)  # compile the numba kernels first
+    for name in ("dots", "flowers", "spirals", "hierarchy"):
+        size = dots_size if name == "dots" else other_size
+        for label, region in panels(size).items():
+            times, orn = [], None
+            for _ in range(max(1, args.repeat if name == "dots" and label == "square" else 1)):
+                t0 = time.perf_counter()
+                orn = grow_elements(name, region, rng=0)
+                times.append(time.perf_counter() - t0)
+            t = float(np.median(times))
+            n = sum(1 for e in orn.elements if e.type != "seed")
+            lec = largest_empty_circle(region, orn, h=1.0 if size > 200 else 0.5)
+            row = dict(panel=f"{label} {size:g}", elements=n, seconds=t, elements_per_s=n / t, largest_empty=lec, min_radius=orn.params["min_radius"])
+            if name == "dots":
+                row["rate_vs_target"] = (n / t) / TARGET_RATE
+            bench.row(name, **row)
+    # baseline: the same growth with the whole distance transform recomputed each time
+    size = 60 if args.quick else 120
+    region = Region.rectangle(size, size)
+    pat = load_pattern("dots")
+    seeds = default_seed(region)
+    res = {}
+    for mode in (True, False):
+        t0 = time.perf_counter()
+        g = _Grower(pat, region, seeds, np.random.default_rng(0), None, pat.min_radius, None, None, None, Reporter(), incremental=mode)
+        g.run()
+        res[mode] = (time.perf_counter() - t0, len(g.elements) - 1)
+    (ti, ni), (tb, nb) = res[True], res[False]
+    bench.row("dots incremental vs baseline", panel=f"square {size:g}", elements=ni, seconds=ti, elements_per_s=ni / ti,
+              baseline_elements=nb, baseline_seconds=tb, baseline_elements_per_s=nb / tb, speedup=(ni / ti) / (nb / tb))
+    bench.finish()
+
+
+if __name__ == "__main__":
+    main()
