@@ -75,3 +75,22 @@ def test_optimisation_keeps_centres_in_the_region():
     inside = s.region.contains(s.pos)
     optimize(s, None)
     assert np.array_equal(s.region.contains(s.pos) | ~inside, np.ones(s.n, bool))
+
+
+def test_metric_is_tracked_while_synthesis_runs():
+    from strew.synth import average_neighborhood_distance, synthesize
+
+    trace = []
+    out = synthesize(grid(), Region.rectangle(150, 150), rng=1, trace=trace)
+    assert len(trace) >= 3
+    t = np.array(trace)
+    assert np.all(np.diff(t[:, 0]) >= 0) and np.all(np.diff(t[:, 1]) >= 0)
+    assert t[-1, 1] >= len(out)
+    assert np.all(np.isfinite(t[:, 2])) and np.all(t[:, 2] >= 0)
+    # Eq. 5 is zero for a verbatim copy of the exemplar's interior and grows with noise
+    ex = grid(n=12, jitter=0.0)
+    s = new_state(ex, Region.rectangle(1000, 1000, -500, -500), rng=0)
+    s.add(np.arange(len(ex)), s.prep.pos)
+    assert average_neighborhood_distance(s) == pytest.approx(0.0, abs=1e-9)
+    s2 = _jittered_copy(ex, 1.0)
+    assert average_neighborhood_distance(s2) > 1.0

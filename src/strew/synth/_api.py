@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
 import numpy as np
@@ -19,9 +19,6 @@ from ._prepare import prepare
 from ._state import SynthParams, SynthState
 
 __all__ = ["synthesize", "new_state", "as_selection", "set_selection"]
-
-ExemplarsLike = "Palette | Selection | Arrangement | Sequence[Arrangement] | Mapping[str, Arrangement]"
-
 
 def as_selection(exemplars: Any, selection: Any = None) -> Selection:
     """Normalise exemplars (a Palette, a Selection, one Arrangement, a list or a dict of

@@ -628,3 +628,45 @@ def near_any(pts, centers, reach):
                 if out[i]:
                     break
     return out
+
+
+@numba.njit(cache=True)
+def spacing_violations(pos, rad, sk, min_dist, factor, moved, cell):
+    """(n,) bool: moved elements closer to another element than allowed.
+
+    The limit is ``max(factor (r_i + r_j), min_dist[sk_i, sk_j])``; only pairs with a
+    moved element are checked, and the moved member(s) are flagged.
+    """
+    n = pos.shape[0]
+    out = np.zeros(n, np.bool_)
+    if n < 2:
+        return out
+    x0 = pos[:, 0].min()
+    y0 = pos[:, 1].min()
+    nx = int((pos[:, 0].max() - x0) / cell) + 1
+    ny = int((pos[:, 1].max() - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(n, -1, np.int64)
+    for j in range(n):
+        g = int((pos[j, 0] - x0) / cell) * ny + int((pos[j, 1] - y0) / cell)
+        nxt[j] = head[g]
+        head[g] = j
+    for i in range(n):
+        if not moved[i]:
+            continue
+        gx = int((pos[i, 0] - x0) / cell)
+        gy = int((pos[i, 1] - y0) / cell)
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    if j != i:
+                        dx = pos[i, 0] - pos[j, 0]
+                        dy = pos[i, 1] - pos[j, 1]
+                        lim = max(factor * (rad[i] + rad[j]), min_dist[sk[i], sk[j]])
+                        if dx * dx + dy * dy < lim * lim:
+                            out[i] = True
+                            if moved[j]:
+                                out[j] = True
+                    j = nxt[j]
+    return out

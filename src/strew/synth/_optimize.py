@@ -184,27 +184,21 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
 def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -> None:
     """Put back moved elements that now intersect another element or come closer than
     the exemplar allows (up to 4 rounds)."""
-    f = state.prep.factor
+    prep = state.prep
+    f = prep.factor
+    r = state.r
+    sk = prep.skind[state.src]
+    cell = max(2 * f * float(r.max()), float(prep.min_dist.max()), 1e-9)
+    ext = float(np.ptp(state.pos, axis=0).max()) if state.n else 0.0
+    cell = max(cell, ext / 2000.0)
+    slot = np.full(state.n, -1, np.int64)
+    slot[moved] = np.arange(len(moved))
+    was = np.zeros(state.n, bool)
+    was[moved] = True
     for _ in range(4):
-        pos = state.pos
-        r = state.r
-        was = np.zeros(state.n, bool)
-        was[moved] = True
-        tree = cKDTree(pos)
-        md = state.prep.min_dist
-        sk = state.prep.skind[state.src]
-        pairs = tree.query_pairs(max(2 * f * float(r.max()), float(md.max())), output_type="ndarray")
-        if len(pairs) == 0:
-            return
-        a, b = pairs[:, 0], pairs[:, 1]
-        d = np.hypot(*(pos[a] - pos[b]).T)
-        lim = np.maximum(f * (r[a] + r[b]), md[sk[a], sk[b]])
-        bad = (d < lim) & (was[a] | was[b])
+        bad = K.spacing_violations(state.pos, r, sk, prep.min_dist, f, was, cell)
         if not bad.any():
             return
-        culprits = np.unique(np.concatenate([a[bad][was[a[bad]]], b[bad][was[b[bad]]]]))
-        back = np.searchsorted(moved, culprits) if np.all(np.diff(moved) > 0) else None
-        if back is None:
-            lookup = {int(m): i for i, m in enumerate(moved)}
-            back = np.array([lookup[int(c)] for c in culprits])
-        state._pos[culprits] = old[back]
+        culprits = np.flatnonzero(bad)
+        state._pos[culprits] = old[slot[culprits]]
+        was[culprits] = False

@@ -11,6 +11,7 @@ from scipy.spatial import cKDTree
 
 from .._errors import InputError
 from ..shape import Shape
+from ..metrics import overlaps
 from . import _kernels as K
 from ._palette import Palette, Selection, _rename_conflicting_kinds
 
@@ -46,6 +47,8 @@ class Prepared:
         0.95 times the closest approach of two classes in the exemplar (0 across
         exemplars): no new element comes closer than that to an element (spacing learned
         from the exemplar, on top of the bounding discs).
+    overlap_free : bool
+        No two exemplar elements overlap (their shapes, not their discs).
     factor : float
         Intersection factor: two elements intersect when
         ``|p - q| < factor (r_p + r_q)``; below 1 only when the exemplar's own bounding
@@ -84,6 +87,7 @@ class Prepared:
     selected: np.ndarray
     interior: list[np.ndarray] = field(default_factory=list)
     domains: list = field(default_factory=list)
+    overlap_free: bool = False
 
     def __len__(self) -> int:
         return len(self.kind)
@@ -422,6 +426,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         selected=np.zeros(len(names), bool),
         interior=interior,
         domains=polys,
+        overlap_free=all(len(overlaps(ex)[0]) == 0 for ex in exemplars),
     )
     prep.set_selection(selection)
     return prep

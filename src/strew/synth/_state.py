@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+import numba
 import numpy as np
 from scipy.spatial import cKDTree
 
@@ -87,8 +88,6 @@ def map_offsets(p: np.ndarray, off: np.ndarray) -> np.ndarray:
     """Vectorised m_p (§5.1): offsets ``off`` (n, 2) from example space at points ``p`` (n, 2)."""
     return _map_offsets(np.ascontiguousarray(p, dtype=float), np.ascontiguousarray(off, dtype=float))
 
-
-import numba  # noqa: E402
 
 
 @numba.njit(cache=True)
@@ -310,7 +309,7 @@ class SynthState:
         )
 
     # -- output ------------------------------------------------------------------------
-    def to_arrangement(self, *, keep_voids: bool = False, clip: bool = True, meta: dict | None = None) -> Arrangement:
+    def to_arrangement(self, *, keep_voids: bool = False, clip: bool = True, drop_overlaps: bool = True, meta: dict | None = None) -> Arrangement:
         """The output as an arrangement.
 
         Parameters
@@ -320,6 +319,10 @@ class SynthState:
             are hidden (left out).
         clip : bool
             Leave out elements whose geometry is not wholly inside the region.
+        drop_overlaps : bool
+            When no exemplar has overlapping shapes, leave out the later of any two
+            output elements whose shapes overlap (the bounding discs of §4 do not rule
+            that out for elongated shapes at new angles).
         """
         prep = self.prep
         src = self.src
@@ -348,4 +351,14 @@ class SynthState:
         if clip and self.region is not None and len(arr):
             inside = self.region.contains_geometry(arr.geometry, tolerance=1e-9 * max(1.0, *map(abs, self.region.bounds)))
             arr = arr.select(inside)
+        if drop_overlaps and self.prep.overlap_free and len(arr) > 1:
+            from ..metrics import overlaps
+
+            pairs, _ = overlaps(arr)
+            if len(pairs):
+                dropped = np.zeros(len(arr), bool)
+                for i, j in pairs:
+                    if not dropped[i]:
+                        dropped[j] = True
+                arr = arr.select(~dropped)
         return arr
