@@ -46,6 +46,8 @@ TOOLS = ("brush", "spray", "erase", "flow", "boundary", "region")
 GROW_MODES = ("fixed", "rotate", "flow")
 MAX_HISTORY = 64
 MAX_SCENE = 200_000
+#: Elements of the small growth shown at once when a spray stroke starts.
+FIRST_SPRAY = 24
 
 Emit = Callable[[dict[str, Any]], None]
 
@@ -753,7 +755,7 @@ class Session:
         if tool == "brush":
             self._brush(seg, st["radius"], self._emit)
         elif tool == "spray":
-            self._spray(seg, st["radius"])
+            self._spray(seg, st["radius"], self._emit)
         else:
             self._erase(seg, st["radius"])
         st["compute"] += time.perf_counter() - t
@@ -816,8 +818,15 @@ class Session:
             mask[n0:] = hit
             st.remove(mask)
 
-    def _spray(self, pts: np.ndarray, radius: float) -> None:
-        """Spray (Ijiri §3, Fig. 1c): grow from the segment's start, only within ``radius``."""
+    def _spray(self, pts: np.ndarray, radius: float, emit: Emit) -> None:
+        """Spray (Ijiri §3, Fig. 1c): grow from the segment's start, only within ``radius``.
+
+        :func:`strew.grow.grow` grows from one seed and knows nothing of the scene, so each
+        segment grows on its own and elements that would overlap the scene are left out
+        (a thin adapter; the paper's spray continues one growth). At the stroke's start
+        a small growth (:data:`FIRST_SPRAY` elements) is shown at once, before the
+        segment's full growth.
+        """
         from ..grow import grow
 
         name = self._selection()[0]
@@ -826,8 +835,7 @@ class Session:
         if not inside.any():
             return
         start = pts[np.flatnonzero(inside)[0]]
-        out = grow(
-            ref,
+        kw = dict(
             region=self.region,
             start=(float(start[0]), float(start[1])),
             spray=pts,
@@ -835,8 +843,18 @@ class Session:
             mode=self.grow_mode,
             flow=self.flow,
             boundary=self.boundary_strokes or None,
-            rng=int(self.rng.integers(2**31)),
         )
+        stroke = self.stroke
+        if stroke is not None and not stroke.get("sprayed"):
+            stroke["sprayed"] = True
+            self._add_grown(grow(ref, count=FIRST_SPRAY, rng=int(self.rng.integers(2**31)), **kw))
+            m = self.scene_message()
+            if m is not None:
+                emit(m)
+        self._add_grown(grow(ref, rng=int(self.rng.integers(2**31)), **kw))
+
+    def _add_grown(self, out: Arrangement) -> None:
+        """Add grown elements to the fixed part of the scene, leaving out those that overlap it."""
         if len(out) == 0:
             return
         out = out.replace(meta={}, extra={}, region=None)

@@ -66,7 +66,9 @@ function onMessage(m) {
     case "error":
       studio.errors.push(m.message); showMessage(m.message, true);
       resolvePending(null, m); break;
-    case "done": resolvePending(m.id, m); break;
+    case "done":
+      if (m.ref === "stroke_end") studio.stats.tracking = false;
+      resolvePending(m.id, m); break;
     case "exported": studio.lastExport = m; break;
     case "saved": studio.lastSave = m; break;
     default: break;
@@ -87,7 +89,7 @@ function onScene(m) {
   if (m.op === "replace") studio.scene.replace(m);
   else { if (m.update.index.length) studio.scene.update(m.update); if (m.append.k.length) studio.scene.append(m.append); }
   const grew = studio.scene.n > before;
-  if (studio.live && grew) studio.stats.pendingArrival = true;
+  if (studio.stats.tracking && grew) studio.stats.pendingArrival = true;
   dirty();
 }
 
@@ -190,6 +192,8 @@ $("load").addEventListener("click", () => send({ type: "load_project" }));
 $("export").addEventListener("click", () => send({ type: "export", path: $("export-name").value.trim() }));
 
 let panning = null;
+// pointer capture keeps a stroke going outside the canvas (synthetic events have no capture)
+function capture(ev) { try { canvas.setPointerCapture(ev.pointerId); } catch { /* not an active pointer */ } }
 let buffer = [];      // stroke points not sent yet
 let flushQueued = false;
 function eventWorld(ev) { const r = canvas.getBoundingClientRect(); return studio.view.toWorld(ev.clientX - r.left, ev.clientY - r.top); }
@@ -205,14 +209,14 @@ canvas.addEventListener("pointerdown", (ev) => {
   const p = r3(eventWorld(ev));
   if (ev.button === 1 || studio.tool === "pan" || spaceDown) {
     panning = { x: ev.clientX, y: ev.clientY, ox: studio.view.ox, oy: studio.view.oy };
-    canvas.setPointerCapture(ev.pointerId); return;
+    capture(ev); return;
   }
   if (ev.button !== 0) return;
   if (studio.tool === "fill") { send({ type: "fill", point: [p] }); return; }
-  canvas.setPointerCapture(ev.pointerId);
+  capture(ev);
   studio.live = { tool: studio.tool, points: [p] };
   const st = studio.stats;
-  Object.assign(st, { strokeStart: performance.now(), countAtStart: studio.scene.n, firstFrame: null, lastFrame: null, added: 0, rate: null, pendingArrival: false });
+  Object.assign(st, { strokeStart: performance.now(), countAtStart: studio.scene.n, firstFrame: null, lastFrame: null, added: 0, rate: null, pendingArrival: false, tracking: true });
   buffer = [];
   send({ type: "stroke_start", tool: studio.tool, radius: radius(), points: [p] });
   dirty();
