@@ -94,7 +94,7 @@ def main() -> None:
             t = float(np.median(times))
             n = sum(1 for e in orn.elements if e.type != "seed")
             lec = largest_empty_circle(region, orn, h=1.0 if size > 200 else 0.5)
-            row = dict(panel=f"{label} {size:g}", elements=n, seconds=t, elements_per_s=n / t, largest_empty=lec, min_radius=orn.params["min_radius"])
+            row = dict(panel=f"{label} {size:g}", elements=n, seconds=t, elements_per_s=n / t, largest_empty=f"{lec:.4f}", min_radius=orn.params["min_radius"])
             if name == "dots":
                 row["rate_vs_target"] = (n / t) / TARGET_RATE
             bench.row(name, **row)

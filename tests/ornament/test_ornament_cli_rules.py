@@ -197,3 +197,25 @@ def test_cli_region_file_with_hole(tmp_path, capsys):
     arr = load(out)
     assert arr.region is not None and arr.region.area == pytest.approx(60 * 40 - 20 * 20)
     assert arr.region.contains_geometry(arr.geometry, tolerance=1e-6).all()
+
+
+def test_example_rule_file_and_svg_panel_with_hole(tmp_path, capsys):
+    from strew._resources import example_path
+    import shapely
+
+    rules = example_path("ornament", "berries.py")
+    panel = example_path("ornament", "shield.svg")
+    out = tmp_path / "b.json"
+    code, stdout, err = run_cli(capsys, ["ornament", str(rules), "--size", "40x40", "--style", "tapered", "-o", str(out)])
+    assert code == 0, err
+    arr = load(out)
+    assert {"stalk", "berry"} <= set(arr["type"])
+    out2 = tmp_path / "d.json"
+    code, _, err = run_cli(capsys, ["ornament", "dots", "--region", str(panel), "--seed-point", "60,20", "-o", str(out2), "-q"])
+    assert code == 0, err
+    arr = load(out2)
+    window = shapely.Point(60, 50).buffer(18)
+    assert arr.region is not None and arr.region.area < 120 * 140 - 900
+    assert arr.region.contains_geometry(arr.geometry, tolerance=1e-3).all()
+    assert not shapely.intersects(window.buffer(-0.1), arr.geometry).any()
+    assert len(arr) > 200
