@@ -353,8 +353,6 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     co = k_coherence(ptr, off, pos, kind, nb_kind, nb_d, 2.0 * r, rbar, sources, (hp, hp_n), interior_mask, k, kind_cost)
     # Free space (§5.1): free(e) = {p_c' - p_c | c' in n(c), c in co(e)}, clustered.
     free_ptr = np.zeros(len(arr) + 1, dtype=np.int64)
-    free_off_parts = []
-    free_r_parts = []
     min_samples = 1  # every vector is kept; DBSCAN merges those within eps
     # cover radius: 3/4 of the nearest-neighbour distance of each element in its exemplar
     half_nn = np.zeros(len(arr))
@@ -362,18 +360,31 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         ids = np.flatnonzero(sources == i)
         d, _ = cKDTree(pos[ids]).query(pos[ids], k=2)
         half_nn[ids] = 0.75 * d[:, 1]
-    for e in range(len(arr)):
-        cs = co[e][co[e] >= 0]
-        segs = [np.arange(ptr[c], ptr[c + 1]) for c in cs]
-        rows = np.concatenate(segs) if segs else np.zeros(0, np.int64)
-        nb = idx[rows]
-        cent, vals = cluster_free_space(off[rows], np.c_[r[nb], half_nn[nb]], eps=0.33 * half_nn[e], min_samples=min_samples)
-        free_off_parts.append(cent)
-        free_r_parts.append(vals)
-        free_ptr[e + 1] = free_ptr[e] + len(cent)
-    free_off = np.concatenate(free_off_parts) if free_off_parts else np.zeros((0, 2))
-    fvals = np.concatenate(free_r_parts) if free_r_parts else np.zeros((0, 2))
-    free_r, free_cover = fvals[:, 0].copy(), fvals[:, 1].copy()
+    # all elements at once: each element's vectors scaled by its eps and moved far apart,
+    # so one DBSCAN pass clusters every free(e) separately
+    n = len(arr)
+    cs = co.ravel()
+    own = np.repeat(np.arange(n), co.shape[1])
+    own, cs = own[cs >= 0], cs[cs >= 0]
+    seg = ptr[cs + 1] - ptr[cs]
+    owner = np.repeat(own, seg)
+    rows = np.repeat(ptr[cs], seg) + (np.arange(int(seg.sum())) - np.repeat(np.cumsum(seg) - seg, seg))
+    eps = 0.33 * half_nn[owner]
+    pts = off[rows] / eps[:, None]
+    span = float(np.abs(pts).max()) * 2 + 10.0 if len(pts) else 1.0
+    pts[:, 0] += owner * span
+    labels = dbscan(pts, 1.0, min_samples)
+    nb = idx[rows]
+    uniq, inv = np.unique(labels, return_inverse=True)  # labels grow with owner order
+    cnt = np.bincount(inv).astype(float)
+    cent = np.c_[np.bincount(inv, off[rows, 0]) / cnt, np.bincount(inv, off[rows, 1]) / cnt]
+    vals = np.c_[np.bincount(inv, r[nb]) / cnt, np.bincount(inv, half_nn[nb]) / cnt]
+    lab_owner = np.zeros(len(uniq), np.int64)
+    lab_owner[inv] = owner
+    order = np.lexsort((np.arange(len(uniq)), lab_owner))
+    free_off = cent[order]
+    free_r, free_cover = vals[order, 0].copy(), vals[order, 1].copy()
+    free_ptr[1:] = np.cumsum(np.bincount(lab_owner, minlength=n))
     # Intersection factor: the exemplar's own closest approach, relative to r_p + r_q.
     owner = np.repeat(np.arange(len(arr)), np.diff(ptr))
     if len(idx):

@@ -67,7 +67,7 @@ class SynthParams:
     frozen_prediction_weight: float = 0.1
     horizon_anchor: float = 0.01
     max_failures: int = 3
-    check_energy: bool = True
+    check_energy: bool = False
 
     def __post_init__(self) -> None:
         if int(self.k) < 1:
