@@ -107,16 +107,22 @@ def paint_in_process(project: Path, example: str, tool: str) -> dict:
 
 
 def screenshot(page, path: Path) -> None:
-    """A studio scene for the README: a stone path through a leaf meadow, flow arrows, a boundary."""
-    for ex in ("stones.svg", "leaves.svg", "tiles.svg"):
+    """A studio scene for the README: a stone path through scales, a flow field, a boundary."""
+    for ex in ("stones.svg", "scales.svg", "tiles.svg"):
         _request(page, {"type": "load_exemplar", "example": ex})
     _request(page, {"type": "region", "size": [900, 560]})
     page.evaluate("window.studio.fit()")
+    _request(page, {"type": "stroke_start", "tool": "flow", "radius": 1, "points": [[60.0, 120.0]]})
+    _request(page, {"type": "stroke_move", "points": [[450.0, 40.0], [840.0, 140.0]]})
+    _request(page, {"type": "stroke_end"})
+    _request(page, {"type": "stroke_start", "tool": "boundary", "radius": 1, "points": [[600.0, 330.0]]})
+    _request(page, {"type": "stroke_move", "points": [[700.0, 420.0], [860.0, 450.0]]})
+    _request(page, {"type": "stroke_end"})
     _request(page, {"type": "select", "names": ["stones"]})
     page.evaluate("window.studio.setTool('brush')")
     page.evaluate("(() => { const r = document.getElementById('radius'); r.value = 45; r.dispatchEvent(new Event('input')); })()")
     start = len(page.evaluate("window.studio.messages"))
-    road = [(60 + 13 * i, 300 + 110 * np.sin(i / 60 * 2 * np.pi)) for i in range(61)]
+    road = [(60 + 13 * i, 300 + 90 * np.sin(i / 60 * 2 * np.pi)) for i in range(61)]
     pts = [_screen(page, *p) for p in road]
     page.mouse.move(*pts[0])
     page.mouse.down()
@@ -125,14 +131,18 @@ def screenshot(page, path: Path) -> None:
         page.wait_for_timeout(8)
     page.mouse.up()
     _wait_message(page, "brush:", start)
-    _request(page, {"type": "select", "names": ["leaves"]})
-    start = len(page.evaluate("window.studio.messages"))
-    _request(page, {"type": "fill", "point": [[450.0, 80.0]]})
+    _request(page, {"type": "select", "names": ["scales"]})
+    _request(page, {"type": "fill", "point": [[200.0, 500.0]]})
     _request(page, {"type": "select", "names": ["tiles"]})
-    _request(page, {"type": "stroke_start", "tool": "flow", "radius": 1, "points": [[80.0, 520.0]]})
-    _request(page, {"type": "stroke_move", "points": [[450.0, 470.0], [820.0, 530.0]]})
+    start = len(page.evaluate("window.studio.messages"))
+    page.evaluate("window.studio.setTool('erase')")
+    page.evaluate("(() => { const r = document.getElementById('radius'); r.value = 30; r.dispatchEvent(new Event('input')); })()")
+    _request(page, {"type": "stroke_start", "tool": "erase", "radius": 30, "points": [[300.0, 430.0]]})
+    _request(page, {"type": "stroke_move", "points": [[420.0, 480.0], [540.0, 470.0]]})
     _request(page, {"type": "stroke_end"})
+    page.evaluate("window.studio.setTool('brush')")
     page.evaluate("window.studio.paletteEditor.setActive('stones')")
+    page.mouse.move(*_screen(page, 700, 250))
     page.wait_for_timeout(300)
     path.parent.mkdir(parents=True, exist_ok=True)
     page.screenshot(path=str(path))

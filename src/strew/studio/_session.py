@@ -735,7 +735,10 @@ class Session:
             raise
         if tool in ("brush", "spray", "erase"):
             self._measure()
-            note = note or f"{tool}: {stroke['added']} elements added"
+            if tool == "erase":
+                note = f"erase: {stroke.get('removed', 0)} elements removed"
+            else:
+                note = note or f"{tool}: {stroke['added']} elements added"
         self.stroke = None
         return out + [self.status_message(note)]
 
@@ -760,6 +763,7 @@ class Session:
             self._erase(seg, st["radius"])
         st["compute"] += time.perf_counter() - t
         st["added"] += max(0, self._scene_count() - before)
+        st["removed"] = st.get("removed", 0) + max(0, before - self._scene_count())
         msg = self.scene_message()
         out = [msg] if msg is not None else []
         return out + [self.status_message()]
