@@ -318,3 +318,13 @@ def test_initial_seed_with_a_symbol_id():
         assert out.kind_names[0] == name
     with pytest.raises(InputError, match="--start-kind"):
         grow(ex, count=5, start_kind="nope")
+
+
+def test_region_with_a_hole_keeps_centres_inside():
+    outer = shapely.box(0, 0, 200, 160)
+    region = Region(outer.difference(shapely.Point(100, 80).buffer(40)))
+    out = grow(stone_exemplar(), region=region, start=(20.0, 20.0), rng=6)
+    assert len(out) > 100
+    assert region.contains(out.xy).all()
+    assert np.all(np.hypot(out.x - 100, out.y - 80) > 40)
+    assert len(metrics.overlaps(out)[0]) == 0

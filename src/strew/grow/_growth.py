@@ -621,7 +621,16 @@ class _Grower:
         free = np.array([g in wset for g in nodes])
         new = relax_positions(pos, [local[g] for g in src], [local[g] for g in dst], np.asarray(off), free)
         tiny = 1e-9 * self.l
-        moved = [g for g in win if abs(new[local[g], 0] - self.pos[g, 0]) + abs(new[local[g], 1] - self.pos[g, 1]) > tiny]
+        moved = []
+        for g in win:
+            nx, ny = float(new[local[g], 0]), float(new[local[g], 1])
+            ox, oy = float(self.pos[g, 0]), float(self.pos[g, 1])
+            if abs(nx - ox) + abs(ny - oy) <= tiny:
+                continue
+            # relaxation never takes a centre out of the region or across a boundary stroke
+            if not self.in_domain(nx, ny) or self.crosses_boundary((ox, oy), (nx, ny)):
+                continue
+            moved.append(g)
         old = {g: (float(self.pos[g, 0]), float(self.pos[g, 1]), self.geom[g]) for g in moved}
         for g in moved:
             self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
