@@ -58,7 +58,7 @@ def _drag(page, points, steps=3):
 
 
 def _wait_message(page, prefix, start):
-    page.wait_for_function(f"window.studio.messages.slice({start}).some(m => m.startsWith({prefix!r}))", timeout=20000)
+    page.wait_for_function(f"window.studio.messages.slice({start}).some(m => m.startsWith({prefix!r}))", timeout=60000)
 
 
 def _scene(page):
@@ -123,11 +123,17 @@ def test_paint_erase_undo_export(page):
     _wait_message(page, "erase:", start)
     page.wait_for_function(f"window.studio.scene.n < {len(before)}")
     after = _scene(page)
-    gone = shapely.distance(shapely.LineString(cut), shapely.points(before)) <= 25.0
-    assert gone.any()
-    assert len(after) == len(before) - gone.sum()
-    assert np.all(shapely.distance(shapely.LineString(cut), shapely.points(after)) > 25.0)
-    assert _ink(page, 292, 285, 308, 315) == 0.0
+    # the pointer's path reaches the server through screen pixels: allow one unit either way
+    d_before = shapely.distance(shapely.LineString(cut), shapely.points(before))
+    assert (d_before < 24.0).sum() >= 3
+    kept = {tuple(p) for p in after.round(3)}
+    for p, d in zip(before.round(3), d_before):
+        if d < 24.0:
+            assert tuple(p) not in kept, "an element under the eraser survived"
+        elif d > 26.0:
+            assert tuple(p) in kept, "an element away from the eraser vanished"
+    assert len(after) == len(kept) and kept <= {tuple(p) for p in before.round(3)}
+    assert _ink(page, 294, 285, 306, 315) == 0.0
 
     # undo brings them back, exactly
     start = len(page.evaluate("window.studio.messages"))
@@ -135,7 +141,7 @@ def test_paint_erase_undo_export(page):
     _wait_message(page, "undone", start)
     restored = _scene(page)
     assert np.allclose(restored, before)
-    assert _ink(page, 292, 285, 308, 315) > 0.0
+    assert _ink(page, 294, 285, 306, 315) > 0.0
 
     # export SVG into the project folder
     page.fill("#export-name", "painted.svg")
