@@ -157,7 +157,11 @@ def test_cli_deterministic(exemplar_files, tmp_path, monkeypatch, capsys):
 
 def test_cli_patch_init(exemplar_files, monkeypatch, capsys):
     monkeypatch.chdir(exemplar_files)
-    rc = main(["synth", "grid.json", "--size", "100x100", "--init", "patch", "--patch-time", "0.05", "--out", "p.json", "--quiet"])
+    rc = main(["synth", "grid.json", "--size", "100x100", "--init", "patch", "--patch-rounds", "2", "--out", "p.json", "--quiet"])
     assert rc == 0
     p = load("p.json")
     assert len(p) > 40 and Region.rectangle(100, 100).contains(p.xy).all()
+    assert p.meta["params"]["init"] == "patch" and p.meta["params"]["patch_rounds"] == 2
+    # deterministic: the same command gives the same document
+    rc = main(["synth", "grid.json", "--size", "100x100", "--init", "patch", "--patch-rounds", "2", "--out", "q.json", "--quiet"])
+    assert rc == 0 and load("q.json").equals(p.with_meta(command=load("q.json").meta["command"]))

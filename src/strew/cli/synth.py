@@ -35,14 +35,14 @@ def _parse_select(items: tuple[str, ...]) -> dict[str, float] | None:
 @click.option("--c", "c_ratio", type=float, default=2.0, show_default=True, help="Ratio constant rejecting poor candidates (> 1).")
 @click.option("--optimize", type=click.Choice(["horizon", "global", "none"]), default="horizon", show_default=True)
 @click.option("--init", type=click.Choice(["grow", "patch"]), default="grow", show_default=True, help="Region growing, or Ma et al.'s patch initialisation.")
-@click.option("--patch-time", type=float, default=1.0, show_default=True, help="With --init patch: seconds of global optimisation.")
+@click.option("--patch-rounds", type=click.IntRange(0), default=5, show_default=True, help="With --init patch: rounds of global optimisation.")
 @click.option("--keep-voids", is_flag=True, help="Keep void elements (column 'void') instead of hiding them.")
 @click.option("--plot", "plot_path", default=None, type=click.Path(dir_okay=False), help="PNG: average neighbourhood distance against time for each method (Fig. 17).")
 @click.option("--save-palette", default=None, type=click.Path(dir_okay=False), help="Also write the example palette (.json document).")
 @seed_option
 @quiet_option
 @out_option()
-def command(exemplars, region, size, fill_at, brush_path, brush_radius, select, k, c_ratio, optimize, init, patch_time, keep_voids, plot_path, save_palette, seed, quiet, outs):
+def command(exemplars, region, size, fill_at, brush_path, brush_radius, select, k, c_ratio, optimize, init, patch_rounds, keep_voids, plot_path, save_palette, seed, quiet, outs):
     """Synthesize a texture from EXEMPLAR files (.json or .svg; several make a palette).
 
     Without --fill or --brush the whole region (or size) is filled.
@@ -80,6 +80,8 @@ def command(exemplars, region, size, fill_at, brush_path, brush_radius, select, 
     if dom is None and bp is None:
         raise InputError("--region or --size: give the area to fill")
     params = {"k": k, "c": c_ratio, "optimize": optimize, "init": init, "keep_voids": keep_voids, "select": dict(zip(sel.names, sel.weights))}
+    if init == "patch":
+        params["patch_rounds"] = patch_rounds
     if point is not None:
         params["fill"] = list(point)
     if brush_path is not None:
@@ -87,7 +89,7 @@ def command(exemplars, region, size, fill_at, brush_path, brush_radius, select, 
     with progress_bar("synth", quiet=quiet) as (progress, should_cancel):
         arr = synthesize(
             sel, dom, fill_point=point, brush_points=bp, brush_radius=br, init=init, k=k, c=c_ratio, optimize=optimize,
-            time_budget=patch_time if init == "patch" else None, keep_voids=keep_voids, rng=seed, progress=progress, should_cancel=should_cancel,
+            patch_rounds=patch_rounds if init == "patch" else None, keep_voids=keep_voids, rng=seed, progress=progress, should_cancel=should_cancel,
         )
     if plot_path is not None:
         if dom is None:

@@ -93,6 +93,7 @@ def synthesize(
     optimize: str = "horizon",
     kind_cost: float = 1.0,
     time_budget: float | None = None,
+    patch_rounds: int | None = None,
     keep_voids: bool = False,
     measure: bool = True,
     trace: list | None = None,
@@ -127,6 +128,8 @@ def synthesize(
         Kind mismatch cost omega, in units of the squared pairing threshold.
     time_budget : float, optional
         For ``init="patch"``: seconds of global optimisation after the patches (0).
+    patch_rounds : int, optional
+        For ``init="patch"``: rounds of global optimisation instead (deterministic).
     keep_voids : bool
         Keep void elements (flagged in the ``void`` column) instead of hiding them.
     measure : bool
@@ -165,7 +168,7 @@ def synthesize(
     if init == "patch":
         if brush_points is not None or fill_point is not None:
             raise InputError("init patch: fills the whole region; it takes no --fill or --brush")
-        patch_initialize(state, time_budget=float(time_budget or 0.0), progress=progress, should_cancel=should_cancel)
+        patch_initialize(state, time_budget=float(time_budget or 0.0), rounds=patch_rounds, progress=progress, should_cancel=should_cancel)
     elif brush_points is not None:
         if brush_radius is None:
             raise InputError("brush: give a brush radius")

@@ -20,6 +20,7 @@ def patch_initialize(
     *,
     cell: float | None = None,
     time_budget: float = 0.0,
+    rounds: int | None = None,
     max_rounds: int = 1000,
     progress: Callable | None = None,
     should_cancel: Callable | None = None,
@@ -30,7 +31,9 @@ def patch_initialize(
     ``cell`` (default: the median neighbourhood radius); every output cell receives the
     elements of a random exemplar cell (exemplar drawn by the selection's weights),
     keeping those whose centre lies in the region. Global optimisation then runs for
-    ``time_budget`` seconds (at least one round when the budget is positive).
+    ``rounds`` rounds (deterministic), or else for ``time_budget`` seconds (at least one
+    round when the budget is positive; as in §6.4, where it gets the time region growing
+    took).
 
     Returns
     -------
@@ -74,12 +77,17 @@ def patch_initialize(
     keep = state.region.contains(pos)
     state.add(src[keep], pos[keep], horizon=False)
     _record(state, t0, skipped)
-    rounds = 0
-    while time_budget > 0 and rounds < max_rounds:
-        optimize(state, None)
-        rounds += 1
-        _record(state, t0, skipped)
-        if time.perf_counter() - t0 - skipped[0] >= time_budget:
-            break
+    if rounds is not None:
+        for _ in range(int(rounds)):
+            optimize(state, None)
+            _record(state, t0, skipped)
+    else:
+        done = 0
+        while time_budget > 0 and done < max_rounds:
+            optimize(state, None)
+            done += 1
+            _record(state, t0, skipped)
+            if time.perf_counter() - t0 - skipped[0] >= time_budget:
+                break
     rep.done(nx * ny)
     return state.n
