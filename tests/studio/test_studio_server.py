@@ -7,6 +7,8 @@ import os
 import warnings
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 pytest.importorskip("fastapi")
 pytest.importorskip("httpx")
@@ -189,3 +191,31 @@ def test_cli_bad_project_dir(tmp_path, capsys):
     assert err.count("\n") == 0 and "PROJECT_DIR" in err and "no such folder" in err
     assert not missing.exists()
     assert main(["studio", str(tmp_path), "--port", "70000"]) == 2
+
+
+def test_cli_port_in_use(tmp_path, capsys):
+    import socket
+
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        sock.listen()
+        port = sock.getsockname()[1]
+        assert main(["studio", str(tmp_path), "--no-browser", "--port", str(port)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and f"--port {port}" in err
+
+
+@settings(max_examples=200, deadline=None)
+@given(parts=st.lists(st.sampled_from(["..", ".", "a", "b", "", "~", "/", "c.svg", "..svg", "x.json"]), min_size=1, max_size=6))
+def test_resolved_paths_never_leave_the_project(tmp_path_factory, parts):
+    from strew import InputError
+    from strew.studio._paths import resolve_in_project
+
+    root = tmp_path_factory.getbasetemp().resolve() / "resolve_root"
+    (root / "a" / "b").mkdir(parents=True, exist_ok=True)
+    name = "/".join(parts)
+    try:
+        full = resolve_in_project(root, name, suffixes=(".svg", ".json"))
+    except InputError:
+        return
+    assert full.is_relative_to(root) and full.suffix in (".svg", ".json")

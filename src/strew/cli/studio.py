@@ -26,6 +26,15 @@ def command(project_dir: str, host: str, port: int, no_browser: bool, seed: int)
     if not root.is_dir():
         raise InputError(f"PROJECT_DIR {project_dir!r}: no such folder")
     require_studio()
+    if port:
+        import socket
+
+        family = socket.AF_INET6 if ":" in host else socket.AF_INET
+        try:
+            with socket.socket(family, socket.SOCK_STREAM) as sock:
+                sock.bind((host, port))
+        except OSError as exc:
+            raise InputError(f"--port {port}: cannot listen on {host}:{port} ({exc.strerror or exc})") from None
     try:
         serve(root, host=host, port=port, open_browser=not no_browser, seed=seed)
     except OSError as exc:
