@@ -17,7 +17,7 @@ here = Path(__file__).parent
 size = 2000
 tab = import_svg(here / "puzzle.svg")
 cross = scale(import_svg(here / "cross.svg"), 2.0)
-petal = scale(import_svg(here / "petal.svg"), 1.6)
+petal = scale(import_svg(here / "petal.svg", tolerance=2.0), 1.6)
 wiggles = import_svg(here / "wiggles.svg")
 
 # -- puzzle bricks ---------------------------------------------------------------------
