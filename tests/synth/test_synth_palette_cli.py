@@ -104,6 +104,8 @@ def _one_line_error(capsys, rc, needle):
         (["neg.json", "--size", "50x50"], "must be positive"),
         (["grid.json", "--size", "50x50", "--select", "nope"], "no exemplar 'nope'"),
         (["grid.json", "--size", "50x50", "--select", ":2"], "--select"),
+        (["grid.json", "--size", "50x50", "--select", ""], "empty selection"),
+        (["grid.json", "--size", "50x50", "--select", "grid:0"], "weight of 'grid' must be positive"),
         (["grid.json", "--size", "50x50", "--brush", "stroke.json", "--brush-radius", "-3"], "--brush-radius: must be positive"),
         (["grid.json", "--size", "50x50", "--brush", "stroke.json"], "needs --brush-radius"),
         (["grid.json", "--size", "50x50", "--fill", "500,500"], "outside the region"),
@@ -165,3 +167,17 @@ def test_cli_patch_init(exemplar_files, monkeypatch, capsys):
     # deterministic: the same command gives the same document
     rc = main(["synth", "grid.json", "--size", "100x100", "--init", "patch", "--patch-rounds", "2", "--out", "q.json", "--quiet"])
     assert rc == 0 and load("q.json").equals(p.with_meta(command=load("q.json").meta["command"]))
+
+
+def test_cli_svg_exemplar(tmp_path, monkeypatch, capsys):
+    from strew._resources import example_path
+
+    svg = example_path("exemplars", "stones.svg")
+    monkeypatch.chdir(tmp_path)
+    rc = main(["synth", str(svg), "--size", "200x150", "--seed", "1", "--out", "s.json", "--quiet"])
+    assert rc == 0
+    out = load("s.json")
+    ex = load(svg)
+    assert len(out) > len(ex) // 2
+    assert set(out.kinds) == set(ex.kinds)
+    assert Region.rectangle(200, 150).contains_geometry(out.geometry).all()

@@ -14,6 +14,8 @@ def _parse_select(items: tuple[str, ...]) -> dict[str, float] | None:
         return None
     out: dict[str, float] = {}
     for item in items:
+        if not item.strip():
+            raise InputError("--select: empty selection (name an exemplar)")
         name, _, w = item.partition(":")
         if not name:
             raise InputError(f"--select: expected NAME or NAME:WEIGHT, got {item!r}")
