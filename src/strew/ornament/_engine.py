@@ -65,8 +65,11 @@ class Goal:
 class _Placed:
     """Placed proxies: bounding circles in growable arrays, exact geometry on demand."""
 
-    def __init__(self) -> None:
+    def __init__(self, bucket: float = 8.0) -> None:
         self.n = 0
+        # a uniform bucket grid over bounding boxes answers small queries without a scan
+        self.bucket = float(bucket)
+        self.buckets: dict[tuple[int, int], list[int]] = {}
         cap = 256
         self.bx = np.empty(cap)
         self.by = np.empty(cap)
@@ -89,6 +92,10 @@ class _Placed:
         self.owner[i] = owner
         self.proxies.append(proxy)
         self.n += 1
+        b = self.bucket
+        for bi in range(int(math.floor((cx - r) / b)), int(math.floor((cx + r) / b)) + 1):
+            for bj in range(int(math.floor((cy - r) / b)), int(math.floor((cy + r) / b)) + 1):
+                self.buckets.setdefault((bi, bj), []).append(i)
 
     def segments(self, i: int) -> np.ndarray:
         """(m, 4) outline segments of proxy ``i`` (closed outlines include the closing edge)."""
@@ -103,6 +110,24 @@ class _Placed:
     def near(self, cx: float, cy: float, reach: float) -> np.ndarray:
         """Indices of proxies whose bounding circle comes within ``reach`` of ``(cx, cy)``."""
         n = self.n
+        b = self.bucket
+        i0, i1 = int(math.floor((cx - reach) / b)), int(math.floor((cx + reach) / b))
+        j0, j1 = int(math.floor((cy - reach) / b)), int(math.floor((cy + reach) / b))
+        if n > 4096 and (i1 - i0 + 1) * (j1 - j0 + 1) <= 36:  # a scan is cheaper below that
+            found: list[int] = []
+            get = self.buckets.get
+            for bi in range(i0, i1 + 1):
+                for bj in range(j0, j1 + 1):
+                    lst = get((bi, bj))
+                    if lst:
+                        found.extend(lst)
+            if not found:
+                return np.zeros(0, np.int64)
+            idx = np.unique(np.asarray(found, dtype=np.int64))
+            dx = self.bx[idx] - cx
+            dy = self.by[idx] - cy
+            lim = self.br[idx] + reach
+            return idx[dx * dx + dy * dy <= lim * lim]
         dx = self.bx[:n] - cx
         dy = self.by[:n] - cy
         lim = self.br[:n] + reach
@@ -280,7 +305,7 @@ class _Grower:
         self.max_elements = max_elements
         self.rep = reporter
         self.elements: list[Element] = []
-        self.placed = _Placed()
+        self.placed = _Placed(bucket=max(4.0 * min_radius, 1e-3))
         self.rules_by_parent: dict[str, list] = {}
         for r in pattern.rules:
             self.rules_by_parent.setdefault(r.parent, []).append(r)
