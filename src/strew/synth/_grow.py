@@ -166,7 +166,8 @@ def grow(
             good2 = state.in_domain(ppos[sub2])
             ok[:] = False
             ok[sub2[good2]] = True
-        placed, seed_ok = K.place_proposals(costs, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, ok, prm.c, prep.factor, max(2.0 * prep.factor * cell_r, float(prep.min_dist.max())) + 1e-12)
+        slack = 2.0 * (2.0 * prep.r[src[seeds]]) ** 2
+        placed, seed_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, ok, prm.c, prep.factor, max(2.0 * prep.factor * cell_r, float(prep.min_dist.max())) + 1e-12)
         new_idx = np.flatnonzero(placed)
         if max_elements is not None and state.n + len(new_idx) > max_elements:
             new_idx = new_idx[: max(0, max_elements - state.n)]

@@ -277,12 +277,12 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
 
 
 @numba.njit(cache=True)
-def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell):
+def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell):
     """Sequential generation over seeds (Algorithm 1, §5.1).
 
     For each seed, candidates are visited by increasing distance; the best one ``e_0``
     is used if it can generate elements, otherwise ``e_i`` is considered while
-    ``|n(s) - n(e_i)| <= c |n(s) - n(e_0)|`` (the ratio test of §5.1); a seed whose
+    ``|n(s) - n(e_i)| <= c |n(s) - n(e_0)| + slack`` (the ratio test of §5.1); a seed whose
     candidates all fail is abandoned. Elements of the chosen candidate that passed the
     static checks (``prop_ok``) and do not intersect elements placed earlier in this
     step are copied.
@@ -290,6 +290,10 @@ def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, 
     Parameters
     ----------
     costs : (ns, k) float
+    slack : (ns,) float
+        Added to ``c |n(s) - n(e_0)|`` in the ratio test: two partial pairs' cost
+        (``2 (2 r_s)^2``, one element shifted), so that a perfect match that cannot generate (``d_0 = 0``, as in
+        a tiny exemplar) does not veto every other candidate.
     out_ptr, count : proposal layout from :func:`generate_proposals`.
     prop_pos : (P, 2) float
     prop_r : (P,) float
@@ -344,7 +348,7 @@ def place_proposals(costs, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, 
         for jj in range(k):
             j = order[jj]
             cj = costs[i, j]
-            if cj == INF or cj > c_ratio * d0 + 1e-12 * (1.0 + d0):
+            if cj == INF or cj > c_ratio * d0 + slack[i]:
                 break  # bad suggestion: abandon the seed (§5.1)
             w = out_ptr[i * k + j]
             nt = 0
