@@ -197,6 +197,15 @@ def main() -> None:
                     latency_vs_target=lat / TARGET_LATENCY_MS,
                     rate_vs_target=painting / TARGET_RATE,
                 )
+            # drawing: a filled region, panned frame by frame (60 fps leaves 16.7 ms a frame)
+            _request(page, {"type": "clear", "what": "scene"})
+            _request(page, {"type": "select", "names": ["scales"]})
+            _request(page, {"type": "fill", "point": [[REGION[0] / 2, REGION[1] / 2]]})
+            page.evaluate("window.studio.fit()")
+            n = page.evaluate("window.studio.scene.n")
+            times = page.evaluate("(() => { const t = []; for (let i = 0; i < 30; i++) { window.studio.view.ox += 3; t.push(window.studio.drawNow()); } return t; })()")
+            draw_ms = statistics.median(times[5:])
+            bench.row(f"draw {n} elements (pan)", count=n, draw_ms=draw_ms, frame_budget_ms=1000 / 60, budget_ratio=draw_ms / (1000 / 60))
             if args.screenshot:
                 page.close()
                 page = browser.new_page(viewport={"width": 1280, "height": 800})

@@ -304,3 +304,15 @@ def test_scene_messages_patch_and_replace(tmp_path):
     want = s2._arrays()
     for c in "kxyrs":
         assert np.allclose(got[c], want[c])
+
+
+def test_streamed_columns_equal_the_scene(tmp_path):
+    s = _session(tmp_path)
+    _stroke(s, "spray", [(100.0, 100.0), (200.0, 100.0)], 30.0)
+    s.handle({"type": "load_exemplar", "example": "tiles.svg"})
+    s.handle({"type": "select", "names": ["tiles", "scales"]})
+    _stroke(s, "brush", LINE, 40.0)
+    assert len(s.fixed) and s.state.n
+    fast, slow = s._arrays(), s._columns_of(s.scene())
+    for c in slow:
+        assert np.array_equal(fast[c], slow[c])

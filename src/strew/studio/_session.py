@@ -100,6 +100,7 @@ class Session:
         self.cancel = threading.Event()
         self._sent: dict[str, np.ndarray] | None = None
         self._emit: Emit = lambda m: None
+        self._fixed_cache: tuple[Arrangement, dict[str, np.ndarray]] | None = None
         self._refs: dict[tuple[str, int], Any] = {}
 
     # ------------------------------------------------------------------ dispatch
@@ -155,8 +156,7 @@ class Session:
         arr = concat(parts) if len(parts) > 1 else self.fixed
         return arr.replace(region=self.region)
 
-    def _arrays(self) -> dict[str, np.ndarray]:
-        arr = self.scene()
+    def _columns_of(self, arr: Arrangement) -> dict[str, np.ndarray]:
         lookup = np.array([self.kinds.index(k) for k in arr.kinds], dtype=np.int64) if arr.kinds else np.zeros(0, np.int64)
         return {
             "k": lookup[arr.kind] if len(arr) else np.zeros(0, np.int64),
@@ -165,6 +165,33 @@ class Session:
             "r": np.round(arr.rotation, 4),
             "s": np.round(arr.scale, 4),
         }
+
+    def _arrays(self) -> dict[str, np.ndarray]:
+        """Columns of :meth:`scene` as the browser gets them (kind as a library index).
+
+        Equal to ``_columns_of(self.scene())``, but read straight from the synthesis state
+        (the fixed part is cached), since it runs after every stroke segment.
+        """
+        if self._fixed_cache is None or self._fixed_cache[0] is not self.fixed:
+            self._fixed_cache = (self.fixed, self._columns_of(self.fixed))
+        fixed = self._fixed_cache[1]
+        st = self.state
+        if st is None or st.n == 0:
+            return fixed
+        prep = st.prep
+        src = st.src
+        show = ~np.asarray(prep.void, bool)[src]  # void elements are hidden (§5.6)
+        src = src[show]
+        lookup = np.array([self.kinds.index(k) for k in prep.shapes], dtype=np.int64)
+        pos = st.pos[show]
+        live = {
+            "k": lookup[prep.kind[src]],
+            "x": np.round(pos[:, 0], 3),
+            "y": np.round(pos[:, 1], 3),
+            "r": np.round(prep.rotation[src], 4),
+            "s": np.round(prep.scale[src], 4),
+        }
+        return {c: np.concatenate([fixed[c], live[c]]) for c in fixed}
 
     def scene_message(self, *, full: bool = False) -> dict[str, Any] | None:
         """The change of the scene since the last message: ``replace`` or ``patch``.

@@ -121,6 +121,8 @@ function regionBounds() {
 }
 function fit() { const r = canvas.getBoundingClientRect(); studio.view.fit(regionBounds(), r.width, r.height); dirty(); }
 studio.fit = fit;
+// draw one frame now; returns its duration in ms (benchmarks)
+studio.drawNow = () => { const t = performance.now(); draw(t); return performance.now() - t; };
 
 function draw(t) {
   needsDraw = false;
