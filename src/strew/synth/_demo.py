@@ -22,7 +22,7 @@ def items(rng: np.random.Generator) -> list[DemoItem]:
         seed = int(rng.integers(2**31))
         arr = synthesize(ex, region, rng=seed)
         d = arr.meta["synth"]["average_neighborhood_distance"]
-        out.append(DemoItem(name=f"synth-exemplar-{name}", title=f"Exemplar: {name}", arrangement=ex.with_meta(), description=f"{len(ex)} elements" + (" (grey: void elements, §5.6)" if "void" in ex else "") + "."))
+        out.append(DemoItem(name=f"synth-exemplar-{name}", title=f"Exemplar: {name}", arrangement=ex.with_meta(), description=f"{len(ex)} elements" + (f", {int(ex['void'].sum())} of them void elements (§5.6), invisible when drawn" if "void" in ex else "") + "."))
         out.append(
             DemoItem(
                 name=f"synth-{name}",
