@@ -41,7 +41,7 @@ from .._rng import as_rng
 from ..region import Region
 from ._pattern import Element, Pattern, load_pattern
 from ._proxies import Arc, Bezier, Circle, Point, Polygon, Proxy, Segment, vec
-from ._raster import climb, cover_disc, cover_polygon, cover_polyline, lower_wave, scan_blocks
+from ._raster import climb, cover_disc, cover_polygon, cover_polyline, lower_wave, scan_blocks, segments_distance
 
 __all__ = ["Goal", "RuleContext", "Ornament", "grow_elements", "default_seed"]
 
@@ -542,7 +542,7 @@ class _Grower:
 
     def _measure(self, c: np.ndarray, reach: float) -> tuple[float, float, float, np.ndarray, np.ndarray]:
         """Exact radius of the empty circle at ``c``: (rho, d_boundary, d_element, idx, dists)."""
-        d_b = float(shapely.distance(self.region.boundary, shapely.Point(c)))
+        d_b = float(segments_distance(float(c[0]), float(c[1]), self.boundary_segs))
         idx = self.placed.near(c[0], c[1], reach)
         dists = self.placed.distances(idx, c[0], c[1]) if len(idx) else np.empty(0)
         d_e = float(dists.min()) if len(dists) else math.inf
@@ -607,10 +607,11 @@ class _Grower:
             # -- exact radius of C, and whether an element (not the boundary) stopped it
             reach = self.dist_el[i, j] * h + 4 * h + max(2 * h, 0.25 * (self.dist_all[i, j] * h + h))
             rho, d_b, d_e, idx, dists = self._measure(c, reach)
-            if threshold - slack - self.pad <= rho < threshold and d_e <= d_b + h:
+            if threshold - 0.75 * h <= rho < threshold and d_e <= d_b + h:
                 # The raster circle is centred on a cell; the exact medial point lies within
-                # about a cell of it (the clearance is 1-Lipschitz, hence the gate above), so
-                # climb to it before giving the circle up.
+                # half a cell diagonal of it, so (the clearance being 1-Lipschitz) only
+                # circles this close to the threshold may reach it: climb to the medial
+                # point before giving them up.
                 c, rho = self._climb(c, rho, reach + 2 * h, threshold)
                 rho, d_b, d_e, idx, dists = self._measure(c, reach + 2 * h)
             if d_e > d_b + h or rho < threshold:

@@ -501,3 +501,14 @@ def _newton3(px, py, rho, circ, segs):
         if abs(step[0]) + abs(step[1]) + abs(step[2]) < 1e-12:
             break
     return px, py
+
+
+@numba.njit(**_NB)
+def segments_distance(px, py, segs):
+    """Distance from ``(px, py)`` to the nearest of the segments ``(m, 4)``."""
+    best = np.inf
+    for k in range(segs.shape[0]):
+        v = _seg_dist2(px, py, segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3])
+        if v < best:
+            best = v
+    return np.sqrt(best)
