@@ -153,3 +153,83 @@ def test_paint_erase_undo_export(page):
     uses = [e for e in root.iter() if e.tag.endswith("use")]
     assert len(uses) == len(before)
     assert page.page_errors == []
+
+
+def _palette_click(page, x, y):
+    box = page.locator("#palette-canvas").bounding_box()
+    sx, sy = page.evaluate(f"window.studio.paletteEditor.view.toScreen({x}, {y})")
+    page.mouse.click(box["x"] + sx, box["y"] + sy)
+
+
+def _exemplar(page, name):
+    return page.evaluate(f"window.studio.palette.exemplars.find(e => e.name === {name!r})")
+
+
+def _wait_reply(page, count_before):
+    """Wait until the server answered (a message or an error) after an action."""
+    page.wait_for_function(
+        f"window.studio.messages.length + window.studio.errors.length > {count_before}", timeout=60000
+    )
+
+
+def _replies(page):
+    return page.evaluate("window.studio.messages.length + window.studio.errors.length")
+
+
+def test_palette_panel_edit_flip_select_and_flow_arrows(page):
+    page.select_option("#files", "example:tiles.svg")
+    page.click("#load-exemplar")
+    page.wait_for_function("window.studio.palette.exemplars.some(e => e.name === 'tiles')")
+    page.click("#exemplars li[data-name=tiles]")
+    page.wait_for_function("window.studio.paletteEditor.active === 'tiles'")
+    ex = _exemplar(page, "tiles")
+    n = ex["n"]
+    assert ex["edges"], "connectivity edges are shown"
+
+    # place an element by hand, then delete it
+    page.click("#edit-tools button[data-etool=place]")
+    x0, y0, x1, y1 = min(ex["x"]), min(ex["y"]), max(ex["x"]), max(ex["y"])
+    spot = (x0 - 8.0, y0 - 8.0)  # just outside the exemplar's corner, still on the canvas
+    c = _replies(page)
+    _palette_click(page, *spot)
+    _wait_reply(page, c)
+    ex = _exemplar(page, "tiles")
+    assert ex["n"] == n + 1 and abs(ex["x"][-1] - spot[0]) < 2 and abs(ex["y"][-1] - spot[1]) < 2
+    page.click("#edit-tools button[data-etool=delete]")
+    c = _replies(page)
+    _palette_click(page, ex["x"][-1], ex["y"][-1])
+    _wait_reply(page, c)
+    assert _exemplar(page, "tiles")["n"] == n
+
+    # flip a connectivity edge by clicking it (Ijiri Fig. 3); hull edges cannot flip
+    page.click("#edit-tools button[data-etool=flip]")
+    ex = _exemplar(page, "tiles")
+    before = {tuple(e) for e in ex["edges"]}
+    flipped = False
+    for i, j in sorted(before)[:40]:
+        mx, my = (ex["x"][i] + ex["x"][j]) / 2, (ex["y"][i] + ex["y"][j]) / 2
+        c = _replies(page)
+        _palette_click(page, mx, my)
+        _wait_reply(page, c)
+        now = {tuple(e) for e in _exemplar(page, "tiles")["edges"]}
+        if now != before:
+            assert len(now) == len(before) and (i, j) not in now
+            flipped = True
+            break
+    assert flipped
+
+    # select two exemplars with the check boxes
+    for name in ("scales", "tiles"):
+        if not _exemplar(page, name)["selected"]:
+            page.click(f"#exemplars li[data-name={name}] input")
+            page.wait_for_function(f"window.studio.palette.selection.includes({name!r})")
+    assert sorted(page.evaluate("window.studio.palette.selection")) == ["scales", "tiles"]
+
+    # a flow stroke shows the field as arrows along it
+    page.click("#tools button[data-tool=flow]")
+    _drag(page, [(100.0, 500.0), (400.0, 500.0), (700.0, 500.0)])
+    page.wait_for_function("window.studio.strokes.arrows.length > 0")
+    arrows = np.asarray(page.evaluate("window.studio.strokes.arrows"))
+    near = np.abs(arrows[:, 1] - 500.0) < 40
+    assert near.any() and np.allclose(np.cos(arrows[near, 2]), 1.0, atol=0.05)
+    assert page.page_errors == []
