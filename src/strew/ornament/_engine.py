@@ -40,7 +40,7 @@ from .._progress import Reporter
 from .._rng import as_rng
 from ..region import Region
 from ._pattern import Element, Pattern, load_pattern
-from ._proxies import Arc, Bezier, Circle, Point, Polygon, Proxy, Segment, vec
+from ._proxies import Circle, Point, Polygon, Proxy, vec
 from ._raster import climb, cover_disc, cover_polygon, cover_polyline, lower_wave, scan_blocks, segments_distance
 
 __all__ = ["Goal", "RuleContext", "Ornament", "grow_elements", "default_seed"]

@@ -30,7 +30,7 @@ from .._errors import InputError
 from ..arrangement import Arrangement
 from ..shape import Path, Shape
 from ._pattern import Element
-from ._proxies import Arc, Bezier, Circle, Point, Polygon, Proxy, Segment
+from ._proxies import Arc, Bezier, Point, Proxy, Segment
 
 if TYPE_CHECKING:
     from ._engine import Ornament

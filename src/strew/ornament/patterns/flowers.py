@@ -31,7 +31,6 @@ from strew.ornament import (
     angle_of,
     distance,
     offset,
-    polar,
     tapered_stroke,
 )
 
@@ -127,5 +126,3 @@ def ink_leaf(leaf, rc):
     outline = np.vstack([a, b[::-1][1:-1]])
     return [Mark.polygon(outline, fill="#5d9b4a", stroke="#2b4d24", stroke_width=0.5 * rc.line_width)]
 
-
-_ = polar  # re-exported helper kept in the import list as a reminder for rule writers
