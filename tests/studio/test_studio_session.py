@@ -316,3 +316,31 @@ def test_streamed_columns_equal_the_scene(tmp_path):
     fast, slow = s._arrays(), s._columns_of(s.scene())
     for c in slow:
         assert np.array_equal(fast[c], slow[c])
+
+
+def test_stop_cancels_a_fill(tmp_path):
+    s = _session(tmp_path, size=(1500.0, 1000.0))
+
+    def stop_at_once(msg):
+        s.cancel.set()
+
+    out = s.handle({"type": "fill", "point": [[750.0, 500.0]]}, stop_at_once)
+    assert out[-1]["message"].startswith("fill stopped")
+    stopped = len(s.scene())
+    s.handle({"type": "undo"})
+    s.handle({"type": "fill", "point": [[750.0, 500.0]]})
+    assert len(s.scene()) > 2 * stopped
+
+
+def test_failed_stroke_leaves_no_trace(tmp_path):
+    s = Session(tmp_path)
+    s.handle({"type": "load_exemplar", "example": "scales.svg"})
+    s.handle({"type": "palette_new", "name": "few"})
+    kind = s.kinds[0]
+    for x, y in ((0, 0), (30, 0), (0, 30)):
+        s.handle({"type": "palette_edit", "exemplar": "few", "op": "place", "kind": kind, "x": x, "y": y})
+    s.handle({"type": "select", "names": ["few"]})
+    depth = len(s.undo_stack)
+    with pytest.raises(InputError, match="at least four elements"):
+        s.handle({"type": "stroke_start", "tool": "spray", "radius": 40, "points": [[100, 100]]})
+    assert len(s.undo_stack) == depth and s.stroke is None and len(s.scene()) == 0

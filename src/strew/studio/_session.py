@@ -717,7 +717,17 @@ class Session:
         self._push_history()
         self.stroke = stroke
         self.cancel.clear()
-        return self._apply_segment(pts)
+        try:
+            return self._apply_segment(pts)
+        except InputError:
+            self._abandon()
+            raise
+
+    def _abandon(self) -> None:
+        """Undo the half-done operation whose snapshot is on top of the history."""
+        self.stroke = None
+        if self.undo_stack:
+            self._restore(self.undo_stack.pop())
 
     def _on_stroke_move(self, msg: dict, emit: Emit) -> list[dict]:
         if self.stroke is None:
@@ -757,8 +767,7 @@ class Session:
                 self._set_region(self._region_of(allpts))
                 out.append(self.strokes_message())
         except InputError:
-            self.stroke = None
-            self._restore(self.undo_stack.pop())
+            self._abandon()
             raise
         if tool in ("brush", "spray", "erase"):
             self._measure()
@@ -953,6 +962,9 @@ class Session:
             note = "filled"
         except Cancelled:
             note = "fill stopped"
+        except InputError:
+            self._abandon()
+            raise
         self._drop_state_overlaps(n0)
         dt = time.perf_counter() - t
         self._measure()
