@@ -14,7 +14,6 @@ from .._progress import Reporter
 from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
-from ._prepare import neighborhoods
 from ._state import SynthState, map_offsets
 
 __all__ = ["grow", "seed_patch", "fill", "brush", "erase", "update_free_space"]
@@ -136,7 +135,7 @@ def grow(
         order = state.rng.permutation(hz)
         seeds = K.greedy_separated(pos, order, prm.seed_separation * rbar)
         tree = cKDTree(pos)
-        q_ptr, q_idx, q_off = neighborhoods(pos, rbar[seeds], tree=tree, query=seeds)
+        q_ptr, q_idx, q_off = K.grid_neighborhoods(pos, seeds, rbar[seeds])
         src = state.src
         q_kind = prep.kind[src[q_idx]]
         q_d = 2.0 * prep.r[src[q_idx]]

@@ -674,3 +674,83 @@ def spacing_violations(pos, rad, sk, min_dist, factor, moved, cell):
                                 out[j] = True
                     j = nxt[j]
     return out
+
+
+@numba.njit(cache=True)
+def grid_neighborhoods(pos, query, radius):
+    """CSR neighbourhoods of ``pos[query]`` within ``radius`` (self excluded), sorted by
+    distance; a uniform grid replaces the k-d tree for the output's hot loop.
+
+    Returns
+    -------
+    ptr : (m + 1,) int
+    idx : (N,) int
+    off : (N, 2) float
+    """
+    n = pos.shape[0]
+    m = query.shape[0]
+    ptr = np.zeros(m + 1, np.int64)
+    if n == 0 or m == 0:
+        return ptr, np.zeros(0, np.int64), np.zeros((0, 2))
+    cell = max(radius.max(), 1e-12)
+    x0 = pos[:, 0].min()
+    y0 = pos[:, 1].min()
+    nx = int((pos[:, 0].max() - x0) / cell) + 1
+    ny = int((pos[:, 1].max() - y0) / cell) + 1
+    if nx * ny > 4 * n + 1024:
+        cell = max(pos[:, 0].max() - x0, pos[:, 1].max() - y0) / np.sqrt(4.0 * n) + cell
+        nx = int((pos[:, 0].max() - x0) / cell) + 1
+        ny = int((pos[:, 1].max() - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(n, -1, np.int64)
+    for j in range(n - 1, -1, -1):
+        g = int((pos[j, 0] - x0) / cell) * ny + int((pos[j, 1] - y0) / cell)
+        nxt[j] = head[g]
+        head[g] = j
+    reach = int(np.ceil(radius.max() / cell))
+    idx = np.empty(0, np.int64)
+    off = np.empty((0, 2))
+    for t in range(2):
+        w = 0
+        for a in range(m):
+            i = query[a]
+            r2 = radius[a] * radius[a]
+            gx = int((pos[i, 0] - x0) / cell)
+            gy = int((pos[i, 1] - y0) / cell)
+            start = w
+            for ax in range(max(gx - reach, 0), min(gx + reach + 1, nx)):
+                for ay in range(max(gy - reach, 0), min(gy + reach + 1, ny)):
+                    j = head[ax * ny + ay]
+                    while j >= 0:
+                        if j != i:
+                            dx = pos[j, 0] - pos[i, 0]
+                            dy = pos[j, 1] - pos[i, 1]
+                            if dx * dx + dy * dy <= r2:
+                                if t == 1:
+                                    idx[w] = j
+                                    off[w, 0] = dx
+                                    off[w, 1] = dy
+                                w += 1
+                        j = nxt[j]
+            if t == 0:
+                ptr[a + 1] = w
+            else:
+                # sort the segment by distance (insertion sort: segments are small)
+                for u in range(start + 1, w):
+                    ju = idx[u]
+                    ox = off[u, 0]
+                    oy = off[u, 1]
+                    du = ox * ox + oy * oy
+                    v = u - 1
+                    while v >= start and (off[v, 0] ** 2 + off[v, 1] ** 2 > du or (off[v, 0] ** 2 + off[v, 1] ** 2 == du and idx[v] > ju)):
+                        idx[v + 1] = idx[v]
+                        off[v + 1, 0] = off[v, 0]
+                        off[v + 1, 1] = off[v, 1]
+                        v -= 1
+                    idx[v + 1] = ju
+                    off[v + 1, 0] = ox
+                    off[v + 1, 1] = oy
+        if t == 0:
+            idx = np.empty(w, np.int64)
+            off = np.empty((w, 2))
+    return ptr, idx, off

@@ -5,10 +5,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from . import _kernels as K
-from ._prepare import neighborhoods
 
 if TYPE_CHECKING:
     from ._state import SynthState
@@ -16,7 +14,7 @@ if TYPE_CHECKING:
 __all__ = ["neighborhood_distances", "energy", "average_neighborhood_distance", "sample_distance"]
 
 
-def neighborhood_distances(state: SynthState, which: np.ndarray | None = None, *, tree: cKDTree | None = None) -> np.ndarray:
+def neighborhood_distances(state: SynthState, which: np.ndarray | None = None) -> np.ndarray:
     """min over the selection S of |n(o) - n(e)| (Eq. 1) for output elements ``which``.
 
     A brute-force search over every exemplar element of the selection (no k-coherence),
@@ -34,8 +32,6 @@ def neighborhood_distances(state: SynthState, which: np.ndarray | None = None, *
     if len(which) == 0 or n == 0:
         return np.zeros(0)
     pos = state.pos
-    if tree is None:
-        tree = cKDTree(pos)
     src = state.src
     out = np.empty(len(which))
     sel = np.flatnonzero(prep.selected_elements).astype(np.int64)
@@ -43,7 +39,7 @@ def neighborhood_distances(state: SynthState, which: np.ndarray | None = None, *
     block = max(1, 400_000 // max(ne, 1))
     for a in range(0, len(which), block):
         q = which[a : a + block]
-        ptr, idx, off = neighborhoods(pos, prep.rbar[src[q]], tree=tree, query=q)
+        ptr, idx, off = K.grid_neighborhoods(pos, q, prep.rbar[src[q]])
         cands = np.tile(sel, (len(q), 1))
         costs = K.candidate_costs(ptr, off, prep.kind[src[idx]], 2.0 * prep.r[src[idx]], prep.rbar[src[q]], prep.kind[src[q]], 2.0 * prep.r[src[q]], cands, prep.nb_ptr, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind, prep.kind_cost)
         out[a : a + len(q)] = costs.min(axis=1)

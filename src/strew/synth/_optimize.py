@@ -8,7 +8,6 @@ from scipy.sparse.linalg import splu
 from scipy.spatial import cKDTree
 
 from . import _kernels as K
-from ._prepare import neighborhoods
 from ._state import SynthState, map_offsets
 
 __all__ = ["optimize", "expanded_horizon", "prediction_weights", "match_neighborhoods"]
@@ -37,7 +36,7 @@ def match_neighborhoods(state: SynthState, query: np.ndarray, tree: cKDTree, can
     """
     prep = state.prep
     pos = state.pos
-    ptr, idx, off = neighborhoods(pos, state.rbar[query], tree=tree, query=query)
+    ptr, idx, off = K.grid_neighborhoods(pos, np.asarray(query, np.int64), state.rbar[query])
     src = state.src
     q_kind = prep.kind[src[idx]]
     q_d = 2.0 * prep.r[src[idx]]
