@@ -344,3 +344,19 @@ def test_failed_stroke_leaves_no_trace(tmp_path):
     with pytest.raises(InputError, match="at least four elements"):
         s.handle({"type": "stroke_start", "tool": "spray", "radius": 40, "points": [[100, 100]]})
     assert len(s.undo_stack) == depth and s.stroke is None and len(s.scene()) == 0
+
+
+def test_boundary_strokes_confine_the_filler_and_the_brush(tmp_path):
+    s = _session(tmp_path, size=(400.0, 300.0))
+    _stroke(s, "boundary", [(200.0, -10.0), (200.0, 310.0)], 1.0)
+    s.handle({"type": "fill", "point": [[100.0, 150.0]]})
+    scene = s.scene()
+    assert len(scene) >= 10
+    assert np.all(scene.x < 200.0)
+    assert scene.x.max() > 150.0  # it did fill up to the wall
+    n = len(scene)
+    # a brush stroke that starts on the right stays on the right
+    _stroke(s, "brush", [(300.0, 150.0), (250.0, 150.0), (150.0, 150.0)], 40.0)
+    new = s.scene().select(np.arange(len(s.scene())) >= n) if len(s.scene()) > n else None
+    assert new is not None and len(new) > 0
+    assert np.all(new.x > 200.0)

@@ -676,6 +676,27 @@ class Session:
             self.state.region = region
         self._rebuild_flow()
 
+    def _face(self, point: np.ndarray) -> Region:
+        """The part of the region on ``point``'s side of the boundary strokes.
+
+        Boundary strokes stop growth (Ijiri §3, Fig. 1f). :func:`strew.grow.grow` takes
+        them directly; for the brush and the filler of :mod:`strew.synth`, which know
+        only a region, the region is cut along the strokes (widened by half the largest
+        element radius of the selection) and synthesis is confined to the piece where
+        the stroke or the fill starts.
+        """
+        if not self.boundary_strokes:
+            return self.region
+        st = self.state
+        half = 0.5 * float(np.max(st.prep.r)) if st is not None and len(st.prep.r) else 1.0
+        walls = shapely.union_all([shapely.LineString(b) if len(b) > 1 else shapely.Point(b[0]) for b in self.boundary_strokes]).buffer(half)
+        pieces = self.region.geometry.difference(walls)
+        here = shapely.Point(float(point[0]), float(point[1]))
+        for part in shapely.get_parts(pieces):
+            if part.covers(here):
+                return Region(part)
+        return self.region
+
     def _rebuild_flow(self) -> None:
         from ..fields import flow_field
 
@@ -819,29 +840,35 @@ class Session:
         st = self._ensure_state()
         stroke = self.stroke
         assert stroke is not None
-        if "n_before" not in stroke:
-            stroke["n_before"] = st.n
-            near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(pts[0], r=radius)) > 0
-            if not near:
-                # §5.4: "If there are no elements near the first brush-point, a random patch
-                # from the example-palette selection is copied to the output domain".
-                st.brush_points = np.concatenate([st.brush_points, pts[:1]])
-                st.brush_radii = np.concatenate([st.brush_radii, [radius]])
-                synth.seed_patch(st, (float(pts[0, 0]), float(pts[0, 1])), random=True)
-                self._drop_state_overlaps(stroke["n_before"])
+        if "face" not in stroke:
+            stroke["face"] = self._face(pts[0])
+        st.region = stroke["face"]
+        try:
+            if "n_before" not in stroke:
+                stroke["n_before"] = st.n
+                near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(pts[0], r=radius)) > 0
+                if not near:
+                    # §5.4: "If there are no elements near the first brush-point, a random patch
+                    # from the example-palette selection is copied to the output domain".
+                    st.brush_points = np.concatenate([st.brush_points, pts[:1]])
+                    st.brush_radii = np.concatenate([st.brush_radii, [radius]])
+                    synth.seed_patch(st, (float(pts[0, 0]), float(pts[0, 1])), random=True)
+                    self._drop_state_overlaps(stroke["n_before"])
+                    m = self.scene_message()
+                    if m is not None:
+                        emit(m)
+            n0 = st.n
+            old = stroke["n_before"]
+            reopt = bool(old) and len(cKDTree(st.pos[:old]).query_ball_point(pts, r=radius, return_length=True).nonzero()[0]) > 0
+
+            def progress(done: int, total: int | None, message: str) -> None:
                 m = self.scene_message()
                 if m is not None:
                     emit(m)
-        n0 = st.n
-        old = stroke["n_before"]
-        reopt = bool(old) and len(cKDTree(st.pos[:old]).query_ball_point(pts, r=radius, return_length=True).nonzero()[0]) > 0
 
-        def progress(done: int, total: int | None, message: str) -> None:
-            m = self.scene_message()
-            if m is not None:
-                emit(m)
-
-        synth.brush(st, pts, radius, reoptimize=reopt, progress=progress)
+            synth.brush(st, pts, radius, reoptimize=reopt, progress=progress)
+        finally:
+            st.region = self.region
         self._drop_state_overlaps(n0)
 
     def _drop_state_overlaps(self, n0: int) -> None:
@@ -957,6 +984,7 @@ class Session:
                 emit(m)
                 emit(self.status_message(f"filling: {done} elements"))
 
+        st.region = self._face(p)
         try:
             synth.fill(st, (float(p[0]), float(p[1])), progress=progress, should_cancel=self.cancel.is_set)
             note = "filled"
@@ -965,6 +993,8 @@ class Session:
         except InputError:
             self._abandon()
             raise
+        finally:
+            st.region = self.region
         self._drop_state_overlaps(n0)
         dt = time.perf_counter() - t
         self._measure()
