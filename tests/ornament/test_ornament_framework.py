@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import shapely
 
 from strew import Region
@@ -131,3 +132,45 @@ def test_every_proxy_kind_grows_renders_and_blocks_space():
     assert region.contains_geometry(arr.geometry, tolerance=1e-6).all()
     filled = orn.render("tapered")
     assert any(sh.style["fill"] != "none" for sh in filled.shapes.values())
+
+
+def test_exclude_list_cleared_near_a_success_and_by_rules():
+    from strew._progress import Reporter
+    from strew.ornament import load_pattern
+    from strew.ornament._engine import _Grower
+
+    g = _Grower(load_pattern("dots"), Region.rectangle(60, 60), [[30.0, 30.0]], None, None, 1.0, None, None, None, Reporter())
+    for p in ([10.0, 10.0], [12.0, 10.0], [50.0, 50.0]):
+        g.add_exclude(np.array(p))
+    assert g.n_ex == 3
+    g.clear_exclude_near(np.array([11.0, 10.0]), 1.5)  # §4.1: points within epsilon of C go
+    assert g.n_ex == 1 and np.allclose(g.ex[0], [50.0, 50.0])
+    g.clear_exclude_all()  # what a rule's ctx.clear_exclude() does
+    assert g.n_ex == 0
+
+
+def test_rule_can_clear_the_exclude_list_and_unblock_growth():
+    pat = Pattern("gate", state={"tries": 0}, min_radius=2.0)
+    pat.element("seed", Point)
+    pat.element("dot", Circle)
+    goals = []
+
+    @pat.rule("seed", children=["dot"])
+    def gated(ctx, seed, dot):
+        # fail the first three circles (they go on the exclude list); the third failure
+        # clears the list first, so the earlier circles become eligible again
+        ctx.state.tries += 1
+        goals.append(tuple(ctx.goal.center))
+        if ctx.state.tries <= 3:
+            if ctx.state.tries == 3:
+                ctx.clear_exclude()
+            return FAILURE
+        dot.proxy.set(seed.proxy.center, 2.0)
+        seed.sterile = True
+        return SUCCESS
+
+    orn = grow_elements(pat, Region.rectangle(40, 40), rng=0)
+    assert [e.type for e in orn.elements] == ["seed", "dot"]
+    assert orn.stats["successes"] == 1 and len(goals) == 4  # the dot has no rule: later circles fail
+    assert len(set(goals[:3])) == 3
+    assert goals[3] in goals[:2]  # an excluded circle came back after the list was cleared
