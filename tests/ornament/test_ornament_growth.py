@@ -285,3 +285,16 @@ def test_default_seed_is_inside_and_central():
     s = orn.seeds[0]
     assert region.contains(orn.seeds).all()
     assert abs(s[1] - 10) < 0.5
+
+
+def test_resolution_sets_the_raster_buffer():
+    region = Region.rectangle(60, 30)
+    coarse = grow_elements("dots", region, rng=0, resolution=64)
+    fine = grow_elements("dots", region, rng=0, resolution=256)
+    assert coarse.stats["resolution"] == 64 and coarse.stats["cell"] == pytest.approx(60 / 64)
+    assert fine.stats["cell"] == pytest.approx(60 / 256)
+    for orn in (coarse, fine):  # exact tests keep dots apart whatever the raster
+        _, c, r = dots_of(orn)
+        dd = np.hypot(*(c[:, None] - c[None]).transpose(2, 0, 1)) - r[:, None] - r[None]
+        np.fill_diagonal(dd, np.inf)
+        assert dd.min() >= -1e-9
