@@ -168,3 +168,27 @@ def test_svg_exemplar_and_svg_strokes(tmp_path):
     arr = load(out)
     assert len(arr) > 20
     assert np.all(arr.y < 120)  # the wall at y = 100 + 20 (transform applied) stops growth
+
+
+def test_exemplar_out_carries_the_edited_connectivity(tmp_path):
+    ref = analyze(load(TILES))
+    for i, j in ref.edges.tolist():
+        try:
+            flipped = ref.flip(i, j)
+        except Exception:
+            continue
+        break
+    ex_out = tmp_path / "ex.json"
+    out = tmp_path / "g.json"
+    assert main(["grow", TILES, "--count", "20", "--flip", f"{i},{j}", "--exemplar-out", str(ex_out), "-q", "--out", str(out)]) == 0
+    doc = json.loads(ex_out.read_text())
+    assert doc["connectivity"]["edges"] == flipped.edges.tolist()
+    assert doc["connectivity"]["interior"] == flipped.interior.tolist()
+    # the written exemplar reproduces the run without --flip
+    out2 = tmp_path / "g2.json"
+    assert main(["grow", str(ex_out), "--count", "20", "-q", "--out", str(out2)]) == 0
+    assert np.array_equal(load(out).xy, load(out2).xy)
+    # it must be JSON
+    bad = tmp_path / "ex.svg"
+    assert main(["grow", TILES, "--count", "5", "--exemplar-out", str(bad), "--out", str(tmp_path / "x.json")]) == 2
+    assert not (tmp_path / "x.json").exists()

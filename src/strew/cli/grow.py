@@ -29,6 +29,8 @@ from ._common import check_outputs, domain_options, echo, out_option, progress_b
 @click.option("--no-relax", is_flag=True, help="Turn off the least-squares relaxation (§5.5).")
 @click.option("--flip", multiple=True, metavar="I,J", help="Flip edge I,J of the exemplar's connectivity (repeatable).")
 @click.option("--connectivity", is_flag=True, help="Write the grown connectivity into the JSON output.")
+@click.option("--exemplar-out", type=click.Path(dir_okay=False), default=None,
+              help="Also write the exemplar with its analysed connectivity (after --flip) as JSON, to edit and reuse.")
 @seed_option
 @out_option()
 @quiet_option
@@ -51,6 +53,7 @@ def command(
     no_relax: bool,
     flip: tuple[str, ...],
     connectivity: bool,
+    exemplar_out: str | None,
     seed: int,
     outs: tuple[str, ...],
     quiet: bool,
@@ -65,11 +68,16 @@ def command(
 
     from .._errors import InputError
     from ..io import load
-    from ..grow import grow
+    from ..grow import analyze, grow
     from ..grow._tools import load_strokes
     from ._common import parse_point, resolve_domain, write_outputs
 
     check_outputs(outs)
+    if exemplar_out is not None:
+        from ..io import check_output_path
+
+        if check_output_path(exemplar_out) != ".json":
+            raise InputError(f"--exemplar-out {exemplar_out!r}: must be a .json file (it carries the edge list)")
     ex = load(exemplar)
     dom = resolve_domain(region, size)
     flips = []
@@ -104,10 +112,11 @@ def command(
             raise InputError(f"--spray {spray_path}: expected one path, found {len(strokes)}")
         spray = strokes[0]
     start_pt = parse_point(start, "--start") if start is not None else None
+    ref = analyze(ex, flips=flips)
     t0 = time.perf_counter()
     with progress_bar("grow", quiet=quiet) as (progress, should_cancel):
         arr = grow(
-            ex,
+            ref,
             count=count,
             region=dom,
             start=start_pt,
@@ -122,7 +131,6 @@ def command(
             jitter_rotation=math.radians(jitter_rotation),
             jitter_color=jitter_color,
             relax=not no_relax,
-            flips=flips,
             connectivity=connectivity,
             rng=seed,
             progress=progress,
@@ -147,4 +155,11 @@ def command(
         "flip": [list(f) for f in flips],
     }
     write_outputs(arr, outs, method="grow", seed=seed, params=params, quiet=quiet)
+    if exemplar_out is not None:
+        from ..io import save
+
+        conn = {"count": len(ex), **ref.to_dict(), "interior": ref.interior.tolist()}
+        save(ex.replace(extra={**ex.extra, "connectivity": conn}), exemplar_out)
+        if not quiet:
+            click.echo(f"wrote {exemplar_out} (the exemplar with {len(ref.edges)} edges)", err=True)
     echo(f"grew {len(arr)} elements in {dt:.2f} s ({len(arr) / max(dt, 1e-9):,.0f} elements/s)", quiet=quiet)
