@@ -360,3 +360,10 @@ def test_boundary_strokes_confine_the_filler_and_the_brush(tmp_path):
     new = s.scene().select(np.arange(len(s.scene())) >= n) if len(s.scene()) > n else None
     assert new is not None and len(new) > 0
     assert np.all(new.x > 200.0)
+
+
+def test_session_refuses_unknown_types_itself(tmp_path):
+    s = Session(tmp_path)
+    for t in ("__init__", "_on_hello", "handle", None):
+        with pytest.raises(InputError, match="message.type"):
+            s.handle({"type": t})

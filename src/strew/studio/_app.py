@@ -126,7 +126,11 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
         outbox: asyncio.Queue[str | None] = asyncio.Queue()
 
         def emit(msg: dict[str, Any]) -> None:  # from the worker thread
-            loop.call_soon_threadsafe(outbox.put_nowait, _dumps(msg))
+            try:
+                text = _dumps(msg)
+            except (TypeError, ValueError):  # a partial result that cannot be sent is skipped
+                return
+            loop.call_soon_threadsafe(outbox.put_nowait, text)
 
         def error(message: str, ref: Any = None) -> str:
             return _dumps({"type": "error", "message": message, "ref": ref if isinstance(ref, str) else None})
@@ -182,6 +186,7 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                     msg = merge_moves(msg)
                 try:
                     replies = await asyncio.to_thread(session.handle, msg, emit)
+                    texts = [_dumps(r) for r in replies]
                 except InputError as exc:
                     await outbox.put(error(str(exc).replace("\n", " "), msg.get("type")))
                     continue
@@ -191,8 +196,8 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                 except Exception as exc:  # the server keeps serving
                     await outbox.put(error(f"internal error: {type(exc).__name__}: {exc}", msg.get("type")))
                     continue
-                for r in replies:
-                    await outbox.put(_dumps(r))
+                for t in texts:
+                    await outbox.put(t)
                 await outbox.put(_dumps({"type": "done", "ref": msg["type"], "id": msg.get("id") if isinstance(msg.get("id"), int) else None}))
             await outbox.put(None)
 

@@ -36,7 +36,7 @@ from ..arrangement import Arrangement, concat
 from ..region import Region
 from ..shape import Shape
 from ._paths import list_project_files, resolve_in_project
-from ._protocol import get_int, get_names, get_number, get_points, get_str
+from ._protocol import MESSAGE_TYPES, get_int, get_names, get_number, get_points, get_str
 
 __all__ = ["Session", "PALETTE_FILE", "SCENE_FILE", "TOOLS"]
 
@@ -112,6 +112,8 @@ class Session:
         InputError
             For a bad field; the server turns it into an ``error`` reply.
         """
+        if msg.get("type") not in MESSAGE_TYPES:
+            raise InputError(f"message.type: unknown type {str(msg.get('type'))[:40]!r}")
         handler = getattr(self, "_on_" + msg["type"])
         self._emit = emit or (lambda m: None)
         return handler(msg, self._emit)
