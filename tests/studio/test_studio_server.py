@@ -219,3 +219,17 @@ def test_resolved_paths_never_leave_the_project(tmp_path_factory, parts):
     except InputError:
         return
     assert full.is_relative_to(root) and full.suffix in (".svg", ".json")
+
+
+def test_internal_error_is_reported_and_the_server_keeps_serving(client, monkeypatch):
+    from strew.studio._session import Session
+
+    def broken(self, msg, emit):
+        raise ZeroDivisionError("boom")
+
+    monkeypatch.setattr(Session, "_on_list_files", broken)
+    with client.websocket_connect("/ws") as ws:
+        m = _ask(ws, {"type": "list_files"})[-1]
+        assert m["type"] == "error" and "internal error" in m["message"] and "boom" in m["message"]
+        _alive(ws)
+        assert _ask(ws, {"type": "hello"})[-1]["type"] == "done"
