@@ -367,3 +367,18 @@ def test_session_refuses_unknown_types_itself(tmp_path):
     for t in ("__init__", "_on_hello", "handle", None):
         with pytest.raises(InputError, match="message.type"):
             s.handle({"type": t})
+
+
+def test_spray_in_flow_mode_follows_the_field(tmp_path):
+    s = _session(tmp_path)
+    s.handle({"type": "settings", "grow_mode": "flow"})
+    with pytest.raises(InputError, match="flow strokes first"):
+        s.handle({"type": "stroke_start", "tool": "spray", "radius": 30, "points": [[100, 100]]})
+    _stroke(s, "flow", [(0.0, 0.0), (0.0, 400.0)], 1.0)  # straight down: angle pi/2
+    _stroke(s, "spray", [(300.0, 100.0), (300.0, 250.0)], 40.0)
+    scene = s.scene()
+    assert len(scene) >= 5
+    ex = s.palette["scales"]
+    # §5.3 flow mode: the reference's x axis turns to the flow direction (+pi/2 here)
+    base = float(np.median(ex.rotation))
+    assert np.allclose(np.mod(scene.rotation - base - np.pi / 2 + np.pi, 2 * np.pi) - np.pi, 0.0, atol=0.35)
