@@ -132,8 +132,10 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                 return
             loop.call_soon_threadsafe(outbox.put_nowait, text)
 
-        def error(message: str, ref: Any = None) -> str:
-            return _dumps({"type": "error", "message": message, "ref": ref if isinstance(ref, str) else None})
+        def error(message: str, msg: dict[str, Any] | None = None) -> str:
+            ref = msg.get("type") if msg is not None else None
+            mid = msg.get("id") if msg is not None and isinstance(msg.get("id"), int) and not isinstance(msg.get("id"), bool) else None
+            return _dumps({"type": "error", "message": message, "ref": ref, "id": mid})
 
         async def receiver() -> None:
             try:
@@ -188,13 +190,13 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                     replies = await asyncio.to_thread(session.handle, msg, emit)
                     texts = [_dumps(r) for r in replies]
                 except InputError as exc:
-                    await outbox.put(error(str(exc).replace("\n", " "), msg.get("type")))
+                    await outbox.put(error(str(exc).replace("\n", " "), msg))
                     continue
                 except Cancelled:
-                    await outbox.put(error("cancelled", msg.get("type")))
+                    await outbox.put(error("cancelled", msg))
                     continue
                 except Exception as exc:  # the server keeps serving
-                    await outbox.put(error(f"internal error: {type(exc).__name__}: {exc}", msg.get("type")))
+                    await outbox.put(error(f"internal error: {type(exc).__name__}: {exc}", msg))
                     continue
                 for t in texts:
                     await outbox.put(t)

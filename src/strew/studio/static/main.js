@@ -65,7 +65,8 @@ function onMessage(m) {
     case "status": onStatus(m); break;
     case "error":
       studio.errors.push(m.message); showMessage(m.message, true);
-      resolvePending(null, m); break;
+      if (m.ref === "stroke_start") { studio.live = null; studio.stats.tracking = false; buffer = []; dirty(); }
+      resolvePending(m.id, m); break;
     case "done":
       if (m.ref === "stroke_end") studio.stats.tracking = false;
       resolvePending(m.id, m); break;
@@ -77,10 +78,6 @@ function onMessage(m) {
 function resolvePending(id, m) {
   if (id !== null && id !== undefined && studio.pending.has(id)) {
     const f = studio.pending.get(id); studio.pending.delete(id); f(m);
-  } else if (m.type === "error") {
-    // errors come before the 'done' that never follows them: resolve the oldest waiter
-    const first = studio.pending.keys().next();
-    if (!first.done) { const f = studio.pending.get(first.value); studio.pending.delete(first.value); f(m); }
   }
 }
 
