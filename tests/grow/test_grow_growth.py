@@ -328,3 +328,12 @@ def test_region_with_a_hole_keeps_centres_inside():
     assert region.contains(out.xy).all()
     assert np.all(np.hypot(out.x - 100, out.y - 80) > 39.9)  # the hole is a 64-gon of radius 40
     assert len(metrics.overlaps(out)[0]) == 0
+
+
+def test_growth_order_is_nearest_seed_first():
+    # §5.1: the seed nearest the initial seed grows first, so the lattice grows in rings
+    out = grow(hex_exemplar(), count=61, rng=0, relax=False, start=(0.0, 0.0))
+    d = np.hypot(out.x, out.y)
+    assert d[0] == 0.0
+    assert np.allclose(d[1:7], SPACING)
+    assert np.all(np.diff(d) >= -1e-9)  # on an exact lattice: never closer than before
