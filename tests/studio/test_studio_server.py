@@ -233,3 +233,11 @@ def test_internal_error_is_reported_and_the_server_keeps_serving(client, monkeyp
         assert m["type"] == "error" and "internal error" in m["message"] and "boom" in m["message"]
         _alive(ws)
         assert _ask(ws, {"type": "hello"})[-1]["type"] == "done"
+
+
+def test_error_replies_name_the_message(client):
+    with client.websocket_connect("/ws") as ws:
+        m = _ask(ws, {"type": "stroke_start", "tool": "brush", "radius": 5, "points": [[1, 1]], "id": 42})[-1]
+        assert m == {"type": "error", "message": "palette: empty; load an exemplar first", "ref": "stroke_start", "id": 42}
+        m = _ask(ws, {"type": "undo", "id": 43})
+        assert m[-1] == {"type": "done", "ref": "undo", "id": 43}
