@@ -920,7 +920,38 @@ class Session:
             m = self.scene_message()
             if m is not None:
                 emit(m)
+        free = self._free_region(pts, radius)
+        if free is None:
+            return
+        region, start = free
+        kw.update(region=region, start=start)
         self._add_grown(grow(ref, rng=int(self.rng.integers(2**31)), **kw))
+
+    def _free_region(self, pts: np.ndarray, radius: float) -> tuple[Region, tuple[float, float]] | None:
+        """The region less the scene elements near a spray segment, and a start point in it.
+
+        Growth then spends no time on places the scene already covers (the seeds of
+        :func:`strew.grow.grow` keep their centres in its region). ``None`` when the
+        segment's neighbourhood is full.
+        """
+        scene = self.scene()
+        region = self.region
+        if len(scene):
+            reach = radius + 2.0 * float(max(sh.radius for sh in scene.shapes.values())) * float(np.max(np.abs(scene.scale)))
+            path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
+            near = np.flatnonzero(shapely.dwithin(path, shapely.points(scene.xy), reach))
+            if len(near):
+                taken = shapely.union_all(scene.select(near).geometry)
+                try:
+                    region = Region(self.region.geometry.difference(taken))
+                except InputError:
+                    return None
+        # start at the segment's first free point (the stroke's direction of travel)
+        ok = region.contains(pts)
+        if ok.any():
+            p = pts[np.flatnonzero(ok)[0]]
+            return region, (float(p[0]), float(p[1]))
+        return None
 
     def _add_grown(self, out: Arrangement) -> None:
         """Add grown elements to the fixed part of the scene, leaving out those that overlap it."""
