@@ -871,20 +871,67 @@ class Session:
             synth.brush(st, pts, radius, reoptimize=reopt, progress=progress)
         finally:
             st.region = self.region
-        self._drop_state_overlaps(n0)
+        self._drop_state_overlaps(n0, around=pts, reach=radius + 2.0 * float(np.max(st.prep.rbar)))
 
-    def _drop_state_overlaps(self, n0: int) -> None:
-        """Remove new synthesis elements (index >= n0) that overlap fixed scene elements."""
+    def _drop_state_overlaps(self, n0: int, around: np.ndarray | None = None, reach: float = 0.0) -> None:
+        """Remove synthesis elements that overlap others, near the latest change.
+
+        A new element (index >= n0) goes when it overlaps a fixed scene element. When no
+        exemplar of the selection has overlapping shapes (``prep.overlap_free``), the
+        later of any two overlapping synthesis elements goes too: the rule by which
+        :meth:`strew.synth.SynthState.to_arrangement` leaves them out of the output,
+        applied here as elements arrive, so that what the browser shows is what is saved
+        and exported. Older elements are checked near the new ones and, when ``around``
+        (m, 2) is given, within ``reach`` of those points (optimisation moves them).
+        """
+        from scipy.spatial import cKDTree
+
+        from ..metrics import overlaps
+
         st = self.state
-        if st is None or st.n <= n0 or len(self.fixed) == 0:
+        if st is None or st.n <= n0:
             return
         prep = st.prep
-        src = st.src[n0:]
-        new = Arrangement(prep.shapes, prep.kind[src].astype(np.int64), st.pos[n0:, 0], st.pos[n0:, 1], prep.rotation[src], prep.scale[src])
-        hit = _overlapping(new, self.fixed)
-        if hit.any():
+        overlap_free = bool(getattr(prep, "overlap_free", False))
+        if not overlap_free and len(self.fixed) == 0:
+            return
+        src = st.src
+        pos = st.pos
+
+        def state_part(idx: np.ndarray) -> Arrangement:
+            return Arrangement(prep.shapes, prep.kind[src[idx]].astype(np.int64), pos[idx, 0], pos[idx, 1], prep.rotation[src[idx]], prep.scale[src[idx]])
+
+        new_idx = np.arange(n0, st.n)
+        rmax = float(np.max(_radii(state_part(new_idx))))
+        cand = new_idx
+        if overlap_free and n0:
+            old_xy = pos[:n0]
+            r_old = _radii(state_part(np.arange(n0)))
+            hits = cKDTree(pos[new_idx]).query_ball_point(old_xy, r=r_old + rmax, return_length=True) > 0
+            if around is not None and len(around):
+                hits |= cKDTree(np.asarray(around, float)).query_ball_point(old_xy, r=reach, return_length=True) > 0
+            cand = np.concatenate([np.flatnonzero(hits), new_idx])
+        local = state_part(cand)
+        fixed = self.fixed.replace(columns={}, meta={}, extra={}, region=None)
+        if len(fixed):
+            tree = cKDTree(local.xy)
+            near = tree.query_ball_point(fixed.xy, r=_radii(fixed) + float(np.max(_radii(local))), return_length=True) > 0
+            fixed = fixed.select(near)
+        combined = concat([fixed, local]) if len(fixed) else local
+        nf = len(fixed)
+        pairs, _ = overlaps(combined)
+        dropped = np.zeros(len(cand), bool)
+        for i, j in sorted(map(tuple, pairs.tolist()), key=lambda p: (p[1], p[0])):
+            if j < nf:
+                continue
+            if i < nf:
+                if cand[j - nf] >= n0:
+                    dropped[j - nf] = True
+            elif overlap_free and not dropped[i - nf]:
+                dropped[j - nf] = True
+        if dropped.any():
             mask = np.zeros(st.n, bool)
-            mask[n0:] = hit
+            mask[cand[dropped]] = True
             st.remove(mask)
 
     def _spray(self, pts: np.ndarray, radius: float, emit: Emit) -> None:
@@ -1124,6 +1171,12 @@ class Session:
         save(scene, path)
         rel = path.relative_to(self.root).as_posix()
         return [{"type": "exported", "path": rel, "count": len(scene)}, self.files_message(), self.status_message(f"exported {rel}")]
+
+
+def _radii(arr: Arrangement) -> np.ndarray:
+    """(n,) bounding radii of the elements (shape radius times scale)."""
+    per_kind = np.array([arr.shapes[k].radius for k in arr.kinds]) if arr.kinds else np.zeros(0)
+    return per_kind[arr.kind] * np.abs(arr.scale) if len(arr) else np.zeros(0)
 
 
 def _overlapping(new: Arrangement, existing: Arrangement) -> np.ndarray:
