@@ -3,7 +3,44 @@
 Every message from the browser is a JSON object ``{"type": ..., ...}``. It is parsed
 with :func:`json.loads` and checked field by field; nothing in it is ever executed. A
 message that is too large, is not JSON, has an unknown type or a bad field gets an
-``{"type": "error", "message": ...}`` reply, and the server keeps serving.
+``{"type": "error", "message": ..., "ref": type, "id": id}`` reply, and the server keeps
+serving. Every handled message is answered by its replies and then
+``{"type": "done", "ref": type, "id": id}`` (``id``: an integer the browser may send).
+
+Browser -> server (coordinates are world units, ``points`` is ``[[x, y], ...]``):
+
+=====================  ==============================================================
+``hello``              everything needed to draw the studio (the replies below)
+``load_exemplar``      ``path`` (inside PROJECT_DIR, .svg/.json) or ``example`` (a name)
+``select``             ``names``: the exemplars that drive synthesis (one or several)
+``palette_new``        ``name``: an empty exemplar to place elements in
+``palette_remove``     ``exemplar``
+``palette_edit``       ``exemplar``, ``op``: ``place`` (``kind, x, y``), ``move``
+                       (``index, x, y``), ``delete`` (``index``), ``radius`` (``index``,
+                       ``field``: radius or neighborhood_radius, ``value``)
+``palette_flip``       ``exemplar, i, j``: flip a connectivity edge (Ijiri Fig. 3)
+``palette_from_scene`` ``name`` and optional lasso ``points``
+``stroke_start``       ``tool`` (brush, spray, erase, flow, boundary, region), ``radius``,
+                       ``points``; ``target``: scene or palette (with ``exemplar``)
+``stroke_move``        ``points``: the next segment (results stream back at once)
+``stroke_end``         optional last ``points``
+``fill``               ``point``: ``[[x, y]]``; ``stop`` ends it early
+``region``             ``size``: ``[w, h]``, or ``points``: an outline
+``clear``              ``what``: scene, flow or boundary
+``undo``, ``redo``     the history covers palette and scene
+``save``               ``palette.json`` and ``scene.json`` in PROJECT_DIR
+``load_project``       reads them back
+``export``             ``path`` inside PROJECT_DIR: .svg, .png or .json
+``settings``           ``grow_mode``: fixed, rotate or flow (the spray, Ijiri §5.3)
+``ping``, ``list_files``
+=====================  ==============================================================
+
+Server -> browser: ``shapes`` (the kind library: paths and styles), ``palette`` (each
+exemplar's elements, radii and edges), ``scene`` (``op`` ``replace`` with columns
+``k, x, y, r, s``, or ``patch`` with ``update`` and ``append``), ``strokes`` (flow and
+boundary strokes, flow arrows, region outline), ``status`` (element count, average
+neighbourhood distance, history depth, message), ``files``, ``saved``, ``exported``,
+``pong``, ``error``, ``done``.
 """
 
 from __future__ import annotations
