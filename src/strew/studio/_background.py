@@ -46,7 +46,9 @@ class BackgroundStudio:
         if warm:
             warm_up()
         self.app = create_app(project_dir, seed=seed, warm=False)
-        config = uvicorn.Config(self.app, host="127.0.0.1", port=0, log_level="warning", lifespan="off")
+        from ._protocol import MAX_MESSAGE_BYTES
+
+        config = uvicorn.Config(self.app, host="127.0.0.1", port=0, log_level="warning", lifespan="off", ws_max_size=MAX_MESSAGE_BYTES * 4)
         self.server = uvicorn.Server(config)
         self.thread = threading.Thread(target=self.server.run, name="strew-studio", daemon=True)
         self.thread.start()
