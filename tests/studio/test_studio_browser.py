@@ -143,6 +143,25 @@ def test_paint_erase_undo_export(page):
     assert np.allclose(restored, before)
     assert _ink(page, 294, 285, 306, 315) > 0.0
 
+    # pan (the drawn layer moves at once, and is redrawn once the pan rests) and zoom
+    page.click("#tools button[data-tool=pan]")
+    box = page.locator("#scene").bounding_box()
+    cx, cy = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    zoom = page.evaluate("window.studio.view.zoom")
+    page.mouse.move(cx, cy)
+    page.mouse.down()
+    page.mouse.move(cx + 120, cy + 40, steps=4)
+    assert _ink(page, 160, 285, 440, 315) > 0.2
+    page.mouse.up()
+    page.wait_for_timeout(300)
+    assert _ink(page, 160, 285, 440, 315) > 0.2 and _ink(page, 100, 60, 700, 200) == 0.0
+    page.mouse.move(*_screen(page, 300, 300))
+    page.mouse.wheel(0, -400)
+    page.wait_for_function(f"window.studio.view.zoom > {zoom} * 1.2")
+    page.wait_for_timeout(100)
+    assert _ink(page, 200, 285, 400, 315) > 0.2 and _ink(page, 200, 200, 400, 240) == 0.0
+    page.click("#fit")
+
     # export SVG into the project folder
     page.fill("#export-name", "painted.svg")
     page.click("#export")
@@ -228,6 +247,7 @@ def test_palette_panel_edit_flip_select_and_flow_arrows(page):
     assert sorted(page.evaluate("window.studio.palette.selection")) == ["scales", "tiles"]
 
     # a flow stroke shows the field as arrows along it
+    page.click("#fit")
     page.click("#tools button[data-tool=flow]")
     _drag(page, [(100.0, 500.0), (400.0, 500.0), (700.0, 500.0)])
     page.wait_for_function("window.studio.strokes.arrows.length > 0")

@@ -57,10 +57,10 @@ function setConn(text, cls) { const el = $("st-conn"); el.textContent = text; el
 
 function onMessage(m) {
   switch (m.type) {
-    case "shapes": studio.lib.set(m); paletteEditor.libraryChanged(); dirty(); break;
+    case "shapes": studio.lib.set(m); paletteEditor.libraryChanged(); invalidate(); break;
     case "scene": onScene(m); break;
     case "palette": studio.palette = m; renderPaletteList(); paletteEditor.update(m); break;
-    case "strokes": studio.strokes = m; dirty(); break;
+    case "strokes": studio.strokes = m; invalidate(); break;
     case "files": studio.files = m; renderFiles(); break;
     case "status": onStatus(m); break;
     case "error":
@@ -83,8 +83,11 @@ function resolvePending(id, m) {
 
 function onScene(m) {
   const before = studio.scene.n;
-  if (m.op === "replace") studio.scene.replace(m);
-  else { if (m.update.index.length) studio.scene.update(m.update); if (m.append.k.length) studio.scene.append(m.append); }
+  if (m.op === "replace") { studio.scene.replace(m); cache.valid = false; }
+  else {
+    if (m.update.index.length) { studio.scene.update(m.update); cache.valid = false; }
+    if (m.append.k.length) studio.scene.append(m.append);
+  }
   const grew = studio.scene.n > before;
   if (studio.stats.tracking && grew) studio.stats.pendingArrival = true;
   dirty();
@@ -109,38 +112,65 @@ function resize() {
   const r = canvas.getBoundingClientRect();
   canvas.width = Math.max(1, Math.round(r.width * dpr));
   canvas.height = Math.max(1, Math.round(r.height * dpr));
-  needsDraw = false; dirty();
+  needsDraw = false; invalidate();
 }
 function regionBounds() {
   let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
   for (const ring of studio.strokes.region) for (const [x, y] of ring) { x0 = Math.min(x0, x); y0 = Math.min(y0, y); x1 = Math.max(x1, x); y1 = Math.max(y1, y); }
   return isFinite(x0) ? [x0, y0, x1, y1] : [0, 0, 800, 600];
 }
-function fit() { const r = canvas.getBoundingClientRect(); studio.view.fit(regionBounds(), r.width, r.height); dirty(); }
+function fit() { const r = canvas.getBoundingClientRect(); studio.view.fit(regionBounds(), r.width, r.height); invalidate(); }
 studio.fit = fit;
 // draw one frame now; returns its duration in ms (benchmarks)
-studio.drawNow = () => { const t = performance.now(); draw(t); return performance.now() - t; };
+studio.drawNow = (full = false) => { if (full) cache.valid = false; const t = performance.now(); draw(t); return performance.now() - t; };
+
+// The region, the flow arrows and the elements are drawn into an offscreen layer at one
+// view. Panning only moves the layer (redrawn once the pan rests); elements that stream in
+// are drawn onto it without redrawing the others; anything else redraws it.
+const layer = document.createElement("canvas");
+const lctx = layer.getContext("2d");
+const cache = { valid: false, zoom: 0, ox: 0, oy: 0, n: 0, w: 0, h: 0 };
+function invalidate() { cache.valid = false; dirty(); }
+studio.invalidate = invalidate;
+
+function drawLayer(view, w, h, dpr) {
+  if (layer.width !== canvas.width || layer.height !== canvas.height) { layer.width = canvas.width; layer.height = canvas.height; }
+  const g = lctx;
+  g.setTransform(dpr, 0, 0, dpr, 0, 0);
+  g.clearRect(0, 0, w, h);
+  // region: white inside, dashed outline
+  g.fillStyle = "#fff"; g.beginPath();
+  for (const ring of studio.strokes.region) {
+    ring.forEach(([x, y], i) => { const [sx, sy] = view.toScreen(x, y); i ? g.lineTo(sx, sy) : g.moveTo(sx, sy); });
+    g.closePath();
+  }
+  g.fill("evenodd");
+  g.setLineDash([5, 4]); g.strokeStyle = "#999"; g.lineWidth = 1;
+  for (const ring of studio.strokes.region) drawPolyline(g, view, ring, true);
+  g.setLineDash([]);
+  // flow field arrows under the elements
+  if (studio.strokes.arrows.length) { g.strokeStyle = "rgba(40,110,200,.45)"; g.lineWidth = 1; drawArrows(g, view, studio.strokes.arrows, studio.strokes.arrow_length); }
+  drawElements(g, studio.lib, studio.scene, view, w, h, dpr);
+  Object.assign(cache, { valid: true, zoom: view.zoom, ox: view.ox, oy: view.oy, n: studio.scene.n, w: canvas.width, h: canvas.height });
+}
 
 function draw(t) {
   needsDraw = false;
   const dpr = window.devicePixelRatio || 1;
   const w = canvas.width / dpr, h = canvas.height / dpr;
   const view = studio.view;
-  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-  ctx.fillStyle = "#eceae4"; ctx.fillRect(0, 0, w, h);
-  // region: white inside, dashed outline
-  ctx.fillStyle = "#fff"; ctx.beginPath();
-  for (const ring of studio.strokes.region) {
-    ring.forEach(([x, y], i) => { const [sx, sy] = view.toScreen(x, y); i ? ctx.lineTo(sx, sy) : ctx.moveTo(sx, sy); });
-    ctx.closePath();
+  const sameView = cache.valid && cache.zoom === view.zoom && cache.w === canvas.width && cache.h === canvas.height;
+  if (!sameView || studio.scene.n < cache.n) drawLayer(view, w, h, dpr);
+  else if (studio.scene.n > cache.n) {
+    const at = { zoom: cache.zoom, ox: cache.ox, oy: cache.oy };
+    drawElements(lctx, studio.lib, studio.scene, at, w, h, dpr, { from: cache.n });
+    cache.n = studio.scene.n;
   }
-  ctx.fill("evenodd");
-  ctx.setLineDash([5, 4]); ctx.strokeStyle = "#999"; ctx.lineWidth = 1;
-  for (const ring of studio.strokes.region) drawPolyline(ctx, view, ring, true);
-  ctx.setLineDash([]);
-  // flow field arrows and strokes
-  if (studio.strokes.arrows.length) { ctx.strokeStyle = "rgba(40,110,200,.45)"; ctx.lineWidth = 1; drawArrows(ctx, view, studio.strokes.arrows, studio.strokes.arrow_length); }
-  drawElements(ctx, studio.lib, studio.scene, view, w, h, dpr);
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.fillStyle = "#eceae4"; ctx.fillRect(0, 0, canvas.width, canvas.height);
+  ctx.drawImage(layer, Math.round((view.ox - cache.ox) * dpr), Math.round((view.oy - cache.oy) * dpr));
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  // flow and boundary strokes
   ctx.lineWidth = 2; ctx.strokeStyle = "rgba(40,110,200,.9)";
   for (const s of studio.strokes.flow) drawPolyline(ctx, view, s);
   ctx.strokeStyle = "rgba(200,40,40,.9)"; ctx.lineWidth = 3;
@@ -191,6 +221,7 @@ $("load").addEventListener("click", () => send({ type: "load_project" }));
 $("export").addEventListener("click", () => send({ type: "export", path: $("export-name").value.trim() }));
 
 let panning = null;
+let panTimer = 0;
 // pointer capture keeps a stroke going outside the canvas (synthetic events have no capture)
 function capture(ev) { try { canvas.setPointerCapture(ev.pointerId); } catch { /* not an active pointer */ } }
 let buffer = [];      // stroke points not sent yet
@@ -224,6 +255,7 @@ canvas.addEventListener("pointermove", (ev) => {
   studio.cursor = eventWorld(ev);
   if (panning) {
     studio.view.ox = panning.ox + ev.clientX - panning.x; studio.view.oy = panning.oy + ev.clientY - panning.y;
+    clearTimeout(panTimer); panTimer = setTimeout(invalidate, 120);
     dirty(); return;
   }
   if (studio.live) {

@@ -96,9 +96,10 @@ export class Library {
   }
 }
 
-// Draw elements (optionally only kinds present) with culling; returns the number drawn.
+// Draw elements (from index opts.from on) with culling; returns the number drawn.
 export function drawElements(ctx, lib, els, view, width, height, dpr, opts = {}) {
   const z = view.zoom;
+  const from = opts.from || 0;
   let drawn = 0;
   const nk = lib.kinds.length;
   for (let kind = 0; kind < nk; kind++) {
@@ -109,7 +110,7 @@ export function drawElements(ctx, lib, els, view, width, height, dpr, opts = {})
     if (st.fill) ctx.fillStyle = st.fill;
     if (st.stroke) { ctx.strokeStyle = st.stroke; }
     const strokeIt = st.stroke && (st.width * z > 0.15);
-    for (let i = 0; i < els.n; i++) {
+    for (let i = from; i < els.n; i++) {
       if (els.k[i] !== kind) continue;
       const s = els.s[i], x = els.x[i], y = els.y[i];
       const sx = z * x + view.ox, sy = z * y + view.oy, rr = z * rad * Math.abs(s);
