@@ -382,3 +382,16 @@ def test_spray_in_flow_mode_follows_the_field(tmp_path):
     # §5.3 flow mode: the reference's x axis turns to the flow direction (+pi/2 here)
     base = float(np.median(ex.rotation))
     assert np.allclose(np.mod(scene.rotation - base - np.pi / 2 + np.pi, 2 * np.pi) - np.pi, 0.0, atol=0.35)
+
+
+def test_spray_jitter_varies_scale_and_rotation(tmp_path):
+    s = _session(tmp_path)
+    s.handle({"type": "settings", "jitter_scale": 0.3, "jitter_rotation": 20})
+    _stroke(s, "spray", [(200.0, 200.0), (300.0, 200.0)], 40.0)
+    scene = s.scene()
+    assert len(scene) >= 5
+    base = s.palette["scales"]
+    assert np.ptp(scene.scale) > 0.05 and np.all(np.abs(scene.scale / np.median(base.scale) - 1) <= 0.3 + 1e-9)
+    assert np.ptp(scene.rotation) > 0.05 and np.all(np.abs(scene.rotation) <= np.deg2rad(20) + 1e-9)
+    with pytest.raises(InputError, match="jitter_scale"):
+        s.handle({"type": "settings", "jitter_scale": 1.5})

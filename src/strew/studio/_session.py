@@ -93,6 +93,8 @@ class Session:
         self.boundary_strokes: list[np.ndarray] = []
         self.flow: Any = None
         self.grow_mode = "fixed"
+        self.jitter_scale = 0.0
+        self.jitter_rotation = 0.0
         self.undo_stack: list[tuple] = []
         self.redo_stack: list[tuple] = []
         self.stroke: dict[str, Any] | None = None
@@ -476,8 +478,14 @@ class Session:
         return []
 
     def _on_settings(self, msg: dict, emit: Emit) -> list[dict]:
+        """Spray settings: ``grow_mode`` (Ijiri §5.3) and per-element variation (§3):
+        ``jitter_scale`` (relative, below 1) and ``jitter_rotation`` (degrees)."""
         if "grow_mode" in msg:
             self.grow_mode = get_str(msg, "grow_mode", choices=GROW_MODES)
+        if "jitter_scale" in msg:
+            self.jitter_scale = get_number(msg, "jitter_scale", lo=0.0, hi=0.95)
+        if "jitter_rotation" in msg:
+            self.jitter_rotation = np.deg2rad(get_number(msg, "jitter_rotation", lo=0.0, hi=180.0))
         return [self.status_message()]
 
     # ------------------------------------------------------------------ palette messages
@@ -959,6 +967,8 @@ class Session:
             mode=self.grow_mode,
             flow=self.flow,
             boundary=self.boundary_strokes or None,
+            jitter_scale=self.jitter_scale,
+            jitter_rotation=self.jitter_rotation,
         )
         stroke = self.stroke
         if stroke is not None and not stroke.get("sprayed"):

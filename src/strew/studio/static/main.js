@@ -216,6 +216,8 @@ studio.setTool = setTool;
 for (const b of document.querySelectorAll("#tools button")) b.addEventListener("click", () => setTool(b.dataset.tool));
 $("radius").addEventListener("input", () => { $("radius-out").textContent = $("radius").value; dirty(); });
 $("grow-mode").addEventListener("change", () => send({ type: "settings", grow_mode: $("grow-mode").value }));
+$("jitter-scale").addEventListener("change", () => send({ type: "settings", jitter_scale: +$("jitter-scale").value || 0 }));
+$("jitter-rotation").addEventListener("change", () => send({ type: "settings", jitter_rotation: +$("jitter-rotation").value || 0 }));
 $("undo").addEventListener("click", () => send({ type: "undo" }));
 $("redo").addEventListener("click", () => send({ type: "redo" }));
 $("stop").addEventListener("click", () => send({ type: "stop" }));
