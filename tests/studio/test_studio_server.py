@@ -241,3 +241,12 @@ def test_error_replies_name_the_message(client):
         assert m == {"type": "error", "message": "palette: empty; load an exemplar first", "ref": "stroke_start", "id": 42}
         m = _ask(ws, {"type": "undo", "id": 43})
         assert m[-1] == {"type": "done", "ref": "undo", "id": 43}
+
+
+def test_cli_without_the_studio_extra(tmp_path, capsys, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "uvicorn", None)  # as if it were not installed
+    assert main(["studio", str(tmp_path), "--no-browser"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "strew[studio]" in err and "uvicorn" in err
