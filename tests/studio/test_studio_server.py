@@ -250,3 +250,28 @@ def test_cli_without_the_studio_extra(tmp_path, capsys, monkeypatch):
     assert main(["studio", str(tmp_path), "--no-browser"]) == 2
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0 and "strew[studio]" in err and "uvicorn" in err
+
+
+def test_reloading_the_page_keeps_the_work(client):
+    with client.websocket_connect("/ws") as ws:
+        _ask(ws, {"type": "load_exemplar", "example": "scales.svg"})
+        _ask(ws, {"type": "fill", "point": [[400, 300]]})
+    with client.websocket_connect("/ws") as ws:
+        out = _ask(ws, {"type": "hello"})
+        palette = next(m for m in out if m["type"] == "palette")
+        scene = next(m for m in out if m["type"] == "scene")
+    assert [e["name"] for e in palette["exemplars"]] == ["scales"]
+    assert scene["op"] == "replace" and scene["n"] > 20
+
+
+def test_a_new_window_takes_over(client):
+    from starlette.websockets import WebSocketDisconnect
+
+    with client.websocket_connect("/ws") as old:
+        _alive(old)
+        with client.websocket_connect("/ws") as new:
+            m = old.receive_json()
+            assert m["type"] == "error" and "another window" in m["message"]
+            with pytest.raises(WebSocketDisconnect):
+                old.receive_json()
+            _alive(new)

@@ -1,8 +1,10 @@
 """The studio's web server: FastAPI on uvicorn, a static front end and one websocket.
 
 ``GET /`` serves the page, ``/static/...`` its JavaScript modules and stylesheet, and
-``/ws`` carries the protocol of :mod:`strew.studio._protocol`. Messages are handled one
-at a time by a worker thread, so that the receiving side stays responsive: consecutive
+``/ws`` carries the protocol of :mod:`strew.studio._protocol`. The server holds one
+:class:`~strew.studio._session.Session`: reloading the page finds the work as it was, and
+the newest window takes over from an older one. Messages are handled one at a time by a
+worker thread, so that the receiving side stays responsive: consecutive
 stroke segments waiting in the queue are merged into one (the generative brush then
 works on a longer segment instead of falling behind), and ``stop`` takes effect at
 once.
@@ -12,6 +14,7 @@ from __future__ import annotations
 
 import asyncio
 import json
+import threading
 from pathlib import Path
 from typing import Any
 from urllib.parse import urlsplit
@@ -27,6 +30,7 @@ from ._session import Session
 __all__ = ["create_app", "STATIC_DIR", "LOCAL_HOSTS"]
 
 STATIC_DIR = Path(__file__).resolve().parent / "static"
+_TAKEOVER = "\x00takeover"  # outbox marker: a newer window took over this session
 LOCAL_HOSTS = ("127.0.0.1", "localhost", "::1", "[::1]")
 
 
@@ -97,8 +101,6 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
     app.mount("/static", StaticFiles(directory=STATIC_DIR), name="static")
     app.state.sessions = 0
     if warm:
-        import threading
-
         threading.Thread(target=warm_up, name="strew-studio-warm-up", daemon=True).start()
 
     @app.get("/")
@@ -113,17 +115,31 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
     def health() -> JSONResponse:
         return JSONResponse({"ok": True, "project": root.name})
 
+    # One session per server: reloading the page (or opening it again) finds the palette and
+    # the scene as they were. The newest window takes over; the previous one is told and closed.
+    session = Session(root, seed=seed)
+    app.state.session = session
+    lock = threading.Lock()
+    current: dict[str, Any] = {"outbox": None}
+
+    def handle(msg: dict[str, Any], emit: Any) -> list[dict[str, Any]]:
+        with lock:
+            return session.handle(msg, emit)
+
     @app.websocket("/ws")
     async def ws(websocket: WebSocket) -> None:
         if not _origin_ok(websocket.headers.get("origin"), allowed_hosts):
             await websocket.close(code=1008)
             return
         await websocket.accept()
-        session = Session(root, seed=seed)
         app.state.sessions += 1
         loop = asyncio.get_running_loop()
         inbox: asyncio.Queue[dict[str, Any] | None] = asyncio.Queue()
         outbox: asyncio.Queue[str | None] = asyncio.Queue()
+        previous = current["outbox"]
+        current["outbox"] = outbox
+        if previous is not None:
+            previous.put_nowait(_TAKEOVER)
 
         def emit(msg: dict[str, Any]) -> None:  # from the worker thread
             try:
@@ -158,10 +174,11 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                     if msg["type"] == "stop":  # takes effect while a fill runs
                         session.cancel.set()
                     await inbox.put(msg)
-            except WebSocketDisconnect:
+            except (WebSocketDisconnect, RuntimeError):  # closed by us (takeover) or by the page
                 pass
             finally:
-                session.cancel.set()
+                if current["outbox"] is outbox:  # a fill running for this window stops
+                    session.cancel.set()
                 await inbox.put(None)
 
         def merge_moves(msg: dict[str, Any]) -> dict[str, Any]:
@@ -187,7 +204,7 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                 if msg["type"] == "stroke_move":
                     msg = merge_moves(msg)
                 try:
-                    replies = await asyncio.to_thread(session.handle, msg, emit)
+                    replies = await asyncio.to_thread(handle, msg, emit)
                     texts = [_dumps(r) for r in replies]
                 except InputError as exc:
                     await outbox.put(error(str(exc).replace("\n", " "), msg))
@@ -209,6 +226,10 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                 if text is None:
                     break
                 try:
+                    if text is _TAKEOVER:
+                        await websocket.send_text(_dumps({"type": "error", "message": "the studio was opened in another window", "ref": None, "id": None}))
+                        await websocket.close(code=4000)
+                        break
                     await websocket.send_text(text)
                 except Exception:
                     break
@@ -220,5 +241,7 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
             for t in tasks:
                 t.cancel()
             app.state.sessions -= 1
+            if current["outbox"] is outbox:
+                current["outbox"] = None
 
     return app
