@@ -275,3 +275,17 @@ def test_a_new_window_takes_over(client):
             with pytest.raises(WebSocketDisconnect):
                 old.receive_json()
             _alive(new)
+
+
+def test_origin_rule():
+    from strew.studio._app import LOCAL_HOSTS, _origin_ok
+
+    assert _origin_ok(None, LOCAL_HOSTS)
+    assert _origin_ok("http://localhost:8765", LOCAL_HOSTS)
+    assert _origin_ok("http://[::1]:8765", LOCAL_HOSTS)
+    assert not _origin_ok("http://evil.example", LOCAL_HOSTS, "evil.example")
+    assert not _origin_ok("null", LOCAL_HOSTS)
+    # bound to every interface: same-origin pages only
+    wide = (*LOCAL_HOSTS, "0.0.0.0")
+    assert _origin_ok("http://10.0.0.5:8765", wide, "10.0.0.5:8765")
+    assert not _origin_ok("http://evil.example:8765", wide, "10.0.0.5:8765")

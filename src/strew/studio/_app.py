@@ -48,12 +48,23 @@ def _plain(obj: Any) -> Any:
     raise TypeError(f"{type(obj).__name__} is not JSON serialisable")
 
 
-def _origin_ok(origin: str | None, allowed_hosts: tuple[str, ...]) -> bool:
-    """A websocket from a page of another site is refused (cross-site websocket hijacking)."""
+def _origin_ok(origin: str | None, allowed_hosts: tuple[str, ...], host_header: str | None = None) -> bool:
+    """A websocket from a page of another site is refused (cross-site websocket hijacking).
+
+    The page's origin must name one of ``allowed_hosts``; when the server was bound to
+    every interface (``0.0.0.0`` or ``::`` among them), a same-origin page (``Origin``
+    matching the ``Host`` header) is accepted too.
+    """
     if origin is None:
         return True
-    host = urlsplit(origin).hostname
-    return host is not None and (host in allowed_hosts or f"[{host}]" in allowed_hosts)
+    parts = urlsplit(origin)
+    host = parts.hostname
+    if host is None:
+        return False
+    if host in allowed_hosts or f"[{host}]" in allowed_hosts:
+        return True
+    wildcard = any(h in ("0.0.0.0", "::", "[::]") for h in allowed_hosts)
+    return wildcard and host_header is not None and parts.netloc == host_header
 
 
 def warm_up() -> None:
@@ -128,7 +139,7 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
 
     @app.websocket("/ws")
     async def ws(websocket: WebSocket) -> None:
-        if not _origin_ok(websocket.headers.get("origin"), allowed_hosts):
+        if not _origin_ok(websocket.headers.get("origin"), allowed_hosts, websocket.headers.get("host")):
             await websocket.close(code=1008)
             return
         await websocket.accept()
