@@ -395,3 +395,17 @@ def test_spray_jitter_varies_scale_and_rotation(tmp_path):
     assert np.ptp(scene.rotation) > 0.05 and np.all(np.abs(scene.rotation) <= np.deg2rad(20) + 1e-9)
     with pytest.raises(InputError, match="jitter_scale"):
         s.handle({"type": "settings", "jitter_scale": 1.5})
+
+
+def test_void_elements_are_hidden_and_not_counted(tmp_path):
+    from strew import Arrangement, Shape, save
+
+    g = np.mgrid[0:7, 0:7].reshape(2, -1).T * 12.0
+    void = (np.arange(len(g)) % 3) == 0
+    ex = Arrangement({"dot": Shape.circle(4.0)}, [0] * len(g), g[:, 0], g[:, 1], columns={"void": void})
+    save(ex, tmp_path / "voids.json")
+    s = Session(tmp_path, seed=1)
+    s.handle({"type": "load_exemplar", "path": "voids.json"})
+    _stroke(s, "brush", LINE, 40.0)
+    assert s.state.n > len(s.scene()) > 10  # some synthesized elements are voids (§5.6)
+    assert s.status_message()["count"] == len(s.scene()) == len(s._arrays()["k"])

@@ -227,7 +227,11 @@ class Session:
         }
 
     def _scene_count(self) -> int:
-        return len(self.fixed) + (self.state.n if self.state is not None else 0)
+        """Elements the scene shows (void elements of the synthesis state are hidden)."""
+        st = self.state
+        if st is None or st.n == 0:
+            return len(self.fixed)
+        return len(self.fixed) + st.n - int(np.count_nonzero(np.asarray(st.prep.void, bool)[st.src]))
 
     # ------------------------------------------------------------------ palette
     def _usable(self) -> dict[str, Arrangement]:
