@@ -221,8 +221,18 @@ def test_paint_into_the_palette_and_back(tmp_path):
     s = _session(tmp_path)
     s.handle({"type": "palette_new", "name": "mine"})
     assert len(s.palette["mine"]) == 0
-    _stroke(s, "brush", [(0.0, 0.0), (60.0, 0.0), (120.0, 0.0)], 40.0, target="palette", exemplar="mine")
-    assert len(s.palette["mine"]) >= 4
+    s.handle({"type": "stroke_start", "tool": "brush", "radius": 40.0, "points": [[0.0, 0.0]], "target": "palette", "exemplar": "mine"})
+    sizes = []
+    for x in (40.0, 80.0, 120.0, 160.0):
+        out = s.handle({"type": "stroke_move", "points": [[x, 0.0]]})
+        sizes.append(next(m for m in out if m["type"] == "palette")["exemplars"][-1]["n"])
+    s.handle({"type": "stroke_end"})
+    assert sizes[0] > 0 and sizes[-1] > sizes[0]  # the palette panel follows the stroke
+    assert len(s.palette["mine"]) >= sizes[-1] >= 4
+    ex = s.palette["mine"]
+    assert np.all(shapely.distance(shapely.LineString([(0, 0), (160, 0)]), shapely.points(ex.xy)) <= 40.0 + 1e-6)
+    s.handle({"type": "undo"})
+    assert len(s.palette["mine"]) == 0
     # the scene can become an exemplar too
     _stroke(s, "brush", LINE, 40.0)
     s.handle({"type": "palette_from_scene", "name": "painted"})

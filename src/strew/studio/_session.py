@@ -425,8 +425,7 @@ class Session:
 
     def _restore(self, snap: tuple) -> None:
         (self.fixed, self.state, self.state_version, self.palette, self.selection, pv, self.region, self.flow_strokes, self.boundary_strokes) = snap
-        if pv != self.palette_version:
-            self._refs.clear()
+        self._refs.clear()
         self.palette_version = pv
         self._rebuild_flow()
         if self.state is not None and self.state_version == self.palette_version:
@@ -785,7 +784,12 @@ class Session:
         note = ""
         try:
             if stroke["target"] == "palette":
-                note = self._paint_palette(stroke["exemplar"], allpts, stroke["radius"])
+                if "pstate" not in stroke:  # a click without a move paints too
+                    self._paint_palette(allpts, stroke["radius"])
+                painted = len(self.palette[stroke["exemplar"]]) - len(stroke["base"])
+                self._palette_changed()
+                self._prepare()
+                note = f"painted {painted} elements into {stroke['exemplar']}"
                 out.append(self.palette_message())
             elif tool == "flow":
                 if len(allpts) < 2 or not np.any(np.linalg.norm(np.diff(allpts, axis=0), axis=1) > 0):
@@ -818,10 +822,13 @@ class Session:
         st = self.stroke
         assert st is not None
         tool = st["tool"]
-        if st["target"] == "palette" or tool in ("flow", "boundary", "region"):
+        if tool in ("flow", "boundary", "region"):
             return [{"type": "stroke_echo", "tool": tool, "points": _r(pts)}]
         prev = self.stroke["points"][-2][-1:] if len(self.stroke["points"]) > 1 else np.zeros((0, 2))
         seg = np.concatenate([prev, pts])
+        if st["target"] == "palette":
+            self._paint_palette(seg, st["radius"])
+            return [self.palette_message(), self.status_message()]
         t = time.perf_counter()
         before = self._scene_count()
         if self._scene_count() >= MAX_SCENE and tool != "erase":
@@ -1037,26 +1044,39 @@ class Session:
             if gone.any():
                 self.fixed = self.fixed.select(~gone)
 
-    def _paint_palette(self, name: str, pts: np.ndarray, radius: float) -> str:
-        """The brush painting into exemplar ``name`` from the selection (Davison §5.5)."""
-        from ..synth import Palette, synthesize
+    def _paint_palette(self, seg: np.ndarray, radius: float) -> int:
+        """The generative brush painting into a palette exemplar (Davison §5.5), one segment.
 
-        usable = {k: v for k, v in self._usable().items() if k != name}
-        sel = [n for n in self._selection() if n != name]
-        if not sel:
-            raise InputError("palette brush: select an exemplar other than the one painted into")
-        out = synthesize(Palette(usable), None, selection=sel, brush_points=pts, brush_radius=radius, rng=int(self.rng.integers(2**31)))
-        ex = self.palette[name]
-        if len(out) and len(ex):
-            out = out.select(~_overlapping(out, ex))
-        if len(out) == 0:
-            return "palette brush: no room"
+        The selection (less the exemplar painted into) drives a synthesis state of its
+        own; after every segment the exemplar is its elements from before the stroke plus
+        that state's output, less what would overlap them, so the palette panel follows
+        the stroke. Returns the number of painted elements so far.
+        """
+        from .. import synth
+        from ..synth import Palette
+
+        st = self.stroke
+        assert st is not None
+        name = st["exemplar"]
+        if "pstate" not in st:
+            usable = {k: v for k, v in self._usable().items() if k != name}
+            sel = [n for n in self._selection() if n != name]
+            if not sel:
+                raise InputError("palette brush: select an exemplar other than the one painted into")
+            st["pstate"] = synth.new_state(Palette(usable), None, selection=sel, rng=int(self.rng.integers(2**31)))
+            st["base"] = self.palette[name].replace(extra={})
+        ps, base = st["pstate"], st["base"]
+        synth.brush(ps, seg, radius)
+        out = ps.to_arrangement(clip=False) if ps.n else None
+        if out is None or len(out) == 0:
+            return 0
+        if len(base):
+            out = out.select(~_overlapping(out, base))
         keep = {c: out[c] for c in ("radius", "neighborhood_radius") if c in out}
         out = Arrangement(out.shapes, out.kind_names, out.x, out.y, out.rotation, out.scale, columns=keep)
-        merged = concat([ex.replace(extra={}), out]) if len(ex) else out
-        self.palette[name] = merged.replace(meta={}, region=None)
-        self._palette_changed()
-        return f"painted {len(out)} elements into {name}"
+        merged = concat([base, out]) if len(base) else out
+        self.palette[name] = merged.replace(meta={}, region=None, extra={})
+        return len(out)
 
     def _on_fill(self, msg: dict, emit: Emit) -> list[dict]:
         """Filler (Davison §5.4): grow from a point until no room is left in the region."""
