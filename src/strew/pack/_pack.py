@@ -9,7 +9,9 @@ Two methods over the same exclusive regions (§3.1) and exact placement tests:
     Step 1 (§4.1): sparse placement at Poisson-disk points whose circles circumscribe
     the exclusive regions, so that no test can fail. Step 2 (§4.2): rounds of P = 100
     candidates drawn from the distance field to the placed regions and the boundary with
-    probability ``d**16``; stop after 200 consecutive cancellations.
+    probability ``d**16``; stop after 200 consecutive cancellations. Step 2 runs as one
+    compiled loop with three extensions of §4.2 (several poses per candidate, suppression
+    of failed spots, candidates kept fresh within a round); see :mod:`._fit`.
 """
 
 from __future__ import annotations
@@ -26,8 +28,9 @@ from .._rng import as_rng
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Shape
-from ._exclusive import ExclusiveRegion, build_exclusive_regions, element_origin
+from ._exclusive import ExclusiveRegion, build_exclusive_regions, element_origin, transform_many
 from ._field import DistanceField
+from ._fit import NO_FIELD, RUNNING, FitEngine
 from ._placer import Placer
 from ._poisson import poisson_disk
 
@@ -42,7 +45,14 @@ DEFAULTS: dict[str, Any] = {
     "power": 16.0,  # alpha = d**n, §4.2
     "poisson_candidates": 30,  # Bridson's k for Step 1
     "naive_batch": 256,  # darts tested per bulk query (does not change the result's law)
+    # extensions of §4.2 (see _fit): poses tried per candidate point, and the factor that
+    # damps the field about a cancelled candidate (fits=1, suppress=1: the paper's rounds)
+    "fits": 32,
+    "suppress": 0.8,
 }
+
+# Step 2 rounds per call of the compiled loop (between progress reports)
+_ROUNDS_PER_TICK = 25
 
 
 def _as_shapes(shapes: Any) -> dict[str, Shape]:
@@ -124,6 +134,8 @@ def pack(
     power: float = DEFAULTS["power"],
     resolution: float | None = None,
     sparse_candidates: int = DEFAULTS["poisson_candidates"],
+    fits: int = DEFAULTS["fits"],
+    suppress: float = DEFAULTS["suppress"],
     rng: int | np.random.Generator | None = None,
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
@@ -164,6 +176,12 @@ def pack(
         element's size (the raster only proposes candidates).
     sparse_candidates : int
         Fill-gap Step 1: Bridson's trial points per active Poisson-disk sample (30).
+    fits : int
+        Fill-gap Step 2: random rotations and scales tried at each candidate point before
+        it counts as a cancellation (an extension of §4.2; 1 draws one pose as the paper).
+    suppress : float in (0, 1]
+        Fill-gap Step 2: factor applied to the distance field about a cancelled candidate,
+        so that later rounds explore other gaps (an extension of §4.2; 1 turns it off).
     rng : int, Generator or None
     progress, should_cancel : callables, optional
         See :mod:`strew._progress`.
@@ -210,6 +228,13 @@ def pack(
             raise InputError(f"resolution: must be a number, got {resolution!r}") from None
         if not (np.isfinite(resolution) and resolution > 0):
             raise InputError(f"resolution: must be positive, got {resolution}")
+    n_fits = _positive_int(fits, "fits")
+    try:
+        suppress = float(suppress)
+    except (TypeError, ValueError):
+        raise InputError(f"suppress: must be a number, got {suppress!r}") from None
+    if not (0 < suppress <= 1):
+        raise InputError(f"suppress: must be in (0, 1], got {suppress}")
     gen = as_rng(rng)
     rep = Reporter(progress, should_cancel, message=f"pack ({method})")
     placer = Placer(kinds, dom, w, limit)
@@ -223,8 +248,8 @@ def pack(
         x0, y0, x1, y1 = dom.bounds
         if (x1 - x0) * (y1 - y0) / cell**2 > 2e7:
             raise InputError(f"resolution: {cell:g} is too fine for a region of {x1 - x0:g} x {y1 - y0:g} (over 20 million pixels)")
-        info.update(candidates=p_count, power=power, resolution=cell)
-        info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, k_sparse, info)
+        info.update(candidates=p_count, power=power, resolution=cell, fits=n_fits, suppress=suppress)
+        info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, k_sparse, n_fits, suppress, info)
     if len(placer) == 0 and "no shape fits" not in info["stopped"]:
         info["stopped"] = f"no shape fits in the region ({info['stopped']})"
     info["trials"] = placer.trials
@@ -275,6 +300,8 @@ def _fill_gap(
     power: float,
     cell: float,
     k_sparse: int,
+    fits: int,
+    suppress: float,
     info: dict,
 ) -> str:
     kinds = placer.kinds
@@ -294,13 +321,60 @@ def _fill_gap(
     info["sparse"] = sparse
     rep.tick(len(placer), message=f"step 1: {sparse} placed", force=True)
     field = DistanceField(dom, cell, placer.geoms)
-    # Step 2 (§4.2): rounds of P candidates from the normalised distance field.
-    while not placer.done:
-        xy = field.sample(p_count, power, gen)
-        m = len(xy)
-        if m == 0:
-            return "the distance field has no free pixel left"
-        new = placer.try_batch(xy, gen.random(m), gen.random(m), placer.draw_kinds(gen, m))
-        field.occupy([placer.geoms[i] for i in new])
-        rep.tick(len(placer), message=f"{len(placer)} placed, {placer.consecutive} consecutive cancellations")
+    # Step 2 (§4.2): rounds of P candidates from the normalised distance field, in a
+    # compiled loop (see _fit for the fit, suppression and fresh-candidate extensions).
+    engine = FitEngine(kinds, dom.geometry, placer.weights, placer.next_kind)
+    if len(placer):
+        xy = np.asarray(placer.xy, dtype=float).reshape(-1, 2)
+        engine.insert(np.asarray(placer.kind), np.c_[xy, placer.rotation, placer.scale])
+    n0 = len(engine)
+    # suppression disk: a quarter of the smallest element's circumscribed radius, at least a pixel
+    sup_r = max(0.25 * min(k.radius * k.scale[0] for k in kinds), cell)
+    status = RUNNING
+    while status == RUNNING:
+        status = engine.run(gen, field, _ROUNDS_PER_TICK, placer.max_failures, p_count, power, fits, suppress, sup_r)
+        rep.tick(len(engine), message=f"{len(engine)} placed, {engine.consecutive} consecutive cancellations")
+    placer.trials += engine.trials
+    placer.consecutive = engine.consecutive
+    info["poses"] = engine.poses
+    info["rounds"] = engine.rounds
+    info["dropped"] = _add_checked(placer, engine, n0)
+    if status == NO_FIELD:
+        return "the distance field has no free pixel left"
     return f"{placer.max_failures} consecutive cancellations"
+
+
+def _add_checked(placer: Placer, engine: FitEngine, n0: int) -> int:
+    """Copy Step 2's elements into ``placer`` after an independent shapely check.
+
+    The compiled tests are exact; this re-check (prepared domain, one STRtree query) makes
+    sure that no rounding accident in them can leave an overlap or an element outside
+    the domain. An element that fails it is dropped. Returns the number dropped.
+    """
+    n = len(engine)
+    if n == n0:
+        return 0
+    kind = engine.pkind[n0:n].astype(int)
+    pose = engine.pose[n0:n]
+    body = np.empty(n - n0, dtype=object)
+    ok = np.ones(n - n0, dtype=bool)
+    for k, ex in enumerate(placer.kinds):
+        idx = np.flatnonzero(kind == k)
+        if len(idx) == 0:
+            continue
+        body[idx] = transform_many(ex.body, pose[idx, :2], pose[idx, 2], pose[idx, 3])
+        hull = body[idx] if ex.hull is ex.body else transform_many(ex.hull, pose[idx, :2], pose[idx, 2], pose[idx, 3])
+        ok[idx] = shapely.covers(placer.region.prepared, hull)
+    everything = np.concatenate([np.array(placer.geoms, dtype=object).reshape(-1), body])
+    a, b = shapely.STRtree(everything).query(body, predicate="intersects")
+    b_new = b - n0
+    # a pair of new elements: keep the earlier one; a new one against Step 1: drop it
+    clash = (b != a + n0) & ((b < n0) | (b_new < a))
+    ok[a[clash]] = False
+    for i in np.flatnonzero(ok):
+        placer.geoms.append(body[i])
+        placer.kind.append(int(kind[i]))
+        placer.xy.append((float(pose[i, 0]), float(pose[i, 1])))
+        placer.rotation.append(float(pose[i, 2]))
+        placer.scale.append(float(pose[i, 3]))
+    return int((~ok).sum())

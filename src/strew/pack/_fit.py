@@ -1,0 +1,698 @@
+"""Step 2 of the fill-gap method (Sakurai & Miyata §4.2) as one compiled loop.
+
+Each round draws candidate points Q from the normalised distance field with probability
+``alpha = d**n`` (n = 16), chooses P = 100 of them and tries to place an exclusive region
+at each, in order; the run stops after ``max_failures`` (200) consecutive cancellations.
+The paper's steps are all here; three extensions of §4.2 make each cancellation count:
+
+* **Fit** (``fits`` poses per candidate): a candidate point is tried with up to ``fits``
+  random rotations and scales of its kind before it counts as one cancellation. The
+  paper draws one pose (``fits=1``); a narrow gap usually admits an elongated or concave
+  element in a few orientations only. The first pose puts the exclusive region's
+  bounding-box centre on the point (T of Eq. 1, as the paper); later ones put one of
+  the kind's anchor points there (the centre of its widest inscribed disk, or an
+  interior point): a concave element's box centre may lie outside it, where a
+  neighbour's arm can sit, and the field never proposes such a point.
+* **Suppression** (``suppress``): after a cancellation the field's weight is multiplied by
+  ``suppress`` in a small disk about the failed point, so that the next candidates explore
+  other gaps (like the exclude list of Wong et al.'s framework) instead of spending the
+  200-cancellation budget on one gap that nothing fits. ``suppress=1`` turns it off.
+* **Fresh candidates**: the field is updated after every placement, not once per round,
+  and a candidate whose pixel lost weight since it was drawn is kept with probability
+  ``(e_now / e_drawn)**n`` (a thinning that gives the law of the updated field); dropped
+  candidates are not trials. The paper's fixed list of 100 points would otherwise spend
+  most of a round in the gap that its first placement just filled.
+
+Collision tests stay exact on the polygons: closed-segment intersection and even-odd
+point-in-polygon tests against the neighbours found in a uniform grid, and against the
+domain's boundary. Before them, a pose is rejected for certain when one of a few disks
+inscribed in the kind is wider than the field at its centre allows: the field at a pixel
+centre is never below the true distance to the nearest obstacle (exact polygon distances
+after each placement; the initial raster distance is measured to obstacle pixel centres,
+which lie inside obstacles), so such a disk must meet an obstacle. The field only ever
+rejects; it never accepts. The driver in :mod:`._pack` re-checks every accepted element with
+shapely (prepared domain, STRtree), so a rounding accident can never leave an overlap.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+import shapely
+
+from ._exclusive import ExclusiveRegion
+from ._field import _occupy
+
+__all__ = ["FitEngine", "ring_layout"]
+
+# kernel status codes
+RUNNING, DONE, NEED_ROOM, NO_FIELD = 0, 1, 2, 3
+# indices into the integer state vector
+_S_CONSEC, _S_NEXT, _S_TRIALS, _S_POSES, _S_NP, _S_NV, _S_NR, _S_NE, _S_QID, _S_ROUNDS = range(10)
+
+
+def ring_layout(geoms: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Flat closed rings of several geometries.
+
+    Returns
+    -------
+    verts : (v, 2) float
+        Ring vertices, each ring closed (its last vertex repeats the first).
+    rings : (r + 1,) int64
+        Ring ``i`` spans ``verts[rings[i]:rings[i + 1]]``.
+    owner : (g + 1,) int64
+        Geometry ``j`` owns rings ``owner[j]:owner[j + 1]``.
+    """
+    verts, rings, owner = [], [0], [0]
+    for g in geoms:
+        for ring in shapely.get_rings(shapely.get_parts(g)):
+            xy = shapely.get_coordinates(ring)
+            verts.append(xy)
+            rings.append(rings[-1] + len(xy))
+        owner.append(len(rings) - 1)
+    v = np.concatenate(verts) if verts else np.zeros((0, 2))
+    return np.ascontiguousarray(v, dtype=float), np.asarray(rings, dtype=np.int64), np.asarray(owner, dtype=np.int64)
+
+
+@numba.njit(cache=True, inline="always")
+def _orient(ax, ay, bx, by, cx, cy):  # pragma: no cover - numba
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+
+
+@numba.njit(cache=True)
+def _seg_hit(ax, ay, bx, by, cx, cy, dx, dy):  # pragma: no cover - numba
+    """Closed segments ab and cd meet (touching counts; collinear overlap counts)."""
+    if max(ax, bx) < min(cx, dx) or max(cx, dx) < min(ax, bx):
+        return False
+    if max(ay, by) < min(cy, dy) or max(cy, dy) < min(ay, by):
+        return False
+    d1 = _orient(cx, cy, dx, dy, ax, ay)
+    d2 = _orient(cx, cy, dx, dy, bx, by)
+    d3 = _orient(ax, ay, bx, by, cx, cy)
+    d4 = _orient(ax, ay, bx, by, dx, dy)
+    if ((d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0)) and ((d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0)):
+        return True
+    # a zero orientation with overlapping boxes: touching or collinear; reject (a
+    # cancellation can only make the test stricter)
+    return d1 == 0 or d2 == 0 or d3 == 0 or d4 == 0
+
+
+@numba.njit(cache=True)
+def _inside(px, py, v, rings, r0, r1):  # pragma: no cover - numba
+    """Even-odd point in the rings ``r0:r1`` of a flat ring layout."""
+    inside = False
+    for r in range(r0, r1):
+        for i in range(rings[r], rings[r + 1] - 1):
+            ay = v[i, 1]
+            by = v[i + 1, 1]
+            if (ay > py) != (by > py):
+                ax = v[i, 0]
+                xc = ax + (py - ay) * (v[i + 1, 0] - ax) / (by - ay)
+                if px < xc:
+                    inside = not inside
+    return inside
+
+
+@numba.njit(cache=True)
+def _polys_hit(av, arings, ar0, ar1, abb, bv, brings, br0, br1, bbb, buf):  # pragma: no cover - numba
+    """True when polygon a (rings ``ar0:ar1``) and polygon b intersect (closed sets)."""
+    ox0 = max(abb[0], bbb[0])
+    oy0 = max(abb[1], bbb[1])
+    ox1 = min(abb[2], bbb[2])
+    oy1 = min(abb[3], bbb[3])
+    if ox0 > ox1 or oy0 > oy1:
+        return False
+    # b's edges that reach the boxes' overlap
+    nb = 0
+    for r in range(br0, br1):
+        for i in range(brings[r], brings[r + 1] - 1):
+            x1, y1, x2, y2 = bv[i, 0], bv[i, 1], bv[i + 1, 0], bv[i + 1, 1]
+            if min(x1, x2) > ox1 or max(x1, x2) < ox0 or min(y1, y2) > oy1 or max(y1, y2) < oy0:
+                continue
+            buf[nb] = i
+            nb += 1
+    if nb > 0:
+        for r in range(ar0, ar1):
+            for i in range(arings[r], arings[r + 1] - 1):
+                x1, y1, x2, y2 = av[i, 0], av[i, 1], av[i + 1, 0], av[i + 1, 1]
+                if min(x1, x2) > ox1 or max(x1, x2) < ox0 or min(y1, y2) > oy1 or max(y1, y2) < oy0:
+                    continue
+                for t in range(nb):
+                    j = buf[t]
+                    if _seg_hit(x1, y1, x2, y2, bv[j, 0], bv[j, 1], bv[j + 1, 0], bv[j + 1, 1]):
+                        return True
+    # no edges cross: each ring lies in one face of the other polygon, so one vertex per
+    # ring decides containment either way
+    for r in range(ar0, ar1):
+        px, py = av[arings[r], 0], av[arings[r], 1]
+        if bbb[0] <= px <= bbb[2] and bbb[1] <= py <= bbb[3] and _inside(px, py, bv, brings, br0, br1):
+            return True
+    for r in range(br0, br1):
+        px, py = bv[brings[r], 0], bv[brings[r], 1]
+        if abb[0] <= px <= abb[2] and abb[1] <= py <= abb[3] and _inside(px, py, av, arings, ar0, ar1):
+            return True
+    return False
+
+
+@numba.njit(cache=True)
+def _pose(kv, kr, r0, r1, x, y, rot, s, out, bb):  # pragma: no cover - numba
+    """Transform rings ``r0:r1`` of a kind (T + s R p, Eq. 1) into ``out``; fill bbox."""
+    c = np.cos(rot) * s
+    sn = np.sin(rot) * s
+    bb[0] = np.inf
+    bb[1] = np.inf
+    bb[2] = -np.inf
+    bb[3] = -np.inf
+    for i in range(kr[r0], kr[r1]):
+        px = x + c * kv[i, 0] - sn * kv[i, 1]
+        py = y + sn * kv[i, 0] + c * kv[i, 1]
+        out[i, 0] = px
+        out[i, 1] = py
+        bb[0] = min(bb[0], px)
+        bb[1] = min(bb[1], py)
+        bb[2] = max(bb[2], px)
+        bb[3] = max(bb[3], py)
+
+
+@numba.njit(cache=True)
+def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, qid):  # pragma: no cover - numba
+    """True when the posed hull (rings ``r0:r1`` of ``hv``) lies inside the domain.
+
+    ``g`` = (x0, y0, cell, cols, rows) of the grid that holds the domain's edges.
+    """
+    gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
+    if hbb[0] < gx0 or hbb[1] < gy0 or hbb[2] > gx0 + cols * gc or hbb[3] > gy0 + rows * gc:
+        return False
+    c0 = int((hbb[0] - gx0) / gc)
+    c1 = min(int((hbb[2] - gx0) / gc), cols - 1)
+    q0 = int((hbb[1] - gy0) / gc)
+    q1 = min(int((hbb[3] - gy0) / gc), rows - 1)
+    # no hull edge meets a domain edge
+    for q in range(q0, q1 + 1):
+        for c in range(c0, c1 + 1):
+            e = rhead[q * cols + c]
+            while e >= 0:
+                sid = rsid[e]
+                e = rnext[e]
+                if rstamp[sid] == qid:
+                    continue
+                rstamp[sid] = qid
+                ax, ay, bx, by = rsegs[sid, 0], rsegs[sid, 1], rsegs[sid, 2], rsegs[sid, 3]
+                if max(ax, bx) < hbb[0] or min(ax, bx) > hbb[2] or max(ay, by) < hbb[1] or min(ay, by) > hbb[3]:
+                    continue
+                for r in range(r0, r1):
+                    for i in range(hr[r], hr[r + 1] - 1):
+                        if _seg_hit(hv[i, 0], hv[i, 1], hv[i + 1, 0], hv[i + 1, 1], ax, ay, bx, by):
+                            return False
+    # every hull ring inside the domain (even-odd over all domain rings)
+    for r in range(r0, r1):
+        if not _inside(hv[hr[r], 0], hv[hr[r], 1], rv, rr, 0, len(rr) - 1):
+            return False
+    # and no domain ring (a hole) inside the hull
+    for r in range(len(rr) - 1):
+        px, py = rv[rr[r], 0], rv[rr[r], 1]
+        if hbb[0] <= px <= hbb[2] and hbb[1] <= py <= hbb[3] and _inside(px, py, hv, hr, r0, r1):
+            return False
+    return True
+
+
+@numba.njit(cache=True)
+def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, qid, buf, blocker):  # pragma: no cover - numba
+    """True when the posed body meets a placed exclusive region (grid neighbours only).
+
+    ``blocker[0]`` is the region that stopped the last pose (-1: none); it is tested
+    first, since the poses tried at one candidate point mostly meet the same neighbour.
+    """
+    b = blocker[0]
+    if b >= 0:
+        stamp[b] = qid
+        if not (pbb[b, 0] > cbb[2] or pbb[b, 2] < cbb[0] or pbb[b, 1] > cbb[3] or pbb[b, 3] < cbb[1]):
+            if _polys_hit(cv, kr, r0, r1, cbb, pv, pr, pp[b], pp[b + 1], pbb[b], buf):
+                return True
+    gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
+    c0 = max(int((cbb[0] - gx0) / gc), 0)
+    c1 = min(int((cbb[2] - gx0) / gc), cols - 1)
+    q0 = max(int((cbb[1] - gy0) / gc), 0)
+    q1 = min(int((cbb[3] - gy0) / gc), rows - 1)
+    for q in range(q0, q1 + 1):
+        for c in range(c0, c1 + 1):
+            e = head[q * cols + c]
+            while e >= 0:
+                p = epoly[e]
+                e = enext[e]
+                if stamp[p] == qid:
+                    continue
+                stamp[p] = qid
+                if pbb[p, 0] > cbb[2] or pbb[p, 2] < cbb[0] or pbb[p, 1] > cbb[3] or pbb[p, 3] < cbb[1]:
+                    continue
+                if _polys_hit(cv, kr, r0, r1, cbb, pv, pr, pp[p], pp[p + 1], pbb[p], buf):
+                    blocker[0] = p
+                    return True
+    return False
+
+
+@numba.njit(cache=True)
+def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
+    """Append the posed body (already in ``cv``) to the placed store and the grid."""
+    n, nv, nr, ne = st[_S_NP], st[_S_NV], st[_S_NR], st[_S_NE]
+    for r in range(kk[k], kk[k + 1]):
+        for i in range(kr[r], kr[r + 1]):
+            pv[nv, 0] = cv[i, 0]
+            pv[nv, 1] = cv[i, 1]
+            nv += 1
+        nr += 1
+        pr[nr] = nv
+    pp[n + 1] = nr
+    for j in range(4):
+        pbb[n, j] = cbb[j]
+    pose[n, 0] = x
+    pose[n, 1] = y
+    pose[n, 2] = rot
+    pose[n, 3] = s
+    pkind[n] = k
+    gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
+    c0 = max(int((cbb[0] - gx0) / gc), 0)
+    c1 = min(int((cbb[2] - gx0) / gc), cols - 1)
+    q0 = max(int((cbb[1] - gy0) / gc), 0)
+    q1 = min(int((cbb[3] - gy0) / gc), rows - 1)
+    for q in range(q0, q1 + 1):
+        for c in range(c0, c1 + 1):
+            cell = q * cols + c
+            enext[ne] = head[cell]
+            epoly[ne] = n
+            head[cell] = ne
+            ne += 1
+    st[_S_NP], st[_S_NV], st[_S_NR], st[_S_NE] = n + 1, nv, nr, ne
+
+
+@numba.njit(cache=True)
+def _insert_poses(kinds, poses, kv, kr, kk, cv, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
+    """Insert already placed elements (Step 1) given by kind and pose (x, y, rot, s)."""
+    for i in range(len(kinds)):
+        k = kinds[i]
+        _pose(kv, kr, kk[k], kk[k + 1], poses[i, 0], poses[i, 1], poses[i, 2], poses[i, 3], cv, cbb)
+        _insert(k, poses[i, 0], poses[i, 1], poses[i, 2], poses[i, 3], cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
+
+
+@numba.njit(cache=True, inline="always")
+def _alpha(r, power):  # pragma: no cover - numba
+    if power == 16.0:
+        r = r * r
+        r = r * r
+        r = r * r
+        return r * r
+    return r**power
+
+
+@numba.njit(cache=True)
+def _rounds(
+    gen, max_rounds, limit, p_count, power, fits, suppress, sup_r, kanch, ka, kdisk, kdo,
+    d, w, fx0, fy0, fcell, qbuf, cand, cdraw,
+    kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi, cumw,
+    rv, rr, rsegs, rhead, rnext, rsid, rstamp,
+    pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, stamp,
+    cv, ch, cbb, hbb, buf, segs, caps, st,
+):  # pragma: no cover - numba
+    """Up to ``max_rounds`` rounds of Step 2 (§4.2); returns a status code.
+
+    ``caps`` = (polygons, vertices, rings, grid entries) that the store can hold; the
+    loop returns NEED_ROOM before a round that could overflow it.
+    """
+    rows, cols = d.shape
+    npix = rows * cols
+    dflat = d.ravel()
+    wflat = w.ravel()
+    nkinds = len(kk) - 1
+    maxv = 0
+    maxr = 0
+    for k in range(nkinds):
+        maxv = max(maxv, kr[kk[k + 1]] - kr[kk[k]])
+        maxr = max(maxr, kk[k + 1] - kk[k])
+    offsets = np.zeros(2, dtype=np.int64)
+    sbb = np.zeros((1, 4))
+    blocker = np.full(1, -1, dtype=np.int64)
+    thr = 1e-9 ** (1.0 / power)  # pixels below this alpha (1e-9) are skipped without a draw
+    for _ in range(max_rounds):
+        if (st[_S_NP] + p_count > caps[0] or st[_S_NV] + p_count * maxv > caps[1]
+                or st[_S_NR] + p_count * maxr > caps[2] or st[_S_NE] + p_count * 9 > caps[3]):
+            return NEED_ROOM
+        st[_S_ROUNDS] += 1
+        # -- candidate points Q: each pixel with probability (e / max e)**n (§4.2), where
+        #    e is the distance d times the suppression weight
+        emax = 0.0
+        dmax = 0.0
+        for i in range(npix):
+            e = dflat[i] * wflat[i]
+            if e > emax:
+                emax = e
+            if dflat[i] > dmax:
+                dmax = dflat[i]
+        if emax <= 0.0:
+            return NO_FIELD
+        nq = 0
+        cut = emax * thr
+        for i in range(npix):
+            e = dflat[i] * wflat[i]
+            if e > cut and gen.random() < _alpha(e / emax, power):
+                qbuf[nq] = i
+                nq += 1
+        # -- choose P of them at random (§4.2): a partial Fisher-Yates shuffle
+        m = min(nq, p_count)
+        for i in range(m):
+            j = i + int(gen.random() * (nq - i))
+            t = qbuf[i]
+            qbuf[i] = qbuf[j]
+            qbuf[j] = t
+            cand[i] = qbuf[i]
+            cdraw[i] = dflat[qbuf[i]] * wflat[qbuf[i]]
+        for ci in range(m):
+            q = cand[ci]
+            jx = gen.random()
+            jy = gen.random()
+            e_now = dflat[q] * wflat[q]
+            if e_now <= 0.0:
+                continue  # now inside a placed region: no longer a point of Q
+            if e_now < cdraw[ci] and gen.random() >= _alpha(e_now / cdraw[ci], power):
+                continue  # thinned: the field shrank here since the draw (extension, §4.2)
+            px = fx0 + (q % cols + jx) * fcell
+            py = fy0 + (q // cols + jy) * fcell
+            if cumw.size == 0:
+                k = st[_S_NEXT]
+            else:
+                u = gen.random()
+                k = 0
+                while k < nkinds - 1 and u >= cumw[k]:
+                    k += 1
+            st[_S_TRIALS] += 1
+            fixed = rot_lo[k] == rot_hi[k] and sc_lo[k] == sc_hi[k]
+            tries = 1 if fixed else fits
+            ok = False
+            rot = 0.0
+            s = 1.0
+            x = px
+            y = py
+            for t in range(tries):
+                rot = rot_lo[k] + gen.random() * (rot_hi[k] - rot_lo[k])
+                s = sc_lo[k] + gen.random() * (sc_hi[k] - sc_lo[k])
+                if t > 0 and ka[k + 1] > ka[k]:
+                    # later poses put one of the kind's anchor points (inside its
+                    # exclusive region) on the candidate point, not its box centre
+                    a = ka[k] + int(gen.random() * (ka[k + 1] - ka[k]))
+                    c = np.cos(rot) * s
+                    sn = np.sin(rot) * s
+                    x = px - (c * kanch[a, 0] - sn * kanch[a, 1])
+                    y = py - (sn * kanch[a, 0] + c * kanch[a, 1])
+                st[_S_POSES] += 1
+                # certain rejection from the field (extension, §4.2): the field is never
+                # below the true distance to the obstacles at a pixel centre, so a disk
+                # inside the body that is wider than the field there plus the offset to
+                # the pixel centre must meet an obstacle; no exact test is needed
+                c = np.cos(rot) * s
+                sn = np.sin(rot) * s
+                hit = False
+                for i in range(kdo[k], kdo[k + 1]):
+                    cx = x + c * kdisk[i, 0] - sn * kdisk[i, 1]
+                    cy = y + sn * kdisk[i, 0] + c * kdisk[i, 1]
+                    fc = int(np.floor((cx - fx0) / fcell))
+                    fr = int(np.floor((cy - fy0) / fcell))
+                    if fc < 0 or fr < 0 or fc >= cols or fr >= rows:
+                        hit = True  # outside the domain's box
+                        break
+                    ox = cx - (fx0 + (fc + 0.5) * fcell)
+                    oy = cy - (fy0 + (fr + 0.5) * fcell)
+                    if kdisk[i, 2] * s > d[fr, fc] + np.sqrt(ox * ox + oy * oy):
+                        hit = True
+                        break
+                if hit:
+                    continue
+                _pose(kv, kr, kk[k], kk[k + 1], x, y, rot, s, cv, cbb)
+                if same_hull[k]:
+                    hb = cbb
+                    hvv = cv
+                else:
+                    _pose(hv, hr, hk[k], hk[k + 1], x, y, rot, s, ch, hbb)
+                    hb = hbb
+                    hvv = ch
+                st[_S_QID] += 1
+                if not _in_region(hvv, hr if not same_hull[k] else kr, hk[k] if not same_hull[k] else kk[k],
+                                  hk[k + 1] if not same_hull[k] else kk[k + 1], hb, rv, rr, rsegs, g,
+                                  rhead, rnext, rsid, rstamp, st[_S_QID]):
+                    continue
+                if _collides(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
+                    continue
+                ok = True
+                break
+            if ok:
+                n0 = st[_S_NP]
+                _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
+                # the distance field, updated locally at once (see _field.DistanceField.occupy)
+                ns = 0
+                for r in range(pp[n0], pp[n0 + 1]):
+                    for i in range(pr[r], pr[r + 1] - 1):
+                        segs[ns, 0] = pv[i, 0]
+                        segs[ns, 1] = pv[i, 1]
+                        segs[ns, 2] = pv[i + 1, 0]
+                        segs[ns, 3] = pv[i + 1, 1]
+                        ns += 1
+                offsets[1] = ns
+                for j in range(4):
+                    sbb[0, j] = cbb[j]
+                _occupy(d, fx0, fy0, fcell, segs[:ns], offsets, sbb, dmax + fcell)
+                st[_S_CONSEC] = 0
+                if cumw.size == 0:
+                    st[_S_NEXT] = (st[_S_NEXT] + 1) % nkinds
+            else:
+                st[_S_CONSEC] += 1
+                if suppress < 1.0:
+                    # damp the failed spot (extension, §4.2)
+                    cc = int((px - fx0) / fcell)
+                    rq = int((py - fy0) / fcell)
+                    rad = int(sup_r / fcell) + 1
+                    for r in range(max(rq - rad, 0), min(rq + rad + 1, rows)):
+                        for c in range(max(cc - rad, 0), min(cc + rad + 1, cols)):
+                            ddx = fx0 + (c + 0.5) * fcell - px
+                            ddy = fy0 + (r + 0.5) * fcell - py
+                            if ddx * ddx + ddy * ddy <= sup_r * sup_r:
+                                w[r, c] *= suppress
+                if st[_S_CONSEC] >= limit:
+                    return DONE
+    return RUNNING
+
+
+@numba.njit(cache=True)
+def _grid_segments(segs, gx0, gy0, gc, cols, rows):  # pragma: no cover - numba
+    """Linked lists of the segments (s, 4) per grid cell that their boxes touch."""
+    n = 0
+    for s in range(len(segs)):
+        c0 = max(int((min(segs[s, 0], segs[s, 2]) - gx0) / gc), 0)
+        c1 = min(int((max(segs[s, 0], segs[s, 2]) - gx0) / gc), cols - 1)
+        q0 = max(int((min(segs[s, 1], segs[s, 3]) - gy0) / gc), 0)
+        q1 = min(int((max(segs[s, 1], segs[s, 3]) - gy0) / gc), rows - 1)
+        n += max(c1 - c0 + 1, 0) * max(q1 - q0 + 1, 0)
+    head = np.full(rows * cols, -1, dtype=np.int64)
+    nxt = np.empty(n, dtype=np.int64)
+    sid = np.empty(n, dtype=np.int64)
+    e = 0
+    for s in range(len(segs)):
+        c0 = max(int((min(segs[s, 0], segs[s, 2]) - gx0) / gc), 0)
+        c1 = min(int((max(segs[s, 0], segs[s, 2]) - gx0) / gc), cols - 1)
+        q0 = max(int((min(segs[s, 1], segs[s, 3]) - gy0) / gc), 0)
+        q1 = min(int((max(segs[s, 1], segs[s, 3]) - gy0) / gc), rows - 1)
+        for q in range(q0, q1 + 1):
+            for c in range(c0, c1 + 1):
+                nxt[e] = head[q * cols + c]
+                sid[e] = s
+                head[q * cols + c] = e
+                e += 1
+    return head, nxt, sid
+
+
+def _anchors(kinds: list[ExclusiveRegion], disks: np.ndarray, offsets: np.ndarray, more: int = 16) -> tuple[np.ndarray, np.ndarray]:
+    """Anchor points inside each kind's exclusive region: the centre of its widest disk
+    (about its pole of inaccessibility) and ``more`` interior points of a 24 x 24 grid.
+
+    Returns
+    -------
+    anchors : (n, 2) float
+        In local, centred coordinates.
+    offsets : (K + 1,) int64
+    """
+    pts, off = [], [0]
+    for j, k in enumerate(kinds):
+        own = [disks[offsets[j], :2]] if offsets[j + 1] > offsets[j] else []
+        x0, y0, x1, y1 = k.body.bounds
+        gx, gy = np.meshgrid(np.linspace(x0, x1, 24), np.linspace(y0, y1, 24))
+        grid = np.c_[gx.ravel(), gy.ravel()]
+        grid = grid[shapely.contains_xy(k.body, grid[:, 0], grid[:, 1])]
+        if len(grid):
+            own.extend(grid[np.unique(np.linspace(0, len(grid) - 1, more).astype(int))])
+        pts.extend(own)
+        off.append(off[-1] + len(own))
+    return np.asarray(pts, dtype=float).reshape(-1, 2), np.asarray(off, dtype=np.int64)
+
+
+def _disks(kinds: list[ExclusiveRegion], most: int = 8) -> tuple[np.ndarray, np.ndarray]:
+    """Disks inside each kind's exclusive region, for the field's certain rejections.
+
+    Greedy: among interior sample points, take the one farthest from the boundary, drop
+    the points its disk covers, repeat (at most ``most`` disks, each at least a quarter
+    of the widest).
+
+    Returns
+    -------
+    disks : (n, 3) float
+        Centre (local, centred coordinates) and radius.
+    offsets : (K + 1,) int64
+    """
+    out, off = [], [0]
+    for k in kinds:
+        body = k.body
+        x0, y0, x1, y1 = body.bounds
+        n = 24
+        gx, gy = np.meshgrid(np.linspace(x0, x1, n), np.linspace(y0, y1, n))
+        pts = np.c_[gx.ravel(), gy.ravel()]
+        pts = pts[shapely.contains_xy(body, pts[:, 0], pts[:, 1])]
+        clear = shapely.distance(shapely.boundary(body), shapely.points(pts)) if len(pts) else np.zeros(0)
+        own = []
+        while len(pts) and len(own) < most:
+            i = int(np.argmax(clear))
+            if own and clear[i] < 0.25 * own[0][2]:
+                break
+            own.append((pts[i, 0], pts[i, 1], clear[i] * (1 - 1e-9)))
+            keep = np.hypot(*(pts - pts[i]).T) > clear[i]
+            pts, clear = pts[keep], clear[keep]
+        out.extend(own)
+        off.append(off[-1] + len(own))
+    return np.asarray(out, dtype=float).reshape(-1, 3), np.asarray(off, dtype=np.int64)
+
+
+class FitEngine:
+    """Placed exclusive regions in a grid, and the compiled Step 2 loop over them.
+
+    Parameters
+    ----------
+    kinds : list of ExclusiveRegion
+    domain : shapely Polygon or MultiPolygon
+        The region to fill.
+    weights : (K,) float or None
+        Kind probabilities; None: cyclic (§3.2).
+    next_kind : int
+        The kind to place next in cyclic mode (after Step 1).
+    """
+
+    def __init__(self, kinds: list[ExclusiveRegion], domain: shapely.Geometry, weights: np.ndarray | None, next_kind: int) -> None:
+        self.kv, self.kr, self.kk = ring_layout([k.body for k in kinds])
+        self.hv, self.hr, self.hk = ring_layout([k.hull for k in kinds])
+        self.same_hull = np.array([k.hull is k.body for k in kinds])
+        self.rot_lo = np.array([k.rotation[0] for k in kinds], dtype=float)
+        self.rot_hi = np.array([k.rotation[1] for k in kinds], dtype=float)
+        self.sc_lo = np.array([k.scale[0] for k in kinds], dtype=float)
+        self.sc_hi = np.array([k.scale[1] for k in kinds], dtype=float)
+        self.cumw = np.zeros(0) if weights is None else np.cumsum(weights)
+        self.kdisk, self.kdo = _disks(kinds)
+        self.kanch, self.ka = _anchors(kinds, self.kdisk, self.kdo)
+        # grid: cells about the largest element's circumscribed radius
+        self.rv, self.rr, _ = ring_layout([domain])
+        x0, y0, x1, y1 = domain.bounds
+        gc = max(max(k.radius * k.scale[1] for k in kinds), (x1 - x0 + y1 - y0) / 2000.0)
+        cols = int(np.floor((x1 - x0) / gc)) + 1
+        rows = int(np.floor((y1 - y0) / gc)) + 1
+        self.g = np.array([x0, y0, gc, cols, rows], dtype=float)
+        same = np.flatnonzero(self.rr[1:] - self.rr[:-1] > 0)
+        starts = np.concatenate([np.arange(self.rr[r], self.rr[r + 1] - 1) for r in same]) if len(same) else np.zeros(0, int)
+        self.rsegs = np.ascontiguousarray(np.c_[self.rv[starts], self.rv[starts + 1]]) if len(starts) else np.zeros((0, 4))
+        self.rhead, self.rnext, self.rsid = _grid_segments(self.rsegs, x0, y0, gc, cols, rows)
+        self.rstamp = np.full(len(self.rsegs), -1, dtype=np.int64)
+        nv = max(len(self.kv), len(self.hv))
+        self.cv = np.zeros((len(self.kv), 2))
+        self.ch = np.zeros((len(self.hv), 2))
+        self.cbb = np.zeros(4)
+        self.hbb = np.zeros(4)
+        maxseg = max(int((self.kr[self.kk[1:]] - self.kr[self.kk[:-1]]).max()), 1)
+        self.buf = np.zeros(max(nv, maxseg) + 1, dtype=np.int64)
+        self.segs = np.zeros((maxseg + 1, 4))
+        self.st = np.zeros(10, dtype=np.int64)
+        self.st[_S_NEXT] = next_kind
+        self.head = np.full(cols * rows, -1, dtype=np.int64)
+        self._alloc(256, 256 * nv, 256 * 4, 256 * 8)
+
+    def _alloc(self, np_: int, nv: int, nr: int, ne: int) -> None:
+        def grow(a: np.ndarray | None, n: int, shape: tuple, dtype, fill=0) -> np.ndarray:
+            out = np.full((n, *shape), fill, dtype=dtype)
+            if a is not None:
+                out[: len(a)] = a
+            return out
+
+        old = getattr(self, "pv", None) is not None
+        self.pv = grow(self.pv if old else None, nv, (2,), float)
+        self.pr = grow(self.pr if old else None, nr + 1, (), np.int64)
+        self.pp = grow(self.pp if old else None, np_ + 1, (), np.int64)
+        self.pbb = grow(self.pbb if old else None, np_, (4,), float)
+        self.pose = grow(self.pose if old else None, np_, (4,), float)
+        self.pkind = grow(self.pkind if old else None, np_, (), np.int64)
+        self.stamp = grow(self.stamp if old else None, np_, (), np.int64, -1)
+        self.enext = grow(self.enext if old else None, ne, (), np.int64)
+        self.epoly = grow(self.epoly if old else None, ne, (), np.int64)
+        self.caps = np.array([np_, nv, nr, ne], dtype=np.int64)
+
+    def _room(self, polys: int) -> None:
+        """Grow the store (doubling) until ``polys`` more elements fit in the worst case."""
+        maxv = int((self.kr[self.kk[1:]] - self.kr[self.kk[:-1]]).max())
+        maxr = int((self.kk[1:] - self.kk[:-1]).max())
+        need = np.array([self.st[_S_NP] + polys, self.st[_S_NV] + polys * maxv, self.st[_S_NR] + polys * maxr,
+                         self.st[_S_NE] + polys * 9])  # a body's box spans at most 3 x 3 cells
+        if np.all(need <= self.caps):
+            return
+        self._alloc(*(int(c) for c in np.maximum(self.caps * 2, need)))
+
+    def __len__(self) -> int:
+        return int(self.st[_S_NP])
+
+    def insert(self, kinds: np.ndarray, poses: np.ndarray) -> None:
+        """Add placed elements: (m,) kinds and (m, 4) poses (x, y, rotation, scale)."""
+        self._room(len(kinds))
+        _insert_poses(np.asarray(kinds, dtype=np.int64), np.ascontiguousarray(poses, dtype=float), self.kv, self.kr, self.kk,
+                      self.cv, self.cbb, self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g, self.head,
+                      self.enext, self.epoly, self.st)
+
+    def run(self, gen: np.random.Generator, field, rounds: int, limit: int, p_count: int, power: float, fits: int,
+            suppress: float, sup_r: float) -> int:
+        """Up to ``rounds`` rounds of Step 2 against ``field`` (updated in place)."""
+        if not hasattr(self, "w") or self.w.shape != field.d.shape:
+            self.w = np.ones_like(field.d)
+            self.qbuf = np.zeros(field.d.size, dtype=np.int64)
+            self.cand = np.zeros(p_count, dtype=np.int64)
+            self.cdraw = np.zeros(p_count)
+        while True:
+            status = _rounds(
+                gen, rounds, limit, p_count, float(power), fits, float(suppress), float(sup_r), self.kanch, self.ka, self.kdisk, self.kdo,
+                field.d, self.w, field.x0, field.y0, field.cell, self.qbuf, self.cand, self.cdraw,
+                self.kv, self.kr, self.kk, self.hv, self.hr, self.hk, self.same_hull, self.rot_lo, self.rot_hi,
+                self.sc_lo, self.sc_hi, self.cumw,
+                self.rv, self.rr, self.rsegs, self.rhead, self.rnext, self.rsid, self.rstamp,
+                self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g, self.head, self.enext, self.epoly,
+                self.stamp, self.cv, self.ch, self.cbb, self.hbb, self.buf, self.segs, self.caps, self.st,
+            )
+            if status != NEED_ROOM:
+                return status
+            self._room(p_count)
+
+    @property
+    def consecutive(self) -> int:
+        return int(self.st[_S_CONSEC])
+
+    @property
+    def trials(self) -> int:
+        return int(self.st[_S_TRIALS])
+
+    @property
+    def rounds(self) -> int:
+        return int(self.st[_S_ROUNDS])
+
+    @property
+    def poses(self) -> int:
+        return int(self.st[_S_POSES])
+
+    @property
+    def next_kind(self) -> int:
+        return int(self.st[_S_NEXT])
