@@ -155,10 +155,9 @@ def _polys_hit(av, arings, ar0, ar1, abb, bv, brings, br0, br1, bbb, buf):  # pr
 
 
 @numba.njit(cache=True)
-def _pose(kv, kr, r0, r1, x, y, rot, s, out, bb):  # pragma: no cover - numba
-    """Transform rings ``r0:r1`` of a kind (T + s R p, Eq. 1) into ``out``; fill bbox."""
-    c = np.cos(rot) * s
-    sn = np.sin(rot) * s
+def _pose(kv, kr, r0, r1, x, y, c, sn, out, bb):  # pragma: no cover - numba
+    """Transform rings ``r0:r1`` of a kind (T + s R p, Eq. 1, with ``c = s cos t`` and
+    ``sn = s sin t``) into ``out``; fill bbox."""
     bb[0] = np.inf
     bb[1] = np.inf
     bb[2] = -np.inf
@@ -290,7 +289,9 @@ def _insert_poses(kinds, poses, kv, kr, kk, cv, cbb, pv, pr, pp, pbb, pose, pkin
     """Insert already placed elements (Step 1) given by kind and pose (x, y, rot, s)."""
     for i in range(len(kinds)):
         k = kinds[i]
-        _pose(kv, kr, kk[k], kk[k + 1], poses[i, 0], poses[i, 1], poses[i, 2], poses[i, 3], cv, cbb)
+        c = np.cos(poses[i, 2]) * poses[i, 3]
+        sn = np.sin(poses[i, 2]) * poses[i, 3]
+        _pose(kv, kr, kk[k], kk[k + 1], poses[i, 0], poses[i, 1], c, sn, cv, cbb)
         _insert(k, poses[i, 0], poses[i, 1], poses[i, 2], poses[i, 3], cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
 
 
@@ -425,12 +426,12 @@ def _rounds(
                         break
                 if hit:
                     continue
-                _pose(kv, kr, kk[k], kk[k + 1], x, y, rot, s, cv, cbb)
+                _pose(kv, kr, kk[k], kk[k + 1], x, y, c, sn, cv, cbb)
                 if same_hull[k]:
                     hb = cbb
                     hvv = cv
                 else:
-                    _pose(hv, hr, hk[k], hk[k + 1], x, y, rot, s, ch, hbb)
+                    _pose(hv, hr, hk[k], hk[k + 1], x, y, c, sn, ch, hbb)
                     hb = hbb
                     hvv = ch
                 st[_S_QID] += 1
