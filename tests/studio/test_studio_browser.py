@@ -246,6 +246,24 @@ def test_palette_panel_edit_flip_select_and_flow_arrows(page):
             page.wait_for_function(f"window.studio.palette.selection.includes({name!r})")
     assert sorted(page.evaluate("window.studio.palette.selection")) == ["scales", "tiles"]
 
+    # paint the selected textures into a new, empty exemplar (Davison §5.5)
+    page.click("#new-exemplar")
+    page.wait_for_function("window.studio.palette.exemplars.some(e => e.name === 'exemplar' && e.n === 0)")
+    page.click("#exemplars li[data-name=exemplar]")
+    page.wait_for_function("window.studio.paletteEditor.active === 'exemplar'")
+    page.evaluate("(() => { const r = document.getElementById('radius'); r.value = 30; r.dispatchEvent(new Event('input')); })()")
+    page.click("#edit-tools button[data-etool=paint]")
+    box = page.locator("#palette-canvas").bounding_box()
+    c = len(page.evaluate("window.studio.messages"))
+    page.mouse.move(box["x"] + 40, box["y"] + 130)
+    page.mouse.down()
+    for k in range(1, 9):
+        page.mouse.move(box["x"] + 40 + 27 * k, box["y"] + 130)
+        page.wait_for_timeout(15)
+    page.mouse.up()
+    page.wait_for_function(f"window.studio.messages.slice({c}).some(m => m.startsWith('painted'))", timeout=60000)
+    assert _exemplar(page, "exemplar")["n"] >= 4
+
     # a flow stroke shows the field as arrows along it
     page.click("#fit")
     page.click("#tools button[data-tool=flow]")
