@@ -352,9 +352,10 @@ def _rounds(
             return NO_FIELD
         nq = 0
         cut = emax * thr
+        inv = 1.0 / emax
         for i in range(npix):
             e = dflat[i] * wflat[i]
-            if e > cut and gen.random() < _alpha(e / emax, power):
+            if e > cut and gen.random() < _alpha(e * inv, power):
                 qbuf[nq] = i
                 nq += 1
         # -- choose P of them at random (§4.2): a partial Fisher-Yates shuffle
