@@ -12,7 +12,7 @@ from pathlib import Path
 
 from PIL import Image
 
-PREFERRED = ["pack-stones", "grow-", "synth-", "ornament-", "program-", "exemplar-stones", "pack-trees", "exemplar-leaves"]
+PREFERRED = ["pack-stones", "grow-flow", "synth-two-scales", "ornament-hierarchy-rect", "program-fig11d-mosaic", "pack-trees", "grow-", "synth-", "ornament-", "program-", "exemplar-stones"]
 
 
 def main() -> None:
