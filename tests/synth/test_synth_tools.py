@@ -150,6 +150,29 @@ def test_voids_steer_growth_and_are_hidden():
     assert d_out >= 0.9 * d_ex
 
 
+def test_voids_give_way_to_visible_elements_and_keep_the_density():
+    """Visible elements are placed before voids (§5.6 extension): the visible density
+    reaches the exemplar's, the apples keep their spacing, and no void intersects."""
+    from scipy.spatial import cKDTree
+
+    from strew.synth._prepare import _spacing, exemplar_domain
+
+    ex = apples()
+    vis_ex = ex.select(~ex["void"])
+    dom, _ = exemplar_domain(ex.xy, _spacing(ex.xy))
+    dens_ex = len(vis_ex) / dom.area
+    s = new_state(ex, Region.rectangle(480, 480), rng=3)
+    fill(s)
+    assert _no_close_pairs(s)  # voids included: none was left on top of an apple
+    out = s.to_arrangement()
+    inner = Region.rectangle(384, 384, 48, 48)
+    dens = inner.contains(out.xy).sum() / inner.area
+    assert 0.85 * dens_ex <= dens <= 1.15 * dens_ex
+    d_ex = np.median(cKDTree(vis_ex.xy).query(vis_ex.xy, k=2)[0][:, 1])
+    d_out = np.median(cKDTree(out.xy).query(out.xy, k=2)[0][:, 1])
+    assert abs(d_out - d_ex) <= 0.1 * d_ex
+
+
 def test_two_scales_in_one_output_with_per_element_radii():
     pal = Palette({"stones": stones(1.0), "pebbles": stones(0.25, size=60)})
     r_stone = pal["stones"]["radius"][0]

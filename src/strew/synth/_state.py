@@ -281,31 +281,38 @@ class SynthState:
             ok &= np.any(d <= self.brush_radii[np.minimum(j, len(self.brush_radii) - 1)], axis=1)
         return ok
 
-    def conflicts(self, pts: np.ndarray, src: np.ndarray | None, tree: cKDTree | None = None, cover: np.ndarray | None = None, r: np.ndarray | None = None) -> np.ndarray:
+    def conflicts(self, pts: np.ndarray, src: np.ndarray | None, tree: cKDTree | None = None, cover: np.ndarray | None = None, r: np.ndarray | None = None, visible_only: bool = False) -> np.ndarray:
         """(m,) bool: would copies of exemplar elements ``src`` at ``pts`` intersect O?
 
         Two elements intersect when ``|p - q| < max(factor (r_p + r_q), min_dist)`` (see
         :class:`Prepared`). With ``cover`` (m,), an output element closer than ``cover``
         also counts (free-space points, §5.1); ``r`` overrides the radii of ``src``.
         ``tree`` is accepted for symmetry and unused (a uniform grid is faster here).
-        Without ``src`` (free-space points) only the discs and ``cover`` count.
+        Without ``src`` (free-space points) only the discs and ``cover`` count. With
+        ``visible_only``, void elements of O are ignored (§5.6 extension, see ``grow``).
         """
         if self.n == 0 or len(pts) == 0:
             return np.zeros(len(pts), bool)
         prep = self.prep
+        opos, osrc = self.pos, self.src
+        if visible_only:
+            vis = ~prep.void[osrc]
+            opos, osrc = opos[vis], osrc[vis]
+            if len(osrc) == 0:
+                return np.zeros(len(pts), bool)
         f = prep.factor
         rq = prep.r[np.asarray(src, np.int64)] if r is None else np.asarray(r, float)
-        rr = self.r
+        rr = prep.r[osrc]
         use_sk = src is not None
         qsk = prep.skind[np.asarray(src, np.int64)] if use_sk else np.zeros(len(pts), np.int64)
         qcover = np.zeros(len(pts)) if cover is None else np.asarray(cover, float)
         cell = f * (float(np.max(rq)) + float(rr.max()))
         if use_sk:
             cell = max(cell, float(prep.min_dist.max()))
-        ext = float(np.ptp(self.pos, axis=0).max())
+        ext = float(np.ptp(opos, axis=0).max())
         cell = max(cell, float(qcover.max()), ext / 2000.0, 1e-9)  # bounded grid size
         return K.conflict_check(
-            np.ascontiguousarray(pts, dtype=float), rq.astype(float), qsk.astype(np.int64), qcover, self.pos, rr, prep.skind[self.src], prep.min_dist, f, use_sk, cell
+            np.ascontiguousarray(pts, dtype=float), rq.astype(float), qsk.astype(np.int64), qcover, np.ascontiguousarray(opos), rr, prep.skind[osrc], prep.min_dist, f, use_sk, cell
         )
 
     # -- output ------------------------------------------------------------------------
