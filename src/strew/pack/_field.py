@@ -3,8 +3,8 @@
 A raster over the domain holds, for each free pixel, the distance to the nearest placed
 exclusive region or to the domain boundary. Candidate points Q are drawn pixel by pixel
 with probability ``alpha = d**n`` of the normalised distance ``d`` (n = 16 in the
-paper), and P of them are chosen as placement candidates. The field is built once with
-``scipy.ndimage.distance_transform_edt`` and then updated locally: after a placement,
+paper), and P of them are chosen as placement candidates. The field is built once
+with an exact Euclidean distance transform and then updated locally: after a placement,
 only a window around the new region, grown by the current largest distance, is
 recomputed (distances only shrink, so pixels farther away cannot change).
 
@@ -18,7 +18,6 @@ from __future__ import annotations
 import numba
 import numpy as np
 import shapely
-from scipy import ndimage
 
 from ..region import Region
 
@@ -44,20 +43,26 @@ class DistanceField:
     """
 
     def __init__(self, region: Region, cell: float, placed: list | None = None) -> None:
-        mask, (x0, y0, cell) = region.rasterize(cell)
-        self.x0, self.y0, self.cell = float(x0), float(y0), float(cell)
-        self.rows, self.cols = mask.shape
-        self.d = mask.astype(float)
+        # The same grid as Region.rasterize (pixel centres at x0 + (c + 0.5) * cell), but
+        # filled by even-odd scanlines over the domain's rings and then cleared inside
+        # the regions placed so far (Step 1), and one exact Euclidean distance transform
+        # (Felzenszwalb & Huttenlocher), all compiled: no per-pixel shapely test.
+        x0, y0, x1, y1 = region.bounds
+        cell = float(cell)
+        self.x0, self.y0, self.cell = float(x0), float(y0), cell
+        self.cols = max(1, int(np.ceil((x1 - x0) / cell)))
+        self.rows = max(1, int(np.ceil((y1 - y0) / cell)))
+        free = np.zeros((self.rows, self.cols), dtype=np.bool_)
+        segs, offsets = _segments([region.geometry])
+        _scan_fill(free, self.x0, self.y0, cell, segs, offsets, True)
+        placed = [g for g in (placed or []) if not g.is_empty]
         if placed:
-            # Pixels covered by the regions placed so far (Step 1) are obstacles too:
-            # mark them (a pass limited to each bounding box), then one global transform.
-            self.dmax = 0.0
-            self.occupy(placed)
-            mask = self.d > 0
-        # A one-pixel obstacle frame, so the bounding box edge counts as boundary.
-        padded = np.pad(mask, 1, constant_values=False)
-        self.d = ndimage.distance_transform_edt(padded)[1:-1, 1:-1] * self.cell
-        self.d[~mask] = 0.0
+            # pixels whose centres lie inside the regions placed so far are obstacles too
+            segs, offsets = _segments(placed)
+            _scan_fill(free, self.x0, self.y0, cell, segs, offsets, False)
+        # distance of each free pixel centre to the nearest obstacle pixel centre, with
+        # the pixels just outside the raster as obstacles (the box edge is boundary)
+        self.d = _edt(free) * cell
         self.dmax = float(self.d.max()) if self.d.size else 0.0
 
     def occupy(self, geoms: np.ndarray | list) -> None:
@@ -117,8 +122,9 @@ class DistanceField:
 
 def _segments(geoms: list) -> tuple[np.ndarray, np.ndarray]:
     """All ring edges of the geometries: (s, 4) ``x0, y0, x1, y1`` and (k + 1,) offsets."""
-    rings = shapely.get_rings(np.asarray(geoms, dtype=object), return_index=True)
-    ring_geoms, owner = rings
+    parts, part_owner = shapely.get_parts(np.asarray(geoms, dtype=object), return_index=True)
+    ring_geoms, ring_part = shapely.get_rings(parts, return_index=True)
+    owner = part_owner[ring_part]
     coords, ring_idx = shapely.get_coordinates(ring_geoms, return_index=True)
     same = ring_idx[1:] == ring_idx[:-1]  # consecutive vertices of one ring form an edge
     starts = np.flatnonzero(same)
@@ -182,3 +188,122 @@ def _occupy(d, x0, y0, cell, segs, offsets, bounds, grow):  # pragma: no cover -
                     d[r, c] = 0.0
                 elif best < cur * cur:
                     d[r, c] = np.sqrt(best)
+
+
+@numba.njit(cache=True)
+def _scan_fill(mask, x0, y0, cell, segs, offsets, value):  # pragma: no cover - numba
+    """Set ``mask`` to ``value`` at the pixel centres inside each group of ring edges.
+
+    Group ``g`` is the edges ``segs[offsets[g]:offsets[g + 1]]`` of one polygon; a centre
+    is inside by the even-odd rule with the half-open crossing test of :func:`_occupy`
+    (an edge counts when ``(ay > py) != (by > py)`` and the centre lies left of the
+    crossing), evaluated for a whole row at once from the sorted crossings.
+    """
+    rows, cols = mask.shape
+    xs = np.empty(max(len(segs), 1))
+    for g in range(len(offsets) - 1):
+        s0, s1 = offsets[g], offsets[g + 1]
+        if s1 <= s0:
+            continue
+        lo = np.inf
+        hi = -np.inf
+        for s in range(s0, s1):
+            lo = min(lo, segs[s, 1], segs[s, 3])
+            hi = max(hi, segs[s, 1], segs[s, 3])
+        r0 = max(int(np.floor((lo - y0) / cell)) - 1, 0)
+        r1 = min(int(np.ceil((hi - y0) / cell)) + 1, rows)
+        for r in range(r0, r1):
+            py = y0 + (r + 0.5) * cell
+            m = 0
+            for s in range(s0, s1):
+                ay = segs[s, 1]
+                by = segs[s, 3]
+                if (ay > py) != (by > py):
+                    ax = segs[s, 0]
+                    xc = ax + (py - ay) * (segs[s, 2] - ax) / (by - ay)
+                    j = m  # insertion sort: a row crosses few edges
+                    while j > 0 and xs[j - 1] > xc:
+                        xs[j] = xs[j - 1]
+                        j -= 1
+                    xs[j] = xc
+                    m += 1
+            if m < 2:
+                continue
+            # a centre px is inside when an odd number of crossings lie right of it,
+            # i.e. xs[2i] <= px < xs[2i + 1]
+            for i in range(0, m - 1, 2):
+                xa = xs[i]
+                xb = xs[i + 1]
+                c = max(int(np.floor((xa - x0) / cell - 0.5)), 0)
+                while c < cols:
+                    px = x0 + (c + 0.5) * cell
+                    if px >= xb:
+                        break
+                    if px >= xa:
+                        mask[r, c] = value
+                    c += 1
+
+
+@numba.njit(cache=True)
+def _edt(free):  # pragma: no cover - numba
+    """Exact Euclidean distance (in pixels) of each True pixel to the nearest False pixel
+    or to the pixels just outside the array; 0 at False pixels.
+
+    Felzenszwalb & Huttenlocher's two passes of lower envelopes of parabolas, O(pixels),
+    the same values as ``scipy.ndimage.distance_transform_edt`` of the padded mask.
+    """
+    rows, cols = free.shape
+    g = np.empty((rows, cols))
+    # columns: squared distance to the nearest obstacle in the column (the rows -1 and
+    # ``rows`` are obstacles)
+    for c in range(cols):
+        last = -1
+        for r in range(rows):
+            if not free[r, c]:
+                last = r
+                g[r, c] = 0.0
+            else:
+                g[r, c] = float(r - last) ** 2
+        last = rows
+        for r in range(rows - 1, -1, -1):
+            if not free[r, c]:
+                last = r
+            else:
+                dd = float(last - r) ** 2
+                if dd < g[r, c]:
+                    g[r, c] = dd
+    out = np.zeros((rows, cols))
+    n = cols + 2  # with the obstacle columns -1 and ``cols``
+    f = np.empty(n)
+    v = np.empty(n, dtype=np.int64)
+    z = np.empty(n + 1)
+    for r in range(rows):
+        f[0] = 0.0
+        f[n - 1] = 0.0
+        for c in range(cols):
+            f[c + 1] = g[r, c] if free[r, c] else 0.0
+        # lower envelope of the parabolas (q - i)**2 + f[i]
+        k = 0
+        v[0] = 0
+        z[0] = -np.inf
+        z[1] = np.inf
+        for q in range(1, n):
+            while True:
+                p = v[k]
+                sx = ((f[q] + q * q) - (f[p] + p * p)) / (2.0 * q - 2.0 * p)
+                if sx <= z[k]:
+                    k -= 1
+                else:
+                    break
+            k += 1
+            v[k] = q
+            z[k] = sx
+            z[k + 1] = np.inf
+        k = 0
+        for q in range(1, n - 1):
+            while z[k + 1] < q:
+                k += 1
+            if free[r, q - 1]:
+                p = v[k]
+                out[r, q - 1] = np.sqrt((q - p) ** 2 + f[p])
+    return out

@@ -47,6 +47,8 @@ __all__ = ["FitEngine", "ring_layout"]
 
 # kernel status codes
 RUNNING, DONE, NEED_ROOM, NO_FIELD = 0, 1, 2, 3
+# candidate sampling: bound of the pixels drawn by geometric skips (see _rounds)
+LOW_P = 1.0 / 64.0
 # indices into the integer state vector
 _S_CONSEC, _S_NEXT, _S_TRIALS, _S_POSES, _S_NP, _S_NV, _S_NR, _S_NE, _S_QID, _S_ROUNDS = range(10)
 
@@ -306,6 +308,46 @@ def _alpha(r, power):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
+def _skip(gen, log_q):  # pragma: no cover - numba
+    """Failures before the first success of Bernoulli(LOW_P) trials (geometric law)."""
+    return int(np.floor(np.log1p(-gen.random()) / log_q))
+
+
+@numba.njit(cache=True)
+def _draw_q(gen, dflat, wflat, cut, emax, power, qbuf):  # pragma: no cover - numba
+    """Candidate points Q (§4.2): each pixel i with ``e = d[i] w[i] > cut`` joins with
+    probability ``alpha = (e / emax)**power``, independently; their indices go to
+    ``qbuf``, in pixel order. Returns their number.
+
+    Pixels whose alpha is at most LOW_P are first thinned with probability LOW_P by
+    geometric skips, then accepted with ``alpha / LOW_P``: the same independent
+    Bernoulli(alpha) draws with far fewer random numbers (most free pixels lie far below
+    the maximum, where alpha = r**16 is tiny).
+    """
+    low = emax * LOW_P ** (1.0 / power)  # pixels at or below this have alpha <= LOW_P
+    log_q = np.log1p(-LOW_P)
+    inv = 1.0 / emax
+    nq = 0
+    skip = _skip(gen, log_q)
+    for i in range(len(dflat)):
+        e = dflat[i] * wflat[i]
+        if e <= cut:
+            continue
+        if e > low:
+            if gen.random() < _alpha(e * inv, power):
+                qbuf[nq] = i
+                nq += 1
+        elif skip > 0:
+            skip -= 1
+        else:
+            if gen.random() * LOW_P < _alpha(e * inv, power):
+                qbuf[nq] = i
+                nq += 1
+            skip = _skip(gen, log_q)
+    return nq
+
+
+@numba.njit(cache=True)
 def _rounds(
     gen, max_rounds, limit, p_count, power, fits, suppress, sup_r, kanch, ka, kdisk, kdo,
     d, w, fx0, fy0, fcell, qbuf, cand, cdraw,
@@ -350,14 +392,7 @@ def _rounds(
                 dmax = dflat[i]
         if emax <= 0.0:
             return NO_FIELD
-        nq = 0
-        cut = emax * thr
-        inv = 1.0 / emax
-        for i in range(npix):
-            e = dflat[i] * wflat[i]
-            if e > cut and gen.random() < _alpha(e * inv, power):
-                qbuf[nq] = i
-                nq += 1
+        nq = _draw_q(gen, dflat, wflat, emax * thr, emax, power, qbuf)
         # -- choose P of them at random (§4.2): a partial Fisher-Yates shuffle
         m = min(nq, p_count)
         for i in range(m):
@@ -509,9 +544,53 @@ def _grid_segments(segs, gx0, gy0, gc, cols, rows):  # pragma: no cover - numba
     return head, nxt, sid
 
 
-def _anchors(kinds: list[ExclusiveRegion], disks: np.ndarray, offsets: np.ndarray, more: int = 16) -> tuple[np.ndarray, np.ndarray]:
+@numba.njit(cache=True)
+def _clearance(v, rings, pts):  # pragma: no cover - numba
+    """Even-odd inside flags of points (m, 2) in all rings of a flat layout, and their
+    distances to the rings' edges."""
+    m = len(pts)
+    inside = np.zeros(m, dtype=np.bool_)
+    dist = np.zeros(m)
+    for j in range(m):
+        px, py = pts[j, 0], pts[j, 1]
+        inside[j] = _inside(px, py, v, rings, 0, len(rings) - 1)
+        best = np.inf
+        for r in range(len(rings) - 1):
+            for i in range(rings[r], rings[r + 1] - 1):
+                ax, ay = v[i, 0], v[i, 1]
+                ex, ey = v[i + 1, 0] - ax, v[i + 1, 1] - ay
+                l2 = ex * ex + ey * ey
+                t = 0.0
+                if l2 > 0.0:
+                    t = min(max(((px - ax) * ex + (py - ay) * ey) / l2, 0.0), 1.0)
+                qx, qy = ax + t * ex - px, ay + t * ey - py
+                best = min(best, qx * qx + qy * qy)
+        dist[j] = np.sqrt(best)
+    return inside, dist
+
+
+def _interior_grid(body: shapely.Geometry, n: int = 24) -> tuple[np.ndarray, np.ndarray]:
+    """Points of an n x n grid over the body's box that lie inside it (not on its
+    boundary), and their distances to its boundary."""
+    x0, y0, x1, y1 = body.bounds
+    gx, gy = np.meshgrid(np.linspace(x0, x1, n), np.linspace(y0, y1, n))
+    pts = np.c_[gx.ravel(), gy.ravel()]
+    v, rings, _ = ring_layout([body])
+    inside, dist = _clearance(v, rings, pts)
+    # not on the boundary (the even-odd test is half-open; distances carry rounding)
+    keep = inside & (dist > 1e-9 * max(x1 - x0, y1 - y0))
+    return pts[keep], dist[keep]
+
+
+def _anchors(grids: list, disks: np.ndarray, offsets: np.ndarray, more: int = 16) -> tuple[np.ndarray, np.ndarray]:
     """Anchor points inside each kind's exclusive region: the centre of its widest disk
     (about its pole of inaccessibility) and ``more`` interior points of a 24 x 24 grid.
+
+    Parameters
+    ----------
+    grids : list of ((m, 2) float, (m,) float)
+        Each kind's interior grid points and clearances (:func:`_interior_grid`).
+    disks, offsets : the kinds' disks (:func:`_disks`)
 
     Returns
     -------
@@ -520,12 +599,9 @@ def _anchors(kinds: list[ExclusiveRegion], disks: np.ndarray, offsets: np.ndarra
     offsets : (K + 1,) int64
     """
     pts, off = [], [0]
-    for j, k in enumerate(kinds):
+    for j in range(len(grids)):
         own = [disks[offsets[j], :2]] if offsets[j + 1] > offsets[j] else []
-        x0, y0, x1, y1 = k.body.bounds
-        gx, gy = np.meshgrid(np.linspace(x0, x1, 24), np.linspace(y0, y1, 24))
-        grid = np.c_[gx.ravel(), gy.ravel()]
-        grid = grid[shapely.contains_xy(k.body, grid[:, 0], grid[:, 1])]
+        grid = grids[j][0]
         if len(grid):
             own.extend(grid[np.unique(np.linspace(0, len(grid) - 1, more).astype(int))])
         pts.extend(own)
@@ -533,12 +609,18 @@ def _anchors(kinds: list[ExclusiveRegion], disks: np.ndarray, offsets: np.ndarra
     return np.asarray(pts, dtype=float).reshape(-1, 2), np.asarray(off, dtype=np.int64)
 
 
-def _disks(kinds: list[ExclusiveRegion], most: int = 8) -> tuple[np.ndarray, np.ndarray]:
+def _disks(grids: list, most: int = 8) -> tuple[np.ndarray, np.ndarray]:
     """Disks inside each kind's exclusive region, for the field's certain rejections.
 
     Greedy: among interior sample points, take the one farthest from the boundary, drop
     the points its disk covers, repeat (at most ``most`` disks, each at least a quarter
     of the widest).
+
+    Parameters
+    ----------
+    grids : list of ((m, 2) float, (m,) float)
+        Each kind's interior grid points and their distances to its boundary
+        (:func:`_interior_grid`).
 
     Returns
     -------
@@ -547,14 +629,7 @@ def _disks(kinds: list[ExclusiveRegion], most: int = 8) -> tuple[np.ndarray, np.
     offsets : (K + 1,) int64
     """
     out, off = [], [0]
-    for k in kinds:
-        body = k.body
-        x0, y0, x1, y1 = body.bounds
-        n = 24
-        gx, gy = np.meshgrid(np.linspace(x0, x1, n), np.linspace(y0, y1, n))
-        pts = np.c_[gx.ravel(), gy.ravel()]
-        pts = pts[shapely.contains_xy(body, pts[:, 0], pts[:, 1])]
-        clear = shapely.distance(shapely.boundary(body), shapely.points(pts)) if len(pts) else np.zeros(0)
+    for pts, clear in grids:
         own = []
         while len(pts) and len(own) < most:
             i = int(np.argmax(clear))
@@ -591,8 +666,9 @@ class FitEngine:
         self.sc_lo = np.array([k.scale[0] for k in kinds], dtype=float)
         self.sc_hi = np.array([k.scale[1] for k in kinds], dtype=float)
         self.cumw = np.zeros(0) if weights is None else np.cumsum(weights)
-        self.kdisk, self.kdo = _disks(kinds)
-        self.kanch, self.ka = _anchors(kinds, self.kdisk, self.kdo)
+        grids = [_interior_grid(k.body) for k in kinds]
+        self.kdisk, self.kdo = _disks(grids)
+        self.kanch, self.ka = _anchors(grids, self.kdisk, self.kdo)
         # grid: cells about the largest element's circumscribed radius
         self.rv, self.rr, _ = ring_layout([domain])
         x0, y0, x1, y1 = domain.bounds
