@@ -30,8 +30,10 @@ inscribed in the kind is wider than the field at its centre allows: the field at
 centre is never below the true distance to the nearest obstacle (exact polygon distances
 after each placement; the initial raster distance is measured to obstacle pixel centres,
 which lie inside obstacles), so such a disk must meet an obstacle. The field only ever
-rejects; it never accepts. The driver in :mod:`._pack` re-checks every accepted element with
-shapely (prepared domain, STRtree), so a rounding accident can never leave an overlap.
+rejects; it never accepts. The exact tests are robust: an orientation or a ray crossing
+too close to call at relative tolerance :data:`TOL` counts as touching, and touching is a
+collision, so an accepted element is certainly disjoint from its neighbours and inside
+the domain, and needs no shapely re-check (``tests/pack`` checks results with shapely).
 """
 
 from __future__ import annotations
@@ -76,27 +78,43 @@ def ring_layout(geoms: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return np.ascontiguousarray(v, dtype=float), np.asarray(rings, dtype=np.int64), np.asarray(owner, dtype=np.int64)
 
 
+# Relative tolerance of the exact tests: an orientation whose value is within TOL of the
+# magnitude of its two products, or a crossing within TOL of the point it is compared
+# with, counts as touching (far above the rounding of these few operations, about
+# 3.3e-16, so the sign of every other decision is certain). Touching is a collision, so
+# doubtful cases are cancelled: a placement the tests accept is disjoint from its
+# neighbours and inside the domain, with no rounding to argue about.
+TOL = 1e-12
+
+
 @numba.njit(cache=True, inline="always")
 def _orient(ax, ay, bx, by, cx, cy):  # pragma: no cover - numba
-    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    """Orientation of c about ab: +1, -1, or 0 when too close to call (within TOL)."""
+    u = (bx - ax) * (cy - ay)
+    v = (by - ay) * (cx - ax)
+    det = u - v
+    if abs(det) <= TOL * (abs(u) + abs(v)):
+        return 0
+    return 1 if det > 0 else -1
 
 
 @numba.njit(cache=True)
 def _seg_hit(ax, ay, bx, by, cx, cy, dx, dy):  # pragma: no cover - numba
-    """Closed segments ab and cd meet (touching counts; collinear overlap counts)."""
+    """Closed segments ab and cd meet, or come too close to call (touching counts;
+    collinear overlap counts)."""
     if max(ax, bx) < min(cx, dx) or max(cx, dx) < min(ax, bx):
         return False
     if max(ay, by) < min(cy, dy) or max(cy, dy) < min(ay, by):
         return False
     d1 = _orient(cx, cy, dx, dy, ax, ay)
     d2 = _orient(cx, cy, dx, dy, bx, by)
+    if d1 * d2 > 0:
+        return False  # ab lies strictly on one side of the line cd
     d3 = _orient(ax, ay, bx, by, cx, cy)
     d4 = _orient(ax, ay, bx, by, dx, dy)
-    if ((d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0)) and ((d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0)):
-        return True
-    # a zero orientation with overlapping boxes: touching or collinear; reject (a
-    # cancellation can only make the test stricter)
-    return d1 == 0 or d2 == 0 or d3 == 0 or d4 == 0
+    # a proper crossing, or a zero orientation with overlapping boxes (touching,
+    # collinear, or too close to call): reject (a cancellation only makes it stricter)
+    return d3 * d4 <= 0
 
 
 @numba.njit(cache=True)
@@ -113,6 +131,26 @@ def _inside(px, py, v, rings, r0, r1):  # pragma: no cover - numba
                 if px < xc:
                     inside = not inside
     return inside
+
+
+@numba.njit(cache=True)
+def _where(px, py, v, rings, r0, r1):  # pragma: no cover - numba
+    """Even-odd point in the rings ``r0:r1``: 1 inside, 0 outside, -1 when a crossing
+    lies within TOL of the point (too close to call)."""
+    inside = False
+    for r in range(r0, r1):
+        for i in range(rings[r], rings[r + 1] - 1):
+            ay = v[i, 1]
+            by = v[i + 1, 1]
+            if (ay > py) != (by > py):
+                ax = v[i, 0]
+                bx = v[i + 1, 0]
+                xc = ax + (py - ay) * (bx - ax) / (by - ay)
+                if abs(px - xc) <= TOL * (abs(px) + abs(ax) + abs(bx)):
+                    return -1
+                if px < xc:
+                    inside = not inside
+    return 1 if inside else 0
 
 
 @numba.njit(cache=True)
@@ -147,11 +185,11 @@ def _polys_hit(av, arings, ar0, ar1, abb, bv, brings, br0, br1, bbb, buf):  # pr
     # ring decides containment either way
     for r in range(ar0, ar1):
         px, py = av[arings[r], 0], av[arings[r], 1]
-        if bbb[0] <= px <= bbb[2] and bbb[1] <= py <= bbb[3] and _inside(px, py, bv, brings, br0, br1):
+        if bbb[0] <= px <= bbb[2] and bbb[1] <= py <= bbb[3] and _where(px, py, bv, brings, br0, br1) != 0:
             return True
     for r in range(br0, br1):
         px, py = bv[brings[r], 0], bv[brings[r], 1]
-        if abb[0] <= px <= abb[2] and abb[1] <= py <= abb[3] and _inside(px, py, av, arings, ar0, ar1):
+        if abb[0] <= px <= abb[2] and abb[1] <= py <= abb[3] and _where(px, py, av, arings, ar0, ar1) != 0:
             return True
     return False
 
@@ -207,12 +245,12 @@ def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp
                             return False
     # every hull ring inside the domain (even-odd over all domain rings)
     for r in range(r0, r1):
-        if not _inside(hv[hr[r], 0], hv[hr[r], 1], rv, rr, 0, len(rr) - 1):
+        if _where(hv[hr[r], 0], hv[hr[r], 1], rv, rr, 0, len(rr) - 1) != 1:
             return False
     # and no domain ring (a hole) inside the hull
     for r in range(len(rr) - 1):
         px, py = rv[rr[r], 0], rv[rr[r], 1]
-        if hbb[0] <= px <= hbb[2] and hbb[1] <= py <= hbb[3] and _inside(px, py, hv, hr, r0, r1):
+        if hbb[0] <= px <= hbb[2] and hbb[1] <= py <= hbb[3] and _where(px, py, hv, hr, r0, r1) != 0:
             return False
     return True
 

@@ -28,7 +28,7 @@ from .._rng import as_rng
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Shape
-from ._exclusive import ExclusiveRegion, build_exclusive_regions, element_origin, transform_many
+from ._exclusive import ExclusiveRegion, build_exclusive_regions, element_origin
 from ._field import DistanceField
 from ._fit import NO_FIELD, RUNNING, FitEngine
 from ._placer import Placer
@@ -338,43 +338,22 @@ def _fill_gap(
     placer.consecutive = engine.consecutive
     info["poses"] = engine.poses
     info["rounds"] = engine.rounds
-    info["dropped"] = _add_checked(placer, engine, n0)
+    _add_step2(placer, engine, n0)
     if status == NO_FIELD:
         return "the distance field has no free pixel left"
     return f"{placer.max_failures} consecutive cancellations"
 
 
-def _add_checked(placer: Placer, engine: FitEngine, n0: int) -> int:
-    """Copy Step 2's elements into ``placer`` after an independent shapely check.
+def _add_step2(placer: Placer, engine: FitEngine, n0: int) -> None:
+    """Copy Step 2's elements (kind and pose) into ``placer``.
 
-    The compiled tests are exact; this re-check (prepared domain, one STRtree query) makes
-    sure that no rounding accident in them can leave an overlap or an element outside
-    the domain. An element that fails it is dropped. Returns the number dropped.
+    The compiled tests are exact and cancel every case too close to call (see
+    :data:`._fit.TOL`), so no shapely re-check follows; the tests in ``tests/pack``
+    check the results against shapely.
     """
     n = len(engine)
-    if n == n0:
-        return 0
-    kind = engine.pkind[n0:n].astype(int)
     pose = engine.pose[n0:n]
-    body = np.empty(n - n0, dtype=object)
-    ok = np.ones(n - n0, dtype=bool)
-    for k, ex in enumerate(placer.kinds):
-        idx = np.flatnonzero(kind == k)
-        if len(idx) == 0:
-            continue
-        body[idx] = transform_many(ex.body, pose[idx, :2], pose[idx, 2], pose[idx, 3])
-        hull = body[idx] if ex.hull is ex.body else transform_many(ex.hull, pose[idx, :2], pose[idx, 2], pose[idx, 3])
-        ok[idx] = shapely.covers(placer.region.prepared, hull)
-    everything = np.concatenate([np.array(placer.geoms, dtype=object).reshape(-1), body])
-    a, b = shapely.STRtree(everything).query(body, predicate="intersects")
-    b_new = b - n0
-    # a pair of new elements: keep the earlier one; a new one against Step 1: drop it
-    clash = (b != a + n0) & ((b < n0) | (b_new < a))
-    ok[a[clash]] = False
-    for i in np.flatnonzero(ok):
-        placer.geoms.append(body[i])
-        placer.kind.append(int(kind[i]))
-        placer.xy.append((float(pose[i, 0]), float(pose[i, 1])))
-        placer.rotation.append(float(pose[i, 2]))
-        placer.scale.append(float(pose[i, 3]))
-    return int((~ok).sum())
+    placer.kind.extend(int(k) for k in engine.pkind[n0:n])
+    placer.xy.extend(map(tuple, pose[:, :2].tolist()))
+    placer.rotation.extend(pose[:, 2].tolist())
+    placer.scale.extend(pose[:, 3].tolist())

@@ -47,6 +47,8 @@ class Placer:
         self.next_kind = 0  # cyclic selection: the kind to place next
         self.consecutive = 0  # consecutive cancellations
         self.trials = 0
+        # exclusive regions placed by this placer's own tests (naive, fill-gap Step 1);
+        # fill-gap Step 2 adds kinds and poses only (its compiled store holds the rings)
         self.geoms: list[shapely.Geometry] = []
         self.kind: list[int] = []
         self.xy: list[tuple[float, float]] = []
@@ -61,7 +63,7 @@ class Placer:
         return self.consecutive >= self.max_failures
 
     def __len__(self) -> int:
-        return len(self.geoms)
+        return len(self.kind)
 
     def _tree_now(self) -> shapely.STRtree | None:
         if self._tree_n != len(self.geoms):
