@@ -45,6 +45,29 @@ def test_brush_elements_follow_the_stroke(tmp_path):
     assert s.status_message()["count"] == len(scene)
 
 
+def test_brush_finishes_the_stroke_when_it_ends(tmp_path, monkeypatch):
+    """Segments grow a bounded number of iterations; the rest grows at stroke end, so
+    the finished stroke holds as many elements as one grown to the end at every segment."""
+    import strew.studio._session as session_module
+
+    def paint(iterations):
+        monkeypatch.setattr(session_module, "BRUSH_ITERATIONS", iterations)
+        s = _session(tmp_path, example="tiles.svg")
+        s.handle({"type": "stroke_start", "tool": "brush", "radius": 100.0, "points": [list(LINE[0])]})
+        for p in LINE[1:]:
+            s.handle({"type": "stroke_move", "points": [list(p)]})
+        return s, bool(s.state.horizon.any()), len(s.state.brush_points), s.handle({"type": "stroke_end"})
+
+    s, growing, left, replies = paint(1)
+    assert growing and left > 0  # growth was left for the stroke's end ...
+    assert not s.state.horizon.any() and len(s.state.brush_points) == 0  # ... and done there
+    assert [m for m in replies if m["type"] == "scene"]  # the finished part is streamed
+    assert s.status_message()["count"] == len(s.scene())
+    assert np.all(_dist_to_path(s.scene().xy, LINE) <= 100.0 + 1e-6)
+    full, *_ = paint(10_000)
+    assert len(s.scene()) >= 0.95 * len(full.scene())
+
+
 def test_brush_output_has_no_overlaps(tmp_path):
     s = _session(tmp_path)
     _stroke(s, "brush", LINE, 50.0)

@@ -48,6 +48,10 @@ MAX_HISTORY = 64
 MAX_SCENE = 200_000
 #: Elements of the small growth shown at once when a spray stroke starts.
 FIRST_SPRAY = 24
+#: Region-growing iterations of the generative brush per stroke segment. Growth that is
+#: left (the last few elements of a segment, which each cost a whole iteration) goes on
+#: with the next segment's horizon and is finished when the stroke ends.
+BRUSH_ITERATIONS = 2
 
 Emit = Callable[[dict[str, Any]], None]
 
@@ -808,6 +812,13 @@ class Session:
         except InputError:
             self._abandon()
             raise
+        if tool == "brush" and stroke["target"] == "scene" and self.state is not None and self.state.n:
+            before = self._scene_count()
+            self._finish_brush()
+            stroke["added"] += max(0, self._scene_count() - before)
+            m = self.scene_message()
+            if m is not None:
+                out.append(m)
         if tool in ("brush", "spray", "erase"):
             self._measure()
             if tool == "erase":
@@ -887,10 +898,30 @@ class Session:
                 if m is not None:
                     emit(m)
 
-            synth.brush(st, pts, radius, reoptimize=reopt, progress=progress)
+            synth.brush(st, pts, radius, reoptimize=reopt, progress=progress, max_iterations=BRUSH_ITERATIONS)
         finally:
             st.region = self.region
         self._drop_state_overlaps(n0, around=pts, reach=radius + 2.0 * float(np.max(st.prep.rbar)))
+
+    def _finish_brush(self) -> None:
+        """Grow what the stroke's segments left (see :data:`BRUSH_ITERATIONS`) and clear B."""
+        from .. import synth
+
+        st = self.state
+        stroke = self.stroke
+        assert st is not None and stroke is not None
+        n0 = st.n
+        if len(st.brush_points):
+            st.region = stroke.get("face", self.region)
+            try:
+                synth.grow(st, should_cancel=self.cancel.is_set)
+            except Cancelled:  # "stop": keep what has grown
+                pass
+            finally:
+                st.region = self.region
+            self._drop_state_overlaps(n0, around=st.brush_points, reach=float(st.brush_radii.max()) + 2.0 * float(np.max(st.prep.rbar)))
+        st.brush_points = np.zeros((0, 2))
+        st.brush_radii = np.zeros(0)
 
     def _drop_state_overlaps(self, n0: int, around: np.ndarray | None = None, reach: float = 0.0) -> None:
         """Remove synthesis elements that overlap others, near the latest change.
