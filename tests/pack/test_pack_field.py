@@ -115,3 +115,31 @@ def test_candidate_draw_is_bernoulli_alpha_per_pixel():
     assert np.all(np.abs(freq - expect) <= 5 * sigma + 1e-6)
     # pixels at or below the cut never join
     assert _draw_q(gen, d, w, 1.0, 1.0, power, qbuf) == 0
+
+
+def test_posed_update_equals_the_plain_update():
+    """The oriented-box skip of _occupy_posed changes no value that _occupy would set."""
+    from strew.pack._field import _occupy, _occupy_posed
+
+    leaf = shapely.Polygon(np.c_[12 * np.cos(np.linspace(0, 2 * np.pi, 24, endpoint=False)),
+                                 2.5 * np.sin(np.linspace(0, 2 * np.pi, 24, endpoint=False))])
+    hook = shapely.Polygon([(-15, -15), (15, -15), (15, -7), (-5, -7), (-5, 7), (15, 7), (15, 15), (-15, 15)])
+    rng = np.random.default_rng(1)
+    region = REGIONS["rectangle"]
+    for body in (leaf, hook):
+        a = DistanceField(region, 0.7)
+        b = DistanceField(region, 0.7)
+        lbb = np.array(body.bounds)
+        local = shapely.get_coordinates(body.exterior)
+        for _ in range(8):
+            t, s = rng.uniform(0, 2 * np.pi), rng.uniform(0.2, 0.6)
+            tx, ty = rng.uniform(5, 55), rng.uniform(5, 47)
+            c, sn = s * np.cos(t), s * np.sin(t)
+            ring = local @ np.array([[c, sn], [-sn, c]]) + (tx, ty)
+            segs = np.ascontiguousarray(np.c_[ring[:-1], ring[1:]])
+            bb = np.r_[ring.min(axis=0), ring.max(axis=0)]
+            grow = max(a.d.max(), b.d.max()) + 0.7
+            _occupy(a.d, a.x0, a.y0, 0.7, segs, np.array([0, len(segs)]), bb[None], grow)
+            _occupy_posed(b.d, b.x0, b.y0, 0.7, segs, bb, grow, tx, ty, c, sn, lbb)
+            assert np.allclose(a.d, b.d, rtol=0, atol=1e-12)
+        assert (a.d == 0).sum() > (DistanceField(region, 0.7).d == 0).sum()  # regions were marked

@@ -9,10 +9,12 @@ The paper's steps are all here; three extensions of §4.2 make each cancellation
   random rotations and scales of its kind before it counts as one cancellation. The
   paper draws one pose (``fits=1``); a narrow gap usually admits an elongated or concave
   element in a few orientations only. The first pose puts the exclusive region's
-  bounding-box centre on the point (T of Eq. 1, as the paper); later ones put one of
-  the kind's anchor points there (the centre of its widest inscribed disk, or an
-  interior point): a concave element's box centre may lie outside it, where a
-  neighbour's arm can sit, and the field never proposes such a point.
+  bounding-box centre on the point (T of Eq. 1, as the paper); later ones alternate
+  between the centre of the widest of the kind's inscribed disks that the gap can hold
+  (its radius at most the field at the point) and one of the kind's anchor points (the
+  centre of its widest disk, or an interior point): a concave element's box centre may
+  lie outside it, where a neighbour's arm can sit, and the field never proposes such a
+  point.
 * **Suppression** (``suppress``): after a cancellation the field's weight is multiplied by
   ``suppress`` in a small disk about the failed point, so that the next candidates explore
   other gaps (like the exclude list of Wong et al.'s framework) instead of spending the
@@ -43,7 +45,7 @@ import numpy as np
 import shapely
 
 from ._exclusive import ExclusiveRegion
-from ._field import _occupy
+from ._field import _occupy_posed
 
 __all__ = ["FitEngine", "ring_layout"]
 
@@ -387,7 +389,7 @@ def _draw_q(gen, dflat, wflat, cut, emax, power, qbuf):  # pragma: no cover - nu
 
 @numba.njit(cache=True)
 def _rounds(
-    gen, max_rounds, limit, p_count, power, fits, suppress, sup_r, kanch, ka, kdisk, kdo,
+    gen, max_rounds, limit, p_count, power, fits, suppress, sup_r, kanch, ka, kdisk, kdo, kbb,
     d, w, fx0, fy0, fcell, qbuf, cand, cdraw,
     kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi, cumw,
     rv, rr, rsegs, rhead, rnext, rsid, rstamp,
@@ -409,8 +411,6 @@ def _rounds(
     for k in range(nkinds):
         maxv = max(maxv, kr[kk[k + 1]] - kr[kk[k]])
         maxr = max(maxr, kk[k + 1] - kk[k])
-    offsets = np.zeros(2, dtype=np.int64)
-    sbb = np.zeros((1, 4))
     blocker = np.full(1, -1, dtype=np.int64)
     thr = 1e-9 ** (1.0 / power)  # pixels below this alpha (1e-9) are skipped without a draw
     for _ in range(max_rounds):
@@ -474,9 +474,17 @@ def _rounds(
                 if t > 0 and ka[k + 1] > ka[k]:
                     # later poses put one of the kind's anchor points (inside its
                     # exclusive region) on the candidate point, not its box centre
-                    a = ka[k] + int(gen.random() * (ka[k + 1] - ka[k]))
-                    x = px - (c * kanch[a, 0] - sn * kanch[a, 1])
-                    y = py - (sn * kanch[a, 0] + c * kanch[a, 1])
+                    if t % 2 == 1:
+                        # the widest of the kind's disks that the gap can hold
+                        a = kdo[k]
+                        while a < kdo[k + 1] - 1 and kdisk[a, 2] * s > dflat[q]:
+                            a += 1
+                        ax_, ay_ = kdisk[a, 0], kdisk[a, 1]
+                    else:
+                        a = ka[k] + int(gen.random() * (ka[k + 1] - ka[k]))
+                        ax_, ay_ = kanch[a, 0], kanch[a, 1]
+                    x = px - (c * ax_ - sn * ay_)
+                    y = py - (sn * ax_ + c * ay_)
                 st[_S_POSES] += 1
                 # certain rejection from the field (extension, §4.2): the field is never
                 # below the true distance to the obstacles at a pixel centre, so a disk
@@ -527,10 +535,7 @@ def _rounds(
                         segs[ns, 2] = pv[i + 1, 0]
                         segs[ns, 3] = pv[i + 1, 1]
                         ns += 1
-                offsets[1] = ns
-                for j in range(4):
-                    sbb[0, j] = cbb[j]
-                _occupy(d, fx0, fy0, fcell, segs[:ns], offsets, sbb, dmax + fcell)
+                _occupy_posed(d, fx0, fy0, fcell, segs[:ns], cbb, dmax + fcell, x, y, c, sn, kbb[k])
                 st[_S_CONSEC] = 0
                 if cumw.size == 0:
                     st[_S_NEXT] = (st[_S_NEXT] + 1) % nkinds
@@ -698,6 +703,7 @@ class FitEngine:
         self.kv, self.kr, self.kk = ring_layout([k.body for k in kinds])
         self.hv, self.hr, self.hk = ring_layout([k.hull for k in kinds])
         self.same_hull = np.array([k.hull is k.body for k in kinds])
+        self.kbb = np.array([shapely.bounds(k.body) for k in kinds], dtype=float).reshape(-1, 4)  # local boxes
         self.rot_lo = np.array([k.rotation[0] for k in kinds], dtype=float)
         self.rot_hi = np.array([k.rotation[1] for k in kinds], dtype=float)
         self.sc_lo = np.array([k.scale[0] for k in kinds], dtype=float)
@@ -781,6 +787,7 @@ class FitEngine:
         while True:
             status = _rounds(
                 gen, rounds, limit, p_count, float(power), fits, float(suppress), float(sup_r), self.kanch, self.ka, self.kdisk, self.kdo,
+                self.kbb,
                 field.d, self.w, field.x0, field.y0, field.cell, self.qbuf, self.cand, self.cdraw,
                 self.kv, self.kr, self.kk, self.hv, self.hr, self.hk, self.same_hull, self.rot_lo, self.rot_hi,
                 self.sc_lo, self.sc_hi, self.cumw,
