@@ -21,10 +21,74 @@ def _pair(o_off, o_kind, e_off, e_kind, d=2.0, kind_cost=1.0, rim=100.0):
     order = np.argsort(np.hypot(*o_off.T), kind="stable")
     o_off = np.ascontiguousarray(o_off[order])
     o_kind = np.asarray(o_kind, np.int64)[order]
+    # exemplar neighbourhoods are sorted by length (pair_cost's precondition); report
+    # pairs and ``used`` in the caller's order
+    e_order = np.argsort(np.hypot(*e_off.T), kind="stable")
+    e_sorted = np.ascontiguousarray(e_off[e_order])
+    e_kind = np.asarray(e_kind, np.int64).reshape(-1)[e_order]
     pair = np.empty(max(len(o_off), 1), np.int64)
     used = np.empty(max(len(e_off), 1), bool)
-    cost = K.pair_cost(o_off, o_kind, np.full(len(o_off), d), e_off, np.asarray(e_kind, np.int64), np.full(len(e_off), d), kind_cost, rim, pair, used)
-    return cost, pair[: len(o_off)], used[: len(e_off)], order
+    elen = np.empty(max(len(e_off), 1))
+    cost = K.pair_cost(o_off, o_kind, np.full(len(o_off), d), e_sorted, e_kind, np.full(len(e_off), d), kind_cost, rim, pair, used, elen)
+    pair = np.where(pair[: len(o_off)] >= 0, e_order[np.maximum(pair[: len(o_off)], 0)], -1) if len(e_off) else pair[: len(o_off)]
+    used_in = np.zeros(len(e_off), bool)
+    used_in[e_order] = used[: len(e_off)]
+    return cost, pair, used_in, order
+
+
+def _pair_brute(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim):
+    """Eq. 1 with greedy pairing, scanning every exemplar neighbour (reference)."""
+    used = np.zeros(len(e_off), bool)
+    pair = np.full(len(o_off), -1)
+    cost = 0.0
+    for i in range(len(o_off)):
+        dd = o_d[i] ** 2
+        best, bestc = -1, np.inf
+        for j in range(len(e_off)):
+            if used[j]:
+                continue
+            r2 = float(np.sum((o_off[i] - e_off[j]) ** 2))
+            if r2 > dd:
+                continue
+            c = r2 + (kind_cost * dd if o_kind[i] != e_kind[j] else 0.0)
+            if c < bestc:
+                best, bestc = j, c
+        pair[i] = best
+        if best >= 0:
+            used[best] = True
+            cost += bestc
+        else:
+            cost += dd
+    for j in range(len(e_off)):
+        lim = rim - 0.5 * e_d[j]
+        if not used[j] and lim > 0 and np.sum(e_off[j] ** 2) <= lim * lim:
+            cost += e_d[j] ** 2
+    return cost, pair, used
+
+
+_offsets = st.lists(st.tuples(st.floats(-12, 12), st.floats(-12, 12), st.integers(0, 1), st.floats(0.5, 4.0)), max_size=14)
+
+
+@given(_offsets, _offsets, st.floats(0.0, 2.0), st.floats(1.0, 15.0))
+def test_banded_pairing_equals_the_full_scan(o, e, kind_cost, rim):
+    """pair_cost scans only the band of exemplar neighbours whose length is within d of
+    the output neighbour's; the result equals the scan of every exemplar neighbour."""
+
+    def unpack(rows):
+        a = np.asarray(rows, float).reshape(-1, 4)
+        a = a[np.argsort(np.hypot(a[:, 0], a[:, 1]), kind="stable")]
+        return np.ascontiguousarray(a[:, :2]), a[:, 2].astype(np.int64), a[:, 3].copy()
+
+    o_off, o_kind, o_d = unpack(o)
+    e_off, e_kind, e_d = unpack(e)
+    pair = np.empty(max(len(o_off), 1), np.int64)
+    used = np.empty(max(len(e_off), 1), bool)
+    elen = np.empty(max(len(e_off), 1))
+    cost = K.pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair, used, elen)
+    ref_cost, ref_pair, ref_used = _pair_brute(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim)
+    assert cost == pytest.approx(ref_cost, rel=1e-12, abs=1e-12)
+    assert np.array_equal(pair[: len(o_off)], ref_pair)
+    assert np.array_equal(used[: len(e_off)], ref_used)
 
 
 def test_identical_neighbourhoods_pair_fully_at_zero_cost():

@@ -51,7 +51,7 @@ def seed_patch(state: SynthState, point: tuple[float, float], *, random: bool = 
     return state.add(ids[ok], pts[ok])
 
 
-def update_free_space(state: SynthState, elems: np.ndarray, tree: cKDTree) -> None:
+def update_free_space(state: SynthState, elems: np.ndarray, tree: cKDTree | None = None) -> None:
     """Remove free-space points covered by output elements and prune the horizon (§5.1).
 
     A free-space point v is covered when an element o satisfies
@@ -135,8 +135,7 @@ def grow(
     t0 = time.perf_counter()
     skipped = [0.0]
     if state.n:
-        tree = cKDTree(state.pos)
-        update_free_space(state, np.flatnonzero(state.horizon), tree)
+        update_free_space(state, np.flatnonzero(state.horizon))
     _record(state, t0, skipped)
     cell_r = float(prep.r.max())
     has_voids = bool(prep.void[prep.selected_elements].any())
@@ -159,6 +158,7 @@ def grow(
         seeds = K.greedy_separated(pos, order, prm.seed_separation * rbar)
         rbar_seeds = rbar[seeds].copy()
         added = 0
+        new_pos: list[np.ndarray] = []
         q_ptr, q_idx, q_off = K.grid_neighborhoods(pos, seeds, rbar[seeds])
         src = state.src
         q_kind = prep.kind[src[q_idx]]
@@ -174,6 +174,7 @@ def grow(
         exv = np.maximum(ex, 0)
         pr = prep.r[exv]
         ok = valid.copy()
+        ftree = None
         if ok.any():
             # candidates must overlap a free-space point (Algorithm 1) ...
             ftree = cKDTree(fpos)
@@ -207,12 +208,13 @@ def grow(
                 new_idx = new_idx[: max(0, max_elements - state.n)]
             new = state.add(ex[new_idx], ppos[new_idx])
             added += len(new)
+            new_pos.append(ppos[new_idx])
             if has_voids and phase == 0 and len(new):
                 _evict_voids(state, new)
         # seeds that could not generate: count a failure on the free space they reach
         failed_pos = seed_pos[~seed_ok]
         if len(failed_pos):
-            ftree_all = cKDTree(fpos)
+            ftree_all = ftree if ftree is not None else cKDTree(fpos)
             lists = ftree_all.query_ball_point(failed_pos, r=rbar_seeds[~seed_ok])
             hit = np.fromiter((j for v in lists for j in v), dtype=np.int64)
             if len(hit):
@@ -222,14 +224,21 @@ def grow(
                 state._alive[fl[state._fails[fl] >= prm.max_failures]] = False
         # -- optimisation (§5.2) ------------------------------------------------------------
         if prm.optimize != "none" and added:
-            active = np.flatnonzero(state.horizon)
             if prm.optimize == "global":
                 optimize(state, None)
             else:
-                optimize(state, active)
+                hz = np.flatnonzero(state.horizon)
+                if len(state.brush_radii):
+                    # While brushing, "recently synthesized elements in the horizon" (§5.2)
+                    # are those within r-bar of this iteration's new elements: the horizon
+                    # also holds elements along the stroke's earlier segments, whose free
+                    # space has not failed yet, and re-optimising them at every iteration
+                    # cost most of the brush's time (tiles: 577 elements optimised per
+                    # iteration for about 20 new ones).
+                    hz = hz[K.near_any(np.ascontiguousarray(state.pos[hz]), np.concatenate(new_pos), float(prep.rbar.max()))]
+                optimize(state, hz)
         # -- update free space and prune the horizon (§5.1) ----------------------------------
-        tree = cKDTree(state.pos)
-        update_free_space(state, np.flatnonzero(state.horizon), tree)
+        update_free_space(state, np.flatnonzero(state.horizon))
         _record(state, t0, skipped)
     rep.done(state.n - start_n)
     return state.n - start_n
@@ -300,22 +309,20 @@ def brush(state: SynthState, points: np.ndarray, radii: np.ndarray | float, *, r
     state.brush_points = np.concatenate([state.brush_points, pts])
     state.brush_radii = np.concatenate([state.brush_radii, rad])
     before = state.n
-    if state.n:
-        tree = cKDTree(state.pos)
-        under = np.unique(np.fromiter((j for v in tree.query_ball_point(pts, r=rad) for j in v), dtype=np.int64))
-    else:
-        under = np.zeros(0, np.int64)
-    near_first = state.n > 0 and len(cKDTree(state.pos).query_ball_point(pts[0], r=rad[0])) > 0
-    if not near_first:
+
+    def within(p: np.ndarray, r: np.ndarray) -> np.ndarray:
+        """Output elements within ``r`` of the points ``p``."""
+        if state.n == 0:
+            return np.zeros(0, np.int64)
+        return np.flatnonzero(K.in_discs(np.ascontiguousarray(state.pos), np.ascontiguousarray(p), np.ascontiguousarray(r, dtype=float)))
+
+    under = within(pts, rad)
+    if len(within(pts[:1], rad[:1])) == 0:
         seed_patch(state, tuple(pts[0]), random=True)
     if len(under) and reoptimize:
         _reoptimize(state, under)
     # elements near the stroke take part in growth again
-    if state.n:
-        tree = cKDTree(state.pos)
-        reach = rad + float(state.prep.rbar.max())
-        near = np.unique(np.fromiter((j for v in tree.query_ball_point(pts, r=reach) for j in v), dtype=np.int64))
-        state._horizon[near] = True
+    state._horizon[within(pts, rad + float(state.prep.rbar.max()))] = True
     grow(state, **kwargs)
     _drop_spent_brush_points(state)
     return state.n - before
@@ -324,9 +331,8 @@ def brush(state: SynthState, points: np.ndarray, radii: np.ndarray | float, *, r
 def _reoptimize(state: SynthState, idx: np.ndarray) -> None:
     """Brushing over elements: re-match them over the whole selection and relax them."""
     prep = state.prep
-    tree = cKDTree(state.pos)
     allc = np.tile(np.flatnonzero(prep.selected_elements).astype(np.int64), (len(idx), 1))
-    best, _cost, *_ = match_neighborhoods(state, idx, tree, candidates=allc)
+    best, _cost, *_ = match_neighborhoods(state, idx, None, candidates=allc)
     ok = best >= 0
     changed = idx[ok][state.src[idx[ok]] != best[ok]]
     state.reassign(changed, best[ok][state.src[idx[ok]] != best[ok]])

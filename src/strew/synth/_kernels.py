@@ -37,7 +37,7 @@ def map_offset(px: float, py: float, ox: float, oy: float) -> tuple[float, float
 
 
 @numba.njit(cache=True)
-def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used):
+def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used, elen):
     """Neighbourhood distance |n(o) - n(e)| of Eq. 1 with greedy pair assignment (§4).
 
     Parameters
@@ -48,7 +48,10 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
     o_d : (m,) float
         Pairing thresholds ``d_o' = 2 r_o'``.
     e_off : (q, 2) float
-        Exemplar neighbourhood offsets ``p_e' - p_e``.
+        Exemplar neighbourhood offsets ``p_e' - p_e``, sorted by length (as every
+        neighbourhood of :class:`Prepared` is): an output neighbour at distance ``l``
+        can only pair with exemplar neighbours whose length is within ``d`` of ``l``,
+        so only that band is scanned (found by bisection).
     e_kind : (q,) int
     e_d : (q,) float
     kind_cost : float
@@ -64,6 +67,8 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
     used : (q,) bool, output
         True for exemplar neighbours in a full pair; the others are the right-partial
         pairs (0, e').
+    elen : (q,) float, scratch
+        Lengths of ``e_off`` (overwritten).
 
     Returns
     -------
@@ -74,6 +79,7 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
     q = e_off.shape[0]
     for j in range(q):
         used[j] = False
+        elen[j] = np.sqrt(e_off[j, 0] * e_off[j, 0] + e_off[j, 1] * e_off[j, 1])
     cost = 0.0
     for i in range(m):
         dd = o_d[i] * o_d[i]
@@ -81,7 +87,21 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
         bestc = INF
         ox = o_off[i, 0]
         oy = o_off[i, 1]
-        for j in range(q):
+        ol = np.sqrt(ox * ox + oy * oy)
+        # band of exemplar neighbours that can lie within d: | |o| - |e| | <= |o - e| <= d
+        lo = ol - o_d[i] - 1e-9 * (1.0 + ol)
+        hi = ol + o_d[i] + 1e-9 * (1.0 + ol)
+        j0 = 0
+        j1 = q
+        while j0 < j1:  # first j with elen[j] >= lo
+            mid = (j0 + j1) // 2
+            if elen[mid] < lo:
+                j0 = mid + 1
+            else:
+                j1 = mid
+        for j in range(j0, q):
+            if elen[j] > hi:
+                break
             if used[j]:
                 continue
             dx = ox - e_off[j, 0]
@@ -156,6 +176,7 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
         maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
     pair = np.empty(maxm, np.int64)
     used = np.empty(maxq, np.bool_)
+    elen = np.empty(maxq)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         s = q_src[i]
@@ -164,7 +185,7 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
             for t in range(eb - ea):
                 if not used[t] and not _inside_convex(hp[s], hp_n[s], q_pos[i, 0] + e_off[ea + t, 0], q_pos[i, 1] + e_off[ea + t, 1]):
                     cost -= e_d[ea + t] * e_d[ea + t]
@@ -203,6 +224,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
         maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
     pair = np.empty(maxm, np.int64)
     used = np.empty(maxq, np.bool_)
+    elen = np.empty(maxq)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         for j in range(k):
@@ -210,7 +232,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
             out[i, j] = cost + _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
     return out
 
@@ -253,6 +275,7 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
         maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
     pair = np.empty(maxm, np.int64)
     used = np.empty(max(maxq, 1), np.bool_)
+    elen = np.empty(max(maxq, 1))
     for i in range(ns):
         a, b = q_ptr[i], q_ptr[i + 1]
         px, py = seed_pos[i, 0], seed_pos[i, 1]
@@ -261,7 +284,7 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
             w = out_ptr[i * k + j]
             n = 0
             for t in range(eb - ea):
@@ -419,6 +442,7 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
         maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
     pair = np.empty(maxm, np.int64)
     used = np.empty(maxq, np.bool_)
+    elen = np.empty(maxq)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         for j in range(k):
@@ -426,7 +450,7 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
             cost += _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
             if cost < bcost[i]:
                 bcost[i] = cost
@@ -444,7 +468,7 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
             continue
         a, b = q_ptr[i], q_ptr[i + 1]
         ea, eb = e_ptr[c], e_ptr[c + 1]
-        pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used)
+        pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
         for t in range(b - a):
             if pair[t] >= 0:
                 con_q[n] = i
@@ -579,6 +603,51 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
                         lim = max(lim, min_dist[qsk[i], osk[j]])
                     lim = max(lim, qcover[i])
                     if dx * dx + dy * dy < lim * lim:
+                        hit = True
+                        break
+                    j = nxt[j]
+                if hit:
+                    break
+            if hit:
+                break
+        out[i] = hit
+    return out
+
+
+@numba.njit(cache=True)
+def in_discs(pts, centers, radii):
+    """(n,) bool: which ``pts`` lie in some disc ``(centers[j], radii[j])`` (grid search)."""
+    n = pts.shape[0]
+    m = centers.shape[0]
+    out = np.zeros(n, np.bool_)
+    if n == 0 or m == 0:
+        return out
+    cell = max(radii.max(), 1e-12)
+    x0 = centers[:, 0].min()
+    y0 = centers[:, 1].min()
+    nx = int((centers[:, 0].max() - x0) / cell) + 1
+    ny = int((centers[:, 1].max() - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(m, -1, np.int64)
+    for j in range(m):
+        g = int((centers[j, 0] - x0) / cell) * ny + int((centers[j, 1] - y0) / cell)
+        nxt[j] = head[g]
+        head[g] = j
+    for i in range(n):
+        fx = (pts[i, 0] - x0) / cell
+        fy = (pts[i, 1] - y0) / cell
+        if fx < -1.0 or fy < -1.0 or fx >= nx + 1.0 or fy >= ny + 1.0:
+            continue
+        gx = int(np.floor(fx))
+        gy = int(np.floor(fy))
+        hit = False
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    dx = pts[i, 0] - centers[j, 0]
+                    dy = pts[i, 1] - centers[j, 1]
+                    if dx * dx + dy * dy <= radii[j] * radii[j]:
                         hit = True
                         break
                     j = nxt[j]

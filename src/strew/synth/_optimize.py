@@ -13,7 +13,7 @@ from ._state import SynthState, map_offsets
 __all__ = ["optimize", "expanded_horizon", "prediction_weights", "match_neighborhoods"]
 
 
-def expanded_horizon(state: SynthState, horizon: np.ndarray, tree: cKDTree) -> np.ndarray:
+def expanded_horizon(state: SynthState, horizon: np.ndarray, tree: cKDTree | None = None) -> np.ndarray:
     """H-bar (§5.2): the horizon plus every element within the largest neighbourhood
     radius of the selection from a horizon element.
 
@@ -29,10 +29,12 @@ def expanded_horizon(state: SynthState, horizon: np.ndarray, tree: cKDTree) -> n
     return np.flatnonzero(near)
 
 
-def match_neighborhoods(state: SynthState, query: np.ndarray, tree: cKDTree, candidates: np.ndarray | None = None):
+def match_neighborhoods(state: SynthState, query: np.ndarray, tree: cKDTree | None = None, candidates: np.ndarray | None = None):
     """Most similar exemplar neighbourhood for each query element and its full pairs.
 
     ``candidates`` (m, c) defaults to the k-coherence set of each element's origin.
+    ``tree`` is accepted for compatibility and unused (neighbourhoods come from a
+    uniform grid).
     """
     prep = state.prep
     pos = state.pos
@@ -107,8 +109,6 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     if n < 2:
         return 0.0
     pos = state.pos
-    if tree is None:
-        tree = cKDTree(pos)
     if horizon is None:
         hbar = np.arange(n)
         in_h = np.ones(n, bool)
@@ -171,7 +171,7 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
         step = state._pos[moved].copy()
         for frac in (1.0, 0.5):
             state._pos[moved] = old + frac * (step - old)
-            _, cost1, *_ = match_neighborhoods(state, hbar, cKDTree(state.pos))
+            _, cost1, *_ = match_neighborhoods(state, hbar, None)
             if float(np.sum(cost1[ok])) <= e0:
                 break
         else:

@@ -271,14 +271,10 @@ class SynthState:
     def in_domain(self, pts: np.ndarray) -> np.ndarray:
         """(n,) bool: inside the region and, while brushing, inside a brush disc."""
         ok = np.ones(len(pts), bool)
-        if self.region is not None and len(pts):
-            ok &= self.region.contains(pts)
         if len(self.brush_radii) and len(pts):
-            tree = cKDTree(self.brush_points)
-            d, j = tree.query(pts, k=min(4, len(self.brush_radii)))
-            d = d.reshape(len(pts), -1)
-            j = j.reshape(len(pts), -1)
-            ok &= np.any(d <= self.brush_radii[np.minimum(j, len(self.brush_radii) - 1)], axis=1)
+            ok = K.in_discs(np.ascontiguousarray(pts, dtype=float), np.ascontiguousarray(self.brush_points, dtype=float), np.ascontiguousarray(self.brush_radii, dtype=float))
+        if self.region is not None and ok.any():
+            ok[ok] = self.region.contains(pts[ok])
         return ok
 
     def conflicts(self, pts: np.ndarray, src: np.ndarray | None, tree: cKDTree | None = None, cover: np.ndarray | None = None, r: np.ndarray | None = None, visible_only: bool = False) -> np.ndarray:
