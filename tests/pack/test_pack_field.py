@@ -92,29 +92,41 @@ def test_interior_grid_agrees_with_shapely(geom):
 
 
 def test_candidate_draw_is_bernoulli_alpha_per_pixel():
-    """Geometric skips below LOW_P give the same law: pixel i joins Q with (e/emax)**n."""
-    from strew.pack._fit import LOW_P, _draw_q
+    """Block-bounded geometric skips give the same law: pixel i joins Q with (e/emax)**n."""
+    from strew.pack._fit import BLOCK, _block_max, _draw_q
 
     power = 16.0
-    # one pixel per level, from the maximum down to just above the cut
-    r = np.r_[1.0, 0.97, 0.9, 0.8, LOW_P ** (1 / power), 0.7, 0.6, 0.5]
-    d = np.repeat(r, 50)
-    w = np.ones_like(d)
-    alpha = d**power
+    # levels from the maximum down to just above the cut, spread over blocks of every kind
+    # (a block holding the maximum, blocks far below it, partial blocks at the edges)
+    levels = np.r_[1.0, 0.97, 0.9, 0.8, 0.77, 0.7, 0.6, 0.5]
+    rows, cols = 3 * BLOCK + 3, 4 * BLOCK + 5
+    rng = np.random.default_rng(0)
+    d = levels[rng.integers(0, len(levels), (rows, cols))]
+    d[rng.random((rows, cols)) < 0.1] = 0.0  # obstacles
+    w = np.where(rng.random((rows, cols)) < 0.2, 0.95, 1.0)  # some suppression
+    e = d * w
+    emax = e.max()
+    alpha = np.where(e > 0.4, (e / emax) ** power, 0.0)
+    nb = ((rows + BLOCK - 1) // BLOCK) * ((cols + BLOCK - 1) // BLOCK)
+    bme, bmd = np.zeros(nb), np.zeros(nb)
+    _block_max(d, w, bme, bmd, 0, (rows + BLOCK - 1) // BLOCK, 0, (cols + BLOCK - 1) // BLOCK)
+    assert bme.max() == emax and bmd.max() == d.max()
     gen = np.random.default_rng(5)
     qbuf = np.zeros(d.size, dtype=np.int64)
     hits = np.zeros(d.size)
-    trials = 4000
+    trials = 3000
     for _ in range(trials):
-        n = _draw_q(gen, d, w, 0.4, 1.0, power, qbuf)
-        assert np.all(np.diff(qbuf[:n]) > 0)  # pixel order, no repeats
+        n = _draw_q(gen, d, w, bme, 0.4, emax, power, qbuf)
+        assert len(np.unique(qbuf[:n])) == n
         hits[qbuf[:n]] += 1
-    freq = hits.reshape(len(r), 50).sum(1) / (50 * trials)
-    expect = alpha.reshape(len(r), 50)[:, 0]
-    sigma = np.sqrt(expect * (1 - expect) / (50 * trials))
-    assert np.all(np.abs(freq - expect) <= 5 * sigma + 1e-6)
-    # pixels at or below the cut never join
-    assert _draw_q(gen, d, w, 1.0, 1.0, power, qbuf) == 0
+    flat = alpha.ravel()
+    assert np.all(hits[flat == 0] == 0)  # obstacles and pixels at or below the cut
+    # per level, the frequency matches alpha within 5 sigma
+    for a in np.unique(flat[flat > 0]):
+        sel = flat == a
+        freq = hits[sel].sum() / (sel.sum() * trials)
+        sigma = np.sqrt(a * (1 - a) / (sel.sum() * trials))
+        assert abs(freq - a) <= 5 * sigma + 1e-6, (a, freq)
 
 
 def test_posed_update_equals_the_plain_update():

@@ -310,6 +310,20 @@ def _edt(free):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
+def _seg_dist2(px, py, ax, ay, ex, ey, il2, best):  # pragma: no cover - numba
+    """Smallest squared distance from (px, py) to segments ``a + t e`` (``il2 = 1 / |e|**2``,
+    0 for a point), starting from ``best``; branch-free, so the loop vectorises."""
+    for k in range(len(ax)):
+        dx = px - ax[k]
+        dy = py - ay[k]
+        t = min(max((dx * ex[k] + dy * ey[k]) * il2[k], 0.0), 1.0)
+        qx = dx - t * ex[k]
+        qy = dy - t * ey[k]
+        best = min(best, qx * qx + qy * qy)
+    return best
+
+
+@numba.njit(cache=True)
 def _occupy_posed(d, x0, y0, cell, segs, bounds, grow, tx, ty, c, sn, lbb):  # pragma: no cover - numba
     """:func:`_occupy` for one region placed with a known pose: its rings are a kind's
     rings ``p`` in local coordinates mapped to ``(tx, ty) + (c, -sn; sn, c) p`` (``c = s
@@ -319,9 +333,21 @@ def _occupy_posed(d, x0, y0, cell, segs, bounds, grow, tx, ty, c, sn, lbb):  # p
     (oriented) local box is at least its current value: the region lies in that box,
     so it is no nearer. For rotated elongated regions this skips most of the window.
     Skipping is safe in any case: a value left as it was is still at least the true
-    distance.
+    distance. Inside tests use each row's crossings (the same even-odd rule), so the
+    distance loop over the edges has no branches.
     """
     rows, cols = d.shape
+    ns = len(segs)
+    ax = segs[:, 0].copy()
+    ay = segs[:, 1].copy()
+    ex = segs[:, 2] - segs[:, 0]
+    ey = segs[:, 3] - segs[:, 1]
+    l2 = ex * ex + ey * ey
+    il2 = np.zeros(ns)
+    for k in range(ns):
+        if l2[k] > 0.0:
+            il2[k] = 1.0 / l2[k]
+    xs = np.empty(ns)
     s2 = c * c + sn * sn
     c0 = max(int(np.floor((bounds[0] - grow - x0) / cell)), 0)
     r0 = max(int(np.floor((bounds[1] - grow - y0) / cell)), 0)
@@ -329,6 +355,13 @@ def _occupy_posed(d, x0, y0, cell, segs, bounds, grow, tx, ty, c, sn, lbb):  # p
     r1 = min(int(np.ceil((bounds[3] + grow - y0) / cell)) + 1, rows)
     for r in range(r0, r1):
         py = y0 + (r + 0.5) * cell
+        m = 0  # this row's crossings (as in _occupy: half-open in y)
+        for k in range(ns):
+            ay_ = segs[k, 1]
+            by_ = segs[k, 3]
+            if (ay_ > py) != (by_ > py):
+                xs[m] = segs[k, 0] + (py - ay_) * (segs[k, 2] - segs[k, 0]) / (by_ - ay_)
+                m += 1
         for cc in range(c0, c1):
             cur = d[r, cc]
             if cur <= 0.0:
@@ -347,32 +380,13 @@ def _occupy_posed(d, x0, y0, cell, segs, bounds, grow, tx, ty, c, sn, lbb):  # p
             oy = max(lbb[1] - ly, 0.0, ly - lbb[3])
             if (ox * ox + oy * oy) * s2 >= cur * cur:
                 continue
-            best = cur * cur
             inside = False
-            for k in range(len(segs)):
-                ax = segs[k, 0]
-                ay = segs[k, 1]
-                by = segs[k, 3]
-                ex = segs[k, 2] - ax
-                ey = by - ay
-                if (ay > py) != (by > py):
-                    xc = ax + (py - ay) * ex / ey
-                    if px < xc:
-                        inside = not inside
-                l2 = ex * ex + ey * ey
-                t = 0.0
-                if l2 > 0.0:
-                    t = ((px - ax) * ex + (py - ay) * ey) / l2
-                    if t < 0.0:
-                        t = 0.0
-                    elif t > 1.0:
-                        t = 1.0
-                qx = ax + t * ex - px
-                qy = ay + t * ey - py
-                dd = qx * qx + qy * qy
-                if dd < best:
-                    best = dd
+            for j in range(m):
+                if px < xs[j]:
+                    inside = not inside
             if inside:
                 d[r, cc] = 0.0
-            elif best < cur * cur:
+                continue
+            best = _seg_dist2(px, py, ax, ay, ex, ey, il2, cur * cur)
+            if best < cur * cur:
                 d[r, cc] = np.sqrt(best)

@@ -51,8 +51,8 @@ __all__ = ["FitEngine", "ring_layout"]
 
 # kernel status codes
 RUNNING, DONE, NEED_ROOM, NO_FIELD = 0, 1, 2, 3
-# candidate sampling: bound of the pixels drawn by geometric skips (see _rounds)
-LOW_P = 1.0 / 64.0
+# candidate sampling: side of the pixel blocks whose maxima bound the draw (see _draw_q)
+BLOCK = 8
 # indices into the integer state vector
 _S_CONSEC, _S_NEXT, _S_TRIALS, _S_POSES, _S_NP, _S_NV, _S_NR, _S_NE, _S_QID, _S_ROUNDS = range(10)
 
@@ -348,42 +348,78 @@ def _alpha(r, power):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
-def _skip(gen, log_q):  # pragma: no cover - numba
-    """Failures before the first success of Bernoulli(LOW_P) trials (geometric law)."""
-    return int(np.floor(np.log1p(-gen.random()) / log_q))
+def _block_max(d, w, bme, bmd, br0, br1, bc0, bc1):  # pragma: no cover - numba
+    """Refresh the maxima of ``e = d w`` and of ``d`` over the BLOCK x BLOCK pixel
+    blocks ``br0:br1`` x ``bc0:bc1``."""
+    rows, cols = d.shape
+    bcols = (cols + BLOCK - 1) // BLOCK
+    for br in range(br0, br1):
+        for bc in range(bc0, bc1):
+            me = 0.0
+            md = 0.0
+            for r in range(br * BLOCK, min(br * BLOCK + BLOCK, rows)):
+                for c in range(bc * BLOCK, min(bc * BLOCK + BLOCK, cols)):
+                    md = max(md, d[r, c])
+                    me = max(me, d[r, c] * w[r, c])
+            bme[br * bcols + bc] = me
+            bmd[br * bcols + bc] = md
 
 
 @numba.njit(cache=True)
-def _draw_q(gen, dflat, wflat, cut, emax, power, qbuf):  # pragma: no cover - numba
-    """Candidate points Q (§4.2): each pixel i with ``e = d[i] w[i] > cut`` joins with
-    probability ``alpha = (e / emax)**power``, independently; their indices go to
-    ``qbuf``, in pixel order. Returns their number.
+def _refresh(d, w, bme, bmd, r0, r1, c0, c1):  # pragma: no cover - numba
+    """Refresh the block maxima after a change to pixels ``r0:r1`` x ``c0:c1``."""
+    rows, cols = d.shape
+    r0 = max(r0, 0)
+    c0 = max(c0, 0)
+    r1 = min(r1, rows)
+    c1 = min(c1, cols)
+    if r1 > r0 and c1 > c0:
+        _block_max(d, w, bme, bmd, r0 // BLOCK, (r1 - 1) // BLOCK + 1, c0 // BLOCK, (c1 - 1) // BLOCK + 1)
 
-    Pixels whose alpha is at most LOW_P are first thinned with probability LOW_P by
-    geometric skips, then accepted with ``alpha / LOW_P``: the same independent
-    Bernoulli(alpha) draws with far fewer random numbers (most free pixels lie far below
-    the maximum, where alpha = r**16 is tiny).
+
+@numba.njit(cache=True)
+def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
+    """Candidate points Q (§4.2): each pixel with ``e = d w > cut`` joins with probability
+    ``alpha = (e / emax)**power``, independently; their flat indices go to ``qbuf``.
+    Returns their number.
+
+    Pixels are visited by blocks. In a block whose largest e gives ``pb = (max e /
+    emax)**power``, pixels are first picked with probability pb by geometric skips
+    (the pixels between are never read), then accepted with ``alpha / pb``: the same
+    independent Bernoulli(alpha) draws, at a cost that follows the expected number of
+    points rather than the number of pixels (most blocks lie far below the maximum,
+    where alpha = r**16 is tiny). Blocks at or below the cut are skipped whole.
     """
-    low = emax * LOW_P ** (1.0 / power)  # pixels at or below this have alpha <= LOW_P
-    log_q = np.log1p(-LOW_P)
+    rows, cols = d.shape
+    bcols = (cols + BLOCK - 1) // BLOCK
     inv = 1.0 / emax
     nq = 0
-    skip = _skip(gen, log_q)
-    for i in range(len(dflat)):
-        e = dflat[i] * wflat[i]
-        if e <= cut:
+    for b in range(len(bme)):
+        if bme[b] <= cut:
             continue
-        if e > low:
-            if gen.random() < _alpha(e * inv, power):
-                qbuf[nq] = i
-                nq += 1
-        elif skip > 0:
-            skip -= 1
+        r0 = (b // bcols) * BLOCK
+        c0 = (b % bcols) * BLOCK
+        bh = min(BLOCK, rows - r0)
+        bw = min(BLOCK, cols - c0)
+        n = bh * bw
+        pb = _alpha(bme[b] * inv, power)
+        if pb >= 0.5:
+            j = 0
+            step = 0.0
         else:
-            if gen.random() * LOW_P < _alpha(e * inv, power):
-                qbuf[nq] = i
+            step = 1.0 / np.log1p(-pb)
+            j = int(np.floor(np.log1p(-gen.random()) * step))
+        while j < n:
+            r = r0 + j // bw
+            c = c0 + j % bw
+            e = d[r, c] * w[r, c]
+            if e > cut and gen.random() * pb < _alpha(e * inv, power):
+                qbuf[nq] = r * cols + c
                 nq += 1
-            skip = _skip(gen, log_q)
+            if step == 0.0:
+                j += 1
+            else:
+                j += 1 + int(np.floor(np.log1p(-gen.random()) * step))
     return nq
 
 
@@ -402,7 +438,6 @@ def _rounds(
     loop returns NEED_ROOM before a round that could overflow it.
     """
     rows, cols = d.shape
-    npix = rows * cols
     dflat = d.ravel()
     wflat = w.ravel()
     nkinds = len(kk) - 1
@@ -413,6 +448,11 @@ def _rounds(
         maxr = max(maxr, kk[k + 1] - kk[k])
     blocker = np.full(1, -1, dtype=np.int64)
     thr = 1e-9 ** (1.0 / power)  # pixels below this alpha (1e-9) are skipped without a draw
+    # maxima of e = d w and of d over pixel blocks, kept up to date below
+    nb = ((rows + BLOCK - 1) // BLOCK) * ((cols + BLOCK - 1) // BLOCK)
+    bme = np.zeros(nb)
+    bmd = np.zeros(nb)
+    _block_max(d, w, bme, bmd, 0, (rows + BLOCK - 1) // BLOCK, 0, (cols + BLOCK - 1) // BLOCK)
     for _ in range(max_rounds):
         if (st[_S_NP] + p_count > caps[0] or st[_S_NV] + p_count * maxv > caps[1]
                 or st[_S_NR] + p_count * maxr > caps[2] or st[_S_NE] + p_count * 9 > caps[3]):
@@ -420,17 +460,11 @@ def _rounds(
         st[_S_ROUNDS] += 1
         # -- candidate points Q: each pixel with probability (e / max e)**n (§4.2), where
         #    e is the distance d times the suppression weight
-        emax = 0.0
-        dmax = 0.0
-        for i in range(npix):
-            e = dflat[i] * wflat[i]
-            if e > emax:
-                emax = e
-            if dflat[i] > dmax:
-                dmax = dflat[i]
+        emax = bme.max()
+        dmax = bmd.max()
         if emax <= 0.0:
             return NO_FIELD
-        nq = _draw_q(gen, dflat, wflat, emax * thr, emax, power, qbuf)
+        nq = _draw_q(gen, d, w, bme, emax * thr, emax, power, qbuf)
         # -- choose P of them at random (§4.2): a partial Fisher-Yates shuffle
         m = min(nq, p_count)
         for i in range(m):
@@ -535,7 +569,12 @@ def _rounds(
                         segs[ns, 2] = pv[i + 1, 0]
                         segs[ns, 3] = pv[i + 1, 1]
                         ns += 1
-                _occupy_posed(d, fx0, fy0, fcell, segs[:ns], cbb, dmax + fcell, x, y, c, sn, kbb[k])
+                grow = dmax + fcell
+                _occupy_posed(d, fx0, fy0, fcell, segs[:ns], cbb, grow, x, y, c, sn, kbb[k])
+                _refresh(d, w, bme, bmd, int(np.floor((cbb[1] - grow - fy0) / fcell)),
+                         int(np.ceil((cbb[3] + grow - fy0) / fcell)) + 1,
+                         int(np.floor((cbb[0] - grow - fx0) / fcell)),
+                         int(np.ceil((cbb[2] + grow - fx0) / fcell)) + 1)
                 st[_S_CONSEC] = 0
                 if cumw.size == 0:
                     st[_S_NEXT] = (st[_S_NEXT] + 1) % nkinds
@@ -552,6 +591,7 @@ def _rounds(
                             ddy = fy0 + (r + 0.5) * fcell - py
                             if ddx * ddx + ddy * ddy <= sup_r * sup_r:
                                 w[r, c] *= suppress
+                    _refresh(d, w, bme, bmd, rq - rad, rq + rad + 1, cc - rad, cc + rad + 1)
                 if st[_S_CONSEC] >= limit:
                     return DONE
     return RUNNING
