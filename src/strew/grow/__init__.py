@@ -5,6 +5,7 @@
 rotation modes, the spray, flow-field and boundary tools, per-element variation and a
 least-squares relaxation. :func:`flip_edge` edits the connectivity (Fig. 3) and
 :func:`relax_positions` is the relaxation of Eq. 5 / Eq. 6 on its own.
+:class:`SprayGrowth` is the spray tool as one growth that follows a stroke (§3, §5.1).
 """
 
 from __future__ import annotations
@@ -21,9 +22,11 @@ from ._analysis import Reference, analyze, delaunay_edges, flip_edge
 from ._growth import GrowParams, grow_reference
 from ._match import matching_set, match_references, order_target
 from ._relax import relax_positions
+from ._spray import SprayGrowth
 
 __all__ = [
     "grow",
+    "SprayGrowth",
     "analyze",
     "flip_edge",
     "Reference",

@@ -29,6 +29,8 @@ from ._relax import relax_positions
 __all__ = ["GrowParams", "grow_reference"]
 
 DEAD, SEED, ELEMENT = 0, 1, 2
+#: Elements the growth must not overlap but does not own (a scene the spray paints over).
+OBSTACLE = 3
 
 
 @dataclass
@@ -182,7 +184,13 @@ class _Grower:
         self.steps_since_relax = 0
         self.ring_n: dict[int, int] = {}
         self.max_scale = 1.0
+        self.other_rmax = float(self.kind_radius.max())  # bounding radius of any element or obstacle
         self._last_nb = np.zeros(0, dtype=np.int64)
+        # incremental spray (see :class:`strew.grow.SprayGrowth`): seeds outside the spray
+        # area wait here instead of being dropped, and grow once the cursor reaches them
+        self.waiting: list[int] | None = None
+        self.s0 = -1
+        self.first = True
 
     # -- storage ------------------------------------------------------------------------
     def _grow_capacity(self) -> None:
@@ -323,8 +331,8 @@ class _Grower:
         return shapely.transform(local, lambda q: q @ m.T + t)
 
     def overlaps_any(self, g: Any, kind: int, x: float, y: float, scale: float, skip: set[int] | None = None) -> bool:
-        r = self.kind_radius[kind] * scale + self.kind_radius.max() * self.max_scale
-        others = [j for j in self.near(x, y, r, (ELEMENT,)) if not skip or j not in skip]
+        r = self.kind_radius[kind] * scale + self.other_rmax
+        others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if not skip or j not in skip]
         if not others:
             return False
         gs = np.array([self.geom[j] for j in others], dtype=object)
@@ -344,8 +352,8 @@ class _Grower:
         """Elements whose geometry overlaps element ``g`` (area overlap, or any contact of strokes)."""
         kind = int(self.kind[g])
         x, y = self.pos[g]
-        r = self.kind_radius[kind] * self.scl[g] + self.kind_radius.max() * self.max_scale
-        others = [j for j in self.near(x, y, r, (ELEMENT,)) if j != g]
+        r = self.kind_radius[kind] * self.scl[g] + self.other_rmax
+        others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if j != g]
         if not others:
             return []
         geom = self.geom[g]
@@ -630,6 +638,9 @@ class _Grower:
             # relaxation never takes a centre out of the region or across a boundary stroke
             if not self.in_domain(nx, ny) or self.crosses_boundary((ox, oy), (nx, ny)):
                 continue
+            # nor an element's centre out of the spray area (§5.1: elements grow within it)
+            if self.spray_area is not None and self.state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
+                continue
             moved.append(g)
         old = {g: (float(self.pos[g, 0]), float(self.pos[g, 1]), self.geom[g]) for g in moved}
         for g in moved:
@@ -660,18 +671,38 @@ class _Grower:
     # -- main loop --------------------------------------------------------------------------
     def run(self, start: tuple[float, float], rep: Reporter) -> None:
         p = self.p
+        self.begin(start)
+        self.advance(rep, p.count if p.count is not None else p.max_elements)
+        self.settle()
+
+    def begin(self, start: tuple[float, float]) -> None:
+        """§5.1: place the single initial seed at ``start``."""
+        p = self.p
         self.max_scale = float(self.ex_scale.max()) * (1.0 + p.jitter_scale)
+        self.other_rmax = max(self.other_rmax, float(self.kind_radius.max()) * self.max_scale)
         self.origin = start
-        s0 = self.new_object(start[0], start[1], p.start_kind)
-        first = True
-        target = p.count if p.count is not None else p.max_elements
+        self.s0 = self.new_object(start[0], start[1], p.start_kind)
+        self.first = True
+
+    def advance(self, rep: Reporter, target: int, pause: int | None = None) -> bool:
+        """Growth steps until ``target`` elements or no seed can grow.
+
+        With ``pause``, stop early once ``pause`` elements exist and the windowed
+        relaxation has just run (so pausing changes nothing); returns True when paused.
+        """
+        p = self.p
         while self.heap and len(self.order) < target:
+            if pause is not None and len(self.order) >= pause and (not p.relax or self.steps_since_relax == 0):
+                return True
             _, s = heapq.heappop(self.heap)
             if self.state[s] != SEED or s in self.deferred:
                 continue
             x, y = self.pos[s]
             if self.spray_area is not None and not shapely.contains_xy(self.spray_area, x, y):
-                continue  # §5.1 spray tool: only seeds within the radius grow; others wait
+                # §5.1 spray tool: only seeds within the radius grow; others wait
+                if self.waiting is not None:
+                    self.waiting.append(s)
+                continue
             if not self.in_domain(x, y):
                 self.kill(s)
                 continue
@@ -683,9 +714,9 @@ class _Grower:
                 self.kill(s)
                 self.release_deferred(s)
                 continue
-            if first:
-                self.fixed[s0] = True  # Eq. 6: the initial element holds its position
-                first = False
+            if self.first:
+                self.fixed[self.s0] = True  # Eq. 6: the initial element holds its position
+                self.first = False
             self.release_deferred(s)
             self.steps_since_relax += 1
             # §5.5 relaxes after every growth step over the whole pattern. To keep the
@@ -696,8 +727,31 @@ class _Grower:
                 self.relax_window()
                 self.steps_since_relax = 0
             rep.tick(len(self.order))
-        if p.relax and self.dirty:
+        return False
+
+    def settle(self) -> None:
+        """The last relaxation window, when growth has stopped."""
+        if self.p.relax and self.dirty:
             self.relax_window()
+
+    def add_obstacle(self, x: float, y: float, geom: Any, areal: bool, radius: float) -> int:
+        """An element that seeds must not overlap, owned by no growth (state OBSTACLE)."""
+        if self.n == len(self.state):
+            self._grow_capacity()
+        i = self.n
+        self.n += 1
+        self.pos[i] = (x, y)
+        self.state[i] = OBSTACLE
+        self.kind[i] = len(self.areal)
+        self.areal.append(bool(areal))
+        self.fixed[i] = True
+        self.adj.append(set())
+        self.target.append(None)
+        self.geom.append(geom)
+        self.color.append(None)
+        self.grid.setdefault(self._cell(x, y), []).append(i)
+        self.other_rmax = max(self.other_rmax, float(radius))
+        return i
 
     def result(self, meta: dict[str, Any]) -> Arrangement:
         ex = self.ref.exemplar

@@ -985,81 +985,97 @@ class Session:
             st.remove(mask)
 
     def _spray(self, pts: np.ndarray, radius: float, emit: Emit) -> None:
-        """Spray (Ijiri §3, Fig. 1c): grow from the segment's start, only within ``radius``.
+        """Spray (Ijiri §3, §5.1): one growth that follows the stroke, only within ``radius``.
 
-        :func:`strew.grow.grow` grows from one seed and knows nothing of the scene, so each
-        segment grows on its own and elements that would overlap the scene are left out
-        (a thin adapter; the paper's spray continues one growth). At the stroke's start
-        a small growth (:data:`FIRST_SPRAY` elements) is shown at once, before the
-        segment's full growth.
+        §5.1: "we generate an initial seed at the cursor position when the user starts
+        painting and grow all the seeds which are in the user-specified distance from the
+        cursor during painting". The stroke keeps one :class:`strew.grow.SprayGrowth`;
+        each segment adds its points and grows the seeds they reach. Scene elements near
+        the segment are obstacles of the growth, so nothing overlaps the scene. New
+        elements stream out in chunks (the first :data:`FIRST_SPRAY` at once), each
+        emitted as it is handed out.
         """
-        from ..grow import grow
+        from .._errors import Cancelled
 
-        name = self._selection()[0]
-        ref = self._reference(name)
-        inside = self.region.contains(pts)
-        if not inside.any():
-            return
-        start = pts[np.flatnonzero(inside)[0]]
-        kw = dict(
-            region=self.region,
-            start=(float(start[0]), float(start[1])),
-            spray=pts,
-            spray_radius=radius,
-            mode=self.grow_mode,
-            flow=self.flow,
-            boundary=self.boundary_strokes or None,
-            jitter_scale=self.jitter_scale,
-            jitter_rotation=self.jitter_rotation,
-        )
         stroke = self.stroke
-        if stroke is not None and not stroke.get("sprayed"):
-            stroke["sprayed"] = True
-            self._add_grown(grow(ref, count=FIRST_SPRAY, rng=int(self.rng.integers(2**31)), **kw))
-            m = self.scene_message()
-            if m is not None:
-                emit(m)
-        free = self._free_region(pts, radius)
-        if free is None:
-            return
-        region, start = free
-        kw.update(region=region, start=start)
-        self._add_grown(grow(ref, rng=int(self.rng.integers(2**31)), **kw))
+        assert stroke is not None
+        g = stroke.get("spray")
+        first = g is None
+        if g is None:
+            if not self.region.contains(pts).any():
+                return
+            from ..grow import SprayGrowth
 
-    def _free_region(self, pts: np.ndarray, radius: float) -> tuple[Region, tuple[float, float]] | None:
-        """The region less the scene elements near a spray segment, and a start point in it.
+            g = SprayGrowth(
+                self._reference(self._selection()[0]),
+                radius=radius,
+                region=self.region,
+                mode=self.grow_mode,
+                flow=self.flow,
+                boundary=self.boundary_strokes or None,
+                jitter_scale=self.jitter_scale,
+                jitter_rotation=self.jitter_rotation,
+                rng=int(self.rng.integers(2**31)),
+            )
+            stroke["spray"] = g
+            stroke["spray_scene"] = self._spray_scene()
+        self._spray_obstacles(g, pts, radius)
+        g.add_points(pts)
+        chunk_size = 128  # elements per streamed chunk after the first
+        chunk = FIRST_SPRAY if first else chunk_size
+        while True:
+            try:
+                out = g.grow(chunk, should_cancel=self.cancel.is_set)
+            except Cancelled:  # "stop": keep what has grown
+                out = g.grow(0)
+                self._add_grown(out, free=True)
+                return
+            self._add_grown(out, free=True)
+            if not g.pending:
+                return
+            if len(out):
+                m = self.scene_message()
+                if m is not None:
+                    emit(m)
+            chunk = chunk_size
 
-        Growth then spends no time on places the scene already covers (the seeds of
-        :func:`strew.grow.grow` keep their centres in its region). ``None`` when the
-        segment's neighbourhood is full.
-        """
+    def _spray_scene(self) -> dict[str, Any] | None:
+        """The scene when a spray stroke starts, indexed for :meth:`_spray_obstacles`."""
+        from scipy.spatial import cKDTree
+
         scene = self.scene()
-        region = self.region
-        if len(scene):
-            reach = radius + 2.0 * float(max(sh.radius for sh in scene.shapes.values())) * float(np.max(np.abs(scene.scale)))
-            path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
-            near = np.flatnonzero(shapely.dwithin(path, shapely.points(scene.xy), reach))
-            if len(near):
-                taken = shapely.union_all(scene.select(near).geometry)
-                try:
-                    region = Region(self.region.geometry.difference(taken))
-                except InputError:
-                    return None
-        # start at the segment's first free point (the stroke's direction of travel)
-        ok = region.contains(pts)
-        if ok.any():
-            p = pts[np.flatnonzero(ok)[0]]
-            return region, (float(p[0]), float(p[1]))
-        return None
+        if len(scene) == 0:
+            return None
+        radii = _radii(scene)
+        return {"scene": scene, "tree": cKDTree(scene.xy), "reach": float(radii.max()), "added": np.zeros(len(scene), bool)}
 
-    def _add_grown(self, out: Arrangement) -> None:
-        """Add grown elements to the fixed part of the scene, leaving out those that overlap it."""
+    def _spray_obstacles(self, g: Any, pts: np.ndarray, radius: float) -> None:
+        """Hand the growth the scene elements it can reach from the segment (once each)."""
+        sc = self.stroke.get("spray_scene") if self.stroke else None
+        if sc is None:
+            return
+        # a seed within the spray radius can hold an element as wide as the widest
+        # exemplar element; the margin covers both that element and the scene's widest
+        margin = radius + 2.0 * sc["reach"] + 4.0 * g._g.other_rmax
+        hits = sc["tree"].query_ball_point(np.asarray(pts, float), r=margin)
+        idx = np.unique(np.concatenate([np.asarray(h, dtype=np.intp) for h in hits])) if len(hits) else np.zeros(0, np.intp)
+        idx = idx[~sc["added"][idx]]
+        if len(idx):
+            sc["added"][idx] = True
+            g.add_obstacles(sc["scene"].select(idx))
+
+    def _add_grown(self, out: Arrangement, *, free: bool = False) -> None:
+        """Add grown elements to the fixed part of the scene, leaving out those that overlap it.
+
+        ``free``: the growth already kept them off the scene (its obstacles).
+        """
         if len(out) == 0:
             return
         out = out.replace(meta={}, extra={}, region=None)
-        scene = self.scene()
-        if len(scene):
-            out = out.select(~_overlapping(out, scene))
+        if not free:
+            scene = self.scene()
+            if len(scene):
+                out = out.select(~_overlapping(out, scene))
         if len(out):
             self.fixed = concat([self.fixed, out]).replace(region=None) if len(self.fixed) else out
 

@@ -1,0 +1,252 @@
+"""The spray tool as one growth that follows the cursor (Ijiri et al. 2008, §3, §5.1).
+
+§5.1: "In the spray tool mode, we generate an initial seed at the cursor position when
+the user starts painting and grow all the seeds which are in the user-specified distance
+from the cursor during painting." :class:`SprayGrowth` keeps that one growth (its seeds,
+horizon, connectivity and relaxation state) between the cursor moves of a stroke, so
+each move only grows the seeds the cursor newly reaches.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import shapely
+
+from .._errors import InputError
+from .._progress import Reporter
+from .._rng import as_rng
+from ..arrangement import Arrangement
+from ..region import Region
+from ._analysis import Reference, analyze
+from ._growth import ELEMENT, SEED, GrowParams, _Grower
+from ._match import MODES
+
+__all__ = ["SprayGrowth"]
+
+
+def _points(a: Any, name: str) -> np.ndarray:
+    try:
+        p = np.asarray(a, dtype=float).reshape(-1, 2)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: must be (x, y) points") from None
+    if not np.all(np.isfinite(p)):
+        raise InputError(f"{name}: NaN or inf coordinate")
+    return p
+
+
+class SprayGrowth:
+    """One growth painted along a stroke with the spray tool (§3, §5.1).
+
+    Parameters
+    ----------
+    exemplar : Arrangement or Reference
+        The reference arrangement, or its analysis from :func:`strew.grow.analyze`.
+    radius : float
+        Spray radius: only seeds within it of the stroke's points grow.
+    region : Region, optional
+        Element centres stay inside it.
+    mode, flow, boundary, priority, jitter_scale, jitter_rotation, jitter_color, relax, relax_every
+        As for :func:`strew.grow.grow`.
+    rng : int, Generator or None
+        Ties and jitter draw from it; the same points in the same calls give the same
+        elements.
+
+    Notes
+    -----
+    Departures from the paper, for painting in a scene:
+
+    - Elements handed out by :meth:`grow` are held fixed from then on (Eq. 6), so that
+      what is on screen does not move under later relaxation windows (§5.5).
+    - :meth:`add_obstacles` registers elements the growth does not own (the scene);
+      seeds that would overlap them die like seeds that would overlap the growth.
+    - When the cursor reaches a place with no element or seed within the radius (the
+      growth died out, or the stroke started on the scene), a new initial seed is put at
+      the cursor, as at the stroke's start (§5.1).
+
+    Examples
+    --------
+    >>> from strew.grow._exemplars import hex_exemplar
+    >>> g = SprayGrowth(hex_exemplar(), radius=30.0, rng=1)
+    >>> g.add_points([[0.0, 0.0]])
+    >>> first = g.grow()
+    >>> g.add_points([[40.0, 0.0], [80.0, 0.0]])
+    >>> more = g.grow()
+    >>> len(first) > 0 and len(more) > 0
+    True
+    """
+
+    def __init__(
+        self,
+        exemplar: Arrangement | Reference,
+        *,
+        radius: float,
+        region: Region | None = None,
+        mode: str = "fixed",
+        flow: Callable[[np.ndarray], np.ndarray] | None = None,
+        boundary: Iterable[np.ndarray] | None = None,
+        priority: Mapping[str, float] | None = None,
+        jitter_scale: float = 0.0,
+        jitter_rotation: float = 0.0,
+        jitter_color: float = 0.0,
+        relax: bool = True,
+        relax_every: int = 16,
+        rng: int | np.random.Generator | None = None,
+    ) -> None:
+        if isinstance(exemplar, Reference):
+            ref = exemplar
+        elif isinstance(exemplar, Arrangement):
+            ref = analyze(exemplar)
+        else:
+            raise InputError(f"exemplar: must be an Arrangement or a Reference, got {type(exemplar).__name__}")
+        if not (isinstance(radius, (int, float)) and math.isfinite(radius) and radius > 0):
+            raise InputError(f"radius: must be a positive number, got {radius!r}")
+        if mode not in MODES:
+            raise InputError(f"mode: unknown mode {mode!r}; use one of {', '.join(MODES)}")
+        if mode == "flow" and flow is None:
+            raise InputError("mode flow: needs a flow field")
+        if region is not None and not isinstance(region, Region):
+            raise InputError(f"region: must be a Region, got {type(region).__name__}")
+        for name, v in (("jitter_scale", jitter_scale), ("jitter_rotation", jitter_rotation), ("jitter_color", jitter_color)):
+            if not (np.isfinite(v) and v >= 0):
+                raise InputError(f"{name}: must be a non-negative number, got {v!r}")
+        if jitter_scale >= 1:
+            raise InputError(f"jitter_scale: must be below 1, got {jitter_scale!r}")
+        if int(relax_every) < 1:
+            raise InputError(f"relax_every: must be at least 1, got {relax_every!r}")
+        kinds = ref.exemplar.kinds
+        for name in priority or {}:
+            if name not in kinds:
+                raise InputError(f"priority: unknown kind {name!r}")
+        params = GrowParams(
+            region=region,
+            mode=mode,
+            flow=flow,
+            boundary=[_points(b, "boundary") for b in (boundary or [])],
+            spray_radius=float(radius),
+            priority={k: float(v) for k, v in (priority or {}).items()},
+            jitter_scale=float(jitter_scale),
+            jitter_rotation=float(jitter_rotation),
+            jitter_color=float(jitter_color),
+            relax=bool(relax),
+            relax_every=int(relax_every),
+        )
+        self.radius = float(radius)
+        self._g = _Grower(ref, params, as_rng(rng))
+        self._g.waiting = []
+        self._stroke = np.zeros((0, 2))
+        self._given = 0  # elements of the growth handed out so far
+        self._started = False
+
+    # ------------------------------------------------------------------ input
+    def add_obstacles(self, arr: Arrangement) -> None:
+        """Elements (of any shapes) that the growth must not overlap.
+
+        Parameters
+        ----------
+        arr : Arrangement
+            Elements already in the scene near the stroke.
+        """
+        if len(arr) == 0:
+            return
+        geoms = arr.geometry
+        areal = shapely.area(geoms) > 0
+        per_kind = np.array([arr.shapes[k].radius for k in arr.kinds])
+        radii = per_kind[arr.kind] * np.abs(arr.scale)
+        for i in range(len(arr)):
+            self._g.add_obstacle(float(arr.x[i]), float(arr.y[i]), geoms[i], bool(areal[i]), float(radii[i]))
+
+    def add_points(self, points: np.ndarray | Sequence[Sequence[float]]) -> None:
+        """The cursor moved through ``points`` (k, 2): seeds within the radius may grow.
+
+        The first point of a stroke gets the initial seed (§5.1).
+        """
+        pts = _points(points, "points")
+        if len(pts) == 0:
+            return
+        g = self._g
+        self._stroke = np.concatenate([self._stroke, pts])
+        line = shapely.LineString(self._stroke) if len(self._stroke) >= 2 else shapely.Point(self._stroke[0])
+        g.spray_area = line.buffer(self.radius)
+        shapely.prepare(g.spray_area)
+        if not self._started:
+            for p in pts:
+                if g.in_domain(float(p[0]), float(p[1])):
+                    g.begin((float(p[0]), float(p[1])))
+                    self._started = True
+                    break
+        else:
+            # not in the paper: a new initial seed where the growth cannot reach (see Notes)
+            for p in pts[::-1]:
+                x, y = float(p[0]), float(p[1])
+                if g.in_domain(x, y) and not g.near(x, y, self.radius):
+                    g.new_object(x, y, g.p.start_kind)
+                    break
+        # seeds that waited outside the spray area and are now inside it
+        wait = [s for s in g.waiting if g.state[s] == SEED] if g.waiting else []
+        if wait:
+            inside = shapely.contains_xy(g.spray_area, g.pos[wait, 0], g.pos[wait, 1])
+            g.waiting = [s for s, ok in zip(wait, inside) if not ok]
+            ox, oy = g.origin
+            for s, ok in zip(wait, inside):
+                if ok:
+                    g.heap.append((math.hypot(g.pos[s, 0] - ox, g.pos[s, 1] - oy), s))
+            heapq.heapify(g.heap)
+
+    # ------------------------------------------------------------------ growth
+    @property
+    def pending(self) -> bool:
+        """True when seeds within the spray area may still grow."""
+        return bool(self._g.heap)
+
+    def grow(
+        self,
+        max_new: int | None = None,
+        *,
+        progress: Callable[[int, int | None, str], None] | None = None,
+        should_cancel: Callable[[], bool] | None = None,
+    ) -> Arrangement:
+        """Grow the seeds within the spray area; return the new elements.
+
+        Parameters
+        ----------
+        max_new : int, optional
+            Stop after about this many new elements (at the next relaxation window, so
+            that stopping and going on gives the same growth); :attr:`pending` then says
+            whether more can grow. All by default.
+
+        Returns
+        -------
+        Arrangement
+            The elements placed since the last call, in placement order, with column
+            ``sub_id`` (and ``color`` when colours vary). They stay where they are.
+        """
+        g = self._g
+        if self._started:
+            rep = Reporter(progress, should_cancel, message="spraying")
+            pause = None if max_new is None else self._given + max(1, int(max_new))
+            if not g.advance(rep, g.p.max_elements, pause=pause):
+                g.settle()
+        order = g.order[self._given :]
+        idx = np.asarray(order, dtype=np.intp)
+        idx = idx[g.state[idx] == ELEMENT] if len(idx) else idx
+        g.fixed[idx] = True  # Eq. 6: handed-out elements hold their positions (see Notes)
+        self._given = len(g.order)
+        return self._result(idx)
+
+    def _result(self, idx: np.ndarray) -> Arrangement:
+        g = self._g
+        ex = g.ref.exemplar
+        columns: dict[str, Any] = {"sub_id": g.sub[idx].copy()}
+        if g.want_color:
+            columns["color"] = [g.color[i] for i in idx]
+        return Arrangement(ex.shapes, g.kind[idx], g.pos[idx, 0].copy(), g.pos[idx, 1].copy(), g.rot[idx].copy(), g.scl[idx].copy(), columns=columns, meta={"method": "grow", "tool": "spray"})
+
+    def arrangement(self) -> Arrangement:
+        """All elements handed out so far, in the order :meth:`grow` gave them."""
+        return self._result(np.asarray(self._g.order[: self._given], dtype=np.intp))
+
