@@ -177,11 +177,7 @@ def grow(
         ftree = None
         if ok.any():
             # candidates must overlap a free-space point (Algorithm 1) ...
-            ftree = cKDTree(fpos)
-            dv, jv = ftree.query(ppos[ok], k=1)
-            near_free = dv < np.maximum(pr[ok], fc[jv])
-            sub = np.flatnonzero(ok)
-            ok[sub[~near_free]] = False
+            ok[ok] = K.overlaps_any(np.ascontiguousarray(ppos[ok]), pr[ok], np.ascontiguousarray(fpos), np.ascontiguousarray(fc, dtype=float))
         ok[ok] = state.in_domain(ppos[ok])
         slack = 2.0 * (2.0 * prep.r[src[seeds]]) ** 2
         seed_pos = pos[seeds].copy()

@@ -615,6 +615,56 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
 
 
 @numba.njit(cache=True)
+def overlaps_any(pts, pr, centers, cr):
+    """(n,) bool: is ``|pts[i] - centers[j]| < max(pr[i], cr[j])`` for some j (grid search)."""
+    n = pts.shape[0]
+    m = centers.shape[0]
+    out = np.zeros(n, np.bool_)
+    if n == 0 or m == 0:
+        return out
+    cell = 1e-12
+    for i in range(n):
+        cell = max(cell, pr[i])
+    for j in range(m):
+        cell = max(cell, cr[j])
+    x0 = centers[:, 0].min()
+    y0 = centers[:, 1].min()
+    nx = int((centers[:, 0].max() - x0) / cell) + 1
+    ny = int((centers[:, 1].max() - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(m, -1, np.int64)
+    for j in range(m):
+        g = int((centers[j, 0] - x0) / cell) * ny + int((centers[j, 1] - y0) / cell)
+        nxt[j] = head[g]
+        head[g] = j
+    for i in range(n):
+        fx = (pts[i, 0] - x0) / cell
+        fy = (pts[i, 1] - y0) / cell
+        if fx < -1.0 or fy < -1.0 or fx >= nx + 1.0 or fy >= ny + 1.0:
+            continue
+        gx = int(np.floor(fx))
+        gy = int(np.floor(fy))
+        hit = False
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    dx = pts[i, 0] - centers[j, 0]
+                    dy = pts[i, 1] - centers[j, 1]
+                    lim = max(pr[i], cr[j])
+                    if dx * dx + dy * dy < lim * lim:
+                        hit = True
+                        break
+                    j = nxt[j]
+                if hit:
+                    break
+            if hit:
+                break
+        out[i] = hit
+    return out
+
+
+@numba.njit(cache=True)
 def in_discs(pts, centers, radii):
     """(n,) bool: which ``pts`` lie in some disc ``(centers[j], radii[j])`` (grid search)."""
     n = pts.shape[0]
