@@ -40,6 +40,8 @@ the domain, and needs no shapely re-check (``tests/pack`` checks results with sh
 
 from __future__ import annotations
 
+import math
+
 import numba
 import numpy as np
 import shapely
@@ -53,6 +55,10 @@ __all__ = ["FitEngine", "ring_layout"]
 RUNNING, DONE, NEED_ROOM, NO_FIELD = 0, 1, 2, 3
 # candidate sampling: side of the pixel blocks whose maxima bound the draw (see _draw_q)
 BLOCK = 8
+# for pb = 2**-j: log(1 - pb), and the chance (1 - pb)**(BLOCK**2) that a block has no pick
+# (j up to 63; the draw's cut keeps pb above 1e-9, so j stays below 30)
+_LOGQ = np.r_[-np.inf, np.log1p(-(2.0 ** -np.arange(1.0, 64.0)))]
+_NONE = np.exp(BLOCK * BLOCK * _LOGQ)
 # indices into the integer state vector
 _S_CONSEC, _S_NEXT, _S_TRIALS, _S_POSES, _S_NP, _S_NV, _S_NR, _S_NE, _S_QID, _S_ROUNDS = range(10)
 
@@ -383,12 +389,13 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
     ``alpha = (e / emax)**power``, independently; their flat indices go to ``qbuf``.
     Returns their number.
 
-    Pixels are visited by blocks. In a block whose largest e gives ``pb = (max e /
-    emax)**power``, pixels are first picked with probability pb by geometric skips
-    (the pixels between are never read), then accepted with ``alpha / pb``: the same
-    independent Bernoulli(alpha) draws, at a cost that follows the expected number of
-    points rather than the number of pixels (most blocks lie far below the maximum,
-    where alpha = r**16 is tiny). Blocks at or below the cut are skipped whole.
+    Pixels are visited by blocks. A block whose largest e gives ``(max e / emax)**power
+    <= pb = 2**-j`` picks its pixels with probability pb by geometric skips (the pixels
+    between are never read; one uniform number decides whether the block has any pick
+    at all) and accepts a picked pixel with ``alpha / pb``: the same independent
+    Bernoulli(alpha) draws, at a cost that follows the expected number of points rather
+    than the number of pixels (most blocks lie far below the maximum, where alpha =
+    r**16 is tiny). Blocks at or below the cut are skipped whole.
     """
     rows, cols = d.shape
     bcols = (cols + BLOCK - 1) // BLOCK
@@ -403,12 +410,21 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
         bw = min(BLOCK, cols - c0)
         n = bh * bw
         pb = _alpha(bme[b] * inv, power)
-        if pb >= 0.5:
+        if pb >= 0.25:
+            pb = 1.0
             j = 0
             step = 0.0
         else:
-            step = 1.0 / np.log1p(-pb)
-            j = int(np.floor(np.log1p(-gen.random()) * step))
+            # a power of two at least pb: its logarithm and the chance of no pick in a
+            # full block come from tables
+            j2 = -math.frexp(pb)[1]  # 2**-(j2 + 1) <= pb < 2**-j2
+            pb = math.ldexp(1.0, -j2)
+            u = gen.random()
+            if n == BLOCK * BLOCK:
+                if u < _NONE[j2]:
+                    continue
+            step = 1.0 / _LOGQ[j2]
+            j = int(np.floor(np.log1p(-u) * step))
         while j < n:
             r = r0 + j // bw
             c = c0 + j % bw
@@ -447,6 +463,7 @@ def _rounds(
         maxv = max(maxv, kr[kk[k + 1]] - kr[kk[k]])
         maxr = max(maxr, kk[k + 1] - kk[k])
     blocker = np.full(1, -1, dtype=np.int64)
+    icell = 1.0 / fcell
     thr = 1e-9 ** (1.0 / power)  # pixels below this alpha (1e-9) are skipped without a draw
     # maxima of e = d w and of d over pixel blocks, kept up to date below
     nb = ((rows + BLOCK - 1) // BLOCK) * ((cols + BLOCK - 1) // BLOCK)
@@ -526,16 +543,17 @@ def _rounds(
                 # the pixel centre must meet an obstacle; no exact test is needed
                 hit = False
                 for i in range(kdo[k], kdo[k + 1]):
-                    cx = x + c * kdisk[i, 0] - sn * kdisk[i, 1]
-                    cy = y + sn * kdisk[i, 0] + c * kdisk[i, 1]
-                    fc = int(np.floor((cx - fx0) / fcell))
-                    fr = int(np.floor((cy - fy0) / fcell))
-                    if fc < 0 or fr < 0 or fc >= cols or fr >= rows:
+                    # the disk's centre in pixel units
+                    u = (x + c * kdisk[i, 0] - sn * kdisk[i, 1] - fx0) * icell
+                    v = (y + sn * kdisk[i, 0] + c * kdisk[i, 1] - fy0) * icell
+                    if not (0.0 <= u < cols and 0.0 <= v < rows):
                         hit = True  # outside the domain's box
                         break
-                    ox = cx - (fx0 + (fc + 0.5) * fcell)
-                    oy = cy - (fy0 + (fr + 0.5) * fcell)
-                    if kdisk[i, 2] * s > d[fr, fc] + np.sqrt(ox * ox + oy * oy):
+                    fc = int(u)
+                    fr = int(v)
+                    ox = u - (fc + 0.5)
+                    oy = v - (fr + 0.5)
+                    if kdisk[i, 2] * s > d[fr, fc] + np.sqrt(ox * ox + oy * oy) * fcell:
                         hit = True
                         break
                 if hit:
