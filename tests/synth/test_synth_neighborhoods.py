@@ -239,3 +239,20 @@ def test_horizon_pruning():
 
     grow(s)
     assert not s.horizon.any()
+
+
+_pts = st.lists(st.tuples(st.floats(-50, 50), st.floats(-50, 50), st.floats(0.1, 12.0)), max_size=30)
+
+
+@given(_pts, _pts)
+def test_grid_disc_queries_equal_brute_force(q, c):
+    """The numba grid searches behind the brush discs and free-space overlap."""
+    qa = np.asarray(q, float).reshape(-1, 3)
+    ca = np.asarray(c, float).reshape(-1, 3)
+    p, pr = np.ascontiguousarray(qa[:, :2]), qa[:, 2].copy()
+    cen, cr = np.ascontiguousarray(ca[:, :2]), ca[:, 2].copy()
+    d2 = ((p[:, None, 0] - cen[None, :, 0]) ** 2 + (p[:, None, 1] - cen[None, :, 1]) ** 2).reshape(len(p), len(cen))
+    in_ref = np.any(d2 <= cr[None, :] ** 2, axis=1) if len(cen) else np.zeros(len(p), bool)
+    ov_ref = np.any(d2 < np.maximum(pr[:, None], cr[None, :]) ** 2, axis=1) if len(cen) else np.zeros(len(p), bool)
+    assert np.array_equal(K.in_discs(p, cen, cr), in_ref)
+    assert np.array_equal(K.overlaps_any(p, pr, cen, cr), ov_ref)
