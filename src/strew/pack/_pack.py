@@ -47,7 +47,7 @@ DEFAULTS: dict[str, Any] = {
     "naive_batch": 256,  # darts tested per bulk query (does not change the result's law)
     # extensions of §4.2 (see _fit): poses tried per candidate point, and the factor that
     # damps the field about a cancelled candidate (fits=1, suppress=1: the paper's rounds)
-    "fits": 32,
+    "fits": 48,
     "suppress": 0.8,
 }
 
@@ -178,7 +178,7 @@ def pack(
         Fill-gap Step 1: Bridson's trial points per active Poisson-disk sample (30).
     fits : int
         Fill-gap Step 2: random rotations and scales tried at each candidate point before
-        it counts as a cancellation (an extension of §4.2; 1 draws one pose as the paper).
+        it counts as a cancellation (48; an extension of §4.2; 1 draws one pose as the paper).
     suppress : float in (0, 1]
         Fill-gap Step 2: factor applied to the distance field about a cancelled candidate,
         so that later rounds explore other gaps (an extension of §4.2; 1 turns it off).
