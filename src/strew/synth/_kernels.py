@@ -37,7 +37,7 @@ def map_offset(px: float, py: float, ox: float, oy: float) -> tuple[float, float
 
 
 @numba.njit(cache=True)
-def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used, elen):
+def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used, elen, bound=INF):
     """Neighbourhood distance |n(o) - n(e)| of Eq. 1 with greedy pair assignment (§4).
 
     Parameters
@@ -69,6 +69,10 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
         pairs (0, e').
     elen : (q,) float, scratch
         Lengths of ``e_off`` (overwritten).
+    bound : float
+        Stop early, returning inf, once the cost reaches ``bound`` (every term is
+        non-negative, so the full cost would too); the pairs are then incomplete. A
+        search for the best of several candidates passes the best cost so far.
 
     Returns
     -------
@@ -121,6 +125,8 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
             cost += bestc
         else:
             cost += dd  # left-partial pair (o', 0)
+        if cost >= bound:
+            return INF  # cannot beat the bound
     for j in range(q):
         if not used[j]:
             lim = rim - 0.5 * e_d[j]
@@ -450,8 +456,9 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
-            cost += _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
+            cc = _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
+            # branch and bound: a candidate is dropped as soon as it cannot beat the best
+            cost = cc + pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, bcost[i] - cc)
             if cost < bcost[i]:
                 bcost[i] = cost
                 best[i] = c
