@@ -256,3 +256,23 @@ def test_grid_disc_queries_equal_brute_force(q, c):
     ov_ref = np.any(d2 < np.maximum(pr[:, None], cr[None, :]) ** 2, axis=1) if len(cen) else np.zeros(len(p), bool)
     assert np.array_equal(K.in_discs(p, cen, cr), in_ref)
     assert np.array_equal(K.overlaps_any(p, pr, cen, cr), ov_ref)
+
+
+@given(_offsets, _offsets, st.floats(0.0, 200.0))
+def test_pair_cost_bound_only_drops_candidates_that_cannot_win(o, e, bound):
+    def unpack(rows):
+        a = np.asarray(rows, float).reshape(-1, 4)
+        a = a[np.argsort(np.hypot(a[:, 0], a[:, 1]), kind="stable")]
+        return np.ascontiguousarray(a[:, :2]), a[:, 2].astype(np.int64), a[:, 3].copy()
+
+    o_off, o_kind, o_d = unpack(o)
+    e_off, e_kind, e_d = unpack(e)
+    pair = np.empty(max(len(o_off), 1), np.int64)
+    used = np.empty(max(len(e_off), 1), bool)
+    elen = np.empty(max(len(e_off), 1))
+    full = K.pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, 1.0, 10.0, pair, used, elen)
+    bounded = K.pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, 1.0, 10.0, pair, used, elen, bound)
+    if np.isinf(bounded):
+        assert full >= bound
+    else:
+        assert bounded == full
