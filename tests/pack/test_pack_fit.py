@@ -154,3 +154,30 @@ def test_results_are_disjoint_under_shapely_without_tolerance():
         left, right = shapely.STRtree(geoms).query(geoms, predicate="intersects")
         assert np.all(left == right)
         assert np.all(shapely.contains_properly(region.geometry, geoms))
+
+
+def test_sparse_placement_keeps_elements_inside_and_reports_its_rings():
+    """Step 1 in the compiled engine: exact containment only, cyclic kinds, and the
+    stored rings (for the distance field) are the placed elements' outlines."""
+    from strew.pack._exclusive import build_exclusive_regions, transform_many
+    from strew.pack._fit import FitEngine
+
+    region = Region(shapely.Point(60, 60).buffer(58, 16).difference(shapely.box(45, 45, 75, 75)))
+    kinds = build_exclusive_regions({"hook": HOOK, "sq": Shape.rectangle(8, 8)}, scale=(0.3, 0.6))
+    eng = FitEngine(kinds, region.geometry, None, 0)
+    rng = np.random.default_rng(4)
+    xy = rng.uniform(0, 120, size=(300, 2))  # many points near or outside the domain
+    n = eng.place_sparse(xy, rng.random(300), rng.random(300), None)
+    assert 0 < n < 300 and len(eng) == n
+    kind, pose = eng.pkind[:n], eng.pose[:n]
+    assert np.array_equal(kind, np.arange(n) % 2)  # cyclic, advanced on each placement
+    bodies = np.empty(n, dtype=object)
+    for k, ex in enumerate(kinds):
+        idx = np.flatnonzero(kind == k)
+        bodies[idx] = transform_many(ex.body, pose[idx, :2], pose[idx, 2], pose[idx, 3])
+    assert np.all(shapely.contains_properly(region.geometry, bodies))
+    segs, off = eng.segments()
+    assert len(off) == n + 1 and off[-1] == len(segs)
+    for i in (0, n // 2, n - 1):
+        ring = shapely.get_coordinates(bodies[i].exterior)
+        assert np.allclose(segs[off[i]:off[i + 1], :2], ring[:-1]) or np.allclose(segs[off[i]:off[i + 1], :2], ring[::-1][:-1])

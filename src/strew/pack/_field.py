@@ -34,6 +34,9 @@ class DistanceField:
         Pixel side, in document units.
     placed : list of shapely geometries, optional
         Exclusive regions already placed.
+    segments : ((s, 4) float, (k + 1,) int), optional
+        Exclusive regions already placed, as ring edges ``x0, y0, x1, y1`` and the
+        offsets of each region's edges (e.g. :meth:`._fit.FitEngine.segments`).
 
     Attributes
     ----------
@@ -42,7 +45,8 @@ class DistanceField:
         (0 outside the domain and inside placed regions).
     """
 
-    def __init__(self, region: Region, cell: float, placed: list | None = None) -> None:
+    def __init__(self, region: Region, cell: float, placed: list | None = None,
+                 segments: tuple[np.ndarray, np.ndarray] | None = None) -> None:
         # The same grid as Region.rasterize (pixel centres at x0 + (c + 0.5) * cell), but
         # filled by even-odd scanlines over the domain's rings and then cleared inside
         # the regions placed so far (Step 1), and one exact Euclidean distance transform
@@ -60,6 +64,8 @@ class DistanceField:
             # pixels whose centres lie inside the regions placed so far are obstacles too
             segs, offsets = _segments(placed)
             _scan_fill(free, self.x0, self.y0, cell, segs, offsets, False)
+        if segments is not None and len(segments[0]):
+            _scan_fill(free, self.x0, self.y0, cell, segments[0], segments[1], False)
         # distance of each free pixel centre to the nearest obstacle pixel centre, with
         # the pixels just outside the raster as obstacles (the box edge is boundary)
         self.d = _edt(free) * cell

@@ -343,6 +343,41 @@ def _insert_poses(kinds, poses, kv, kr, kk, cv, cbb, pv, pr, pp, pbb, pose, pkin
         _insert(k, poses[i, 0], poses[i, 1], poses[i, 2], poses[i, 3], cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
 
 
+@numba.njit(cache=True)
+def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi,
+                  rv, rr, rsegs, rhead, rnext, rsid, rstamp, cv, ch, cbb, hbb,
+                  pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
+    """Step 1 (§4.1): place an element at each Poisson-disk point, in order, when it lies
+    inside the domain (exact test); the points' circles already keep elements apart, so
+    no collision test runs. ``u_rot``, ``u_sc``: uniform numbers mapped into each kind's
+    ranges; ``kinds``: drawn by weight, or empty for cyclic kinds (advanced on each
+    placement). Returns the number placed."""
+    nk = len(kk) - 1
+    placed = 0
+    for i in range(len(xy)):
+        k = kinds[i] if len(kinds) else st[_S_NEXT]
+        rot = rot_lo[k] + u_rot[i] * (rot_hi[k] - rot_lo[k])
+        s = sc_lo[k] + u_sc[i] * (sc_hi[k] - sc_lo[k])
+        c = np.cos(rot) * s
+        sn = np.sin(rot) * s
+        x = xy[i, 0]
+        y = xy[i, 1]
+        _pose(kv, kr, kk[k], kk[k + 1], x, y, c, sn, cv, cbb)
+        st[_S_QID] += 1
+        if same_hull[k]:
+            inside = _in_region(cv, kr, kk[k], kk[k + 1], cbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, st[_S_QID])
+        else:
+            _pose(hv, hr, hk[k], hk[k + 1], x, y, c, sn, ch, hbb)
+            inside = _in_region(ch, hr, hk[k], hk[k + 1], hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, st[_S_QID])
+        if not inside:
+            continue
+        _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
+        placed += 1
+        if len(kinds) == 0:
+            st[_S_NEXT] = (st[_S_NEXT] + 1) % nk
+    return placed
+
+
 @numba.njit(cache=True, inline="always")
 def _alpha(r, power):  # pragma: no cover - numba
     if power == 16.0:
@@ -517,12 +552,17 @@ def _rounds(
             s = 1.0
             x = px
             y = py
+            # distance from the candidate point to its pixel's centre
+            off_q = np.sqrt((jx - 0.5) ** 2 + (jy - 0.5) ** 2) * fcell
             for t in range(tries):
-                rot = rot_lo[k] + gen.random() * (rot_hi[k] - rot_lo[k])
-                s = sc_lo[k] + gen.random() * (sc_hi[k] - sc_lo[k])
-                c = np.cos(rot) * s
-                sn = np.sin(rot) * s
-                if t > 0 and ka[k + 1] > ka[k]:
+                rot = rot_lo[k]
+                if rot_hi[k] > rot_lo[k]:
+                    rot += gen.random() * (rot_hi[k] - rot_lo[k])
+                s = sc_lo[k]
+                if sc_hi[k] > sc_lo[k]:
+                    s += gen.random() * (sc_hi[k] - sc_lo[k])
+                anchored = t > 0 and ka[k + 1] > ka[k]
+                if anchored:
                     # later poses put one of the kind's anchor points (inside its
                     # exclusive region) on the candidate point, not its box centre
                     if t % 2 == 1:
@@ -534,6 +574,14 @@ def _rounds(
                     else:
                         a = ka[k] + int(gen.random() * (ka[k + 1] - ka[k]))
                         ax_, ay_ = kanch[a, 0], kanch[a, 1]
+                        if kanch[a, 2] * s > dflat[q] + off_q:
+                            # the anchor's own inscribed disk, centred on the point, is
+                            # wider than the field allows there (as below): certain
+                            st[_S_POSES] += 1
+                            continue
+                c = np.cos(rot) * s
+                sn = np.sin(rot) * s
+                if anchored:
                     x = px - (c * ax_ - sn * ay_)
                     y = py - (sn * ax_ + c * ay_)
                 st[_S_POSES] += 1
@@ -693,19 +741,21 @@ def _anchors(grids: list, disks: np.ndarray, offsets: np.ndarray, more: int = 16
 
     Returns
     -------
-    anchors : (n, 2) float
-        In local, centred coordinates.
+    anchors : (n, 3) float
+        Point in local, centred coordinates, and the radius of a disk about it inside
+        the region (its distance to the boundary, less a rounding margin).
     offsets : (K + 1,) int64
     """
     pts, off = [], [0]
     for j in range(len(grids)):
-        own = [disks[offsets[j], :2]] if offsets[j + 1] > offsets[j] else []
-        grid = grids[j][0]
+        own = [disks[offsets[j]]] if offsets[j + 1] > offsets[j] else []
+        grid, clear = grids[j]
         if len(grid):
-            own.extend(grid[np.unique(np.linspace(0, len(grid) - 1, more).astype(int))])
+            pick = np.unique(np.linspace(0, len(grid) - 1, more).astype(int))
+            own.extend(np.c_[grid[pick], clear[pick] * (1 - 1e-9)])
         pts.extend(own)
         off.append(off[-1] + len(own))
-    return np.asarray(pts, dtype=float).reshape(-1, 2), np.asarray(off, dtype=np.int64)
+    return np.asarray(pts, dtype=float).reshape(-1, 3), np.asarray(off, dtype=np.int64)
 
 
 def _disks(grids: list, most: int = 16) -> tuple[np.ndarray, np.ndarray]:
@@ -833,6 +883,45 @@ class FitEngine:
         _insert_poses(np.asarray(kinds, dtype=np.int64), np.ascontiguousarray(poses, dtype=float), self.kv, self.kr, self.kk,
                       self.cv, self.cbb, self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g, self.head,
                       self.enext, self.epoly, self.st)
+
+    def place_sparse(self, xy: np.ndarray, u_rot: np.ndarray, u_scale: np.ndarray, kinds: np.ndarray | None) -> int:
+        """Step 1 (§4.1): an element at each point of (m, 2) ``xy`` that lies inside the
+        domain, with no collision test (the points are far enough apart).
+
+        Parameters
+        ----------
+        xy : (m, 2) float
+            Where the bounding-box centres of the exclusive regions go (T of Eq. 1).
+        u_rot, u_scale : (m,) float in [0, 1)
+            Uniform numbers mapped into each kind's rotation and scale range.
+        kinds : (m,) int or None
+            Kinds drawn by weight; None: cyclic.
+
+        Returns
+        -------
+        int
+            The number placed.
+        """
+        self._room(len(xy))
+        ks = np.zeros(0, dtype=np.int64) if kinds is None else np.asarray(kinds, dtype=np.int64)
+        return int(_place_sparse(np.ascontiguousarray(xy, dtype=float), np.asarray(u_rot, dtype=float),
+                                 np.asarray(u_scale, dtype=float), ks, self.kv, self.kr, self.kk, self.hv, self.hr,
+                                 self.hk, self.same_hull, self.rot_lo, self.rot_hi, self.sc_lo, self.sc_hi, self.rv,
+                                 self.rr, self.rsegs, self.rhead, self.rnext, self.rsid, self.rstamp, self.cv, self.ch,
+                                 self.cbb, self.hbb, self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g,
+                                 self.head, self.enext, self.epoly, self.st))
+
+    def segments(self) -> tuple[np.ndarray, np.ndarray]:
+        """Ring edges of the placed exclusive regions: (s, 4) ``x0, y0, x1, y1`` and
+        (n + 1,) offsets (element ``i`` owns edges ``offsets[i]:offsets[i + 1]``)."""
+        n = len(self)
+        nr = int(self.pp[n])
+        sizes = np.diff(self.pr[: nr + 1])
+        ring_of = np.repeat(np.arange(nr), sizes)  # the ring of each stored vertex
+        starts = np.flatnonzero(ring_of[:-1] == ring_of[1:])
+        segs = np.ascontiguousarray(np.c_[self.pv[starts], self.pv[starts + 1]])
+        owner = np.repeat(np.arange(n), np.diff(self.pp[: n + 1]))[ring_of[starts]]
+        return segs, np.searchsorted(owner, np.arange(n + 1)).astype(np.int64)
 
     def run(self, gen: np.random.Generator, field, rounds: int, limit: int, p_count: int, power: float, fits: int,
             suppress: float, sup_r: float) -> int:

@@ -310,24 +310,20 @@ def _fill_gap(
     # regions neither overlap nor leave the domain.
     radius = max(k.radius * k.scale[1] for k in kinds)
     inner = shapely.buffer(dom.geometry, -radius)
+    engine = FitEngine(kinds, dom.geometry, placer.weights, placer.next_kind)
     sparse = 0
     if not inner.is_empty and inner.area > 0:
         pts = poisson_disk(inner, 2 * radius, candidates=k_sparse, rng=gen)
         m = len(pts)
-        placed = placer.try_batch(pts, gen.random(m), gen.random(m), placer.draw_kinds(gen, m), collide=False)
-        sparse = len(placed)
-        # Step 1 places no cancellations on purpose; only Step 2 counts them.
-        placer.consecutive = 0
+        # compiled: exact containment tests, no collision test (§4.1); Step 1 places no
+        # cancellations on purpose, only Step 2 counts them
+        sparse = engine.place_sparse(pts, gen.random(m), gen.random(m), placer.draw_kinds(gen, m))
+        placer.trials += m
     info["sparse"] = sparse
-    rep.tick(len(placer), message=f"step 1: {sparse} placed", force=True)
-    field = DistanceField(dom, cell, placer.geoms)
+    rep.tick(len(engine), message=f"step 1: {sparse} placed", force=True)
+    field = DistanceField(dom, cell, segments=engine.segments())
     # Step 2 (§4.2): rounds of P candidates from the normalised distance field, in a
     # compiled loop (see _fit for the fit, suppression and fresh-candidate extensions).
-    engine = FitEngine(kinds, dom.geometry, placer.weights, placer.next_kind)
-    if len(placer):
-        xy = np.asarray(placer.xy, dtype=float).reshape(-1, 2)
-        engine.insert(np.asarray(placer.kind), np.c_[xy, placer.rotation, placer.scale])
-    n0 = len(engine)
     # suppression disk: a quarter of the smallest element's circumscribed radius, at least a pixel
     sup_r = max(0.25 * min(k.radius * k.scale[0] for k in kinds), cell)
     status = RUNNING
@@ -338,22 +334,22 @@ def _fill_gap(
     placer.consecutive = engine.consecutive
     info["poses"] = engine.poses
     info["rounds"] = engine.rounds
-    _add_step2(placer, engine, n0)
+    _add_placed(placer, engine)
     if status == NO_FIELD:
         return "the distance field has no free pixel left"
     return f"{placer.max_failures} consecutive cancellations"
 
 
-def _add_step2(placer: Placer, engine: FitEngine, n0: int) -> None:
-    """Copy Step 2's elements (kind and pose) into ``placer``.
+def _add_placed(placer: Placer, engine: FitEngine) -> None:
+    """Copy the compiled engine's elements (kind and pose) into ``placer``.
 
     The compiled tests are exact and cancel every case too close to call (see
     :data:`._fit.TOL`), so no shapely re-check follows; the tests in ``tests/pack``
     check the results against shapely.
     """
     n = len(engine)
-    pose = engine.pose[n0:n]
-    placer.kind.extend(int(k) for k in engine.pkind[n0:n])
+    pose = engine.pose[:n]
+    placer.kind.extend(int(k) for k in engine.pkind[:n])
     placer.xy.extend(map(tuple, pose[:, :2].tolist()))
     placer.rotation.extend(pose[:, 2].tolist())
     placer.scale.extend(pose[:, 3].tolist())
