@@ -780,17 +780,36 @@ def _disks(grids: list, most: int = 16) -> tuple[np.ndarray, np.ndarray]:
     """
     out, off = [], [0]
     for pts, clear in grids:
-        own = []
-        while len(pts) and len(own) < most:
-            i = int(np.argmax(clear))
-            if own and clear[i] < 0.15 * own[0][2]:
-                break
-            own.append((pts[i, 0], pts[i, 1], clear[i] * (1 - 1e-9)))
-            keep = np.hypot(*(pts - pts[i]).T) > clear[i]
-            pts, clear = pts[keep], clear[keep]
-        out.extend(own)
+        own = _greedy_disks(np.ascontiguousarray(pts, dtype=float), np.asarray(clear, dtype=float), most)
+        out.append(own)
         off.append(off[-1] + len(own))
-    return np.asarray(out, dtype=float).reshape(-1, 3), np.asarray(off, dtype=np.int64)
+    return np.concatenate(out).reshape(-1, 3), np.asarray(off, dtype=np.int64)
+
+
+@numba.njit(cache=True)
+def _greedy_disks(pts, clear, most):  # pragma: no cover - numba
+    """The greedy choice of :func:`_disks` for one kind: (m, 3) centres and radii."""
+    n = len(pts)
+    alive = np.ones(n, dtype=np.bool_)
+    out = np.zeros((most, 3))
+    m = 0
+    while m < most:
+        i = -1
+        best = -1.0
+        for j in range(n):  # the first of the widest left
+            if alive[j] and clear[j] > best:
+                best = clear[j]
+                i = j
+        if i < 0 or (m > 0 and clear[i] < 0.15 * out[0, 2]):
+            break
+        out[m, 0] = pts[i, 0]
+        out[m, 1] = pts[i, 1]
+        out[m, 2] = clear[i] * (1 - 1e-9)
+        m += 1
+        for j in range(n):  # drop the points this disk covers
+            if alive[j] and np.hypot(pts[j, 0] - pts[i, 0], pts[j, 1] - pts[i, 1]) <= clear[i]:
+                alive[j] = False
+    return out[:m]
 
 
 class FitEngine:
