@@ -132,6 +132,10 @@ class _Grower:
         # geometry for the overlap guard
         self.local_geom = [ex.shapes[k].geometry for k in ex.kinds]
         self.local_coords = [None] * self.n_kinds
+        # exterior rings of kinds that are simple polygons (fast path of element_geometry)
+        self.local_ring = [
+            shapely.get_coordinates(g.exterior) if g.geom_type == "Polygon" and len(g.interiors) == 0 and not g.has_z else None for g in self.local_geom
+        ]
         self.kind_radius = np.array([max(ex.shapes[k].radius, 0.0) for k in ex.kinds])
         self.areal = [not g.is_empty and g.area > 0 for g in self.local_geom]
         # colours (§3: per-element colour variation)
@@ -168,6 +172,11 @@ class _Grower:
         self.origin = (0.0, 0.0)
         # tools
         self.region = p.region
+        self.region_box: tuple[float, float, float, float] | None = None
+        if p.region is not None:
+            rg = p.region.geometry
+            if rg.geom_type == "Polygon" and len(rg.interiors) == 0 and bool(shapely.equals(rg, rg.envelope)):
+                self.region_box = tuple(float(v) for v in rg.bounds)  # type: ignore[assignment]
         self.boundary = None
         if p.boundary:
             lines = [shapely.LineString(b) for b in p.boundary if len(b) >= 2]
@@ -233,9 +242,10 @@ class _Grower:
         r2 = r * r
         pos = self.pos
         st = self.state
+        grid = self.grid
         for cx in range(cx0, cx1 + 1):
             for cy in range(cy0, cy1 + 1):
-                lst = self.grid.get((cx, cy))
+                lst = grid.get((cx, cy))
                 if not lst:
                     continue
                 for i in lst:
@@ -322,12 +332,19 @@ class _Grower:
             self.remove_edge(i, j)
         self.state[i] = DEAD
         self.deferred.discard(i)
+        # the dead take no part in any query: off the grid, so that queries stay short
+        cell = self.grid.get(self._cell(*self.pos[i]))
+        if cell is not None and i in cell:
+            cell.remove(i)
 
     # -- geometry guard -----------------------------------------------------------------
     def element_geometry(self, kind: int, x: float, y: float, rot: float, scale: float) -> Any:
         local = self.local_geom[kind]
         m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
         t = np.array([x, y])
+        ring = self.local_ring[kind]
+        if ring is not None:  # a simple polygon: the same coordinates, built directly
+            return shapely.polygons(ring @ m.T + t)
         return shapely.transform(local, lambda q: q @ m.T + t)
 
     def overlaps_any(self, g: Any, kind: int, x: float, y: float, scale: float, skip: set[int] | None = None) -> bool:
@@ -395,6 +412,9 @@ class _Grower:
                 heapq.heappush(self.heap, (math.hypot(self.pos[j, 0] - self.origin[0], self.pos[j, 1] - self.origin[1]), j))
 
     def in_domain(self, x: float, y: float) -> bool:
+        box = self.region_box
+        if box is not None:  # a rectangular region: the same test without shapely
+            return box[0] < x < box[2] and box[1] < y < box[3]
         if self.region is not None and not shapely.contains_xy(self.region.prepared, x, y):
             return False
         return True

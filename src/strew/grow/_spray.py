@@ -141,6 +141,7 @@ class SprayGrowth:
         self._stroke = np.zeros((0, 2))
         self._given = 0  # elements of the growth handed out so far
         self._started = False
+        self._offsets: list[tuple[int, int]] | None = None
 
     # ------------------------------------------------------------------ input
     def add_obstacles(self, arr: Arrangement) -> None:
@@ -183,7 +184,7 @@ class SprayGrowth:
             # not in the paper: a new initial seed where the growth cannot reach (see Notes)
             for p in pts[::-1]:
                 x, y = float(p[0]), float(p[1])
-                if g.in_domain(x, y) and not g.near(x, y, self.radius):
+                if g.in_domain(x, y) and not self._any_near(x, y):
                     g.new_object(x, y, g.p.start_kind)
                     break
         # seeds that waited outside the spray area and are now inside it
@@ -196,6 +197,24 @@ class SprayGrowth:
                 if ok:
                     g.heap.append((math.hypot(g.pos[s, 0] - ox, g.pos[s, 1] - oy), s))
             heapq.heapify(g.heap)
+
+    def _any_near(self, x: float, y: float) -> bool:
+        """Is a seed or element within the radius of (x, y)? Grid cells nearest first."""
+        g = self._g
+        h = g.cell
+        if self._offsets is None:
+            k = int(math.ceil(self.radius / h)) + 1
+            offs = [(i, j) for i in range(-k, k + 1) for j in range(-k, k + 1) if (max(abs(i), abs(j)) - 1) * h <= self.radius]
+            self._offsets = sorted(offs, key=lambda o: o[0] * o[0] + o[1] * o[1])
+        cx, cy = g._cell(x, y)
+        r2 = self.radius * self.radius
+        grid, st, pos = g.grid, g.state, g.pos
+        for i, j in self._offsets:
+            for q in grid.get((cx + i, cy + j), ()):
+                if st[q] == SEED or st[q] == ELEMENT:
+                    if (pos[q, 0] - x) ** 2 + (pos[q, 1] - y) ** 2 <= r2:
+                        return True
+        return False
 
     # ------------------------------------------------------------------ growth
     @property

@@ -1021,7 +1021,7 @@ class Session:
             stroke["spray_scene"] = self._spray_scene()
         self._spray_obstacles(g, pts, radius)
         g.add_points(pts)
-        chunk_size = 128  # elements per streamed chunk after the first
+        chunk_size = 128  # elements per streamed chunk after the first (about 50 ms of growth)
         chunk = FIRST_SPRAY if first else chunk_size
         while True:
             try:
@@ -1037,6 +1037,7 @@ class Session:
                 m = self.scene_message()
                 if m is not None:
                     emit(m)
+                    time.sleep(0)  # let the server's event loop send it (growth holds the GIL)
             chunk = chunk_size
 
     def _spray_scene(self) -> dict[str, Any] | None:
