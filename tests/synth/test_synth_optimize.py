@@ -94,3 +94,22 @@ def test_metric_is_tracked_while_synthesis_runs():
     assert average_neighborhood_distance(s) == pytest.approx(0.0, abs=1e-9)
     s2 = _jittered_copy(ex, 1.0)
     assert average_neighborhood_distance(s2) > 1.0
+
+
+def test_optimisation_keeps_the_exemplar_spacing_on_rings():
+    """Moves that crowd elements are put back, however many rounds that takes: after a
+    fill no two elements are closer than the exemplar allows (§5.2 guard)."""
+    from scipy.spatial import cKDTree
+
+    from strew import Region
+    from strew.synth import fill, new_state
+    from strew.synth._exemplars import rings
+
+    s = new_state(rings(), Region.rectangle(840, 760), rng=1)
+    fill(s)
+    pos, r, prep = s.pos, s.r, s.prep
+    sk = prep.skind[s.src]
+    a, b = cKDTree(pos).query_pairs(max(2 * r.max(), prep.min_dist.max()), output_type="ndarray").T
+    d = np.hypot(*(pos[a] - pos[b]).T)
+    lim = np.maximum(prep.factor * (r[a] + r[b]), prep.min_dist[sk[a], sk[b]])
+    assert np.all(d >= lim - 1e-9)

@@ -154,7 +154,9 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     b[nc:] = np.sqrt(anchor_w)[:, None] * pos[hbar]
     M = (A.T @ A).tocsc()
     rhs = A.T @ b
-    sol = splu(M).solve(np.asarray(rhs))
+    # M = A^T A is symmetric positive definite: a symmetric ordering (minimum degree on
+    # M + M^T) and symmetric pivoting make the LU a Cholesky-like factorisation
+    sol = splu(M, permc_spec="MMD_AT_PLUS_A", options={"SymmetricMode": True}).solve(np.asarray(rhs))
     old = pos[hbar].copy()
     new = old + prm.relaxation * (sol - old)
     moved = hbar
@@ -182,7 +184,7 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
 
 def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -> None:
     """Put back moved elements that now intersect another element or come closer than
-    the exemplar allows (up to 4 rounds)."""
+    the exemplar allows, round by round until none is left."""
     prep = state.prep
     f = prep.factor
     r = state.r
@@ -194,7 +196,8 @@ def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -
     slot[moved] = np.arange(len(moved))
     was = np.zeros(state.n, bool)
     was[moved] = True
-    for _ in range(4):
+    # each round puts back at least one moved element, so len(moved) rounds settle it
+    for _ in range(len(moved) + 1):
         bad = K.spacing_violations(state.pos, r, sk, prep.min_dist, f, was, cell)
         if not bad.any():
             return
