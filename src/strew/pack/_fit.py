@@ -55,10 +55,12 @@ __all__ = ["FitEngine", "ring_layout"]
 RUNNING, DONE, NEED_ROOM, NO_FIELD = 0, 1, 2, 3
 # candidate sampling: side of the pixel blocks whose maxima bound the draw (see _draw_q)
 BLOCK = 8
-# for pb = 2**-j: log(1 - pb), and the chance (1 - pb)**(BLOCK**2) that a block has no pick
+# within blocks near the maximum, pixels whose alpha is at most LOW_P are thinned first
+LOW_P = 1.0 / 64.0
+# for pb = 2**-j: log(1 - pb), and the chance 1 - (1 - pb)**(BLOCK**2) that a block has a pick
 # (j up to 63; the draw's cut keeps pb above 1e-9, so j stays below 30)
 _LOGQ = np.r_[-np.inf, np.log1p(-(2.0 ** -np.arange(1.0, 64.0)))]
-_NONE = np.exp(BLOCK * BLOCK * _LOGQ)
+_ANY = -np.expm1(BLOCK * BLOCK * _LOGQ)
 # indices into the integer state vector
 _S_CONSEC, _S_NEXT, _S_TRIALS, _S_POSES, _S_NP, _S_NV, _S_NR, _S_NE, _S_QID, _S_ROUNDS = range(10)
 
@@ -430,11 +432,17 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
     at all) and accepts a picked pixel with ``alpha / pb``: the same independent
     Bernoulli(alpha) draws, at a cost that follows the expected number of points rather
     than the number of pixels (most blocks lie far below the maximum, where alpha =
-    r**16 is tiny). Blocks at or below the cut are skipped whole.
+    r**16 is tiny). Blocks at or below the cut are skipped whole. Blocks near the
+    maximum (pb at least 1/16) are read pixel by pixel, and there only the pixels whose
+    alpha exceeds LOW_P draw a number each; the others are thinned the same way with
+    probability LOW_P.
     """
     rows, cols = d.shape
     bcols = (cols + BLOCK - 1) // BLOCK
     inv = 1.0 / emax
+    low = emax * LOW_P ** (1.0 / power)  # pixels at or below this have alpha <= LOW_P
+    low_step = 1.0 / np.log1p(-LOW_P)
+    skip = int(np.floor(np.log1p(-gen.random()) * low_step))
     nq = 0
     for b in range(len(bme)):
         if bme[b] <= cut:
@@ -445,19 +453,36 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
         bw = min(BLOCK, cols - c0)
         n = bh * bw
         pb = _alpha(bme[b] * inv, power)
-        if pb >= 0.25:
-            pb = 1.0
-            j = 0
-            step = 0.0
+        if pb >= 0.0625:
+            # a block near the maximum: read every pixel; those with alpha above LOW_P
+            # draw one number each, the rest are picked with probability LOW_P by
+            # geometric skips and accepted with alpha / LOW_P (the same law again)
+            for j in range(n):
+                r = r0 + j // bw
+                c = c0 + j % bw
+                e = d[r, c] * w[r, c]
+                if e <= cut:
+                    continue
+                if e > low:
+                    if gen.random() < _alpha(e * inv, power):
+                        qbuf[nq] = r * cols + c
+                        nq += 1
+                elif skip > 0:
+                    skip -= 1
+                else:
+                    if gen.random() * LOW_P < _alpha(e * inv, power):
+                        qbuf[nq] = r * cols + c
+                        nq += 1
+                    skip = int(np.floor(np.log1p(-gen.random()) * low_step))
+            continue
         else:
             # a power of two at least pb: its logarithm and the chance of no pick in a
             # full block come from tables
             j2 = -math.frexp(pb)[1]  # 2**-(j2 + 1) <= pb < 2**-j2
             pb = math.ldexp(1.0, -j2)
             u = gen.random()
-            if n == BLOCK * BLOCK:
-                if u < _NONE[j2]:
-                    continue
+            if n == BLOCK * BLOCK and u >= _ANY[j2]:
+                continue  # the first pick, at floor(log(1 - u) / log(1 - pb)), lies past the block
             step = 1.0 / _LOGQ[j2]
             j = int(np.floor(np.log1p(-u) * step))
         while j < n:
@@ -467,10 +492,7 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
             if e > cut and gen.random() * pb < _alpha(e * inv, power):
                 qbuf[nq] = r * cols + c
                 nq += 1
-            if step == 0.0:
-                j += 1
-            else:
-                j += 1 + int(np.floor(np.log1p(-gen.random()) * step))
+            j += 1 + int(np.floor(np.log1p(-gen.random()) * step))
     return nq
 
 
