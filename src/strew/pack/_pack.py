@@ -48,7 +48,7 @@ DEFAULTS: dict[str, Any] = {
     # extensions of §4.2 (see _fit): poses tried per candidate point, and the factor that
     # damps the field about a cancelled candidate (fits=1, suppress=1: the paper's rounds)
     "fits": 48,
-    "suppress": 0.8,
+    "suppress": 0.9,
 }
 
 # Step 2 rounds per call of the compiled loop (between progress reports)
@@ -181,7 +181,7 @@ def pack(
         it counts as a cancellation (48; an extension of §4.2; 1 draws one pose as the paper).
     suppress : float in (0, 1]
         Fill-gap Step 2: factor applied to the distance field about a cancelled candidate,
-        so that later rounds explore other gaps (an extension of §4.2; 1 turns it off).
+        so that later rounds explore other gaps (0.9; an extension of §4.2; 1 turns it off).
     rng : int, Generator or None
     progress, should_cancel : callables, optional
         See :mod:`strew._progress`.
