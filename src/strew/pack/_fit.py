@@ -54,7 +54,7 @@ __all__ = ["FitEngine", "ring_layout"]
 # kernel status codes
 RUNNING, DONE, NEED_ROOM, NO_FIELD = 0, 1, 2, 3
 # candidate sampling: side of the pixel blocks whose maxima bound the draw (see _draw_q)
-BLOCK = 8
+BLOCK = 4
 # within blocks near the maximum, pixels whose alpha is at most LOW_P are thinned first
 LOW_P = 1.0 / 64.0
 # for pb = 2**-j: log(1 - pb), and the chance 1 - (1 - pb)**(BLOCK**2) that a block has a pick
