@@ -165,6 +165,7 @@ class _Grower:
         self.order: list[int] = []  # elements in placement order
         self.cell = max(self.l, 1e-9)
         self.grid: dict[tuple[int, int], list[int]] = {}
+        self.xy: list[tuple[float, float]] = []  # pos as Python floats, for the scalar hot paths
         self.edge_grid: dict[tuple[int, int], set[tuple[int, int]]] = {}
         self.edges: set[tuple[int, int]] = set()
         self.heap: list[tuple[float, int]] = []
@@ -223,6 +224,7 @@ class _Grower:
         i = self.n
         self.n += 1
         self.pos[i] = (x, y)
+        self.xy.append((float(x), float(y)))
         self.state[i] = SEED
         self.kind[i] = kind
         self.adj.append(set())
@@ -240,7 +242,7 @@ class _Grower:
         cx1, cy1 = math.floor((x + r) / h), math.floor((y + r) / h)
         out = []
         r2 = r * r
-        pos = self.pos
+        xy = self.xy
         st = self.state
         grid = self.grid
         for cx in range(cx0, cx1 + 1):
@@ -249,17 +251,18 @@ class _Grower:
                 if not lst:
                     continue
                 for i in lst:
-                    if st[i] in states:
-                        dx = pos[i, 0] - x
-                        dy = pos[i, 1] - y
-                        if dx * dx + dy * dy <= r2:
-                            out.append(i)
+                    px, py = xy[i]
+                    dx = px - x
+                    dy = py - y
+                    if dx * dx + dy * dy <= r2 and st[i] in states:
+                        out.append(i)
         return out
 
     def _move(self, i: int, x: float, y: float) -> None:
-        old = self._cell(*self.pos[i])
+        old = self._cell(*self.xy[i])
         new = self._cell(x, y)
         self.pos[i] = (x, y)
+        self.xy[i] = (float(x), float(y))
         if old != new:
             self.grid[old].remove(i)
             self.grid.setdefault(new, []).append(i)
@@ -281,7 +284,7 @@ class _Grower:
     def _index_edge(self, a: int, b: int) -> None:
         """Put edge (a, b) in every grid cell its bounding box covers."""
         e = (a, b) if a < b else (b, a)
-        for c in self._edge_cells(self.pos[a], self.pos[b]):
+        for c in self._edge_cells(self.xy[a], self.xy[b]):
             self.edge_grid.setdefault(c, set()).add(e)
 
     def add_edge(self, a: int, b: int) -> None:
@@ -299,7 +302,7 @@ class _Grower:
 
     def crosses_edges(self, a: int | None, pa: tuple[float, float], b: int | None, pb: tuple[float, float]) -> bool:
         """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge?"""
-        pos = self.pos
+        xy = self.xy
         edges = self.edges
         seen: set[tuple[int, int]] = set()
         for c in self._edge_cells(pa, pb):
@@ -317,7 +320,7 @@ class _Grower:
                 u, v = e
                 if u == a or u == b or v == a or v == b:
                     continue
-                if _segments_cross(pa, pb, (pos[u, 0], pos[u, 1]), (pos[v, 0], pos[v, 1])):
+                if _segments_cross(pa, pb, xy[u], xy[v]):
                     return True
             cell.difference_update(stale)
         return False
@@ -333,7 +336,7 @@ class _Grower:
         self.state[i] = DEAD
         self.deferred.discard(i)
         # the dead take no part in any query: off the grid, so that queries stay short
-        cell = self.grid.get(self._cell(*self.pos[i]))
+        cell = self.grid.get(self._cell(*self.xy[i]))
         if cell is not None and i in cell:
             cell.remove(i)
 
@@ -368,7 +371,7 @@ class _Grower:
     def overlapping(self, g: int) -> list[int]:
         """Elements whose geometry overlaps element ``g`` (area overlap, or any contact of strokes)."""
         kind = int(self.kind[g])
-        x, y = self.pos[g]
+        x, y = self.xy[g]
         r = self.kind_radius[kind] * self.scl[g] + self.other_rmax
         others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if j != g]
         if not others:
@@ -396,7 +399,7 @@ class _Grower:
         if not self.use_prio:
             return False
         pi = self.seed_priority(i)
-        x, y = self.pos[i]
+        x, y = self.xy[i]
         for j in self.near(x, y, 5 * self.l, (SEED,)):
             if j != i and self.seed_priority(j) > pi:
                 return True
@@ -405,11 +408,11 @@ class _Grower:
     def release_deferred(self, i: int) -> None:
         if not self.deferred:
             return
-        x, y = self.pos[i]
+        x, y = self.xy[i]
         for j in self.near(x, y, 5 * self.l, (SEED,)):
             if j in self.deferred:
                 self.deferred.discard(j)
-                heapq.heappush(self.heap, (math.hypot(self.pos[j, 0] - self.origin[0], self.pos[j, 1] - self.origin[1]), j))
+                heapq.heappush(self.heap, (math.hypot(self.xy[j][0] - self.origin[0], self.xy[j][1] - self.origin[1]), j))
 
     def in_domain(self, x: float, y: float) -> bool:
         box = self.region_box
@@ -461,7 +464,7 @@ class _Grower:
         p = self.p
         r = int(self.ref_ids[a])
         kind = int(self.ex_kind[r])
-        x, y = float(self.pos[s, 0]), float(self.pos[s, 1])
+        x, y = self.xy[s]
         rot = float(self.ex_rot[r]) + th
         scale = float(self.ex_scale[r])
         if p.jitter_rotation > 0:
@@ -515,9 +518,9 @@ class _Grower:
             close = self.near(cx, cy, self.l_short)
             close = [o for o in close if o != s]
             if close:
-                o = min(close, key=lambda o: (self.pos[o, 0] - cx) ** 2 + (self.pos[o, 1] - cy) ** 2)
+                o = min(close, key=lambda o: (self.xy[o][0] - cx) ** 2 + (self.xy[o][1] - cy) ** 2)
                 if o not in self.adj[s]:
-                    po = (float(self.pos[o, 0]), float(self.pos[o, 1]))
+                    po = self.xy[o]
                     if not self.crosses_edges(s, (x, y), o, po) and not self.crosses_boundary((x, y), po):
                         self.add_edge(s, o)
                         slot_of.setdefault(o, j)
@@ -527,7 +530,7 @@ class _Grower:
             ang = math.atan2(cy - y, cx - x)
             too_close = False
             for o in self.adj[s]:
-                d = abs(math.atan2(self.pos[o, 1] - y, self.pos[o, 0] - x) - ang)
+                d = abs(math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) - ang)
                 d = min(d, 2 * math.pi - d)
                 if d < 0.5 * gap_min[j]:
                     too_close = True
@@ -552,11 +555,11 @@ class _Grower:
         return True
 
     def _ring_edges(self, s: int, a: int, slot_of: dict[int, int], rel: np.ndarray, c: float, sn: float) -> None:
-        x, y = self.pos[s]
+        x, y = self.xy[s]
         nbrs = list(self.adj[s])
         if len(nbrs) < 2:
             return
-        angs = [math.atan2(self.pos[o, 1] - y, self.pos[o, 0] - x) for o in nbrs]
+        angs = [math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) for o in nbrs]
         order = sorted(range(len(nbrs)), key=lambda q: angs[q])
         m = len(order)
         for q in range(m):
@@ -567,8 +570,8 @@ class _Grower:
                 break
             if gap <= 1e-9 or gap >= math.pi - 1e-9 or ob in self.adj[oa]:
                 continue
-            pa = (float(self.pos[oa, 0]), float(self.pos[oa, 1]))
-            pb = (float(self.pos[ob, 0]), float(self.pos[ob, 1]))
+            pa = self.xy[oa]
+            pb = self.xy[ob]
             ja, jb = slot_of.get(oa), slot_of.get(ob)
             if ja is not None and jb is not None:
                 orig = float(np.hypot(*(rel[ja] - rel[jb])))
@@ -620,7 +623,8 @@ class _Grower:
         if t is not None and j in t and len(t) == len(self.adj[i]) and len(t) == self.ring_n.get(i, -1):
             return t[j]
         # §5.5: seeds, and elements that lost or gained an edge, use their current shape
-        return (self.pos[j, 0] - self.pos[i, 0], self.pos[j, 1] - self.pos[i, 1])
+        xj, xi = self.xy[j], self.xy[i]
+        return (xj[0] - xi[0], xj[1] - xi[1])
 
     def relax_window(self) -> None:
         win = {i for i in self.dirty if self.state[i] != DEAD}
@@ -652,7 +656,7 @@ class _Grower:
         moved = []
         for g in win:
             nx, ny = float(new[local[g], 0]), float(new[local[g], 1])
-            ox, oy = float(self.pos[g, 0]), float(self.pos[g, 1])
+            ox, oy = self.xy[g]
             if abs(nx - ox) + abs(ny - oy) <= tiny:
                 continue
             # relaxation never takes a centre out of the region or across a boundary stroke
@@ -662,7 +666,7 @@ class _Grower:
             if self.spray_area is not None and self.state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
                 continue
             moved.append(g)
-        old = {g: (float(self.pos[g, 0]), float(self.pos[g, 1]), self.geom[g]) for g in moved}
+        old = {g: (*self.xy[g], self.geom[g]) for g in moved}
         for g in moved:
             self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
             if self.state[g] == ELEMENT:
@@ -680,7 +684,7 @@ class _Grower:
                 if hits:
                     back.add(g)
                     back.update(h for h in hits if h in old)
-            back = {g for g in back if (self.pos[g, 0], self.pos[g, 1]) != old[g][:2]}
+            back = {g for g in back if self.xy[g] != old[g][:2]}
             for g in back:
                 self._move(g, old[g][0], old[g][1])
                 self.geom[g] = old[g][2]
@@ -717,7 +721,7 @@ class _Grower:
             _, s = heapq.heappop(self.heap)
             if self.state[s] != SEED or s in self.deferred:
                 continue
-            x, y = self.pos[s]
+            x, y = self.xy[s]
             if self.spray_area is not None and not shapely.contains_xy(self.spray_area, x, y):
                 # §5.1 spray tool: only seeds within the radius grow; others wait
                 if self.waiting is not None:
@@ -761,6 +765,7 @@ class _Grower:
         i = self.n
         self.n += 1
         self.pos[i] = (x, y)
+        self.xy.append((float(x), float(y)))
         self.state[i] = OBSTACLE
         self.kind[i] = len(self.areal)
         self.areal.append(bool(areal))
