@@ -121,6 +121,7 @@ class _Grower:
             self.ring_edge_mean[a] = float(np.linalg.norm(rel - np.roll(rel, -1, axis=0), axis=1).mean())
         ref_kind = self.ex_kind[self.ref_ids]
         self.kind_candidates = [ref_kind == k for k in range(self.n_kinds)]
+        self.kind_has_candidates = [bool(c.any()) for c in self.kind_candidates]
         self.all_candidates = np.ones(n_ref, dtype=bool)
         # priorities (§5.1)
         prio = np.zeros(self.n_kinds)
@@ -304,16 +305,20 @@ class _Grower:
         """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge?"""
         xy = self.xy
         edges = self.edges
+        edge_grid = self.edge_grid
+        cells = self._edge_cells(pa, pb)
+        one = len(cells) == 1  # an edge is listed once per cell: no need to skip repeats
         seen: set[tuple[int, int]] = set()
-        for c in self._edge_cells(pa, pb):
-            cell = self.edge_grid.get(c)
+        for c in cells:
+            cell = edge_grid.get(c)
             if not cell:
                 continue
             stale = []
             for e in cell:
-                if e in seen:
-                    continue
-                seen.add(e)
+                if not one:
+                    if e in seen:
+                        continue
+                    seen.add(e)
                 if e not in edges:
                     stale.append(e)
                     continue
@@ -322,7 +327,8 @@ class _Grower:
                     continue
                 if _segments_cross(pa, pb, xy[u], xy[v]):
                     return True
-            cell.difference_update(stale)
+            if stale:
+                cell.difference_update(stale)
         return False
 
     def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
@@ -438,7 +444,7 @@ class _Grower:
             rel = np.zeros((0, 2))
         k = self.kind[s]
         cand = self.all_candidates
-        if k >= 0 and self.kind_candidates[k].any():
+        if k >= 0 and self.kind_has_candidates[k]:
             # §5.2: a seed with a symbol id examines only references of that id. A kind that
             # occurs only on the exemplar's boundary has no reference: any element may go.
             cand = self.kind_candidates[k]
