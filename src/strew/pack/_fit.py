@@ -335,17 +335,6 @@ def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, h
 
 
 @numba.njit(cache=True)
-def _insert_poses(kinds, poses, kv, kr, kk, cv, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
-    """Insert already placed elements (Step 1) given by kind and pose (x, y, rot, s)."""
-    for i in range(len(kinds)):
-        k = kinds[i]
-        c = np.cos(poses[i, 2]) * poses[i, 3]
-        sn = np.sin(poses[i, 2]) * poses[i, 3]
-        _pose(kv, kr, kk[k], kk[k + 1], poses[i, 0], poses[i, 1], c, sn, cv, cbb)
-        _insert(k, poses[i, 0], poses[i, 1], poses[i, 2], poses[i, 3], cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
-
-
-@numba.njit(cache=True)
 def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi,
                   rv, rr, rsegs, rhead, rnext, rsid, rstamp, cv, ch, cbb, hbb,
                   pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
@@ -917,13 +906,6 @@ class FitEngine:
 
     def __len__(self) -> int:
         return int(self.st[_S_NP])
-
-    def insert(self, kinds: np.ndarray, poses: np.ndarray) -> None:
-        """Add placed elements: (m,) kinds and (m, 4) poses (x, y, rotation, scale)."""
-        self._room(len(kinds))
-        _insert_poses(np.asarray(kinds, dtype=np.int64), np.ascontiguousarray(poses, dtype=float), self.kv, self.kr, self.kk,
-                      self.cv, self.cbb, self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g, self.head,
-                      self.enext, self.epoly, self.st)
 
     def place_sparse(self, xy: np.ndarray, u_rot: np.ndarray, u_scale: np.ndarray, kinds: np.ndarray | None) -> int:
         """Step 1 (§4.1): an element at each point of (m, 2) ``xy`` that lies inside the

@@ -7,11 +7,13 @@ Two methods over the same exclusive regions (§3.1) and exact placement tests:
     ``max_failures`` consecutive cancellations (10,000 in the paper's §3.3).
 ``"fill-gap"`` (§4)
     Step 1 (§4.1): sparse placement at Poisson-disk points whose circles circumscribe
-    the exclusive regions, so that no test can fail. Step 2 (§4.2): rounds of P = 100
-    candidates drawn from the distance field to the placed regions and the boundary with
-    probability ``d**16``; stop after 200 consecutive cancellations. Step 2 runs as one
-    compiled loop with three extensions of §4.2 (several poses per candidate, suppression
-    of failed spots, candidates kept fresh within a round); see :mod:`._fit`.
+    the exclusive regions, so that no collision test is needed (only containment).
+    Step 2 (§4.2): rounds of P = 100 candidates drawn from the distance field to the
+    placed regions and the boundary with probability ``d**16``; stop after 200
+    consecutive cancellations. Both steps run in the compiled engine of :mod:`._fit`
+    (exact, robust polygon tests; no shapely in the loop), Step 2 with three extensions
+    of §4.2 (several poses per candidate, suppression of failed spots, candidates kept
+    fresh within a round).
 """
 
 from __future__ import annotations
