@@ -18,6 +18,10 @@ from scipy.sparse.linalg import spsolve
 
 __all__ = ["relax_positions"]
 
+#: Up to this many free points the normal equations are solved as a dense system (below
+#: the size at which OpenBLAS starts threads, which costs more than it saves here).
+DENSE_MAX = 96
+
 
 def relax_positions(
     positions: np.ndarray,
@@ -77,7 +81,6 @@ def relax_positions(
     rows = np.concatenate([cd[fd], cs[fs], cd[both], cs[both], np.arange(nf)])
     cols = np.concatenate([cd[fd], cs[fs], cs[both], cd[both], np.arange(nf)])
     vals = np.concatenate([np.ones(int(fd.sum()) + int(fs.sum())), -np.ones(2 * int(both.sum())), np.full(nf, regularization)])
-    N = sp.csc_matrix((vals, (rows, cols)), shape=(nf, nf))
     b = regularization * pos[free]
     d_only = fd & ~fs
     s_only = fs & ~fd
@@ -85,6 +88,12 @@ def relax_positions(
     np.add.at(b, cd[d_only], pos[src[d_only]])
     np.add.at(b, cs[fs], -off[fs])
     np.add.at(b, cs[s_only], pos[dst[s_only]])
-    sol = spsolve(N, b)
+    if nf <= DENSE_MAX:
+        # small windows (the growth's windowed relaxation): a dense solve is far cheaper
+        # than assembling a sparse matrix; the system is the same
+        N = np.bincount(rows * nf + cols, weights=vals, minlength=nf * nf).reshape(nf, nf)
+        sol = np.linalg.solve(N, b)
+    else:
+        sol = spsolve(sp.csc_matrix((vals, (rows, cols)), shape=(nf, nf)), b)
     out[free] = np.asarray(sol).reshape(nf, 2)
     return out
