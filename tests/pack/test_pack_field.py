@@ -115,7 +115,9 @@ def test_candidate_draw_is_bernoulli_alpha_per_pixel():
     bme, bmd = np.zeros(nb), np.zeros(nb)
     _block_max(d, w, bme, bmd, 0, (rows + BLOCK - 1) // BLOCK, 0, (cols + BLOCK - 1) // BLOCK)
     assert bme.max() == emax and bmd.max() == d.max()
-    gen = np.random.default_rng(5)
+    from strew.pack._fit import rand_state
+
+    gen = rand_state(np.random.default_rng(5))
     qbuf = np.zeros(d.size, dtype=np.int64)
     hits = np.zeros(d.size)
     trials = 3000
@@ -125,12 +127,12 @@ def test_candidate_draw_is_bernoulli_alpha_per_pixel():
         hits[qbuf[:n]] += 1
     flat = alpha.ravel()
     assert np.all(hits[flat == 0] == 0)  # obstacles and pixels at or below the cut
-    # per level, the frequency matches alpha within 5 sigma
+    # per level, the number of picks matches alpha within 5 sigma (and a few picks of
+    # slack where the expected count is tiny)
     for a in np.unique(flat[flat > 0]):
         sel = flat == a
-        freq = hits[sel].sum() / (sel.sum() * trials)
-        sigma = np.sqrt(a * (1 - a) / (sel.sum() * trials))
-        assert abs(freq - a) <= 5 * sigma + 1e-6, (a, freq)
+        count, expect = hits[sel].sum(), a * sel.sum() * trials
+        assert abs(count - expect) <= 5 * np.sqrt(expect * (1 - a)) + 3, (a, count, expect)
 
 
 def test_posed_update_equals_the_plain_update():

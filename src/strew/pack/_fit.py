@@ -379,6 +379,30 @@ def _alpha(r, power):  # pragma: no cover - numba
     return r**power
 
 
+@numba.njit(cache=True, inline="always")
+def _rand(state):  # pragma: no cover - numba
+    """Uniform double in [0, 1) from xoshiro256+ (``state``: (4,) uint64, not all zero),
+    inline: the compiled loops draw several numbers per pose, and a call into numpy's
+    generator costs more than the rest of a rejected pose."""
+    s0, s1, s2, s3 = state[0], state[1], state[2], state[3]
+    out = s0 + s3
+    t = s1 << np.uint64(17)
+    s2 ^= s0
+    s3 ^= s1
+    s1 ^= s2
+    s0 ^= s3
+    s2 ^= t
+    s3 = (s3 << np.uint64(45)) | (s3 >> np.uint64(19))
+    state[0], state[1], state[2], state[3] = s0, s1, s2, s3
+    return float(out >> np.uint64(11)) * (1.0 / 9007199254740992.0)
+
+
+def rand_state(gen: np.random.Generator) -> np.ndarray:
+    """(4,) uint64 seed of the compiled loops' generator (:func:`_rand`), drawn from
+    ``gen``: the same ``gen`` gives the same stream."""
+    return gen.integers(1, 2**63, size=4, dtype=np.uint64)
+
+
 @numba.njit(cache=True)
 def _block_max(d, w, bme, bmd, br0, br1, bc0, bc1):  # pragma: no cover - numba
     """Refresh the maxima of ``e = d w`` and of ``d`` over the BLOCK x BLOCK pixel
@@ -410,10 +434,10 @@ def _refresh(d, w, bme, bmd, r0, r1, c0, c1):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
-def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
+def _draw_q(rs, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
     """Candidate points Q (§4.2): each pixel with ``e = d w > cut`` joins with probability
     ``alpha = (e / emax)**power``, independently; their flat indices go to ``qbuf``.
-    Returns their number.
+    Returns their number. ``rs``: the generator state of :func:`_rand`.
 
     Pixels are visited by blocks. A block whose largest e gives ``(max e / emax)**power
     <= pb = 2**-j`` picks its pixels with probability pb by geometric skips (the pixels
@@ -431,7 +455,7 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
     inv = 1.0 / emax
     low = emax * LOW_P ** (1.0 / power)  # pixels at or below this have alpha <= LOW_P
     low_step = 1.0 / np.log1p(-LOW_P)
-    skip = int(np.floor(np.log1p(-gen.random()) * low_step))
+    skip = int(np.floor(np.log1p(-_rand(rs)) * low_step))
     nq = 0
     for b in range(len(bme)):
         if bme[b] <= cut:
@@ -453,23 +477,23 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
                 if e <= cut:
                     continue
                 if e > low:
-                    if gen.random() < _alpha(e * inv, power):
+                    if _rand(rs) < _alpha(e * inv, power):
                         qbuf[nq] = r * cols + c
                         nq += 1
                 elif skip > 0:
                     skip -= 1
                 else:
-                    if gen.random() * LOW_P < _alpha(e * inv, power):
+                    if _rand(rs) * LOW_P < _alpha(e * inv, power):
                         qbuf[nq] = r * cols + c
                         nq += 1
-                    skip = int(np.floor(np.log1p(-gen.random()) * low_step))
+                    skip = int(np.floor(np.log1p(-_rand(rs)) * low_step))
             continue
         else:
             # a power of two at least pb: its logarithm and the chance of no pick in a
             # full block come from tables
             j2 = -math.frexp(pb)[1]  # 2**-(j2 + 1) <= pb < 2**-j2
             pb = math.ldexp(1.0, -j2)
-            u = gen.random()
+            u = _rand(rs)
             if n == BLOCK * BLOCK and u >= _ANY[j2]:
                 continue  # the first pick, at floor(log(1 - u) / log(1 - pb)), lies past the block
             step = 1.0 / _LOGQ[j2]
@@ -478,16 +502,16 @@ def _draw_q(gen, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
             r = r0 + j // bw
             c = c0 + j % bw
             e = d[r, c] * w[r, c]
-            if e > cut and gen.random() * pb < _alpha(e * inv, power):
+            if e > cut and _rand(rs) * pb < _alpha(e * inv, power):
                 qbuf[nq] = r * cols + c
                 nq += 1
-            j += 1 + int(np.floor(np.log1p(-gen.random()) * step))
+            j += 1 + int(np.floor(np.log1p(-_rand(rs)) * step))
     return nq
 
 
 @numba.njit(cache=True)
 def _rounds(
-    gen, max_rounds, limit, p_count, power, fits, suppress, sup_r, kanch, ka, kdisk, kdo, kbb,
+    rs, max_rounds, limit, p_count, power, fits, suppress, sup_r, kanch, ka, kdisk, kdo, kbb,
     d, w, fx0, fy0, fcell, qbuf, cand, cdraw,
     kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi, cumw,
     rv, rr, rsegs, rhead, rnext, rsid, rstamp,
@@ -527,11 +551,11 @@ def _rounds(
         dmax = bmd.max()
         if emax <= 0.0:
             return NO_FIELD
-        nq = _draw_q(gen, d, w, bme, emax * thr, emax, power, qbuf)
+        nq = _draw_q(rs, d, w, bme, emax * thr, emax, power, qbuf)
         # -- choose P of them at random (§4.2): a partial Fisher-Yates shuffle
         m = min(nq, p_count)
         for i in range(m):
-            j = i + int(gen.random() * (nq - i))
+            j = i + int(_rand(rs) * (nq - i))
             t = qbuf[i]
             qbuf[i] = qbuf[j]
             qbuf[j] = t
@@ -539,19 +563,19 @@ def _rounds(
             cdraw[i] = dflat[qbuf[i]] * wflat[qbuf[i]]
         for ci in range(m):
             q = cand[ci]
-            jx = gen.random()
-            jy = gen.random()
+            jx = _rand(rs)
+            jy = _rand(rs)
             e_now = dflat[q] * wflat[q]
             if e_now <= 0.0:
                 continue  # now inside a placed region: no longer a point of Q
-            if e_now < cdraw[ci] and gen.random() >= _alpha(e_now / cdraw[ci], power):
+            if e_now < cdraw[ci] and _rand(rs) >= _alpha(e_now / cdraw[ci], power):
                 continue  # thinned: the field shrank here since the draw (extension, §4.2)
             px = fx0 + (q % cols + jx) * fcell
             py = fy0 + (q // cols + jy) * fcell
             if cumw.size == 0:
                 k = st[_S_NEXT]
             else:
-                u = gen.random()
+                u = _rand(rs)
                 k = 0
                 while k < nkinds - 1 and u >= cumw[k]:
                     k += 1
@@ -568,10 +592,10 @@ def _rounds(
             for t in range(tries):
                 rot = rot_lo[k]
                 if rot_hi[k] > rot_lo[k]:
-                    rot += gen.random() * (rot_hi[k] - rot_lo[k])
+                    rot += _rand(rs) * (rot_hi[k] - rot_lo[k])
                 s = sc_lo[k]
                 if sc_hi[k] > sc_lo[k]:
-                    s += gen.random() * (sc_hi[k] - sc_lo[k])
+                    s += _rand(rs) * (sc_hi[k] - sc_lo[k])
                 anchored = t > 0 and ka[k + 1] > ka[k]
                 if anchored:
                     # later poses put one of the kind's anchor points (inside its
@@ -583,7 +607,7 @@ def _rounds(
                             a += 1
                         ax_, ay_ = kdisk[a, 0], kdisk[a, 1]
                     else:
-                        a = ka[k] + int(gen.random() * (ka[k + 1] - ka[k]))
+                        a = ka[k] + int(_rand(rs) * (ka[k + 1] - ka[k]))
                         ax_, ay_ = kanch[a, 0], kanch[a, 1]
                         if kanch[a, 2] * s > dflat[q] + off_q:
                             # the anchor's own inscribed disk, centred on the point, is
@@ -955,8 +979,9 @@ class FitEngine:
             self.cand = np.zeros(p_count, dtype=np.int64)
             self.cdraw = np.zeros(p_count)
         while True:
+            state = rand_state(gen)
             status = _rounds(
-                gen, rounds, limit, p_count, float(power), fits, float(suppress), float(sup_r), self.kanch, self.ka, self.kdisk, self.kdo,
+                state, rounds, limit, p_count, float(power), fits, float(suppress), float(sup_r), self.kanch, self.ka, self.kdisk, self.kdo,
                 self.kbb,
                 field.d, self.w, field.x0, field.y0, field.cell, self.qbuf, self.cand, self.cdraw,
                 self.kv, self.kr, self.kk, self.hv, self.hr, self.hk, self.same_hull, self.rot_lo, self.rot_hi,
