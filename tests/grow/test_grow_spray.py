@@ -128,3 +128,17 @@ def test_outside_the_region_nothing_grows():
     g = SprayGrowth(ref, radius=RADIUS, region=Region.rectangle(50, 50), rng=1)
     g.add_points([[500.0, 500.0], [600.0, 500.0]])
     assert len(g.grow()) == 0 and not g.pending
+
+
+def test_a_cancelled_call_keeps_what_it_placed():
+    from strew._errors import Cancelled
+
+    ref = analyze(hex_exemplar())
+    g = SprayGrowth(ref, radius=RADIUS, rng=1)
+    g.add_points(PATH[:10])
+    with pytest.raises(Cancelled):  # asked to stop at the first check, after one step
+        g.grow(should_cancel=lambda: True)
+    kept = g.grow(0)
+    assert len(kept) == len(g.arrangement()) > 0
+    assert np.all(_dist(kept.xy, PATH[:10]) <= RADIUS + 1e-6)
+    assert len(metrics.overlaps(kept)[0]) == 0

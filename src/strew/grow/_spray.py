@@ -236,7 +236,11 @@ class SprayGrowth:
         max_new : int, optional
             Stop after about this many new elements (at the next relaxation window, so
             that stopping and going on gives the same growth); :attr:`pending` then says
-            whether more can grow. All by default.
+            whether more can grow. All by default; 0 grows nothing and hands out what a
+            cancelled call left.
+        progress, should_cancel
+            See :mod:`strew._progress`; a cancelled call raises
+            :class:`strew.Cancelled` and keeps what it placed for the next call.
 
         Returns
         -------
@@ -245,7 +249,9 @@ class SprayGrowth:
             ``sub_id`` (and ``color`` when colours vary). They stay where they are.
         """
         g = self._g
-        if self._started:
+        if self._started and max_new == 0:
+            g.settle()  # no growth: hand out what an interrupted call placed
+        elif self._started:
             rep = Reporter(progress, should_cancel, message="spraying")
             pause = None if max_new is None else self._given + max(1, int(max_new))
             if not g.advance(rep, g.p.max_elements, pause=pause):
