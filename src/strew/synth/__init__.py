@@ -16,6 +16,14 @@ Palette, load_palette, save_palette
     Example palettes.
 average_neighborhood_distance, energy
     The measures of Eq. 5 and Eq. 2.
+
+Departures from the paper (each is commented where it is made): pairing is tested on
+|dp|; the ratio test's inequality reads the other way round (as printed it vetoes
+every candidate); a relative kind-mismatch cost; a learned closest approach per kind
+pair; a sparse LU solve with a symmetric ordering instead of a sparse Cholesky; visible
+elements are placed before voids and evict the voids they land on (§5.6), which brings
+the visible density to the exemplar's; while brushing, the horizon that is optimised is
+the part within r-bar of the iteration's new elements (§5.2, "recently synthesized").
 """
 
 from __future__ import annotations
