@@ -117,7 +117,7 @@ class _Grower:
             rel = self.rings["rel"][a, :k]
             ang = np.arctan2(rel[:, 1], rel[:, 0])
             gaps = np.mod(np.diff(np.r_[ang, ang[0]]), 2 * np.pi)  # gap after slot j
-            self.ring_gap_min.append(np.minimum(gaps, np.roll(gaps, 1)))
+            self.ring_gap_min.append(np.minimum(gaps, np.roll(gaps, 1)).tolist())
             self.ring_edge_mean[a] = float(np.linalg.norm(rel - np.roll(rel, -1, axis=0), axis=1).mean())
         ref_kind = self.ex_kind[self.ref_ids]
         self.kind_candidates = [ref_kind == k for k in range(self.n_kinds)]
@@ -503,7 +503,8 @@ class _Grower:
         ring_pos = np.empty((n_ring, 2))
         ring_pos[:, 0] = x + c * rel[:, 0] - sn * rel[:, 1]
         ring_pos[:, 1] = y + sn * rel[:, 0] + c * rel[:, 1]
-        ring_kind = self.rings["kind"][a, :n_ring]
+        ring_kind = self.rings["kind"][a, :n_ring].tolist()
+        ring_xy = ring_pos.tolist()
         slot_of: dict[int, int] = {}
         nb = self._last_nb
         for i, j in enumerate(nb.tolist()):
@@ -514,7 +515,7 @@ class _Grower:
         for j in range(n_ring):
             if j in paired:
                 continue
-            cx, cy = float(ring_pos[j, 0]), float(ring_pos[j, 1])
+            cx, cy = ring_xy[j]
             if not self.in_domain(cx, cy):
                 continue
             if self.crosses_boundary((x, y), (cx, cy)):
@@ -546,16 +547,18 @@ class _Grower:
             # (d) edge collision
             if self.crosses_edges(s, (x, y), None, (cx, cy)):
                 continue
-            t = self.new_object(cx, cy, int(ring_kind[j]))
+            t = self.new_object(cx, cy, ring_kind[j])
             self.add_edge(s, t)
             slot_of[t] = j
         # (h) edges between consecutive ring members, and (e) extra seeds on long ones
         self._ring_edges(s, a, slot_of, rel, c, sn)
         # ring targets r_ji for the relaxation (§5.5)
         tgt = {}
+        rel_l = rel.tolist()
         for o, j in slot_of.items():
             if o in self.adj[s]:
-                tgt[o] = (c * rel[j, 0] - sn * rel[j, 1], sn * rel[j, 0] + c * rel[j, 1])
+                rx, ry = rel_l[j]
+                tgt[o] = (c * rx - sn * ry, sn * rx + c * ry)
         self.target[s] = tgt
         self.ring_n[s] = n_ring
         return True
