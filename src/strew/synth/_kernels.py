@@ -25,7 +25,7 @@ __all__ = [
 INF = np.inf
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def map_offset(px: float, py: float, ox: float, oy: float) -> tuple[float, float]:
     """m_p (§5.1, Eq. 3): map an example-space offset to output space at ``p``.
 
@@ -36,7 +36,7 @@ def map_offset(px: float, py: float, ox: float, oy: float) -> tuple[float, float
     return ox, oy
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used, elen, bound=INF):
     """Neighbourhood distance |n(o) - n(e)| of Eq. 1 with greedy pair assignment (§4).
 
@@ -135,7 +135,7 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
     return cost
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def sort_segments(ptr, idx, off):
     """Sort each CSR segment in place by offset length (ascending)."""
     n = ptr.shape[0] - 1
@@ -150,12 +150,12 @@ def sort_segments(ptr, idx, off):
         off[a:b] = off[a:b][order]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def _center_cost(ko, ke, d, kind_cost):
     return kind_cost * d * d if ko != ke else 0.0
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def _inside_convex(hp, nh, x, y):
     for t in range(nh):
         if hp[t, 0] * x + hp[t, 1] * y > hp[t, 2]:
@@ -163,7 +163,7 @@ def _inside_convex(hp, nh, x, y):
     return True
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d, q_pos, q_src, hp, hp_n, cands, e_ptr, e_off, e_kind, e_d, ex_kind, kind_cost):
     """Like :func:`candidate_costs` between exemplar neighbourhoods, where a right-partial
     pair only counts when its element would fall inside the query's own exemplar domain
@@ -199,7 +199,7 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d, cands, e_ptr, e_off, e_kind, e_d, ex_kind, kind_cost):
     """|n(q) - n(c)| for every query neighbourhood ``q`` and each of its candidates.
 
@@ -243,7 +243,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr):
     """Right-partial pairs of each (seed, candidate), mapped to output space (§5.1).
 
@@ -305,7 +305,7 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
     return count, ex, pos
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell):
     """Sequential generation over seeds (Algorithm 1, §5.1).
 
@@ -421,7 +421,7 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
     return placed, seed_ok
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d, cands, e_ptr, e_idx, e_off, e_kind, e_d, ex_kind, kind_cost):
     """Most similar exemplar neighbourhood for each query and its full pairs (§5.2).
 
@@ -486,7 +486,7 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
     return best, bcost, con_q[:n], con_o[:n], con_off[:n]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def greedy_separated(pos, order, sep):
     """Greedy subset of ``order`` whose members are at least ``sep[i]`` apart (§5.1 seeds).
 
@@ -556,7 +556,7 @@ def greedy_separated(pos, order, sep):
     return out[:ns]
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_sk, cell):
     """Which query points would intersect an output element (uniform grid search).
 
@@ -621,7 +621,7 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def overlaps_any(pts, pr, centers, cr):
     """(n,) bool: is ``|pts[i] - centers[j]| < max(pr[i], cr[j])`` for some j (grid search)."""
     n = pts.shape[0]
@@ -671,7 +671,7 @@ def overlaps_any(pts, pr, centers, cr):
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def in_discs(pts, centers, radii):
     """(n,) bool: which ``pts`` lie in some disc ``(centers[j], radii[j])`` (grid search)."""
     n = pts.shape[0]
@@ -716,7 +716,7 @@ def in_discs(pts, centers, radii):
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def near_any(pts, centers, reach):
     """(n,) bool: which ``pts`` lie within ``reach`` of some point of ``centers``."""
     n = pts.shape[0]
@@ -760,7 +760,7 @@ def near_any(pts, centers, reach):
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def spacing_violations(pos, rad, sk, min_dist, factor, moved, cell):
     """(n,) bool: moved elements closer to another element than allowed.
 
@@ -802,7 +802,7 @@ def spacing_violations(pos, rad, sk, min_dist, factor, moved, cell):
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)
 def grid_neighborhoods(pos, query, radius):
     """CSR neighbourhoods of ``pos[query]`` within ``radius`` (self excluded), sorted by
     distance; a uniform grid replaces the k-d tree for the output's hot loop.
