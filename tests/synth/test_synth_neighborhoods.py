@@ -256,6 +256,13 @@ def test_grid_disc_queries_equal_brute_force(q, c):
     ov_ref = np.any(d2 < np.maximum(pr[:, None], cr[None, :]) ** 2, axis=1) if len(cen) else np.zeros(len(p), bool)
     assert np.array_equal(K.in_discs(p, cen, cr), in_ref)
     assert np.array_equal(K.overlaps_any(p, pr, cen, cr), ov_ref)
+    reach = float(cr[0]) if len(cr) else 1.0
+    near_ref = np.any(d2 <= reach**2, axis=1) if len(cen) else np.zeros(len(p), bool)
+    assert np.array_equal(K.near_any(p, cen, reach), near_ref)
+    # radii far below the spread: the grid coarsens instead of growing without bound
+    ps, cs, tiny = p * 1e3, cen * 1e3, np.full(len(cr), 1e-6)
+    d2s = ((ps[:, None, 0] - cs[None, :, 0]) ** 2 + (ps[:, None, 1] - cs[None, :, 1]) ** 2).reshape(len(p), len(cen))
+    assert np.array_equal(K.in_discs(ps, cs, tiny), np.any(d2s <= tiny[None, :] ** 2, axis=1) if len(cen) else np.zeros(len(p), bool))
 
 
 @given(_offsets, _offsets, st.floats(0.0, 200.0))

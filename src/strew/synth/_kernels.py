@@ -622,8 +622,12 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
 
 
 @numba.njit(cache=True, nogil=True)
-def overlaps_any(pts, pr, centers, cr):
-    """(n,) bool: is ``|pts[i] - centers[j]| < max(pr[i], cr[j])`` for some j (grid search)."""
+def _disc_hits(pts, pr, centers, cr, strict):
+    """(n,) bool: is ``|pts[i] - centers[j]|`` below ``max(pr[i], cr[j])`` for some j.
+
+    ``strict``: ``<``, else ``<=``. A uniform grid over the centres, with cells of the
+    largest limit (coarser when that grid would be much larger than the input).
+    """
     n = pts.shape[0]
     m = centers.shape[0]
     out = np.zeros(n, np.bool_)
@@ -636,8 +640,12 @@ def overlaps_any(pts, pr, centers, cr):
         cell = max(cell, cr[j])
     x0 = centers[:, 0].min()
     y0 = centers[:, 1].min()
-    nx = int((centers[:, 0].max() - x0) / cell) + 1
-    ny = int((centers[:, 1].max() - y0) / cell) + 1
+    w = centers[:, 0].max() - x0
+    h = centers[:, 1].max() - y0
+    if (w / cell + 1.0) * (h / cell + 1.0) > 4.0 * (m + n) + 1024.0:  # too fine a grid: coarser cells
+        cell = max(w, h) / np.sqrt(4.0 * (m + n)) + cell
+    nx = int(w / cell) + 1
+    ny = int(h / cell) + 1
     head = np.full(nx * ny, -1, np.int64)
     nxt = np.full(m, -1, np.int64)
     for j in range(m):
@@ -647,8 +655,8 @@ def overlaps_any(pts, pr, centers, cr):
     for i in range(n):
         fx = (pts[i, 0] - x0) / cell
         fy = (pts[i, 1] - y0) / cell
-        if fx < -1.0 or fy < -1.0 or fx >= nx + 1.0 or fy >= ny + 1.0:
-            continue
+        if not (fx >= -1.0 and fy >= -1.0 and fx < nx + 1.0 and fy < ny + 1.0):
+            continue  # no centre within one cell (also NaN)
         gx = int(np.floor(fx))
         gy = int(np.floor(fy))
         hit = False
@@ -659,7 +667,8 @@ def overlaps_any(pts, pr, centers, cr):
                     dx = pts[i, 0] - centers[j, 0]
                     dy = pts[i, 1] - centers[j, 1]
                     lim = max(pr[i], cr[j])
-                    if dx * dx + dy * dy < lim * lim:
+                    d2 = dx * dx + dy * dy
+                    if d2 < lim * lim or (not strict and d2 == lim * lim):
                         hit = True
                         break
                     j = nxt[j]
@@ -672,92 +681,21 @@ def overlaps_any(pts, pr, centers, cr):
 
 
 @numba.njit(cache=True, nogil=True)
+def overlaps_any(pts, pr, centers, cr):
+    """(n,) bool: is ``|pts[i] - centers[j]| < max(pr[i], cr[j])`` for some j."""
+    return _disc_hits(pts, pr, centers, cr, True)
+
+
+@numba.njit(cache=True, nogil=True)
 def in_discs(pts, centers, radii):
-    """(n,) bool: which ``pts`` lie in some disc ``(centers[j], radii[j])`` (grid search)."""
-    n = pts.shape[0]
-    m = centers.shape[0]
-    out = np.zeros(n, np.bool_)
-    if n == 0 or m == 0:
-        return out
-    cell = max(radii.max(), 1e-12)
-    x0 = centers[:, 0].min()
-    y0 = centers[:, 1].min()
-    nx = int((centers[:, 0].max() - x0) / cell) + 1
-    ny = int((centers[:, 1].max() - y0) / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(m, -1, np.int64)
-    for j in range(m):
-        g = int((centers[j, 0] - x0) / cell) * ny + int((centers[j, 1] - y0) / cell)
-        nxt[j] = head[g]
-        head[g] = j
-    for i in range(n):
-        fx = (pts[i, 0] - x0) / cell
-        fy = (pts[i, 1] - y0) / cell
-        if fx < -1.0 or fy < -1.0 or fx >= nx + 1.0 or fy >= ny + 1.0:
-            continue
-        gx = int(np.floor(fx))
-        gy = int(np.floor(fy))
-        hit = False
-        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
-            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
-                j = head[ax * ny + ay]
-                while j >= 0:
-                    dx = pts[i, 0] - centers[j, 0]
-                    dy = pts[i, 1] - centers[j, 1]
-                    if dx * dx + dy * dy <= radii[j] * radii[j]:
-                        hit = True
-                        break
-                    j = nxt[j]
-                if hit:
-                    break
-            if hit:
-                break
-        out[i] = hit
-    return out
+    """(n,) bool: which ``pts`` lie in some disc ``(centers[j], radii[j])``."""
+    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, radii, False)
 
 
 @numba.njit(cache=True, nogil=True)
 def near_any(pts, centers, reach):
     """(n,) bool: which ``pts`` lie within ``reach`` of some point of ``centers``."""
-    n = pts.shape[0]
-    m = centers.shape[0]
-    out = np.zeros(n, np.bool_)
-    if n == 0 or m == 0:
-        return out
-    cell = max(reach, 1e-12)
-    x0 = centers[:, 0].min()
-    y0 = centers[:, 1].min()
-    nx = int((centers[:, 0].max() - x0) / cell) + 1
-    ny = int((centers[:, 1].max() - y0) / cell) + 1
-    if nx * ny > 4 * (m + n) + 1024:  # too fine a grid: coarser cells
-        cell = max((centers[:, 0].max() - x0), (centers[:, 1].max() - y0)) / np.sqrt(4.0 * (m + n)) + cell
-        nx = int((centers[:, 0].max() - x0) / cell) + 1
-        ny = int((centers[:, 1].max() - y0) / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(m, -1, np.int64)
-    for j in range(m):
-        g = int((centers[j, 0] - x0) / cell) * ny + int((centers[j, 1] - y0) / cell)
-        nxt[j] = head[g]
-        head[g] = j
-    r2 = reach * reach
-    for i in range(n):
-        gx = int(np.floor((pts[i, 0] - x0) / cell))
-        gy = int(np.floor((pts[i, 1] - y0) / cell))
-        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
-            if out[i]:
-                break
-            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
-                j = head[ax * ny + ay]
-                while j >= 0:
-                    dx = pts[i, 0] - centers[j, 0]
-                    dy = pts[i, 1] - centers[j, 1]
-                    if dx * dx + dy * dy <= r2:
-                        out[i] = True
-                        break
-                    j = nxt[j]
-                if out[i]:
-                    break
-    return out
+    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, np.full(centers.shape[0], float(reach)), False)
 
 
 @numba.njit(cache=True, nogil=True)
