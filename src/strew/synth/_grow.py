@@ -174,7 +174,6 @@ def grow(
         exv = np.maximum(ex, 0)
         pr = prep.r[exv]
         ok = valid.copy()
-        ftree = None
         if ok.any():
             # candidates must overlap a free-space point (Algorithm 1) ...
             ok[ok] = K.overlaps_any(np.ascontiguousarray(ppos[ok]), pr[ok], np.ascontiguousarray(fpos), np.ascontiguousarray(fc, dtype=float))
@@ -210,8 +209,7 @@ def grow(
         # seeds that could not generate: count a failure on the free space they reach
         failed_pos = seed_pos[~seed_ok]
         if len(failed_pos):
-            ftree_all = ftree if ftree is not None else cKDTree(fpos)
-            lists = ftree_all.query_ball_point(failed_pos, r=rbar_seeds[~seed_ok])
+            lists = cKDTree(fpos).query_ball_point(failed_pos, r=rbar_seeds[~seed_ok])
             hit = np.fromiter((j for v in lists for j in v), dtype=np.int64)
             if len(hit):
                 hit = np.unique(hit)
