@@ -1044,7 +1044,12 @@ class Session:
         """The scene when a spray stroke starts, indexed for :meth:`_spray_obstacles`."""
         from scipy.spatial import cKDTree
 
-        scene = self.scene()
+        # the scene as the browser shows it (see _arrays), without scene()'s overlap
+        # clean-up pass over the whole synthesis output (0.4 s at 150,000 elements)
+        parts = [self.fixed]
+        if self.state is not None and self.state.n:
+            parts.append(self.state.to_arrangement(clip=False, drop_overlaps=False))
+        scene = concat(parts) if len(parts) > 1 else self.fixed
         if len(scene) == 0:
             return None
         radii = _radii(scene)
