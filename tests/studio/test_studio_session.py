@@ -442,3 +442,15 @@ def test_void_elements_are_hidden_and_not_counted(tmp_path):
     _stroke(s, "brush", LINE, 40.0)
     assert s.state.n > len(s.scene()) > 10  # some synthesized elements are voids (§5.6)
     assert s.status_message()["count"] == len(s.scene()) == len(s._arrays()["k"])
+
+
+def test_filler_stops_at_the_scene_limit(tmp_path, monkeypatch):
+    import strew.studio._session as session_module
+
+    monkeypatch.setattr(session_module, "MAX_SCENE", 150)
+    s = _session(tmp_path, size=(900.0, 700.0))
+    replies = s.handle({"type": "fill", "point": [[450.0, 350.0]]})
+    assert len(s.scene()) <= 150
+    assert "limit" in replies[-1]["message"]
+    with pytest.raises(InputError, match="over 150 elements"):
+        s.handle({"type": "fill", "point": [[450.0, 350.0]]})

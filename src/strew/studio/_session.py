@@ -1139,6 +1139,9 @@ class Session:
         if not self.region.contains(p[None])[0]:
             raise InputError(f"fill: point {p[0]:g},{p[1]:g} is outside the region")
         self._selection()
+        room = MAX_SCENE - self._scene_count()
+        if room <= 0:
+            raise InputError(f"scene: over {MAX_SCENE} elements; erase some first")
         self._push_history()
         st = self._ensure_state()
         self.cancel.clear()
@@ -1153,8 +1156,8 @@ class Session:
 
         st.region = self._face(p)
         try:
-            synth.fill(st, (float(p[0]), float(p[1])), progress=progress, should_cancel=self.cancel.is_set)
-            note = "filled"
+            synth.fill(st, (float(p[0]), float(p[1])), progress=progress, should_cancel=self.cancel.is_set, max_elements=n0 + room)
+            note = "filled" if st.n < n0 + room else f"fill stopped at the scene's limit of {MAX_SCENE} elements"
         except Cancelled:
             note = "fill stopped"
         except InputError:
