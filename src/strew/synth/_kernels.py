@@ -151,6 +151,18 @@ def sort_segments(ptr, idx, off):
 
 
 @numba.njit(cache=True, nogil=True)
+def _pairing_scratch(q_ptr, e_ptr):
+    """Scratch arrays for :func:`pair_cost` over CSR neighbourhoods: pair, used, elen."""
+    maxq = 1
+    for c in range(e_ptr.shape[0] - 1):
+        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
+    maxm = 1
+    for i in range(q_ptr.shape[0] - 1):
+        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
+    return np.empty(maxm, np.int64), np.empty(maxq, np.bool_), np.empty(maxq)
+
+
+@numba.njit(cache=True, nogil=True)
 def _center_cost(ko, ke, d, kind_cost):
     return kind_cost * d * d if ko != ke else 0.0
 
@@ -174,15 +186,7 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
     """
     nq, k = cands.shape
     out = np.full((nq, k), INF)
-    maxq = 1
-    for c in range(e_ptr.shape[0] - 1):
-        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
-    maxm = 1
-    for i in range(nq):
-        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
-    pair = np.empty(maxm, np.int64)
-    used = np.empty(maxq, np.bool_)
-    elen = np.empty(maxq)
+    pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         s = q_src[i]
@@ -222,15 +226,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
     """
     nq, k = cands.shape
     out = np.full((nq, k), INF)
-    maxq = 0
-    for c in range(e_ptr.shape[0] - 1):
-        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
-    maxm = 0
-    for i in range(nq):
-        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
-    pair = np.empty(maxm, np.int64)
-    used = np.empty(maxq, np.bool_)
-    elen = np.empty(maxq)
+    pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         for j in range(k):
@@ -273,15 +269,7 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
     ex = np.full(total, -1, np.int64)
     pos = np.zeros((total, 2))
     count = np.zeros(ns * k, np.int64)
-    maxq = 0
-    for c in range(e_ptr.shape[0] - 1):
-        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
-    maxm = 1
-    for i in range(ns):
-        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
-    pair = np.empty(maxm, np.int64)
-    used = np.empty(max(maxq, 1), np.bool_)
-    elen = np.empty(max(maxq, 1))
+    pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
     for i in range(ns):
         a, b = q_ptr[i], q_ptr[i + 1]
         px, py = seed_pos[i, 0], seed_pos[i, 1]
@@ -440,15 +428,7 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
     nq, k = cands.shape
     best = np.full(nq, -1, np.int64)
     bcost = np.full(nq, INF)
-    maxq = 1
-    for c in range(e_ptr.shape[0] - 1):
-        maxq = max(maxq, e_ptr[c + 1] - e_ptr[c])
-    maxm = 1
-    for i in range(nq):
-        maxm = max(maxm, q_ptr[i + 1] - q_ptr[i])
-    pair = np.empty(maxm, np.int64)
-    used = np.empty(maxq, np.bool_)
-    elen = np.empty(maxq)
+    pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         for j in range(k):
