@@ -151,6 +151,34 @@ def sort_segments(ptr, idx, off):
 
 
 @numba.njit(cache=True, nogil=True)
+def _bucket_grid(pts, cell, queries, reverse):
+    """Uniform grid over ``pts`` with linked buckets: ``(x0, y0, cell, nx, ny, head, nxt)``.
+
+    ``cell`` grows when the grid would hold far more cells than points and ``queries``
+    (computed in floats, so a tiny cell over a wide spread cannot overflow). Each bucket
+    lists its points in decreasing index order, or increasing with ``reverse``.
+    """
+    n = pts.shape[0]
+    x0 = pts[:, 0].min()
+    y0 = pts[:, 1].min()
+    w = pts[:, 0].max() - x0
+    h = pts[:, 1].max() - y0
+    cell = max(cell, 1e-12)
+    if (w / cell + 1.0) * (h / cell + 1.0) > 4.0 * (n + queries) + 1024.0:
+        cell = max(w, h) / np.sqrt(4.0 * (n + queries)) + cell
+    nx = int(w / cell) + 1
+    ny = int(h / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(n, -1, np.int64)
+    for t in range(n):
+        j = n - 1 - t if reverse else t
+        g = int((pts[j, 0] - x0) / cell) * ny + int((pts[j, 1] - y0) / cell)
+        nxt[j] = head[g]
+        head[g] = j
+    return x0, y0, cell, nx, ny, head, nxt
+
+
+@numba.njit(cache=True, nogil=True)
 def _pairing_scratch(q_ptr, e_ptr):
     """Scratch arrays for :func:`pair_cost` over CSR neighbourhoods: pair, used, elen."""
     maxq = 1
@@ -565,16 +593,7 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
     out = np.zeros(m, np.bool_)
     if n == 0 or m == 0:
         return out
-    x0 = opos[:, 0].min()
-    y0 = opos[:, 1].min()
-    nx = int((opos[:, 0].max() - x0) / cell) + 1
-    ny = int((opos[:, 1].max() - y0) / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(n, -1, np.int64)
-    for j in range(n):
-        g = int((opos[j, 0] - x0) / cell) * ny + int((opos[j, 1] - y0) / cell)
-        nxt[j] = head[g]
-        head[g] = j
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, False)
     for i in range(m):
         gx = int(np.floor((pts[i, 0] - x0) / cell))
         gy = int(np.floor((pts[i, 1] - y0) / cell))
@@ -618,20 +637,7 @@ def _disc_hits(pts, pr, centers, cr, strict):
         cell = max(cell, pr[i])
     for j in range(m):
         cell = max(cell, cr[j])
-    x0 = centers[:, 0].min()
-    y0 = centers[:, 1].min()
-    w = centers[:, 0].max() - x0
-    h = centers[:, 1].max() - y0
-    if (w / cell + 1.0) * (h / cell + 1.0) > 4.0 * (m + n) + 1024.0:  # too fine a grid: coarser cells
-        cell = max(w, h) / np.sqrt(4.0 * (m + n)) + cell
-    nx = int(w / cell) + 1
-    ny = int(h / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(m, -1, np.int64)
-    for j in range(m):
-        g = int((centers[j, 0] - x0) / cell) * ny + int((centers[j, 1] - y0) / cell)
-        nxt[j] = head[g]
-        head[g] = j
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(centers, cell, n, False)
     for i in range(n):
         fx = (pts[i, 0] - x0) / cell
         fy = (pts[i, 1] - y0) / cell
@@ -689,16 +695,7 @@ def spacing_violations(pos, rad, sk, min_dist, factor, moved, cell):
     out = np.zeros(n, np.bool_)
     if n < 2:
         return out
-    x0 = pos[:, 0].min()
-    y0 = pos[:, 1].min()
-    nx = int((pos[:, 0].max() - x0) / cell) + 1
-    ny = int((pos[:, 1].max() - y0) / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(n, -1, np.int64)
-    for j in range(n):
-        g = int((pos[j, 0] - x0) / cell) * ny + int((pos[j, 1] - y0) / cell)
-        nxt[j] = head[g]
-        head[g] = j
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(pos, cell, 0, False)
     for i in range(n):
         if not moved[i]:
             continue
@@ -736,21 +733,7 @@ def grid_neighborhoods(pos, query, radius):
     ptr = np.zeros(m + 1, np.int64)
     if n == 0 or m == 0:
         return ptr, np.zeros(0, np.int64), np.zeros((0, 2))
-    cell = max(radius.max(), 1e-12)
-    x0 = pos[:, 0].min()
-    y0 = pos[:, 1].min()
-    nx = int((pos[:, 0].max() - x0) / cell) + 1
-    ny = int((pos[:, 1].max() - y0) / cell) + 1
-    if nx * ny > 4 * n + 1024:
-        cell = max(pos[:, 0].max() - x0, pos[:, 1].max() - y0) / np.sqrt(4.0 * n) + cell
-        nx = int((pos[:, 0].max() - x0) / cell) + 1
-        ny = int((pos[:, 1].max() - y0) / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(n, -1, np.int64)
-    for j in range(n - 1, -1, -1):
-        g = int((pos[j, 0] - x0) / cell) * ny + int((pos[j, 1] - y0) / cell)
-        nxt[j] = head[g]
-        head[g] = j
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(pos, float(radius.max()), 0, True)
     reach = int(np.ceil(radius.max() / cell))
     idx = np.empty(0, np.int64)
     off = np.empty((0, 2))
