@@ -98,6 +98,16 @@ TOL = 1e-12
 
 
 @numba.njit(cache=True, inline="always")
+def _cell_span(gx0, gy0, gc, cols, rows, xmin, ymin, xmax, ymax):  # pragma: no cover - numba
+    """Grid cells ``(c0, c1, q0, q1)`` (inclusive, clamped) that a box touches."""
+    c0 = max(int((xmin - gx0) / gc), 0)
+    c1 = min(int((xmax - gx0) / gc), cols - 1)
+    q0 = max(int((ymin - gy0) / gc), 0)
+    q1 = min(int((ymax - gy0) / gc), rows - 1)
+    return c0, c1, q0, q1
+
+
+@numba.njit(cache=True, inline="always")
 def _orient(ax, ay, bx, by, cx, cy):  # pragma: no cover - numba
     """Orientation of c about ab: +1, -1, or 0 when too close to call (within TOL)."""
     u = (bx - ax) * (cy - ay)
@@ -232,10 +242,7 @@ def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp
     gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
     if hbb[0] < gx0 or hbb[1] < gy0 or hbb[2] > gx0 + cols * gc or hbb[3] > gy0 + rows * gc:
         return False
-    c0 = int((hbb[0] - gx0) / gc)
-    c1 = min(int((hbb[2] - gx0) / gc), cols - 1)
-    q0 = int((hbb[1] - gy0) / gc)
-    q1 = min(int((hbb[3] - gy0) / gc), rows - 1)
+    c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, hbb[0], hbb[1], hbb[2], hbb[3])
     # no hull edge meets a domain edge
     for q in range(q0, q1 + 1):
         for c in range(c0, c1 + 1):
@@ -279,10 +286,7 @@ def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp
             if _polys_hit(cv, kr, r0, r1, cbb, pv, pr, pp[b], pp[b + 1], pbb[b], buf):
                 return True
     gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
-    c0 = max(int((cbb[0] - gx0) / gc), 0)
-    c1 = min(int((cbb[2] - gx0) / gc), cols - 1)
-    q0 = max(int((cbb[1] - gy0) / gc), 0)
-    q1 = min(int((cbb[3] - gy0) / gc), rows - 1)
+    c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, cbb[0], cbb[1], cbb[2], cbb[3])
     for q in range(q0, q1 + 1):
         for c in range(c0, c1 + 1):
             e = head[q * cols + c]
@@ -320,10 +324,7 @@ def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, h
     pose[n, 3] = s
     pkind[n] = k
     gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
-    c0 = max(int((cbb[0] - gx0) / gc), 0)
-    c1 = min(int((cbb[2] - gx0) / gc), cols - 1)
-    q0 = max(int((cbb[1] - gy0) / gc), 0)
-    q1 = min(int((cbb[3] - gy0) / gc), rows - 1)
+    c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, cbb[0], cbb[1], cbb[2], cbb[3])
     for q in range(q0, q1 + 1):
         for c in range(c0, c1 + 1):
             cell = q * cols + c
@@ -703,20 +704,14 @@ def _grid_segments(segs, gx0, gy0, gc, cols, rows):  # pragma: no cover - numba
     """Linked lists of the segments (s, 4) per grid cell that their boxes touch."""
     n = 0
     for s in range(len(segs)):
-        c0 = max(int((min(segs[s, 0], segs[s, 2]) - gx0) / gc), 0)
-        c1 = min(int((max(segs[s, 0], segs[s, 2]) - gx0) / gc), cols - 1)
-        q0 = max(int((min(segs[s, 1], segs[s, 3]) - gy0) / gc), 0)
-        q1 = min(int((max(segs[s, 1], segs[s, 3]) - gy0) / gc), rows - 1)
+        c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, min(segs[s, 0], segs[s, 2]), min(segs[s, 1], segs[s, 3]), max(segs[s, 0], segs[s, 2]), max(segs[s, 1], segs[s, 3]))
         n += max(c1 - c0 + 1, 0) * max(q1 - q0 + 1, 0)
     head = np.full(rows * cols, -1, dtype=np.int64)
     nxt = np.empty(n, dtype=np.int64)
     sid = np.empty(n, dtype=np.int64)
     e = 0
     for s in range(len(segs)):
-        c0 = max(int((min(segs[s, 0], segs[s, 2]) - gx0) / gc), 0)
-        c1 = min(int((max(segs[s, 0], segs[s, 2]) - gx0) / gc), cols - 1)
-        q0 = max(int((min(segs[s, 1], segs[s, 3]) - gy0) / gc), 0)
-        q1 = min(int((max(segs[s, 1], segs[s, 3]) - gy0) / gc), rows - 1)
+        c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, min(segs[s, 0], segs[s, 2]), min(segs[s, 1], segs[s, 3]), max(segs[s, 0], segs[s, 2]), max(segs[s, 1], segs[s, 3]))
         for q in range(q0, q1 + 1):
             for c in range(c0, c1 + 1):
                 nxt[e] = head[q * cols + c]
