@@ -29,6 +29,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from .._numba_geometry import seg_dist2
+
 __all__ = [
     "cover_disc",
     "cover_polyline",
@@ -63,23 +65,6 @@ def cover_disc(rows, cols, x0, y0, h, cx, cy, r, pad):
 
 
 @numba.njit(**_NB)
-def _seg_dist2(px, py, ax, ay, bx, by):
-    dx = bx - ax
-    dy = by - ay
-    ll = dx * dx + dy * dy
-    t = 0.0
-    if ll > 0:
-        t = ((px - ax) * dx + (py - ay) * dy) / ll
-        if t < 0:
-            t = 0.0
-        elif t > 1:
-            t = 1.0
-    qx = ax + t * dx - px
-    qy = ay + t * dy - py
-    return qx * qx + qy * qy
-
-
-@numba.njit(**_NB)
 def cover_polyline(rows, cols, x0, y0, h, pts, pad):
     """Flat indices (may repeat) of cells whose centre lies within ``pad`` of the polyline.
 
@@ -103,7 +88,7 @@ def cover_polyline(rows, cols, x0, y0, h, pts, pad):
             py = y0 + (i + 0.5) * h
             for j in range(j0, j1 + 1):
                 px = x0 + (j + 0.5) * h
-                if _seg_dist2(px, py, ax, ay, bx, by) <= p2:
+                if seg_dist2(px, py, ax, ay, bx, by) <= p2:
                     if total == out.shape[0]:
                         bigger = np.empty(2 * total, np.int64)
                         bigger[:total] = out
@@ -326,7 +311,7 @@ def _clearance(px, py, circ, segs):
         if v < d:
             d = v
     for k in range(segs.shape[0]):
-        v = np.sqrt(_seg_dist2(px, py, segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3]))
+        v = np.sqrt(seg_dist2(px, py, segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3]))
         if v < d:
             d = v
     return d
@@ -508,7 +493,7 @@ def segments_distance(px, py, segs):
     """Distance from ``(px, py)`` to the nearest of the segments ``(m, 4)``."""
     best = np.inf
     for k in range(segs.shape[0]):
-        v = _seg_dist2(px, py, segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3])
+        v = seg_dist2(px, py, segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3])
         if v < best:
             best = v
     return np.sqrt(best)

@@ -19,6 +19,7 @@ import numba
 import numpy as np
 import shapely
 
+from .._numba_geometry import seg_dist2
 from ..region import Region
 
 __all__ = ["DistanceField"]
@@ -174,20 +175,7 @@ def _occupy(d, x0, y0, cell, segs, offsets, bounds, grow):  # pragma: no cover -
                         xc = ax + (py - ay) * (bx - ax) / (by - ay)
                         if px < xc:
                             inside = not inside
-                    # squared distance to the segment
-                    ex = bx - ax
-                    ey = by - ay
-                    l2 = ex * ex + ey * ey
-                    t = 0.0
-                    if l2 > 0.0:
-                        t = ((px - ax) * ex + (py - ay) * ey) / l2
-                        if t < 0.0:
-                            t = 0.0
-                        elif t > 1.0:
-                            t = 1.0
-                    qx = ax + t * ex - px
-                    qy = ay + t * ey - py
-                    dd = qx * qx + qy * qy
+                    dd = seg_dist2(px, py, ax, ay, bx, by)
                     if dd < best:
                         best = dd
                 if inside:
