@@ -58,8 +58,9 @@ def load(path: str | os.PathLike[str], **kwargs: Any) -> Arrangement:
     if suffix == ".json":
         from .document import loads
 
+        text = _read_text(path)  # its messages already name the file
         try:
-            return loads(_read_text(path))
+            return loads(text)
         except InputError as exc:
             raise InputError(f"{Path(path).name}: {exc}") from None
     from .svg import read_svg
