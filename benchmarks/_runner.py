@@ -27,7 +27,11 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["Bench", "median_time", "timed", "parse_args"]
+__all__ = ["Bench", "median_time", "timed", "parse_args", "SKIPPED"]
+
+# Exit status of a script that could not measure here (a missing extra or browser); it has
+# printed why. run_all.py reports it as skipped, not failed.
+SKIPPED = 3
 
 
 def parse_args(description: str = "", extra: Callable[[argparse.ArgumentParser], None] | None = None) -> argparse.Namespace:

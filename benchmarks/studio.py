@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from _runner import Bench, parse_args  # noqa: E402
+from _runner import SKIPPED, Bench, parse_args  # noqa: E402
 
 TARGET_LATENCY_MS = 100.0
 TARGET_RATE = 2000.0
@@ -156,9 +156,19 @@ def screenshot(page, path: Path) -> None:
 
 def main() -> None:
     args = parse_args(__doc__.splitlines()[0], lambda p: p.add_argument("--screenshot", default=None, help="also save a screenshot of the studio (PNG)"))
-    from playwright.sync_api import sync_playwright
+    try:
+        from playwright.sync_api import sync_playwright
 
-    from strew.studio._background import CHROMIUM, CHROMIUM_ARGS, BackgroundStudio
+        from strew.studio._background import CHROMIUM, CHROMIUM_ARGS, BackgroundStudio
+        from strew.studio import require_studio
+
+        require_studio()
+    except Exception as exc:  # ImportError, or InputError naming the studio extra
+        print(f"studio benchmark skipped: {exc}. Install the benchmark extra: pip install '.[bench]'")
+        sys.exit(SKIPPED)
+    if not Path(CHROMIUM).exists():
+        print(f"studio benchmark skipped: no chromium at {CHROMIUM} (Debian: apt-get install chromium)")
+        sys.exit(SKIPPED)
 
     cases = [("scales.svg", "brush"), ("scales.svg", "spray")] if args.quick else [
         (ex, tool) for ex in ("scales.svg", "stones.svg", "tiles.svg") for tool in ("brush", "spray")

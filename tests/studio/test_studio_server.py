@@ -249,7 +249,7 @@ def test_cli_without_the_studio_extra(tmp_path, capsys, monkeypatch):
     monkeypatch.setitem(sys.modules, "uvicorn", None)  # as if it were not installed
     assert main(["studio", str(tmp_path), "--no-browser"]) == 2
     err = capsys.readouterr().err.strip()
-    assert err.count("\n") == 0 and "strew[studio]" in err and "uvicorn" in err
+    assert err.count("\n") == 0 and "pip install '.[studio]'" in err and "uvicorn" in err
 
 
 def test_reloading_the_page_keeps_the_work(client):

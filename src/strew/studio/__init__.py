@@ -6,7 +6,7 @@ work: the generative brush, filler and eraser of Davison et al. (§5.4-5.5, thro
 :mod:`strew.synth`) and the spray, flow-field and boundary tools of Ijiri et al. (§3,
 through :mod:`strew.grow` and :mod:`strew.fields`).
 
-Install with ``pip install 'strew[studio]'`` and run ``strew studio [PROJECT_DIR]``.
+Install with ``pip install '.[studio]'`` from a clone and run ``strew studio [PROJECT_DIR]``.
 
 Safety: the server binds 127.0.0.1 by default, reads and writes only inside
 ``PROJECT_DIR`` (:func:`strew.studio._paths.resolve_in_project`), limits message sizes,
@@ -30,7 +30,7 @@ def require_studio() -> None:
         import fastapi  # noqa: F401
         import uvicorn  # noqa: F401
     except ImportError as exc:
-        raise InputError(f"studio: needs the 'studio' extra ({exc.name} is missing); pip install 'strew[studio]'") from None
+        raise InputError(f"studio: needs the 'studio' extra ({exc.name} is missing); from a clone of strew: pip install '.[studio]'") from None
 
 
 def create_app(project_dir: str | Path, **kwargs: Any) -> Any:
