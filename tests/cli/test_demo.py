@@ -45,3 +45,12 @@ def test_full_gallery_has_every_section(tmp_path):
     assert len(sections) == len(SECTIONS)
     for block in index.split("<section>")[1:]:
         assert "<figure>" in block, f"empty gallery section: {block[:80]}"
+
+
+def test_demo_reports_each_section_when_stderr_is_not_a_terminal(tmp_path, capsys):
+    # a log or CI: no progress bar, so one line per section tells the gallery is moving
+    assert main(["demo", "--out", str(tmp_path / "g"), "--only", "basics"]) == 0
+    err = capsys.readouterr().err
+    assert "gallery 1/1: Basics" in err
+    assert main(["demo", "--out", str(tmp_path / "h"), "--only", "basics", "-q"]) == 0
+    assert capsys.readouterr().err == ""

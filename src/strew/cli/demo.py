@@ -21,6 +21,13 @@ def command(out_dir: str, only: tuple[str, ...], seed: int, quiet: bool) -> None
 
     t0 = time.perf_counter()
     with progress_bar("gallery", quiet=quiet) as (progress, cancel):
+        if progress is None and not quiet:
+            # not a terminal (a log, CI, a pipe): one line per section instead of a bar,
+            # so a long gallery never looks hung
+            def progress(done: int, total: int | None, message: str) -> None:
+                if done < (total or 0):
+                    click.echo(f"gallery {done + 1}/{total}: {message} ({time.perf_counter() - t0:.0f} s)", err=True)
+
         files = build_gallery(out_dir, seed=seed, sections=only or None, progress=progress, should_cancel=cancel)
     if not quiet:
         n = sum(1 for f in files if f.suffix == ".svg")
