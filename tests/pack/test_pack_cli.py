@@ -163,3 +163,16 @@ def test_help_lists_pack(capsys):
     assert main(["pack", "--help"]) == 0
     text = capsys.readouterr().out
     assert "--max-failures" in text and "--margin" in text and "fill-gap" in text
+
+
+def test_kind_and_scale_choice_options_reach_the_library(tmp_path):
+    mix = str(EXAMPLES / "pack" / "mix.json")
+    cyc, fit = tmp_path / "cycle.json", tmp_path / "fit.json"
+    assert main(["pack", mix, "--size", "150x130", "--scale", "0.4:0.8", "--kind-choice", "cycle", "-q", "-o", str(cyc)]) == 0
+    assert main(["pack", mix, "--size", "150x130", "--scale", "0.4:0.8", "--scale-choice", "fit", "-q", "-o", str(fit)]) == 0
+    a, b = load(cyc), load(fit)
+    assert np.array_equal(a.kind, np.arange(len(a)) % 3)  # the paper's cycle (§3.2)
+    assert a.meta["params"]["kind_choice"] == "cycle" and b.meta["params"]["scale_choice"] == "fit"
+    assert b.meta["pack"]["kind_choice"] == "fit" and b.meta["pack"]["scale_choice"] == "fit"
+    assert len(overlaps(b)[0]) == 0 and np.all((b.scale >= 0.4) & (b.scale <= 0.8))
+    assert main(["pack", mix, "--size", "150x130", "--kind-choice", "best", "-q", "-o", str(fit)]) == 2

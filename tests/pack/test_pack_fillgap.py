@@ -97,12 +97,13 @@ def test_same_seed_same_result_other_seed_other_result():
 def test_kinds_are_placed_cyclically_or_by_weight():
     region = Region.rectangle(120, 120)
     kinds = {"hook": HOOK, "leaf": LEAF, "ring": RING}
-    arr = pack(kinds, region, scale=(0.5, 0.5), rng=1)
+    arr = pack(kinds, region, scale=(0.5, 0.5), kind_choice="cycle", rng=1)
     assert np.array_equal(arr.kind, np.arange(len(arr)) % 3)  # §3.2: cyclic
-    only = pack(kinds, region, scale=(0.5, 0.5), weights={"leaf": 1.0}, rng=1)
-    assert set(only.kind_names) == {"leaf"}
-    mixed = pack(kinds, region, scale=(0.5, 0.5), weights=[1, 1, 0], rng=1)
-    assert set(mixed.kind_names) == {"hook", "leaf"}
+    for choice in ("cycle", "fit"):
+        only = pack(kinds, region, scale=(0.5, 0.5), weights={"leaf": 1.0}, kind_choice=choice, rng=1)
+        assert set(only.kind_names) == {"leaf"}
+        mixed = pack(kinds, region, scale=(0.5, 0.5), weights=[1, 1, 0], kind_choice=choice, rng=1)
+        assert set(mixed.kind_names) == {"hook", "leaf"}
 
 
 def test_rotation_and_scale_ranges_per_kind():
@@ -241,6 +242,10 @@ def test_region_smaller_than_every_shape_gives_an_empty_result_quickly(method):
         ({"weights": [0]}, "weights"),
         ({"exclusive": {"other": HOOK}}, "exclusive: unknown kind"),
         ({"margin": "wide"}, "margin"),
+        ({"kind_choice": "best"}, "kind_choice: unknown choice 'best'"),
+        ({"scale_choice": "big"}, "scale_choice: unknown choice 'big'"),
+        ({"tolerance": 0}, "tolerance: must be in"),
+        ({"tolerance": "loose"}, "tolerance: must be a number"),
     ],
 )
 def test_bad_parameters_name_the_problem(kwargs, match):

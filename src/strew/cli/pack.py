@@ -34,7 +34,11 @@ def _per_kind(values: tuple[str, ...], name: str, parse, default):
 @click.option("--exclusive", type=click.Path(dir_okay=False), default=None,
               help="SVG or JSON file of exclusive shapes, matched to kinds by name.")
 @click.option("--weight", multiple=True, metavar="KIND=W",
-              help="Choose kinds at random with these weights (others 1) instead of cyclically.")
+              help="Requested proportions of kinds (others 1) [default: equal].")
+@click.option("--kind-choice", type=click.Choice(["fit", "cycle"]), default="fit", show_default=True,
+              help="Fill-gap: try the kinds most behind their proportions until one fits the gap, or cycle (§3.2).")
+@click.option("--scale-choice", type=click.Choice(["random", "fit"]), default="random", show_default=True,
+              help="Fill-gap: uniform scales in the range, or the largest that fits each gap first.")
 @click.option("--candidates", type=int, default=100, show_default=True, help="Fill-gap: candidates P per round.")
 @click.option("--power", type=float, default=16.0, show_default=True, help="Fill-gap: exponent n of d**n.")
 @click.option("--resolution", type=float, default=None, help="Fill-gap: pixel side of the distance field.")
@@ -52,6 +56,8 @@ def command(
     margin: tuple[str, ...],
     exclusive: str | None,
     weight: tuple[str, ...],
+    kind_choice: str,
+    scale_choice: str,
     candidates: int,
     power: float,
     resolution: float | None,
@@ -61,8 +67,9 @@ def command(
 ) -> None:
     """Pack copies of SHAPE... (SVG or JSON files) densely into a region.
 
-    A file holding several shapes gives several kinds; kinds are placed cyclically
-    unless --weight is given. Elements lie wholly inside the region and never overlap.
+    A file holding several shapes gives several kinds, in equal proportions unless
+    --weight is given (fill-gap keeps them within 0.05; naive cycles or draws by
+    weight). Elements lie wholly inside the region and never overlap.
     """
     import time
     import warnings
@@ -112,6 +119,8 @@ def command(
         "margin": list(margin),
         "exclusive": exclusive,
         "weight": list(weight),
+        "kind_choice": kind_choice,
+        "scale_choice": scale_choice,
         "candidates": candidates,
         "power": power,
         "resolution": resolution,
@@ -130,6 +139,8 @@ def command(
             exclusive=excl,
             weights=weights,
             max_failures=max_failures,
+            kind_choice=kind_choice,
+            scale_choice=scale_choice,
             candidates=candidates,
             power=power,
             resolution=resolution,

@@ -511,8 +511,51 @@ def _draw_q(rs, d, w, bme, cut, emax, power, qbuf):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
+def _kind_order(target, tol, cnt, n, order):  # pragma: no cover - numba
+    """The kinds a candidate tries, in order: most behind its requested share first.
+
+    Gap-fitting kind choice (an extension of §4.2; the paper cycles through the kinds,
+    §3.2, and a candidate whose next kind does not fit its gap is cancelled, although
+    another kind would). Kind ``k`` may take the ``n + 1``-th place while its count
+    stays within ``max(ceil(target[k] (n + 1)), (target[k] + tol) (n + 1))``, so that
+    every share stays within ``tol`` above its target (and, the shares summing to one,
+    within ``(K - 1) tol`` below) once ``tol (n + 1) >= 1``. Kinds with a zero target
+    are never tried.
+
+    Parameters
+    ----------
+    target : (K,) float
+        Requested shares, summing to one.
+    tol : float
+    cnt : (K,) int64
+        Elements of each kind placed so far (``n`` in all).
+    order : (K,) int64
+        Filled with the kinds to try; returns their number (at least 1).
+    """
+    nk = len(target)
+    m = 0
+    for k in range(nk):
+        if target[k] <= 0.0:
+            continue
+        cap = max(math.ceil(target[k] * (n + 1) - 1e-9), (target[k] + tol) * (n + 1))
+        if cnt[k] + 1 <= cap:
+            order[m] = k
+            m += 1
+    # insertion sort by deficit target (n + 1) - count, largest first (ties: lower index)
+    for i in range(1, m):
+        k = order[i]
+        dk = target[k] * (n + 1) - cnt[k]
+        j = i - 1
+        while j >= 0 and target[order[j]] * (n + 1) - cnt[order[j]] < dk:
+            order[j + 1] = order[j]
+            j -= 1
+        order[j + 1] = k
+    return m
+
+
+@numba.njit(cache=True)
 def _rounds(
-    rs, max_rounds, limit, p_count, power, fits, suppress, sup_r, kanch, ka, kdisk, kdo, kbb,
+    rs, max_rounds, limit, p_count, power, fits, suppress, sup_r, ktarget, ktol, sfit, kanch, ka, kdisk, kdo, kbb,
     d, w, fx0, fy0, fcell, qbuf, cand, cdraw,
     kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi, cumw,
     rv, rr, rsegs, rhead, rnext, rsid, rstamp,
@@ -523,6 +566,12 @@ def _rounds(
 
     ``caps`` = (polygons, vertices, rings, grid entries) that the store can hold; the
     loop returns NEED_ROOM before a round that could overflow it.
+
+    ``ktarget`` (K,) float: the kinds' requested shares for the gap-fitting kind choice
+    (see :func:`_kind_order`); empty: one kind per candidate, cyclic or drawn by the
+    cumulative weights ``cumw`` (empty: cyclic), as the paper. ``ktol``: the share a
+    kind may run ahead of its target. ``sfit``: a candidate's poses run from the largest
+    scale of the kind's range down (True) or draw scales uniformly (False, the paper).
     """
     rows, cols = d.shape
     dflat = d.ravel()
@@ -534,6 +583,11 @@ def _rounds(
         maxv = max(maxv, kr[kk[k + 1]] - kr[kk[k]])
         maxr = max(maxr, kk[k + 1] - kk[k])
     blocker = np.full(1, -1, dtype=np.int64)
+    # kinds placed so far, and the order in which a candidate tries them
+    cnt = np.zeros(nkinds, dtype=np.int64)
+    for i in range(st[_S_NP]):
+        cnt[pkind[i]] += 1
+    korder = np.zeros(nkinds, dtype=np.int64)
     icell = 1.0 / fcell
     thr = 1e-9 ** (1.0 / power)  # pixels below this alpha (1e-9) are skipped without a draw
     # maxima of e = d w and of d over pixel blocks, kept up to date below
@@ -573,92 +627,107 @@ def _rounds(
                 continue  # thinned: the field shrank here since the draw (extension, §4.2)
             px = fx0 + (q % cols + jx) * fcell
             py = fy0 + (q // cols + jy) * fcell
-            if cumw.size == 0:
-                k = st[_S_NEXT]
+            if ktarget.size:
+                nko = _kind_order(ktarget, ktol, cnt, st[_S_NP], korder)
+            elif cumw.size == 0:
+                korder[0] = st[_S_NEXT]
+                nko = 1
             else:
                 u = _rand(rs)
                 k = 0
                 while k < nkinds - 1 and u >= cumw[k]:
                     k += 1
+                korder[0] = k
+                nko = 1
             st[_S_TRIALS] += 1
-            fixed = rot_lo[k] == rot_hi[k] and sc_lo[k] == sc_hi[k]
-            tries = 1 if fixed else fits
             ok = False
             rot = 0.0
             s = 1.0
             x = px
             y = py
+            k = korder[0]
             # distance from the candidate point to its pixel's centre
             off_q = np.sqrt((jx - 0.5) ** 2 + (jy - 0.5) ** 2) * fcell
-            for t in range(tries):
-                rot = rot_lo[k]
-                if rot_hi[k] > rot_lo[k]:
-                    rot += _rand(rs) * (rot_hi[k] - rot_lo[k])
-                s = sc_lo[k]
-                if sc_hi[k] > sc_lo[k]:
-                    s += _rand(rs) * (sc_hi[k] - sc_lo[k])
-                anchored = t > 0 and ka[k + 1] > ka[k]
-                if anchored:
-                    # later poses put one of the kind's anchor points (inside its
-                    # exclusive region) on the candidate point, not its box centre
-                    if t % 2 == 1:
-                        # the widest of the kind's disks that the gap can hold
-                        a = kdo[k]
-                        while a < kdo[k + 1] - 1 and kdisk[a, 2] * s > dflat[q]:
-                            a += 1
-                        ax_, ay_ = kdisk[a, 0], kdisk[a, 1]
+            for kj in range(nko):
+                k = korder[kj]
+                fixed = rot_lo[k] == rot_hi[k] and sc_lo[k] == sc_hi[k]
+                tries = 1 if fixed else fits
+                for t in range(tries):
+                    rot = rot_lo[k]
+                    if rot_hi[k] > rot_lo[k]:
+                        rot += _rand(rs) * (rot_hi[k] - rot_lo[k])
+                    s = sc_lo[k]
+                    if sc_hi[k] > sc_lo[k]:
+                        if sfit:
+                            # scale that fits the gap (extension, §4.2): poses run from the
+                            # largest scale down, one random scale per stratum of the range
+                            s += (1.0 - (t + _rand(rs)) / tries) * (sc_hi[k] - sc_lo[k])
+                        else:
+                            s += _rand(rs) * (sc_hi[k] - sc_lo[k])
+                    anchored = t > 0 and ka[k + 1] > ka[k]
+                    if anchored:
+                        # later poses put one of the kind's anchor points (inside its
+                        # exclusive region) on the candidate point, not its box centre
+                        if t % 2 == 1:
+                            # the widest of the kind's disks that the gap can hold
+                            a = kdo[k]
+                            while a < kdo[k + 1] - 1 and kdisk[a, 2] * s > dflat[q]:
+                                a += 1
+                            ax_, ay_ = kdisk[a, 0], kdisk[a, 1]
+                        else:
+                            a = ka[k] + int(_rand(rs) * (ka[k + 1] - ka[k]))
+                            ax_, ay_ = kanch[a, 0], kanch[a, 1]
+                            if kanch[a, 2] * s > dflat[q] + off_q:
+                                # the anchor's own inscribed disk, centred on the point, is
+                                # wider than the field allows there (as below): certain
+                                st[_S_POSES] += 1
+                                continue
+                    c = np.cos(rot) * s
+                    sn = np.sin(rot) * s
+                    if anchored:
+                        x = px - (c * ax_ - sn * ay_)
+                        y = py - (sn * ax_ + c * ay_)
+                    st[_S_POSES] += 1
+                    # certain rejection from the field (extension, §4.2): the field is never
+                    # below the true distance to the obstacles at a pixel centre, so a disk
+                    # inside the body that is wider than the field there plus the offset to
+                    # the pixel centre must meet an obstacle; no exact test is needed
+                    hit = False
+                    for i in range(kdo[k], kdo[k + 1]):
+                        # the disk's centre in pixel units
+                        u = (x + c * kdisk[i, 0] - sn * kdisk[i, 1] - fx0) * icell
+                        v = (y + sn * kdisk[i, 0] + c * kdisk[i, 1] - fy0) * icell
+                        if not (0.0 <= u < cols and 0.0 <= v < rows):
+                            hit = True  # outside the domain's box
+                            break
+                        fc = int(u)
+                        fr = int(v)
+                        ox = u - (fc + 0.5)
+                        oy = v - (fr + 0.5)
+                        if kdisk[i, 2] * s > d[fr, fc] + np.sqrt(ox * ox + oy * oy) * fcell:
+                            hit = True
+                            break
+                    if hit:
+                        continue
+                    _pose(kv, kr, kk[k], kk[k + 1], x, y, c, sn, cv, cbb)
+                    if same_hull[k]:
+                        hb = cbb
+                        hvv = cv
                     else:
-                        a = ka[k] + int(_rand(rs) * (ka[k + 1] - ka[k]))
-                        ax_, ay_ = kanch[a, 0], kanch[a, 1]
-                        if kanch[a, 2] * s > dflat[q] + off_q:
-                            # the anchor's own inscribed disk, centred on the point, is
-                            # wider than the field allows there (as below): certain
-                            st[_S_POSES] += 1
-                            continue
-                c = np.cos(rot) * s
-                sn = np.sin(rot) * s
-                if anchored:
-                    x = px - (c * ax_ - sn * ay_)
-                    y = py - (sn * ax_ + c * ay_)
-                st[_S_POSES] += 1
-                # certain rejection from the field (extension, §4.2): the field is never
-                # below the true distance to the obstacles at a pixel centre, so a disk
-                # inside the body that is wider than the field there plus the offset to
-                # the pixel centre must meet an obstacle; no exact test is needed
-                hit = False
-                for i in range(kdo[k], kdo[k + 1]):
-                    # the disk's centre in pixel units
-                    u = (x + c * kdisk[i, 0] - sn * kdisk[i, 1] - fx0) * icell
-                    v = (y + sn * kdisk[i, 0] + c * kdisk[i, 1] - fy0) * icell
-                    if not (0.0 <= u < cols and 0.0 <= v < rows):
-                        hit = True  # outside the domain's box
-                        break
-                    fc = int(u)
-                    fr = int(v)
-                    ox = u - (fc + 0.5)
-                    oy = v - (fr + 0.5)
-                    if kdisk[i, 2] * s > d[fr, fc] + np.sqrt(ox * ox + oy * oy) * fcell:
-                        hit = True
-                        break
-                if hit:
-                    continue
-                _pose(kv, kr, kk[k], kk[k + 1], x, y, c, sn, cv, cbb)
-                if same_hull[k]:
-                    hb = cbb
-                    hvv = cv
-                else:
-                    _pose(hv, hr, hk[k], hk[k + 1], x, y, c, sn, ch, hbb)
-                    hb = hbb
-                    hvv = ch
-                st[_S_QID] += 1
-                if not _in_region(hvv, hr if not same_hull[k] else kr, hk[k] if not same_hull[k] else kk[k],
-                                  hk[k + 1] if not same_hull[k] else kk[k + 1], hb, rv, rr, rsegs, g,
-                                  rhead, rnext, rsid, rstamp, st[_S_QID]):
-                    continue
-                if _collides(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
-                    continue
-                ok = True
-                break
+                        _pose(hv, hr, hk[k], hk[k + 1], x, y, c, sn, ch, hbb)
+                        hb = hbb
+                        hvv = ch
+                    st[_S_QID] += 1
+                    if not _in_region(hvv, hr if not same_hull[k] else kr, hk[k] if not same_hull[k] else kk[k],
+                                      hk[k + 1] if not same_hull[k] else kk[k + 1], hb, rv, rr, rsegs, g,
+                                      rhead, rnext, rsid, rstamp, st[_S_QID]):
+                        continue
+                    if _collides(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
+                        continue
+                    ok = True
+                    break
+                if ok:
+                    break
             if ok:
                 n0 = st[_S_NP]
                 _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
@@ -678,6 +747,7 @@ def _rounds(
                          int(np.floor((cbb[0] - grow - fx0) / fcell)),
                          int(np.ceil((cbb[2] + grow - fx0) / fcell)) + 1)
                 st[_S_CONSEC] = 0
+                cnt[k] += 1
                 if cumw.size == 0:
                     st[_S_NEXT] = (st[_S_NEXT] + 1) % nkinds
             else:
@@ -966,8 +1036,16 @@ class FitEngine:
         return segs, np.searchsorted(owner, np.arange(n + 1)).astype(np.int64)
 
     def run(self, gen: np.random.Generator, field, rounds: int, limit: int, p_count: int, power: float, fits: int,
-            suppress: float, sup_r: float) -> int:
-        """Up to ``rounds`` rounds of Step 2 against ``field`` (updated in place)."""
+            suppress: float, sup_r: float, target: np.ndarray | None = None, tol: float = 0.05,
+            scale_fit: bool = False) -> int:
+        """Up to ``rounds`` rounds of Step 2 against ``field`` (updated in place).
+
+        ``target`` (K,) float: requested kind shares for the gap-fitting kind choice
+        (:func:`_kind_order`, ``tol`` the share a kind may run ahead); None: one kind per
+        candidate, cyclic or by weight (§3.2). ``scale_fit``: each candidate's poses run
+        from the largest scale down, so that the largest element that fits takes the gap.
+        """
+        ktarget = np.zeros(0) if target is None else np.ascontiguousarray(target, dtype=float)
         if not hasattr(self, "w") or self.w.shape != field.d.shape:
             self.w = np.ones_like(field.d)
             self.qbuf = np.zeros(field.d.size, dtype=np.int64)
@@ -976,7 +1054,7 @@ class FitEngine:
         while True:
             state = rand_state(gen)
             status = _rounds(
-                state, rounds, limit, p_count, float(power), fits, float(suppress), float(sup_r), self.kanch, self.ka, self.kdisk, self.kdo,
+                state, rounds, limit, p_count, float(power), fits, float(suppress), float(sup_r), ktarget, float(tol), bool(scale_fit), self.kanch, self.ka, self.kdisk, self.kdo,
                 self.kbb,
                 field.d, self.w, field.x0, field.y0, field.cell, self.qbuf, self.cand, self.cdraw,
                 self.kv, self.kr, self.kk, self.hv, self.hr, self.hk, self.same_hull, self.rot_lo, self.rot_hi,

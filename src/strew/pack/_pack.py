@@ -51,7 +51,18 @@ DEFAULTS: dict[str, Any] = {
     # damps the field about a cancelled candidate (fits=1, suppress=1: the paper's rounds)
     "fits": 48,
     "suppress": 0.9,
+    # extension of §4.2 (see _fit._kind_order): each candidate tries the kinds most behind
+    # their requested shares first, keeping every share within this of its target
+    "kind_choice": "fit",
+    "tolerance": 0.05,
+    # extension of §4.2: "random" draws scales uniformly in the range (§4.1); "fit" tries
+    # the largest first at each candidate, so that big elements take big gaps and small
+    # ones fill what is left
+    "scale_choice": "random",
 }
+
+KIND_CHOICES = ("fit", "cycle")
+SCALE_CHOICES = ("random", "fit")
 
 # Step 2 rounds per call of the compiled loop (between progress reports)
 _ROUNDS_PER_TICK = 25
@@ -138,6 +149,9 @@ def pack(
     sparse_candidates: int = DEFAULTS["poisson_candidates"],
     fits: int = DEFAULTS["fits"],
     suppress: float = DEFAULTS["suppress"],
+    kind_choice: str = DEFAULTS["kind_choice"],
+    scale_choice: str = DEFAULTS["scale_choice"],
+    tolerance: float = DEFAULTS["tolerance"],
     rng: int | np.random.Generator | None = None,
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
@@ -165,7 +179,9 @@ def pack(
         Exclusive shapes in each element's local coordinates (§3.1). An exclusive shape
         smaller than its element lets elements overlap.
     weights : sequence or mapping of kind -> float, optional
-        Choose kinds at random with these weights; default: cyclically (§3.2).
+        The kinds' requested proportions (default equal). How they are met follows
+        ``kind_choice``; naive dart throwing chooses kinds at random with these weights,
+        or cyclically without them (§3.2).
     max_failures : int, optional
         Stop after this many consecutive cancellations; default 200 for fill-gap
         (§4.2) and 10,000 for naive (§3.3).
@@ -184,6 +200,22 @@ def pack(
     suppress : float in (0, 1]
         Fill-gap Step 2: factor applied to the distance field about a cancelled candidate,
         so that later rounds explore other gaps (0.9; an extension of §4.2; 1 turns it off).
+    kind_choice : {"fit", "cycle"}
+        Fill-gap Step 2: ``"fit"`` (default; an extension of §4.2) tries at each
+        candidate point the kinds most behind their requested proportions first and
+        moves on to the next kind when one does not fit the gap, so that a gap too small
+        for one kind is filled by another; the proportions stay within ``tolerance`` of
+        the requested ones (once there are more than about ``K / tolerance`` elements).
+        ``"cycle"``: one kind per candidate, cyclically or drawn by ``weights`` (§3.2).
+    scale_choice : {"random", "fit"}
+        Fill-gap Step 2: ``"random"`` (default) draws each pose's scale uniformly in its
+        kind's range (§4.1); ``"fit"`` (an extension of §4.2) tries the poses at each
+        candidate from the largest scale down, so that the largest element that fits
+        takes the gap and smaller ones fill what is left: denser, with scales skewed
+        towards the top of the range.
+    tolerance : float in (0, 1)
+        Fill-gap with ``kind_choice="fit"``: how far each kind's proportion may stray
+        from the requested one (0.05).
     rng : int, Generator or None
     progress, should_cancel : callables, optional
         See :mod:`strew._progress`.
@@ -237,6 +269,16 @@ def pack(
         raise InputError(f"suppress: must be a number, got {suppress!r}") from None
     if not (0 < suppress <= 1):
         raise InputError(f"suppress: must be in (0, 1], got {suppress}")
+    if kind_choice not in KIND_CHOICES:
+        raise InputError(f"kind_choice: unknown choice {kind_choice!r}; use one of {', '.join(KIND_CHOICES)}")
+    if scale_choice not in SCALE_CHOICES:
+        raise InputError(f"scale_choice: unknown choice {scale_choice!r}; use one of {', '.join(SCALE_CHOICES)}")
+    try:
+        tolerance = float(tolerance)
+    except (TypeError, ValueError):
+        raise InputError(f"tolerance: must be a number, got {tolerance!r}") from None
+    if not (0 < tolerance < 1):
+        raise InputError(f"tolerance: must be in (0, 1), got {tolerance}")
     gen = as_rng(rng)
     rep = Reporter(progress, should_cancel, message=f"pack ({method})")
     placer = Placer(kinds, dom, w, limit)
@@ -250,8 +292,14 @@ def pack(
         x0, y0, x1, y1 = dom.bounds
         if (x1 - x0) * (y1 - y0) / cell**2 > 2e7:
             raise InputError(f"resolution: {cell:g} is too fine for a region of {x1 - x0:g} x {y1 - y0:g} (over 20 million pixels)")
-        info.update(candidates=p_count, power=power, resolution=cell, fits=n_fits, suppress=suppress)
-        info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, k_sparse, n_fits, suppress, info)
+        info.update(candidates=p_count, power=power, resolution=cell, fits=n_fits, suppress=suppress, kind_choice=kind_choice,
+                    scale_choice=scale_choice)
+        target = None
+        if kind_choice == "fit":
+            target = np.full(len(kinds), 1.0 / len(kinds)) if w is None else w
+            info["tolerance"] = tolerance
+        info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, k_sparse, n_fits, suppress, info, target, tolerance,
+                                    scale_choice == "fit")
     if len(placer) == 0 and "no shape fits" not in info["stopped"]:
         info["stopped"] = f"no shape fits in the region ({info['stopped']})"
     info["trials"] = placer.trials
@@ -305,6 +353,9 @@ def _fill_gap(
     fits: int,
     suppress: float,
     info: dict,
+    target: np.ndarray | None = None,
+    tolerance: float = 0.05,
+    scale_fit: bool = False,
 ) -> str:
     kinds = placer.kinds
     # Step 1 (§4.1): Poisson-disk points with the circumscribed circle O of the largest
@@ -328,9 +379,13 @@ def _fill_gap(
     # compiled loop (see _fit for the fit, suppression and fresh-candidate extensions).
     # suppression disk: a quarter of the smallest element's circumscribed radius, at least a pixel
     sup_r = max(0.25 * min(k.radius * k.scale[0] for k in kinds), cell)
+    # gap-fitting kind choice: no share may run ahead of its target by more than
+    # tolerance / (K - 1), so that none falls behind by more than the tolerance
+    k_tol = tolerance / max(int(np.count_nonzero(target)) - 1, 1) if target is not None else 0.0
     status = RUNNING
     while status == RUNNING:
-        status = engine.run(gen, field, _ROUNDS_PER_TICK, placer.max_failures, p_count, power, fits, suppress, sup_r)
+        status = engine.run(gen, field, _ROUNDS_PER_TICK, placer.max_failures, p_count, power, fits, suppress, sup_r,
+                            target, k_tol, scale_fit)
         rep.tick(len(engine), message=f"{len(engine)} placed, {engine.consecutive} consecutive cancellations")
     placer.trials += engine.trials
     placer.consecutive = engine.consecutive
