@@ -17,7 +17,7 @@ import numpy as np
 from .._errors import InputError
 from ..arrangement import Arrangement
 
-__all__ = ["Reference", "analyze", "delaunay_edges", "flip_edge", "SKEW_ANGLE"]
+__all__ = ["Reference", "analyze", "delaunay_edges", "flip_edge", "regularize_triangles", "SKEW_ANGLE"]
 
 #: §4: triangles with an angle greater than 2/3 π are "skewed" and removed.
 SKEW_ANGLE = 2.0 * np.pi / 3.0
@@ -51,7 +51,7 @@ def _triangle_angles(p: np.ndarray, tri: np.ndarray) -> np.ndarray:
     return np.c_[ang(b - a, c - a), ang(a - b, c - b), ang(a - c, b - c)]
 
 
-def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE) -> np.ndarray:
+def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize: bool = False) -> np.ndarray:
     """Edges of the Delaunay triangulation of ``xy`` without skewed triangles (§4).
 
     Parameters
@@ -60,6 +60,9 @@ def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE) -> np.ndarray
         Element centres.
     skew_angle : float
         Triangles with any angle above this (radians) are dropped.
+    regularize : bool
+        Flip the ambiguous diagonals of a (near-)regular lattice to one direction
+        (:func:`regularize_triangles`, the automatic form of Fig. 3's flips).
 
     Returns
     -------
@@ -82,9 +85,132 @@ def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE) -> np.ndarray
     tri = tri[ang.max(axis=1) < skew_angle - 1e-6]
     if len(tri) == 0:
         raise InputError("exemplar: every Delaunay triangle is skewed (an angle above 120°); nothing to learn from")
+    if regularize:
+        tri = regularize_triangles(xy, tri, skew_angle)
     e = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
     e.sort(axis=1)
     return np.unique(e, axis=0)
+
+
+#: A Delaunay edge is ambiguous when the two angles opposite it sum to within this of π
+#: (its four points are nearly cocircular: the other diagonal is as good).
+AMBIGUOUS_ANGLE = np.deg2rad(30.0)
+#: Directions of ambiguous diagonals within this of the common one count as agreeing.
+DIRECTION_TOL = np.deg2rad(20.0)
+
+
+def _angle_at(p: np.ndarray, a: int, b: int, c: int) -> float:
+    """Angle at ``a`` of triangle ``a b c``."""
+    u, v = p[b] - p[a], p[c] - p[a]
+    cos = float(u @ v) / max(float(np.hypot(*u) * np.hypot(*v)), 1e-300)
+    return float(np.arccos(min(1.0, max(-1.0, cos))))
+
+
+def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SKEW_ANGLE) -> np.ndarray:
+    """Flip the ambiguous diagonals of a near-regular lattice to one common direction.
+
+    §4, Fig. 3: on regular and near-regular references Delaunay triangulation "often
+    generates undesired connections": each cell of a (jittered) square lattice is split by
+    whichever diagonal the noise favours, so rings of four to eight neighbours alternate
+    at random, "and these connections often break the regular pattern" in growth. The
+    paper lets the user flip edges. This does the same automatically: an edge whose two
+    opposite angles sum to within :data:`AMBIGUOUS_ANGLE` of π is ambiguous; when most
+    ambiguous quadrilaterals have one diagonal along a common direction (a lattice, not
+    an irregular arrangement), every ambiguous edge is flipped to the diagonal nearer that
+    direction, unless the flip would make a skewed triangle. Irregular references are
+    left as they are.
+
+    Parameters
+    ----------
+    xy : (n, 2) float
+    tri : (m, 3) int
+        Triangles (no skewed ones).
+    skew_angle : float
+
+    Returns
+    -------
+    (m, 3) int
+        The triangles after the flips (as many as before).
+    """
+    tris = [tuple(int(v) for v in t) for t in np.asarray(tri).tolist()]
+    alive = [True] * len(tris)
+    by_edge: dict[tuple[int, int], list[int]] = {}
+
+    def key(a: int, b: int) -> tuple[int, int]:
+        return (a, b) if a < b else (b, a)
+
+    def register(t: int) -> None:
+        a, b, c = tris[t]
+        for e in (key(a, b), key(b, c), key(a, c)):
+            by_edge.setdefault(e, []).append(t)
+
+    for t in range(len(tris)):
+        register(t)
+
+    def quad(e: tuple[int, int]) -> tuple[int, int, int, int] | None:
+        ts = [t for t in by_edge.get(e, []) if alive[t]]
+        if len(ts) != 2:
+            return None
+        i, j = e
+        a = next(v for v in tris[ts[0]] if v not in e)
+        b = next(v for v in tris[ts[1]] if v not in e)
+        return i, j, a, b
+
+    def deficiency(q: tuple[int, int, int, int]) -> float:
+        i, j, a, b = q
+        return float(np.pi - _angle_at(xy, a, i, j) - _angle_at(xy, b, i, j))
+
+    def direction(u: int, v: int) -> float:
+        d = xy[v] - xy[u]
+        return float(np.mod(np.arctan2(d[1], d[0]), np.pi))
+
+    def diff(p: float, q: float) -> float:
+        d = abs(p - q) % np.pi
+        return min(d, np.pi - d)
+
+    amb = []
+    for e in list(by_edge):
+        q = quad(e)
+        if q is not None and abs(deficiency(q)) < AMBIGUOUS_ANGLE:
+            amb.append(q)
+    if len(amb) < 3:
+        return np.asarray(tri)
+    dirs = [(direction(i, j), direction(a, b)) for i, j, a, b in amb]
+    cands = [d for pair in dirs for d in pair]
+    # the common direction: the candidate agreeing with the most quadrilaterals
+    support = [sum(1 for p in dirs if min(diff(c, p[0]), diff(c, p[1])) < DIRECTION_TOL) for c in cands]
+    best = int(np.argmax(support))
+    if support[best] < 0.75 * len(amb):
+        return np.asarray(tri)  # no common direction: an irregular reference
+    star = cands[best]
+    for _ in range(3):
+        flipped = False
+        for e in list(by_edge):
+            q = quad(e)
+            if q is None or abs(deficiency(q)) >= AMBIGUOUS_ANGLE:
+                continue
+            i, j, a, b = q
+            if diff(direction(a, b), star) >= diff(direction(i, j), star):
+                continue
+            # convex quadrilateral: i and j on opposite sides of a-b
+            d = xy[b] - xy[a]
+            ci = d[0] * (xy[i, 1] - xy[a, 1]) - d[1] * (xy[i, 0] - xy[a, 0])
+            cj = d[0] * (xy[j, 1] - xy[a, 1]) - d[1] * (xy[j, 0] - xy[a, 0])
+            if ci * cj >= 0 or quad(key(a, b)) is not None or key(a, b) in by_edge and any(alive[t] for t in by_edge[key(a, b)]):
+                continue
+            new = [(a, b, i), (a, b, j)]
+            if any(max(_angle_at(xy, *t), _angle_at(xy, t[1], t[2], t[0]), _angle_at(xy, t[2], t[0], t[1])) >= skew_angle - 1e-6 for t in new):
+                continue
+            for t in by_edge[e]:
+                alive[t] = False
+            for t3 in new:
+                tris.append(t3)
+                alive.append(True)
+                register(len(tris) - 1)
+            flipped = True
+        if not flipped:
+            break
+    return np.asarray([t for t, ok in zip(tris, alive) if ok], dtype=np.asarray(tri).dtype)
 
 
 def _adjacency(n: int, edges: np.ndarray) -> list[set[int]]:
@@ -247,6 +373,7 @@ def analyze(
     *,
     edges: np.ndarray | Sequence[Sequence[int]] | None = None,
     flips: Iterable[tuple[int, int]] = (),
+    regularize: bool = True,
 ) -> Reference:
     """Build the connectivity of a reference arrangement and its 1-ring reference set (§4).
 
@@ -260,6 +387,9 @@ def analyze(
         it has one, else the Delaunay triangulation without skewed triangles.
     flips : iterable of (i, j)
         Edges to flip afterwards (Fig. 3: the user repairs the regularity).
+    regularize : bool
+        Flip the ambiguous diagonals of a near-regular lattice to one direction first
+        (:func:`regularize_triangles`); only for the triangulation built here.
 
     Returns
     -------
@@ -281,7 +411,7 @@ def analyze(
     else:
         e = _edges_from_extra(exemplar)
         if e is None:
-            e = delaunay_edges(xy)
+            e = delaunay_edges(xy, regularize=regularize)
     ref = _build(exemplar, e)
     for i, j in flips:
         ref = flip_edge(ref, int(i), int(j))

@@ -57,6 +57,9 @@ class GrowParams:
     avoid_overlaps: bool = True
     connectivity: bool = False
     max_elements: int = 2_000_000
+    #: rotation mode: weight of the neighbours' frame, per mean edge length (see
+    #: :func:`strew.grow.match_references`); 0 is the paper's Eq. 4 alone
+    frame_weight: float = 1.0
 
 
 def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
@@ -158,6 +161,7 @@ class _Grower:
         self.scl = np.ones(cap)
         self.fixed = np.zeros(cap, dtype=bool)
         self.refslot = np.full(cap, -1, dtype=np.int64)  # reference row of each element
+        self.frame = np.zeros(cap)  # rotation of the reference ring each element copies (§5.3)
         self.n = 0
         self.adj: list[set[int]] = []
         self.target: list[dict[int, tuple[float, float]] | None] = []  # ring offsets r_ji
@@ -202,11 +206,14 @@ class _Grower:
         self.waiting: list[int] | None = None
         self.s0 = -1
         self.first = True
+        # incremental spray: elements are held (Eq. 6) after the relaxation window that
+        # follows their placement, so pausing at a window changes nothing
+        self.freeze_relaxed = False
 
     # -- storage ------------------------------------------------------------------------
     def _grow_capacity(self) -> None:
         cap = 2 * len(self.state)
-        for name in ("pos", "state", "kind", "sub", "rot", "scl", "fixed", "refslot"):
+        for name in ("pos", "state", "kind", "sub", "rot", "scl", "fixed", "refslot", "frame"):
             old = getattr(self, name)
             new = np.zeros((cap, *old.shape[1:]), dtype=old.dtype)
             if name in ("kind", "sub", "refslot"):
@@ -452,8 +459,23 @@ class _Grower:
         if self.mode_code == 2:
             v = self.p.flow(ps[None, :])[0]
             flow_theta = math.atan2(v[1], v[0])
+        frame_theta, frame_w = 0.0, 0.0
+        if self.mode_code == 1 and len(nb_arr):
+            # the neighbours' reference frames (their Eq. 4 rotations), circular mean
+            f = self.frame[nb_arr]
+            frame_theta = math.atan2(float(np.sin(f).sum()), float(np.cos(f).sum()))
+            frame_w = self.p.frame_weight * self.l
         err, shift, theta = match_references(
-            self.rings, rel, self.kind[nb_arr], self.sub[nb_arr], mode=self.p.mode, flow_theta=flow_theta, candidates=cand, weights=self.p.weights
+            self.rings,
+            rel,
+            self.kind[nb_arr],
+            self.sub[nb_arr],
+            mode=self.p.mode,
+            flow_theta=flow_theta,
+            candidates=cand,
+            weights=self.p.weights,
+            frame_theta=frame_theta,
+            frame_weight=frame_w,
         )
         best = float(err.min()) if len(err) else math.inf
         if not math.isfinite(best):
@@ -470,6 +492,12 @@ class _Grower:
         p = self.p
         r = int(self.ref_ids[a])
         kind = int(self.ex_kind[r])
+        n_ring = int(self.rings["n"][a])
+        c, sn = math.cos(th), math.sin(th)
+        rel = self.rings["rel"][a, :n_ring]
+        nb = self._last_nb
+        if len(nb) >= 2:
+            self._fit_position(s, nb, rel, k, c, sn)
         x, y = self.xy[s]
         rot = float(self.ex_rot[r]) + th
         scale = float(self.ex_scale[r])
@@ -492,21 +520,18 @@ class _Grower:
         self.rot[s] = rot
         self.scl[s] = scale
         self.refslot[s] = a
+        self.frame[s] = th
         self.geom[s] = g
         self.color[s] = self._color(r) if self.want_color else None
         self.order.append(s)
         self.dirty.add(s)
 
-        n_ring = int(self.rings["n"][a])
-        c, sn = math.cos(th), math.sin(th)
-        rel = self.rings["rel"][a, :n_ring]
         ring_pos = np.empty((n_ring, 2))
         ring_pos[:, 0] = x + c * rel[:, 0] - sn * rel[:, 1]
         ring_pos[:, 1] = y + sn * rel[:, 0] + c * rel[:, 1]
         ring_kind = self.rings["kind"][a, :n_ring].tolist()
         ring_xy = ring_pos.tolist()
         slot_of: dict[int, int] = {}
-        nb = self._last_nb
         for i, j in enumerate(nb.tolist()):
             slot_of[j] = (k + i) % n_ring
         paired = set(slot_of.values())
@@ -562,6 +587,35 @@ class _Grower:
         self.target[s] = tgt
         self.ring_n[s] = n_ring
         return True
+
+    def _fit_position(self, s: int, nb: np.ndarray, rel: np.ndarray, k: int, c: float, sn: float) -> None:
+        """Move seed ``s`` to where the chosen ring fits its placed neighbours best.
+
+        Not in the paper, which keeps the seed where the element that made it put it:
+        the seed's position is then one neighbour's noisy ring offset, and the noise of
+        near-regular references adds up from element to element along the growth, so
+        rows wander and close up (§5.5 relaxes it only afterwards). The least-squares
+        position for the chosen ring, ``mean_i (x_i - R r_{f(i)})``, is the minimiser of
+        Eq. 5 for the new element alone with its neighbours held (Eq. 6). The move is
+        kept below ``l_short`` and within the region, boundaries and connectivity.
+        """
+        n_ring = len(rel)
+        pos = self.pos[nb]
+        slots = (k + np.arange(len(nb))) % n_ring
+        rr = rel[slots]
+        fx = float(np.mean(pos[:, 0] - (c * rr[:, 0] - sn * rr[:, 1])))
+        fy = float(np.mean(pos[:, 1] - (sn * rr[:, 0] + c * rr[:, 1])))
+        ox, oy = self.xy[s]
+        if (fx - ox) ** 2 + (fy - oy) ** 2 > self.l_short**2 or not self.in_domain(fx, fy):
+            return
+        if self.crosses_boundary((ox, oy), (fx, fy)):
+            return
+        if self.spray_area is not None and not shapely.contains_xy(self.spray_area, fx, fy):
+            return
+        for o in self.adj[s]:
+            if self.crosses_edges(s, (fx, fy), o, self.xy[o]) or self.crosses_boundary((fx, fy), self.xy[o]):
+                return
+        self._move(s, fx, fy)
 
     def _ring_edges(self, s: int, a: int, slot_of: dict[int, int], rel: np.ndarray, c: float, sn: float) -> None:
         x, y = self.xy[s]
@@ -661,6 +715,10 @@ class _Grower:
         pos = self.pos[nodes]
         free = np.array([g in wset for g in nodes])
         new = relax_positions(pos, [local[g] for g in src], [local[g] for g in dst], np.asarray(off), free)
+        if self.freeze_relaxed:
+            for g in win:
+                if self.state[g] == ELEMENT:
+                    self.fixed[g] = True
         tiny = 1e-9 * self.l
         moved = []
         for g in win:

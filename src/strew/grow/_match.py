@@ -67,7 +67,7 @@ def order_target(rel: np.ndarray) -> np.ndarray:
 
 
 @numba.njit(cache=True)
-def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub, mode, flow_theta, w1, w2, w3, out_err, out_shift, out_theta):  # pragma: no cover - compiled
+def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub, mode, flow_theta, frame_theta, frame_w, w1, w2, w3, out_err, out_shift, out_theta):  # pragma: no cover - compiled
     R = ref_rel.shape[0]
     T = t_rel.shape[0]
     for r in range(R):
@@ -98,6 +98,8 @@ def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub,
                     a += px * t_rel[i, 0] + py * t_rel[i, 1]
                     b += px * t_rel[i, 1] - py * t_rel[i, 0]
                 th = np.arctan2(b, a)
+            elif mode == 1:
+                th = frame_theta  # no target neighbour: the neighbours' frame, if any
             elif mode == 2:
                 th = flow_theta
             c = np.cos(th)
@@ -112,6 +114,12 @@ def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub,
                 e += w1 * np.sqrt(dx * dx + dy * dy)
                 if t_kind[i] != ref_kind[r, j]:
                     e += w2
+            if mode == 1 and frame_w > 0.0:
+                # departure from Eq. 4 (see match_references): the turn away from the
+                # frame of the neighbouring elements
+                d = th - frame_theta
+                d = d - 2.0 * np.pi * np.floor(d / (2.0 * np.pi) + 0.5)
+                e += frame_w * max(T, 1) * abs(d)
             if e < best:
                 best = e
                 best_k = k
@@ -131,6 +139,8 @@ def match_references(
     flow_theta: float = 0.0,
     candidates: np.ndarray | None = None,
     weights: tuple[float, float, float] = (W1, W2, W3),
+    frame_theta: float = 0.0,
+    frame_weight: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """ERROR(w(e_tar), w(e_ref)) of Eq. 3 for every reference element.
 
@@ -150,6 +160,14 @@ def match_references(
     candidates : (r,) bool, optional
         References allowed (a seed with a symbol id admits only that kind).
     weights : (w1, w2, w3)
+    frame_theta, frame_weight : float
+        Rotation mode only: the rotation of the neighbouring elements' reference frames
+        (radians) and the error per radian and per target neighbour of turning away from
+        it. Not in the paper: Eq. 4 alone is blind to the lattice's symmetry (a square
+        ring fits as well turned by 90°, one neighbour fits any turn) and lets noise in
+        near-regular rings turn each element a little, so the frame drifts and patches
+        grow at different angles. With a weight of about the mean edge length, a turn
+        costs what displacing every neighbour by that arc would. 0 gives Eq. 4.
 
     Returns
     -------
@@ -177,6 +195,8 @@ def match_references(
         np.ascontiguousarray(target_sub, dtype=np.int64),
         MODES[mode],
         float(flow_theta),
+        float(frame_theta),
+        float(frame_weight),
         float(weights[0]),
         float(weights[1]),
         float(weights[2]),

@@ -61,7 +61,9 @@ class SprayGrowth:
     Departures from the paper, for painting in a scene:
 
     - Elements handed out by :meth:`grow` are held fixed from then on (Eq. 6), so that
-      what is on screen does not move under later relaxation windows (§5.5).
+      what is on screen does not move under later relaxation windows (§5.5). Elements
+      are relaxed in the window after their placement only, then held, so that handing
+      out at any window gives the same growth.
     - :meth:`add_obstacles` registers elements the growth does not own (the scene);
       seeds that would overlap them die like seeds that would overlap the growth.
     - When the cursor reaches a place with no element or seed within the radius (the
@@ -138,6 +140,7 @@ class SprayGrowth:
         self.radius = float(radius)
         self._g = _Grower(ref, params, as_rng(rng))
         self._g.waiting = []
+        self._g.freeze_relaxed = True
         self._stroke = np.zeros((0, 2))
         self._given = 0  # elements of the growth handed out so far
         self._started = False
