@@ -7,7 +7,7 @@ import pytest
 import shapely
 from scipy.spatial import cKDTree
 
-from strew import InputError, Region, metrics
+from strew import Arrangement, InputError, Region, Shape, metrics
 from strew.grow import analyze, grow
 from strew.grow._exemplars import hex_exemplar, stone_exemplar, tile_exemplar
 from strew.grow._growth import ELEMENT, GrowParams, _Grower, _segments_cross
@@ -337,3 +337,24 @@ def test_growth_order_is_nearest_seed_first():
     assert d[0] == 0.0
     assert np.allclose(d[1:7], SPACING)
     assert np.all(np.diff(d) >= -1e-9)  # on an exact lattice: never closer than before
+
+
+@pytest.mark.parametrize("avoid", [True, False])
+def test_elements_large_against_their_spacing_do_not_hang(avoid):
+    """Issue 17.5: octagons of radius 89 within 0.07 units made each grid lookup walk
+    about 10^8 empty cells (over 60 s before should_cancel was first polled)."""
+    import time
+
+    t = np.linspace(0, 2 * np.pi, 8, endpoint=False)
+    octagon = Shape.polygon(np.c_[89 * np.cos(t), 89 * np.sin(t)])
+    xy = np.random.default_rng(0).uniform(0, 0.07, (10, 2))
+    ex = Arrangement({"oct": octagon}, np.zeros(10, int), xy[:, 0], xy[:, 1])
+    t0 = time.perf_counter()
+    out = grow(ex, count=100, rng=1, avoid_overlaps=avoid, should_cancel=lambda: False)
+    # a hang regression, not a speed measurement: before the fix this took minutes
+    assert time.perf_counter() - t0 < 20
+    assert 1 <= len(out) <= 100
+    if avoid:
+        assert len(metrics.overlaps(out)[0]) == 0
+    else:
+        assert len(out) == 100

@@ -168,7 +168,12 @@ class _Grower:
         self.geom: list[Any] = []
         self.color: list[Any] = []
         self.order: list[int] = []  # elements in placement order
-        self.cell = max(self.l, 1e-9)
+        # Grid cells from both the spacing and the element size: the overlap guard looks
+        # up a disc of about twice the largest element radius, the growth one of l_short
+        # to 5 l. (Cells from the spacing alone make each lookup walk (r / l)^2 cells:
+        # 10^8 for elements of radius 89 spaced 0.01 apart.)
+        self.cell = max(self.l, 0.5 * float(self.kind_radius.max()), 1e-9)
+        self.rep: Reporter | None = None  # polled for cancellation in the inner loops
         self.grid: dict[tuple[int, int], list[int]] = {}
         self.xy: list[tuple[float, float]] = []  # pos as Python floats, for the scalar hot paths
         self.edge_grid: dict[tuple[int, int], set[tuple[int, int]]] = {}
@@ -253,17 +258,20 @@ class _Grower:
         xy = self.xy
         st = self.state
         grid = self.grid
-        for cx in range(cx0, cx1 + 1):
-            for cy in range(cy0, cy1 + 1):
-                lst = grid.get((cx, cy))
-                if not lst:
-                    continue
-                for i in lst:
-                    px, py = xy[i]
-                    dx = px - x
-                    dy = py - y
-                    if dx * dx + dy * dy <= r2 and st[i] in states:
-                        out.append(i)
+        if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > len(grid):
+            # a disc wider than the occupied cells: walk those instead of the empty ones
+            lists = [lst for (cx, cy), lst in grid.items() if cx0 <= cx <= cx1 and cy0 <= cy <= cy1]
+        else:
+            lists = [grid.get((cx, cy)) for cx in range(cx0, cx1 + 1) for cy in range(cy0, cy1 + 1)]
+        for lst in lists:
+            if not lst:
+                continue
+            for i in lst:
+                px, py = xy[i]
+                dx = px - x
+                dy = py - y
+                if dx * dx + dy * dy <= r2 and st[i] in states:
+                    out.append(i)
         return out
 
     def _move(self, i: int, x: float, y: float) -> None:
@@ -490,6 +498,10 @@ class _Grower:
     def place(self, s: int, a: int, k: int, th: float) -> bool:
         """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
         p = self.p
+        if self.rep is not None:
+            # throttled poll of should_cancel, before this step changes anything (a seed
+            # that refuses its placements costs lookups but no growth step)
+            self.rep.tick(len(self.order))
         r = int(self.ref_ids[a])
         kind = int(self.ex_kind[r])
         n_ring = int(self.rings["n"][a])
@@ -690,6 +702,8 @@ class _Grower:
         return (xj[0] - xi[0], xj[1] - xi[1])
 
     def relax_window(self) -> None:
+        if self.rep is not None:
+            self.rep.tick(len(self.order))
         win = {i for i in self.dirty if self.state[i] != DEAD}
         self.dirty = set()
         for _ in range(self.p.relax_hops):
@@ -782,6 +796,7 @@ class _Grower:
         relaxation has just run (so pausing changes nothing); returns True when paused.
         """
         p = self.p
+        self.rep = rep
         while self.heap and len(self.order) < target:
             if pause is not None and len(self.order) >= pause and (not p.relax or self.steps_since_relax == 0):
                 return True

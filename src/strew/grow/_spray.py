@@ -205,6 +205,9 @@ class SprayGrowth:
         """Is a seed or element within the radius of (x, y)? Grid cells nearest first."""
         g = self._g
         h = g.cell
+        if (2 * self.radius / h + 3) ** 2 > 4 * max(len(g.grid), 1):
+            # a radius wide against the cells: the grid's own query walks occupied cells
+            return bool(g.near(x, y, self.radius))
         if self._offsets is None:
             k = int(math.ceil(self.radius / h)) + 1
             offs = [(i, j) for i in range(-k, k + 1) for j in range(-k, k + 1) if (max(abs(i), abs(j)) - 1) * h <= self.radius]
