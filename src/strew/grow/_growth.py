@@ -498,7 +498,7 @@ class _Grower:
     def place(self, s: int, a: int, k: int, th: float) -> bool:
         """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
         p = self.p
-        if self.rep is not None:
+        if self.rep is not None and self.order:
             # throttled poll of should_cancel, before this step changes anything (a seed
             # that refuses its placements costs lookups but no growth step)
             self.rep.tick(len(self.order))
