@@ -75,22 +75,62 @@ def update_free_space(state: SynthState, elems: np.ndarray, tree: cKDTree | None
     state._horizon[elems] = keep
 
 
-def _evict_voids(state: SynthState, visible: np.ndarray) -> None:
-    """Remove void elements that intersect the new visible elements ``visible``."""
+def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visible_only: bool) -> np.ndarray:
+    """(m,) bool: copies of ``src`` at ``pts`` that intersect an element of O that does
+    not yield to them.
+
+    Extension of §5.1 for exemplars with elements of several sizes (§7 names this a
+    limitation): a horizon element yields to a larger new element. Copies from
+    neighbouring seeds disagree a little, and a small element of one copy fits the gap
+    that a large element of the next copy needs; without this, every such disagreement
+    costs a large element, and over a fill the large kinds thin out while small ones
+    take their place (stones among pebbles: 0.44 of the exemplar's stone fraction, rings
+    of small dots around large discs lose their discs). The smaller elements are
+    removed once the large one is placed (:func:`_evict`). Only elements of the running
+    :func:`grow` call that are still in the horizon yield, so finished texture and what
+    earlier tools made are not torn up.
+    """
     prep = state.prep
-    vid = np.flatnonzero(prep.void[state.src])
-    if len(vid) == 0 or len(visible) == 0:
+    if state.n == 0 or len(pts) == 0:
+        return np.zeros(len(pts), bool)
+    osrc = state.src
+    keep = ~prep.void[osrc] if visible_only else np.ones(state.n, bool)
+    opos = state.pos[keep]
+    if len(opos) == 0:
+        return np.zeros(len(pts), bool)
+    osrc = osrc[keep]
+    oyield = (state.horizon & (state._born[: state.n] >= state.grow_start))[keep]
+    qr = prep.r[src]
+    rr = prep.r[osrc]
+    ext = float(np.ptp(opos, axis=0).max())
+    cell = max(prep.factor * (float(qr.max()) + float(rr.max())), float(prep.min_dist.max()), ext / 2000.0, 1e-9)
+    hard, _soft = K.conflict_split(
+        np.ascontiguousarray(pts, dtype=float), qr.astype(float), prep.skind[src], np.ascontiguousarray(opos), rr, prep.skind[osrc], oyield,
+        prep.min_dist, prep.factor, cell,
+    )
+    return hard
+
+
+def _evict(state: SynthState, new: np.ndarray, *, voids: bool) -> None:
+    """Remove the elements of O that intersect the new visible elements ``new``: void
+    elements (§5.6 extension, see ``grow``) and smaller horizon elements that yielded
+    to them (see :func:`_split_conflicts`)."""
+    prep = state.prep
+    first = int(new.min())
+    old = np.arange(first)
+    cand = (state.horizon[:first] & (state._born[:first] >= state.grow_start)) | (prep.void[state.src[:first]] if voids else False)
+    vid = old[cand]
+    if len(vid) == 0:
         return
-    vis_pos = state.pos[visible]
+    vis_pos = state.pos[new]
     r_max = float(prep.r.max())
-    near = cKDTree(vis_pos).query_ball_point(state.pos[vid], r=max(2.0 * prep.factor * r_max, float(prep.min_dist.max())) + 1e-9, return_length=True) > 0
-    vid = vid[near]
+    reach = max(2.0 * prep.factor * r_max, float(prep.min_dist.max())) + 1e-9
+    vid = vid[K.near_any(np.ascontiguousarray(state.pos[vid]), np.ascontiguousarray(vis_pos), reach)]
     if len(vid) == 0:
         return
     hit = K.conflict_check(
         np.ascontiguousarray(state.pos[vid]), state.r[vid], prep.skind[state.src[vid]], np.zeros(len(vid)),
-        np.ascontiguousarray(vis_pos), state.r[visible], prep.skind[state.src[visible]], prep.min_dist, prep.factor, True,
-        max(2.0 * prep.factor * r_max, float(prep.min_dist.max()), 1e-9),
+        np.ascontiguousarray(vis_pos), state.r[new], prep.skind[state.src[new]], prep.min_dist, prep.factor, True, reach,
     )
     if hit.any():
         mask = np.zeros(state.n, bool)
@@ -132,6 +172,7 @@ def grow(
     prm = state.params
     rep = Reporter(progress, should_cancel, message="synth")
     start_n = state.n
+    state.grow_start = state.iterations + 1
     t0 = time.perf_counter()
     skipped = [0.0]
     if state.n:
@@ -191,9 +232,14 @@ def grow(
         for phase, in_phase in enumerate(phases):
             okp = ok & in_phase
             if okp.any():
-                # ... not intersect O (Algorithm 1)
+                # ... not intersect O (Algorithm 1), except smaller horizon elements,
+                # which yield (see _split_conflicts)
                 sub = np.flatnonzero(okp)
-                okp[sub[state.conflicts(ppos[sub], exv[sub], visible_only=has_voids and phase == 0)]] = False
+                if phase == 0:
+                    hard = _split_conflicts(state, ppos[sub], exv[sub], visible_only=has_voids)
+                else:
+                    hard = state.conflicts(ppos[sub], exv[sub])
+                okp[sub[hard]] = False
             if not okp.any():
                 continue
             placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, prep.factor, cell)
@@ -204,8 +250,8 @@ def grow(
             new = state.add(ex[new_idx], ppos[new_idx])
             added += len(new)
             new_pos.append(ppos[new_idx])
-            if has_voids and phase == 0 and len(new):
-                _evict_voids(state, new)
+            if phase == 0 and len(new):
+                _evict(state, new, voids=has_voids)
         # seeds that could not generate: count a failure on the free space they reach
         failed_pos = seed_pos[~seed_ok]
         if len(failed_pos):

@@ -323,14 +323,22 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
 
 @numba.njit(cache=True, nogil=True)
 def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell):
-    """Sequential generation over seeds (Algorithm 1, §5.1).
+    """Generation over seeds (Algorithm 1, §5.1), larger elements first.
 
     For each seed, candidates are visited by increasing distance; the best one ``e_0``
-    is used if it can generate elements, otherwise ``e_i`` is considered while
+    is used if it can generate elements (some proposal passed the static checks
+    ``prop_ok``), otherwise ``e_i`` is considered while
     ``|n(s) - n(e_i)| <= c |n(s) - n(e_0)| + slack`` (the ratio test of §5.1); a seed whose
-    candidates all fail is abandoned. Elements of the chosen candidate that passed the
-    static checks (``prop_ok``) and do not intersect elements placed earlier in this
-    step are copied.
+    candidates all fail is abandoned. The chosen candidates' elements are then copied
+    unless they intersect elements copied earlier in this step.
+
+    Departure (§4.1, §7 "significant differences in element size ... are not
+    supported"): the copies of all seeds are placed in order of decreasing bounding
+    radius (stable: seed order among equals), not seed by seed. Where two seeds' copies
+    disagree, a small element of one would otherwise take the place of a large element
+    of the other (a small element fits a leftover gap, a large one rarely does), and
+    over a fill the small kinds crowd out the large ones (stones and pebbles: stones
+    fell to 0.44 of the exemplar's fraction).
 
     Parameters
     ----------
@@ -368,23 +376,9 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
     seed_ok = np.zeros(ns, np.bool_)
     if P == 0:
         return placed, seed_ok
-    x0 = INF
-    y0 = INF
-    x1 = -INF
-    y1 = -INF
-    for p in range(P):
-        if prop_ok[p]:
-            x0 = min(x0, prop_pos[p, 0])
-            y0 = min(y0, prop_pos[p, 1])
-            x1 = max(x1, prop_pos[p, 0])
-            y1 = max(y1, prop_pos[p, 1])
-    if x0 == INF:
-        return placed, seed_ok
-    nx = int((x1 - x0) / cell) + 1
-    ny = int((y1 - y0) / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(P, -1, np.int64)
-    tmp = np.empty(P, np.int64)
+    sel = np.empty(P, np.int64)
+    owner = np.empty(P, np.int64)
+    m = 0
     for i in range(ns):
         order = np.argsort(costs[i], kind="mergesort")
         d0 = costs[i, order[0]]
@@ -396,44 +390,61 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
             if cj == INF or cj > c_ratio * d0 + slack[i]:
                 break  # bad suggestion: abandon the seed (§5.1)
             w = out_ptr[i * k + j]
-            nt = 0
+            m0 = m
             for t in range(w, w + count[i * k + j]):
-                if not prop_ok[t]:
-                    continue
-                px, py = prop_pos[t, 0], prop_pos[t, 1]
-                gx = int((px - x0) / cell)
-                gy = int((py - y0) / cell)
-                hit = False
-                for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
-                    if hit:
+                if prop_ok[t]:
+                    sel[m] = t
+                    owner[m] = i
+                    m += 1
+            if m > m0:
+                break
+    if m == 0:
+        return placed, seed_ok
+    x0 = INF
+    y0 = INF
+    x1 = -INF
+    y1 = -INF
+    key = np.empty(m)
+    for u in range(m):
+        t = sel[u]
+        key[u] = -prop_r[t]
+        x0 = min(x0, prop_pos[t, 0])
+        y0 = min(y0, prop_pos[t, 1])
+        x1 = max(x1, prop_pos[t, 0])
+        y1 = max(y1, prop_pos[t, 1])
+    visit = np.argsort(key, kind="mergesort")
+    nx = int((x1 - x0) / cell) + 1
+    ny = int((y1 - y0) / cell) + 1
+    head = np.full(nx * ny, -1, np.int64)
+    nxt = np.full(P, -1, np.int64)
+    for uu in range(m):
+        u = visit[uu]
+        t = sel[u]
+        px, py = prop_pos[t, 0], prop_pos[t, 1]
+        gx = int((px - x0) / cell)
+        gy = int((py - y0) / cell)
+        hit = False
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                q = head[ax * ny + ay]
+                while q >= 0:
+                    dx = px - prop_pos[q, 0]
+                    dy = py - prop_pos[q, 1]
+                    lim = max(factor * (prop_r[t] + prop_r[q]), min_dist[prop_sk[t], prop_sk[q]])
+                    if dx * dx + dy * dy < lim * lim:
+                        hit = True
                         break
-                    for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
-                        q = head[ax * ny + ay]
-                        while q >= 0:
-                            dx = px - prop_pos[q, 0]
-                            dy = py - prop_pos[q, 1]
-                            lim = max(factor * (prop_r[t] + prop_r[q]), min_dist[prop_sk[t], prop_sk[q]])
-                            if dx * dx + dy * dy < lim * lim:
-                                hit = True
-                                break
-                            q = nxt[q]
-                        if hit:
-                            break
-                if not hit:
-                    tmp[nt] = t
-                    nt += 1
-            if nt == 0:
-                continue
-            for u in range(nt):
-                t = tmp[u]
-                placed[t] = True
-                gx = int((prop_pos[t, 0] - x0) / cell)
-                gy = int((prop_pos[t, 1] - y0) / cell)
-                g = gx * ny + gy
-                nxt[t] = head[g]
-                head[g] = t
-            seed_ok[i] = True
-            break
+                    q = nxt[q]
+                if hit:
+                    break
+            if hit:
+                break
+        if not hit:
+            placed[t] = True
+            seed_ok[owner[u]] = True
+            g = gx * ny + gy
+            nxt[t] = head[g]
+            head[g] = t
     return placed, seed_ok
 
 
@@ -618,6 +629,51 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
                 break
         out[i] = hit
     return out
+
+
+@numba.njit(cache=True, nogil=True)
+def conflict_split(pts, qr, qsk, opos, orad, osk, oyield, min_dist, factor, cell):
+    """Like :func:`conflict_check` (with ``use_sk``), telling apart intersections with
+    elements that yield to the query: ``oyield[j]`` and ``orad[j] < qr[i]``.
+
+    Returns
+    -------
+    hard : (m,) bool
+        Intersects an element that does not yield.
+    soft : (m,) bool
+        Intersects only elements that yield (and at least one).
+    """
+    m = pts.shape[0]
+    n = opos.shape[0]
+    hard = np.zeros(m, np.bool_)
+    soft = np.zeros(m, np.bool_)
+    if n == 0 or m == 0:
+        return hard, soft
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, False)
+    for i in range(m):
+        gx = int(np.floor((pts[i, 0] - x0) / cell))
+        gy = int(np.floor((pts[i, 1] - y0) / cell))
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    dx = pts[i, 0] - opos[j, 0]
+                    dy = pts[i, 1] - opos[j, 1]
+                    lim = max(factor * (qr[i] + orad[j]), min_dist[qsk[i], osk[j]])
+                    if dx * dx + dy * dy < lim * lim:
+                        if oyield[j] and orad[j] < qr[i]:
+                            soft[i] = True
+                        else:
+                            hard[i] = True
+                            break
+                    j = nxt[j]
+                if hard[i]:
+                    break
+            if hard[i]:
+                break
+        if hard[i]:
+            soft[i] = False
+    return hard, soft
 
 
 @numba.njit(cache=True, nogil=True)

@@ -138,6 +138,8 @@ class SynthState:
         self._origin = np.zeros(cap, np.int64)
         self._horizon = np.zeros(cap, bool)
         self._free_base = np.zeros(cap, np.int64)
+        self._born = np.zeros(cap, np.int64)  # state.iterations when added
+        self.grow_start = 0  # first iteration of the running grow() call
         self._flags_n = 0
         self._alive = np.zeros(1024, bool)
         self._fails = np.zeros(1024, np.int16)
@@ -180,7 +182,7 @@ class SynthState:
         if n <= cap:
             return
         new = max(n, 2 * cap)
-        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base"):
+        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born"):
             old = getattr(self, name)
             arr = np.zeros((new, *old.shape[1:]), dtype=old.dtype)
             arr[: self.n] = old[: self.n]
@@ -214,6 +216,7 @@ class SynthState:
         self._origin[idx] = src
         self._horizon[idx] = horizon
         self._free_base[idx] = self._alloc_flags(src)
+        self._born[idx] = self.iterations
         self.n += m
         return idx
 
@@ -230,7 +233,7 @@ class SynthState:
         keep = ~np.asarray(mask, bool)
         k = int(keep.sum())
         removed = self.n - k
-        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base"):
+        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born"):
             arr = getattr(self, name)
             arr[:k] = arr[: self.n][keep]
         self.n = k
