@@ -27,6 +27,7 @@ import numpy as np
 import shapely
 
 from ._errors import InputError
+from ._limits import check_coordinates
 from .region import Region
 from .shape import Shape
 
@@ -181,6 +182,9 @@ class Arrangement:
             bad = np.flatnonzero(~np.isfinite(arr))
             if len(bad):
                 raise InputError(f"elements.{name}[{bad[0]}]: NaN or inf coordinate")
+            # Magnitudes beyond MAX_COORD overflow the methods' squared distances and areas;
+            # a scale must be positive (mirror images are kinds of their own).
+            check_coordinates(arr, f"elements.{name}", positive=name == "scale", index=True)
             return _readonly(arr)
 
         self._x = core("x", x, 0.0)

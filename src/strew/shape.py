@@ -21,6 +21,7 @@ import numpy as np
 import shapely
 
 from ._errors import InputError
+from ._limits import MAX_COORD
 
 __all__ = ["Path", "Shape", "paths_to_polygon"]
 
@@ -49,6 +50,9 @@ def _as_points(points: Any, where: str) -> np.ndarray:
         raise InputError(f"{where}: points must have shape (n, 2), got {arr.shape}")
     if not np.all(np.isfinite(arr)):
         raise InputError(f"{where}: NaN or inf coordinate")
+    if arr.size and np.abs(arr).max() > MAX_COORD:
+        # beyond this, squared distances and areas overflow (issue 17)
+        raise InputError(f"{where}: coordinate magnitude over {MAX_COORD:.0e}")
     return arr
 
 

@@ -6,7 +6,7 @@ run, so that ``strew --help`` answers quickly. To add a command, write
 to :data:`COMMANDS`.
 
 Exit codes (DESIGN.md): 0 success; 2 bad input or usage, with a one-line message that
-names the problem; 1 internal error.
+names the problem; 130 interrupted (Ctrl-C), with nothing written; 1 internal error.
 """
 
 from __future__ import annotations
@@ -55,12 +55,34 @@ class LazyGroup(click.Group):
 
 @click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "--version", prog_name="strew", message="%(prog)s %(version)s")
-def cli() -> None:
+@click.option("--limit-elements", metavar="N", default=None, help="Refuse work expected to make more elements [default: 1e7].")
+@click.option("--limit-memory", metavar="SIZE", default=None, help="Refuse work expected to need more memory, e.g. 8GB [default: 4GB].")
+@click.option("--limit-file-size", metavar="SIZE", default=None, help="Refuse larger input files, e.g. 200MB [default: 64MB].")
+@click.option("--limit-paths", metavar="N", default=None, help="Refuse input files with more paths or elements [default: 200000].")
+def cli(limit_elements: str | None, limit_memory: str | None, limit_file_size: str | None, limit_paths: str | None) -> None:
     """strew: fill 2D regions with many small vector elements.
 
     Every command reads .json (strew documents) or .svg, and writes whatever --out
     names: .json, .svg or .png. --seed makes runs repeatable.
+
+    Work is estimated before it starts: input that would make too many elements, need
+    too much memory, or files too large, are refused with exit code 2; the --limit-*
+    options (given before the command) or STREW_LIMIT_* variables raise the limits.
+    Ctrl-C stops a command with exit code 130 and writes nothing.
+
+    `strew run` scripts and `strew ornament` rule files are Python programs: they run
+    with your rights, so run only files you trust.
     """
+    given = {
+        "elements": limit_elements,
+        "memory": limit_memory,
+        "file_size": limit_file_size,
+        "paths": limit_paths,
+    }
+    if any(v is not None for v in given.values()):
+        from .._limits import set_limits
+
+        set_limits(**{k: v for k, v in given.items() if v is not None})
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -50,14 +50,39 @@ def _fail(message: str) -> None:
     click.echo(f"strew: error: {message}", err=True)
 
 
+def _interrupted(exc: BaseException) -> bool:
+    """Whether ``exc`` is, or was caused by, a Ctrl-C (also through a compiled kernel)."""
+    seen = set()
+    e: BaseException | None = exc
+    while e is not None and id(e) not in seen:
+        if isinstance(e, (KeyboardInterrupt, Cancelled)):
+            return True
+        seen.add(id(e))
+        e = e.__cause__ or e.__context__
+    return False
+
+
 def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
-    """Run the click group, mapping errors to exit codes (0, 1, 2) and one-line messages."""
+    """Run the click group, mapping errors to exit codes (0, 1, 2, 130) and one-line messages.
+
+    The group is invoked without click's own ``main`` wrapper, which would turn Ctrl-C
+    into ``Abort`` (exit 1) after printing an empty line: here Ctrl-C exits 130 with one
+    line, and since outputs are written only after the work, nothing is left behind.
+    Limits set with ``--limit-*`` hold for this run only.
+    """
+    from .._limits import limits
+
     args = list(sys.argv[1:] if argv is None else argv)
     try:
-        group.main(args=args, prog_name="strew", standalone_mode=False)
+        with limits():
+            with group.make_context("strew", args) as ctx:
+                group.invoke(ctx)
     except click.exceptions.Exit as exc:
         return int(exc.exit_code or 0)
-    except click.exceptions.Abort:
+    except click.exceptions.Abort as exc:
+        if _interrupted(exc):
+            _fail("interrupted")
+            return 130
         _fail("aborted")
         return 1
     except click.ClickException as exc:  # usage errors and bad parameters
@@ -67,15 +92,19 @@ def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
     except InputError as exc:
         _fail(str(exc).replace("\n", " "))
         return 2
-    except Cancelled:
-        _fail("cancelled")
-        return 1
-    except KeyboardInterrupt:
+    except (Cancelled, KeyboardInterrupt):
         _fail("interrupted")
         return 130
     except BrokenPipeError:
         return 0
+    except MemoryError:
+        _fail("out of memory: the input asks for more work than this machine can hold (see --limit-memory)")
+        return 2
     except Exception as exc:  # pragma: no cover - reported, not expected
+        if _interrupted(exc):
+            # e.g. numba's "CPUDispatcher(...) returned a result with an exception set"
+            _fail("interrupted")
+            return 130
         import traceback
 
         traceback.print_exc()
@@ -176,55 +205,91 @@ def parse_point(text: str, name: str) -> tuple[float, float]:
 
 # -- progress -----------------------------------------------------------------------------
 @contextlib.contextmanager
+def _sigint_cancels(cancelled: threading.Event) -> Iterator[None]:
+    """While active, the first Ctrl-C sets ``cancelled``; a second one interrupts at once.
+
+    A flag instead of an exception means no ``KeyboardInterrupt`` is raised inside a
+    compiled (numba) kernel, which would surface as ``SystemError: CPUDispatcher(...)
+    returned a result with an exception set``: the library sees ``should_cancel()`` turn
+    True at its next check and raises :class:`Cancelled`.
+    """
+    import signal
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def handler(signum: int, frame: Any) -> None:
+        if cancelled.is_set():
+            raise KeyboardInterrupt
+        cancelled.set()
+
+    try:
+        previous = signal.signal(signal.SIGINT, handler)
+    except ValueError:  # not the main interpreter
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+@contextlib.contextmanager
 def progress_bar(description: str, *, quiet: bool = False) -> Iterator[tuple[Callable[[int, int | None, str], None] | None, Callable[[], bool]]]:
     """Yield ``(progress, should_cancel)`` for a library call.
 
     ``progress`` draws a rich progress bar on stderr; it is None when ``quiet`` or when
     stderr is not a terminal. ``should_cancel`` turns True after Ctrl-C, so that the
-    library stops cleanly at its next check (a second Ctrl-C interrupts at once).
+    library stops cleanly at its next check (a second Ctrl-C interrupts at once). A
+    cancelled run raises :class:`Cancelled` at the end of the block even when the
+    library finished first, so that nothing is written.
     """
     cancelled = threading.Event()
 
     def should_cancel() -> bool:
         return cancelled.is_set()
 
-    if quiet or not sys.stderr.isatty():
-        yield None, should_cancel
-        return
-    from rich.console import Console
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+    with _sigint_cancels(cancelled):
+        if quiet or not sys.stderr.isatty():
+            yield None, should_cancel
+        else:
+            from rich.console import Console
+            from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    console = Console(stderr=True)
-    with Progress(
-        TextColumn("[bold]{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TextColumn("{task.fields[note]}"),
-        TimeElapsedColumn(),
-        console=console,
-        transient=True,
-    ) as bar:
-        task = bar.add_task(description, total=None, note="")
+            console = Console(stderr=True)
+            with Progress(
+                TextColumn("[bold]{task.description}"),
+                BarColumn(),
+                MofNCompleteColumn(),
+                TextColumn("{task.fields[note]}"),
+                TimeElapsedColumn(),
+                console=console,
+                transient=True,
+            ) as bar:
+                task = bar.add_task(description, total=None, note="")
 
-        def progress(done: int, total: int | None, message: str) -> None:
-            bar.update(task, completed=done, total=total, note=message or "")
+                def progress(done: int, total: int | None, message: str) -> None:
+                    bar.update(task, completed=done, total=total, note=message or "")
 
-        try:
-            yield progress, should_cancel
-        except KeyboardInterrupt:
-            cancelled.set()
-            raise
+                yield progress, should_cancel
+    if cancelled.is_set():
+        raise Cancelled("interrupted")
 
 
 # -- outputs ------------------------------------------------------------------------------
 def check_outputs(outs: Sequence[str]) -> None:
-    """Validate every ``--out`` before doing work (extension and folder)."""
+    """Validate every ``--out`` before doing work: extension, folder, and that it can be written."""
     from ..io import check_output_path
 
     if not outs:
         raise InputError("--out: give at least one output file")
     for o in outs:
         check_output_path(o)
+
+
+# methods that fill a region: an empty result means the region holds no element
+_FILLING = ("pack", "grow", "synth", "ornament")
 
 
 def command_line() -> str:
@@ -241,12 +306,17 @@ def write_outputs(
     params: dict[str, Any] | None = None,
     quiet: bool = False,
 ) -> Arrangement:
-    """Record how the arrangement was made in ``meta`` and write every output atomically.
+    """Record how the arrangement was made in ``meta`` and write every output, all or none.
+
+    Refuses (:class:`InputError`) to write an empty result of a filling method.
 
     Returns the arrangement with its meta filled in.
     """
     from .. import __version__
-    from ..io import save
+    from ..io import save_many
+
+    if method in _FILLING and len(arr) == 0:
+        raise InputError(f"{method}: no element fits (is the region smaller than one element?); nothing written")
 
     meta: dict[str, Any] = {"generator": f"strew {__version__}"}
     if method is not None:
@@ -257,8 +327,8 @@ def write_outputs(
         meta["params"] = params
     meta["command"] = command_line()
     arr = arr.with_meta(**meta)
-    for o in outs:
-        save(arr, o)
-        if not quiet:
+    save_many(arr, outs)
+    if not quiet:
+        for o in outs:
             click.echo(f"wrote {Path(o)}", err=True)
     return arr

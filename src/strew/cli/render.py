@@ -14,14 +14,15 @@ from ._common import check_outputs, out_option, quiet_option
 @quiet_option
 def command(input: str, outs: tuple[str, ...], width: int, quiet: bool) -> None:
     """Convert INPUT (.json or .svg) into every --out (.json, .svg or .png)."""
-    from pathlib import Path
-
-    from ..io import load, save
+    from ..io import load, save_many
 
     check_outputs(outs)
+    if any(o.lower().endswith(".png") for o in outs):
+        from .._limits import check_memory
+
+        check_memory(4.0 * width * width, "--width")  # an RGBA raster, at most square
     arr = load(input)
-    for o in outs:
-        kwargs = {"width": width} if Path(o).suffix.lower() == ".png" else {}
-        save(arr, o, **kwargs)
-        if not quiet:
+    save_many(arr, outs, width=width)  # all or none
+    if not quiet:
+        for o in outs:
             click.echo(f"wrote {o} ({len(arr)} elements)", err=True)

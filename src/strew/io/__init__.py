@@ -8,15 +8,17 @@ from __future__ import annotations
 import json
 import os
 from pathlib import Path
+from collections.abc import Sequence
 from typing import Any
 
 from .._errors import InputError
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Shape
-from ._atomic import atomic_write
+from .._limits import check_file
+from ._atomic import atomic_write, atomic_write_many, probe_writable
 
-__all__ = ["load", "save", "load_shapes", "load_region", "atomic_write", "OUTPUT_FORMATS", "check_output_path"]
+__all__ = ["load", "save", "save_many", "encode", "load_shapes", "load_region", "atomic_write", "OUTPUT_FORMATS", "check_output_path"]
 
 OUTPUT_FORMATS = (".json", ".svg", ".png")
 INPUT_FORMATS = (".json", ".svg")
@@ -29,16 +31,22 @@ def _suffix(path: str | os.PathLike[str], allowed: tuple[str, ...], what: str) -
     return suffix
 
 
-def check_output_path(path: str | os.PathLike[str]) -> str:
-    """Validate an output path before any work is done; returns its extension."""
-    suffix = _suffix(path, OUTPUT_FORMATS, "--out")
+def check_output_path(path: str | os.PathLike[str], what: str = "--out") -> str:
+    """Validate an output path before any work is done; returns its extension.
+
+    Checks the extension, that the folder exists, and that the file can be written there
+    (by creating and removing the temporary file that the write will use).
+    """
+    suffix = _suffix(path, OUTPUT_FORMATS, what)
     parent = Path(path).parent
     if not parent.exists():
-        raise InputError(f"--out {str(path)!r}: folder {str(parent)!r} does not exist")
+        raise InputError(f"{what} {str(path)!r}: folder {str(parent)!r} does not exist")
+    probe_writable(path, what)
     return suffix
 
 
 def _read_text(path: str | os.PathLike[str]) -> str:
+    check_file(path, Path(path).name)  # before reading: size limit (issue 17)
     try:
         return Path(path).read_text(encoding="utf-8")
     except FileNotFoundError:
@@ -47,6 +55,17 @@ def _read_text(path: str | os.PathLike[str]) -> str:
         raise InputError(f"{str(path)!r}: is a folder, expected a file") from None
     except UnicodeDecodeError:
         raise InputError(f"{str(path)!r}: not UTF-8 text") from None
+    except OSError as exc:
+        raise InputError(f"{str(path)!r}: cannot read ({exc.strerror or type(exc).__name__})") from None
+
+
+def _json(text: str, name: str) -> Any:
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise InputError(f"{name}: malformed JSON: {exc.msg} at line {exc.lineno}") from None
+    except RecursionError:
+        raise InputError(f"{name}: malformed JSON: nested too deeply") from None
 
 
 def load(path: str | os.PathLike[str], **kwargs: Any) -> Arrangement:
@@ -68,25 +87,42 @@ def load(path: str | os.PathLike[str], **kwargs: Any) -> Arrangement:
     return read_svg(path, **kwargs)
 
 
+def encode(arr: Arrangement, path: str | os.PathLike[str], **kwargs: Any) -> str | bytes:
+    """The file contents :func:`save` would write to ``path`` (format from the extension)."""
+    suffix = _suffix(path, OUTPUT_FORMATS, "--out")
+    if suffix == ".json":
+        from .document import dumps
+
+        return dumps(arr)
+    if suffix == ".svg":
+        from .svg import to_svg
+
+        return to_svg(arr, **kwargs)
+    from .png import to_png
+
+    return to_png(arr, **kwargs)
+
+
 def save(arr: Arrangement, path: str | os.PathLike[str], **kwargs: Any) -> Path:
     """Write an arrangement as .json, .svg or .png (atomically: no partial file on failure).
 
     ``kwargs`` go to the writer (``to_svg`` or ``to_png``).
     """
-    suffix = check_output_path(path)
-    if suffix == ".json":
-        from .document import dumps
+    check_output_path(path)
+    return atomic_write(path, encode(arr, path, **kwargs))
 
-        data: str | bytes = dumps(arr)
-    elif suffix == ".svg":
-        from .svg import to_svg
 
-        data = to_svg(arr, **kwargs)
-    else:
-        from .png import to_png
+def save_many(arr: Arrangement, paths: Sequence[str | os.PathLike[str]], **png_kwargs: Any) -> list[Path]:
+    """Write an arrangement to several files, all or none.
 
-        data = to_png(arr, **kwargs)
-    return atomic_write(path, data)
+    Every file is encoded first and written to a temporary file; only when all are
+    written are they renamed into place, so a failure leaves none of them behind.
+    ``png_kwargs`` go to the PNG writer.
+    """
+    for p in paths:
+        check_output_path(p)
+    data = [(p, encode(arr, p, **(png_kwargs if Path(p).suffix.lower() == ".png" else {}))) for p in paths]
+    return atomic_write_many(data)
 
 
 def load_shapes(path: str | os.PathLike[str], **kwargs: Any) -> dict[str, Shape]:
@@ -107,11 +143,7 @@ def load_region(path: str | os.PathLike[str], **kwargs: Any) -> Region:
     """Region from a strew document's ``region`` entry or from the closed paths of an SVG."""
     suffix = _suffix(path, INPUT_FORMATS, "region file")
     if suffix == ".json":
-        text = _read_text(path)
-        try:
-            doc = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise InputError(f"{Path(path).name}: malformed JSON: {exc.msg} at line {exc.lineno}") from None
+        doc = _json(_read_text(path), Path(path).name)
         if isinstance(doc, dict) and doc.get("format") == "strew.arrangement":
             arr = load(path)
             if arr.region is not None:

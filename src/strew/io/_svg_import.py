@@ -66,6 +66,7 @@ import numpy as np
 import shapely
 
 from .._errors import InputError
+from .._limits import MAX_COORD, check_file, check_paths, check_text
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
@@ -242,10 +243,13 @@ class _Doc:
             raise InputError(f"tolerance: must be a positive number, got {tolerance!r}")
         self.tolerance = float(tolerance)
         self.name, text = _source_text(source)
+        check_text(text, self.name)
         try:
             self.root = ET.fromstring(text)
         except ET.ParseError as exc:
             raise InputError(f"{self.name}: malformed XML: {exc}") from None
+        # Work grows with the number of objects; refuse documents beyond the limit.
+        check_paths(sum(1 for _ in self.root.iter()), self.name)
         if _local(self.root.tag) != "svg":
             raise InputError(f"{self.name}: not an SVG document (root element is <{self.root.tag}>)")
         self.parent: dict[ET.Element, ET.Element] = {}
@@ -491,7 +495,13 @@ class _Doc:
                     out.append((pts, bool(is_closed), curved))
             cur, curved, closed = [], False, False
 
+        def huge(*points: Any) -> bool:
+            # inf and magnitudes beyond MAX_COORD (NaN points are dropped below, as before)
+            return any(q is not None and (abs(q.x) > MAX_COORD or abs(q.y) > MAX_COORD) for q in points)
+
         for seg in self.segments(el):
+            if huge(seg.start, seg.end, getattr(seg, "control", None), getattr(seg, "control1", None), getattr(seg, "control2", None)):
+                raise InputError(f"{self.name}: {self.where(el)}: coordinate magnitude over {MAX_COORD:.0e}")
             if isinstance(seg, se.Move):
                 finish()
                 if seg.end is not None:
@@ -519,6 +529,9 @@ class _Doc:
             elif isinstance(seg, se.Arc):
                 bound = float(seg.sweep) ** 2 * max(float(seg.rx), float(seg.ry))
             else:
+                cur.append(np.array([[seg.end.x, seg.end.y]], dtype=float))
+                continue
+            if not math.isfinite(bound):  # a NaN control point: a point to drop, not a curve
                 cur.append(np.array([[seg.end.x, seg.end.y]], dtype=float))
                 continue
             n = int(min(_MAX_SEGMENT_POINTS, max(1, math.ceil(math.sqrt(bound / (8 * tol))))))
@@ -670,12 +683,30 @@ def _source_text(source: Any) -> tuple[str, str | bytes]:
     if not isinstance(source, (str, os.PathLike)):
         raise InputError(f"source: expected a path or SVG text, got {type(source).__name__}")
     path = FsPath(source)
+    check_file(path, path.name)
     try:
         return path.name, path.read_bytes()
     except FileNotFoundError:
         raise InputError(f"{str(source)!r}: no such file") from None
     except IsADirectoryError:
         raise InputError(f"{str(source)!r}: is a folder, expected a file") from None
+    except OSError as exc:
+        raise InputError(f"{str(source)!r}: cannot read ({exc.strerror or type(exc).__name__})") from None
+
+
+def _guarded(fn: Any) -> Any:
+    """Turn a ``RecursionError`` (elements nested thousands deep) into :class:`InputError`."""
+    import functools
+
+    @functools.wraps(fn)
+    def wrapper(source: Any, *args: Any, **kwargs: Any) -> Any:
+        try:
+            return fn(source, *args, **kwargs)
+        except RecursionError:
+            name = FsPath(source).name if isinstance(source, os.PathLike) or (isinstance(source, str) and not source.lstrip().startswith("<")) else "<svg text>"
+            raise InputError(f"{name}: elements nested too deeply") from None
+
+    return wrapper
 
 
 # -- geometry: moments and similarity matching ----------------------------------------
@@ -1099,6 +1130,7 @@ def _decode(text: str) -> Any:
 
 
 # -- public functions -------------------------------------------------------------------
+@_guarded
 def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> Arrangement:
     """Read an exemplar (or a strew SVG export) into an arrangement.
 
@@ -1181,6 +1213,7 @@ def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) 
         raise InputError(f"{doc.name}: {exc}") from None
 
 
+@_guarded
 def read_svg_shapes(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> dict[str, Shape]:
     """The distinct shapes of any SVG, one per kind, centred on their bounding boxes.
 
@@ -1227,6 +1260,7 @@ def read_svg_shapes(source: str | bytes | os.PathLike[str], *, tolerance: float 
     return shapes
 
 
+@_guarded
 def read_svg_region(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> Region:
     """A region from the closed paths of an SVG.
 

@@ -139,6 +139,8 @@ def loads(text: str | bytes) -> Arrangement:
         doc = json.loads(text, parse_constant=_reject_constant)
     except json.JSONDecodeError as exc:
         raise InputError(f"malformed JSON: {exc.msg} at line {exc.lineno} column {exc.colno}") from None
+    except RecursionError:
+        raise InputError("malformed JSON: nested too deeply") from None
     return from_document(doc)
 
 
