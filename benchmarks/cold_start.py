@@ -1,0 +1,146 @@
+"""Cold start: the first run of each method on a fresh install against the second run.
+
+    python benchmarks/cold_start.py [--quick] [--json PATH]
+
+A fresh install has an empty numba cache, so the first command of each method compiles
+its kernels. For every case this script starts a new Python process with an empty
+``NUMBA_CACHE_DIR`` and times the work (imports included, as a user sees it: the whole
+command), then starts a second process on the now filled cache and times the same work
+again. Both runs go through the library's CLI entry point in-process (``strew.cli.main``),
+or, for the studio, through a studio session handling a stroke's messages, so process
+start-up is the same for both and cancels out of the ratio.
+
+Printed per case: the first and second times, their ratio, whether the first run meets
+the target of issue 16 (first <= 2 x second + 1 s), and the kernels whose compilation
+took longest (numba's ``numba:compile`` events, inclusive of the kernels they call).
+
+The first run is never hidden behind a warm-up: it is the figure this script exists for.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import textwrap
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _runner import Bench, parse_args  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+EX = ROOT / "examples"
+
+# name -> strew CLI arguments (outputs go to a scratch folder named by {out})
+CLI_CASES: dict[str, list[str]] = {
+    "pack fill-gap": ["pack", str(EX / "shapes/concave.svg"), "--size", "200x160", "--seed", "1", "-o", "{out}/p.json"],
+    "pack naive": ["pack", str(EX / "shapes/concave.svg"), "--size", "200x160", "--method", "naive", "--seed", "1", "-o", "{out}/n.json"],
+    "synth fill": ["synth", str(EX / "exemplars/stones.svg"), "--size", "300x200", "--seed", "1", "-o", "{out}/s.json"],
+    "grow": ["grow", str(EX / "exemplars/scales.svg"), "--count", "300", "--seed", "1", "-o", "{out}/g.json"],
+    "ornament dots": ["ornament", "dots", "--size", "80x80", "--seed", "1", "-o", "{out}/od.json"],
+    "ornament flowers": ["ornament", "flowers", "--size", "80x80", "--seed", "1", "-o", "{out}/of.json"],
+    "ornament spirals": ["ornament", "spirals", "--size", "80x80", "--seed", "1", "-o", "{out}/os.json"],
+    "ornament hierarchy": ["ornament", "hierarchy", "--size", "80x80", "--seed", "1", "-o", "{out}/oh.json"],
+    "run": ["run", str(EX / "program/fig03_two_scales.py"), "-o", "{out}/r.json"],
+}
+QUICK = ("pack fill-gap", "synth fill", "grow", "ornament dots", "studio brush")
+
+# the studio's first stroke: the messages a browser sends, handled by a session
+STUDIO = """
+from strew.studio._session import Session
+s = Session(project, size=(500, 400))
+s.handle({"type": "load_exemplar", "example": "scales.svg"})
+pts = [[60.0 + 6.0 * i, 200.0 + 40.0 * ((i % 20) / 20.0)] for i in range(61)]
+s.handle({"type": "stroke_start", "tool": TOOL, "radius": 60, "points": pts[:1]})
+for p in pts[1:]:
+    s.handle({"type": "stroke_move", "points": [p]})
+s.handle({"type": "stroke_end"})
+"""
+STUDIO_CASES = {"studio brush": "brush", "studio spray": "spray"}
+
+DRIVER = textwrap.dedent(
+    """
+    import json, sys, time
+    t0 = time.perf_counter()
+    import numba.core.event as ev
+    case = json.loads(sys.argv[1])
+    with ev.install_recorder("numba:compile") as rec:
+        if case["kind"] == "cli":
+            from strew.cli import main
+            rc = main(case["argv"] + ["-q"])
+            assert rc == 0, f"exit {rc}"
+        else:
+            project, TOOL = case["project"], case["tool"]
+            exec(case["code"])
+    total = time.perf_counter() - t0
+    # inclusive compile time per kernel (nested compiles are counted in their callers too)
+    starts, per, outer = {}, {}, 0.0
+    depth = 0
+    for t, e in rec.buffer:
+        d = e.data["dispatcher"]
+        name = f"{d.py_func.__module__}.{d.py_func.__qualname__}"
+        key = (name, id(e.data))
+        if e.is_start:
+            starts[key] = (t, depth)
+            depth += 1
+        else:
+            depth -= 1
+            t_start, d0 = starts.pop(key)
+            per[name] = per.get(name, 0.0) + (t - t_start)
+            if d0 == 0:
+                outer += t - t_start
+    print(json.dumps({"total": total, "compile": outer, "kernels": per}))
+    """
+)
+
+
+def run_once(case: dict, cache: str) -> dict:
+    env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+    proc = subprocess.run([sys.executable, "-c", DRIVER, json.dumps(case)], env=env, capture_output=True, text=True, timeout=900)
+    if proc.returncode != 0:
+        raise RuntimeError(f"{case}: {proc.stderr[-2000:]}")
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+def main() -> None:
+    args = parse_args(__doc__.splitlines()[0])
+    bench = Bench(
+        "cold_start",
+        "first run on an empty numba cache vs the second run (new process, filled cache)",
+        baseline="second run; target first <= 2 x second + 1 s",
+        json_path=args.json,
+    )
+    names = list(CLI_CASES) + list(STUDIO_CASES)
+    if args.quick:
+        names = [n for n in names if n in QUICK]
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in names:
+            out = Path(tmp) / name.replace(" ", "_")
+            out.mkdir()
+            if name in CLI_CASES:
+                case = {"kind": "cli", "argv": [a.format(out=out) for a in CLI_CASES[name]]}
+            else:
+                (out / "project").mkdir()
+                case = {"kind": "studio", "project": str(out / "project"), "tool": STUDIO_CASES[name], "code": STUDIO}
+            cache = str(out / "numba-cache")
+            first = run_once(case, cache)
+            second = run_once(case, cache)
+            top = sorted(first["kernels"].items(), key=lambda kv: -kv[1])[:3]
+            bench.row(
+                name,
+                first_s=first["total"],
+                second_s=second["total"],
+                ratio=first["total"] / second["total"],
+                compile_s=first["compile"],
+                compile_2nd_s=second["compile"],
+                kernels=len(first["kernels"]),
+                meets_target=first["total"] <= 2 * second["total"] + 1.0,
+                slowest=", ".join(f"{k.rsplit('.', 1)[-1]} {v:.1f}s" for k, v in top),
+            )
+    bench.finish()
+
+
+if __name__ == "__main__":
+    main()
