@@ -84,9 +84,13 @@ def _dart(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Dart throwing of discs (bounding circles) inside ``box``, not overlapping ``placed``.
 
+    ``tries`` counts darts per 170 x 170 of box area, so that a larger box draws the
+    same process (the same saturation), not a sparser one.
+
     Returns the new centres (m, 2) and radii (m,), m <= count.
     """
     x0, y0, x1, y1 = box
+    tries = int(tries * (x1 - x0) * (y1 - y0) / 170.0**2)
     pts = [] if placed is None else list(placed[0])
     rs = [] if placed is None else list(placed[1])
     n0 = len(pts)
@@ -118,8 +122,10 @@ def _finish(
     box: tuple[float, float, float, float],
     columns: dict[str, Any] | None = None,
     params: dict[str, Any] | None = None,
+    crop: bool = False,
 ) -> Arrangement:
-    """Keep elements wholly inside ``box``, shift the box to the origin, wrap it."""
+    """Keep elements wholly inside ``box`` (with ``crop``: whose centre is in it, a
+    half-open box), shift the box to the origin, wrap it."""
     xy = np.asarray(xy, float).reshape(-1, 2)
     n = len(xy)
     rotation = np.zeros(n) if rotation is None else np.broadcast_to(np.asarray(rotation, float), (n,))
@@ -128,7 +134,10 @@ def _finish(
     x0, y0, x1, y1 = box
     arr = Arrangement(shapes, kind, xy[:, 0] - x0, xy[:, 1] - y0, rotation, scale, columns=columns)
     region = Region.rectangle(x1 - x0, y1 - y0)
-    inside = region.contains_geometry(arr.geometry, tolerance=1e-9)
+    if crop:
+        inside = (arr.x >= 0) & (arr.x < x1 - x0) & (arr.y >= 0) & (arr.y < y1 - y0)
+    else:
+        inside = region.contains_geometry(arr.geometry, tolerance=1e-9)
     arr = arr.select(inside)
     meta = {"exemplar": name, "suite": "fidelity", "params": {k: (float(v) if isinstance(v, (int, float)) else v) for k, v in (params or {}).items()}}
     return arr.replace(region=region, meta=meta)
@@ -137,49 +146,58 @@ def _finish(
 # -- the twelve classes -------------------------------------------------------------------
 
 
-def hex_lattice(rng: Any = None, *, spacing: float = 12.0, nx: int = 12, ny: int = 12, fill: float = 0.86, angle: float = 0.0) -> Arrangement:
+def _lattice_box(p: np.ndarray, box: tuple[float, float, float, float], angle: float) -> tuple[np.ndarray, tuple[float, float, float, float]]:
+    """Turn lattice points by ``angle`` about the box centre."""
+    c = np.array([0.5 * (box[0] + box[2]), 0.5 * (box[1] + box[3])])
+    return _rot(p - c, angle) + c, box
+
+
+def hex_lattice(rng: Any = None, *, spacing: float = 12.0, nx: int = 11, ny: int = 12, fill: float = 0.86, angle: float = 0.0) -> Arrangement:
     """A perfect hexagonal lattice of hexagonal tiles (no noise at all).
 
     ``fill`` is the tile's across-flats width over the lattice spacing; ``angle`` turns
-    the whole lattice (radians).
+    the lattice (radians). With ``angle = 0`` and ``ny`` even the frame is one period of
+    the lattice: copies of the exemplar tile the plane seamlessly. Tiles whose centre is
+    in the frame are kept (a crop), so some poke out of it.
     """
     _rng(rng)  # no randomness: the class is perfect by definition
-    j, i = np.mgrid[0:ny, 0:nx]
-    p = np.c_[(i + 0.5 * (j % 2)).ravel() * spacing, j.ravel() * spacing * np.sqrt(3) / 2]
-    p = _rot(p - p.mean(0), angle)
+    h = spacing * np.sqrt(3) / 2
+    j, i = np.mgrid[-3 : ny + 3, -3 : nx + 3]
+    p = np.c_[(i + 0.5 * (j % 2)).ravel() * spacing, j.ravel() * h]
+    p, box = _lattice_box(p, (-0.25 * spacing, -0.5 * h, (nx - 0.25) * spacing, (ny - 0.5) * h), angle)
     r = fill * spacing / np.sqrt(3)  # circumradius of a hexagon with that across-flats width
     t = np.arange(6) * np.pi / 3 + np.pi / 6
     tile = Shape.polygon(np.c_[r * np.cos(t), r * np.sin(t)], style={"fill": "#d9a441", "stroke": "#6b4c12"})
-    half = 0.5 * spacing * max(nx, ny) * 0.9
-    box = (-half, -half * np.sqrt(3) / 2 * ny / nx, half, half * np.sqrt(3) / 2 * ny / nx)
-    return _finish("hex_lattice", {"hex": tile}, np.zeros(len(p), int), p, angle, box=box, params=dict(spacing=spacing, nx=nx, ny=ny, fill=fill, angle=angle))
+    return _finish("hex_lattice", {"hex": tile}, np.zeros(len(p), int), p, angle, box=box, crop=True, params=dict(spacing=spacing, nx=nx, ny=ny, fill=fill, angle=angle))
 
 
-def rows_noisy(rng: Any = None, *, spacing: float = 11.0, nx: int = 14, ny: int = 12, noise: float = 0.05, tile: float = 0.72, row_angle: float = 0.0) -> Arrangement:
+def rows_noisy(rng: Any = None, *, spacing: float = 11.0, nx: int = 12, ny: int = 11, noise: float = 0.05, tile: float = 0.72, row_angle: float = 0.0) -> Arrangement:
     """Near-regular rows of square tiles with Gaussian positional noise (``noise`` x spacing).
 
-    The noise is clipped at two standard deviations so tiles never touch.
+    The noise is clipped at two standard deviations so tiles never touch. The frame is
+    one period of the lattice (a crop by centres).
     """
     g = _rng(rng)
-    j, i = np.mgrid[0:ny, 0:nx]
+    j, i = np.mgrid[-3 : ny + 3, -3 : nx + 3]
     p = np.c_[i.ravel() * spacing, j.ravel() * spacing].astype(float)
     p += np.clip(g.normal(0.0, noise * spacing, p.shape), -2 * noise * spacing, 2 * noise * spacing)
-    p = _rot(p - p.mean(0), row_angle)
+    p, box = _lattice_box(p, (-0.5 * spacing, -0.5 * spacing, (nx - 0.5) * spacing, (ny - 0.5) * spacing), row_angle)
     sq = Shape.rectangle(tile * spacing, tile * spacing, style={"fill": "#4f7fa8", "stroke": "#1d3c57"})
-    hx, hy = 0.5 * spacing * (nx - 0.6), 0.5 * spacing * (ny - 0.6)
-    return _finish("rows_noisy", {"tile": sq}, np.zeros(len(p), int), p, row_angle, box=(-hx, -hy, hx, hy), params=dict(spacing=spacing, nx=nx, ny=ny, noise=noise, tile=tile, row_angle=row_angle))
+    return _finish("rows_noisy", {"tile": sq}, np.zeros(len(p), int), p, row_angle, box=box, crop=True, params=dict(spacing=spacing, nx=nx, ny=ny, noise=noise, tile=tile, row_angle=row_angle))
 
 
-def bricks(rng: Any = None, *, length: float = 22.0, height: float = 9.0, mortar: float = 1.6, rows: int = 14, per_row: int = 8, noise: float = 0.15) -> Arrangement:
+def bricks(rng: Any = None, *, length: float = 22.0, height: float = 9.0, mortar: float = 1.6, rows: int = 16, per_row: int = 8, noise: float = 0.15) -> Arrangement:
     """Running-bond bricks, alternating red and ochre along each row.
 
     Each course is offset by half a brick; ``noise`` (in mortar widths) shifts each brick.
+    The colours repeat every four courses; with ``rows`` a multiple of 4 and ``per_row``
+    even the frame is one period (a crop by centres).
     """
     g = _rng(rng)
     pts, kind = [], []
-    for r in range(rows):
+    for r in range(-2, rows + 2):
         off = 0.5 * (length + mortar) * (r % 2)
-        for c in range(-1, per_row + 1):
+        for c in range(-2, per_row + 2):
             pts.append((c * (length + mortar) + off, r * (height + mortar)))
             kind.append((c + r // 2) % 2)
     p = np.asarray(pts, float)
@@ -188,32 +206,32 @@ def bricks(rng: Any = None, *, length: float = 22.0, height: float = 9.0, mortar
         "brick_red": Shape.rectangle(length, height, style={"fill": "#a8432d", "stroke": "#4a1c12"}),
         "brick_ochre": Shape.rectangle(length, height, style={"fill": "#d8a85a", "stroke": "#6b4c12"}),
     }
-    w = per_row * (length + mortar)
-    box = (-0.5 * length, -0.5 * height - 0.5 * mortar, w - 0.5 * length, rows * (height + mortar) - 0.5 * height - 0.5 * mortar)
-    return _finish("bricks", shapes, kind, p, box=box, params=dict(length=length, height=height, mortar=mortar, rows=rows, per_row=per_row, noise=noise))
+    q, hh = length + mortar, height + mortar
+    box = (-0.25 * q, -0.5 * hh, (per_row - 0.25) * q, (rows - 0.5) * hh)
+    return _finish("bricks", shapes, kind, p, box=box, crop=True, params=dict(length=length, height=height, mortar=mortar, rows=rows, per_row=per_row, noise=noise))
 
 
-def scales(rng: Any = None, *, width: float = 12.0, length: float = 10.0, gap: float = 1.2, rows: int = 12, per_row: int = 11, row_angle: float = 0.0, noise: float = 0.03) -> Arrangement:
+def scales(rng: Any = None, *, width: float = 12.0, length: float = 10.0, gap: float = 1.2, rows: int = 10, per_row: int = 10, row_angle: float = 0.0, noise: float = 0.03) -> Arrangement:
     """Rows of oriented fish scales; every scale points along the row normal.
 
     Alternate rows are offset by half a scale, as on a fish; ``row_angle`` turns the rows
-    and the scales with them.
+    and the scales with them. The frame is one period for even ``rows`` (a crop by
+    centres).
     """
     g = _rng(rng)
     pts = []
-    for r in range(rows):
+    for r in range(-3, rows + 3):
         off = 0.5 * (width + gap) * (r % 2)
-        for c in range(per_row):
+        for c in range(-3, per_row + 3):
             pts.append((c * (width + gap) + off, r * (length + gap)))
     p = np.asarray(pts, float)
-    p += np.clip(g.normal(0.0, noise * width, p.shape), -0.4 * gap, 0.4 * gap)
-    p = _rot(p - p.mean(0), row_angle)
+    p += np.clip(g.normal(0.0, noise * width, p.shape), -0.3 * gap, 0.3 * gap)
+    q, hh = width + gap, length + gap
+    p, box = _lattice_box(p, (-0.25 * q, -0.5 * hh, (per_row - 0.25) * q, (rows - 0.5) * hh), row_angle)
     # the scale's local +x points across the rows (down the body): rotation = row_angle + 90 deg
-    rot = np.full(len(p), row_angle + np.pi / 2) + g.normal(0.0, 0.03, len(p))
+    rot = np.full(len(p), row_angle + np.pi / 2) + np.clip(g.normal(0.0, 0.02, len(p)), -0.04, 0.04)
     shape = Shape.polygon(_scale_outline(width, length), style={"fill": "#3f8f7a", "stroke": "#16372f"})
-    hx = 0.5 * (per_row - 0.5) * (width + gap)
-    hy = 0.5 * (rows - 0.4) * (length + gap)
-    return _finish("scales", {"scale": shape}, np.zeros(len(p), int), p, rot, box=(-hx, -hy, hx, hy), params=dict(width=width, length=length, gap=gap, rows=rows, per_row=per_row, row_angle=row_angle, noise=noise))
+    return _finish("scales", {"scale": shape}, np.zeros(len(p), int), p, rot, box=box, crop=True, params=dict(width=width, length=length, gap=gap, rows=rows, per_row=per_row, row_angle=row_angle, noise=noise))
 
 
 def stones(rng: Any = None, *, size: float = 170.0, radius: float = 6.5, spread: float = 0.2, gap: float = 1.2, count: int = 160) -> Arrangement:
@@ -284,15 +302,16 @@ def three_sizes(rng: Any = None, *, size: float = 170.0, small: float = 2.6, rat
     return _finish("three_sizes", shapes, np.concatenate(k_all), p, g.uniform(0, 2 * np.pi, len(p)), np.concatenate(s_all), box=(0, 0, size, size), params=dict(size=size, small=small, ratios=list(ratios), counts=list(counts), gap=gap))
 
 
-def rings(rng: Any = None, *, radius: float = 15.0, tiles: int = 10, hub: float = 5.0, spacing: float = 40.0, nx: int = 4, ny: int = 4, noise: float = 0.02) -> Arrangement:
+def rings(rng: Any = None, *, radius: float = 15.0, tiles: int = 10, hub: float = 5.0, spacing: float = 40.0, nx: int = 4, ny: int = 4, noise: float = 0.01) -> Arrangement:
     """Rosettes: rings of wedge tiles around round hubs, the hubs on a hexagonal lattice."""
     g = _rng(rng)
     half = np.pi / tiles * 0.78
     wedge = Shape.polygon(_wedge(radius - 3.0, radius + 3.0, half), style={"fill": "#2e8b87", "stroke": "#0f3634"})
     pts, kind, rot = [], [], []
-    for j in range(ny):
-        for i in range(nx):
-            c = np.array([i * spacing + 0.5 * spacing * (j % 2), j * spacing * np.sqrt(3) / 2])
+    hh = spacing * np.sqrt(3) / 2
+    for j in range(-1, ny + 1):
+        for i in range(-1, nx + 1):
+            c = np.array([i * spacing + 0.5 * spacing * (j % 2), j * hh])
             c = c + g.normal(0, noise * spacing, 2)
             pts.append(c)
             kind.append(1)
@@ -303,10 +322,10 @@ def rings(rng: Any = None, *, radius: float = 15.0, tiles: int = 10, hub: float 
             kind += [0] * tiles
             rot += list(t - np.pi / 2)  # local +y (the wide side) points out of the ring
     p = np.asarray(pts, float)
-    m = radius + 10.0  # outer tile corners plus the hub noise: every ring whole
-    box = (-m, -m, (nx - 0.5) * spacing + m, (ny - 1) * spacing * np.sqrt(3) / 2 + m)
+    # one period of the hub lattice for even ny (a crop by centres: rings at the frame are cut)
+    box = (-0.25 * spacing, -0.5 * hh, (nx - 0.25) * spacing, (ny - 0.5) * hh)
     shapes = {"tile": wedge, "hub": Shape.circle(hub, style={"fill": "#e0a030", "stroke": "#6b4c12"})}
-    return _finish("rings", shapes, kind, p, rot, box=box, params=dict(radius=radius, tiles=tiles, hub=hub, spacing=spacing, nx=nx, ny=ny, noise=noise))
+    return _finish("rings", shapes, kind, p, rot, box=box, crop=True, params=dict(radius=radius, tiles=tiles, hub=hub, spacing=spacing, nx=nx, ny=ny, noise=noise))
 
 
 def stripes(rng: Any = None, *, size: float = 170.0, band: float = 28.0, angle: float = 0.35, dot: float = 3.2, bar: tuple[float, float] = (9.0, 3.0), count: int = 220, gap: float = 2.2) -> Arrangement:
@@ -351,7 +370,7 @@ def sticks(rng: Any = None, *, size: float = 170.0, length: float = 24.0, width:
     placed: list[shapely.Geometry] = []
     pts, rots = [], []
     m = 0.5 * length
-    for _ in range(tries):
+    for _ in range(int(tries * size * size / 170.0**2)):  # tries per 170 x 170, as _dart
         if len(pts) >= count:
             break
         p = g.uniform(m * 0.2, size - m * 0.2, 2)
