@@ -60,6 +60,8 @@ class GrowParams:
     #: rotation mode: weight of the neighbours' frame, per mean edge length (see
     #: :func:`strew.grow.match_references`); 0 is the paper's Eq. 4 alone
     frame_weight: float = 1.0
+    #: rotation mode: the largest turn of an element's frame from its neighbours' (§5.3)
+    max_turn: float = math.pi / 6
 
 
 def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
@@ -484,6 +486,7 @@ class _Grower:
             weights=self.p.weights,
             frame_theta=frame_theta,
             frame_weight=frame_w,
+            max_turn=self.p.max_turn,
         )
         best = float(err.min()) if len(err) else math.inf
         if not math.isfinite(best):
@@ -695,9 +698,14 @@ class _Grower:
     # -- relaxation (§5.5) ----------------------------------------------------------------
     def ring_target(self, i: int, j: int) -> tuple[float, float]:
         t = self.target[i]
-        if t is not None and j in t and len(t) == len(self.adj[i]) and len(t) == self.ring_n.get(i, -1):
+        if t is not None and j in t:
             return t[j]
-        # §5.5: seeds, and elements that lost or gained an edge, use their current shape
+        # §5.5: seeds, and elements that lost or gained an edge, use their current shape.
+        # We apply that per edge: an element keeps the reference offsets of the edges it
+        # has from its ring and takes the current offset for the others only. (Applied
+        # per element, hardly any element qualifies: one ring slot merged or dropped by
+        # the heuristics of Fig. 6, or one edge added later by a neighbour, and Eq. 5
+        # had no effect at all.)
         xj, xi = self.xy[j], self.xy[i]
         return (xj[0] - xi[0], xj[1] - xi[1])
 

@@ -67,7 +67,7 @@ def order_target(rel: np.ndarray) -> np.ndarray:
 
 
 @numba.njit(cache=True)
-def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub, mode, flow_theta, frame_theta, frame_w, w1, w2, w3, out_err, out_shift, out_theta):  # pragma: no cover - compiled
+def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub, mode, flow_theta, frame_theta, frame_w, max_turn, w1, w2, w3, out_err, out_shift, out_theta):  # pragma: no cover - compiled
     R = ref_rel.shape[0]
     T = t_rel.shape[0]
     for r in range(R):
@@ -87,16 +87,39 @@ def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub,
         best_th = 0.0
         for k in range(nr):
             th = 0.0
-            if mode == 1 and T > 0:
-                # Eq. 4: the rotation minimising the positional difference (shape matching)
+            if mode == 1 and T == 1 and frame_w > 0.0:
+                th = frame_theta  # one neighbour fixes no rotation: keep its frame
+            elif mode == 1 and T > 0:
+                # Eq. 4: the rotation minimising the positional difference (shape
+                # matching [MHTG05]). With two or more neighbours both point sets are
+                # centred first, as in [MHTG05]: the seed's own position is a guess
+                # (an extra seed of Fig. 6e sits on a bisector), and a rotation about it
+                # would turn the element to absorb that error.
+                cx = 0.0
+                cy = 0.0
+                qx = 0.0
+                qy = 0.0
+                if T >= 2:
+                    for i in range(T):
+                        j = (k + i) % nr
+                        cx += t_rel[i, 0]
+                        cy += t_rel[i, 1]
+                        qx += ref_rel[r, j, 0]
+                        qy += ref_rel[r, j, 1]
+                    cx /= T
+                    cy /= T
+                    qx /= T
+                    qy /= T
                 a = 0.0
                 b = 0.0
                 for i in range(T):
                     j = (k + i) % nr
-                    px = ref_rel[r, j, 0]
-                    py = ref_rel[r, j, 1]
-                    a += px * t_rel[i, 0] + py * t_rel[i, 1]
-                    b += px * t_rel[i, 1] - py * t_rel[i, 0]
+                    px = ref_rel[r, j, 0] - qx
+                    py = ref_rel[r, j, 1] - qy
+                    tx = t_rel[i, 0] - cx
+                    ty = t_rel[i, 1] - cy
+                    a += px * tx + py * ty
+                    b += px * ty - py * tx
                 th = np.arctan2(b, a)
             elif mode == 1:
                 th = frame_theta  # no target neighbour: the neighbours' frame, if any
@@ -116,9 +139,26 @@ def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub,
                     e += w2
             if mode == 1 and frame_w > 0.0:
                 # departure from Eq. 4 (see match_references): the turn away from the
-                # frame of the neighbouring elements
+                # frame of the neighbouring elements costs, and is held within max_turn
                 d = th - frame_theta
                 d = d - 2.0 * np.pi * np.floor(d / (2.0 * np.pi) + 0.5)
+                if d > max_turn:
+                    d = max_turn
+                elif d < -max_turn:
+                    d = -max_turn
+                th = frame_theta + d
+                e = 0.0
+                c = np.cos(th)
+                s = np.sin(th)
+                for i in range(T):
+                    j = (k + i) % nr
+                    px = c * ref_rel[r, j, 0] - s * ref_rel[r, j, 1]
+                    py = s * ref_rel[r, j, 0] + c * ref_rel[r, j, 1]
+                    dx = t_rel[i, 0] - px
+                    dy = t_rel[i, 1] - py
+                    e += w1 * np.sqrt(dx * dx + dy * dy)
+                    if t_kind[i] != ref_kind[r, j]:
+                        e += w2
                 e += frame_w * max(T, 1) * abs(d)
             if e < best:
                 best = e
@@ -141,6 +181,7 @@ def match_references(
     weights: tuple[float, float, float] = (W1, W2, W3),
     frame_theta: float = 0.0,
     frame_weight: float = 0.0,
+    max_turn: float = np.pi,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """ERROR(w(e_tar), w(e_ref)) of Eq. 3 for every reference element.
 
@@ -168,6 +209,9 @@ def match_references(
         near-regular rings turn each element a little, so the frame drifts and patches
         grow at different angles. With a weight of about the mean edge length, a turn
         costs what displacing every neighbour by that arc would. 0 gives Eq. 4.
+    max_turn : float
+        With ``frame_weight > 0``: the largest turn away from ``frame_theta`` (radians);
+        a fit beyond it is evaluated at the limit.
 
     Returns
     -------
@@ -197,6 +241,7 @@ def match_references(
         float(flow_theta),
         float(frame_theta),
         float(frame_weight),
+        float(max_turn),
         float(weights[0]),
         float(weights[1]),
         float(weights[2]),
