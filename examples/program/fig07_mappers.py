@@ -5,24 +5,26 @@ staggered rows, then a puzzle tab matched on every edge with match_points.
 (middle) Rosettes: four construction lines matched on each face centroid of a uniform
 partition, then overlapping circles mapped on the resulting vertices.
 (bottom) Random cells shrunk, with a stroke picked from a small set on each edge.
+Lengths are for the gallery's 800-unit square and scale with ``--size`` (``run_size``).
 Run: strew run fig07_mappers.py --name rosettes --out rosettes.svg
 """
 
 from pathlib import Path
 
 from strew.program import *
-from strew.program import pi
+from strew.program import pi, run_size
 
 here = Path(__file__).parent
-size = 2000
+size = run_size(2000)
+k = size / 800  # the lengths below are for an 800-unit square
 tab = import_svg(here / "puzzle.svg")
-cross = scale(import_svg(here / "cross.svg"), 2.0)
-petal = scale(import_svg(here / "petal.svg", tolerance=2.0), 1.6)
+cross = scale(import_svg(here / "cross.svg"), 2.0 * k)
+petal = scale(import_svg(here / "petal.svg", tolerance=2.0), 1.6 * k)
 wiggles = import_svg(here / "wiggles.svg")
 
 # -- puzzle bricks ---------------------------------------------------------------------
-rows = set_face_labels(set_edge_labels(stripes_properties(0, 100), "row"), "odd", "even")
-cols = set_edge_labels(stripes_properties(pi / 2, 100), "A", "B")
+rows = set_face_labels(set_edge_labels(stripes_properties(0, 100 * k), "row"), "odd", "even")
+cols = set_edge_labels(stripes_properties(pi / 2, 100 * k), "A", "B")
 bricks = grid_partition(rows, cols, CROP_ADD_BOUNDARY)
 
 
@@ -40,14 +42,18 @@ def puzzle_edge(edge):
     if is_boundary(edge):
         return to_curve(edge)
     src, dst = location(source_vertex(edge)), location(target_vertex(edge))
-    t = tab if random(edge, 0, 1, 0) < 0.5 else rotate(tab, pi)
-    return match_points(t, point_labeled(t, "start"), point_labeled(t, "end"), src, dst)
+    # the tab points to either side at random. MatchPoints applies a rotation (Table 3:
+    # "rigid"), so rotating the tab beforehand would be undone; matching its start to
+    # the edge's target instead turns it over to the other side.
+    if random(edge, 0, 1, 0) < 0.5:
+        src, dst = dst, src
+    return match_points(tab, point_labeled(tab, "start"), point_labeled(tab, "end"), src, dst)
 
 
 puzzle = map_to_edges(puzzle_edge, map_to_edges(keep_staggered, bricks))
 
 # -- rosettes ----------------------------------------------------------------------------
-cells = uniform_partition(irregular_properties(1 / 110**2), KEEP_INSIDE)
+cells = uniform_partition(irregular_properties(1 / (110 * k) ** 2), KEEP_INSIDE)
 
 
 def construction_lines(face):
@@ -62,7 +68,7 @@ def flower(vertex):
 rosettes = map_to_vertices(flower, map_to_faces(construction_lines, cells))
 
 # -- shrunk random cells with strokes -----------------------------------------------------
-random_cells = random_partition(irregular_properties(1 / 160**2), KEEP_INSIDE)
+random_cells = random_partition(irregular_properties(1 / (160 * k) ** 2), KEEP_INSIDE)
 shrunk = map_to_faces(lambda face: scale(contour(face), 0.8), random_cells)
 
 

@@ -52,7 +52,12 @@ def test_stripes_partition_counts_and_cycled_labels():
         assert np.isclose(h, 20) or np.isclose(h, 10)
     assert {e.labels for e in pm.edges if not is_boundary(e) or bbox_height(e) == 0} >= {frozenset({"e1"}), frozenset({"e2"})}
     # plain CROP: only the lines, no bounded face
-    assert stripes_partition(p)(shapely.box(0, 0, 300, 300)).n_faces == 1
+    assert stripes_partition(p, border=CROP)(shapely.box(0, 0, 300, 300)).n_faces == 1
+    # issue 21: by default, face labels close the stripes with the outline (Fig. 5a) ...
+    default = stripes_partition(p)(shapely.box(0, 0, 300, 300))
+    assert len(default.bounded_faces) == 20 and all(f.labels for f in default.bounded_faces)
+    # ... and stripes without face labels stay open lines (a hatching)
+    assert stripes_partition(stripes_properties(0, 20))(shapely.box(0, 0, 300, 300)).n_faces == 1
     with pytest.raises(strew.InputError, match="stripes faces are infinite"):
         stripes_partition(p, border=KEEP_INSIDE)
 

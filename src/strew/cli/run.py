@@ -26,6 +26,8 @@ def command(script: str, size: float, name: str, seed: int, outs: tuple[str, ...
     t0 = time.perf_counter()
     pm, arr = run_script(script, size=size, seed=seed, name=name)
     dt = time.perf_counter() - t0
+    if len(arr) == 0:
+        click.echo(f"strew: warning: {name!r} of {script} is empty on [0, {size:g}]^2: its lengths may not fit this --size", err=True)
     write_outputs(arr, outs, method="program", seed=seed, params={"script": script, "size": size, "name": name}, quiet=quiet)
     echo(
         f"{script}: {pm.n_vertices} vertices, {pm.n_edges} edges, {pm.n_faces - 1} bounded faces in {dt:.2f} s",

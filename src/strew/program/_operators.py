@@ -413,15 +413,23 @@ def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float
     return lines
 
 
-def stripes_partition(p: StripesProperties, *, border: Border = CROP) -> ArrangementFunction:
+def stripes_partition(p: StripesProperties, *, border: Border | None = None) -> ArrangementFunction:
     """StripesPartition(Properties p): creates a stripes partition.
 
-    Stripes partitions are always cropped, as their faces are infinite (§5.2). With the
-    keyword ``border=CROP_ADD_BOUNDARY`` (an addition to the paper's signature) the
-    region's outline is added so that the stripes become faces that carry face labels.
+    Stripes partitions are always cropped, as their faces are infinite (§5.2). Cropped
+    lines alone close no face, so the keyword ``border`` (an addition to the paper's
+    signature) says whether the region's outline is added:
+
+    - default (None): ``CROP_ADD_BOUNDARY`` when ``p`` carries face labels (the stripes
+      become faces that carry them, as in the paper's Fig. 5a), else ``CROP`` (open
+      lines, e.g. a hatching to merge with other arrangements);
+    - ``CROP``: open lines only; face labels then label no face, since there is none;
+    - ``CROP_ADD_BOUNDARY``: always closed by the outline.
     """
     if not isinstance(p, StripesProperties):
         raise InputError(f"stripes_partition: expected stripes properties, got {type(p).__name__}")
+    if border is None:
+        border = CROP_ADD_BOUNDARY if p.face_labels else CROP
     b = _check_border(border, "stripes_partition")
     if b not in (Border.CROP, Border.CROP_ADD_BOUNDARY):
         raise InputError("stripes_partition: stripes faces are infinite; border must be CROP or CROP_ADD_BOUNDARY")

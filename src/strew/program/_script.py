@@ -33,9 +33,10 @@ from ._curves import Curve, Curves
 from ._operators import ArrangementFunction, MapperError, as_arrangement
 from ._planar_map import PlanarMap
 
-__all__ = ["import_svg", "export_svg", "to_strew", "run_script", "evaluate", "ScriptError"]
+__all__ = ["import_svg", "export_svg", "to_strew", "run_script", "run_size", "evaluate", "ScriptError"]
 
 _IN_RUN: ContextVar[bool] = ContextVar("strew_program_in_run", default=False)
+_RUN_SIZE: ContextVar[float | None] = ContextVar("strew_program_run_size", default=None)
 _AUTO_ID = re.compile(r"^(path|rect|circle|ellipse|polyline|polygon|line|g|layer|svg|use|text|tspan|shape)[-_]?\d+$")
 _INKSCAPE_LABEL = "{http://www.inkscape.org/namespaces/inkscape}label"
 _SVG_CACHE: dict[tuple[str, int, int], Curves] = {}
@@ -269,6 +270,23 @@ def export_svg(a: Any, size: float, filename: str | os.PathLike[str] | None = No
 
 
 # -- running scripts ------------------------------------------------------------------------
+def run_size(default: float) -> float:
+    """The side of the square a script is evaluated on: ``--size`` under ``strew run``
+    (and :func:`run_script`), else ``default`` (e.g. when run as ``python SCRIPT.py``).
+
+    Not one of the paper's operators: a script whose lengths are multiples of
+    ``run_size(2000) / 2000`` draws the same picture at every size, instead of a fixed
+    number of units that a small square cannot hold.
+
+    Examples
+    --------
+    >>> run_size(2000)
+    2000.0
+    """
+    n = _RUN_SIZE.get()
+    return float(default) if n is None else n
+
+
 def _script_line(exc: BaseException, script: Path) -> int | None:
     line = None
     tb = exc.__traceback__
@@ -314,35 +332,44 @@ def run_script(script: str | os.PathLike[str], *, size: float = 2000, seed: int 
     if not path.is_file():
         raise ScriptError(f"{str(script)!r}: no such script")
     n, region = _square(size)
-    with script_context(seed), _script_environment(path):
-        try:
-            glb = runpy.run_path(str(path), run_name="__main__")
-        except SyntaxError as exc:
-            raise ScriptError(f"{path.name} line {exc.lineno}: SyntaxError: {exc.msg}") from None
-        except MapperError:
-            raise
-        except SystemExit as exc:
-            if exc.code not in (None, 0):
-                raise ScriptError(f"{path.name}: the script exited with status {exc.code}") from None
-            raise ScriptError(f"{path.name}: the script exited before defining {name!r}") from None
-        except Exception as exc:
-            line = _script_line(exc, path)
-            where = f"{path.name} line {line}" if line else path.name
-            msg = str(exc).replace("\n", " ")
-            raise ScriptError(f"{where}: {type(exc).__name__}: {msg}") from exc
-        if name not in glb:
-            raise ScriptError(f"{path.name}: no module-level {name!r}; assign the final arrangement to it, e.g. `{name} = map_to_faces(mapper, partition)`")
-        value = glb[name]
-        if not isinstance(value, (ArrangementFunction, Curves)):
-            raise ScriptError(f"{path.name}: {name!r} is {type(value).__name__}, expected an arrangement (the result of a partition, mapping or merging operator)")
-        try:
-            pm = as_arrangement(value, name)(region, seed=seed)
-            _ = pm.n_faces  # induce inside the error handling
-        except MapperError:
-            raise
-        except InputError as exc:
-            line = _script_line(exc, path)
-            where = f"{path.name} line {line}" if line else path.name
-            raise ScriptError(f"{where}: {exc}") from exc
+    size_token = _RUN_SIZE.set(n)
+    try:
+        with script_context(seed), _script_environment(path):
+            return _run(path, name, region, seed)
+    finally:
+        _RUN_SIZE.reset(size_token)
+
+
+def _run(path: Path, name: str, region: Region, seed: int) -> tuple[PlanarMap, Arrangement]:
+    """Body of :func:`run_script`, inside the script's context and environment."""
+    try:
+        glb = runpy.run_path(str(path), run_name="__main__")
+    except SyntaxError as exc:
+        raise ScriptError(f"{path.name} line {exc.lineno}: SyntaxError: {exc.msg}") from None
+    except MapperError:
+        raise
+    except SystemExit as exc:
+        if exc.code not in (None, 0):
+            raise ScriptError(f"{path.name}: the script exited with status {exc.code}") from None
+        raise ScriptError(f"{path.name}: the script exited before defining {name!r}") from None
+    except Exception as exc:
+        line = _script_line(exc, path)
+        where = f"{path.name} line {line}" if line else path.name
+        msg = str(exc).replace("\n", " ")
+        raise ScriptError(f"{where}: {type(exc).__name__}: {msg}") from exc
+    if name not in glb:
+        raise ScriptError(f"{path.name}: no module-level {name!r}; assign the final arrangement to it, e.g. `{name} = map_to_faces(mapper, partition)`")
+    value = glb[name]
+    if not isinstance(value, (ArrangementFunction, Curves)):
+        raise ScriptError(f"{path.name}: {name!r} is {type(value).__name__}, expected an arrangement (the result of a partition, mapping or merging operator)")
+    try:
+        pm = as_arrangement(value, name)(region, seed=seed)
+        _ = pm.n_faces  # induce inside the error handling
+    except MapperError:
+        raise
+    except InputError as exc:
+        line = _script_line(exc, path)
+        where = f"{path.name} line {line}" if line else path.name
+        raise ScriptError(f"{where}: {exc}") from exc
     return pm, to_strew(pm, region)
 
