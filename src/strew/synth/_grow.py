@@ -80,7 +80,8 @@ def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visibl
     not yield to them.
 
     Extension of §5.1 for exemplars with elements of several sizes (§7 names this a
-    limitation): a horizon element yields to a larger new element. Copies from
+    limitation): a horizon element yields to a new element of a larger size class
+    (``Prepared.size_class``: at least twice its bounding radius). Copies from
     neighbouring seeds disagree a little, and a small element of one copy fits the gap
     that a large element of the next copy needs; without this, every such disagreement
     costs a large element, and over a fill the large kinds thin out while small ones
@@ -105,7 +106,8 @@ def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visibl
     ext = float(np.ptp(opos, axis=0).max())
     cell = max(prep.factor * (float(qr.max()) + float(rr.max())), float(prep.min_dist.max()), ext / 2000.0, 1e-9)
     hard, _soft = K.conflict_split(
-        np.ascontiguousarray(pts, dtype=float), qr.astype(float), prep.skind[src], np.ascontiguousarray(opos), rr, prep.skind[osrc], oyield,
+        np.ascontiguousarray(pts, dtype=float), qr.astype(float), prep.skind[src], prep.size_class[src],
+        np.ascontiguousarray(opos), rr, prep.skind[osrc], prep.size_class[osrc], oyield,
         prep.min_dist, prep.factor, cell,
     )
     return hard
@@ -113,7 +115,7 @@ def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visibl
 
 def _evict(state: SynthState, new: np.ndarray, *, voids: bool) -> None:
     """Remove the elements of O that intersect the new visible elements ``new``: void
-    elements (§5.6 extension, see ``grow``) and smaller horizon elements that yielded
+    elements (§5.6 extension, see ``grow``) and horizon elements of smaller size classes that yielded
     to them (see :func:`_split_conflicts`)."""
     prep = state.prep
     first = int(new.min())
@@ -210,7 +212,7 @@ def grow(
         sizes = np.where(cands >= 0, np.diff(prep.nb_ptr)[np.maximum(cands, 0)], 0).ravel()
         out_ptr = np.zeros(len(sizes) + 1, np.int64)
         np.cumsum(sizes, out=out_ptr[1:])
-        count, ex, ppos = K.generate_proposals(pos[seeds], q_ptr, q_off, q_kind, q_d, rbar[seeds], cands, prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind_cost, out_ptr)
+        count, ex, ppos, pslot = K.generate_proposals(pos[seeds], q_ptr, q_off, q_kind, q_d, rbar[seeds], cands, prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind_cost, out_ptr, prep.parent)
         valid = ex >= 0
         exv = np.maximum(ex, 0)
         pr = prep.r[exv]
@@ -218,6 +220,11 @@ def grow(
         if ok.any():
             # candidates must overlap a free-space point (Algorithm 1) ...
             ok[ok] = K.overlaps_any(np.ascontiguousarray(ppos[ok]), pr[ok], np.ascontiguousarray(fpos), np.ascontiguousarray(fc, dtype=float))
+        # a parent beyond the region's edge does not hold its children back
+        parent_free = np.zeros(len(ex), bool)
+        ref = np.unique(pslot[ok & (pslot >= 0)])
+        if len(ref):
+            parent_free[ref[~state.in_domain(ppos[ref])]] = True
         ok[ok] = state.in_domain(ppos[ok])
         slack = 2.0 * (2.0 * prep.r[src[seeds]]) ** 2
         seed_pos = pos[seeds].copy()
@@ -242,7 +249,7 @@ def grow(
                 okp[sub[hard]] = False
             if not okp.any():
                 continue
-            placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, prep.factor, cell)
+            placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, prep.factor, cell, pslot, parent_free, prep.size_class[exv])
             seed_ok |= s_ok
             new_idx = np.flatnonzero(placed)
             if max_elements is not None and state.n + len(new_idx) > max_elements:

@@ -268,7 +268,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
 
 
 @numba.njit(cache=True, nogil=True)
-def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr):
+def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr, parent):
     """Right-partial pairs of each (seed, candidate), mapped to output space (§5.1).
 
     The new position of a copied element is ``p_s + m_{p_s}(p_{e'} - p_c)``.
@@ -282,6 +282,9 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
         the exemplar index of each neighbour).
     out_ptr : (ns * k + 1,) int
         Upper-bound offsets (cumulative neighbourhood sizes of the candidates).
+    parent : (n_ex,) int
+        The larger element each exemplar element leans on (-1 for none; see
+        ``Prepared.parent``).
 
     Returns
     -------
@@ -291,13 +294,20 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
         Exemplar element to copy.
     pos : (P, 2) float
         Its output position.
+    pslot : (P,) int
+        The proposal of the element's parent, copied in the same copy (it must be
+        placed first); -1 when the parent is the candidate itself, paired with an
+        output element, or there is none; -2 when the parent lies outside ``n(c)``
+        (the element would be copied without it: an orphan).
     """
     ns, k = cands.shape
     total = out_ptr[-1]
     ex = np.full(total, -1, np.int64)
     pos = np.zeros((total, 2))
+    pslot = np.full(total, -1, np.int64)
     count = np.zeros(ns * k, np.int64)
     pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
+    slot = np.empty(elen.shape[0], np.int64)
     for i in range(ns):
         a, b = q_ptr[i], q_ptr[i + 1]
         px, py = seed_pos[i, 0], seed_pos[i, 1]
@@ -311,18 +321,32 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
             n = 0
             for t in range(eb - ea):
                 if used[t]:
+                    slot[t] = -1
                     continue
                 mx, my = map_offset(px, py, e_off[ea + t, 0], e_off[ea + t, 1])
                 ex[w + n] = e_idx[ea + t]
                 pos[w + n, 0] = px + mx
                 pos[w + n, 1] = py + my
+                slot[t] = w + n
                 n += 1
+            for t in range(eb - ea):
+                if used[t]:
+                    continue
+                par = parent[e_idx[ea + t]]
+                if par < 0 or par == c:
+                    continue
+                ps = -2
+                for u in range(eb - ea):
+                    if e_idx[ea + u] == par:
+                        ps = slot[u]
+                        break
+                pslot[slot[t]] = ps
             count[i * k + j] = n
-    return count, ex, pos
+    return count, ex, pos, pslot
 
 
 @numba.njit(cache=True, nogil=True)
-def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell):
+def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell, pslot, parent_free, prop_cls):
     """Generation over seeds (Algorithm 1, §5.1), larger elements first.
 
     For each seed, candidates are visited by increasing distance; the best one ``e_0``
@@ -333,8 +357,9 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
     unless they intersect elements copied earlier in this step.
 
     Departure (§4.1, §7 "significant differences in element size ... are not
-    supported"): the copies of all seeds are placed in order of decreasing bounding
-    radius (stable: seed order among equals), not seed by seed. Where two seeds' copies
+    supported"): the copies of all seeds are placed in order of decreasing size class
+    (``Prepared.size_class``; stable: seed order within a class), not seed by seed.
+    Where two seeds' copies
     disagree, a small element of one would otherwise take the place of a large element
     of the other (a small element fits a leftover gap, a large one rarely does), and
     over a fill the small kinds crowd out the large ones (stones and pebbles: stones
@@ -362,6 +387,13 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
         Two elements intersect when ``|p - q| < factor (r_p + r_q)``.
     cell : float
         Grid cell for the dynamic intersection test (at least the largest limit).
+    pslot : (P,) int
+        Parent proposal of each proposal (see :func:`generate_proposals`): an element
+        is copied only when its parent is (it is larger, so it is visited first), or
+        when the parent lies outside the domain (``parent_free``); never with -2.
+    parent_free : (P,) bool
+    prop_cls : (P,) int
+        Size class of each proposal.
 
     Returns
     -------
@@ -407,7 +439,7 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
     key = np.empty(m)
     for u in range(m):
         t = sel[u]
-        key[u] = -prop_r[t]
+        key[u] = -prop_cls[t]
         x0 = min(x0, prop_pos[t, 0])
         y0 = min(y0, prop_pos[t, 1])
         x1 = max(x1, prop_pos[t, 0])
@@ -420,6 +452,9 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
     for uu in range(m):
         u = visit[uu]
         t = sel[u]
+        ps = pslot[t]
+        if ps == -2 or (ps >= 0 and not placed[ps] and not parent_free[ps]):
+            continue  # its parent was not copied: no orphans
         px, py = prop_pos[t, 0], prop_pos[t, 1]
         gx = int((px - x0) / cell)
         gy = int((py - y0) / cell)
@@ -632,9 +667,10 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
 
 
 @numba.njit(cache=True, nogil=True)
-def conflict_split(pts, qr, qsk, opos, orad, osk, oyield, min_dist, factor, cell):
+def conflict_split(pts, qr, qsk, qcls, opos, orad, osk, ocls, oyield, min_dist, factor, cell):
     """Like :func:`conflict_check` (with ``use_sk``), telling apart intersections with
-    elements that yield to the query: ``oyield[j]`` and ``orad[j] < qr[i]``.
+    elements that yield to the query: ``oyield[j]`` and a smaller size class,
+    ``ocls[j] < qcls[i]``.
 
     Returns
     -------
@@ -661,7 +697,7 @@ def conflict_split(pts, qr, qsk, opos, orad, osk, oyield, min_dist, factor, cell
                     dy = pts[i, 1] - opos[j, 1]
                     lim = max(factor * (qr[i] + orad[j]), min_dist[qsk[i], osk[j]])
                     if dx * dx + dy * dy < lim * lim:
-                        if oyield[j] and orad[j] < qr[i]:
+                        if oyield[j] and ocls[j] < qcls[i]:
                             soft[i] = True
                         else:
                             hard[i] = True

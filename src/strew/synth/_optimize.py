@@ -161,7 +161,9 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     new = old + prm.relaxation * (sol - old)
     moved = hbar
     # Guards: keep centres in the region (and brush) and do not make elements intersect.
-    out = ~state.in_domain(new) & state.in_domain(old)
+    # An element whose brush disc was already dropped (spent) stays where it is: a move
+    # from outside the remaining discs could otherwise carry it past the stroke's edge.
+    out = ~state.in_domain(new)
     new[out] = old[out]
     state._pos[moved] = new
     _undo_intersections(state, moved, old)

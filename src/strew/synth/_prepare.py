@@ -49,6 +49,12 @@ class Prepared:
         from the exemplar, on top of the bounding discs).
     overlap_free : bool
         No two exemplar elements overlap (their shapes, not their discs).
+    size_class : (n,) int
+        Size class of each element (see :func:`size_classes`).
+    parent : (n,) int
+        The larger element each element leans on: its nearest Delaunay neighbour in its
+        exemplar of a larger size class (-1 for none, and for voids). Generation copies
+        an element only together with its parent (see ``grow``).
     factor : float
         Intersection factor: two elements intersect when
         ``|p - q| < factor (r_p + r_q)``; below 1 only when the exemplar's own bounding
@@ -88,6 +94,8 @@ class Prepared:
     interior: list[np.ndarray] = field(default_factory=list)
     domains: list = field(default_factory=list)
     overlap_free: bool = False
+    size_class: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
+    parent: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
 
     def __len__(self) -> int:
         return len(self.kind)
@@ -438,9 +446,89 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         interior=interior,
         domains=polys,
         overlap_free=all(len(overlaps(ex)[0]) == 0 for ex in exemplars),
+        size_class=(cls := size_classes(r)),
+        parent=parents(pos, cls, sources, void),
     )
     prep.set_selection(selection)
     return prep
+
+
+SIZE_STEP = 2.0  # bounding radii this many times apart are of different sizes
+
+
+def size_classes(r: np.ndarray) -> np.ndarray:
+    """Size classes of bounding radii: 0 for the smallest, a new class from the first
+    radius at least :data:`SIZE_STEP` times the current class's smallest.
+
+    §7 names "significant differences in element size" within an exemplar as a
+    limitation of the method; the extensions that address it (generation in order of
+    size, yielding, parents; see ``grow``) act between size classes only, so that
+    kinds of about one size (long and square tiles, 1.8 apart in bounding radius, far
+    less in area) keep the paper's behaviour.
+
+    Parameters
+    ----------
+    r : (n,) float
+
+    Returns
+    -------
+    (n,) int
+    """
+    u = np.unique(np.asarray(r, float))
+    cls_of = np.zeros(len(u), np.int64)
+    base, c = (u[0] if len(u) else 0.0), 0
+    for i, v in enumerate(u):
+        if v >= SIZE_STEP * base * (1 - 1e-9):
+            c += 1
+            base = v
+        cls_of[i] = c
+    return cls_of[np.searchsorted(u, r)]
+
+
+def parents(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, void: np.ndarray) -> np.ndarray:
+    """The larger element each exemplar element leans on (-1 for none).
+
+    Extension of §5.1 (§7 names exemplars with elements of very different sizes a
+    limitation): an element's parent is its nearest Delaunay neighbour, in its own
+    exemplar, of a larger size class (voids neither have nor are parents).
+    Small dots ringing a large disc have the disc as parent; pebbles in the gaps
+    between stones have the nearest touching stone. Generation copies an element only
+    with its parent, so that a neighbourhood's rim does not scatter small elements
+    whose large element it cut off (clusters turned into dots everywhere).
+
+    Parameters
+    ----------
+    pos : (n, 2) float
+    cls : (n,) int
+        Size classes (:func:`size_classes`).
+    source : (n,) int
+    void : (n,) bool
+
+    Returns
+    -------
+    (n,) int
+    """
+    from scipy.spatial import Delaunay, QhullError
+
+    n = len(pos)
+    out = np.full(n, -1, np.int64)
+    for s in np.unique(source):
+        ids = np.flatnonzero((source == s) & ~void)
+        cc = cls[ids]
+        if len(ids) < 3 or cc.min() == cc.max():
+            continue
+        try:
+            tri = Delaunay(pos[ids])
+        except QhullError:
+            continue
+        ip, nb = tri.vertex_neighbor_vertices
+        for a in range(len(ids)):
+            js = nb[ip[a] : ip[a + 1]]
+            js = js[cc[js] > cc[a]]
+            if len(js):
+                d = np.hypot(*(pos[ids[js]] - pos[ids[a]]).T)
+                out[ids[a]] = ids[js[np.argmin(d)]]
+    return out
 
 
 def _spacing(p: np.ndarray) -> float:
