@@ -88,7 +88,7 @@ def grow(
         Stop at this many elements. Without it, growth fills ``region`` (or the spray
         area) until no seed can grow.
     region : Region, optional
-        Element centres stay inside it.
+        Elements lie wholly inside it.
     start : (x, y), optional
         The initial seed; by default the region's centre (the spray path's start with
         ``spray``, the origin otherwise).
@@ -176,6 +176,9 @@ def grow(
     bounds = [_polyline(b, f"boundary[{i}]") for i, b in enumerate(boundary or [])]
     if count is None and region is None and spray_arr is None:
         raise InputError("grow: give --count, or a --region / --size (or a spray path) to fill")
+    from .._limits import check_work, element_area  # refuse work beyond the limits (issue 17)
+
+    check_work("--count" if count is not None else "--size/--region", count=count, region=region, per_element=element_area(ref.exemplar))
     kinds = ref.exemplar.kinds
     prio: dict[str, float] = {}
     for name, v in dict(priority or {}).items():

@@ -62,6 +62,11 @@ class GrowParams:
     frame_weight: float = 1.0
     #: rotation mode: the largest turn of an element's frame from its neighbours' (§5.3)
     max_turn: float = math.pi / 6
+    #: flow mode: fit the rotation to the neighbours near the flow direction (see
+    #: ``_Grower.choose``); False turns each reference to the flow exactly (§5.3)
+    flow_fit: bool = True
+    #: flow mode: the largest turn of an element's frame from the flow direction
+    flow_max_turn: float = math.pi / 18
 
 
 def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
@@ -445,6 +450,19 @@ class _Grower:
             return False
         return True
 
+    def fits_domain(self, g: Any) -> bool:
+        """Does element geometry ``g`` lie inside the region and cross no boundary stroke?"""
+        box = self.region_box
+        if box is not None:
+            b = shapely.bounds(g)
+            if not (b[0] >= box[0] and b[1] >= box[1] and b[2] <= box[2] and b[3] <= box[3]):
+                return False
+        elif self.region is not None and not shapely.contains(self.region.prepared, g):
+            return False
+        if self.boundary is not None and shapely.intersects(self.boundary, g):
+            return False
+        return True
+
     def choose(self, s: int) -> tuple[int, int, float] | None:
         """§5.2: the reference element minimising Eq. 3 for seed ``s``."""
         # §5.2: w(e_tar) are the seed's immediate neighbours. We take the placed elements
@@ -470,23 +488,32 @@ class _Grower:
             v = self.p.flow(ps[None, :])[0]
             flow_theta = math.atan2(v[1], v[0])
         frame_theta, frame_w = 0.0, 0.0
+        mode = self.p.mode
         if self.mode_code == 1 and len(nb_arr):
             # the neighbours' reference frames (their Eq. 4 rotations), circular mean
             f = self.frame[nb_arr]
             frame_theta = math.atan2(float(np.sin(f).sum()), float(np.cos(f).sum()))
             frame_w = self.p.frame_weight * self.l
+        elif self.mode_code == 2 and self.p.flow_fit:
+            # §5.3 turns the reference to the flow direction exactly. We fit the rotation
+            # to the placed neighbours as in rotation mode, held within max_turn of the
+            # flow direction and charged for the turn away from it: where the field bends
+            # the neighbours' lattice then bends with it gradually, instead of each
+            # element taking the field's angle and leaving holes and overlaps between
+            # neighbours that took different ones.
+            frame_theta, frame_w, mode = flow_theta, self.p.frame_weight * self.l, "rotate"
         err, shift, theta = match_references(
             self.rings,
             rel,
             self.kind[nb_arr],
             self.sub[nb_arr],
-            mode=self.p.mode,
+            mode=mode,
             flow_theta=flow_theta,
             candidates=cand,
             weights=self.p.weights,
             frame_theta=frame_theta,
             frame_weight=frame_w,
-            max_turn=self.p.max_turn,
+            max_turn=self.p.flow_max_turn if self.mode_code == 2 else self.p.max_turn,
         )
         best = float(err.min()) if len(err) else math.inf
         if not math.isfinite(best):
@@ -520,15 +547,16 @@ class _Grower:
             rot += float(self.rng.uniform(-p.jitter_rotation, p.jitter_rotation))
         if p.jitter_scale > 0:
             scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
-        g = None
+        g = self.element_geometry(kind, x, y, rot, scale)
+        # Not in the paper: an element must lie wholly inside the region and off the
+        # boundary strokes (the paper stops growth at them; an element whose centre is
+        # inside could still reach across).
+        if not self.fits_domain(g):
+            return False
         # Not in the paper: a placement that would overlap an element is refused (the
         # seed dies), so that an exemplar without overlaps grows a pattern without any.
-        if p.avoid_overlaps:
-            g = self.element_geometry(kind, x, y, rot, scale)
-            if self.overlaps_any(g, kind, x, y, scale):
-                return False
-        else:
-            g = self.element_geometry(kind, x, y, rot, scale)
+        if p.avoid_overlaps and self.overlaps_any(g, kind, x, y, scale):
+            return False
         self.state[s] = ELEMENT
         self.kind[s] = kind
         self.sub[s] = r
@@ -743,6 +771,7 @@ class _Grower:
                     self.fixed[g] = True
         tiny = 1e-9 * self.l
         moved = []
+        new_geom: dict[int, Any] = {}
         for g in win:
             nx, ny = float(new[local[g], 0]), float(new[local[g], 1])
             ox, oy = self.xy[g]
@@ -754,12 +783,17 @@ class _Grower:
             # nor an element's centre out of the spray area (§5.1: elements grow within it)
             if self.spray_area is not None and self.state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
                 continue
+            if self.state[g] == ELEMENT:
+                ng = self.element_geometry(int(self.kind[g]), nx, ny, self.rot[g], self.scl[g])
+                if not self.fits_domain(ng):
+                    continue  # nor an element across the region's edge or a boundary stroke
+                new_geom[g] = ng
             moved.append(g)
         old = {g: (*self.xy[g], self.geom[g]) for g in moved}
         for g in moved:
             self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
             if self.state[g] == ELEMENT:
-                self.geom[g] = self.element_geometry(int(self.kind[g]), self.pos[g, 0], self.pos[g, 1], self.rot[g], self.scl[g])
+                self.geom[g] = new_geom[g]
         if not self.p.avoid_overlaps:
             return
         # Keep the no-overlap guarantee: elements that now overlap go back to where they
