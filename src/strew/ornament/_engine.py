@@ -603,7 +603,7 @@ class _Grower:
                 break
             cell = int(self.best_idx.flat[k])
             i, j = divmod(cell, self.cols)
-            c = np.array([self.x0 + (j + 0.5) * h, self.y0 + (i + 0.5) * h])
+            c = c0 = np.array([self.x0 + (j + 0.5) * h, self.y0 + (i + 0.5) * h])
             # -- exact radius of C, and whether an element (not the boundary) stopped it
             reach = self.dist_el[i, j] * h + 4 * h + max(2 * h, 0.25 * (self.dist_all[i, j] * h + h))
             rho, d_b, d_e, idx, dists = self._measure(c, reach)
@@ -643,6 +643,11 @@ class _Grower:
             else:
                 self.stats["failures"] += 1
                 self.add_exclude(c)
+                if c is not c0:
+                    # the climb moved C's centre off the raster candidate, possibly out of
+                    # the candidate's own circle: exclude the candidate too, or the same
+                    # cell is found, climbed and failed again forever
+                    self.add_exclude(c0)
         self.stats["largest_circle_raster"] = largest
         self.stats["phase"] = self.state.phase
 
