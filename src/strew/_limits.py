@@ -47,6 +47,7 @@ __all__ = [
 ]
 
 MAX_COORD = 1e12
+TRIALS_PER_ELEMENT = 10
 
 DEFAULTS: dict[str, float] = {
     "elements": 1e7,
@@ -241,6 +242,7 @@ def check_work(
     cells: float | None = None,
     bytes_per_cell: float = 8.0,
     extra_bytes: float = 0.0,
+    trials: float | None = None,
 ) -> None:
     """Refuse work whose estimated element count or memory exceeds the limits.
 
@@ -258,7 +260,14 @@ def check_work(
         Cells of a raster or grid the method would allocate (``bytes_per_cell`` each).
     extra_bytes : float
         Other memory the method would allocate.
+    trials : float, optional
+        A bound on attempts (e.g. consecutive failures before stopping); at most
+        ``TRIALS_PER_ELEMENT`` times the ``elements`` limit.
     """
+    if trials is not None:
+        lim = TRIALS_PER_ELEMENT * get_limit("elements")
+        if not math.isfinite(trials) or trials > lim:
+            raise InputError(f"{what}: {_fmt(trials)} attempts, over the limit of {_fmt(lim)} ({TRIALS_PER_ELEMENT} per element of the elements limit; {_how_to_raise('elements')})")
     est = math.inf if count is None else float(count)
     if region is not None and per_element is not None and per_element > 0:
         est = min(est, region.area / per_element)

@@ -73,11 +73,11 @@ def build_gallery(
     from .io.document import dumps
 
     out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
     chosen = [(t, m) for t, m in SECTIONS if not sections or any(s in m for s in sections)]
-    if not chosen:
-        names = ", ".join(m.rsplit(".", 1)[-1] for _, m in SECTIONS)
-        raise InputError(f"--only: no gallery section matches {list(sections or [])} (have: {names})")
+    if not chosen:  # checked before creating the folder: a refused run writes nothing
+        names = ", ".join(m.replace("._demo", "").rsplit(".", 1)[-1] for _, m in SECTIONS)
+        raise InputError(f"--only: no gallery section matches {', '.join(sections or [])} (have: {names})")
+    out.mkdir(parents=True, exist_ok=True)
     rep = Reporter(progress, should_cancel, total=len(chosen), message="gallery")
     written: list[Path] = []
     blocks: list[str] = []

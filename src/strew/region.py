@@ -14,6 +14,7 @@ import numpy as np
 import shapely
 
 from ._errors import InputError
+from ._limits import MAX_COORD
 from .shape import Path, _normalise_path, paths_to_polygon
 
 __all__ = ["Region", "parse_size"]
@@ -36,6 +37,8 @@ def parse_size(text: str) -> tuple[float, float]:
         raise InputError(f"--size: expected WxH such as 600x520, got {text!r}") from None
     if not (np.isfinite(w) and np.isfinite(h)) or w <= 0 or h <= 0:
         raise InputError(f"--size: width and height must be positive and finite, got {text!r}")
+    if max(w, h) > MAX_COORD:
+        raise InputError(f"--size: width and height must be at most {MAX_COORD:.0e}, got {text!r}")
     return w, h
 
 
@@ -70,6 +73,8 @@ class Region:
         coords = shapely.get_coordinates(geometry)
         if not np.all(np.isfinite(coords)):
             raise InputError("region: NaN or inf coordinate")
+        if np.abs(coords).max() > MAX_COORD:
+            raise InputError(f"region: coordinate magnitude over {MAX_COORD:.0e}")
         self._geometry = geometry
         # The paths it was made from, when known, so that documents round-trip exactly.
         self._paths = list(paths) if paths is not None else None

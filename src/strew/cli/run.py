@@ -16,13 +16,24 @@ from ._common import check_outputs, echo, out_option, quiet_option, seed_option
 @quiet_option
 def command(script: str, size: float, name: str, seed: int, outs: tuple[str, ...], quiet: bool) -> None:
     """Run SCRIPT.py as `python SCRIPT.py` would, evaluate its `arrangement` on the
-    square [0, N]^2 and write it: faces as closed paths, edges as open paths."""
+    square [0, N]^2 and write it: faces as closed paths, edges as open paths.
+
+    SCRIPT is a Python program: it runs with your rights (it can read, write and delete
+    your files), so run only scripts you trust.
+    """
     import time
 
     from ..program import run_script
     from ._common import write_outputs
 
     check_outputs(outs)
+    import math
+
+    from .._errors import InputError
+    from .._limits import MAX_COORD
+
+    if not (math.isfinite(size) and 0 < size <= MAX_COORD):
+        raise InputError(f"--size: must be a positive number up to {MAX_COORD:.0e}, got {size!r}")
     t0 = time.perf_counter()
     pm, arr = run_script(script, size=size, seed=seed, name=name)
     dt = time.perf_counter() - t0

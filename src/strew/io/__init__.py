@@ -17,8 +17,9 @@ from ..region import Region
 from ..shape import Shape
 from .._limits import check_file
 from ._atomic import atomic_write, atomic_write_many, probe_writable
+from ._pandas import from_pandas, to_geopandas, to_pandas
 
-__all__ = ["load", "save", "save_many", "encode", "load_shapes", "load_region", "atomic_write", "OUTPUT_FORMATS", "check_output_path"]
+__all__ = ["to_pandas", "from_pandas", "to_geopandas", "load", "save", "save_many", "encode", "load_shapes", "load_region", "atomic_write", "OUTPUT_FORMATS", "check_output_path"]
 
 OUTPUT_FORMATS = (".json", ".svg", ".png")
 INPUT_FORMATS = (".json", ".svg")

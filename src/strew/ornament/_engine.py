@@ -726,6 +726,9 @@ def grow_elements(
             raise InputError(f"{name}: must be a finite number >= 0, got {val!r}")
     if max_elements is not None and max_elements < 0:
         raise InputError(f"max_elements: must be >= 0, got {max_elements!r}")
+    from .._limits import check_work  # refuse work beyond the limits (issue 17): discs of min_radius
+
+    check_work("--min-radius" if min_radius is not None else "--size/--region", count=max_elements, region=region, per_element=math.pi * mr * mr)
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep)

@@ -248,6 +248,11 @@ def pack(
     w = _weights(weights, list(lib))
     limit = _positive_int(DEFAULTS["max_failures"][method] if max_failures is None else max_failures, "max_failures")
     p_count = _positive_int(candidates, "candidates")
+    from .._limits import check_work  # refuse work beyond the limits (issue 17)
+
+    check_work("candidates", extra_bytes=256.0 * p_count)  # each round's candidate arrays
+    check_work("max_failures", trials=limit)
+    check_work("--size/--region with these shapes and --scale", region=dom, per_element=min(k.area * k.scale[0] ** 2 for k in kinds))
     k_sparse = _positive_int(sparse_candidates, "sparse_candidates")
     try:
         power = float(power)

@@ -162,6 +162,10 @@ def synthesize(
         raise InputError(f"init: expected grow or patch, got {init!r}")
     if region is None and brush_points is None:
         raise InputError("synth: give a region (or a size) to fill, or a brush stroke")
+    if region is not None:  # refuse work beyond the limits before starting (issue 17)
+        from .._limits import check_work, element_area
+
+        check_work("--size/--region", region=region, per_element=min(element_area(a) for a in as_selection(exemplars, selection).exemplars()))
     state = new_state(exemplars, region, selection=selection, k=k, c=c, optimize=optimize, kind_cost=kind_cost, rng=rng, **params)
     if trace is not None:
         state.trace = trace
