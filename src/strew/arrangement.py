@@ -412,8 +412,51 @@ class Arrangement:
 
         return to_svg(self, **kwargs)
 
-    def _repr_svg_(self) -> str:
+    # Notebooks show small arrangements as SVG; above this many elements the SVG would be
+    # megabytes (about 165 bytes per element), so they show a PNG with a note instead.
+    REPR_SVG_MAX_ELEMENTS = 20_000
+
+    def _repr_svg_(self) -> str | None:
+        if len(self) > self.REPR_SVG_MAX_ELEMENTS:
+            return None
         return self.to_svg(width=480)
+
+    def _repr_png_(self) -> bytes | None:
+        if len(self) <= self.REPR_SVG_MAX_ELEMENTS:
+            return None
+        from .io.png import to_png
+
+        return to_png(self, width=720)
+
+    def _repr_html_(self) -> str | None:
+        png = self._repr_png_()
+        if png is None:
+            return None
+        import base64
+        import html
+
+        note = f"{html.escape(repr(self))}: shown as a PNG (over {self.REPR_SVG_MAX_ELEMENTS:,} elements); use .to_svg() for vectors"
+        return f'<img src="data:image/png;base64,{base64.b64encode(png).decode()}"><br><small>{note}</small>'
+
+    # -- data frames ------------------------------------------------------------------
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame, one row per element; see :func:`strew.io.to_pandas`."""
+        from .io._pandas import to_pandas
+
+        return to_pandas(self)
+
+    def to_geopandas(self) -> Any:
+        """A GeoDataFrame with each element's world geometry; see :func:`strew.io.to_geopandas`."""
+        from .io._pandas import to_geopandas
+
+        return to_geopandas(self)
+
+    @classmethod
+    def from_pandas(cls, df: Any, shapes: Mapping[str, Shape] | None = None, **kwargs: Any) -> Arrangement:
+        """An arrangement from a data frame; see :func:`strew.io.from_pandas`."""
+        from .io._pandas import from_pandas
+
+        return from_pandas(df, shapes, **kwargs)
 
     def __repr__(self) -> str:
         counts = ", ".join(f"{k}: {v}" for k, v in self.counts().items())

@@ -109,8 +109,9 @@ def from_pandas(
     library = dict(shapes) if shapes is not None else base.shapes
     if not library:
         raise InputError("from_pandas: no shape library (pass shapes=, or a frame made by to_pandas)")
+    pd = _require("pandas")
     kind = df["kind"]
-    kind = kind.astype(str).to_numpy() if not np.issubdtype(kind.dtype, np.integer) else kind.to_numpy()
+    kind = kind.to_numpy() if pd.api.types.is_integer_dtype(kind.dtype) else kind.astype(object).to_numpy()
     core = {name: df[name].to_numpy(dtype=float) for name in CORE_COLUMNS if name in df.columns and name != "kind"}
     columns = {}
     for name in df.columns:
