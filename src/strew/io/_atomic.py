@@ -95,14 +95,42 @@ def atomic_write_many(items: Sequence[tuple[str | os.PathLike[str], bytes | str]
                     fh.write(payload)
             except OSError as exc:
                 raise InputError(f"{what} {str(target)!r}: cannot write ({_why(exc)})") from None
-        done: list[Path] = []
-        for tmp, target in staged:
-            try:
-                os.replace(tmp, target)
-            except OSError as exc:
-                raise InputError(f"{what} {str(target)!r}: cannot write ({_why(exc)})") from None
-            done.append(target)
-        return done
+        # Rename into place; should a rename fail, undo the earlier ones: remove new files
+        # and put back the old ones (kept as hard links until every rename succeeded).
+        done: list[tuple[Path, str | None]] = []
+        try:
+            for tmp, target in staged:
+                backup = None
+                if target.exists():
+                    backup = f"{tmp}.old"
+                    try:
+                        os.link(target, backup)
+                    except OSError:
+                        backup = None
+                try:
+                    os.replace(tmp, target)
+                except OSError as exc:
+                    if backup is not None:
+                        os.unlink(backup)
+                    raise InputError(f"{what} {str(target)!r}: cannot write ({_why(exc)})") from None
+                done.append((target, backup))
+        except BaseException:
+            for target, backup in reversed(done):
+                try:
+                    if backup is not None:
+                        os.replace(backup, target)
+                    else:
+                        os.unlink(target)
+                except OSError:
+                    pass
+            raise
+        for _, backup in done:
+            if backup is not None:
+                try:
+                    os.unlink(backup)
+                except OSError:
+                    pass
+        return [target for target, _ in done]
     except BaseException:
         for tmp, _ in staged:
             try:
