@@ -1,6 +1,9 @@
 """Measurements of arrangements, used by tests, benchmarks and ``strew info``.
 
 Every function takes an :class:`~strew.Arrangement` and returns plain numbers or arrays.
+:func:`fidelity` measures a result against the exemplar it continues (code in
+``strew._fidelity``); :func:`pair_correlation` and :func:`nearest_neighbor_distances` are
+its single-arrangement parts.
 """
 
 from __future__ import annotations
@@ -11,6 +14,7 @@ import numpy as np
 import shapely
 
 from ._errors import InputError
+from ._fidelity import FidelityReport, MetricResult, fidelity, nearest_neighbor_distances, pair_correlation
 from .arrangement import Arrangement
 from .region import Region
 
@@ -23,6 +27,11 @@ __all__ = [
     "nearest_neighbor_stats",
     "kind_fractions",
     "summary",
+    "fidelity",
+    "FidelityReport",
+    "MetricResult",
+    "pair_correlation",
+    "nearest_neighbor_distances",
 ]
 
 
