@@ -57,3 +57,56 @@ def test_dots_in_a_rectangle_work_like_dots_in_a_disc(no_repeated_failure):
     work_d = (disc.stats["iterations"] + disc.stats["rejected"]) / nd
     assert work_r < 2 * work_d
     assert np.isfinite(work_r)
+
+
+def _stem_hits(orn) -> int:
+    """Stems that meet any other element between the rims of the two flowers they join
+    (a stem's own leaf, based at its midpoint, excepted)."""
+    by_centre = {}
+    for e in orn.elements:
+        if e.type in ("flower", "bud"):
+            by_centre[tuple(np.round(e.proxy.center, 9))] = e
+    hits = 0
+    others = [(e, pr.geometry) for e in orn.elements if e.type != "seed" for pr in e.proxies]
+    for s in (e for e in orn.elements if e.type == "stem"):
+        a, b = np.asarray(s.proxy.start), np.asarray(s.proxy.end)
+        ea, eb = by_centre[tuple(np.round(a, 9))], by_centre[tuple(np.round(b, 9))]
+        d = float(np.hypot(*(b - a)))
+        u = (b - a) / d
+        ra, rb = ea.proxy.radius + 1e-6, eb.proxy.radius + 1e-6
+        if d <= ra + rb:
+            continue
+        seg = shapely.LineString([a + ra * u, b - rb * u])
+        mid = (a + b) / 2
+        for e, g in others:
+            if e is s or e is ea or e is eb:
+                continue
+            if e.type == "leaf" and np.allclose(e.proxies[0].polyline()[0], mid):
+                continue
+            hits += bool(seg.intersects(g))
+    return hits
+
+
+def _largest_gap_near_edge(orn, region, band: float) -> float:
+    """Radius of the largest empty circle centred within ``band`` of the panel's edge
+    (a 0.5-unit grid of centres, exact distances to the proxies and the edge)."""
+    geoms = shapely.union_all([pr.geometry for e in orn.elements if e.type != "seed" for pr in e.proxies])
+    x0, y0, x1, y1 = region.bounds
+    g = np.mgrid[x0 + 0.25 : x1 : 0.5, y0 + 0.25 : y1 : 0.5].reshape(2, -1).T
+    g = g[region.contains(g)]
+    d_edge = shapely.distance(region.boundary, shapely.points(g))
+    clear = np.minimum(shapely.distance(geoms, shapely.points(g)), d_edge)
+    return float(clear[d_edge < band].max())
+
+
+@pytest.mark.parametrize("region", [Region.rectangle(100, 100), Region.circle(50, 50, 50),
+                                    Region(shapely.Polygon([(0, 0), (120, 0), (120, 60), (60, 60), (60, 120), (0, 120)]))],
+                         ids=["square", "disc", "L"])
+def test_flower_stems_cross_nothing_and_buds_fill_the_edge_band(region):
+    orn = grow_elements("flowers", region, rng=2)
+    types = {e.type for e in orn.elements}
+    assert {"flower", "stem", "bud"} <= types
+    assert _stem_hits(orn) == 0
+    # a full flower has radius 3, so Appendix A alone leaves gaps of about that radius
+    # along the edge; the buds (radius 1.2-2) leave none wider than a bud
+    assert _largest_gap_near_edge(orn, region, 6.0) < 2.0

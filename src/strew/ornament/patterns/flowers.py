@@ -11,6 +11,14 @@ The rule ``flower --> stem flower * x leaf`` places a new flower at most 10 unit
 its parent towards the goal circle, joins them with a stem, and adds a leaf at the stem's
 midpoint only when the new flower is farther than 8 units. This file is a complete rule
 file: copy it to start your own.
+
+Two additions to Appendix A, so that the result looks designed (issue 21):
+
+* a stem must not cross the ornament between the two flowers it joins (the appendix
+  tests only the new flower; Wong et al. test intersections before placing, §3.2);
+* a second phase (§5's "state preconditions", as the hierarchy pattern) grows buds, small
+  flowers of radius 1.2-2 on stems, into the gaps that no full flower fits, above all the
+  band along the panel's edge that the flowers leave, about one flower wide.
 """
 
 from __future__ import annotations
@@ -38,24 +46,42 @@ FLOWER_RADIUS = 3.0
 MAX_STEM = 10.0
 LEAF_MIN_STEM = 8.0  # "if the new flower was placed far enough away, add a leaf as well"
 LEAF_LENGTH = 3.0
+BUD_RADIUS = (1.2, 2.0)  # smaller growth of the second phase (not in Appendix A)
 COLORS = ("#c8413b", "#e3a72f", "#4f7cc2")
 
 pattern = Pattern(
     "flowers",
     state={"flowers": 0},
-    # a new flower needs an empty circle of about its own diameter next to its parent
-    min_radius=FLOWER_RADIUS,
+    # a new flower needs an empty circle of about its own diameter next to its parent;
+    # then buds fill the gaps down to their smallest radius
+    min_radius=BUD_RADIUS[0],
+    phases=[("flowers", FLOWER_RADIUS), ("buds", None)],
     description="Appendix A: flowers on stems, a leaf on every stem longer than 8 units.",
-    draw_order=["stem", "leaf", "flower"],
+    draw_order=["stem", "leaf", "flower", "bud"],
 )
 
 pattern.element("seed", Point)
 pattern.element("flower", Circle, color=0)  # this element type has a user field
 pattern.element("stem", Segment)
 pattern.element("leaf", [Bezier, Bezier])
+pattern.element("bud", Circle, color=0)  # second phase: a small flower (not in Appendix A)
 
 
-@pattern.rule("seed", children=["flower"])
+def _stem_crosses(ctx, a, ra, b, rb):
+    """True when the stem from the flower at ``a`` (radius ``ra``) to the one at ``b``
+    (radius ``rb``) meets the ornament between the two flowers' rims. Not in Appendix A
+    (it tests the new flower only, so stems crossed stems); the part inside the flowers
+    is left out, since every stem of a flower starts at its centre."""
+    d = distance(a, b)
+    gap = 1e-6 * max(1.0, d)
+    if d <= ra + rb + 2 * gap:
+        return False  # the flowers touch: no stem shows between them
+    u = (b - a) / d
+    exposed = Segment().set(a + (ra + gap) * u, b - (rb + gap) * u)
+    return ctx.intersects(exposed)
+
+
+@pattern.rule("seed", children=["flower"], phase="flowers")
 def seed_to_flower(ctx, seed, flower):
     # The appendix omits this rule's code: a flower on top of the seed, used once.
     flower.proxy.set(seed.proxy.center, FLOWER_RADIUS)
@@ -66,7 +92,7 @@ def seed_to_flower(ctx, seed, flower):
     return SUCCESS
 
 
-@pattern.rule("flower", children=["stem", "flower"])
+@pattern.rule("flower", children=["stem", "flower"], phase="flowers")
 def flower_to_flower(ctx, parent, stem, flower):
     to_goal = ctx.goal.center - parent.proxy.center
     # determine how far away to place the child flower.
@@ -75,6 +101,9 @@ def flower_to_flower(ctx, parent, stem, flower):
     flower.proxy.set(offset(parent.proxy.center, to_goal, dist), FLOWER_RADIUS)
     # if the new flower intersects any already-placed element, cancel this rule.
     if ctx.intersects(flower):
+        return FAILURE
+    # Not in Appendix A: nor may its stem cross the ornament.
+    if _stem_crosses(ctx, parent.proxy.center, parent.proxy.radius, flower.proxy.center, FLOWER_RADIUS):
         return FAILURE
     flower.color = (parent.color + 1) % len(COLORS)
     # the stem extends from the centre of the parent flower to the centre of the child.
@@ -101,6 +130,23 @@ def flower_to_flower(ctx, parent, stem, flower):
     return SUCCESS
 
 
+@pattern.rule("flower bud", children=["stem", "bud"], phase="buds")
+def flower_to_bud(ctx, parent, stem, bud):
+    # Not in Appendix A: in the second phase, a bud on a stem grows into the goal circle
+    # itself (which the appendix's flowers would overfill), as large as it allows.
+    r = min(BUD_RADIUS[1], ctx.goal.radius)
+    if r < BUD_RADIUS[0] or distance(ctx.goal.center, parent.proxy.center) > MAX_STEM + parent.proxy.radius:
+        return FAILURE
+    bud.proxy.set(ctx.goal.center, r)
+    if ctx.intersects(bud) or not ctx.inside(bud):
+        return FAILURE
+    if _stem_crosses(ctx, parent.proxy.center, parent.proxy.radius, bud.proxy.center, r):
+        return FAILURE
+    stem.proxy.set(parent.proxy.center, bud.proxy.center)
+    bud.color = (parent.color + 1) % len(COLORS)
+    return SUCCESS
+
+
 # -- an "ink" rendering (Fig. 15e-g): petals, tapered stems, filled leaves ----------------
 @pattern.render("flower", "ink", help="petalled flowers, tapered stems and filled leaves (Fig. 15e-g)")
 def ink_flower(flower, rc):
@@ -111,6 +157,14 @@ def ink_flower(flower, rc):
         Mark([petals[:-1]], closed=True, fill=COLORS[flower.color % len(COLORS)], stroke="#2b2f36", stroke_width=rc.line_width),
         Mark.circle(c, 0.3 * r, fill="#2b2f36", stroke="none"),
     ]
+
+
+@pattern.render("bud", "ink")
+def ink_bud(bud, rc):
+    c, r = bud.proxy.center, bud.proxy.radius
+    t = np.linspace(0, 2 * np.pi, 73)
+    petals = c + (r * (0.75 + 0.25 * np.abs(np.cos(1.5 * t))))[:, None] * np.c_[np.cos(t), np.sin(t)]
+    return [Mark([petals[:-1]], closed=True, fill=COLORS[bud.color % len(COLORS)], stroke="#2b2f36", stroke_width=rc.line_width)]
 
 
 @pattern.render("stem", "ink")
