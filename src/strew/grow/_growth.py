@@ -65,8 +65,6 @@ class GrowParams:
     #: flow mode: fit the rotation to the neighbours near the flow direction (see
     #: ``_Grower.choose``); False turns each reference to the flow exactly (§5.3)
     flow_fit: bool = True
-    #: next best references a refused placement tries before its seed dies
-    alternatives: int = 8
     #: flow mode: the largest turn of an element's frame from the flow direction
     flow_max_turn: float = math.pi / 18
 
@@ -215,7 +213,6 @@ class _Grower:
         self.max_scale = 1.0
         self.other_rmax = float(self.kind_radius.max())  # bounding radius of any element or obstacle
         self._last_nb = np.zeros(0, dtype=np.int64)
-        self._last_match: tuple[np.ndarray, np.ndarray, np.ndarray, int] = (np.zeros(0), np.zeros(0, dtype=np.int64), np.zeros(0), -1)
         # incremental spray (see :class:`strew.grow.SprayGrowth`): seeds outside the spray
         # area wait here instead of being dropped, and grow once the cursor reaches them
         self.waiting: list[int] | None = None
@@ -526,23 +523,7 @@ class _Grower:
         ties = np.flatnonzero(err <= best + 1e-9 * (1.0 + best))
         a = int(ties[0]) if len(ties) == 1 else int(ties[self.rng.integers(len(ties))])
         self._last_nb = nb_arr
-        self._last_match = (err, shift, theta, a)
         return a, int(shift[a]), float(theta[a])
-
-    def alternatives(self) -> list[tuple[int, int, float]]:
-        """The next best references of the last :meth:`choose`, best first.
-
-        Not in the paper, where a seed whose element does not fit is simply lost: a
-        placement refused by the overlap guard or the region tries these before the seed
-        dies, so that the growth front does not die out and leave gaps.
-        """
-        err, shift, theta, a = self._last_match
-        n = min(self.p.alternatives + 1, len(err))
-        if n <= 1:
-            return []
-        idx = np.argpartition(err, n - 1)[:n] if n < len(err) else np.arange(len(err))
-        idx = idx[np.argsort(err[idx], kind="stable")]
-        return [(int(r), int(shift[r]), float(theta[r])) for r in idx if r != a and math.isfinite(float(err[r]))][: self.p.alternatives]
 
     def place(self, s: int, a: int, k: int, th: float) -> bool:
         """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
@@ -730,6 +711,18 @@ class _Grower:
                 if not self.crosses_edges(oa, pa, ob, pb) and not self.crosses_boundary(pa, pb):
                     self.add_edge(oa, ob)
 
+    def copied_columns(self, sub: np.ndarray) -> dict[str, Any]:
+        """The exemplar's other per-element columns (``void``, ``layer``, ...), copied
+        from the reference element each grown element copies (its sub-id, §3)."""
+        out: dict[str, Any] = {}
+        for name, col in self.ref.exemplar.columns.items():
+            if name in ("sub_id", "color"):
+                continue
+            a = np.asarray(col)
+            if a.ndim >= 1 and len(a) == len(self.ref.exemplar):
+                out[name] = a[sub].copy() if len(sub) else a[:0].copy()
+        return out
+
     def _color(self, r: int) -> Any:
         base = self.ex_color[r]
         amt = self.p.jitter_color
@@ -877,13 +870,7 @@ class _Grower:
                 self.deferred.add(s)
                 continue
             pick = self.choose(s)
-            ok = pick is not None and self.place(s, *pick)
-            if pick is not None and not ok:
-                for alt in self.alternatives():
-                    if self.place(s, *alt):
-                        ok = True
-                        break
-            if not ok:
+            if pick is None or not self.place(s, *pick):
                 self.kill(s)
                 self.release_deferred(s)
                 continue
@@ -933,6 +920,7 @@ class _Grower:
         columns: dict[str, Any] = {"sub_id": self.sub[idx].copy()}
         if self.want_color:
             columns["color"] = [self.color[i] for i in idx]
+        columns.update(self.copied_columns(self.sub[idx]))
         extra: dict[str, Any] = {}
         if self.p.connectivity:
             new = np.full(self.n, -1, dtype=np.int64)

@@ -275,6 +275,7 @@ class SprayGrowth:
         columns: dict[str, Any] = {"sub_id": g.sub[idx].copy()}
         if g.want_color:
             columns["color"] = [g.color[i] for i in idx]
+        columns.update(g.copied_columns(g.sub[idx]))
         return Arrangement(ex.shapes, g.kind[idx], g.pos[idx, 0].copy(), g.pos[idx, 1].copy(), g.rot[idx].copy(), g.scl[idx].copy(), columns=columns, meta={"method": "grow", "tool": "spray"})
 
     def arrangement(self) -> Arrangement:
