@@ -81,11 +81,13 @@ def _dart(
     gap: float = 0.0,
     placed: tuple[np.ndarray, np.ndarray] | None = None,
     tries: int = 20000,
+    periodic: bool = False,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Dart throwing of discs (bounding circles) inside ``box``, not overlapping ``placed``.
 
     ``tries`` counts darts per 170 x 170 of box area, so that a larger box draws the
-    same process (the same saturation), not a sparser one.
+    same process (the same saturation), not a sparser one. With ``periodic`` the box is a
+    torus: centres anywhere in it, distances by the nearest image.
 
     Returns the new centres (m, 2) and radii (m,), m <= count.
     """
@@ -102,8 +104,14 @@ def _dart(
         if k >= count:
             break
         r = float(radii_arr[k])
-        p = np.array([rng.uniform(x0 + r, x1 - r), rng.uniform(y0 + r, y1 - r)])
-        if len(P) and np.any(np.hypot(*(P - p).T) < R + r + gap):
+        if periodic:
+            p = np.array([rng.uniform(x0, x1), rng.uniform(y0, y1)])
+            d = np.abs(P - p)
+            d = np.minimum(d, np.array([x1 - x0, y1 - y0]) - d)
+        else:
+            p = np.array([rng.uniform(x0 + r, x1 - r), rng.uniform(y0 + r, y1 - r)])
+            d = P - p
+        if len(P) and np.any(np.hypot(*d.T) < R + r + gap):
             continue
         P = np.r_[P, p[None]]
         R = np.r_[R, r]
@@ -264,23 +272,29 @@ def two_sizes(rng: Any = None, *, size: float = 170.0, large: float = 12.0, rati
 
 
 def clusters(rng: Any = None, *, size: float = 300.0, cluster_spacing: float = 56.0, large: float = 8.0, small: float = 3.0, ring_gap: float = 1.5, ring_min: int = 4, ring_max: int = 6) -> Arrangement:
-    """Clusters: each large disc ringed by 4 to 6 small discs, empty space between clusters."""
+    """Clusters: each large disc ringed by 4 to 6 small discs, empty space between clusters.
+
+    Cluster centres are dart-thrown on a torus and elements cropped by their centres: the
+    frame is one period (copies tile seamlessly) and carries no empty border band.
+    """
     g = _rng(rng)
     ring_r = large + small + ring_gap
-    centres, _ = _dart(g, (0, 0, size, size), np.full(400, 0.5 * cluster_spacing), 400, tries=6000)
+    centres, _ = _dart(g, (0, 0, size, size), np.full(4000, 0.5 * cluster_spacing), 4000, tries=6000, periodic=True)
     pts, kind = [], []
-    for c in centres:
+    shifts = [np.array([dx, dy]) for dx in (-size, 0.0, size) for dy in (-size, 0.0, size)]
+    for c0 in centres:
         m = int(g.integers(ring_min, ring_max + 1))
         t = g.uniform(0, 2 * np.pi) + np.arange(m) * 2 * np.pi / m + g.normal(0, 0.08, m)
         rr = ring_r * g.uniform(0.97, 1.05, m)
-        pts.append(c)
-        kind.append(0)
-        pts.extend(c + np.c_[rr * np.cos(t), rr * np.sin(t)])
-        kind += [1] * m
+        for sh in shifts:  # the periodic images; the crop keeps one copy of each element
+            c = c0 + sh
+            pts.append(c)
+            kind.append(0)
+            pts.extend(c + np.c_[rr * np.cos(t), rr * np.sin(t)])
+            kind += [1] * m
     shapes = {"disc": Shape.circle(large, style={"fill": "#c0504d", "stroke": "#5a1f1d"}), "dot": Shape.circle(small, 16, style={"fill": "#f2c14e", "stroke": "#7a5a10"})}
     p = np.asarray(pts, float)
-    # cluster centres keep half a cluster spacing from the frame (> reach): every ring is whole
-    return _finish("clusters", shapes, kind, p, box=(0.0, 0.0, size, size), params=dict(size=size, cluster_spacing=cluster_spacing, large=large, small=small, ring_gap=ring_gap, ring_min=ring_min, ring_max=ring_max))
+    return _finish("clusters", shapes, kind, p, box=(0.0, 0.0, size, size), crop=True, params=dict(size=size, cluster_spacing=cluster_spacing, large=large, small=small, ring_gap=ring_gap, ring_min=ring_min, ring_max=ring_max))
 
 
 def three_sizes(rng: Any = None, *, size: float = 170.0, small: float = 2.6, ratios: tuple[float, float, float] = (1.0, 2.0, 4.0), counts: tuple[int, int, int] = (120, 45, 16), gap: float = 1.2) -> Arrangement:
