@@ -403,11 +403,8 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     _, skind = np.unique(np.c_[sources, kind], axis=0, return_inverse=True)
     skind = skind.ravel().astype(np.int64)
     ns = int(skind.max()) + 1
-    min_dist = np.full((ns, ns), np.inf)
-    if len(idx):
-        dist = np.hypot(off[:, 0], off[:, 1])
-        np.minimum.at(min_dist, (skind[owner], skind[idx]), dist)
-    # classes never seen within a neighbourhood of each other: no constraint beyond r
+    min_dist = closest_approach(pos, skind, sources)
+    # classes of different exemplars, or a class with one element: no constraint beyond r
     min_dist = np.where(np.isfinite(min_dist), 0.95 * min_dist, 0.0)
     if factor <= 0:
         raise InputError("exemplar: two elements share a position; cannot learn spacing")
@@ -451,6 +448,47 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     )
     prep.set_selection(selection)
     return prep
+
+
+def closest_approach(pos: np.ndarray, cls: np.ndarray, source: np.ndarray) -> np.ndarray:
+    """Closest approach of every two classes within one exemplar (k-d trees).
+
+    Measured over the whole exemplar, not only within neighbourhoods: two classes that
+    never come within a neighbourhood radius of each other (the large discs of
+    separate clusters) keep at least that distance in the output as well, instead of
+    being bound by their radii alone.
+
+    Parameters
+    ----------
+    pos : (n, 2) float
+    cls : (n,) int
+        Class of each element (its kind within its exemplar), 0 .. S-1.
+    source : (n,) int
+
+    Returns
+    -------
+    (S, S) float
+        inf for classes of different exemplars and for a class with one element paired
+        with itself.
+    """
+    ns = int(cls.max()) + 1 if len(cls) else 0
+    out = np.full((ns, ns), np.inf)
+    members = [np.flatnonzero(cls == a) for a in range(ns)]
+    trees = [cKDTree(pos[m]) if len(m) else None for m in members]
+    for a in range(ns):
+        for b in range(a, ns):
+            ma, mb = members[a], members[b]
+            if len(ma) == 0 or len(mb) == 0 or source[ma[0]] != source[mb[0]]:
+                continue
+            if a == b:
+                if len(ma) < 2:
+                    continue
+                d, _ = trees[a].query(pos[ma], k=2)
+                out[a, a] = float(d[:, 1].min())
+            else:
+                d, _ = trees[b].query(pos[ma], k=1)
+                out[a, b] = out[b, a] = float(d.min())
+    return out
 
 
 SIZE_STEP = 2.0  # bounding radii this many times apart are of different sizes
