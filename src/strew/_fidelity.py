@@ -1257,3 +1257,115 @@ def _local_map(res: _Sample, raw: _Raw, ex_stats: _Stats, metrics: dict[str, Met
             if worst is None or best > worst["score"]:
                 worst = {"row": r, "col": c, "bounds": list(bx.bounds), "score": best, "metric": which}
     return {"x0": x0, "y0": y0, "step": step, "window": side, "score": score, "worst_metric": worst_metric, "worst": worst}
+
+
+# -- figures ----------------------------------------------------------------------------------
+
+
+def _fill_of(shape: Any) -> str:
+    style = getattr(shape, "style", {}) or {}
+    fill = style.get("fill")
+    return fill if isinstance(fill, str) and fill.startswith("#") else "#808080"
+
+
+def draw_arrangement(ax: Any, arr: Arrangement, *, title: str = "") -> None:
+    """Draw ``arr``'s visible elements (filled by their kind's colour) into a matplotlib axes."""
+    from matplotlib.collections import PolyCollection
+
+    vis = _visible(arr)
+    sub = arr.select(vis)
+    if len(sub):
+        geoms = sub.geometry_of("area_geometry")
+        fills = [_fill_of(sub.shapes[k]) for k in sub.kinds]
+        colours = []
+        polys = []
+        for g, k in zip(geoms, sub.kind):
+            if g is None or g.is_empty:
+                continue
+            parts = getattr(g, "geoms", [g])
+            for p in parts:
+                if hasattr(p, "exterior"):
+                    polys.append(np.asarray(p.exterior.coords))
+                    colours.append(fills[k])
+        ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none"))
+    reg = arr.region
+    if reg is not None:
+        for ring in getattr(reg.geometry, "geoms", [reg.geometry]):
+            xy = np.asarray(ring.exterior.coords)
+            ax.plot(xy[:, 0], xy[:, 1], color="#999999", lw=0.6)
+    x0, y0, x1, y1 = reg.bounds if reg is not None else (arr.bounds if len(arr) else (0, 0, 1, 1))
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y1, y0)  # SVG's y-down
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    if title:
+        ax.set_title(title, fontsize=8)
+
+
+def draw_local_map(ax: Any, report: FidelityReport, result: Arrangement | None = None, *, title: str = "") -> None:
+    """Draw the local fidelity map (window scores; above 1 fails) over the result."""
+    if result is not None:
+        draw_arrangement(ax, result)
+    loc = report.local
+    score = np.asarray(loc["score"], float)
+    if score.size and loc["step"]:
+        x0, y0, step, side = loc["x0"], loc["y0"], loc["step"], loc["window"]
+        rows, cols = score.shape
+        # each window's score drawn on its central cell (the windows overlap by half)
+        extent = (x0 + 0.5 * step, x0 + 0.5 * step + cols * step, y0 + 0.5 * step + rows * step, y0 + 0.5 * step)
+        im = ax.imshow(np.ma.masked_invalid(score), extent=extent, origin="upper", cmap="RdYlGn_r", vmin=0.0, vmax=2.0, alpha=0.55, interpolation="nearest")
+        w = loc.get("worst")
+        if w:
+            b = w["bounds"]
+            ax.plot([b[0], b[2], b[2], b[0], b[0]], [b[1], b[1], b[3], b[3], b[1]], color="#c00000", lw=1.2)
+        ax.figure.colorbar(im, ax=ax, fraction=0.046, pad=0.02, label="window score (> 1 fails)")
+        ax.set_ylim(max(ax.get_ylim()), min(ax.get_ylim()))
+    ax.set_xticks([])
+    ax.set_yticks([])
+    ax.set_title(title or "local fidelity map", fontsize=8)
+
+
+def plot_fidelity(exemplar: Arrangement, result: Arrangement, report: FidelityReport, path: Any, *, title: str = "") -> Any:
+    """Write one PNG: the exemplar and the result side by side, g_ab(r) of both for each
+    kind pair, and the local fidelity map. Returns the path (written atomically)."""
+    import io as _io
+
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    from matplotlib.figure import Figure
+
+    from .io import atomic_write
+
+    pairs = list(report.g_exemplar)
+    shown = pairs[:6]
+    fig = Figure(figsize=(12, 7.5), dpi=100)
+    gs = fig.add_gridspec(2, max(3, len(shown)), height_ratios=[1.6, 1.0])
+    top = max(3, len(shown))
+    span = top // 3
+    ax_e = fig.add_subplot(gs[0, 0:span])
+    ax_r = fig.add_subplot(gs[0, span : 2 * span])
+    ax_m = fig.add_subplot(gs[0, 2 * span : top])
+    draw_arrangement(ax_e, exemplar, title=f"exemplar ({report.info.get('exemplar_visible', len(exemplar))} visible)")
+    verdict = "faithful" if report.faithful else f"not faithful: {', '.join(report.failures[:4])}{' ...' if len(report.failures) > 4 else ''}"
+    draw_arrangement(ax_r, result, title=f"result ({report.info.get('result_visible', len(result))} visible): {verdict}")
+    draw_local_map(ax_m, report, result)
+    for i, key in enumerate(shown):
+        ax = fig.add_subplot(gs[1, i])
+        ax.plot(report.r / report.s, report.g_exemplar[key], color="#444444", label="exemplar")
+        ax.plot(report.r / report.s, report.g_result[key], color="#d62728", label="result")
+        ax.axhline(1.0, color="#bbbbbb", lw=0.6)
+        m = report.metrics.get(f"g[{key}]")
+        flag = "" if m is None or not m.applicable else (" ok" if m.passed else " FAIL")
+        ax.set_title(f"g[{key}]{flag}", fontsize=8)
+        ax.set_xlabel("r / s", fontsize=7)
+        ax.tick_params(labelsize=7)
+        if i == 0:
+            ax.legend(fontsize=7)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    buf = _io.BytesIO()
+    fig.savefig(buf, format="png")
+    return atomic_write(path, buf.getvalue())

@@ -24,6 +24,7 @@ __all__ = ["main", "cli", "COMMANDS"]
 COMMANDS: dict[str, tuple[str, str]] = {
     "render": ("strew.cli.render", "Convert between .json, .svg and .png."),
     "info": ("strew.cli.info", "Counts per kind, bounds and metrics of an arrangement."),
+    "compare": ("strew.cli.compare", "How faithfully a result continues its exemplar (fidelity metrics)."),
     "demo": ("strew.cli.demo", "Write a gallery of examples (SVG, PNG and index.html)."),
     "ornament": ("strew.cli.ornament", "Grow rule-driven floral ornament into a panel (adaptive clip art)."),
     "run": ("strew.cli.run", "Run a program script (planar maps, partitions, mappers) and write its arrangement."),

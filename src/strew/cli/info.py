@@ -19,6 +19,9 @@ def command(input: str, region: str | None, as_json: bool) -> None:
     arr = load(input)
     reg = load_region(region) if region else None
     s = metrics.summary(arr, reg)
+    # the single-arrangement parts of the fidelity measures (strew compare)
+    s["nearest_neighbor_by_kind"] = metrics.nearest_neighbor_distances(arr)
+    s["pair_correlation"] = _pair_correlation(arr, reg)
     if as_json:
         click.echo(json.dumps(s, indent=2))
         return
@@ -44,5 +47,33 @@ def command(input: str, region: str | None, as_json: bool) -> None:
     ]
     if "outside" in s:
         lines.append(f"outside region    {s['outside']} elements (region area {s['region_area']:.4g})")
+    for key, v in s["nearest_neighbor_by_kind"].items():
+        lines.append(f"nearest {key:<10s} median {v['median']:.4g}, mean {v['mean']:.4g} ({v['count']} elements)")
+    pc = s["pair_correlation"]
+    if pc is not None:
+        for key, g in pc["g"].items():
+            finite = [(r, v) for r, v in zip(pc["r"], g) if v is not None]
+            if finite:
+                rp, gp = max(finite, key=lambda t: t[1])
+                lines.append(f"g({key}) peak {gp:.3g} at r {rp:.4g}; r up to {pc['r_max']:.4g}")
     for line in lines:
         console.print(line, highlight=False)
+
+
+def _pair_correlation(arr, reg):  # type: ignore[no-untyped-def]
+    """g_ab(r) as JSON-ready lists (NaN -> null), or None when it is undefined."""
+    import math
+
+    from .. import metrics
+    from .._errors import InputError
+
+    try:
+        pc = metrics.pair_correlation(arr, reg)
+    except InputError:
+        return None
+
+    def clean(v: float) -> float | None:
+        v = float(v)
+        return v if math.isfinite(v) else None
+
+    return {"r": [float(r) for r in pc["r"]], "r_max": float(pc["r_max"]), "g": {k: [clean(v) for v in g] for k, g in pc["g"].items()}}
