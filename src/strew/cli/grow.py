@@ -22,7 +22,7 @@ from ._common import check_outputs, domain_options, echo, out_option, progress_b
 @click.option("--spray", "spray_path", type=click.Path(dir_okay=False), default=None,
               help="Spray path (SVG or JSON): only seeds within --spray-radius of it grow.")
 @click.option("--spray-radius", type=float, default=None, help="Radius of the spray tool.")
-@click.option("--priority", multiple=True, metavar="KIND=P", help="Seed priority of a kind (§5.1) [default: 0].")
+@click.option("--priority", multiple=True, metavar="KIND=P", help="Seed priority of a kind (§5.1) [default: larger kinds first when kinds differ in size, else 0].")
 @click.option("--jitter-scale", type=float, default=0.0, show_default=True, help="Relative scale noise S: x(1 ± S).")
 @click.option("--jitter-rotation", type=float, default=0.0, show_default=True, help="Rotation noise in degrees (±).")
 @click.option("--jitter-color", type=float, default=0.0, show_default=True, help="Colour noise C: fill x(1 ± C).")
@@ -126,7 +126,7 @@ def command(
             boundary=boundary,
             spray=spray,
             spray_radius=spray_radius,
-            priority=prio,
+            priority=prio or None,
             jitter_scale=jitter_scale,
             jitter_rotation=math.radians(jitter_rotation),
             jitter_color=jitter_color,

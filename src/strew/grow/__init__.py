@@ -35,6 +35,7 @@ __all__ = [
     "match_references",
     "order_target",
     "relax_positions",
+    "size_priority",
     "MODES",
 ]
 
@@ -51,6 +52,41 @@ def _polyline(a: Any, name: str) -> np.ndarray:
     if not np.all(np.isfinite(p)):
         raise InputError(f"{name}: NaN or inf coordinate")
     return p
+
+
+#: Kinds whose bounding radii differ by this factor or more are of different sizes.
+SIZE_STEP = 1.5
+
+
+def size_priority(exemplar: Arrangement) -> dict[str, float]:
+    """Default priorities (§5.1): larger kinds first, when the exemplar's kinds differ in size.
+
+    §5.1 follows Wong et al. in "placing the larger elements at first and filling spaces
+    with the smaller elements later", with priorities the user gives. Without them, kinds
+    that occur are ranked by size: sorted by bounding radius (times their median scale),
+    a kind starts a new, higher level when it is at least :data:`SIZE_STEP` times the
+    next smaller kind. One level (kinds of about one size) gives no priority.
+    Not in the paper as a default: large elements otherwise lose their places to small
+    ones grown first, are under-produced and leave the small ones in scatter.
+
+    Returns
+    -------
+    dict of kind name to float
+        Empty when every kind is of about one size.
+    """
+    sizes = []
+    for i, name in enumerate(exemplar.kinds):
+        sel = exemplar.kind == i
+        if sel.any():
+            sizes.append((float(exemplar.shapes[name].radius) * float(np.median(np.abs(exemplar.scale[sel]))), name))
+    sizes.sort()
+    level, out, prev = 0, {}, None
+    for r, name in sizes:
+        if prev is not None and r >= SIZE_STEP * prev:
+            level += 1
+        prev = r
+        out[name] = float(level)
+    return out if level > 0 else {}
 
 
 def grow(
@@ -109,7 +145,8 @@ def grow(
     priority : mapping of kind name to float, optional
         §5.1: a seed grows only when no seed of higher priority lies within ``5 * l``
         (``l`` the mean reference edge length). Kinds default to 0; seeds without a
-        symbol id take the lowest priority.
+        symbol id take the lowest priority. Without it, kinds of different sizes are
+        ranked larger first (:func:`size_priority`); ``{}`` turns that off.
     jitter_scale : float
         Relative scale noise: each scale is multiplied by ``1 + U(-s, s)`` (§3).
     jitter_rotation : float
@@ -180,6 +217,8 @@ def grow(
 
     check_work("--count" if count is not None else "--size/--region", count=count, region=region, per_element=element_area(ref.exemplar))
     kinds = ref.exemplar.kinds
+    if priority is None:
+        priority = size_priority(ref.exemplar)
     prio: dict[str, float] = {}
     for name, v in dict(priority or {}).items():
         if name not in kinds:

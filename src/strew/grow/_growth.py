@@ -65,6 +65,8 @@ class GrowParams:
     #: flow mode: fit the rotation to the neighbours near the flow direction (see
     #: ``_Grower.choose``); False turns each reference to the flow exactly (§5.3)
     flow_fit: bool = True
+    #: a seed moves to its fitted position only within this many l_short
+    fit_reach: float = 0.5
     #: flow mode: the largest turn of an element's frame from the flow direction
     flow_max_turn: float = math.pi / 18
 
@@ -430,6 +432,10 @@ class _Grower:
         x, y = self.xy[i]
         for j in self.near(x, y, 5 * self.l, (SEED,)):
             if j != i and self.seed_priority(j) > pi:
+                # a seed outside the spray area cannot grow now: it does not hold others
+                # back (they would wait for it, and the spray would stall)
+                if self.spray_area is not None and not shapely.contains_xy(self.spray_area, *self.xy[j]):
+                    continue
                 return True
         return False
 
@@ -649,7 +655,7 @@ class _Grower:
         fx = float(np.mean(pos[:, 0] - (c * rr[:, 0] - sn * rr[:, 1])))
         fy = float(np.mean(pos[:, 1] - (sn * rr[:, 0] + c * rr[:, 1])))
         ox, oy = self.xy[s]
-        if (fx - ox) ** 2 + (fy - oy) ** 2 > self.l_short**2 or not self.in_domain(fx, fy):
+        if (fx - ox) ** 2 + (fy - oy) ** 2 > (self.p.fit_reach * self.l_short) ** 2 or not self.in_domain(fx, fy):
             return
         if self.crosses_boundary((ox, oy), (fx, fy)):
             return

@@ -121,6 +121,10 @@ class SprayGrowth:
         if int(relax_every) < 1:
             raise InputError(f"relax_every: must be at least 1, got {relax_every!r}")
         kinds = ref.exemplar.kinds
+        if priority is None:
+            from . import size_priority  # the package's default (larger kinds first)
+
+            priority = size_priority(ref.exemplar)
         for name in priority or {}:
             if name not in kinds:
                 raise InputError(f"priority: unknown kind {name!r}")
