@@ -1,0 +1,221 @@
+"""Fidelity suite: do grow (Ijiri et al. 2008) and synth (Davison et al. 2018) continue
+their exemplar? (issue 12)
+
+The twelve exemplars of ``examples/fidelity/make.py`` (hexagonal lattice, noisy rows,
+two-colour bricks, oriented scales, irregular stones, two sizes, clusters, three sizes
+1:2:4, rings, stripes, sparse elements with voids, sticks) each fill a rectangle
+``--scale`` times the exemplar's frame on each side (default 3.5: about 12x its area) by
+
+- ``grow:fixed`` and, where orientation matters (lattices, scales, rings, sticks),
+  ``grow:rotate``: ``strew.grow.grow(exemplar, region=..., mode=..., rng=seed)``;
+- ``synth``: ``strew.synth.synthesize(exemplar, region, rng=seed)``;
+- the baseline, ``copy``: the exemplar tiled over the same region (no method at all).
+  Lattice, brick, scale, ring and cluster exemplars are one period of their texture, so
+  their copies tile seamlessly and must pass; the others show seams where frames meet.
+
+Each output is measured with ``strew.metrics.fidelity`` against its exemplar. The table
+has one row per exemplar x method (x seed): the verdict, then for each metric family the
+worst ``value/tolerance`` (a star marks a failure), and the seconds the method took. With
+``--detail`` every metric is printed. Failures are expected today: this table is what
+issues 13 (synth) and 14 (grow) must turn green. The JSON (every metric's value,
+tolerance, exemplar and result statistics, the worst window) goes to
+``benchmarks/results/fidelity.json``, and a contact sheet (exemplar, outputs with their
+local fidelity maps) to ``docs/fidelity.png`` (``--sheet PATH``; not in quick mode).
+
+    python benchmarks/fidelity.py [--quick] [--only NAME[,NAME]] [--method grow|synth|copy]
+                                  [--seeds 1-5] [--scale 3.5] [--detail] [--sheet PATH]
+
+``--quick``: scale 3.2 (about 10x the area), no ``grow:rotate``, no Eq. 5, no sheet.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from _runner import Bench, parse_args
+
+from strew import Arrangement, Region
+from strew.arrangement import concat
+from strew.metrics import fidelity
+
+ROOT = Path(__file__).resolve().parents[1]
+ROTATE = ("hex_lattice", "rows_noisy", "bricks", "scales", "rings", "sticks")
+FAMILIES = ("fraction", "density", "g", "nn", "regularity", "orientation", "empty_circle", "eq5")
+
+
+def _suite() -> Any:
+    spec = importlib.util.spec_from_file_location("fidelity_make", ROOT / "examples" / "fidelity" / "make.py")
+    mod = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def _seeds(text: str) -> list[int]:
+    out: list[int] = []
+    for part in text.split(","):
+        if "-" in part:
+            a, b = part.split("-")
+            out.extend(range(int(a), int(b) + 1))
+        else:
+            out.append(int(part))
+    return out
+
+
+def tiled(ex: Arrangement, region: Region) -> Arrangement:
+    """The exemplar repeated frame by frame over ``region``'s bounding box."""
+    x0, y0, x1, y1 = ex.region.bounds
+    w, h = x1 - x0, y1 - y0
+    rx0, ry0, rx1, ry1 = region.bounds
+    parts = []
+    for i in range(int(math.ceil((rx1 - rx0) / w))):
+        for j in range(int(math.ceil((ry1 - ry0) / h))):
+            parts.append(Arrangement(ex.shapes, ex.kind, ex.x - x0 + rx0 + i * w, ex.y - y0 + ry0 + j * h, ex.rotation, ex.scale, columns=ex.columns))
+    out = concat(parts)
+    return out.select(region.contains(out.xy)).replace(region=region)
+
+
+def run(method: str, ex: Arrangement, region: Region, seed: int) -> Arrangement:
+    if method == "copy":
+        return tiled(ex, region)
+    if method.startswith("grow"):
+        from strew.grow import grow
+
+        return grow(ex, region=region, mode=method.split(":")[1], rng=seed)
+    from strew.synth import synthesize
+
+    return synthesize(ex, region, rng=seed)
+
+
+def cell(report: Any, family: str) -> str:
+    worst = None
+    for name, m in report.metrics.items():
+        if name.split("[")[0].split(".")[0] != family or not m.applicable:
+            continue
+        ratio = m.value / m.tolerance if m.tolerance > 0 else (math.inf if m.value > 0 else 0.0)
+        if worst is None or ratio > worst[0]:
+            worst = (ratio, m)
+    if worst is None:
+        return "-"
+    m = worst[1]
+    return f"{m.value:.3g}/{m.tolerance:.3g}{'' if m.passed else '*'}"
+
+
+def contact_sheet(rows: list[tuple[str, Arrangement, list[tuple[str, Arrangement, Any]]]], path: Path) -> None:
+    import io
+
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    from matplotlib.figure import Figure
+
+    from strew._fidelity import draw_arrangement, draw_local_map
+    from strew.io import atomic_write
+
+    cols = 1 + max(len(r[2]) for r in rows)
+    fig = Figure(figsize=(2.6 * cols, 2.5 * len(rows)), dpi=72)
+    for i, (name, ex, outs) in enumerate(rows):
+        ax = fig.add_subplot(len(rows), cols, i * cols + 1)
+        draw_arrangement(ax, ex, title=f"{name}: exemplar")
+        for j, (method, out, rep) in enumerate(outs):
+            ax = fig.add_subplot(len(rows), cols, i * cols + 2 + j)
+            verdict = "faithful" if rep.faithful else f"{len(rep.failures)} fail"
+            draw_local_map(ax, rep, out, title=f"{method}: {verdict}")
+    fig.tight_layout()
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png")
+    atomic_write(path, buf.getvalue())
+    print(f"contact sheet written to {path}")
+
+
+def main() -> int:
+    def extra(p: Any) -> None:
+        p.add_argument("--only", default=None, help="exemplar names, comma-separated")
+        p.add_argument("--method", default=None, choices=["grow", "synth", "copy"], help="one method only (grow: fixed and rotate)")
+        p.add_argument("--seeds", default="1", help="seeds, e.g. 1-5 or 1,3")
+        p.add_argument("--scale", type=float, default=None, help="region side / exemplar frame side (default 3.5; quick 3.2)")
+        p.add_argument("--detail", action="store_true", help="print every metric")
+        p.add_argument("--sheet", default=None, help="contact sheet PNG (default docs/fidelity.png; none in quick mode)")
+
+    args = parse_args(__doc__.splitlines()[0], extra)
+    suite = _suite()
+    names = list(suite.NAMES) if not args.only else [n.strip() for n in args.only.split(",")]
+    unknown = [n for n in names if n not in suite.NAMES]
+    if unknown:
+        print(f"unknown exemplar(s): {', '.join(unknown)}; use {', '.join(suite.NAMES)}", file=sys.stderr)
+        return 2
+    scale = args.scale if args.scale is not None else (3.2 if args.quick else 3.5)
+    seeds = _seeds(args.seeds)
+    eq5 = not args.quick
+    bench = Bench("fidelity", f"fidelity of grow and synth to their exemplar, region {scale:g}x the frame's side", baseline="copy: the exemplar tiled", json_path=args.json)
+    sheet_rows = []
+    totals: dict[str, list[int]] = {}
+    t_all = time.perf_counter()
+    for name in names:
+        ex = suite.make_exemplar(name)
+        x0, y0, x1, y1 = ex.region.bounds
+        region = Region.rectangle(scale * (x1 - x0), scale * (y1 - y0))
+        methods = ["copy", "grow:fixed"] + (["grow:rotate"] if name in ROTATE and not args.quick else []) + ["synth"]
+        if args.method:
+            methods = [m for m in methods if m.split(":")[0] == args.method]
+        outs = []
+        for method in methods:
+            for seed in seeds if method != "copy" else seeds[:1]:
+                t0 = time.perf_counter()
+                out = run(method, ex, region, seed)
+                dt = time.perf_counter() - t0
+                rep = fidelity(ex, out, eq5=eq5)
+                row: dict[str, Any] = {"method": method, "seed": seed, "n": len(out), "verdict": "pass" if rep.faithful else f"FAIL {len(rep.failures)}"}
+                for fam in FAMILIES:
+                    if fam == "eq5" and not eq5:
+                        continue
+                    row[fam] = cell(rep, fam)
+                row["s"] = round(dt, 2)
+                bench.row(name, **row)
+                bench.rows[-1]["report"] = rep.to_dict() | {"local": {"worst": rep.local["worst"]}}
+                totals.setdefault(method, [0, 0])
+                totals[method][0] += int(rep.faithful)
+                totals[method][1] += 1
+                if args.detail:
+                    print(f"\n{name} / {method} / seed {seed}: {'faithful' if rep.faithful else 'not faithful'}")
+                    for r in rep.table():
+                        print("   " + "  ".join(f"{c:>14s}" if k else f"{c:<26s}" for k, c in enumerate(r)))
+                if seed == seeds[0]:
+                    outs.append((method, out, rep))
+                print(f"  {name:13s} {method:12s} seed {seed}: {row['verdict']:7s} ({len(out)} elements, {dt:.1f} s)", flush=True)
+        sheet_rows.append((name, ex, [o for o in outs if o[0] != "copy"]))
+    # the reports are long: the table shows the cells, the JSON keeps everything
+    reports = [r.pop("report") for r in bench.rows]
+    print()
+    print(bench.table())
+    for r, rep in zip(bench.rows, reports):
+        r["report"] = rep
+    summary = ", ".join(f"{m} {p}/{n} faithful" for m, (p, n) in totals.items())
+    print(f"\n{summary}; cells: worst value/tolerance of the family, * = fails; total {time.perf_counter() - t_all:.0f} s")
+    bench.rows.append({"case": "summary", **{m: f"{p}/{n}" for m, (p, n) in totals.items()}})
+    import json
+
+    bench.json_path.parent.mkdir(parents=True, exist_ok=True)
+    bench.json_path.write_text(json.dumps({"benchmark": bench.name, "title": bench.title, "baseline": bench.baseline, "scale": scale, "seeds": seeds, "eq5": eq5, "rows": bench.rows}, indent=1, default=_jsonable) + "\n")
+    print(f"figures written to {bench.json_path}")
+    if not args.quick and sheet_rows and any(r[2] for r in sheet_rows):
+        contact_sheet(sheet_rows, Path(args.sheet) if args.sheet else ROOT / "docs" / "fidelity.png")
+    return 0
+
+
+def _jsonable(v: Any) -> Any:
+    if isinstance(v, np.generic):
+        return v.item()
+    if isinstance(v, np.ndarray):
+        return v.tolist()
+    raise TypeError(type(v).__name__)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
