@@ -131,7 +131,7 @@ def test_tapered_stroke_width_varies_along_the_curve():
     upper = outline[:11]
     assert upper[0, 1] == pytest.approx(1.0) and upper[-1, 1] == pytest.approx(0.0)
     assert np.all(np.diff(upper[:, 1]) < 0)
-    assert set(GENERIC_STYLES) == {"outline", "tapered", "filigree"}
+    assert set(GENERIC_STYLES) == {"outline", "tapered", "filigree", "skeletal", "skeletal-leafy", "skeletal-beads", "skeletal-ribbon"}
 
 
 def test_unknown_style_exit_2(tmp_path, capsys):

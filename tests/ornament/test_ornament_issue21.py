@@ -68,6 +68,7 @@ def _stem_hits(orn) -> int:
             by_centre[tuple(np.round(e.proxy.center, 9))] = e
     hits = 0
     others = [(e, pr.geometry) for e in orn.elements if e.type != "seed" for pr in e.proxies]
+    tree = shapely.STRtree([g for _, g in others])
     for s in (e for e in orn.elements if e.type == "stem"):
         a, b = np.asarray(s.proxy.start), np.asarray(s.proxy.end)
         ea, eb = by_centre[tuple(np.round(a, 9))], by_centre[tuple(np.round(b, 9))]
@@ -78,12 +79,13 @@ def _stem_hits(orn) -> int:
             continue
         seg = shapely.LineString([a + ra * u, b - rb * u])
         mid = (a + b) / 2
-        for e, g in others:
+        for k in tree.query(seg, predicate="intersects").tolist():
+            e, g = others[k]
             if e is s or e is ea or e is eb:
                 continue
             if e.type == "leaf" and np.allclose(e.proxies[0].polyline()[0], mid):
                 continue
-            hits += bool(seg.intersects(g))
+            hits += 1
     return hits
 
 
@@ -99,8 +101,8 @@ def _largest_gap_near_edge(orn, region, band: float) -> float:
     return float(clear[d_edge < band].max())
 
 
-@pytest.mark.parametrize("region", [Region.rectangle(100, 100), Region.circle(50, 50, 50),
-                                    Region(shapely.Polygon([(0, 0), (120, 0), (120, 60), (60, 60), (60, 120), (0, 120)]))],
+@pytest.mark.parametrize("region", [Region.rectangle(60, 60), Region.circle(30, 30, 30),
+                                    Region(shapely.Polygon([(0, 0), (80, 0), (80, 40), (40, 40), (40, 80), (0, 80)]))],
                          ids=["square", "disc", "L"])
 def test_flower_stems_cross_nothing_and_buds_fill_the_edge_band(region):
     orn = grow_elements("flowers", region, rng=2)
@@ -110,3 +112,60 @@ def test_flower_stems_cross_nothing_and_buds_fill_the_edge_band(region):
     # a full flower has radius 3, so Appendix A alone leaves gaps of about that radius
     # along the edge; the buds (radius 1.2-2) leave none wider than a bud
     assert _largest_gap_near_edge(orn, region, 6.0) < 2.0
+
+
+def _unrelated_overlaps(orn) -> int:
+    """Pairs of elements whose proxies meet though neither is the other's parent and
+    they are not siblings (children of one rule invocation touch by design)."""
+    els = [e for e in orn.elements if e.type != "seed"]
+    geoms = [shapely.union_all([pr.geometry for pr in e.proxies]) for e in els]
+    tree = shapely.STRtree(geoms)
+    a, b = tree.query(geoms, predicate="intersects")
+    bad = 0
+    for i, j in zip(a.tolist(), b.tolist()):
+        if i >= j:
+            continue
+        ei, ej = els[i], els[j]
+        if ej.parent is ei or ei.parent is ej or (ei.parent is not None and ei.parent is ej.parent):
+            continue
+        bad += 1
+    return bad
+
+
+def _largest_gap(orn, region) -> float:
+    geoms = shapely.union_all([pr.geometry for e in orn.elements if e.type != "seed" for pr in e.proxies])
+    x0, y0, x1, y1 = region.bounds
+    g = np.mgrid[x0 + 0.25 : x1 : 0.5, y0 + 0.25 : y1 : 0.5].reshape(2, -1).T
+    pts = shapely.points(g)
+    clear = np.minimum(shapely.distance(geoms, pts), shapely.distance(region.boundary, pts))
+    return float(clear.max())
+
+
+@pytest.mark.parametrize("name, size, types", [("vase", (70.0, 60.0), {"vine", "lotus", "peony", "hook", "teardrop"}),
+                                               ("willow", (70.0, 60.0), {"stem", "leaf"})])
+def test_vase_and_willow_fill_the_panel_without_overlaps(name, size, types):
+    region = Region.rectangle(*size)
+    orn = grow_elements(name, region, rng=3)
+    assert {e.type for e in orn.elements} - {"seed"} == types
+    assert _unrelated_overlaps(orn) == 0
+    # no empty circle much larger than the pattern's smallest growth is left
+    assert _largest_gap(orn, region) < 4 * orn.params["min_radius"]
+    if name == "vase":  # the flowers sit on the grid (Fig. 9's "predefined locations")
+        from strew.ornament.patterns.vase import GRID
+
+        centres = np.array([e.proxy.center for e in orn.elements if e.type in ("lotus", "peony")])
+        assert len(centres) >= 4
+        assert np.allclose(centres / GRID, np.round(centres / GRID))
+
+
+def test_skeletal_stroke_styles_bend_art_along_every_curve():
+    orn = grow_elements("spirals", Region.rectangle(50, 40), rng=1)
+    outline = orn.render("outline")
+    assert len(outline) > 10
+    for style in ("skeletal", "skeletal-leafy", "skeletal-beads", "skeletal-ribbon"):
+        arr = orn.render(style)
+        assert len(arr) == len(outline)  # one mark per curve proxy, as the outline
+        assert arr.meta["params"]["style"] == style
+        x0, y0, x1, y1 = arr.bounds
+        assert x0 > -3 and y0 > -3 and x1 < 53 and y1 < 43  # the art hugs its curves
+        assert all(s.style.get("fill") not in (None, "none") for s in arr.shapes.values())

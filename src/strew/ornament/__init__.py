@@ -109,7 +109,7 @@ def grow_ornament(
     ----------
     pattern : Pattern or str
         A :class:`Pattern`, a built-in name (``dots``, ``flowers``, ``spirals``,
-        ``hierarchy``) or the path of a Python rule file.
+        ``hierarchy``, ``vase``, ``willow``) or the path of a Python rule file.
     region : Region
         The panel: any polygon, holes included.
     seeds : (k, 2) float, optional
@@ -130,7 +130,9 @@ def grow_ornament(
     max_elements : int, optional
         Stop after this many elements (seeds included).
     style : str
-        Rendering style (``outline``, ``tapered``, ``filigree`` or one of the pattern's).
+        Rendering style (``outline``, ``tapered``, ``filigree``, the skeletal strokes of
+        Fig. 17 ``skeletal``, ``skeletal-leafy``, ``skeletal-beads``, ``skeletal-ribbon``,
+        or one of the pattern's).
     progress, should_cancel : callable, optional
         Progress report and cancellation check.
     **render_options

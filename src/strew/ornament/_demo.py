@@ -1,4 +1,5 @@
-"""Gallery section: adaptive clip art (Wong et al. 1998), all four built-in patterns on two panels."""
+"""Gallery section: adaptive clip art (Wong et al. 1998), every built-in pattern on two
+panels, and the skeletal strokes of Fig. 17 on one spiral design."""
 
 from __future__ import annotations
 
@@ -28,7 +29,11 @@ _ITEMS = [
     ("flowers", "ink", ("rect", "arch"), {}),
     ("spirals", "vine", ("rect", "arch"), {}),
     ("hierarchy", "color", ("rect", "ring"), {"ring": [(35, 4)]}),
+    ("vase", "vase", ("rect", "arch"), {}),
+    ("willow", "morris", ("rect", "ring"), {"ring": [(35, 4)]}),
 ]
+# Fig. 17: one design, four skeletal strokes
+_STROKES = ("skeletal", "skeletal-leafy", "skeletal-beads", "skeletal-ribbon")
 
 
 def items(rng: np.random.Generator) -> list[DemoItem]:
@@ -48,4 +53,15 @@ def items(rng: np.random.Generator) -> list[DemoItem]:
                     description=f"{orn.pattern.description} {n} elements, style '{style}'.",
                 )
             )
+    text, region = panels["rect"]
+    orn = grow_elements("spirals", region, rng=int(rng.integers(2**31)))
+    for style in _STROKES:
+        out.append(
+            DemoItem(
+                name=f"ornament-spirals-{style}",
+                title=f"Ornament: spirals with {style} strokes",
+                arrangement=orn.render(style),
+                description=f"Fig. 17: the same spiral design rendered with a skeletal stroke (style '{style}').",
+            )
+        )
     return out

@@ -52,7 +52,7 @@ __all__ = [
 SUCCESS = True
 FAILURE = False
 
-BUILTIN_PATTERNS = ("dots", "flowers", "spirals", "hierarchy")
+BUILTIN_PATTERNS = ("dots", "flowers", "spirals", "hierarchy", "vase", "willow")
 
 
 @dataclass(frozen=True)

@@ -232,15 +232,78 @@ def _taper(el: Element, rc: RenderContext, reverse: bool) -> list[Mark]:
     return marks
 
 
+def _stroke_art(kind: str, n: int = 48) -> list[np.ndarray]:
+    """Flat art of a skeletal stroke, in the stroke's frame (u along, v across in
+    [-1, 1]): closed outlines, drawn filled. Four strokes, as the four of Fig. 17."""
+    u = np.linspace(0.0, 1.0, n)
+    if kind == "brush":  # a calligraphic brush: swelling, slightly asymmetric
+        top = np.sin(np.pi * u) ** 0.7
+        bottom = -0.55 * np.sin(np.pi * u) ** 1.2
+        return [np.r_[np.c_[u, top], np.c_[u[::-1], bottom[::-1]]]]
+    if kind == "leafy":  # a thin vine with leaves alternating from side to side
+        art = [np.r_[np.c_[u, np.full(n, 0.12)], np.c_[u[::-1], np.full(n, -0.12)]]]
+        t = np.linspace(0.0, 1.0, 16)
+        for k, c in enumerate(np.linspace(0.12, 0.88, 5)):
+            side = 1.0 if k % 2 == 0 else -1.0
+            along = c + 0.16 * t
+            top = side * (0.1 + 0.9 * np.sin(np.pi * t) ** 0.8 * (1 - 0.3 * t))
+            art.append(np.r_[np.c_[along, top], np.c_[along[::-1], np.full(16, side * 0.1)]])
+        return art
+    if kind == "beads":  # a string of beads shrinking along the path
+        art = []
+        t = np.linspace(0.0, 2 * np.pi, 20, endpoint=False)
+        for k, c in enumerate(np.linspace(0.08, 0.92, 6)):
+            r = 0.9 * (1 - 0.11 * k)
+            art.append(np.c_[c + 0.07 * r * np.cos(t), r * np.sin(t)])
+        return art
+    if kind == "ribbon":  # a twisting ribbon: width follows |cos|, two lobes per length
+        w = 0.15 + 0.85 * np.abs(np.cos(2 * np.pi * u))
+        return [np.r_[np.c_[u, w], np.c_[u[::-1], -w[::-1]]]]
+    raise InputError(f"unknown stroke {kind!r}")
+
+
+SKELETAL_STROKES = ("brush", "leafy", "beads", "ribbon")
+
+
+def _skeletal(el: Element, rc: RenderContext, kind: str) -> list[Mark]:
+    """Every curve proxy drawn with a skeletal stroke (Fig. 17; Hsu and Lee 1994): flat
+    art bent along it. Closed proxies (circles, polygons) carry the art along their
+    outline, filled as a band (even-odd)."""
+    marks = []
+    for pr in el.proxies:
+        if isinstance(pr, Point):
+            continue
+        pts = _curve_points(pr)
+        closed = pts is None
+        if closed:
+            pts = pr.polyline()
+            pts = np.vstack([pts, pts[:1]])
+        length = float(np.hypot(*np.diff(pts, axis=0).T).sum())
+        if not length > 0:
+            continue
+        w = min(5 * rc.line_width, max(2 * rc.line_width, 0.12 * length))
+        if closed:
+            w = min(w, 0.8 * rc.line_width * 4)
+        art = [skeletal_stroke(pts, a, w) for a in _stroke_art(kind)]
+        marks.append(Mark(art, closed=True, fill=INK, stroke="none"))
+    return marks
+
+
 GENERIC_STYLES: dict[str, Any] = {
     "outline": lambda el, rc: _outline(el, rc),
     "tapered": lambda el, rc: _taper(el, rc, False),
     "filigree": lambda el, rc: _taper(el, rc, True),
+    "skeletal": lambda el, rc: _skeletal(el, rc, "brush"),
+    **{f"skeletal-{k}": (lambda el, rc, k=k: _skeletal(el, rc, k)) for k in SKELETAL_STROKES[1:]},
 }
 GENERIC_HELP = {
     "outline": "every proxy in outline (the paper's default rendering)",
     "tapered": "curves as strokes thinning from start to end, closed proxies filled",
     "filigree": "curves thickening from start to end, closed proxies in outline",
+    "skeletal": "every curve as a skeletal stroke, a brush bent along it (Fig. 17)",
+    "skeletal-leafy": "skeletal strokes of a vine with alternating leaves (Fig. 17)",
+    "skeletal-beads": "skeletal strokes of shrinking beads (Fig. 17)",
+    "skeletal-ribbon": "skeletal strokes of a twisting ribbon (Fig. 17)",
 }
 
 

@@ -1,0 +1,199 @@
+"""``vase``: flowers on a grid, delivered by a curving vine; hooks and teardrops fill the
+rest (Wong et al. 1998, §5, Fig. 9, after a red Chinese vase).
+
+"The pattern has two types of stylized flowers laid down in a grid pattern and connected
+by curving stems. The remaining space is filled with small hook-shaped curves, which
+themselves are adorned with smaller teardrop shapes. [...] the large vine appears to
+deliver its flowers to predefined locations on the grid" (§5). Two phases (§5's state
+preconditions):
+
+``vines``
+    From the point of a vine (or the seed) nearest the empty circle C, a cubic Bézier vine
+    curves to the free grid point nearest C's centre, and a flower opens there: a
+    ``lotus`` or a ``peony``, by the grid point's parity. The grid (spacing
+    :data:`GRID`) is fixed in the panel's coordinates: the flowers land on it wherever
+    the vine comes from.
+``hooks``
+    A small hook curls from the nearest element into C, ending in a teardrop.
+
+This file is a complete rule file: copy it to start your own.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from strew.ornament import FAILURE, SUCCESS, Bezier, Circle, Mark, Pattern, Point, angle_of, tapered_stroke, unit
+
+GRID = 22.0  # spacing of the flowers' grid
+FLOWER_RADIUS = 6.0
+REACH = 1.6 * GRID  # longest vine
+HOOK_MAX = 7.0  # longest hook
+RED = "#a3231f"
+GOLD = "#d9a441"
+
+pattern = Pattern(
+    "vase",
+    state={"flowers": []},
+    min_radius=1.5,
+    phases=[("vines", 5.0), ("hooks", None)],
+    description="Fig. 9: lotus and peony flowers on a grid joined by a vine; hooks with teardrops fill the rest.",
+    draw_order=["vine", "hook", "lotus", "peony", "teardrop"],
+)
+
+pattern.element("seed", Point)
+pattern.element("vine", Bezier, depth=0)
+pattern.element("lotus", Circle)
+pattern.element("peony", Circle)
+pattern.element("hook", Bezier, turn=1.0)
+pattern.element("teardrop", Circle)
+
+
+def _nearest_on(el, target):
+    """The point of element ``el``'s curve (or centre) nearest ``target``, with the
+    tangent there: ((2,), (2,))."""
+    pr = el.proxy
+    if isinstance(pr, Bezier):
+        ts = np.linspace(0.1, 1.0, 19)
+        pts = pr.point_at(ts)
+        k = int(np.argmin(np.hypot(*(pts - target).T)))
+        return pts[k], pr.tangent_at(float(ts[k]))
+    c = np.asarray(pr.center, dtype=float)
+    d = target - c
+    n = float(np.hypot(*d))
+    u = d / n if n > 0 else np.array([1.0, 0.0])
+    r = pr.radius if isinstance(pr, Circle) else 0.0
+    return c + r * u, u
+
+
+def _free_grid_point(ctx, near):
+    """The grid point nearest ``near`` that holds no flower yet, inside the panel."""
+    i0, j0 = round(near[0] / GRID), round(near[1] / GRID)
+    best = None
+    for i in range(i0 - 1, i0 + 2):
+        for j in range(j0 - 1, j0 + 2):
+            if (i, j) in ctx.state.flowers:
+                continue
+            p = np.array([i * GRID, j * GRID])
+            d = float(np.hypot(*(p - near)))
+            if best is None or d < best[0]:
+                best = (d, (i, j), p)
+    return best
+
+
+def grow_vine(ctx, parent, start, tangent, depth):
+    g, rho = ctx.goal.center, ctx.goal.radius
+    found = _free_grid_point(ctx, g)
+    if found is None:
+        return FAILURE
+    _, ij, p = found
+    # the grid point must lie in C's neighbourhood, and within the vine's reach
+    if float(np.hypot(*(p - g))) > rho + 0.5 * GRID or float(np.hypot(*(p - start))) > REACH:
+        return FAILURE
+    flower = ctx.new_child("lotus" if (ij[0] + ij[1]) % 2 == 0 else "peony")
+    flower.proxy.set(p, FLOWER_RADIUS)
+    if ctx.intersects(flower) or not ctx.inside(flower):
+        ctx.dynamic.remove(flower)
+        return FAILURE
+    chord = p - start
+    length = float(np.hypot(*chord))
+    if length <= FLOWER_RADIUS + 1.0:
+        ctx.dynamic.remove(flower)
+        return FAILURE
+    end = p - FLOWER_RADIUS * unit(chord)
+    t_a = tangent if float(np.dot(tangent, chord)) >= 0 else -tangent
+    # the vine arrives curving (a quarter-turn swing), as the vase's stems do
+    side = 1.0 if ctx.rng.random() < 0.5 else -1.0
+    a = angle_of(chord) + side * 0.5
+    vine = ctx.new_child("vine", depth=depth)
+    vine.proxy.set_points(start, start + 0.4 * length * t_a, end - 0.4 * length * np.array([math.cos(a), math.sin(a)]), end)
+    if ctx.intersects(vine, ignore=[parent]) or not ctx.inside(vine):
+        ctx.dynamic.remove(flower)
+        ctx.dynamic.remove(vine)
+        return FAILURE
+    ctx.state.flowers.append(ij)
+    return SUCCESS
+
+
+@pattern.rule("seed", phase="vines")
+def seed_to_vine(ctx, seed):
+    start = seed.proxy.center
+    if grow_vine(ctx, seed, start, unit(ctx.goal.center - start), 0):
+        seed.sterile = True
+        return SUCCESS
+    return FAILURE
+
+
+@pattern.rule("vine lotus peony", phase="vines")
+def vine_to_vine(ctx, parent, *_):
+    start, tangent = _nearest_on(parent, ctx.goal.center)
+    depth = parent.depth + 1 if parent.type == "vine" else 1
+    return grow_vine(ctx, parent, start, tangent, depth)
+
+
+@pattern.rule("vine lotus peony hook teardrop", phase="hooks")
+def hook(ctx, parent, *_):
+    g, rho = ctx.goal.center, ctx.goal.radius
+    start, _ = _nearest_on(parent, g)
+    chord = g - start
+    length = min(float(np.hypot(*chord)) + 0.3 * rho, HOOK_MAX)
+    if length < 1.5:
+        return FAILURE
+    u = unit(chord)
+    turn = -parent.turn if parent.type == "hook" else (1.0 if ctx.rng.random() < 0.5 else -1.0)
+    n = turn * np.array([-u[1], u[0]])
+    end = start + length * u
+    # a hook: out along the chord, curling back at its end
+    h = ctx.new_child("hook", turn=turn)
+    h.proxy.set_points(start, start + 0.7 * length * u, end + 0.45 * length * n, end + 0.25 * length * n - 0.2 * length * u)
+    drop = ctx.new_child("teardrop")
+    tip = h.proxy.point_at(1.0)
+    drop.proxy.set(tip + 0.12 * length * n, max(0.35, min(0.12 * length, 0.25 * rho)))
+    if ctx.intersects([h, drop], ignore=[parent]) or not ctx.inside([h, drop]):
+        ctx.dynamic.remove(h)
+        ctx.dynamic.remove(drop)
+        return FAILURE
+    return SUCCESS
+
+
+# -- rendering: gold on red lacquer would need a background; here red on the paper --------
+def _petals(c, r, k, inner):
+    t = np.linspace(0, 2 * np.pi, 12 * k + 1)
+    rr = r * (inner + (1 - inner) * np.abs(np.cos(k * t / 2)))
+    return c + rr[:, None] * np.c_[np.cos(t), np.sin(t)]
+
+
+@pattern.render("lotus", "vase", help="red flowers, vines and hooks, gold teardrops (Fig. 9)")
+def vase_lotus(el, rc):
+    c, r = el.proxy.center, el.proxy.radius
+    return [Mark([_petals(c, r, 8, 0.55)[:-1]], closed=True, fill=RED, stroke="none"),
+            Mark([_petals(c, 0.45 * r, 8, 0.6)[:-1]], closed=True, fill=GOLD, stroke="none")]
+
+
+@pattern.render("peony", "vase")
+def vase_peony(el, rc):
+    c, r = el.proxy.center, el.proxy.radius
+    return [Mark([_petals(c, r, 5, 0.7)[:-1]], closed=True, fill=RED, stroke="none"),
+            Mark.circle(c, 0.35 * r, fill=GOLD, stroke="none")]
+
+
+@pattern.render("vine", "vase")
+def vase_vine(el, rc):
+    w = max(1.5 * rc.line_width, 3.0 * rc.line_width * 0.9**el.depth)
+    return [Mark.polygon(tapered_stroke(el.proxy.polyline(20), (w, 0.7 * w)), fill=RED)]
+
+
+@pattern.render("hook", "vase")
+def vase_hook(el, rc):
+    return [Mark.polygon(tapered_stroke(el.proxy.polyline(16), (1.4 * rc.line_width, 0.4 * rc.line_width)), fill=RED)]
+
+
+@pattern.render("teardrop", "vase")
+def vase_teardrop(el, rc):
+    c, r = el.proxy.center, el.proxy.radius
+    t = np.linspace(0, 2 * np.pi, 25)[:-1]
+    # a teardrop: a circle drawn out to a point (pointing up the page)
+    pts = c + r * np.c_[np.cos(t) * (1 - 0.35 * (1 - np.sin(t)) / 2), np.sin(t) + 0.6 * np.maximum(0, -np.sin(t)) ** 3]
+    return [Mark.polygon(pts, fill=GOLD, stroke=RED, stroke_width=0.4 * rc.line_width)]
