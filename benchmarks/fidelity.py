@@ -20,7 +20,7 @@ worst ``value/tolerance`` (a star marks a failure), and the seconds the method t
 issues 13 (synth) and 14 (grow) must turn green. The JSON (every metric's value,
 tolerance, exemplar and result statistics, the worst window) goes to
 ``benchmarks/results/fidelity.json``, and a contact sheet (exemplar, outputs with their
-local fidelity maps) to ``docs/fidelity.png`` (``--sheet PATH``; not in quick mode).
+local fidelity maps) to ``docs/fidelity.png`` (full runs only; ``--sheet PATH`` for any).
 
     python benchmarks/fidelity.py [--quick] [--only NAME[,NAME]] [--method grow|synth|copy]
                                   [--seeds 1-5] [--scale 3.5] [--detail] [--sheet PATH]
@@ -141,7 +141,7 @@ def main() -> int:
         p.add_argument("--seeds", default="1", help="seeds, e.g. 1-5 or 1,3")
         p.add_argument("--scale", type=float, default=None, help="region side / exemplar frame side (default 3.5; quick 3.2)")
         p.add_argument("--detail", action="store_true", help="print every metric")
-        p.add_argument("--sheet", default=None, help="contact sheet PNG (default docs/fidelity.png; none in quick mode)")
+        p.add_argument("--sheet", default=None, help="contact sheet PNG (full runs write docs/fidelity.png)")
 
     args = parse_args(__doc__.splitlines()[0], extra)
     suite = _suite()
@@ -204,7 +204,9 @@ def main() -> int:
     bench.json_path.parent.mkdir(parents=True, exist_ok=True)
     bench.json_path.write_text(json.dumps({"benchmark": bench.name, "title": bench.title, "baseline": bench.baseline, "scale": scale, "seeds": seeds, "eq5": eq5, "rows": bench.rows}, indent=1, default=_jsonable) + "\n")
     print(f"figures written to {bench.json_path}")
-    if not args.quick and sheet_rows and any(r[2] for r in sheet_rows):
+    # the committed sheet (docs/fidelity.png) is the full table's; a partial run writes one only when asked
+    full = not (args.quick or args.only or args.method)
+    if sheet_rows and any(r[2] for r in sheet_rows) and (args.sheet or full):
         contact_sheet(sheet_rows, Path(args.sheet) if args.sheet else ROOT / "docs" / "fidelity.png")
     return 0
 
