@@ -147,7 +147,7 @@ def pack(
     power: float = DEFAULTS["power"],
     resolution: float | None = None,
     sparse_candidates: int = DEFAULTS["poisson_candidates"],
-    fits: int = DEFAULTS["fits"],
+    fits: int | None = None,
     suppress: float = DEFAULTS["suppress"],
     kind_choice: str = DEFAULTS["kind_choice"],
     scale_choice: str = DEFAULTS["scale_choice"],
@@ -194,9 +194,11 @@ def pack(
         element's size (the raster only proposes candidates).
     sparse_candidates : int
         Fill-gap Step 1: Bridson's trial points per active Poisson-disk sample (30).
-    fits : int
+    fits : int, optional
         Fill-gap Step 2: random rotations and scales tried at each candidate point before
-        it counts as a cancellation (48; an extension of §4.2; 1 draws one pose as the paper).
+        it counts as a cancellation (an extension of §4.2; 1 draws one pose as the
+        paper). Default 48, and 96 with ``scale_choice="fit"``, whose poses sweep the
+        scale range from the top and so try fewer rotations at each scale.
     suppress : float in (0, 1]
         Fill-gap Step 2: factor applied to the distance field about a cancelled candidate,
         so that later rounds explore other gaps (0.9; an extension of §4.2; 1 turns it off).
@@ -267,6 +269,8 @@ def pack(
             raise InputError(f"resolution: must be a number, got {resolution!r}") from None
         if not (np.isfinite(resolution) and resolution > 0):
             raise InputError(f"resolution: must be positive, got {resolution}")
+    if fits is None:
+        fits = DEFAULTS["fits"] * (2 if scale_choice == "fit" else 1)
     n_fits = _positive_int(fits, "fits")
     try:
         suppress = float(suppress)
