@@ -168,7 +168,11 @@ def test_cross_site_websocket_is_refused(client):
     with pytest.raises(WebSocketDisconnect):
         with client.websocket_connect("/ws", headers={"origin": "http://evil.example"}) as ws:
             ws.receive_json()
-    with client.websocket_connect("/ws", headers={"origin": "http://127.0.0.1:8765"}) as ws:
+    # a page of another local server (another port) is another site
+    with pytest.raises(WebSocketDisconnect):
+        with client.websocket_connect("/ws", headers={"origin": "http://127.0.0.1:3000", "host": "127.0.0.1:8765"}) as ws:
+            ws.receive_json()
+    with client.websocket_connect("/ws", headers={"origin": "http://127.0.0.1:8765", "host": "127.0.0.1:8765"}) as ws:
         _alive(ws)
 
 
@@ -285,6 +289,13 @@ def test_origin_rule():
     assert _origin_ok("http://[::1]:8765", LOCAL_HOSTS)
     assert not _origin_ok("http://evil.example", LOCAL_HOSTS, "evil.example")
     assert not _origin_ok("null", LOCAL_HOSTS)
+    # the port must be the studio's own (the Host header's)
+    assert _origin_ok("http://localhost:8765", LOCAL_HOSTS, "localhost:8765")
+    assert _origin_ok("http://localhost:8765", LOCAL_HOSTS, "127.0.0.1:8765")
+    assert not _origin_ok("http://localhost:3000", LOCAL_HOSTS, "127.0.0.1:8765")
+    assert not _origin_ok("http://127.0.0.1", LOCAL_HOSTS, "127.0.0.1:8765")
+    assert not _origin_ok("http://127.0.0.1:99999x", LOCAL_HOSTS, "127.0.0.1:8765")
+    assert not _origin_ok("file://localhost:8765", LOCAL_HOSTS, "127.0.0.1:8765")
     # bound to every interface: same-origin pages only
     wide = (*LOCAL_HOSTS, "0.0.0.0")
     assert _origin_ok("http://10.0.0.5:8765", wide, "10.0.0.5:8765")

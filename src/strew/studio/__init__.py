@@ -87,7 +87,10 @@ def serve(
 
     allowed = LOCAL_HOSTS if host in LOCAL_HOSTS else (*LOCAL_HOSTS, host)
     app = _create(project_dir, seed=seed, allowed_hosts=allowed)
-    config = uvicorn.Config(app, host=host, port=port, log_level="warning", ws_max_size=MAX_MESSAGE_BYTES * 4, lifespan="off")
+    # A bounded graceful shutdown: Ctrl-C or SIGTERM stops the server within seconds even
+    # while a message is being handled (its worker is a daemon thread, see _app).
+    config = uvicorn.Config(app, host=host, port=port, log_level="warning", ws_max_size=MAX_MESSAGE_BYTES * 4, lifespan="off",
+                            timeout_graceful_shutdown=2)
     server = uvicorn.Server(config)
 
     def announce() -> None:

@@ -51,20 +51,69 @@ def _plain(obj: Any) -> Any:
 def _origin_ok(origin: str | None, allowed_hosts: tuple[str, ...], host_header: str | None = None) -> bool:
     """A websocket from a page of another site is refused (cross-site websocket hijacking).
 
-    The page's origin must name one of ``allowed_hosts``; when the server was bound to
-    every interface (``0.0.0.0`` or ``::`` among them), a same-origin page (``Origin``
-    matching the ``Host`` header) is accepted too.
+    The page's origin must name one of ``allowed_hosts`` *and* the studio's own port (the
+    port of the ``Host`` header the websocket was opened with): another local server's
+    page, e.g. ``http://localhost:3000``, is refused. When the server was bound to every
+    interface (``0.0.0.0`` or ``::`` among them), a same-origin page (``Origin`` matching
+    the ``Host`` header) is accepted too.
     """
     if origin is None:
         return True
     parts = urlsplit(origin)
-    host = parts.hostname
-    if host is None:
+    try:
+        host, port = parts.hostname, parts.port
+    except ValueError:  # a port that is not a number
+        return False
+    if host is None or parts.scheme not in ("http", "https"):
         return False
     if host in allowed_hosts or f"[{host}]" in allowed_hosts:
-        return True
+        if host_header is None:
+            return True
+        own = urlsplit(f"//{host_header}")
+        try:
+            own_port = own.port
+        except ValueError:
+            return False
+        default = 443 if parts.scheme == "https" else 80
+        return (port or default) == (own_port or default)
     wildcard = any(h in ("0.0.0.0", "::", "[::]") for h in allowed_hosts)
     return wildcard and host_header is not None and parts.netloc == host_header
+
+
+async def _in_daemon_thread(fn: Any, *args: Any) -> Any:
+    """Run ``fn(*args)`` in a daemon thread and await its result.
+
+    Unlike ``asyncio.to_thread`` (the loop's default executor, joined at shutdown), a
+    daemon thread never keeps the process alive: Ctrl-C or SIGTERM stops the server even
+    while a heavy message is being handled.
+    """
+    loop = asyncio.get_running_loop()
+    fut = loop.create_future()
+
+    def settle(ok: bool, value: Any) -> None:
+        if fut.done():
+            return
+        if ok:
+            fut.set_result(value)
+        else:
+            fut.set_exception(value)
+
+    def run() -> None:
+        try:
+            result = fn(*args)
+        except BaseException as exc:  # handed to the awaiting task
+            try:
+                loop.call_soon_threadsafe(settle, False, exc)
+            except RuntimeError:  # the loop has closed: the server is stopping
+                pass
+            return
+        try:
+            loop.call_soon_threadsafe(settle, True, result)
+        except RuntimeError:
+            pass
+
+    threading.Thread(target=run, name="strew-studio-worker", daemon=True).start()
+    return await fut
 
 
 def warm_up() -> None:
@@ -215,7 +264,7 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
                 if msg["type"] == "stroke_move":
                     msg = merge_moves(msg)
                 try:
-                    replies = await asyncio.to_thread(handle, msg, emit)
+                    replies = await _in_daemon_thread(handle, msg, emit)
                     texts = [_dumps(r) for r in replies]
                 except InputError as exc:
                     await outbox.put(error(str(exc).replace("\n", " "), msg))

@@ -117,6 +117,8 @@ def parse_message(text: str | bytes) -> dict[str, Any]:
         msg = json.loads(text, parse_constant=_no_constant)
     except (json.JSONDecodeError, UnicodeDecodeError, ValueError) as exc:
         raise InputError(f"message: not valid JSON ({exc})") from None
+    except RecursionError:  # a RuntimeError: the receiver would take it for a closed socket
+        raise InputError("message: nested too deeply") from None
     if not isinstance(msg, dict):
         raise InputError("message: must be a JSON object with a 'type'")
     t = msg.get("type")

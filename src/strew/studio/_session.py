@@ -46,6 +46,20 @@ TOOLS = ("brush", "spray", "erase", "flow", "boundary", "region")
 GROW_MODES = ("fixed", "rotate", "flow")
 MAX_HISTORY = 64
 MAX_SCENE = 200_000
+#: Files the studio loads (exemplars, palette.json, scene.json) are checked against these
+#: before parsing, so that a load answers within seconds (issue 17); the process limits
+#: (strew._limits) apply when they are lower.
+STUDIO_MAX_FILE_BYTES = 2_000_000
+STUDIO_MAX_PATHS = 5_000
+
+
+def _load_limited(path: Path) -> Arrangement:
+    """Read a project file under the studio's size and path-count limits."""
+    from .._limits import get_limit, limits
+    from ..io import load
+
+    with limits(file_size=min(get_limit("file_size"), STUDIO_MAX_FILE_BYTES), paths=min(get_limit("paths"), STUDIO_MAX_PATHS)):
+        return load(path)
 #: Elements of the small growth shown at once when a spray stroke starts.
 FIRST_SPRAY = 24
 #: Region-growing iterations of the generative brush per stroke segment. Growth that is
@@ -498,8 +512,6 @@ class Session:
     # ------------------------------------------------------------------ palette messages
     def _on_load_exemplar(self, msg: dict, emit: Emit) -> list[dict]:
         """Load an exemplar (SVG or JSON) from PROJECT_DIR, or one of strew's examples."""
-        from ..io import load
-
         if "example" in msg:
             from .._resources import examples_dir
 
@@ -510,7 +522,7 @@ class Session:
             path = allowed[name]
         else:
             path = resolve_in_project(self.root, msg.get("path"), suffixes=(".svg", ".json"), must_exist=True)
-        arr = load(path)
+        arr = _load_limited(path)
         if len(arr) == 0:
             raise InputError(f"{path.name}: no elements in this exemplar")
         self._push_history()
@@ -1222,13 +1234,12 @@ class Session:
 
     def _on_load_project(self, msg: dict, emit: Emit) -> list[dict]:
         """Load ``palette.json`` and ``scene.json`` from PROJECT_DIR (either may be missing)."""
-        from ..io import load
-
         pal_path, scene_path = self.root / PALETTE_FILE, self.root / SCENE_FILE
         if not pal_path.is_file() and not scene_path.is_file():
             raise InputError(f"load_project: no {PALETTE_FILE} or {SCENE_FILE} in the project folder")
-        pal = load(pal_path) if pal_path.is_file() else None
-        scene = load(scene_path) if scene_path.is_file() else None
+        # the same containment check as load_exemplar: a symbolic link out of the folder is refused
+        pal = _load_limited(resolve_in_project(self.root, PALETTE_FILE, suffixes=(".json",), must_exist=True)) if pal_path.is_file() else None
+        scene = _load_limited(resolve_in_project(self.root, SCENE_FILE, suffixes=(".json",), must_exist=True)) if scene_path.is_file() else None
         self._push_history()
         if pal is not None:
             self.palette = {}
