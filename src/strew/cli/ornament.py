@@ -24,13 +24,13 @@ from ._common import (
 @click.option("--seed-point", "seed_points", multiple=True, metavar="X,Y", help="Seed position (repeatable); default: the centre of the largest inscribed circle.")
 @click.option("--resolution", type=int, default=None, help="Raster cells along the panel's longer side (default: cells of half the minimum radius).")
 @click.option("--min-radius", type=float, default=None, help="Stop when no empty circle is this large (default: the pattern's).")
-@click.option("--style", default="outline", show_default=True, help="Rendering style: outline, tapered, filigree, or one the pattern defines.")
+@click.option("--style", default="outline", show_default=True, help="Rendering style: outline, tapered, filigree, skeletal (-leafy, -beads, -ribbon), or one the pattern defines.")
 @click.option("--max-elements", type=int, default=None, help="Stop after this many elements.")
 @seed_option
 @out_option()
 @quiet_option
 def command(pattern, region, size, seed_points, resolution, min_radius, style, max_elements, seed, outs, quiet):
-    """Grow ornament from PATTERN (dots, flowers, spirals, hierarchy) or a Python RULE_FILE.
+    """Grow ornament from PATTERN (dots, flowers, spirals, hierarchy, vase, willow) or a Python RULE_FILE.
 
     Growth repeatedly fills the largest empty circle next to the ornament with whatever
     the pattern's rules grow there, until no empty circle of the minimum radius remains.
