@@ -18,7 +18,7 @@ import numpy as np
 from .._errors import InputError
 from ..arrangement import Arrangement
 from ..region import Region
-from ._analysis import Reference, analyze, delaunay_edges, flip_edge
+from ._analysis import Reference, analyze, delaunay_edges, flip_edge, size_priority
 from ._growth import GrowParams, grow_reference
 from ._match import matching_set, match_references, order_target
 from ._relax import relax_positions
@@ -52,41 +52,6 @@ def _polyline(a: Any, name: str) -> np.ndarray:
     if not np.all(np.isfinite(p)):
         raise InputError(f"{name}: NaN or inf coordinate")
     return p
-
-
-#: Kinds whose bounding radii differ by this factor or more are of different sizes.
-SIZE_STEP = 1.5
-
-
-def size_priority(exemplar: Arrangement) -> dict[str, float]:
-    """Default priorities (§5.1): larger kinds first, when the exemplar's kinds differ in size.
-
-    §5.1 follows Wong et al. in "placing the larger elements at first and filling spaces
-    with the smaller elements later", with priorities the user gives. Without them, kinds
-    that occur are ranked by size: sorted by bounding radius (times their median scale),
-    a kind starts a new, higher level when it is at least :data:`SIZE_STEP` times the
-    next smaller kind. One level (kinds of about one size) gives no priority.
-    Not in the paper as a default: large elements otherwise lose their places to small
-    ones grown first, are under-produced and leave the small ones in scatter.
-
-    Returns
-    -------
-    dict of kind name to float
-        Empty when every kind is of about one size.
-    """
-    sizes = []
-    for i, name in enumerate(exemplar.kinds):
-        sel = exemplar.kind == i
-        if sel.any():
-            sizes.append((float(exemplar.shapes[name].radius) * float(np.median(np.abs(exemplar.scale[sel]))), name))
-    sizes.sort()
-    level, out, prev = 0, {}, None
-    for r, name in sizes:
-        if prev is not None and r >= SIZE_STEP * prev:
-            level += 1
-        prev = r
-        out[name] = float(level)
-    return out if level > 0 else {}
 
 
 def grow(

@@ -120,6 +120,23 @@ class _Grower:
         self.l = ref.mean_edge
         self.l_short = 0.5 * ref.shortest_edge  # §5.4: half of the shortest reference edge
         self.mode_code = MODES[p.mode]
+        # half the smallest centre distance between elements of two kinds in the
+        # reference (see too_close_in_kind), at least l_short
+        self.pair_short = np.full((self.n_kinds, self.n_kinds), self.l_short)
+        from scipy.spatial import cKDTree
+
+        for k2 in range(self.n_kinds):
+            sel = np.flatnonzero(self.ex_kind == k2)
+            if len(sel) == 0:
+                continue
+            d, q = cKDTree(ex.xy[sel]).query(ex.xy, k=2)
+            nearest = np.where(sel[q[:, 0]] == np.arange(len(ex)), d[:, 1], d[:, 0])
+            for k1 in range(self.n_kinds):
+                m = nearest[(self.ex_kind == k1) & np.isfinite(nearest)]
+                if len(m):
+                    self.pair_short[k1, k2] = max(self.l_short, 0.5 * float(m.min()))
+        self.pair_short = np.minimum(self.pair_short, self.pair_short.T)
+        self.pair_short_max = self.pair_short.max(axis=1)
         # per-reference: angular gaps of the ring, mean ring edge length
         n_ref = len(self.ref_ids)
         self.ring_gap_min = []  # (k,) smallest of the two gaps beside each ring slot
@@ -456,6 +473,35 @@ class _Grower:
             return False
         return True
 
+    def too_close_in_kind(self, x: float, y: float, kind: int, s: int, states: tuple[int, ...] = (SEED, ELEMENT)) -> bool:
+        """Is an object within ``l_short(kind, kind')`` of a new seed of ``kind`` at (x, y)?
+
+        §5.4 (b) takes one ``l_short`` for all kinds: half the shortest reference edge.
+        With kinds far apart in the reference (cluster hubs, large stones) a seed that
+        lands at twice that from an element of its own kind, where the reference never
+        has one, survives, and hubs double up. We also drop a new seed that lies within
+        half the reference's smallest distance between its kind and the object's kind
+        (:attr:`pair_short`); objects within the global ``l_short`` are merged as before.
+        """
+        if kind < 0:
+            return False
+        r = float(self.pair_short_max[kind])
+        if r <= self.l_short:
+            return False
+        ps = self.pair_short
+        xy = self.xy
+        for o in self.near(x, y, r, states):
+            if o == s:
+                continue
+            ko = int(self.kind[o])
+            if ko < 0:
+                continue
+            d = ps[kind, ko]
+            px, py = xy[o]
+            if (px - x) ** 2 + (py - y) ** 2 < d * d:
+                return True
+        return False
+
     def fits_domain(self, g: Any) -> bool:
         """Does element geometry ``g`` lie inside the region and cross no boundary stroke?"""
         box = self.region_box
@@ -553,6 +599,10 @@ class _Grower:
             rot += float(self.rng.uniform(-p.jitter_rotation, p.jitter_rotation))
         if p.jitter_scale > 0:
             scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
+        # an element as close to one of its own kind (or another) as the reference never
+        # has them is refused, like the seeds of too_close_in_kind
+        if self.too_close_in_kind(x, y, kind, s, (ELEMENT,)):
+            return False
         g = self.element_geometry(kind, x, y, rot, scale)
         # Not in the paper: an element must lie wholly inside the region and off the
         # boundary strokes (the paper stops growth at them; an element whose centre is
@@ -598,6 +648,8 @@ class _Grower:
             # (b) merge with an object within l_short
             close = self.near(cx, cy, self.l_short)
             close = [o for o in close if o != s]
+            if not close and self.too_close_in_kind(cx, cy, ring_kind[j], s):
+                continue
             if close:
                 o = min(close, key=lambda o: (self.xy[o][0] - cx) ** 2 + (self.xy[o][1] - cy) ** 2)
                 if o not in self.adj[s]:

@@ -22,7 +22,7 @@ from .._progress import Reporter
 from .._rng import as_rng
 from ..arrangement import Arrangement
 from ..region import Region
-from ._analysis import Reference, analyze
+from ._analysis import Reference, analyze, size_priority
 from ._growth import ELEMENT, SEED, GrowParams, _Grower
 from ._match import MODES
 
@@ -122,9 +122,7 @@ class SprayGrowth:
             raise InputError(f"relax_every: must be at least 1, got {relax_every!r}")
         kinds = ref.exemplar.kinds
         if priority is None:
-            from . import size_priority  # the package's default (larger kinds first)
-
-            priority = size_priority(ref.exemplar)
+            priority = size_priority(ref.exemplar)  # the default: larger kinds first
         for name in priority or {}:
             if name not in kinds:
                 raise InputError(f"priority: unknown kind {name!r}")
