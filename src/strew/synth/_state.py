@@ -55,6 +55,9 @@ class SynthParams:
     check_energy : bool
         Keep an optimisation step only when it lowers the energy of the expanded horizon
         (Eq. 2), else half of it, else none.
+    yield_window : int
+        Horizon elements made in the last this many iterations yield to new elements of
+        a larger size class (an extension for several sizes, see ``grow``; 2).
     """
 
     k: int = 5
@@ -68,6 +71,7 @@ class SynthParams:
     horizon_anchor: float = 0.01
     max_failures: int = 3
     check_energy: bool = False
+    yield_window: int = 2
 
     def __post_init__(self) -> None:
         if int(self.k) < 1:
