@@ -158,6 +158,10 @@ class _Grower:
             prio[ex.kinds.index(name)] = v
         self.kind_prio = prio
         self.use_prio = bool(prio.max() > prio.min())
+        # seeds above the lowest priority, on a grid of cells 5 l wide (see outranked);
+        # placed and dead ones are dropped as they go
+        self.hcell = max(5 * self.l, 1e-9)
+        self.hgrid: dict[tuple[int, int], set[int]] = {}
         self.none_prio = float(prio.min())
         # geometry for the overlap guard
         self.local_geom = [ex.shapes[k].geometry for k in ex.kinds]
@@ -273,6 +277,8 @@ class _Grower:
         self.grid.setdefault(self._cell(x, y), []).append(i)
         heapq.heappush(self.heap, (math.hypot(x - self.origin[0], y - self.origin[1]), i))
         self.dirty.add(i)
+        if self.use_prio and self.seed_priority(i) > self.none_prio:
+            self.hgrid.setdefault((math.floor(x / self.hcell), math.floor(y / self.hcell)), set()).add(i)
         return i
 
     def near(self, x: float, y: float, r: float, states: tuple[int, ...] = (SEED, ELEMENT)) -> list[int]:
@@ -300,7 +306,22 @@ class _Grower:
                     out.append(i)
         return out
 
+    def _unhigh(self, i: int) -> None:
+        """Take seed ``i`` off the priority grid (it was placed, died or moves)."""
+        if self.hgrid:
+            x, y = self.xy[i]
+            cell = self.hgrid.get((math.floor(x / self.hcell), math.floor(y / self.hcell)))
+            if cell is not None:
+                cell.discard(i)
+
     def _move(self, i: int, x: float, y: float) -> None:
+        if self.hgrid and self.state[i] == SEED:
+            h = self.hcell
+            ox, oy = self.xy[i]
+            a, b = (math.floor(ox / h), math.floor(oy / h)), (math.floor(x / h), math.floor(y / h))
+            if a != b and i in self.hgrid.get(a, ()):
+                self.hgrid[a].discard(i)
+                self.hgrid.setdefault(b, set()).add(i)
         old = self._cell(*self.xy[i])
         new = self._cell(x, y)
         self.pos[i] = (x, y)
@@ -378,6 +399,7 @@ class _Grower:
         return bool(shapely.intersects(self.boundary, shapely.LineString([pa, pb])))
 
     def kill(self, i: int) -> None:
+        self._unhigh(i)
         for j in list(self.adj[i]):
             self.remove_edge(i, j)
         self.state[i] = DEAD
@@ -447,20 +469,34 @@ class _Grower:
             return False
         pi = self.seed_priority(i)
         x, y = self.xy[i]
-        for j in self.near(x, y, 5 * self.l, (SEED,)):
-            if j != i and self.seed_priority(j) > pi:
-                # a seed outside the spray area cannot grow now: it does not hold others
-                # back (they would wait for it, and the spray would stall)
-                if self.spray_area is not None and not shapely.contains_xy(self.spray_area, *self.xy[j]):
-                    continue
-                return True
+        r2 = (5 * self.l) ** 2
+        xy = self.xy
+        # the live seeds above the lowest priority, on a grid of cells 5 l wide: nine
+        # cells to look at instead of the hundred of the fine grid
+        h = self.hcell
+        cx, cy = math.floor(x / h), math.floor(y / h)
+        hg = self.hgrid
+        for j in [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in hg.get((cx + dx, cy + dy), ())]:
+            if j == i or self.state[j] != SEED or self.seed_priority(j) <= pi:
+                continue
+            px, py = xy[j]
+            if (px - x) ** 2 + (py - y) ** 2 > r2:
+                continue
+            # a seed outside the spray area cannot grow now: it does not hold others
+            # back (they would wait for it, and the spray would stall)
+            if self.spray_area is not None and not shapely.contains_xy(self.spray_area, px, py):
+                continue
+            return True
         return False
 
     def release_deferred(self, i: int) -> None:
         if not self.deferred:
             return
         x, y = self.xy[i]
-        for j in self.near(x, y, 5 * self.l, (SEED,)):
+        r2 = (5 * self.l) ** 2
+        xy = self.xy
+        near = [j for j in self.deferred if (xy[j][0] - x) ** 2 + (xy[j][1] - y) ** 2 <= r2 and self.state[j] == SEED]
+        for j in sorted(near):
             if j in self.deferred:
                 self.deferred.discard(j)
                 heapq.heappush(self.heap, (math.hypot(self.xy[j][0] - self.origin[0], self.xy[j][1] - self.origin[1]), j))
@@ -613,6 +649,7 @@ class _Grower:
         # seed dies), so that an exemplar without overlaps grows a pattern without any.
         if p.avoid_overlaps and self.overlaps_any(g, kind, x, y, scale):
             return False
+        self._unhigh(s)
         self.state[s] = ELEMENT
         self.kind[s] = kind
         self.sub[s] = r
