@@ -24,28 +24,29 @@ multi-kind concave mixes with scale ranges at saturation, fill-gap with
 naive's. Every fill-gap row uses the gap-fitting kind choice (default since issue 21).
 
 Figures of ``python benchmarks/pack.py --repeat 3`` on the shared 2-core machine (means of
-seeds 1-3, median times), while other engineers' jobs loaded it heavily (naive times
-here are 5-8x those of a quiet machine; the ratios are from the same run):
+seeds 1-3, median times), while other engineers' jobs loaded it (load average about 4;
+naive times here are 2-4x those of a quiet machine; the ratios are from the same run):
 
 ==========================  ==========  =======  =====  =========  =======
 case                        fill-gap n  naive n  ratio  cov ratio  speed-up
 ==========================  ==========  =======  =====  =========  =======
-(a) elongated               404.3       380.7    1.06   1.06       47.0x
-(b) concave                 334.3       321.0    1.04   1.04       39.6x
-(c) three kinds             334.0       301.0    1.11   1.11       36.6x
-(d) trees 0.2-1.0           2,059       1,747    1.18   1.12       151x
-(f) L concave3 0.25         218.3       204.0    1.07   1.01       34.5x
-(g) L concave3 1            14.0        11.0     1.27   1.23       31.2x
-(h) L concave3 .12-.24 cov  510.3       545.0    0.94   1.25       104x
-(i) stones 0.5-1 cov        431.0       498.0    0.87   1.16       33.5x
-(j) mix 0.5-1 cov           676.3       722.0    0.94   1.25       41.6x
-(e) poisson 0.005           24,628      23,996   1.03              413x
+(a) elongated               404.3       380.7    1.06   1.06       64.7x
+(b) concave                 334.3       321.0    1.04   1.04       37.9x
+(c) three kinds             334.0       301.0    1.11   1.11       37.2x
+(d) trees 0.2-1.0           2,059       1,747    1.18   1.12       130x
+(f) L concave3 0.25         218.3       204.0    1.07   1.01       45.5x
+(g) L concave3 1            14.0        11.0     1.27   1.23       27.7x
+(h) L concave3 .12-.24 cov  524.0       545.0    0.96   1.31       59.7x
+(i) stones 0.5-1 cov        453.3       498.0    0.91   1.21       42.3x
+(j) mix 0.5-1 cov           685.3       722.0    0.95   1.29       45.6x
+(e) poisson 0.005           24,628      23,996   1.03              385x
 ==========================  ==========  =======  =====  =========  =======
 
-Every target is met but (i)'s coverage (1.16x): the hook, the kind that fits least,
-holds the other two back through the proportions (each within 0.05). Before issue 21
-(the paper's cycle), (f) placed 199 against naive's 204 and (c) 307 against 301. The
-fit rows place fewer, larger elements than naive (count ratio below 1 by design).
+Every target is met. Before issue 21 (the paper's kind cycle), (f) placed 199 against
+naive's 204 and (c) 307 against 301; with uniform scales (h)-(j) covered 1.06x, 1.07x and
+1.14x of naive. The fit rows place fewer, larger elements than naive (a count ratio
+below 1 by design); (i) needed the 96 poses per candidate that scale_choice="fit" now
+uses (1.16x with 48).
 Before the compiled set-up (scanline raster and exact distance transform, Step 1 in the
 engine, no shapely re-check) and the block-bounded candidate draw, (e) took 29 ms (17x).
 """
