@@ -55,7 +55,7 @@ def update_free_space(state: SynthState, elems: np.ndarray, tree: cKDTree | None
     """Remove free-space points covered by output elements and prune the horizon (§5.1).
 
     A free-space point v is covered when an element o satisfies
-    ``|p_v - p_o| < max(factor (r_v + r_o), cover_v)``: no element of v's size fits
+    ``|p_v - p_o| < max(rc_v + rc_o, cover_v)``: no element of v's size fits
     there, or an element already stands about where the exemplar puts one. An element
     leaves the horizon when no live free-space point in the domain lies within its
     neighbourhood radius.
@@ -109,14 +109,14 @@ def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visibl
         return np.zeros(len(pts), bool)
     osrc = osrc[keep]
     oyield = (state.horizon & (state._born[: state.n] >= _yield_from(state)))[keep]
-    qr = prep.r[src]
-    rr = prep.r[osrc]
+    qr = prep.rc[src]
+    rr = prep.rc[osrc]
     ext = float(np.ptp(opos, axis=0).max())
-    cell = max(prep.factor * (float(qr.max()) + float(rr.max())), float(prep.min_dist.max()), ext / 2000.0, 1e-9)
+    cell = max(float(qr.max()) + float(rr.max()), float(prep.min_dist.max()), ext / 2000.0, 1e-9)
     hard, _soft = K.conflict_split(
         np.ascontiguousarray(pts, dtype=float), qr.astype(float), prep.skind[src], prep.size_class[src],
         np.ascontiguousarray(opos), rr, prep.skind[osrc], prep.size_class[osrc], oyield,
-        prep.min_dist, prep.factor, cell,
+        prep.min_dist, 1.0, cell,
     )
     return hard
 
@@ -134,13 +134,13 @@ def _evict(state: SynthState, new: np.ndarray, *, voids: bool) -> None:
         return
     vis_pos = state.pos[new]
     r_max = float(prep.r.max())
-    reach = max(2.0 * prep.factor * r_max, float(prep.min_dist.max())) + 1e-9
+    reach = max(2.0 * r_max, float(prep.min_dist.max())) + 1e-9
     vid = vid[K.near_any(np.ascontiguousarray(state.pos[vid]), np.ascontiguousarray(vis_pos), reach)]
     if len(vid) == 0:
         return
     hit = K.conflict_check(
-        np.ascontiguousarray(state.pos[vid]), state.r[vid], prep.skind[state.src[vid]], np.zeros(len(vid)),
-        np.ascontiguousarray(vis_pos), state.r[new], prep.skind[state.src[new]], prep.min_dist, prep.factor, True, reach,
+        np.ascontiguousarray(state.pos[vid]), prep.rc[state.src[vid]], prep.skind[state.src[vid]], np.zeros(len(vid)),
+        np.ascontiguousarray(vis_pos), prep.rc[state.src[new]], prep.skind[state.src[new]], prep.min_dist, 1.0, True, reach,
     )
     if hit.any():
         mask = np.zeros(state.n, bool)
@@ -223,7 +223,7 @@ def grow(
         count, ex, ppos, pslot = K.generate_proposals(pos[seeds], q_ptr, q_off, q_kind, q_d, rbar[seeds], cands, prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind_cost, out_ptr, prep.parent)
         valid = ex >= 0
         exv = np.maximum(ex, 0)
-        pr = prep.r[exv]
+        pr = prep.rc[exv]  # collision radii (see Prepared.rc)
         ok = valid.copy()
         if ok.any():
             # candidates must overlap a free-space point (Algorithm 1) ...
@@ -233,11 +233,19 @@ def grow(
         ref = np.unique(pslot[ok & (pslot >= 0)])
         if len(ref):
             parent_free[ref[~state.in_domain(ppos[ref])]] = True
+        before_domain = ok.copy()
         ok[ok] = state.in_domain(ppos[ok])
+        # While brushing, seeds all of whose free-space proposals fall outside the brush
+        # discs reached so far have not failed: their space is not open yet. Counting
+        # them killed free space ahead of the stroke and left holes in the band (§5.4).
+        seed_of = np.repeat(np.arange(len(seeds) * max(cands.shape[1], 1)) // max(cands.shape[1], 1), np.diff(out_ptr)) if len(seeds) else np.zeros(0, np.int64)
+        blocked = np.bincount(seed_of[before_domain], minlength=len(seeds)) > 0
+        blocked &= np.bincount(seed_of[ok], minlength=len(seeds)) == 0
+        blocked &= len(state.brush_radii) > 0
         slack = 2.0 * (2.0 * prep.r[src[seeds]]) ** 2
         seed_pos = pos[seeds].copy()
         seed_ok = np.zeros(len(seeds), bool)
-        cell = max(2.0 * prep.factor * cell_r, float(prep.min_dist.max())) + 1e-12
+        cell = max(2.0 * cell_r, float(prep.min_dist.max())) + 1e-12
         # Extension of §5.6: visible elements take precedence over voids. They are placed
         # first and are tested against visible elements only; voids they land on are
         # evicted, and voids are placed after them. Without this, voids (many and small)
@@ -257,7 +265,7 @@ def grow(
                 okp[sub[hard]] = False
             if not okp.any():
                 continue
-            placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, prep.factor, cell, pslot, parent_free, prep.size_class[exv])
+            placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, 1.0, cell, pslot, parent_free, prep.size_class[exv])
             seed_ok |= s_ok
             new_idx = np.flatnonzero(placed)
             if max_elements is not None and state.n + len(new_idx) > max_elements:
@@ -268,9 +276,10 @@ def grow(
             if phase == 0 and len(new):
                 _evict(state, new, voids=has_voids)
         # seeds that could not generate: count a failure on the free space they reach
-        failed_pos = seed_pos[~seed_ok]
+        failed = ~seed_ok & (~blocked | (added == 0))  # a step that adds nothing counts every seed (no livelock)
+        failed_pos = seed_pos[failed]
         if len(failed_pos):
-            lists = cKDTree(fpos).query_ball_point(failed_pos, r=rbar_seeds[~seed_ok])
+            lists = cKDTree(fpos).query_ball_point(failed_pos, r=rbar_seeds[failed])
             hit = np.fromiter((j for v in lists for j in v), dtype=np.int64)
             if len(hit):
                 hit = np.unique(hit)

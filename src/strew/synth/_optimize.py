@@ -188,8 +188,8 @@ def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -
     """Put back moved elements that now intersect another element or come closer than
     the exemplar allows, round by round until none is left."""
     prep = state.prep
-    f = prep.factor
-    r = state.r
+    f = 1.0
+    r = prep.rc[state.src]  # collision radii (Prepared.rc)
     sk = prep.skind[state.src]
     cell = max(2 * f * float(r.max()), float(prep.min_dist.max()), 1e-9)
     ext = float(np.ptp(state.pos, axis=0).max()) if state.n else 0.0

@@ -56,9 +56,12 @@ class Prepared:
         exemplar of a larger size class (-1 for none, and for voids). Generation copies
         an element only together with its parent (see ``grow``).
     factor : float
-        Intersection factor: two elements intersect when
-        ``|p - q| < factor (r_p + r_q)``; below 1 only when the exemplar's own bounding
-        discs overlap.
+        The exemplar's closest approach relative to ``r_p + r_q`` (0.95 of it, at most
+        1), for reference: two elements intersect when ``|p - q| < rc_p + rc_q`` (or
+        closer than ``min_dist``), and ``rc_p + rc_q >= factor (r_p + r_q)``.
+    rc : (n,) float
+        Collision radius of each element (see :func:`collision_radii`): r_e where the
+        exemplar gives radii, else r_e shrunk per kind to the exemplar's spacing.
     """
 
     names: tuple[str, ...]
@@ -95,6 +98,7 @@ class Prepared:
     domains: list = field(default_factory=list)
     overlap_free: bool = False
     size_class: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
+    rc: np.ndarray = field(default_factory=lambda: np.zeros(0))
     parent: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
 
     def __len__(self) -> int:
@@ -386,28 +390,26 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     uniq, inv = np.unique(labels, return_inverse=True)  # labels grow with owner order
     cnt = np.bincount(inv).astype(float)
     cent = np.c_[np.bincount(inv, off[rows, 0]) / cnt, np.bincount(inv, off[rows, 1]) / cnt]
-    vals = np.c_[np.bincount(inv, r[nb]) / cnt, np.bincount(inv, half_nn[nb]) / cnt]
+    _, skind = np.unique(np.c_[sources, kind], axis=0, return_inverse=True)
+    skind = skind.ravel().astype(np.int64)
+    rc = collision_radii(arr, pos, r, skind, ptr, idx, off)
+    vals = np.c_[np.bincount(inv, rc[nb]) / cnt, np.bincount(inv, half_nn[nb]) / cnt]
     lab_owner = np.zeros(len(uniq), np.int64)
     lab_owner[inv] = owner
     order = np.lexsort((np.arange(len(uniq)), lab_owner))
     free_off = cent[order]
     free_r, free_cover = vals[order, 0].copy(), vals[order, 1].copy()
     free_ptr[1:] = np.cumsum(np.bincount(lab_owner, minlength=n))
-    # Intersection factor: the exemplar's own closest approach, relative to r_p + r_q.
-    owner = np.repeat(np.arange(len(arr)), np.diff(ptr))
+    # The exemplar's closest approach relative to r_p + r_q over all pairs, for
+    # reference: collisions use the per-kind radii rc (Prepared.rc), and
+    # rc_p + rc_q >= factor (r_p + r_q) for every pair.
+    factor = 1.0
     if len(idx):
-        ratio = np.hypot(off[:, 0], off[:, 1]) / (r[owner] + r[idx])
-        factor = float(min(1.0, 0.95 * ratio.min()))
-    else:
-        factor = 1.0
-    _, skind = np.unique(np.c_[sources, kind], axis=0, return_inverse=True)
-    skind = skind.ravel().astype(np.int64)
-    ns = int(skind.max()) + 1
+        owner = np.repeat(np.arange(len(arr)), np.diff(ptr))
+        factor = float(min(1.0, 0.95 * (np.hypot(off[:, 0], off[:, 1]) / (r[owner] + r[idx])).min()))
     min_dist = closest_approach(pos, skind, sources)
     # classes of different exemplars, or a class with one element: no constraint beyond r
     min_dist = np.where(np.isfinite(min_dist), 0.95 * min_dist, 0.0)
-    if factor <= 0:
-        raise InputError("exemplar: two elements share a position; cannot learn spacing")
     columns = {k_: np.asarray(v) for k_, v in arr.columns.items() if k_ not in ("radius", "neighborhood_radius", "void", "exemplar")}
     prep = Prepared(
         names=names,
@@ -435,6 +437,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         skind=skind,
         min_dist=min_dist,
         factor=factor,
+        rc=rc,
         kind_cost=float(kind_cost),
         density=density,
         center=center,
@@ -448,6 +451,52 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     )
     prep.set_selection(selection)
     return prep
+
+
+def collision_radii(arr, pos: np.ndarray, r: np.ndarray, cls: np.ndarray, ptr: np.ndarray, idx: np.ndarray, off: np.ndarray) -> np.ndarray:
+    """Collision radius of each exemplar element: the bounding disc of §4.1.
+
+    Where the exemplar gives an element's radius (column ``radius`` differing from the
+    shape's bounding circle), that radius is the collision bound, exactly as §4.1 has
+    it: two output elements are at least ``r_p + r_q`` apart. Where the radius is the
+    default (the shape's bounding circle, which for an elongated shape is far larger
+    than the room it takes), it is shrunk per kind so that the exemplar's own discs do
+    not overlap: ``rc = f_k r`` with ``f_k = min(1, 0.95 min |p_i - p_j| / (r_i + r_j))``
+    over pairs with an element of kind k (then ``rc_i + rc_j <= 0.95 |p_i - p_j|`` for
+    every exemplar pair). Earlier one factor for the whole exemplar let one elongated
+    or overlapping kind shrink every other kind's bound (discs of radius 6 came 6.15
+    apart).
+
+    Parameters
+    ----------
+    arr : Arrangement
+        The concatenated exemplars (shapes and scales give the default radii).
+    pos : (n, 2) float
+    r : (n,) float
+    cls : (n,) int
+        Kind within exemplar of each element.
+    ptr, idx, off : CSR neighbourhoods (self excluded).
+
+    Returns
+    -------
+    (n,) float
+    """
+    default = np.array([float(arr.shapes[k].radius) for k in arr.kinds])[arr.kind] * np.abs(np.asarray(arr.scale, float))
+    given = ~np.isclose(r, default, rtol=1e-9, atol=1e-12)
+    ns = int(cls.max()) + 1 if len(cls) else 0
+    f = np.ones(ns)
+    if len(idx):
+        owner = np.repeat(np.arange(len(pos)), np.diff(ptr))
+        dist = np.hypot(off[:, 0], off[:, 1])
+        if (dist <= 0).any():
+            raise InputError("exemplar: two elements share a position; cannot learn spacing")
+        ratio = 0.95 * dist / (r[owner] + r[idx])
+        np.minimum.at(f, cls[owner], ratio)
+        np.minimum.at(f, cls[idx], ratio)
+    given_cls = np.ones(ns, bool)
+    np.logical_and.at(given_cls, cls, given)
+    f = np.where(given_cls, 1.0, np.minimum(f, 1.0))
+    return f[cls] * r
 
 
 def closest_approach(pos: np.ndarray, cls: np.ndarray, source: np.ndarray) -> np.ndarray:

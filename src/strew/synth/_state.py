@@ -287,7 +287,7 @@ class SynthState:
     def conflicts(self, pts: np.ndarray, src: np.ndarray | None, tree: cKDTree | None = None, cover: np.ndarray | None = None, r: np.ndarray | None = None, visible_only: bool = False) -> np.ndarray:
         """(m,) bool: would copies of exemplar elements ``src`` at ``pts`` intersect O?
 
-        Two elements intersect when ``|p - q| < max(factor (r_p + r_q), min_dist)`` (see
+        Two elements intersect when ``|p - q| < max(rc_p + rc_q, min_dist)`` (see
         :class:`Prepared`). With ``cover`` (m,), an output element closer than ``cover``
         also counts (free-space points, §5.1); ``r`` overrides the radii of ``src``.
         ``tree`` is accepted for symmetry and unused (a uniform grid is faster here).
@@ -303,9 +303,9 @@ class SynthState:
             opos, osrc = opos[vis], osrc[vis]
             if len(osrc) == 0:
                 return np.zeros(len(pts), bool)
-        f = prep.factor
-        rq = prep.r[np.asarray(src, np.int64)] if r is None else np.asarray(r, float)
-        rr = prep.r[osrc]
+        f = 1.0  # collision radii rc (Prepared.rc)
+        rq = prep.rc[np.asarray(src, np.int64)] if r is None else np.asarray(r, float)
+        rr = prep.rc[osrc]
         use_sk = src is not None
         qsk = prep.skind[np.asarray(src, np.int64)] if use_sk else np.zeros(len(pts), np.int64)
         qcover = np.zeros(len(pts)) if cover is None else np.asarray(cover, float)
