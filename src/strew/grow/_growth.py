@@ -59,9 +59,9 @@ class GrowParams:
     max_elements: int = 2_000_000
     #: rotation mode: weight of the neighbours' frame, per mean edge length (see
     #: :func:`strew.grow.match_references`); 0 is the paper's Eq. 4 alone
-    frame_weight: float = 1.0
+    frame_weight: float = 3.0
     #: rotation mode: the largest turn of an element's frame from its neighbours' (§5.3)
-    max_turn: float = math.pi / 6
+    max_turn: float = math.pi / 18
     #: flow mode: fit the rotation to the neighbours near the flow direction (see
     #: ``_Grower.choose``); False turns each reference to the flow exactly (§5.3)
     flow_fit: bool = True
