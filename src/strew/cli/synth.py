@@ -7,15 +7,24 @@ import click
 from ._common import check_outputs, domain_options, echo, out_option, parse_point, progress_bar, quiet_option, resolve_domain, seed_option, write_outputs
 
 
-def _parse_select(items: tuple[str, ...]) -> dict[str, float] | None:
+def _parse_select(items: tuple[str, ...]) -> dict | None:
+    """``NAME``, ``NAME:WEIGHT`` or ``NAME=REGION`` (a region file: that texture fills it)."""
     from .._errors import InputError
 
     if not items:
         return None
-    out: dict[str, float] = {}
+    out: dict = {}
     for item in items:
         if not item.strip():
             raise InputError("--select: empty selection (name an exemplar)")
+        if "=" in item:
+            name, _, path = item.partition("=")
+            if not name or not path:
+                raise InputError(f"--select: expected NAME=REGION.svg, got {item!r}")
+            from ..io import load_region
+
+            out[name] = load_region(path)
+            continue
         name, _, w = item.partition(":")
         if not name:
             raise InputError(f"--select: expected NAME or NAME:WEIGHT, got {item!r}")
@@ -32,7 +41,7 @@ def _parse_select(items: tuple[str, ...]) -> dict[str, float] | None:
 @click.option("--fill", "fill_at", default=None, metavar="X,Y", help="Filler: grow from this point until no room is left.")
 @click.option("--brush", "brush_path", default=None, type=click.Path(dir_okay=False), help="Generative brush: a stroke (.svg or .json).")
 @click.option("--brush-radius", type=float, default=None, help="Brush radius (document units).")
-@click.option("--select", "select", multiple=True, metavar="NAME[:W]", help="Exemplars of the palette to use, with weights (repeatable; default all).")
+@click.option("--select", "select", multiple=True, metavar="NAME[:W]|NAME=REGION", help="Exemplars of the palette to use, with weights (shares of the region), or each with the region file it fills (repeatable; default all).")
 @click.option("--k", type=int, default=5, show_default=True, help="k-coherence set size.")
 @click.option("--c", "c_ratio", type=float, default=2.0, show_default=True, help="Ratio constant rejecting poor candidates (> 1).")
 @click.option("--optimize", type=click.Choice(["horizon", "global", "none"]), default="horizon", show_default=True)
@@ -75,6 +84,12 @@ def command(exemplars, region, size, fill_at, brush_path, brush_radius, select, 
     dom = resolve_domain(region, size)
     palette = load_palette(list(exemplars))
     sel = palette.select(_parse_select(select))
+    if dom is None and sel.regions is not None:  # --select NAME=REGION: the regions together
+        import shapely
+
+        from ..region import Region
+
+        dom = Region(shapely.union_all([r.geometry for r in sel.regions]))
     point = parse_point(fill_at, "--fill") if fill_at is not None else None
     bp = br = None
     if brush_path is not None:
@@ -82,6 +97,8 @@ def command(exemplars, region, size, fill_at, brush_path, brush_radius, select, 
     if dom is None and bp is None:
         raise InputError("--region or --size: give the area to fill")
     params = {"k": k, "c": c_ratio, "optimize": optimize, "init": init, "keep_voids": keep_voids, "select": dict(zip(sel.names, sel.weights))}
+    if sel.regions is not None:
+        params["select_regions"] = {s.partition("=")[0]: s.partition("=")[2] for s in select}
     if init == "patch":
         params["patch_rounds"] = patch_rounds
     if point is not None:

@@ -91,12 +91,15 @@ class Selection:
     """The selection S of the palette that drives synthesis (§5): names and weights.
 
     Weights choose which exemplar seeds a new patch (the first patch, a brush stroke
-    starting in empty space, a fill point).
+    starting in empty space, a fill point), and, when a whole region is filled with
+    several exemplars, the share of the region each texture gets. ``regions`` (a
+    :class:`~strew.Region` or None per name) says where a texture goes instead.
     """
 
     palette: Palette
     names: tuple[str, ...]
     weights: tuple[float, ...]
+    regions: tuple[Any, ...] | None = None
 
     def exemplars(self) -> list[Arrangement]:
         return [self.palette[n] for n in self.names]
@@ -171,14 +174,34 @@ class Palette:
     def __repr__(self) -> str:
         return "Palette(" + ", ".join(f"{k}: {len(v)}" for k, v in self._ex.items()) + ")"
 
-    def select(self, which: str | Iterable[str] | Mapping[str, float] | None = None) -> Selection:
-        """A selection: one name, several names, or ``{name: weight}`` (None: everything)."""
+    def select(self, which: str | Iterable[str] | Mapping[str, Any] | None = None) -> Selection:
+        """A selection: one name, several names, or ``{name: weight}`` (None: everything).
+
+        A value may also be a :class:`~strew.Region`: that exemplar fills that region
+        (its weight is the region's area). Either every value is a region or none is.
+        """
+        from ..region import Region
+
+        regions: tuple[Any, ...] | None = None
         if which is None:
             items = {n: 1.0 for n in self._ex}
         elif isinstance(which, str):
             items = {which: 1.0}
         elif isinstance(which, Mapping):
-            items = {str(k): float(v) for k, v in which.items()}
+            vals = list(which.values())
+            is_reg = [isinstance(v, Region) for v in vals]
+            if any(is_reg):
+                if not all(is_reg):
+                    raise InputError("selection: give a region for every selected exemplar, or none")
+                regions = tuple(vals)
+                items = {str(k): float(v.area) for k, v in which.items()}
+            else:
+                items = {}
+                for k, v in which.items():
+                    try:
+                        items[str(k)] = float(v)
+                    except (TypeError, ValueError):
+                        raise InputError(f"selection: weight of {k!r} must be a number or a Region, got {v!r}") from None
         else:
             items = {str(k): 1.0 for k in which}
         if not items:
@@ -186,8 +209,9 @@ class Palette:
         for name, w in items.items():
             self[name]
             if not (np.isfinite(w) and w > 0):
-                raise InputError(f"selection: weight of {name!r} must be positive, got {w:g}")
-        return Selection(self, tuple(items), tuple(items.values()))
+                what = "region" if regions is not None else "weight"
+                raise InputError(f"selection: {what} of {name!r} must be positive, got {w:g}")
+        return Selection(self, tuple(items), tuple(items.values()), regions)
 
     def to_arrangement(self, gap: float | None = None) -> Arrangement:
         """The palette as one arrangement: exemplars side by side (a palette window)."""

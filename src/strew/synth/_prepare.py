@@ -100,12 +100,14 @@ class Prepared:
     size_class: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
     rc: np.ndarray = field(default_factory=lambda: np.zeros(0))
     parent: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
+    selection: Selection | None = None
 
     def __len__(self) -> int:
         return len(self.kind)
 
     def set_selection(self, selection: Selection) -> None:
         """Select exemplars of the (whole) palette with weights; the others get weight 0."""
+        self.selection = selection
         w = np.zeros(len(self.names))
         for name, wt in zip(selection.names, selection.weights):
             w[self.names.index(name)] = wt
