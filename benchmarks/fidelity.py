@@ -119,18 +119,29 @@ def contact_sheet(rows: list[tuple[str, Arrangement, list[tuple[str, Arrangement
     from strew.io import atomic_write
 
     cols = 1 + max(len(r[2]) for r in rows)
-    fig = Figure(figsize=(2.6 * cols, 2.5 * len(rows)), dpi=72)
+    fig = Figure(figsize=(3.0 * cols, 3.2 * len(rows) + 0.4), dpi=80)
+    fig.suptitle("exemplar, then each output under its local fidelity map: window score 0 (green) .. 2 (red), above 1 fails; red box: worst window", fontsize=9)
     for i, (name, ex, outs) in enumerate(rows):
         ax = fig.add_subplot(len(rows), cols, i * cols + 1)
         draw_arrangement(ax, ex, title=f"{name}: exemplar")
         for j, (method, out, rep) in enumerate(outs):
             ax = fig.add_subplot(len(rows), cols, i * cols + 2 + j)
             verdict = "faithful" if rep.faithful else f"{len(rep.failures)} fail"
-            draw_local_map(ax, rep, out, title=f"{method}: {verdict}")
-    fig.tight_layout()
+            draw_local_map(ax, rep, out, title=f"{method}: {verdict}", colorbar=False)
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.4 / (3.2 * len(rows) + 0.4)), h_pad=1.2)
     buf = io.BytesIO()
     fig.savefig(buf, format="png")
-    atomic_write(path, buf.getvalue())
+    data = buf.getvalue()
+    try:  # a 256-colour palette keeps the committed sheet small (Pillow: the test extra)
+        from PIL import Image
+
+        img = Image.open(io.BytesIO(data)).convert("RGB").quantize(colors=256, method=Image.Quantize.MEDIANCUT)
+        small = io.BytesIO()
+        img.save(small, format="PNG", optimize=True)
+        data = small.getvalue()
+    except ImportError:
+        pass
+    atomic_write(path, data)
     print(f"contact sheet written to {path}")
 
 
@@ -190,6 +201,7 @@ def main() -> int:
                     outs.append((method, out, rep))
                 print(f"  {name:13s} {method:12s} seed {seed}: {row['verdict']:7s} ({len(out)} elements, {dt:.1f} s)", flush=True)
         sheet_rows.append((name, ex, [o for o in outs if o[0] != "copy"]))
+    speed = _speed(suite, repeat=1 if args.quick else 3)
     # the reports are long: the table shows the cells, the JSON keeps everything
     reports = [r.pop("report") for r in bench.rows]
     print()
@@ -198,7 +210,9 @@ def main() -> int:
         r["report"] = rep
     summary = ", ".join(f"{m} {p}/{n} faithful" for m, (p, n) in totals.items())
     print(f"\n{summary}; cells: worst value/tolerance of the family, * = fails; total {time.perf_counter() - t_all:.0f} s")
+    print(f"speed: fidelity on {speed['n']} elements {speed['full_s']:.2f} s (target < 2 s; without Eq. 5 and the local map {speed['core_s']:.2f} s, ratio {speed['full_s'] / speed['core_s']:.2f}; median of {speed['repeat']})")
     bench.rows.append({"case": "summary", **{m: f"{p}/{n}" for m, (p, n) in totals.items()}})
+    bench.rows.append({"case": "speed", **speed})
     import json
 
     bench.json_path.parent.mkdir(parents=True, exist_ok=True)
@@ -209,6 +223,19 @@ def main() -> int:
     if sheet_rows and any(r[2] for r in sheet_rows) and (args.sheet or full):
         contact_sheet(sheet_rows, Path(args.sheet) if args.sheet else ROOT / "docs" / "fidelity.png")
     return 0
+
+
+def _speed(suite: Any, repeat: int) -> dict[str, Any]:
+    """Median seconds of fidelity() on about 10,000 elements (the clusters exemplar tiled
+    10 x 10), in full and without Eq. 5 and the local map (the baseline)."""
+    from _runner import median_time
+
+    ex = suite.make_exemplar("clusters")
+    x0, y0, x1, y1 = ex.region.bounds
+    big = tiled(ex, Region.rectangle(10 * (x1 - x0), 10 * (y1 - y0)))
+    full, _ = median_time(lambda: fidelity(ex, big), repeat=repeat)
+    core, _ = median_time(lambda: fidelity(ex, big, eq5=False, local=False), repeat=repeat)
+    return {"n": len(big), "full_s": round(full, 3), "core_s": round(core, 3), "repeat": repeat}
 
 
 def _jsonable(v: Any) -> Any:

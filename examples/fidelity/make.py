@@ -252,7 +252,7 @@ def stones(rng: Any = None, *, size: float = 170.0, radius: float = 6.5, spread:
     return _finish("stones", {"stone": shape}, np.zeros(len(p), int), p, g.uniform(0, 2 * np.pi, len(p)), sc, box=(0, 0, size, size), params=dict(size=size, radius=radius, spread=spread, gap=gap, count=count))
 
 
-def two_sizes(rng: Any = None, *, size: float = 170.0, large: float = 12.0, ratio: float = 0.3, n_large: int = 45, n_small: int = 130, gap: float = 1.2) -> Arrangement:
+def two_sizes(rng: Any = None, *, size: float = 220.0, large: float = 12.0, ratio: float = 0.3, n_large: int = 80, n_small: int = 220, gap: float = 1.2) -> Arrangement:
     """Large stones with pebbles in the gaps (pebbles about 0.73 of the elements).
 
     Large stones are thrown first; pebbles (``ratio`` x the large radius) fill between.
