@@ -118,7 +118,7 @@ def _unrelated_overlaps(orn) -> int:
     """Pairs of elements whose proxies meet though neither is the other's parent and
     they are not siblings (children of one rule invocation touch by design)."""
     els = [e for e in orn.elements if e.type != "seed"]
-    geoms = [shapely.union_all([pr.geometry for pr in e.proxies]) for e in els]
+    geoms = np.array([shapely.union_all([pr.geometry for pr in e.proxies]) for e in els], dtype=object)
     tree = shapely.STRtree(geoms)
     a, b = tree.query(geoms, predicate="intersects")
     bad = 0
@@ -136,7 +136,7 @@ def _largest_gap(orn, region) -> float:
     geoms = shapely.union_all([pr.geometry for e in orn.elements if e.type != "seed" for pr in e.proxies])
     x0, y0, x1, y1 = region.bounds
     g = np.mgrid[x0 + 0.25 : x1 : 0.5, y0 + 0.25 : y1 : 0.5].reshape(2, -1).T
-    pts = shapely.points(g)
+    pts = shapely.points(g[region.contains(g)])
     clear = np.minimum(shapely.distance(geoms, pts), shapely.distance(region.boundary, pts))
     return float(clear.max())
 
@@ -169,3 +169,12 @@ def test_skeletal_stroke_styles_bend_art_along_every_curve():
         x0, y0, x1, y1 = arr.bounds
         assert x0 > -3 and y0 > -3 and x1 < 53 and y1 < 43  # the art hugs its curves
         assert all(s.style.get("fill") not in (None, "none") for s in arr.shapes.values())
+
+
+def test_vase_grows_hooks_from_the_seed_where_no_grid_point_holds_a_flower():
+    # a ring whose grid points all fall in the hole or too near an edge for a flower
+    ring = Region(shapely.Point(35, 35).buffer(35, quad_segs=32).difference(shapely.Point(35, 35).buffer(12, quad_segs=16)))
+    orn = grow_elements("vase", ring, rng=1)
+    assert sum(e.type == "hook" for e in orn.elements) > 100
+    assert _unrelated_overlaps(orn) == 0
+    assert _largest_gap(orn, ring) < 4 * orn.params["min_radius"]

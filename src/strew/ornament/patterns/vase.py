@@ -14,7 +14,8 @@ preconditions):
     :data:`GRID`) is fixed in the panel's coordinates: the flowers land on it wherever
     the vine comes from.
 ``hooks``
-    A small hook curls from the nearest element into C, ending in a teardrop.
+    A small hook curls from the nearest element into C, ending in a teardrop (from the
+    seed too, in a panel where no grid point can hold a flower).
 
 This file is a complete rule file: copy it to start your own.
 """
@@ -133,7 +134,7 @@ def vine_to_vine(ctx, parent, *_):
     return grow_vine(ctx, parent, start, tangent, depth)
 
 
-@pattern.rule("vine lotus peony hook teardrop", phase="hooks")
+@pattern.rule("seed vine lotus peony hook teardrop", phase="hooks")
 def hook(ctx, parent, *_):
     g, rho = ctx.goal.center, ctx.goal.radius
     start, _ = _nearest_on(parent, g)
