@@ -48,6 +48,8 @@ __all__ = [
 
 MAX_COORD = 1e12
 TRIALS_PER_ELEMENT = 10
+#: Largest ratio of an exemplar's element radius to its spacing (median nearest neighbour).
+MAX_SIZE_TO_SPACING = 1e5
 
 DEFAULTS: dict[str, float] = {
     "elements": 1e7,
@@ -211,26 +213,45 @@ def check_coordinates(values: Any, where: str, *, positive: bool = False, index:
 
 
 def element_area(arr: Any) -> float:
-    """A typical area taken by one element of an exemplar, for work estimates.
+    """The area one element of an exemplar takes, for work estimates of example-based methods.
 
-    The larger of the median shape area (times scale squared) and the median squared
-    nearest-neighbour spacing, so that estimates err on the low side (never refusing
-    feasible work). Returns ``0.0`` when nothing is known.
+    Growth and synthesis copy the exemplar's spacing, so the density of their output is
+    the exemplar's: the convex hull of the element positions divided by their number, or
+    the squared median nearest-neighbour distance when the positions are collinear. With
+    fewer than two distinct positions, the median element area (shape area times scale
+    squared). Returns ``0.0`` when nothing is known.
+
+    Raises :class:`InputError` when the elements are over ``MAX_SIZE_TO_SPACING`` times
+    larger than their spacing (sizes and positions out of all proportion).
     """
     import numpy as np
 
     n = len(arr)
     if n == 0:
         return 0.0
-    areas = np.array([max(sh.area, 0.0) for sh in arr.shapes.values()] or [0.0])
-    a = float(np.median(areas[arr.kind] * arr.scale**2))
-    if n >= 2:
+    pts = np.unique(np.c_[arr.x, arr.y], axis=0)
+    if len(pts) >= 2:
         from scipy.spatial import cKDTree
 
-        pts = np.c_[arr.x, arr.y]
         d, _ = cKDTree(pts).query(pts, k=2)
-        a = max(a, float(np.median(d[:, 1])) ** 2)
-    return a
+        nn = float(np.median(d[:, 1]))
+        radii = np.array([sh.radius for sh in arr.shapes.values()] or [0.0])[arr.kind] * arr.scale
+        ratio = float(np.median(radii)) / nn if nn > 0 else 0.0
+        if ratio > MAX_SIZE_TO_SPACING:
+            # every neighbourhood would hold the whole exemplar many times over
+            raise InputError(
+                f"exemplar: elements are {ratio:.3g} times larger than their spacing "
+                f"(median radius {float(np.median(radii)):.3g}, spacing {nn:.3g}; at most {MAX_SIZE_TO_SPACING:.0e})"
+            )
+        spacing = nn**2
+        hull = 0.0
+        if len(pts) >= 3:
+            import shapely
+
+            hull = float(shapely.convex_hull(shapely.multipoints(pts)).area) / n
+        return min(hull, spacing) if hull > 0 else spacing
+    areas = np.array([max(sh.area, 0.0) for sh in arr.shapes.values()] or [0.0])
+    return float(np.median(areas[arr.kind] * arr.scale**2))
 
 
 def check_work(

@@ -222,18 +222,18 @@ class Shape:
 
     @property
     def bounds(self) -> tuple[float, float, float, float]:
-        """``(minx, miny, maxx, maxy)`` of all path points."""
-        if not self.paths:
+        """``(minx, miny, maxx, maxy)`` of all path points (zeros when there is none)."""
+        pts = self.points
+        if len(pts) == 0:  # no path, or only empty ones
             return (0.0, 0.0, 0.0, 0.0)
-        pts = np.concatenate([p.points for p in self.paths])
         return (float(pts[:, 0].min()), float(pts[:, 1].min()), float(pts[:, 0].max()), float(pts[:, 1].max()))
 
     @property
     def radius(self) -> float:
         """Bounding radius about the local origin: the largest distance of a path point."""
-        if not self.paths:
+        pts = self.points
+        if len(pts) == 0:
             return 0.0
-        pts = np.concatenate([p.points for p in self.paths])
         return float(np.sqrt((pts**2).sum(axis=1)).max())
 
     @property
