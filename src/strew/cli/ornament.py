@@ -34,6 +34,9 @@ def command(pattern, region, size, seed_points, resolution, min_radius, style, m
 
     Growth repeatedly fills the largest empty circle next to the ornament with whatever
     the pattern's rules grow there, until no empty circle of the minimum radius remains.
+
+    A RULE_FILE is a Python program: it runs with your rights (it can read, write and
+    delete your files), so use only rule files you trust.
     """
     from .._errors import InputError
     from ..ornament import available_styles, grow_elements, load_pattern
