@@ -28,7 +28,9 @@ __all__ = [
     "load",
     "load_region",
     "load_shapes",
+    "limits",
     "save",
+    "set_limits",
 ]
 
 _LAZY = {
@@ -41,10 +43,13 @@ _LAZY = {
     "save": "strew.io",
     "load_shapes": "strew.io",
     "load_region": "strew.io",
+    "limits": "strew._limits",
+    "set_limits": "strew._limits",
 }
 
 if TYPE_CHECKING:  # pragma: no cover
     from .arrangement import Arrangement, concat
+    from ._limits import limits, set_limits
     from .io import load, load_region, load_shapes, save
     from .region import Region
     from .shape import Path, Shape
