@@ -12,7 +12,7 @@ limit          default          CLI (before command)   environment variable
 elements       10,000,000       ``--limit-elements``   ``STREW_LIMIT_ELEMENTS``
 memory         4 GB             ``--limit-memory``     ``STREW_LIMIT_MEMORY``
 file_size      64 MB            ``--limit-file-size``  ``STREW_LIMIT_FILE_SIZE``
-paths          200,000          ``--limit-paths``      ``STREW_LIMIT_PATHS``
+paths          50,000           ``--limit-paths``      ``STREW_LIMIT_PATHS``
 =============  ===============  =====================  ==========================
 
 From Python, raise a limit for a block with ``with strew.limits(elements=1e8): ...``
@@ -55,7 +55,7 @@ DEFAULTS: dict[str, float] = {
     "elements": 1e7,
     "memory": 4e9,
     "file_size": 64e6,
-    "paths": 2e5,
+    "paths": 5e4,
 }
 _ENV = {name: f"STREW_LIMIT_{name.upper()}" for name in DEFAULTS}
 _OPTION = {name: f"--limit-{name.replace('_', '-')}" for name in DEFAULTS}

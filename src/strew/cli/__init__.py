@@ -59,7 +59,7 @@ class LazyGroup(click.Group):
 @click.option("--limit-elements", metavar="N", default=None, help="Refuse work expected to make more elements [default: 1e7].")
 @click.option("--limit-memory", metavar="SIZE", default=None, help="Refuse work expected to need more memory, e.g. 8GB [default: 4GB].")
 @click.option("--limit-file-size", metavar="SIZE", default=None, help="Refuse larger input files, e.g. 200MB [default: 64MB].")
-@click.option("--limit-paths", metavar="N", default=None, help="Refuse input files with more paths or elements [default: 200000].")
+@click.option("--limit-paths", metavar="N", default=None, help="Refuse SVG files with more objects [default: 50000].")
 def cli(limit_elements: str | None, limit_memory: str | None, limit_file_size: str | None, limit_paths: str | None) -> None:
     """strew: fill 2D regions with many small vector elements.
 
