@@ -284,3 +284,15 @@ def test_bad_input_names_the_problem(clusters):
 def test_any_translation_is_faithful(dx, dy):
     ex = suite.make_exemplar("stones")
     assert fidelity(ex, moved(ex, dx, dy), eq5=False, local=False).faithful
+
+
+def test_pebbles_taking_over_fail():
+    # the first symptom: small elements take over (0.9 of the output) and large
+    # ones thin out
+    ex = suite.make_exemplar("two_sizes")
+    big = tile(ex, 3, 3)
+    drop = (big.kind == 0) & (np.random.default_rng(0).random(len(big)) < 0.6)
+    rep = fidelity(ex, big.select(~drop), eq5=False)
+    assert rep.metrics["fraction[pebble]"].result > 0.88
+    assert {"fraction[pebble]", "density[stone]"} <= set(rep.failures)
+    assert rep.metrics["density[pebble]"].passed
