@@ -297,7 +297,7 @@ def clusters(rng: Any = None, *, size: float = 300.0, cluster_spacing: float = 5
     return _finish("clusters", shapes, kind, p, box=(0.0, 0.0, size, size), crop=True, params=dict(size=size, cluster_spacing=cluster_spacing, large=large, small=small, ring_gap=ring_gap, ring_min=ring_min, ring_max=ring_max))
 
 
-def three_sizes(rng: Any = None, *, size: float = 170.0, small: float = 2.6, ratios: tuple[float, float, float] = (1.0, 2.0, 4.0), counts: tuple[int, int, int] = (120, 45, 16), gap: float = 1.2) -> Arrangement:
+def three_sizes(rng: Any = None, *, size: float = 210.0, small: float = 2.6, ratios: tuple[float, float, float] = (1.0, 2.0, 4.0), counts: tuple[int, int, int] = (170, 65, 26), gap: float = 1.2) -> Arrangement:
     """Three sizes of stones in radius ratio 1:2:4, thrown largest first."""
     g = _rng(rng)
     names = ("small", "medium", "large")
