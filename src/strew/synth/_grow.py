@@ -48,7 +48,19 @@ def seed_patch(state: SynthState, point: tuple[float, float], *, random: bool = 
     p = np.asarray(point, float)
     pts = p + map_offsets(np.broadcast_to(p, off.shape), off)
     ok = state.in_domain(pts) & ~state.conflicts(pts, ids)
-    return state.add(ids[ok], pts[ok])
+    ids, pts = ids[ok], pts[ok]
+    # the patch keeps the collision bound among its own elements too (§4.1): where the
+    # exemplar's elements come closer than their given radii, the later one (further
+    # from the centre) is left out
+    order = np.argsort(np.hypot(*(pts - p).T), kind="stable")
+    ids, pts = ids[order], pts[order]
+    rc, sk = prep.rc[ids], prep.skind[ids]
+    keep = np.zeros(len(ids), bool)
+    for i in range(len(ids)):
+        kept = np.flatnonzero(keep[:i])
+        lim = np.maximum(rc[i] + rc[kept], prep.min_dist[sk[i], sk[kept]])
+        keep[i] = not np.any(np.hypot(*(pts[kept] - pts[i]).T) < lim)
+    return state.add(ids[keep], pts[keep])
 
 
 def update_free_space(state: SynthState, elems: np.ndarray, tree: cKDTree | None = None) -> None:

@@ -464,8 +464,9 @@ def collision_radii(arr, pos: np.ndarray, r: np.ndarray, cls: np.ndarray, ptr: n
     default (the shape's bounding circle, which for an elongated shape is far larger
     than the room it takes), it is shrunk per kind so that the exemplar's own discs do
     not overlap: ``rc = f_k r`` with ``f_k = min(1, 0.95 min |p_i - p_j| / (r_i + r_j))``
-    over pairs with an element of kind k (then ``rc_i + rc_j <= 0.95 |p_i - p_j|`` for
-    every exemplar pair). Earlier one factor for the whole exemplar let one elongated
+    over pairs with an element of kind k, or ``(0.95 |p_i - p_j| - r_j) / r_i`` against
+    an element j whose radius is given (then ``rc_i + rc_j <= 0.95 |p_i - p_j|`` for
+    every exemplar pair but two given ones). Earlier one factor for the whole exemplar let one elongated
     or overlapping kind shrink every other kind's bound (discs of radius 6 came 6.15
     apart).
 
@@ -492,11 +493,17 @@ def collision_radii(arr, pos: np.ndarray, r: np.ndarray, cls: np.ndarray, ptr: n
         dist = np.hypot(off[:, 0], off[:, 1])
         if (dist <= 0).any():
             raise InputError("exemplar: two elements share a position; cannot learn spacing")
-        ratio = 0.95 * dist / (r[owner] + r[idx])
-        np.minimum.at(f, cls[owner], ratio)
-        np.minimum.at(f, cls[idx], ratio)
-    given_cls = np.ones(ns, bool)
-    np.logical_and.at(given_cls, cls, given)
+        given_cls = np.ones(ns, bool)
+        np.logical_and.at(given_cls, cls, given)
+        gi, gj = given_cls[cls[owner]], given_cls[cls[idx]]
+        # both default: each shrinks to its share; against a given radius, the default
+        # one takes what the given one leaves
+        ratio = np.where(gj, np.maximum(0.95 * dist - r[idx], 0.0) / r[owner], 0.95 * dist / (r[owner] + r[idx]))
+        keep = ~gi
+        np.minimum.at(f, cls[owner][keep], ratio[keep])
+    else:
+        given_cls = np.ones(ns, bool)
+        np.logical_and.at(given_cls, cls, given)
     f = np.where(given_cls, 1.0, np.minimum(f, 1.0))
     return f[cls] * r
 
