@@ -178,3 +178,31 @@ def test_vase_grows_hooks_from_the_seed_where_no_grid_point_holds_a_flower():
     assert sum(e.type == "hook" for e in orn.elements) > 100
     assert _unrelated_overlaps(orn) == 0
     assert _largest_gap(orn, ring) < 4 * orn.params["min_radius"]
+
+
+def test_marks_of_one_template_share_a_kind_and_draw_in_place(tmp_path):
+    from strew import load, save
+
+    orn = grow_elements("flowers", Region.rectangle(60, 50), rng=4)
+    arr = orn.render("outline")
+    kinds = {}
+    for k, t in zip(arr.kind_names, arr["type"]):
+        kinds.setdefault(t, set()).add(k)
+    # leaves (any angle) and flowers (anywhere) come from one template each
+    leaves = sum(e.type == "leaf" for e in orn.elements)
+    assert leaves > 10 and len(kinds["leaf"]) <= 2
+    assert len(kinds["flower"]) == 1
+    # each row draws its element's proxy where it is: shared shapes are placed by a
+    # rotation and a translation
+    by_index = {e.index: e for e in orn.elements}
+    geoms = arr.geometry
+    for i in range(len(arr)):
+        el = by_index[int(arr["element"][i])]
+        d = min(shapely.hausdorff_distance(geoms[i], shapely.LineString(pr.polyline()) if len(pr.polyline()) > 1 else pr.geometry)
+                for pr in el.proxies)
+        assert d < 1e-5
+    # and reloading keeps the kinds
+    save(arr, tmp_path / "f.json")
+    back = load(tmp_path / "f.json")
+    assert back.counts() == arr.counts()
+    assert np.allclose(back.rotation, arr.rotation)

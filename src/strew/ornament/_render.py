@@ -20,6 +20,7 @@ Generic styles, available for every pattern:
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -316,7 +317,8 @@ def available_styles(pattern: Any) -> dict[str, str]:
 
 
 def _key(local: list[np.ndarray], closed: bool, style: dict[str, Any]) -> tuple:
-    return (closed, tuple(np.round(p, 9).tobytes() for p in local), tuple(sorted(style.items())))
+    # 1e-6 units: far below the flattening tolerance, far above the rounding of rotations
+    return (closed, tuple((np.round(p, 6) + 0.0).tobytes() for p in local), tuple(sorted(style.items())))
 
 
 def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: float | None = None, seeds: bool = False) -> Arrangement:
@@ -350,7 +352,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     shapes: dict[str, Shape] = {}
     keys: dict[tuple, str] = {}
     per_type: dict[str, int] = {}
-    kind, xs, ys = [], [], []
+    kind, xs, ys, rots = [], [], [], []
     col_el, col_type, col_parent, col_phase = [], [], [], []
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
     layer: dict[str, tuple[int, int, int]] = {}
@@ -369,9 +371,16 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             allp = np.vstack(paths)
             if not np.all(np.isfinite(allp)):
                 raise InputError(f"render {pat.name!r}/{style!r}: NaN in a mark of element {el.index} ({el.type})")
-            lo, hi = allp.min(axis=0), allp.max(axis=0)
-            anchor = (lo + hi) / 2
-            local = [p - anchor for p in paths]
+            # the mark in a frame of its own: origin at the mean of its vertices, x axis
+            # towards its first vertex, so that marks drawn from one template (a type's
+            # leaves at any angle, its flowers anywhere) share one shape, placed by a
+            # translation and a rotation (issue 21: kinds per type, not per element)
+            anchor = allp.mean(axis=0)
+            v0 = paths[0][0] - anchor
+            theta = math.atan2(v0[1], v0[0]) if math.hypot(v0[0], v0[1]) > 1e-9 * (1.0 + float(np.abs(allp).max())) else 0.0
+            c, sn = math.cos(theta), math.sin(theta)
+            unrot = np.array([[c, sn], [-sn, c]])  # R(-theta)
+            local = [(p - anchor) @ unrot.T for p in paths]
             st = {"fill": m.fill, "stroke": m.stroke, "stroke_width": float(m.stroke_width), **m.extra}
             key = _key(local, m.closed, st)
             name = keys.get(key)
@@ -385,6 +394,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             kind.append(name)
             xs.append(anchor[0])
             ys.append(anchor[1])
+            rots.append(theta)
             col_el.append(el.index)
             col_type.append(el.type)
             col_parent.append(el.parent.index if el.parent is not None else -1)
@@ -410,6 +420,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         np.asarray(kind, dtype=object) if kind else np.zeros(0, int),
         np.asarray(xs, dtype=float),
         np.asarray(ys, dtype=float),
+        np.asarray(rots, dtype=float),
         columns={
             "element": np.asarray(col_el, dtype=np.int64),
             "type": np.asarray(col_type, dtype=object),
