@@ -19,12 +19,14 @@ Metrics (each one scalar discrepancy between result and exemplar):
     ``s / 5`` with linear (triangular) binning. Edge correction: the translation
     (Ohser-Stoyan) correction ``|W| / |W ∩ (W + d)|``, whose set covariance
     ``|W ∩ (W + d)|`` is computed for any polygon by an FFT of the window's raster.
-    g_ab = g_ba for this estimator, so unordered pairs are reported.
+    g_ab = g_ba for this estimator, so unordered pairs are reported. Pairs at lags the
+    window barely holds (``|W ∩ (W + d)| < 0.02 |W|``) are left out.
 ``nn[a>b]``
     Distances from each element of kind a to its nearest element of kind b: the mean
-    absolute difference of the deciles (10 % ... 90 %), in units of ``s``. Border
-    correction (Hanisch): an element counts only when its nearest-neighbour distance is
-    below its distance to the window's boundary.
+    absolute difference of the deciles (10 % ... 90 %), in units of ``s``. Neighbours
+    are searched among all elements of the domain; border correction (Hanisch): an
+    element counts only when its nearest-neighbour distance is below its distance to
+    the domain's boundary.
 ``regularity``
     Lattice-like exemplars only: the share of interior elements whose neighbours within
     ``1.3 s`` are the exemplar's dominant pattern (the same count, and every pattern
@@ -50,8 +52,9 @@ Metrics (each one scalar discrepancy between result and exemplar):
 
 Tolerances come from the exemplar's own sampling noise. The exemplar's window is split
 five ways into two halves of equal area (left/right, top/bottom, a 2 x 2 checkerboard,
-alternate vertical and alternate horizontal quarter bands); each metric's discrepancy
-between the two halves is measured, and
+alternate vertical and alternate horizontal quarter bands; g, which needs lags up to
+4 s inside each half, uses the first three); each metric's discrepancy between the two
+halves is measured, and
 ``spread`` is their root mean square. A half holds half the elements, so its statistic
 has twice the variance of the whole exemplar's, and the difference of two halves four
 times: ``sigma = spread / 2`` estimates the whole exemplar's own noise, and the result
@@ -87,9 +90,12 @@ its own noise as the whole result does, so its noise term is
 window; floors as above). Each window's score is its worst discrepancy / tolerance
 (above 1: it fails); the worst window is reported.
 
-Known limit: a result smaller than the exemplar (after the margin) is compared on a crop
-that may cut coarse structures (rings, clusters) and so differ from the exemplar by
-more than the halves show; compare results at least a few times the exemplar's area.
+Known limits: a result smaller than the exemplar (after the margin) is compared on a
+crop that may cut coarse structures (rings, clusters) and so differ from the exemplar
+by more than the halves show; compare results at least a few times the exemplar's
+area. A lattice of elements at random rotations reads as not lattice-like (the pattern
+is sought in each element's own frame). A kind with a dozen elements in the exemplar
+gets wide tolerances: that is its sampling noise, not leniency.
 """
 
 from __future__ import annotations
