@@ -11,9 +11,11 @@ Two methods over the same exclusive regions (§3.1) and exact placement tests:
     Step 2 (§4.2): rounds of P = 100 candidates drawn from the distance field to the
     placed regions and the boundary with probability ``d**16``; stop after 200
     consecutive cancellations. Both steps run in the compiled engine of :mod:`._fit`
-    (exact, robust polygon tests; no shapely in the loop), Step 2 with three extensions
-    of §4.2 (several poses per candidate, suppression of failed spots, candidates kept
-    fresh within a round).
+    (exact, robust polygon tests; no shapely in the loop), Step 2 with extensions of
+    §4.2: several poses per candidate, suppression of failed spots, candidates kept
+    fresh within a round, the kinds tried in order of their lag behind the requested
+    proportions (``kind_choice="fit"``, default; the paper cycles), and optionally the
+    largest scale that fits the gap first (``scale_choice="fit"``).
 """
 
 from __future__ import annotations
