@@ -24,6 +24,20 @@ pair; a sparse LU solve with a symmetric ordering instead of a sparse Cholesky; 
 elements are placed before voids and evict the voids they land on (§5.6), which brings
 the visible density to the exemplar's; while brushing, the horizon that is optimised is
 the part within r-bar of the iteration's new elements (§5.2, "recently synthesized").
+
+Extensions for exemplars with elements of several sizes, which §7 names a limitation
+(each is commented where it is made; see ``_grow`` and ``_prepare``): radii at least 2x
+apart form size classes; the copies of all seeds are placed larger classes first;
+horizon elements of the last 2 iterations yield to a new element of a larger class;
+a small element is copied only with the larger element it leans on (its nearest larger
+Delaunay neighbour in the exemplar), so a neighbourhood's rim does not scatter orphans;
+the closest approach of two kinds is learned over the whole exemplar, not only within
+neighbourhoods. The bounding radius of §4.1 is the collision bound wherever the
+exemplar gives it; default radii shrink per kind to the exemplar's spacing. While
+brushing, seeds whose copies lie beyond the discs reached so far do not count as
+failures. A fill with several exemplars selected deals Voronoi cells of the region to
+them by weight (§5.5 extension), or puts each where ``{name: Region}`` (CLI
+``--select NAME=REGION``) says.
 """
 
 from __future__ import annotations
