@@ -22,13 +22,16 @@ from .._progress import Reporter
 from .._rng import as_rng
 from ..arrangement import Arrangement
 from ..region import Region
-from ._analysis import Reference
+from ._analysis import Reference, size_priority
 from ._match import MODES, W1, W2, W3, match_references, order_target
 from ._relax import relax_positions
 
 __all__ = ["GrowParams", "grow_reference"]
 
 DEAD, SEED, ELEMENT = 0, 1, 2
+#: A smaller kind leans on larger ones (see ``_Grower.lean_ok``) when 90% of its elements
+#: have their nearest larger element within this factor of the median distance to it.
+LEAN_SPREAD = 1.15
 #: Elements the growth must not overlap but does not own (a scene the spray paints over).
 OBSTACLE = 3
 
@@ -137,17 +140,36 @@ class _Grower:
                     self.pair_short[k1, k2] = max(self.l_short, 0.5 * float(m.min()))
         self.pair_short = np.minimum(self.pair_short, self.pair_short.T)
         self.pair_short_max = self.pair_short.max(axis=1)
+        # size levels of the kinds (see lean_ok); none when all are of about one size
+        lv = size_priority(ex)
+        self.size_level = np.array([lv.get(k, 0.0) for k in ex.kinds])
+        # a kind "leans" on larger ones when every element of it in the reference has a
+        # larger element at about one distance (dots ringed around hubs), not at any
+        # distance (pebbles scattered among stones)
+        self.leans = np.zeros(self.n_kinds, dtype=bool)
+        for k1 in range(self.n_kinds):
+            mine = np.flatnonzero(self.ex_kind == k1)
+            big = np.flatnonzero(self.size_level[self.ex_kind] > self.size_level[k1])
+            if len(mine) >= 3 and len(big):
+                d = cKDTree(ex.xy[big]).query(ex.xy[mine])[0]
+                # (the 90th percentile: an element whose larger one the frame cut off
+                # must not decide it)
+                self.leans[k1] = bool(np.percentile(d, 90) <= LEAN_SPREAD * np.median(d))
+        self.several_sizes = bool(self.leans.any())
         # per-reference: angular gaps of the ring, mean ring edge length
         n_ref = len(self.ref_ids)
         self.ring_gap_min = []  # (k,) smallest of the two gaps beside each ring slot
         self.ring_edge_mean = np.zeros(n_ref)
+        self.ring_edge_max = np.zeros(n_ref)
         for a in range(n_ref):
             k = int(self.rings["n"][a])
             rel = self.rings["rel"][a, :k]
             ang = np.arctan2(rel[:, 1], rel[:, 0])
             gaps = np.mod(np.diff(np.r_[ang, ang[0]]), 2 * np.pi)  # gap after slot j
             self.ring_gap_min.append(np.minimum(gaps, np.roll(gaps, 1)).tolist())
-            self.ring_edge_mean[a] = float(np.linalg.norm(rel - np.roll(rel, -1, axis=0), axis=1).mean())
+            ring_edges = np.linalg.norm(rel - np.roll(rel, -1, axis=0), axis=1)
+            self.ring_edge_mean[a] = float(ring_edges.mean())
+            self.ring_edge_max[a] = float(ring_edges.max())
         ref_kind = self.ex_kind[self.ref_ids]
         self.kind_candidates = [ref_kind == k for k in range(self.n_kinds)]
         self.kind_has_candidates = [bool(c.any()) for c in self.kind_candidates]
@@ -538,6 +560,47 @@ class _Grower:
                 return True
         return False
 
+    def lean_ok(self, s: int, a: int, k: int, th: float, x: float, y: float, kind: int) -> bool:
+        """Will the element have the larger neighbour its reference ring has beside it?
+
+        Not in the paper. With kinds of several sizes a smaller element may sit where the
+        reference has it because of a larger one next to it (dots ringed around a hub:
+        a kind that :attr:`leans`). §5.4 places the small element first and the larger
+        one as a seed afterwards; where that seed cannot grow the small element is left
+        alone, and clusters dissolve into scattered dots. The placement is refused when
+        the nearest larger neighbour of reference ``a``'s ring (at distance ``d``) has no
+        counterpart: no element or seed of its kind within ``1.25 d`` of the seed, and
+        its own place is outside the region, overlaps an element or is too close to one
+        (:meth:`too_close_in_kind`).
+        """
+        if not self.leans[kind]:
+            return True
+        lv = self.size_level
+        n_ring = int(self.rings["n"][a])
+        ring_kind = self.rings["kind"][a, :n_ring]
+        bigger = np.flatnonzero((ring_kind >= 0) & (lv[np.maximum(ring_kind, 0)] > lv[kind]))
+        if len(bigger) == 0:
+            return True
+        big_slots = set(bigger.tolist())
+        if any((k + i) % n_ring in big_slots for i in range(len(self._last_nb))):
+            return True  # a target neighbour stands for it
+        rel = self.rings["rel"][a]
+        dist = np.hypot(rel[bigger, 0], rel[bigger, 1])
+        j = int(bigger[int(np.argmin(dist))])
+        kj = int(ring_kind[j])
+        reach = 1.25 * float(dist.min())
+        if any(int(self.kind[o]) == kj for o in self.near(x, y, reach) if o != s):
+            return True
+        c, sn = math.cos(th), math.sin(th)
+        px = x + c * rel[j, 0] - sn * rel[j, 1]
+        py = y + sn * rel[j, 0] + c * rel[j, 1]
+        if not self.in_domain(px, py) or self.too_close_in_kind(px, py, kj, s):
+            return False
+        r = int(self.rings["sub"][a, j])
+        sc = float(self.ex_scale[r])
+        g = self.element_geometry(kj, px, py, float(self.ex_rot[r]) + th, sc)
+        return self.fits_domain(g) and not (self.p.avoid_overlaps and self.overlaps_any(g, kj, px, py, sc))
+
     def fits_domain(self, g: Any) -> bool:
         """Does element geometry ``g`` lie inside the region and cross no boundary stroke?"""
         box = self.region_box
@@ -638,6 +701,8 @@ class _Grower:
         # an element as close to one of its own kind (or another) as the reference never
         # has them is refused, like the seeds of too_close_in_kind
         if self.too_close_in_kind(x, y, kind, s, (ELEMENT,)):
+            return False
+        if self.several_sizes and not self.lean_ok(s, a, k, th, x, y, kind):
             return False
         g = self.element_geometry(kind, x, y, rot, scale)
         # Not in the paper: an element must lie wholly inside the region and off the
@@ -777,7 +842,11 @@ class _Grower:
             if ja is not None and jb is not None:
                 orig = float(np.hypot(*(rel[ja] - rel[jb])))
             else:
-                orig = float(self.ring_edge_mean[a])
+                # Fig. 6e compares with the corresponding edge of the reference ring; a
+                # pair that does not come from this ring has none: take the ring's
+                # longest edge (its mean made extra seeds in every gap a reference with
+                # long and short edges has, e.g. between clusters)
+                orig = float(self.ring_edge_max[a])
             L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
             if L > 1.5 * orig:
                 # (e) l_long = 1.5 * original length: an extra seed on the bisector, at the
