@@ -93,29 +93,48 @@ def _dart(
     """
     x0, y0, x1, y1 = box
     tries = int(tries * (x1 - x0) * (y1 - y0) / 170.0**2)
-    pts = [] if placed is None else list(placed[0])
-    rs = [] if placed is None else list(placed[1])
-    n0 = len(pts)
     radii_arr = np.broadcast_to(np.asarray(radii, float), (count,)) if np.ndim(radii) == 0 else np.asarray(radii, float)
-    k = 0
-    P = np.asarray(pts, float).reshape(-1, 2)
-    R = np.asarray(rs, float)
-    for _ in range(tries):
-        if k >= count:
-            break
-        r = float(radii_arr[k])
-        if periodic:
-            p = np.array([rng.uniform(x0, x1), rng.uniform(y0, y1)])
-            d = np.abs(P - p)
-            d = np.minimum(d, np.array([x1 - x0, y1 - y0]) - d)
+    P = np.zeros((0, 2)) if placed is None else np.asarray(placed[0], float).reshape(-1, 2)
+    R = np.zeros(0) if placed is None else np.asarray(placed[1], float)
+    n0 = len(P)
+    m = 0.0 if periodic else float(radii_arr[:count].max()) if count else 0.0
+    period = np.array([x1 - x0, y1 - y0])
+    k, done = 0, 0
+    batch = 512
+    while done < tries and k < count:
+        # darts in batches: their clearance to the elements placed before the batch at
+        # once, then one by one against the batch's own accepted darts
+        b = min(batch, tries - done)
+        cand = rng.uniform((x0 + m, y0 + m), (x1 - m, y1 - m), (b, 2))
+        done += b
+        if len(P):
+            d = np.abs(cand[:, None, :] - P[None, :, :])
+            if periodic:
+                d = np.minimum(d, period - d)
+            clear = (np.hypot(d[..., 0], d[..., 1]) - R[None, :]).min(axis=1)
         else:
-            p = np.array([rng.uniform(x0 + r, x1 - r), rng.uniform(y0 + r, y1 - r)])
-            d = P - p
-        if len(P) and np.any(np.hypot(*d.T) < R + r + gap):
-            continue
-        P = np.r_[P, p[None]]
-        R = np.r_[R, r]
-        k += 1
+            clear = np.full(b, np.inf)
+        new: list[int] = []
+        newr: list[float] = []
+        rmin = float(radii_arr[k:count].min()) if k < count else 0.0
+        for i in np.flatnonzero(clear >= rmin + gap):  # the others cannot fit any dart left
+            if k >= count:
+                break
+            r = float(radii_arr[k])
+            if clear[i] < r + gap:
+                continue
+            if new:
+                d = np.abs(cand[new] - cand[i])
+                if periodic:
+                    d = np.minimum(d, period - d)
+                if np.any(np.hypot(d[:, 0], d[:, 1]) < np.asarray(newr) + r + gap):
+                    continue
+            new.append(i)
+            newr.append(r)
+            k += 1
+        if new:
+            P = np.r_[P, cand[new]]
+            R = np.r_[R, newr]
     return P[n0:], R[n0:]
 
 
@@ -242,12 +261,12 @@ def scales(rng: Any = None, *, width: float = 12.0, length: float = 10.0, gap: f
     return _finish("scales", {"scale": shape}, np.zeros(len(p), int), p, rot, box=box, crop=True, params=dict(width=width, length=length, gap=gap, rows=rows, per_row=per_row, row_angle=row_angle, noise=noise))
 
 
-def stones(rng: Any = None, *, size: float = 170.0, radius: float = 6.5, spread: float = 0.2, gap: float = 1.2, count: int = 160) -> Arrangement:
+def stones(rng: Any = None, *, size: float = 200.0, radius: float = 6.5, spread: float = 0.2, gap: float = 1.2, count: int = 160) -> Arrangement:
     """Irregular stones of one kind: dart-thrown, scales ``1 +- spread``, any rotation."""
     g = _rng(rng)
     shape = Shape.polygon(_stone(g, radius), style={"fill": "#8a8f98", "stroke": "#3c4047"})
     sc = g.uniform(1 - spread, 1 + spread, count)
-    p, _ = _dart(g, (0, 0, size, size), radius * sc, count, gap=gap)
+    p, _ = _dart(g, (0, 0, size, size), shape.radius * sc, count, gap=gap)  # bounding discs of the outline
     sc = sc[: len(p)]
     return _finish("stones", {"stone": shape}, np.zeros(len(p), int), p, g.uniform(0, 2 * np.pi, len(p)), sc, box=(0, 0, size, size), params=dict(size=size, radius=radius, spread=spread, gap=gap, count=count))
 
@@ -262,9 +281,9 @@ def two_sizes(rng: Any = None, *, size: float = 220.0, large: float = 12.0, rati
     big_shape = Shape.polygon(_stone(g, large, vertices=10), style={"fill": "#7d848f", "stroke": "#33363b"})
     peb_shape = Shape.polygon(_stone(g, small, vertices=7, roughness=0.12), style={"fill": "#c2b280", "stroke": "#6f6440"})
     sl = g.uniform(0.9, 1.1, n_large)
-    pl, rl = _dart(g, (0, 0, size, size), large * sl, n_large, gap=gap)
+    pl, rl = _dart(g, (0, 0, size, size), big_shape.radius * sl, n_large, gap=gap)
     ss = g.uniform(0.85, 1.15, n_small)
-    ps, _ = _dart(g, (0, 0, size, size), small * ss, n_small, gap=gap, placed=(pl, rl), tries=60000)
+    ps, _ = _dart(g, (0, 0, size, size), peb_shape.radius * ss, n_small, gap=gap, placed=(pl, rl), tries=60000)
     p = np.r_[pl, ps]
     kind = np.r_[np.zeros(len(pl), int), np.ones(len(ps), int)]
     sc = np.r_[sl[: len(pl)], ss[: len(ps)]]
@@ -307,7 +326,7 @@ def three_sizes(rng: Any = None, *, size: float = 210.0, small: float = 2.6, rat
     p_all, k_all, s_all = [], [], []
     for idx in (2, 1, 0):
         sc = g.uniform(0.9, 1.1, counts[idx])
-        p, r = _dart(g, (0, 0, size, size), small * ratios[idx] * sc, counts[idx], gap=gap, placed=(pl, rl), tries=40000)
+        p, r = _dart(g, (0, 0, size, size), shapes[names[idx]].radius * sc, counts[idx], gap=gap, placed=(pl, rl), tries=40000)
         pl, rl = np.r_[pl, p], np.r_[rl, r]
         p_all.append(p)
         k_all.append(np.full(len(p), idx))

@@ -8,6 +8,7 @@ L-shaped region (edge correction), and peaks at a hexagonal lattice's distances.
 
 from __future__ import annotations
 
+import functools
 import importlib.util
 import json
 from pathlib import Path
@@ -36,6 +37,12 @@ def _suite():
 suite = _suite()
 
 
+@functools.lru_cache(maxsize=None)
+def exemplar(name: str) -> Arrangement:
+    """The suite's default exemplar (arrangements are immutable: safe to share)."""
+    return suite.make_exemplar(name)
+
+
 def tile(ex: Arrangement, nx: int, ny: int) -> Arrangement:
     """Copies of ``ex`` side by side, one frame apart."""
     x0, y0, x1, y1 = ex.region.bounds
@@ -59,12 +66,12 @@ def poisson(n: int, region: Region, rng: int = 0) -> Arrangement:
 
 @pytest.fixture(scope="module")
 def clusters():
-    return suite.make_exemplar("clusters")
+    return exemplar("clusters")
 
 
 @pytest.fixture(scope="module")
 def rows():
-    return suite.make_exemplar("rows_noisy")
+    return exemplar("rows_noisy")
 
 
 # -- g(r) -------------------------------------------------------------------------------
@@ -100,7 +107,7 @@ def test_g_of_a_hexagonal_lattice_peaks_at_the_lattice_distances():
 
 
 def test_swapping_kinds_changes_the_cross_kind_g():
-    ex = suite.make_exemplar("stripes")
+    ex = exemplar("stripes")
     g = pair_correlation(ex)["g"]
     rng = np.random.default_rng(0)
     shuffled = Arrangement(ex.shapes, rng.permutation(ex.kind), ex.x, ex.y, ex.rotation, region=ex.region)
@@ -123,14 +130,14 @@ def test_nearest_neighbor_distances_of_a_square_grid():
 
 @pytest.mark.parametrize("name", ["clusters", "rows_noisy", "hex_lattice", "stones", "two_sizes", "sparse_voids"])
 def test_a_translated_copy_is_faithful(name):
-    ex = suite.make_exemplar(name)
+    ex = exemplar(name)
     rep = fidelity(ex, moved(ex, 1234.5, -321.0), eq5=False)
     assert rep.faithful, rep.failures
 
 
 @pytest.mark.parametrize("name", ["clusters", "rows_noisy", "hex_lattice", "bricks", "scales", "rings"])
 def test_a_tiled_copy_is_faithful(name):
-    ex = suite.make_exemplar(name)  # these frames are one period: copies tile seamlessly
+    ex = exemplar(name)  # these frames are one period: copies tile seamlessly
     rep = fidelity(ex, tile(ex, 3, 3), eq5=name == "clusters")
     assert rep.faithful, rep.failures
     assert rep.info["area_ratio"] > 4
@@ -210,7 +217,7 @@ def test_eq5_is_zero_for_a_copy_and_large_for_a_scatter(clusters):
 
 
 def test_voids_are_invisible_and_reported():
-    ex = suite.make_exemplar("sparse_voids")
+    ex = exemplar("sparse_voids")
     vis = ex.select(~ex["void"])
     rep = fidelity(ex, moved(vis, 0, 0).without_columns("void"), eq5=False)
     assert rep.faithful, rep.failures
@@ -282,14 +289,14 @@ def test_bad_input_names_the_problem(clusters):
 @settings(max_examples=8)
 @given(dx=st.floats(-1e4, 1e4), dy=st.floats(-1e4, 1e4))
 def test_any_translation_is_faithful(dx, dy):
-    ex = suite.make_exemplar("stones")
+    ex = exemplar("stones")
     assert fidelity(ex, moved(ex, dx, dy), eq5=False, local=False).faithful
 
 
 def test_pebbles_taking_over_fail():
     # the issue's first symptom: small elements take over (0.9 of the output) and large
     # ones thin out
-    ex = suite.make_exemplar("two_sizes")
+    ex = exemplar("two_sizes")
     big = tile(ex, 3, 3)
     drop = (big.kind == 0) & (np.random.default_rng(0).random(len(big)) < 0.6)
     rep = fidelity(ex, big.select(~drop), eq5=False)
