@@ -19,8 +19,10 @@ from hypothesis import strategies as st
 
 from strew import Arrangement, InputError, Region, Shape
 from strew._errors import Cancelled
+from strew._limits import limits
 
 DEADLINE_S = 8.0  # per call; generous for a loaded CI machine, far below a hang
+WORK_LIMIT = 3000  # elements: larger expected outputs must be refused before starting
 
 # No shrinking: a failing example is reported as found, so the suite's time stays bounded.
 FUZZ = settings(max_examples=12, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True,
@@ -63,7 +65,9 @@ def _valid(arr: Arrangement) -> None:
 def _call(fn, *args, **kwargs):
     """A valid result, or None after a clean InputError; a hang fails."""
     try:
-        with warnings.catch_warnings():  # repairs of self-intersecting input are announced
+        # repairs of self-intersecting input are announced; the work limit keeps each call
+        # small (a run expected to make more elements is refused up front)
+        with warnings.catch_warnings(), limits(elements=WORK_LIMIT):
             warnings.simplefilter("ignore")
             out = fn(*args, should_cancel=_deadline(), **kwargs)
     except InputError as exc:
@@ -72,6 +76,7 @@ def _call(fn, *args, **kwargs):
     except Cancelled:  # pragma: no cover - the failure being looked for
         pytest.fail(f"{getattr(fn, '__name__', fn)}: over the time bound of {DEADLINE_S} s")
     _valid(out)
+    assert len(out) <= 4 * WORK_LIMIT  # the estimate is not off by orders of magnitude
     return out
 
 
