@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -57,11 +58,25 @@ def test_render_json_svg_json_keeps_elements(doc_path, tmp_path):
 def test_info_prints_counts_bounds_and_metrics(doc_path, capsys):
     assert main(["info", str(doc_path)]) == 0
     out = capsys.readouterr().out
-    for word in ("dot", "bar", "bounds", "overlaps", "coverage", "density CV", "nearest neighbour"):
+    for word in ("dot", "bar", "bounds", "overlaps", "coverage", "nearest neighbour"):
         assert word in out
     assert main(["info", str(doc_path), "--json"]) == 0
     s = json.loads(capsys.readouterr().out)
     assert s["counts"] == {"dot": 2, "bar": 2} and s["count"] == 4
+    # the density CV is printed exactly when it can be computed (4 elements: too few cells)
+    assert ("density CV" in out) == (s["density_cv"] is not None)
+
+
+def test_info_json_is_strict_json_and_leaves_out_what_cannot_be_computed(capsys):
+    # the stones exemplar has no region, so its density CV is undefined
+    stones = Path(__file__).resolve().parents[2] / "examples" / "exemplars" / "stones.svg"
+    assert main(["info", str(stones), "--json"]) == 0
+    text = capsys.readouterr().out
+    s = json.loads(text, parse_constant=lambda c: pytest.fail(f"non-standard JSON constant {c}"))
+    assert s["density_cv"] is None and s["count"] == 30
+    assert main(["info", str(stones)]) == 0
+    out = capsys.readouterr().out
+    assert "nan" not in out.lower() and "coverage" in out
 
 
 def _doc(**elements):

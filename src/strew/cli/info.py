@@ -23,7 +23,9 @@ def command(input: str, region: str | None, as_json: bool) -> None:
     s["nearest_neighbor_by_kind"] = metrics.nearest_neighbor_distances(arr)
     s["pair_correlation"] = _pair_correlation(arr, reg)
     if as_json:
-        click.echo(json.dumps(s, indent=2))
+        # what cannot be computed (a density CV without a region) is null, never NaN,
+        # which JSON.parse and other strict readers reject
+        click.echo(json.dumps(_finite_or_none(s), indent=2, allow_nan=False))
         return
     from rich.console import Console
     from rich.table import Table
@@ -42,7 +44,7 @@ def command(input: str, region: str | None, as_json: bool) -> None:
         f"bounds            {b[0]:.4g}, {b[1]:.4g} .. {b[2]:.4g}, {b[3]:.4g}",
         f"overlaps          {s['overlap_pairs']} pairs, area {s['overlap_area']:.4g}",
         f"coverage          {s['coverage']:.4f}",
-        f"density CV        {s['density_cv']:.4f}",
+        *([f"density CV        {s['density_cv']:.4f}"] if _finite(s["density_cv"]) else []),
         f"nearest neighbour mean {nn['mean']:.4g}, std {nn['std']:.4g}, min {nn['min']:.4g}, cv {nn['cv']:.3f}",
     ]
     if "outside" in s:
@@ -77,3 +79,20 @@ def _pair_correlation(arr, reg):  # type: ignore[no-untyped-def]
         return v if math.isfinite(v) else None
 
     return {"r": [float(r) for r in pc["r"]], "r_max": float(pc["r_max"]), "g": {k: [clean(v) for v in g] for k, g in pc["g"].items()}}
+
+
+def _finite(v) -> bool:  # type: ignore[no-untyped-def]
+    import math
+
+    return isinstance(v, (int, float)) and math.isfinite(v)
+
+
+def _finite_or_none(obj):  # type: ignore[no-untyped-def]
+    """``obj`` with every non-finite float replaced by None (JSON null)."""
+    if isinstance(obj, dict):
+        return {k: _finite_or_none(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_finite_or_none(v) for v in obj]
+    if isinstance(obj, float) and not _finite(obj):
+        return None
+    return obj
