@@ -4,6 +4,23 @@ One seed is placed; then, repeatedly, the seed nearest the initial seed is repla
 the best matching reference element (§5.2, §5.3) and the unpaired elements of that
 reference's 1-ring become new seeds (§5.4), subject to the heuristics of Fig. 6. A
 windowed least-squares relaxation (§5.5) keeps ring shapes close to the reference.
+
+Departures from the paper (each explained where it is made):
+
+- a seed moves to where the chosen ring fits its placed neighbours best before it is
+  replaced (the least-squares step of Eq. 5 for that element), so that the noise of
+  near-regular rings does not add up along the growth (``_fit_position``);
+- rotation mode fits centred point sets ([MHTG05]) and keeps the neighbours' frame
+  within ``max_turn``; flow mode fits the rotation the same way, held within
+  ``flow_max_turn`` of the field (``choose``; :func:`strew.grow.match_references`);
+- the relaxation keeps each edge's reference offset, and takes the current offset only
+  for edges the element's ring did not make (``ring_target``);
+- Fig. 6 (b) also drops a seed or element closer to an object than the reference ever
+  has their two kinds (``too_close_in_kind``), Fig. 6 (e) compares a pair the ring does
+  not give with the ring's longest edge, and a small kind that leans on larger ones is
+  placed only where its larger neighbour can be (``lean_ok``);
+- elements lie wholly inside the region and off boundary strokes, and never overlap;
+- grid cells come from both the spacing and the element size.
 """
 
 from __future__ import annotations
