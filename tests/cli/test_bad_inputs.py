@@ -346,6 +346,33 @@ def test_output_files_follow_the_umask(inputs, tmp_path):
     assert (tmp_path / "a.json").stat().st_mode & 0o777 == 0o644
 
 
+def test_limits_can_be_raised(inputs, tmp_path, capfd, monkeypatch):
+    """The message names the limit, and the option it names lets the same input through."""
+    from strew.cli import main
+
+    monkeypatch.setenv("STREW_LIMIT_FILE_SIZE", str(OVERSIZE_LIMIT))
+    out = tmp_path / "a.json"
+    assert main(["render", str(inputs / "big.json"), "--out", str(out), "-q"]) == 2
+    assert "--limit-file-size" in capfd.readouterr().err and not out.exists()
+    assert main(["--limit-file-size", "1MB", "render", str(inputs / "big.json"), "--out", str(out), "-q"]) == 0
+    assert out.exists()
+    # the option holds for one run only
+    assert main(["render", str(inputs / "big.json"), "--out", str(out), "-q"]) == 2
+    capfd.readouterr()
+    # work limits: refused by default, accepted with the limit raised (checked, not run)
+    from strew import Region, limits
+    from strew._limits import check_work
+
+    with pytest.raises(Exception, match="--limit-elements"):
+        check_work("--count", count=1e9)
+    with limits(elements=2e9):
+        check_work("--count", count=1e9)
+    assert main(["--limit-elements", "nonsense", "render", str(inputs / "valid.json"), "--out", str(out)]) == 2
+    assert "--limit-elements" in capfd.readouterr().err
+    with pytest.raises(Exception, match="--size/--region"):
+        check_work("--size/--region", region=Region.rectangle(1e6, 1e6), per_element=1.0)
+
+
 def _probe_subprocess(timeout: float = 30.0) -> None:  # pragma: no cover - a measurement, run by hand
     import subprocess
     import tempfile
