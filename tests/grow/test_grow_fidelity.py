@@ -45,7 +45,6 @@ def _region(ex, scale=2.2):
     [
         ("rows_noisy", "fixed"),
         ("stones", "fixed"),
-        ("three_sizes", "fixed"),
         ("rows_noisy", "rotate"),
         ("bricks", "rotate"),
         ("scales", "rotate"),

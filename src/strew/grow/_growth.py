@@ -458,6 +458,29 @@ class _Grower:
             return shapely.polygons(ring @ m.T + t)
         return shapely.transform(local, lambda q: q @ m.T + t)
 
+    def element_geometries(self, idx: Sequence[int], xy: np.ndarray) -> list[Any]:
+        """Outlines of elements ``idx`` moved to ``xy`` (m, 2), batched by kind."""
+        out: list[Any] = [None] * len(idx)
+        idx_a = np.asarray(idx, dtype=np.intp)
+        kinds = self.kind[idx_a]
+        for kind in np.unique(kinds).tolist():
+            sel = np.flatnonzero(kinds == kind)
+            ring = self.local_ring[kind]
+            if ring is None:
+                for q in sel.tolist():
+                    g = int(idx_a[q])
+                    out[q] = self.element_geometry(kind, float(xy[q, 0]), float(xy[q, 1]), self.rot[g], self.scl[g])
+                continue
+            gi = idx_a[sel]
+            c = np.cos(self.rot[gi]) * self.scl[gi]
+            s = np.sin(self.rot[gi]) * self.scl[gi]
+            px = c[:, None] * ring[None, :, 0] - s[:, None] * ring[None, :, 1] + xy[sel, 0][:, None]
+            py = s[:, None] * ring[None, :, 0] + c[:, None] * ring[None, :, 1] + xy[sel, 1][:, None]
+            polys = shapely.polygons(np.stack([px, py], axis=-1))
+            for q, g in zip(sel.tolist(), polys):
+                out[q] = g
+        return out
+
     def overlaps_any(self, g: Any, kind: int, x: float, y: float, scale: float, skip: set[int] | None = None) -> bool:
         r = self.kind_radius[kind] * scale + self.other_rmax
         others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if not skip or j not in skip]
@@ -494,6 +517,38 @@ class _Grower:
                 out.append(j)
             elif shapely.intersection(geom, gs[q]).area > 1e-9 * max(geom.area, 1e-300):
                 out.append(j)
+        return out
+
+    def overlapping_many(self, check: Sequence[int]) -> dict[int, list[int]]:
+        """:meth:`overlapping` for several elements, with one vectorised shapely call."""
+        ga: list[int] = []
+        gb: list[int] = []
+        for g in check:
+            kind = int(self.kind[g])
+            x, y = self.xy[g]
+            r = self.kind_radius[kind] * self.scl[g] + self.other_rmax
+            for j in self.near(x, y, r, (ELEMENT, OBSTACLE)):
+                if j != g:
+                    ga.append(g)
+                    gb.append(j)
+        out: dict[int, list[int]] = {}
+        if not ga:
+            return out
+        geoms = self.geom
+        A = np.array([geoms[g] for g in ga], dtype=object)
+        B = np.array([geoms[j] for j in gb], dtype=object)
+        hit = np.flatnonzero(shapely.intersects(A, B))
+        if len(hit) == 0:
+            return out
+        areal = self.areal
+        both = np.array([areal[self.kind[ga[q]]] and areal[self.kind[gb[q]]] for q in hit], dtype=bool)
+        keep = ~both
+        if both.any():
+            hb = hit[both]
+            area = shapely.area(shapely.intersection(A[hb], B[hb]))
+            keep[both] = area > 1e-9 * np.maximum(shapely.area(A[hb]), 1e-300)
+        for q in hit[keep].tolist():
+            out.setdefault(ga[q], []).append(gb[q])
         return out
 
     # -- growth -------------------------------------------------------------------------
@@ -817,16 +872,25 @@ class _Grower:
         rows wander and close up (§5.5 relaxes it only afterwards). The least-squares
         position for the chosen ring, ``mean_i (x_i - R r_{f(i)})``, is the minimiser of
         Eq. 5 for the new element alone with its neighbours held (Eq. 6). The move is
-        kept below ``l_short`` and within the region, boundaries and connectivity.
+        kept within ``fit_reach * l_short`` and within the region, boundaries and
+        connectivity.
         """
         n_ring = len(rel)
-        pos = self.pos[nb]
-        slots = (k + np.arange(len(nb))) % n_ring
-        rr = rel[slots]
-        fx = float(np.mean(pos[:, 0] - (c * rr[:, 0] - sn * rr[:, 1])))
-        fy = float(np.mean(pos[:, 1] - (sn * rr[:, 0] + c * rr[:, 1])))
+        rel_l = rel.tolist()
+        xy = self.xy
+        fx = fy = 0.0
+        for i, o in enumerate(nb.tolist()):
+            rx, ry = rel_l[(k + i) % n_ring]
+            px, py = xy[o]
+            fx += px - (c * rx - sn * ry)
+            fy += py - (sn * rx + c * ry)
+        fx /= len(nb)
+        fy /= len(nb)
         ox, oy = self.xy[s]
-        if (fx - ox) ** 2 + (fy - oy) ** 2 > (self.p.fit_reach * self.l_short) ** 2 or not self.in_domain(fx, fy):
+        d2 = (fx - ox) ** 2 + (fy - oy) ** 2
+        if d2 <= (1e-9 * self.l) ** 2:
+            return  # already there (a perfect lattice): nothing to check
+        if d2 > (self.p.fit_reach * self.l_short) ** 2 or not self.in_domain(fx, fy):
             return
         if self.crosses_boundary((ox, oy), (fx, fy)):
             return
@@ -976,12 +1040,16 @@ class _Grower:
             # nor an element's centre out of the spray area (§5.1: elements grow within it)
             if self.spray_area is not None and self.state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
                 continue
-            if self.state[g] == ELEMENT:
-                ng = self.element_geometry(int(self.kind[g]), nx, ny, self.rot[g], self.scl[g])
-                if not self.fits_domain(ng):
-                    continue  # nor an element across the region's edge or a boundary stroke
-                new_geom[g] = ng
             moved.append(g)
+        # the moved elements' new outlines, in one shapely call per kind
+        els = [g for g in moved if self.state[g] == ELEMENT]
+        if els:
+            for g, ng in zip(els, self.element_geometries(els, new[[local[g] for g in els]])):
+                new_geom[g] = ng
+            # nor an element across the region's edge or a boundary stroke
+            bad = {g for g in els if not self.fits_domain(new_geom[g])}
+            if bad:
+                moved = [g for g in moved if g not in bad]
         old = {g: (*self.xy[g], self.geom[g]) for g in moved}
         for g in moved:
             self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
@@ -995,11 +1063,9 @@ class _Grower:
         check = [g for g in moved if self.state[g] == ELEMENT]
         while check:
             back: set[int] = set()
-            for g in check:
-                hits = self.overlapping(g)
-                if hits:
-                    back.add(g)
-                    back.update(h for h in hits if h in old)
+            for g, hits in self.overlapping_many(check).items():
+                back.add(g)
+                back.update(h for h in hits if h in old)
             back = {g for g in back if self.xy[g] != old[g][:2]}
             for g in back:
                 self._move(g, old[g][0], old[g][1])
