@@ -26,8 +26,12 @@ than the old nearest obstacle, so the work is proportional to the cells that cha
 
 from __future__ import annotations
 
+import math
+
 import numba
 import numpy as np
+from llvmlite import binding as llvm_binding
+from numba.extending import get_cython_function_address
 
 from .._numba_geometry import seg_dist2
 
@@ -40,6 +44,17 @@ __all__ = [
 ]
 
 _NB = dict(cache=True, nogil=True)
+
+# LAPACK's dgetrf and dgesv, called directly (for _newton3): the routines (scipy's
+# LAPACK) that numba's np.linalg.det and np.linalg.solve call, on the same Fortran-order
+# copies, so the same bits, without numba's generic linalg code, whose compilation took
+# most of the ornament kernels' first run (issue 16: solve_impl alone about 13 s).
+# (external symbols, not ctypes pointers, so that the kernel can be cached)
+llvm_binding.add_symbol("strew_dgetrf", get_cython_function_address("scipy.linalg.cython_lapack", "dgetrf"))
+llvm_binding.add_symbol("strew_dgesv", get_cython_function_address("scipy.linalg.cython_lapack", "dgesv"))
+_VP = numba.types.voidptr
+_dgetrf = numba.types.ExternalFunction("strew_dgetrf", numba.types.void(_VP, _VP, _VP, _VP, _VP, _VP))
+_dgesv = numba.types.ExternalFunction("strew_dgesv", numba.types.void(_VP, _VP, _VP, _VP, _VP, _VP, _VP, _VP))
 
 
 @numba.njit(**_NB)
@@ -454,6 +469,14 @@ def _nearest_on(px, py, circ, segs, k):
 
 
 @numba.njit(**_NB)
+def _copy3(a, out):
+    """``out[:, :] = a`` for (3, 3) arrays, as loops (slice assignment compiles slowly)."""
+    for r in range(3):
+        for c in range(3):
+            out[r, c] = a[r, c]
+
+
+@numba.njit(**_NB)
 def _newton3(px, py, rho, circ, segs):
     """Newton steps on the three nearest obstacles: the point equidistant from them.
 
@@ -467,19 +490,50 @@ def _newton3(px, py, rho, circ, segs):
     for k in range(n):
         d[k] = _nearest_on(px, py, circ, segs, k)[0]
     idx = np.argsort(d)[:3]
+    three = np.full(1, 3, dtype=np.int32)  # n, lda, ldb
+    one = np.ones(1, dtype=np.int32)  # nrhs
+    info = np.zeros(1, dtype=np.int32)
+    ipiv = np.empty(3, dtype=np.int32)
+    a = np.empty((3, 3)).T  # Fortran order, as LAPACK (and numba's linalg) takes it
+    lu = np.empty((3, 3)).T
+    f = np.empty(3)
     for _ in range(12):
-        a = np.empty((3, 3))
-        f = np.empty(3)
         for r in range(3):
             dk, gx, gy = _nearest_on(px, py, circ, segs, idx[r])
             a[r, 0] = gx
             a[r, 1] = gy
             a[r, 2] = -1.0
             f[r] = dk - rho
-        det = np.linalg.det(a)
+        finite = True
+        for r in range(3):
+            finite = finite and math.isfinite(f[r]) and math.isfinite(a[r, 0]) and math.isfinite(a[r, 1])
+        if not finite:
+            break  # (np.linalg raised here; the point stays as the local search left it)
+        # det(a) as np.linalg.det: sign and log-sum of the diagonal of dgetrf's LU
+        _copy3(a, lu)
+        _dgetrf(three.ctypes, three.ctypes, lu.ctypes, three.ctypes, ipiv.ctypes, info.ctypes)
+        det = 0.0
+        if info[0] <= 0:
+            sgn = 1
+            for k in range(3):
+                sgn = sgn + (ipiv[k] != (k + 1))
+            sgn = sgn & 1
+            if sgn == 0:
+                sgn = -1
+            acc = 0.0
+            for k in range(3):
+                v = lu[k, k]
+                if v < 0.0:
+                    sgn = -sgn
+                    v = -v
+                acc = acc + np.log(v)
+            det = sgn * np.exp(acc)
         if abs(det) < 1e-12:
             break
-        step = np.linalg.solve(a, -f)
+        # np.linalg.solve(a, -f): dgesv on a copy of a and of -f
+        _copy3(a, lu)
+        step = -f
+        _dgesv(three.ctypes, one.ctypes, lu.ctypes, three.ctypes, ipiv.ctypes, step.ctypes, three.ctypes, info.ctypes)
         px += step[0]
         py += step[1]
         rho += step[2]
