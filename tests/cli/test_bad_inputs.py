@@ -12,7 +12,6 @@ measurement quoted in issue 17); a hang counts as mishandled.
 from __future__ import annotations
 
 import json
-import math
 import os
 import sys
 from pathlib import Path

@@ -132,10 +132,10 @@ def test_several_outputs_all_or_none(doc, tmp_path, capfd, monkeypatch):
 def test_payload_errors_leave_no_output(doc, tmp_path, capfd, monkeypatch):
     """Encoding every output happens before any file is created."""
 
-    def boom(*a, **k):
-        raise strew_input_error("cannot render PNG")
+    from strew import InputError
 
-    from strew import InputError as strew_input_error
+    def boom(*a, **k):
+        raise InputError("cannot render PNG")
 
     monkeypatch.setattr("strew.io.png.to_png", boom)
     code = main(["render", str(doc), "--out", str(tmp_path / "a.json"), "--out", str(tmp_path / "b.png"), "-q"])
