@@ -166,3 +166,16 @@ def test_size_priority_ranks_larger_kinds_first():
     assert size_priority(make_exemplar("bricks")) == {}
     p = size_priority(make_exemplar("three_sizes"))
     assert p["large"] > p["medium"] > p["small"]
+
+
+def test_spray_never_places_an_element_across_the_region_edge():
+    from strew.grow import SprayGrowth
+
+    ex = make_exemplar("bricks")
+    region = Region.rectangle(160.0, 120.0)
+    g = SprayGrowth(ex, radius=40.0, region=region, rng=1)
+    # a stroke from inside along the region's edge, with a radius reaching beyond it
+    g.add_points([[40.0, 60.0], [80.0, 8.0], [150.0, 8.0], [152.0, 110.0]])
+    out = g.grow()
+    assert len(out) > 10
+    assert np.all(region.contains_geometry(out.geometry, tolerance=1e-9))
