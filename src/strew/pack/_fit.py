@@ -97,7 +97,7 @@ def ring_layout(geoms: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 TOL = 1e-12
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _cell_span(gx0, gy0, gc, cols, rows, xmin, ymin, xmax, ymax):  # pragma: no cover - numba
     """Grid cells ``(c0, c1, q0, q1)`` (inclusive, clamped) that a box touches."""
     c0 = max(int((xmin - gx0) / gc), 0)
@@ -107,7 +107,7 @@ def _cell_span(gx0, gy0, gc, cols, rows, xmin, ymin, xmax, ymax):  # pragma: no 
     return c0, c1, q0, q1
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _orient(ax, ay, bx, by, cx, cy):  # pragma: no cover - numba
     """Orientation of c about ab: +1, -1, or 0 when too close to call (within TOL)."""
     u = (bx - ax) * (cy - ay)
@@ -370,7 +370,7 @@ def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot
     return placed
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _alpha(r, power):  # pragma: no cover - numba
     if power == 16.0:
         r = r * r
@@ -380,11 +380,13 @@ def _alpha(r, power):  # pragma: no cover - numba
     return r**power
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True)
 def _rand(state):  # pragma: no cover - numba
     """Uniform double in [0, 1) from xoshiro256+ (``state``: (4,) uint64, not all zero),
-    inline: the compiled loops draw several numbers per pose, and a call into numpy's
-    generator costs more than the rest of a rejected pose."""
+    compiled: the loops draw several numbers per pose, and a call into numpy's generator
+    costs more than the rest of a rejected pose. Small helpers here are plain kernels,
+    not ``inline="always"``: LLVM inlines them just the same, while numba's own inlining
+    retypes each call site (issue 16: first-run compile of pack about 15% shorter)."""
     s0, s1, s2, s3 = state[0], state[1], state[2], state[3]
     out = s0 + s3
     t = s1 << np.uint64(17)
