@@ -837,6 +837,16 @@ def _signature(paths: list[Path]) -> _Signature | None:
     )
 
 
+def _invariants(sig: _Signature | None) -> list[float]:
+    """size, radius, gyration, tolerance, +-1 (area or lines), then ``|c_k| / (size gyration^k)``
+    for k = 2 .. _KMAX: the similarity invariants :meth:`_Reader.candidate_kinds` compares."""
+    if sig is None or not sig.size > 0:
+        return [math.nan] * 4 + [0.0] + [math.nan] * (_KMAX - 1)
+    g = max(sig.gyration, 1e-300)
+    mags = [abs(sig.moments[k]) / (sig.size * g**k) for k in range(2, _KMAX + 1)]
+    return [sig.size, sig.radius, sig.gyration, sig.tolerance, 1.0 if sig.is_area else -1.0, *mags]
+
+
 def _match(ref: _Signature, other: _Signature) -> tuple[float, float] | None:
     """Similarity ``other = s R(t) (ref - ref.centroid) + other.centroid``, or None.
 
@@ -931,6 +941,8 @@ class _Reader:
         self.names: set[str] = set()
         self.elements: list[_Element] = []
         self.region_els: list[tuple[ET.Element, np.ndarray]] = []
+        self._table = np.zeros((0, 5 + _KMAX - 1))  # per kind: see candidate_kinds
+        self._rows = 0
 
     def unique(self, name: str) -> str:
         if name not in self.names:
@@ -1031,7 +1043,8 @@ class _Reader:
         sig = doc.signature(parts, flat)
         key = _key_of(el)
         if sig is not None:
-            for kind in self.kinds:
+            for i in self.candidate_kinds(sig):
+                kind = self.kinds[i]
                 if not kind.matchable or kind.signature is None or (key is not None and kind.key != key):
                     continue
                 found = _match(kind.signature, sig)
@@ -1047,6 +1060,33 @@ class _Reader:
         name = key or "shape"
         kind = self.new_kind(name, key, parts, keep_origin=False)
         self.place(kind, _IDENTITY, void, el)
+
+    def candidate_kinds(self, sig: _Signature) -> np.ndarray:
+        """Indices, in order, of the kinds that may match ``sig`` (see :func:`_match`).
+
+        On arrays of every kind at once: ``_match``'s own size, radius and gyration tests,
+        and the rotation-invariant moment magnitudes ``|c_k| / (size gyration^k)``, which
+        similar shapes share (up to the flattening; 0.05 + 10% allowed). Without it a
+        drawing of n distinct shapes costs n^2 / 2 full matches (issue 17).
+        """
+        n = len(self.kinds)
+        if self._rows < n:  # rows for the kinds added since the last call
+            new = [_invariants(k.signature if k.matchable else None) for k in self.kinds[self._rows : n]]
+            self._table = np.concatenate([self._table, np.array(new, dtype=float).reshape(len(new), -1)])
+            self._rows = n
+        if n == 0:
+            return np.zeros(0, dtype=np.intp)
+        row = _invariants(sig)
+        size, radius, gyration, tol, area = self._table[:, :5].T
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            scale = np.sqrt(sig.size / size) if sig.is_area else sig.size / size
+            t = np.maximum(sig.tolerance, scale * tol)
+            ok = (area == row[4]) & np.isfinite(size)
+            ok &= ~(np.abs(sig.radius - scale * radius) > 2 * t + 0.02 * sig.radius)
+            ok &= ~(np.abs(sig.gyration - scale * gyration) > 2 * t + 0.02 * sig.gyration)
+            mk, mo = self._table[:, 5:], row[5:]
+            ok &= ~(np.abs(mk - mo) > 0.05 + 0.1 * np.maximum(mk, mo)).any(axis=1)
+        return np.flatnonzero(ok)
 
     def read(self, *, all_symbols: bool) -> None:
         doc = self.doc
