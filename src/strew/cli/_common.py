@@ -250,6 +250,11 @@ def progress_bar(description: str, *, quiet: bool = False) -> Iterator[tuple[Cal
     def should_cancel() -> bool:
         return cancelled.is_set()
 
+    if not quiet and sys.stderr.isatty():  # (logs keep their one-line errors)
+        from .._kernel_cache import kernels_cached
+
+        if not kernels_cached(description):  # issue 16: a first run does not look hung
+            click.echo("compiling kernels, first run only", err=True)
     with _sigint_cancels(cancelled):
         if quiet or not sys.stderr.isatty():
             yield None, should_cancel
