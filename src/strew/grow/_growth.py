@@ -202,6 +202,7 @@ class _Grower:
         self.hcell = max(5 * self.l, 1e-9)
         self.hgrid: dict[tuple[int, int], set[int]] = {}
         self.none_prio = float(prio.min())
+        self.kind_prio_list = [float(v) for v in prio]
         # geometry for the overlap guard
         self.local_geom = [ex.shapes[k].geometry for k in ex.kinds]
         self.local_coords = [None] * self.n_kinds
@@ -408,28 +409,35 @@ class _Grower:
         edges = self.edges
         edge_grid = self.edge_grid
         cells = self._edge_cells(pa, pb)
-        one = len(cells) == 1  # an edge is listed once per cell: no need to skip repeats
-        seen: set[tuple[int, int]] = set()
-        for c in cells:
-            cell = edge_grid.get(c)
-            if not cell:
-                continue
-            stale = []
-            for e in cell:
-                if not one:
-                    if e in seen:
-                        continue
-                    seen.add(e)
-                if e not in edges:
-                    stale.append(e)
-                    continue
-                u, v = e
-                if u == a or u == b or v == a or v == b:
-                    continue
-                if _segments_cross(pa, pb, xy[u], xy[v]):
-                    return True
-            if stale:
+        px, py = pa
+        qx, qy = pb
+        fx, fy = qx - px, qy - py
+        lists = [cell for cell in map(edge_grid.get, cells) if cell]
+        if not lists:
+            return False
+        # an edge is listed in every cell its box covers: the union (one set operation)
+        # takes each once; edges removed since they were listed are dropped from the cells
+        cand = lists[0] if len(lists) == 1 else set().union(*lists)
+        stale = cand - edges
+        if stale:
+            for cell in lists:
                 cell.difference_update(stale)
+            if len(lists) > 1:
+                cand -= stale
+        for u, v in cand:
+            if u == a or u == b or v == a or v == b:
+                continue
+            # _segments_cross(pa, pb, xy[u], xy[v]), inlined (the hottest test of the growth)
+            ax, ay = xy[u]
+            bx, by = xy[v]
+            ex, ey = bx - ax, by - ay
+            d1 = ex * (py - ay) - ey * (px - ax)
+            d2 = ex * (qy - ay) - ey * (qx - ax)
+            if (d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0):
+                d3 = fx * (ay - py) - fy * (ax - px)
+                d4 = fx * (by - py) - fy * (bx - px)
+                if (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0):
+                    return True
         return False
 
     def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
@@ -523,14 +531,29 @@ class _Grower:
         """:meth:`overlapping` for several elements, with one vectorised shapely call."""
         ga: list[int] = []
         gb: list[int] = []
+        xy = self.xy
+        kinds = self.kind
+        state = self.state
+        # bounding radius of each element: pairs farther apart than the sum of theirs
+        # cannot touch, and skip the shapely test (obstacles have no kind of ours)
+        kr = self.kind_radius.tolist()
+        nk = len(kr)
+        scl = self.scl
         for g in check:
-            kind = int(self.kind[g])
-            x, y = self.xy[g]
-            r = self.kind_radius[kind] * self.scl[g] + self.other_rmax
-            for j in self.near(x, y, r, (ELEMENT, OBSTACLE)):
-                if j != g:
-                    ga.append(g)
-                    gb.append(j)
+            kind = int(kinds[g])
+            x, y = xy[g]
+            rg = kr[kind] * float(scl[g])
+            for j in self.near(x, y, rg + self.other_rmax, (ELEMENT, OBSTACLE)):
+                if j == g:
+                    continue
+                kj = int(kinds[j])
+                if state[j] == ELEMENT and kj < nk:
+                    reach = (rg + kr[kj] * float(scl[j])) * (1.0 + 1e-9)
+                    px, py = xy[j]
+                    if (px - x) ** 2 + (py - y) ** 2 > reach * reach:
+                        continue
+                ga.append(g)
+                gb.append(j)
         out: dict[int, list[int]] = {}
         if not ga:
             return out
@@ -570,8 +593,15 @@ class _Grower:
         h = self.hcell
         cx, cy = math.floor(x / h), math.floor(y / h)
         hg = self.hgrid
+        kind = self.kind
+        state = self.state
+        kp = self.kind_prio_list
+        none = self.none_prio
         for j in [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in hg.get((cx + dx, cy + dy), ())]:
-            if j == i or self.state[j] != SEED or self.seed_priority(j) <= pi:
+            if j == i or state[j] != SEED:
+                continue
+            kj = kind[j]
+            if (none if kj < 0 else kp[kj]) <= pi:  # seed_priority(j), inlined
                 continue
             px, py = xy[j]
             if (px - x) ** 2 + (py - y) ** 2 > r2:
@@ -685,6 +715,21 @@ class _Grower:
         if self.boundary is not None and shapely.intersects(self.boundary, g):
             return False
         return True
+
+    def fits_domain_many(self, gs: Sequence[Any]) -> np.ndarray:
+        """:meth:`fits_domain` of several geometries (m,), with one shapely call each; (m,) bool."""
+        arr = np.empty(len(gs), dtype=object)
+        arr[:] = gs
+        ok = np.ones(len(gs), dtype=bool)
+        box = self.region_box
+        if box is not None:
+            b = shapely.bounds(arr)
+            ok &= (b[:, 0] >= box[0]) & (b[:, 1] >= box[1]) & (b[:, 2] <= box[2]) & (b[:, 3] <= box[3])
+        elif self.region is not None:
+            ok &= shapely.contains(self.region.prepared, arr)
+        if self.boundary is not None:
+            ok &= ~shapely.intersects(self.boundary, arr)
+        return ok
 
     def choose(self, s: int) -> tuple[int, int, float] | None:
         """§5.2: the reference element minimising Eq. 3 for seed ``s``."""
@@ -1005,23 +1050,45 @@ class _Grower:
         if not win:
             return
         wset = set(win)
-        src, dst, off = [], [], []
+        # the terms of Eq. 5 over the window, as local indices (ring_target inlined: this
+        # loop runs for every edge of every window)
+        nodes = sorted(wset | {j for i in win for j in self.adj[i]})
+        local = {g: q for q, g in enumerate(nodes)}
+        xy = self.xy
+        targets = self.target
+        adj = self.adj
+        src: list[int] = []
+        dst: list[int] = []
+        off: list[float] = []
         for i in win:
-            for j in self.adj[i]:
-                src.append(i)
-                dst.append(j)
-                off.append(self.ring_target(i, j))
+            ti = targets[i]
+            xi, yi = xy[i]
+            li = local[i]
+            for j in adj[i]:
+                lj = local[j]
+                src.append(li)
+                dst.append(lj)
+                t = ti.get(j) if ti is not None else None
+                if t is None:
+                    xj, yj = xy[j]
+                    off += (xj - xi, yj - yi)
+                else:
+                    off += t
                 if j not in wset:
-                    src.append(j)
-                    dst.append(i)
-                    off.append(self.ring_target(j, i))
+                    src.append(lj)
+                    dst.append(li)
+                    tj = targets[j]
+                    t = tj.get(i) if tj is not None else None
+                    if t is None:
+                        xj, yj = xy[j]
+                        off += (xi - xj, yi - yj)
+                    else:
+                        off += t
         if not src:
             return
-        nodes = sorted(wset | set(dst) | set(src))
-        local = {g: q for q, g in enumerate(nodes)}
         pos = self.pos[nodes]
-        free = np.array([g in wset for g in nodes])
-        new = relax_positions(pos, [local[g] for g in src], [local[g] for g in dst], np.asarray(off), free)
+        free = np.fromiter((g in wset for g in nodes), dtype=bool, count=len(nodes))
+        new = relax_positions(pos, np.array(src, dtype=np.intp), np.array(dst, dtype=np.intp), np.array(off).reshape(-1, 2), free)
         if self.freeze_relaxed:
             for g in win:
                 if self.state[g] == ELEMENT:
@@ -1047,7 +1114,8 @@ class _Grower:
             for g, ng in zip(els, self.element_geometries(els, new[[local[g] for g in els]])):
                 new_geom[g] = ng
             # nor an element across the region's edge or a boundary stroke
-            bad = {g for g in els if not self.fits_domain(new_geom[g])}
+            fits = self.fits_domain_many([new_geom[g] for g in els])
+            bad = {g for g, ok in zip(els, fits.tolist()) if not ok}
             if bad:
                 moved = [g for g in moved if g not in bad]
         old = {g: (*self.xy[g], self.geom[g]) for g in moved}
