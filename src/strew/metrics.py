@@ -26,6 +26,8 @@ __all__ = [
     "density_uniformity",
     "nearest_neighbor_stats",
     "kind_fractions",
+    "visible",
+    "visible_count",
     "summary",
     "fidelity",
     "FidelityReport",
@@ -215,17 +217,69 @@ def kind_fractions(arr: Arrangement) -> dict[str, float]:
     return {k: (c / n if n else 0.0) for k, c in arr.counts().items()}
 
 
+def visible(arr: Arrangement) -> np.ndarray:
+    """Which elements are drawn: not void (the synth ``void`` column, Davison §5.6) and
+    not of an empty shape (an invisible helper).
+
+    Returns
+    -------
+    (n,) bool
+
+    Examples
+    --------
+    >>> from strew import Arrangement, Shape
+    >>> a = Arrangement({"sq": Shape.rectangle(1, 1)}, [0, 0], [0, 5], [0, 0]).with_columns(void=[False, True])
+    >>> visible(a).tolist()
+    [True, False]
+    """
+    vis = ~shapely.is_empty(arr.geometry) if len(arr) else np.zeros(0, bool)
+    if "void" in arr:
+        vis &= ~np.asarray(arr["void"]).astype(bool)
+    return vis
+
+
+def visible_count(arr: Arrangement) -> int:
+    """The one element count strew reports (gallery captions, CLI summaries, ``strew info``):
+    the number of :func:`visible` elements."""
+    return int(visible(arr).sum())
+
+
+def _filled(arr: Arrangement) -> np.ndarray:
+    """(n,) bool: elements with a filled area (the rest are open strokes or empty)."""
+    return shapely.area(arr.geometry_of("area_geometry")) > 0 if len(arr) else np.zeros(0, bool)
+
+
 def summary(arr: Arrangement, region: Region | None = None) -> dict[str, Any]:
-    """All metrics in one JSON-ready dict (as ``strew info`` prints them)."""
+    """All metrics in one JSON-ready dict (as ``strew info`` prints them).
+
+    ``count`` is :func:`visible_count`; ``elements`` counts every row, voids and empty
+    helpers included. ``overlap_pairs`` and ``overlap_area`` are :func:`overlaps` over all
+    elements (strokes that touch count as pairs). They are split into
+    ``filled_overlap_pairs`` / ``filled_overlap_area`` (both elements visible and filled,
+    intersection area above the tolerance: shapes that run into each other) and
+    ``stroke_crossings`` (visible pairs with at least one open stroke that cross or touch,
+    often by design in line drawings).
+    """
     pairs, areas = overlaps(arr)
     reg = _region(arr, region)
+    vis = visible(arr)
+    filled = _filled(arr) & vis
+    if len(pairs):
+        both_vis = vis[pairs[:, 0]] & vis[pairs[:, 1]]
+        both_filled = filled[pairs[:, 0]] & filled[pairs[:, 1]]
+    else:
+        both_vis = both_filled = np.zeros(0, bool)
     out: dict[str, Any] = {
-        "count": len(arr),
+        "count": int(vis.sum()),
+        "elements": len(arr),
         "counts": arr.counts(),
         "kind_fractions": kind_fractions(arr),
         "bounds": list(arr.bounds),
         "overlap_pairs": int(len(pairs)),
         "overlap_area": float(areas.sum()),
+        "filled_overlap_pairs": int(both_filled.sum()),
+        "filled_overlap_area": float(areas[both_filled].sum()),
+        "stroke_crossings": int((both_vis & ~both_filled).sum()),
         "nearest_neighbor": nearest_neighbor_stats(arr),
         "density_cv": density_uniformity(arr, reg),
         "coverage": coverage(arr, reg),

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import shapely
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -89,3 +90,28 @@ def test_metrics_on_empty_and_single():
     assert metrics.coverage(e) == 0.0
     assert np.isnan(metrics.nearest_neighbor_stats(grid(1))["mean"])
     assert len(metrics.overlaps(grid(1))[0]) == 0
+
+
+def test_summary_splits_filled_overlaps_from_stroke_crossings_and_counts_visible():
+    # two overlapping squares (area 2), a stroke crossing one of them, a stroke touching
+    # another stroke, and a void square lying on the first: the void counts nowhere
+    shapes = {
+        "sq": Shape.rectangle(2, 2),
+        "ln": Shape.from_geometry(shapely.LineString([(-3, 0), (3, 0)])),
+    }
+    a = Arrangement(shapes, [0, 0, 1, 1, 0], [0, 1, 0, 6, 0.5], [0, 0, 10, 10, 0]).with_columns(
+        void=[False, False, False, False, True]
+    )
+    a = a.replace(rotation=np.array([0, 0, 0, np.pi / 2, 0.0]))
+    s = metrics.summary(a)
+    assert s["elements"] == 5 and s["count"] == 4 == metrics.visible_count(a)
+    assert s["filled_overlap_pairs"] == 1 and s["filled_overlap_area"] == pytest.approx(2.0)
+    # the lines at y=10: one horizontal from x=-3..3, one vertical at x=6 from y=7..13: apart
+    pairs, _ = metrics.overlaps(a)
+    assert s["overlap_pairs"] == len(pairs)
+    assert s["stroke_crossings"] == 0
+    b = a.replace(x=np.array([0, 1, 0, 3, 0.5]))  # the vertical line now touches the horizontal one's end
+    sb = metrics.summary(b)
+    assert sb["stroke_crossings"] == 1 and sb["filled_overlap_pairs"] == 1
+    # overlaps() keeps counting every pair, voids included (documented behaviour unchanged)
+    assert sb["overlap_pairs"] == len(metrics.overlaps(b)[0]) >= 1 + 1 + 2

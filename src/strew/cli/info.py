@@ -31,7 +31,8 @@ def command(input: str, region: str | None, as_json: bool) -> None:
     from rich.table import Table
 
     console = Console()
-    t = Table(title=f"{input}: {s['count']} elements", show_header=True)
+    hidden = s["elements"] - s["count"]
+    t = Table(title=f"{input}: {s['count']} elements" + (f" ({hidden} invisible not counted)" if hidden else ""), show_header=True)
     t.add_column("kind")
     t.add_column("count", justify="right")
     t.add_column("fraction", justify="right")
@@ -42,7 +43,8 @@ def command(input: str, region: str | None, as_json: bool) -> None:
     nn = s["nearest_neighbor"]
     lines = [
         f"bounds            {b[0]:.4g}, {b[1]:.4g} .. {b[2]:.4g}, {b[3]:.4g}",
-        f"overlaps          {s['overlap_pairs']} pairs, area {s['overlap_area']:.4g}",
+        f"filled overlaps   {s['filled_overlap_pairs']} pairs, area {s['filled_overlap_area']:.4g}",
+        f"stroke crossings  {s['stroke_crossings']} pairs (open strokes that cross or touch)",
         f"coverage          {s['coverage']:.4f}",
         *([f"density CV        {s['density_cv']:.4f}"] if _finite(s["density_cv"]) else []),
         f"nearest neighbour mean {nn['mean']:.4g}, std {nn['std']:.4g}, min {nn['min']:.4g}, cv {nn['cv']:.3f}",
