@@ -33,7 +33,9 @@ a small element is copied only with the larger element it leans on (its nearest 
 Delaunay neighbour in the exemplar), so a neighbourhood's rim does not scatter orphans;
 the closest approach of two kinds is learned over the whole exemplar, not only within
 neighbourhoods. The bounding radius of §4.1 is the collision bound wherever the
-exemplar gives it; default radii shrink per kind to the exemplar's spacing. While
+exemplar gives it; default radii shrink per kind to the exemplar's spacing, and where
+they shrink below 0.9 of the bounding radius (elongated shapes) the shapes themselves
+are tested while growing and after optimising (``_shapes``). While
 brushing, seeds whose copies lie beyond the discs reached so far do not count as
 failures. A fill with several exemplars selected deals Voronoi cells of the region to
 them by weight (§5.5 extension), or puts each where ``{name: Region}`` (CLI

@@ -14,6 +14,7 @@ from .._progress import Reporter
 from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
+from ._shapes import shape_clashes, shape_test_needed
 from ._state import SynthState, map_offsets
 
 __all__ = ["grow", "seed_patch", "fill", "brush", "erase", "update_free_space", "texture_regions"]
@@ -202,6 +203,8 @@ def grow(
     _record(state, t0, skipped)
     cell_r = float(prep.r.max())
     has_voids = bool(prep.void[prep.selected_elements].any())
+    # elements whose collision disc is shrunk below their shape's bounding disc
+    shape_test = shape_test_needed(prep)
     for _ in range(max_iterations):
         state.iterations += 1
         hz = np.flatnonzero(state.horizon)
@@ -278,8 +281,15 @@ def grow(
             if not okp.any():
                 continue
             placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, 1.0, cell, pslot, parent_free, prep.size_class[exv])
-            seed_ok |= s_ok
             new_idx = np.flatnonzero(placed)
+            if phase == 0 and shape_test and len(new_idx):
+                # shapes, not only shrunk discs, must not overlap (see _shapes.shape_clashes);
+                # a seed all of whose copies were refused has not generated
+                clash = shape_clashes(state, ex[new_idx], ppos[new_idx])
+                if clash.any():
+                    s_ok &= np.bincount(seed_of[new_idx[~clash]], minlength=len(seeds)) > 0
+                    new_idx = new_idx[~clash]
+            seed_ok |= s_ok
             if max_elements is not None and state.n + len(new_idx) > max_elements:
                 new_idx = new_idx[: max(0, max_elements - state.n)]
             new = state.add(ex[new_idx], ppos[new_idx])

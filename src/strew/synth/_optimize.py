@@ -8,6 +8,7 @@ from scipy.sparse.linalg import splu
 from scipy.spatial import cKDTree
 
 from . import _kernels as K
+from ._shapes import shape_test_needed, shapes_overlapping
 from ._state import SynthState, map_offsets
 
 __all__ = ["optimize", "expanded_horizon", "prediction_weights", "match_neighborhoods"]
@@ -180,6 +181,8 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
                 break
         else:
             state._pos[moved] = old
+    if shape_test_needed(state.prep):
+        _undo_shape_overlaps(state, moved, old)
     disp = np.hypot(*(state._pos[moved] - old).T)
     return float(disp.mean())
 
@@ -206,3 +209,17 @@ def _undo_intersections(state: SynthState, moved: np.ndarray, old: np.ndarray) -
         culprits = np.flatnonzero(bad)
         state._pos[culprits] = old[slot[culprits]]
         was[culprits] = False
+
+
+def _undo_shape_overlaps(state: SynthState, moved: np.ndarray, old: np.ndarray) -> None:
+    """Put back moved elements whose shapes now overlap another's (extension of §4.1,
+    see ``_shapes``): shrunk discs let the optimiser pull elongated neighbours across
+    each other. Round by round; an element put back stays, so it settles."""
+    for _ in range(len(moved) + 1):
+        live = np.flatnonzero(np.any(state._pos[moved] != old, axis=1))
+        if len(live) == 0:
+            return
+        bad = live[shapes_overlapping(state, moved[live])]
+        if len(bad) == 0:
+            return
+        state._pos[moved[bad]] = old[bad]

@@ -101,6 +101,7 @@ class Prepared:
     rc: np.ndarray = field(default_factory=lambda: np.zeros(0))
     parent: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
     selection: Selection | None = None
+    shape_clearance: np.ndarray | None = None  # (kinds, kinds), see _shapes.clearance
 
     def __len__(self) -> int:
         return len(self.kind)
