@@ -45,6 +45,7 @@ def _region(ex, scale=2.2):
     [
         ("rows_noisy", "fixed"),
         ("stones", "fixed"),
+        ("two_sizes", "fixed"),
         ("rows_noisy", "rotate"),
         ("bricks", "rotate"),
         ("scales", "rotate"),
@@ -65,6 +66,16 @@ def test_a_variant_nobody_tuned_on_keeps_its_rows():
     # ambiguous and must all be flipped one way (Fig. 3) for the rows to grow
     ex = make_exemplar("rows_noisy", rng=11, spacing=9.0, noise=0.06, row_angle=0.3, nx=10, ny=9)
     out = grow(ex, region=_region(ex, 2.0), rng=3)
+    rep = fidelity(ex, out, eq5=False, local=False)
+    assert rep.faithful, rep.failures
+
+
+def test_pebbles_keep_their_distance_from_stones_in_a_variant_nobody_tuned_on():
+    # the reference never has a pebble as close to a stone as half their smallest
+    # distance allowed: stones grew with a pebble too close (nn[stone>pebble] failed)
+    ex = make_exemplar("two_sizes", rng=7)
+    out = grow(ex, region=_region(ex), rng=3)
+    assert len(out) >= 4 * len(ex)
     rep = fidelity(ex, out, eq5=False, local=False)
     assert rep.faithful, rep.failures
 

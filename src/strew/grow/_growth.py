@@ -18,7 +18,9 @@ Departures from the paper (each explained where it is made):
 - Fig. 6 (b) also drops a seed or element closer to an object than the reference ever
   has their two kinds (``too_close_in_kind``), Fig. 6 (e) compares a pair the ring does
   not give with the ring's longest edge, and a small kind that leans on larger ones is
-  placed only where its larger neighbour can be (``lean_ok``);
+  placed only where its larger neighbour can be (``lean_ok``); an element is not placed
+  nearer one of another size than the reference's smallest distance between the two
+  less that distance's spread below its median (``pair_close``: pebbles crowded stones);
 - elements lie wholly inside the region and off boundary strokes, and never overlap;
 - grid cells come from both the spacing and the element size.
 """
@@ -145,14 +147,17 @@ class _Grower:
         self.pair_short = np.full((self.n_kinds, self.n_kinds), self.l_short)
         from scipy.spatial import cKDTree
 
+        dist_to: list[dict[int, np.ndarray]] = [{} for _ in range(self.n_kinds)]
         for k2 in range(self.n_kinds):
             sel = np.flatnonzero(self.ex_kind == k2)
             if len(sel) == 0:
                 continue
             d, q = cKDTree(ex.xy[sel]).query(ex.xy, k=2)
             nearest = np.where(sel[q[:, 0]] == np.arange(len(ex)), d[:, 1], d[:, 0])
+            dist_to[k2] = {}
             for k1 in range(self.n_kinds):
                 m = nearest[(self.ex_kind == k1) & np.isfinite(nearest)]
+                dist_to[k2][k1] = m
                 if len(m):
                     self.pair_short[k1, k2] = max(self.l_short, 0.5 * float(m.min()))
         self.pair_short = np.minimum(self.pair_short, self.pair_short.T)
@@ -160,6 +165,19 @@ class _Grower:
         # size levels of the kinds (see lean_ok); none when all are of about one size
         lv = size_priority(ex)
         self.size_level = np.array([lv.get(k, 0.0) for k in ex.kinds])
+        # the closest an element may be placed to one of a kind of another size (see
+        # place): the reference's smallest distance between the two, less its spread
+        # below the median, at least pair_short
+        self.pair_close = self.pair_short.copy()
+        for k1, k2 in np.ndindex(self.n_kinds, self.n_kinds):
+            if self.size_level[k1] == self.size_level[k2] or not dist_to[k2]:
+                continue
+            m = dist_to[k2][k1]
+            if len(m) >= 3:
+                lo, med = float(m.min()), float(np.median(m))
+                self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - (med - lo))
+        self.pair_close = np.maximum(self.pair_close, self.pair_close.T)
+        self.pair_close_max = self.pair_close.max(axis=1)
         # a kind "leans" on larger ones when every element of it in the reference has a
         # larger element at about one distance (dots ringed around hubs), not at any
         # distance (pebbles scattered among stones)
@@ -633,7 +651,7 @@ class _Grower:
             return False
         return True
 
-    def too_close_in_kind(self, x: float, y: float, kind: int, s: int, states: tuple[int, ...] = (SEED, ELEMENT)) -> bool:
+    def too_close_in_kind(self, x: float, y: float, kind: int, s: int, states: tuple[int, ...] = (SEED, ELEMENT), placing: bool = False) -> bool:
         """Is an object within ``l_short(kind, kind')`` of a new seed of ``kind`` at (x, y)?
 
         §5.4 (b) takes one ``l_short`` for all kinds: half the shortest reference edge.
@@ -645,10 +663,10 @@ class _Grower:
         """
         if kind < 0:
             return False
-        r = float(self.pair_short_max[kind])
+        ps = self.pair_close if placing else self.pair_short
+        r = float((self.pair_close_max if placing else self.pair_short_max)[kind])
         if r <= self.l_short:
             return False
-        ps = self.pair_short
         xy = self.xy
         for o in self.near(x, y, r, states):
             if o == s:
@@ -817,7 +835,7 @@ class _Grower:
             scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
         # an element as close to one of its own kind (or another) as the reference never
         # has them is refused, like the seeds of too_close_in_kind
-        if self.too_close_in_kind(x, y, kind, s, (ELEMENT,)):
+        if self.too_close_in_kind(x, y, kind, s, (ELEMENT,), placing=True):
             return False
         if self.several_sizes and not self.lean_ok(s, a, k, th, x, y, kind):
             return False
