@@ -532,3 +532,32 @@ def test_example_region_has_a_hole():
     hole = shapely.Polygon(region.geometry.interiors[0])
     assert region.area == pytest.approx(shapely.Polygon(region.geometry.exterior).area - hole.area)
     assert not region.contains([hole.representative_point().coords[0]])[0]
+
+
+def _many_paths(n: int) -> str:
+    return '<svg xmlns="http://www.w3.org/2000/svg">' + "".join(f'<path d="M{3 * i} 0 l1 0 l0 {1 + i % 7} Z"/>' for i in range(n)) + "</svg>"
+
+
+@pytest.mark.parametrize("reader", [read_svg, read_svg_shapes, read_svg_region])
+@pytest.mark.parametrize("after", [0, 1, 37])
+def test_should_cancel_stops_the_import_within_one_object(reader, after):
+    from strew._errors import Cancelled
+
+    polls = []
+
+    def should_cancel():
+        polls.append(1)
+        return len(polls) > after
+
+    with pytest.raises(Cancelled, match="cancelled"):
+        reader(_many_paths(60), should_cancel=should_cancel)
+    assert len(polls) == after + 1  # it stops at the first poll that says so
+    # polled at least once per object: a never-cancelling hook is asked more than 60 times
+    count = []
+    reader(_many_paths(60), should_cancel=lambda: bool(count.append(1)))
+    assert len(count) > 60
+
+
+def test_should_cancel_must_be_callable():
+    with pytest.raises(InputError, match="should_cancel"):
+        read_svg(_many_paths(2), should_cancel=True)

@@ -160,3 +160,56 @@ def test_server_stops_while_a_message_is_being_handled(tmp_path, sig):
             proc.wait()
         proc.stdout.close()
         proc.stderr.close()
+
+
+def _slow_exemplar(path, n=4000):
+    """An SVG of ``n`` distinct small polygons (every object a new kind: seconds to import)."""
+    import numpy as np
+
+    rng = np.random.default_rng(3)
+    parts = []
+    for _ in range(n):
+        x, y = rng.uniform(0, 1000, 2)
+        t = np.sort(rng.uniform(0, 2 * np.pi, 6))
+        r = rng.uniform(2, 6, 6)
+        parts.append('<polygon points="' + " ".join(f"{x + a * np.cos(b):.2f},{y + a * np.sin(b):.2f}" for a, b in zip(r, t)) + '"/>')
+    path.write_text('<svg xmlns="http://www.w3.org/2000/svg">' + "".join(parts) + "</svg>")
+
+
+def test_stop_cancels_an_exemplar_load(tmp_path):
+    from strew.studio._session import Session
+
+    _slow_exemplar(tmp_path / "heavy.svg")
+    s = Session(tmp_path)
+    seen = []
+
+    def stop_once_loading(msg):  # the page's "stop", sent when it sees the load start
+        seen.append(msg)
+        if msg.get("type") == "status" and msg["message"].startswith("loading"):
+            s.cancel.set()
+
+    t0 = time.perf_counter()
+    out = s.handle({"type": "load_exemplar", "path": "heavy.svg"}, stop_once_loading)
+    assert time.perf_counter() - t0 < 2.0
+    assert out[-1]["type"] == "status" and out[-1]["message"] == "loading heavy.svg stopped"
+    assert s.palette == {} and s.undo_stack == []  # nothing half-loaded
+    # the next load starts afresh (a stale stop does not cancel it)
+    s.handle({"type": "load_exemplar", "example": "scales.svg"})
+    assert list(s.palette) == ["scales"]
+
+
+def test_stop_over_the_socket_ends_a_heavy_load_and_the_server_serves_on(client):
+    _slow_exemplar(client.project / "heavy.svg")
+    with client.websocket_connect("/ws") as ws:
+        ws.send_text(json.dumps({"type": "load_exemplar", "path": "heavy.svg"}))
+        m = ws.receive_json()
+        assert m["type"] == "status" and m["message"] == "loading heavy.svg"
+        t0 = time.perf_counter()
+        ws.send_text(json.dumps({"type": "stop"}))
+        replies = _until(ws, "load_exemplar")
+        assert time.perf_counter() - t0 < 2.0
+        assert replies[-1]["type"] == "done"
+        assert any(r["type"] == "status" and r["message"] == "loading heavy.svg stopped" for r in replies)
+        assert client.app.state.session.palette == {}
+        assert _until(ws, "stop")[-1]["type"] == "done"  # the stop message's own reply
+        _alive(ws)

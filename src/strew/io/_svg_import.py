@@ -57,7 +57,7 @@ import math
 import os
 import re
 import xml.etree.ElementTree as ET
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path as FsPath
 from typing import Any
@@ -65,7 +65,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from .._errors import InputError
+from .._errors import Cancelled, InputError
 from .._limits import MAX_COORD, check_file, check_paths, check_text
 from ..arrangement import Arrangement
 from ..region import Region
@@ -238,7 +238,10 @@ class _Flat:
 
 
 class _Doc:
-    def __init__(self, source: Any, tolerance: float) -> None:
+    def __init__(self, source: Any, tolerance: float, should_cancel: Callable[[], bool] | None = None) -> None:
+        if should_cancel is not None and not callable(should_cancel):
+            raise InputError(f"should_cancel: must be callable, got {type(should_cancel).__name__}")
+        self.should_cancel = should_cancel
         if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float)) or not (math.isfinite(tolerance) and tolerance > 0):
             raise InputError(f"tolerance: must be a positive number, got {tolerance!r}")
         self.tolerance = float(tolerance)
@@ -250,6 +253,7 @@ class _Doc:
             raise InputError(f"{self.name}: malformed XML: {exc}") from None
         # Work grows with the number of objects; refuse documents beyond the limit.
         check_paths(sum(1 for _ in self.root.iter()), self.name)
+        self.poll()
         if _local(self.root.tag) != "svg":
             raise InputError(f"{self.name}: not an SVG document (root element is <{self.root.tag}>)")
         self.parent: dict[ET.Element, ET.Element] = {}
@@ -277,6 +281,15 @@ class _Doc:
         self.is_strew = self.meta is not None
         self._transforms: dict[int, np.ndarray] = {}
         self.referenced = {_href(el) for el in self.root.iter() if _local(el.tag) == "use"}
+
+    def poll(self) -> None:
+        """Raise :class:`~strew._errors.Cancelled` when the caller's ``should_cancel`` says so.
+
+        Called once per top-level object (and after parsing), so a load stops within the
+        cost of one object.
+        """
+        if self.should_cancel is not None and self.should_cancel():
+            raise Cancelled(f"{self.name}: SVG import cancelled")
 
     # -- transforms ---------------------------------------------------------------------
     def transform(self, el: ET.Element) -> np.ndarray:
@@ -618,6 +631,7 @@ class _Doc:
 
     def _walk_children(self, el: ET.Element, m: np.ndarray) -> Iterator[tuple[str, ET.Element, np.ndarray]]:
         for child in el:
+            self.poll()
             tag = _local(child.tag)
             if tag is None or tag in _SKIP_TAGS:
                 continue
@@ -1092,7 +1106,7 @@ class _Reader:
         doc = self.doc
         if all_symbols:
             self.symbol_kinds()
-        for what, el, m in doc.walk():
+        for what, el, m in doc.walk():  # walk() polls should_cancel per object
             if what == "region":
                 self.region_els.append((el, m))
             elif what in ("use", "void-use"):
@@ -1171,7 +1185,9 @@ def _decode(text: str) -> Any:
 
 # -- public functions -------------------------------------------------------------------
 @_guarded
-def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> Arrangement:
+def read_svg(
+    source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None
+) -> Arrangement:
     """Read an exemplar (or a strew SVG export) into an arrangement.
 
     Parameters
@@ -1180,6 +1196,9 @@ def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) 
     tolerance : float
         Largest distance, in user units after all transforms, between a curve and its
         flattening. Recorded in ``meta["svg_import"]["tolerance"]``.
+    should_cancel : callable () -> bool, optional
+        Polled after parsing and once per object; when it returns True the import stops
+        with :class:`~strew._errors.Cancelled` (the studio's "stop").
 
     Returns
     -------
@@ -1197,6 +1216,8 @@ def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) 
     ------
     InputError
         Malformed XML, no shapes, a ``<use>`` of a missing id, bad lengths.
+    Cancelled
+        When ``should_cancel`` returned True.
 
     Examples
     --------
@@ -1210,7 +1231,7 @@ def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) 
     >>> round(float(arr.rotation[0]), 6)
     1.570796
     """
-    doc = _Doc(source, tolerance)
+    doc = _Doc(source, tolerance, should_cancel)
     reader = _Reader(doc)
     reader.read(all_symbols=doc.is_strew)
     elements = reader.elements
@@ -1254,7 +1275,9 @@ def read_svg(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) 
 
 
 @_guarded
-def read_svg_shapes(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> dict[str, Shape]:
+def read_svg_shapes(
+    source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None
+) -> dict[str, Shape]:
     """The distinct shapes of any SVG, one per kind, centred on their bounding boxes.
 
     Paths (curves and arcs flattened within ``tolerance`` user units after transforms),
@@ -1268,6 +1291,9 @@ def read_svg_shapes(source: str | bytes | os.PathLike[str], *, tolerance: float 
     ----------
     source : path, or SVG text
     tolerance : float
+    should_cancel : callable () -> bool, optional
+        Polled after parsing and once per object; when it returns True the import stops
+        with :class:`~strew._errors.Cancelled` (the studio's "stop").
 
     Returns
     -------
@@ -1285,7 +1311,7 @@ def read_svg_shapes(source: str | bytes | os.PathLike[str], *, tolerance: float 
     >>> list(shapes), shapes["brick"].bounds
     (['brick'], (-2.0, -1.0, 2.0, 1.0))
     """
-    doc = _Doc(source, tolerance)
+    doc = _Doc(source, tolerance, should_cancel)
     reader = _Reader(doc)
     reader.read(all_symbols=True)
     shapes = {}
@@ -1301,7 +1327,9 @@ def read_svg_shapes(source: str | bytes | os.PathLike[str], *, tolerance: float 
 
 
 @_guarded
-def read_svg_region(source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1) -> Region:
+def read_svg_region(
+    source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None
+) -> Region:
     """A region from the closed paths of an SVG.
 
     The element with id ``region`` or ``strew-region`` (or label ``region``) when there
@@ -1314,6 +1342,9 @@ def read_svg_region(source: str | bytes | os.PathLike[str], *, tolerance: float 
     source : path, or SVG text
     tolerance : float
         Flattening tolerance for curves, in user units.
+    should_cancel : callable () -> bool, optional
+        Polled after parsing and once per object; when it returns True the import stops
+        with :class:`~strew._errors.Cancelled` (the studio's "stop").
 
     Returns
     -------
@@ -1331,7 +1362,7 @@ def read_svg_region(source: str | bytes | os.PathLike[str], *, tolerance: float 
     >>> r.area
     96.0
     """
-    doc = _Doc(source, tolerance)
+    doc = _Doc(source, tolerance, should_cancel)
     chosen = [(el, m) for what, el, m in doc.walk() if what == "region"]
     if not chosen:
         chosen = [(el, m) for what, el, m in doc.walk() if what in ("object", "use")]
@@ -1345,6 +1376,7 @@ def _region_of(doc: _Doc, items: list[tuple[ET.Element, np.ndarray]]) -> Region 
     polys = []
     all_paths: list[Path] = []
     for el, m in items:
+        doc.poll()
         parts = doc.parts(el, m, {})
         flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
         closed = [p for p in flat.paths if p.closed and len(p.points) >= 3]

@@ -53,12 +53,19 @@ STUDIO_MAX_FILE_BYTES = 2_000_000
 STUDIO_MAX_PATHS = 5_000
 
 
-def _load_limited(path: Path) -> Arrangement:
-    """Read a project file under the studio's size and path-count limits."""
+def _load_limited(path: Path, should_cancel: Callable[[], bool] | None = None) -> Arrangement:
+    """Read a project file under the studio's size and path-count limits.
+
+    An SVG import polls ``should_cancel`` once per object and stops with
+    :class:`~strew._errors.Cancelled` (JSON documents, bounded by the size limit, load
+    in one step).
+    """
     from .._limits import get_limit, limits
     from ..io import load
 
     with limits(file_size=min(get_limit("file_size"), STUDIO_MAX_FILE_BYTES), paths=min(get_limit("paths"), STUDIO_MAX_PATHS)):
+        if Path(path).suffix.lower() == ".svg" and should_cancel is not None:
+            return load(path, should_cancel=should_cancel)
         return load(path)
 #: Elements of the small growth shown at once when a spray stroke starts.
 FIRST_SPRAY = 24
@@ -522,7 +529,14 @@ class Session:
             path = allowed[name]
         else:
             path = resolve_in_project(self.root, msg.get("path"), suffixes=(".svg", ".json"), must_exist=True)
-        arr = _load_limited(path)
+        # Runs in the server's worker thread; "stop" (or the page closing) sets self.cancel
+        # and the import stops at its next object, leaving the palette as it was.
+        self.cancel.clear()
+        emit(self.status_message(f"loading {path.name}"))
+        try:
+            arr = _load_limited(path, self.cancel.is_set)
+        except Cancelled:
+            return [self.status_message(f"loading {path.name} stopped")]
         if len(arr) == 0:
             raise InputError(f"{path.name}: no elements in this exemplar")
         self._push_history()
