@@ -71,6 +71,7 @@ def build_gallery(
     """
     from .io import atomic_write, save
     from .io.document import dumps
+    from .metrics import visible_count
 
     out = Path(out_dir)
     chosen = [(t, m) for t, m in SECTIONS if not sections or any(s in m for s in sections)]
@@ -98,7 +99,7 @@ def build_gallery(
             figs.append(
                 f'<figure><a href="{html.escape(svg_path.name)}"><img src="{html.escape(png_path.name)}" '
                 f'alt="{html.escape(item.title)}" loading="lazy"></a><figcaption><b>{html.escape(item.title)}</b>'
-                f" ({len(item.arrangement)} elements)<br>{html.escape(item.description)}</figcaption></figure>"
+                f" ({visible_count(item.arrangement)} elements)<br>{html.escape(item.description)}</figcaption></figure>"
             )
         dt = time.perf_counter() - t0
         blocks.append(f"<section><h2>{html.escape(title)}</h2><p class=t>built in {dt:.2f} s</p>{''.join(figs)}</section>")

@@ -78,7 +78,10 @@ def overlaps(arr: Arrangement, *, tolerance: float = 1e-9) -> tuple[np.ndarray, 
     areal = (shapely.area(a) > 0) & (shapely.area(b) > 0)
     areas = np.zeros(len(left))
     if areal.any():
-        areas[areal] = shapely.area(shapely.intersection(a[areal], b[areal]))
+        try:
+            areas[areal] = shapely.area(shapely.intersection(a[areal], b[areal]))
+        except shapely.errors.GEOSException:  # a self-intersecting outline (e.g. a skeletal stroke)
+            areas[areal] = shapely.area(shapely.intersection(shapely.make_valid(a[areal]), shapely.make_valid(b[areal])))
     hit = np.where(areal, areas > tolerance, True)
     pairs = np.c_[left[hit], right[hit]].astype(np.intp)
     order = np.lexsort((pairs[:, 1], pairs[:, 0]))
@@ -123,7 +126,11 @@ def coverage(arr: Arrangement, region: Region | None = None) -> float:
     reg = _region(arr, region)
     if len(arr) == 0:
         return 0.0
-    union = shapely.union_all(arr.geometry_of("area_geometry"))
+    geoms = arr.geometry_of("area_geometry")
+    try:
+        union = shapely.union_all(geoms)
+    except shapely.errors.GEOSException:  # a self-intersecting outline
+        union = shapely.union_all(shapely.make_valid(geoms))
     if reg is None:
         domain = shapely.box(*arr.bounds)
     else:
