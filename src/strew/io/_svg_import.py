@@ -209,6 +209,18 @@ def _is_region_el(el: ET.Element, strew_doc: bool) -> bool:
     return ident in ("region", "strew-region") or (_label(el) or "").lower() == "region"
 
 
+def _norm2(v: np.ndarray) -> float:
+    """Euclidean length of a (2,) vector, as ``np.linalg.norm`` computes it, without its overhead."""
+    x, y = float(v[0]), float(v[1])
+    return math.sqrt(x * x + y * y)
+
+
+def _same_point(a: np.ndarray, b: np.ndarray) -> bool:
+    """``np.allclose(a, b, atol=1e-9)`` for two (2,) points, without its overhead."""
+    ax, ay, bx, by = float(a[0]), float(a[1]), float(b[0]), float(b[1])
+    return abs(ax - bx) <= 1e-9 + 1e-5 * abs(bx) and abs(ay - by) <= 1e-9 + 1e-5 * abs(by)
+
+
 def _fmt(v: float) -> str:
     v = float(v)
     if abs(v) < 1e-10:  # rounding noise from transforms (e.g. -8.9e-16)
@@ -280,6 +292,9 @@ class _Doc:
         # A document written by strew keeps each symbol's own origin as the local origin.
         self.is_strew = self.meta is not None
         self._transforms: dict[int, np.ndarray] = {}
+        # svgelements' parse of each element's geometry, done once: an object is flattened
+        # two to four times (kind test, signature, shape) and a symbol once per clone.
+        self._segments: dict[int, list[Any]] = {}
         self.referenced = {_href(el) for el in self.root.iter() if _local(el.tag) == "use"}
 
     def poll(self) -> None:
@@ -443,7 +458,14 @@ class _Doc:
         return _Flat(paths, labels, curves)
 
     def segments(self, el: ET.Element) -> list[Any]:
-        """svgelements segments of a path or basic shape, in the element's coordinates."""
+        """svgelements segments of a path or basic shape, in the element's coordinates (parsed once)."""
+        key = id(el)
+        segs = self._segments.get(key)
+        if segs is None:
+            segs = self._segments[key] = self._parse_segments(el)
+        return segs
+
+    def _parse_segments(self, el: ET.Element) -> list[Any]:
         import svgelements as se
 
         tag = _local(el.tag)
@@ -501,8 +523,9 @@ class _Doc:
                 pts = np.concatenate(cur)
                 keep = np.r_[True, np.any(np.abs(np.diff(pts, axis=0)) > 1e-12, axis=1)]
                 pts = pts[keep]
-                is_closed = closed or (len(pts) >= 4 and np.allclose(pts[0], pts[-1], atol=1e-9))
-                if is_closed and len(pts) > 1 and np.allclose(pts[0], pts[-1], atol=1e-9):
+                ends_meet = _same_point(pts[0], pts[-1])
+                is_closed = closed or (len(pts) >= 4 and ends_meet)
+                if is_closed and len(pts) > 1 and ends_meet:
                     pts = pts[:-1]
                 if len(pts) >= 2:
                     out.append((pts, bool(is_closed), curved))
@@ -535,10 +558,10 @@ class _Doc:
                 continue
             if isinstance(seg, se.QuadraticBezier):
                 p = np.array([[seg.start.x, seg.start.y], [seg.control.x, seg.control.y], [seg.end.x, seg.end.y]])
-                bound = 2 * np.linalg.norm(p[0] - 2 * p[1] + p[2])
+                bound = 2 * _norm2(p[0] - 2 * p[1] + p[2])
             elif isinstance(seg, se.CubicBezier):
                 p = np.array([[seg.start.x, seg.start.y], [seg.control1.x, seg.control1.y], [seg.control2.x, seg.control2.y], [seg.end.x, seg.end.y]])
-                bound = 6 * max(np.linalg.norm(p[0] - 2 * p[1] + p[2]), np.linalg.norm(p[1] - 2 * p[2] + p[3]))
+                bound = 6 * max(_norm2(p[0] - 2 * p[1] + p[2]), _norm2(p[1] - 2 * p[2] + p[3]))
             elif isinstance(seg, se.Arc):
                 bound = float(seg.sweep) ** 2 * max(float(seg.rx), float(seg.ry))
             else:
