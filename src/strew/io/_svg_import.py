@@ -991,15 +991,18 @@ class _Reader:
         self.names.add(f"{name}-{i}")
         return f"{name}-{i}"
 
-    def new_kind(self, name: str, key: str | None, parts: list[_Part], *, keep_origin: bool, mirrored: bool = False) -> _Kind:
-        flat = self.doc.flatten(parts, _IDENTITY, self.doc.tolerance)
+    def new_kind(
+        self, name: str, key: str | None, parts: list[_Part], *, keep_origin: bool, mirrored: bool = False, known: tuple[_Flat, _Signature | None] | None = None
+    ) -> _Kind:
+        """A kind drawn by ``parts``; ``known`` is their flattening and signature where the caller has them."""
+        flat = self.doc.flatten(parts, _IDENTITY, self.doc.tolerance) if known is None else known[0]
         if keep_origin:
             origin = np.zeros(2)
         else:
             bounds = _bounds(flat.paths)
             origin = np.array([(bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2])
         kind = _Kind(self.unique(name), key, parts, origin, mirrored, style=_style(self.doc, parts))
-        kind.signature = self.doc.signature(parts, flat)
+        kind.signature = self.doc.signature(parts, flat) if known is None else known[1]
         self.kinds.append(kind)
         return kind
 
@@ -1095,7 +1098,7 @@ class _Reader:
                 self.place(kind, g, void, el)
                 return
         name = key or "shape"
-        kind = self.new_kind(name, key, parts, keep_origin=False)
+        kind = self.new_kind(name, key, parts, keep_origin=False, known=(flat, sig))
         self.place(kind, _IDENTITY, void, el)
 
     def candidate_kinds(self, sig: _Signature) -> np.ndarray:
