@@ -66,9 +66,11 @@ def command(pattern, region, size, seed_points, resolution, min_radius, style, m
     params = {**arr.meta.get("params", {}), "pattern": str(pattern)}
     write_outputs(arr, outs, method="ornament", seed=seed, params=params, quiet=quiet)
     st = orn.stats
+    from ..metrics import visible_count
+
     n = sum(1 for e in orn.elements if e.type != "seed")
-    echo(
-        f"{pat.name}: {n} elements in {st['seconds']:.2f} s ({st['successes']} grown, "
+    echo(  # the count is the drawn one, as strew info and the gallery give it (issue 23)
+        f"{pat.name}: {visible_count(arr)} elements drawn from {n} grown in {st['seconds']:.2f} s ({st['successes']} placed, "
         f"{st['failures']} excluded circles), style {style}",
         quiet=quiet,
     )

@@ -44,13 +44,12 @@ def items(rng: np.random.Generator) -> list[DemoItem]:
         for key in keys:
             text, region = panels[key]
             orn = grow_elements(name, region, seeds=seeds.get(key), rng=int(rng.integers(2**31)))
-            n = sum(1 for e in orn.elements if e.type != "seed")
             out.append(
                 DemoItem(
                     name=f"ornament-{name}-{key}",
                     title=f"Ornament: {name} in {text}",
                     arrangement=orn.render(style),
-                    description=f"{orn.pattern.description} {n} elements, style '{style}'.",
+                    description=f"{orn.pattern.description} Style '{style}'.",  # the caption gives the count
                 )
             )
     text, region = panels["rect"]

@@ -363,6 +363,7 @@ class _Grower:
         shapely.prepare(self.region_cover)
         self.stats: dict[str, Any] = dict(iterations=0, successes=0, failures=0, rejected=0, outside=0)
         seed_type = pattern.types["seed"]
+        self.n_seeds = len(seeds)
         for s in seeds:
             el = Element(seed_type)
             el.proxy.set(s)  # type: ignore[attr-defined]
@@ -585,7 +586,8 @@ class _Grower:
         while True:
             if self.max_elements is not None and len(self.elements) >= self.max_elements:
                 break
-            self.rep.tick(len(self.elements), message=f"{len(self.elements)} elements")
+            grown = len(self.elements) - self.n_seeds  # the seeds are not drawn; not counted (issue 23)
+            self.rep.tick(grown, message=f"{grown} grown")
             scan_blocks(
                 self.dist_all, self.dist_el, self.covered, self.skip, self.dirty, self.best_val, self.best_idx,
                 _BLOCK, self.adj_tol, self.ex[:, 0].copy(), self.ex[:, 1].copy(), self.n_ex, self.x0, self.y0, h,
@@ -733,7 +735,7 @@ def grow_elements(
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep)
     g.run()
-    rep.done(len(g.elements))
+    rep.done(len(g.elements) - g.n_seeds)
     stats = dict(g.stats)
     stats["seconds"] = time.perf_counter() - t0
     stats["resolution"] = g.resolution

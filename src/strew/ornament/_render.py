@@ -321,6 +321,34 @@ def _key(local: list[np.ndarray], closed: bool, style: dict[str, Any]) -> tuple:
     return (closed, tuple((np.round(p, 6) + 0.0).tobytes() for p in local), tuple(sorted(style.items())))
 
 
+def _clip_to_panel(paths: list[np.ndarray], closed: bool, panel: Any, cover: Any) -> list[np.ndarray]:
+    """Paths of a mark clipped to the panel (``(n, 2)`` arrays in, the same out).
+
+    Growth keeps every proxy inside the panel (§3.1), but a mark drawn around a proxy
+    (a stem's width, a leaf's outline) can stand out of it by half a line width; like a
+    frame over the panel, the drawing is cut at the panel's edge. Marks wholly inside
+    (``cover``: the panel grown by a rounding tolerance) come back unchanged.
+    """
+    import shapely
+
+    from ..shape import paths_to_polygon
+
+    if closed:
+        geom = paths_to_polygon(Path(q, True) for q in paths)
+        if geom.is_empty or shapely.covers(cover, geom):
+            return paths
+        out = []
+        for part in shapely.get_parts(shapely.intersection(geom, panel)):
+            if isinstance(part, shapely.Polygon) and part.area > 0:
+                out += [np.asarray(r.coords)[:-1] for r in (part.exterior, *part.interiors)]
+        return out
+    geom = shapely.MultiLineString([q for q in paths if len(q) >= 2])
+    if geom.is_empty or shapely.covers(cover, geom):
+        return paths
+    cut = shapely.line_merge(shapely.intersection(geom, panel))
+    return [np.asarray(g.coords) for g in shapely.get_parts(cut) if isinstance(g, shapely.LineString) and g.length > 0]
+
+
 def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: float | None = None, seeds: bool = False) -> Arrangement:
     """Draw the grown ornament in a named style.
 
@@ -356,6 +384,13 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     col_el, col_type, col_parent, col_phase = [], [], [], []
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
     layer: dict[str, tuple[int, int, int]] = {}
+    panel = cover = None
+    if ornament.region is not None:
+        import shapely
+
+        panel = ornament.region.geometry
+        cover = shapely.buffer(panel, 1e-7 * max(1.0, *np.abs(ornament.region.bounds)))
+        shapely.prepare(cover)
     for el in sorted(ornament.elements, key=lambda e: (rank.get(e.type, len(rank)), e.index)):
         if el.type == "seed":
             if not seeds:
@@ -368,9 +403,13 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             paths = [np.asarray(p, dtype=float) for p in m.paths if len(p)]
             if not paths:
                 continue
-            allp = np.vstack(paths)
-            if not np.all(np.isfinite(allp)):
+            if not np.all(np.isfinite(np.vstack(paths))):
                 raise InputError(f"render {pat.name!r}/{style!r}: NaN in a mark of element {el.index} ({el.type})")
+            if panel is not None:
+                paths = _clip_to_panel(paths, m.closed, panel, cover)
+                if not paths:
+                    continue
+            allp = np.vstack(paths)
             # the mark in a frame of its own: origin at the mean of its vertices, x axis
             # towards its first vertex, so that marks drawn from one template (a type's
             # leaves at any angle, its flowers anywhere) share one shape, placed by a
