@@ -35,7 +35,8 @@ the closest approach of two kinds is learned over the whole exemplar, not only w
 neighbourhoods. The bounding radius of §4.1 is the collision bound wherever the
 exemplar gives it; default radii shrink per kind to the exemplar's spacing, and where
 they shrink below 0.9 of the bounding radius (elongated shapes) the shapes themselves
-are tested while growing and after optimising (``_shapes``). While
+are tested while growing and after optimising (``_shapes``); kinds next to another size
+class keep 0.95 of the exemplar's gap between their discs (``collision_radii``). While
 brushing, seeds whose copies lie beyond the discs reached so far do not count as
 failures. A fill with several exemplars selected deals Voronoi cells of the region to
 them by weight (§5.5 extension), or puts each where ``{name: Region}`` (CLI
