@@ -9,44 +9,13 @@ import signal
 import subprocess
 import sys
 import time
-import warnings
 
 import pytest
 
 pytest.importorskip("fastapi")
 pytest.importorskip("httpx")
 
-
-@pytest.fixture
-def client(tmp_path):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        from fastapi.testclient import TestClient
-    from strew.studio import create_app
-
-    project = tmp_path / "project"
-    project.mkdir()
-    with TestClient(create_app(project, warm=False)) as c:
-        c.project = project
-        yield c
-
-
-def _until(ws, ref):
-    out = []
-    while True:
-        m = ws.receive_json()
-        out.append(m)
-        if (m["type"] == "done" and m["ref"] == ref) or m["type"] == "error":
-            return out
-
-
-def _ask(ws, msg):
-    ws.send_text(json.dumps(msg))
-    return _until(ws, msg["type"])
-
-
-def _alive(ws):
-    assert _ask(ws, {"type": "ping", "t": 7})[0] == {"type": "pong", "t": 7}
+from _studio_client import _alive, _ask, _until, client  # noqa: E402,F401
 
 
 SECRET_DOC = json.dumps(

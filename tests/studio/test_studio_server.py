@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import os
-import warnings
 
 import pytest
 from hypothesis import given, settings
@@ -16,39 +15,7 @@ pytest.importorskip("httpx")
 from strew.cli import main  # noqa: E402
 from strew.studio._protocol import MAX_MESSAGE_BYTES, MAX_POINTS  # noqa: E402
 
-
-@pytest.fixture
-def client(tmp_path):
-    with warnings.catch_warnings():
-        # starlette's TestClient warns about httpx at import time
-        warnings.simplefilter("ignore")
-        from fastapi.testclient import TestClient
-    from strew.studio import create_app
-
-    project = tmp_path / "project"
-    project.mkdir()
-    with TestClient(create_app(project, warm=False)) as c:
-        c.project = project
-        yield c
-
-
-def _until(ws, ref):
-    """Messages up to the 'done' for ``ref`` (or the first error)."""
-    out = []
-    while True:
-        m = ws.receive_json()
-        out.append(m)
-        if (m["type"] == "done" and m["ref"] == ref) or m["type"] == "error":
-            return out
-
-
-def _ask(ws, msg):
-    ws.send_text(json.dumps(msg))
-    return _until(ws, msg["type"])
-
-
-def _alive(ws):
-    assert _ask(ws, {"type": "ping", "t": 5})[0] == {"type": "pong", "t": 5}
+from _studio_client import _alive, _ask, _until, client  # noqa: E402,F401
 
 
 def test_page_and_static_files(client):
