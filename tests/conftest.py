@@ -63,3 +63,19 @@ def arrangements(draw, max_elements: int = 12, extra_columns: bool = True):
             columns["void"] = draw(st.lists(st.booleans(), min_size=n, max_size=n))
     meta = {"seed": draw(st.integers(0, 99)), "params": {"a": draw(st.floats(0, 1))}, "note": "héllo"}
     return Arrangement(shapes, np.array(kind, dtype=int), xs, ys, rot, sc, columns=columns, meta=meta)
+
+
+def fidelity_suite():
+    """The exemplar suite of ``examples/fidelity/make.py`` (loaded once; it is a script, not a module)."""
+    import importlib.util
+    import sys
+    from pathlib import Path
+
+    name = "strew_fidelity_suite"
+    if name not in sys.modules:
+        path = Path(__file__).resolve().parents[1] / "examples" / "fidelity" / "make.py"
+        spec = importlib.util.spec_from_file_location(name, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[name] = mod
+        spec.loader.exec_module(mod)
+    return sys.modules[name]

@@ -9,9 +9,7 @@ L-shaped region (edge correction), and peaks at a hexagonal lattice's distances.
 from __future__ import annotations
 
 import functools
-import importlib.util
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -24,17 +22,10 @@ from strew._errors import InputError
 from strew.arrangement import concat
 from strew.metrics import FidelityReport, fidelity, nearest_neighbor_distances, pair_correlation
 
-ROOT = Path(__file__).resolve().parents[2]
+from conftest import fidelity_suite
 
 
-def _suite():
-    spec = importlib.util.spec_from_file_location("fidelity_make", ROOT / "examples" / "fidelity" / "make.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-suite = _suite()
+suite = fidelity_suite()
 
 
 @functools.lru_cache(maxsize=None)

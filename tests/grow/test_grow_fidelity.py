@@ -7,8 +7,6 @@ repairs of the connectivity (§4, Fig. 3) and of several sizes (§5.1).
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -20,18 +18,10 @@ from strew.fields import flow_field
 from strew.grow import analyze, grow, size_priority
 from strew.metrics import fidelity
 
-ROOT = Path(__file__).resolve().parents[2]
+from conftest import fidelity_suite
 
 
-def _suite():
-    spec = importlib.util.spec_from_file_location("fidelity_make_grow_tests", ROOT / "examples" / "fidelity" / "make.py")
-    mod = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    spec.loader.exec_module(mod)
-    return mod
-
-
-make_exemplar = _suite().make_exemplar
+make_exemplar = fidelity_suite().make_exemplar
 
 
 def _region(ex, scale=2.2):

@@ -3,7 +3,6 @@ the per-element radius is the collision bound (§4.1), the brush leaves no holes
 
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 
 import numpy as np
@@ -17,17 +16,10 @@ from strew.metrics import fidelity
 from strew.synth import Palette, brush, erase, new_state, synthesize
 from strew.synth._exemplars import grid, stones, stripes
 
-ROOT = Path(__file__).resolve().parents[2]
+from conftest import fidelity_suite
 
 
-def _suite():
-    spec = importlib.util.spec_from_file_location("fidelity_make", ROOT / "examples" / "fidelity" / "make.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-suite = _suite()
+suite = fidelity_suite()
 
 # The suite's classes that synth reproduces (issue 13, point 1). rows_noisy (neighbour
 # bearings) and three_sizes do not pass yet and are left out rather than asserted weakly.
