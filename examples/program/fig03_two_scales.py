@@ -8,18 +8,23 @@ Run: strew run fig03_two_scales.py --out fig03.svg   (or: python fig03_two_scale
 from pathlib import Path
 
 from strew.program import *
-from strew.program import pi
+from strew.program import pi, run_size
 
 here = Path(__file__).parent
-size = 2000
+size = run_size(2000)
 blob = scale(import_svg(here / "blob.svg"), 2.2)
 zig = import_svg(here / "zig.svg")
 
 
-# Mapper: places a blob in a face.
+# Mapper: places a blob in a face, or nothing where it would cross the frame (so that
+# every blob lies in the picture).
 def map_blob_to(face):
     new_blob = rotate(blob, random(face, 0, 2 * pi, 0))
-    return match_point(new_blob, bbox_center(new_blob), centroid(face))
+    placed = match_point(new_blob, bbox_center(new_blob), centroid(face))
+    (cx, cy), w, h = bbox_center(placed), bbox_width(placed), bbox_height(placed)
+    if min(cx - w / 2, cy - h / 2) < 0 or max(cx + w / 2, cy + h / 2) > size:
+        return nothing()
+    return placed
 
 
 # Mapper: replaces an edge by a zig stroke.

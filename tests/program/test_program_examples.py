@@ -102,3 +102,22 @@ def test_run_warns_on_an_empty_arrangement(tmp_path, capsys):
     assert "warning" in err and "empty" in err and "--size" in err
     assert main(["run", str(s), "--size", "12000", "-q", "-o", str(out)]) == 0
     assert "empty" not in capsys.readouterr().err
+
+
+def _relative_luminance(color: str) -> float:
+    rgb = [int(color[i : i + 2], 16) / 255 for i in (1, 3, 5)]
+    lin = [c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4 for c in rgb]
+    return 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2]
+
+
+def test_edge_colours_read_on_white_and_on_their_faces():
+    # issue 23 point 8: labelled edges were light lavender / orange, hard to see
+    from strew.program._script import _PALETTE, _STROKE_PALETTE
+
+    assert len(_STROKE_PALETTE) == len(_PALETTE)
+    for c in _STROKE_PALETTE:
+        assert (1.05) / (_relative_luminance(c) + 0.05) >= 4.5, c  # WCAG contrast against white
+    for fill, stroke in zip(_PALETTE, _STROKE_PALETTE):
+        # the face is drawn at opacity 0.45 over white
+        seen = "#" + "".join(f"{round(0.45 * int(fill[i : i + 2], 16) + 0.55 * 255):02x}" for i in (1, 3, 5))
+        assert (_relative_luminance(seen) + 0.05) / (_relative_luminance(stroke) + 0.05) >= 3.0, (fill, stroke)

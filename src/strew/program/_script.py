@@ -155,12 +155,16 @@ def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = No
 
 
 # -- export ---------------------------------------------------------------------------------
+# a label's colour: light for face fills, a dark shade of the same hue for edges, which
+# are thin lines that must read on white and on the light fills (contrast ratio against
+# white at least 4.5 for every stroke colour; tested)
 _PALETTE = ["#e8c547", "#5d9bd5", "#e07a5f", "#81b29a", "#b388d9", "#f2a65a", "#6cc3c1", "#d16b8f"]
+_STROKE_PALETTE = ["#7a5f00", "#1f5f9e", "#a8361b", "#2e6b4f", "#6a3d9a", "#9a4d00", "#16706e", "#9e2a5b"]
 
 
-def _label_color(labels: frozenset[str]) -> str:
+def _label_color(labels: frozenset[str], palette: list[str] = _PALETTE) -> str:
     h = hashlib.blake2b(" ".join(sorted(labels)).encode(), digest_size=2).digest()
-    return _PALETTE[int.from_bytes(h, "little") % len(_PALETTE)]
+    return palette[int.from_bytes(h, "little") % len(palette)]
 
 
 def to_strew(pm: PlanarMap, region: Region | None = None, *, stroke_width: float | None = None) -> Arrangement:
@@ -208,7 +212,7 @@ def to_strew(pm: PlanarMap, region: Region | None = None, *, stroke_width: float
         pts = t.edge_points[e]
         c = (pts.min(axis=0) + pts.max(axis=0)) / 2
         labs = t.edge_labels[e]
-        style = {"fill": "none", "stroke": _label_color(labs) if labs else "#1d1f24", "stroke_width": stroke_width}
+        style = {"fill": "none", "stroke": _label_color(labs, _STROKE_PALETTE) if labs else "#1d1f24", "stroke_width": stroke_width}
         shapes[f"edge-{e}"] = Shape((ShapePath(pts - c, False),), style=style)
         xs.append(c[0])
         ys.append(c[1])
