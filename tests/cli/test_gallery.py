@@ -1,0 +1,86 @@
+"""The gallery (``strew demo``) as a whole: every picture inside its region, no overlaps
+of filled shapes where the method promises none, captions that give the documents' count
+(issue 23). The gallery is built once for the module (a few minutes on a loaded 2-core
+machine), hence ``slow``."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from strew import metrics
+from strew.demo import build_gallery
+from strew.io import load
+
+pytestmark = pytest.mark.slow
+
+# Every picture of the gallery. A new picture must be added here, so that it is checked.
+NAMES = [
+    *(f"exemplar-{n}" for n in ("leaves", "scales", "stones", "tiles")),
+    *(f"grow-{n}" for n in ("boundary", "flow", "irregular", "near-regular", "regular", "spray")),
+    *(f"ornament-{p}-{k}" for p, ks in (("dots", "rect ring"), ("flowers", "arch rect"), ("hierarchy", "rect ring"),
+                                        ("spirals", "arch rect"), ("vase", "arch rect"), ("willow", "rect ring"))
+      for k in ks.split()),
+    *(f"ornament-spirals-{s}" for s in ("skeletal", "skeletal-beads", "skeletal-leafy", "skeletal-ribbon")),
+    *(f"pack-{n}" for n in ("margin-0", "margin-6", "stones", "trees")),
+    "program-fig03-two-scales-arrangement",
+    *(f"program-fig05-partitions-{n}" for n in ("grid", "random-cells", "stripes", "uniform")),
+    *(f"program-fig06-borders-{n}" for n in ("crop-add-boundary", "crop", "keep-inside", "keep-outside")),
+    *(f"program-fig07-mappers-{n}" for n in ("cells-with-curves", "puzzle", "rosettes")),
+    *(f"program-fig08-merges-{n}" for n in ("inside-blobs", "outside-blobs", "union-both")),
+    "program-fig11d-mosaic-arrangement",
+    "program-fig12b-cracks-arrangement",
+    *(f"synth-{n}" for n in ("apples", "grid", "rings", "stripes", "two-scales", "palette")),
+    *(f"synth-exemplar-{n}" for n in ("apples", "grid", "rings", "stripes")),
+]
+
+# Methods that promise filled shapes which do not overlap: packing, growth, synthesis
+# outputs and the partitions of the program examples (cells tile their face).
+NO_OVERLAP = [n for n in NAMES if n.startswith(("pack-", "grow-", "program-fig05-"))
+              or (n.startswith("synth-") and not n.startswith(("synth-exemplar-", "synth-palette")))]
+
+_OPEN = "issue 23: program example not yet fixed"
+KNOWN_OUTSIDE: dict[str, str] = {}
+KNOWN_OVERLAP = {
+    "program-fig05-partitions-stripes": f"{_OPEN} (fig05: one filled cell over another)",
+    "program-fig05-partitions-uniform": f"{_OPEN} (fig05: one filled cell over another)",
+}
+
+
+def _cases(names, known):
+    return [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=known[n])) if n in known else n for n in names]
+
+
+@pytest.fixture(scope="module")
+def gallery(tmp_path_factory):
+    out = tmp_path_factory.mktemp("gallery")
+    build_gallery(out, png_width=48)
+    page = (out / "index.html").read_text()
+    captions = {name: int(n) for name, n in re.findall(r'<a href="([^"]+)\.svg">.*?\((\d+) elements\)', page)}
+    docs = {p.stem: load(p) for p in out.glob("*.json")}
+    return docs, captions
+
+
+def test_gallery_lists_every_picture(gallery):
+    docs, captions = gallery
+    assert sorted(docs) == sorted(NAMES) == sorted(captions)
+
+
+@pytest.mark.parametrize("name", _cases(NAMES, KNOWN_OUTSIDE))
+def test_nothing_outside_the_region(gallery, name):
+    arr = gallery[0][name]
+    out = metrics.outside(arr)
+    assert len(out) == 0, f"{name}: {len(out)} of {len(arr)} elements outside the region"
+
+
+@pytest.mark.parametrize("name", _cases(NO_OVERLAP, KNOWN_OVERLAP))
+def test_no_filled_overlaps_where_promised(gallery, name):
+    s = metrics.summary(gallery[0][name])
+    assert s["filled_overlap_pairs"] == 0, f"{name}: {s['filled_overlap_pairs']} pairs, area {s['filled_overlap_area']:.4g}"
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_caption_gives_the_visible_count(gallery, name):
+    docs, captions = gallery
+    assert captions[name] == metrics.visible_count(docs[name])
