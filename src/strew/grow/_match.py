@@ -67,6 +67,24 @@ def order_target(rel: np.ndarray) -> np.ndarray:
 
 
 @numba.njit(cache=True)
+def _ring_cost(ref_rel, ref_kind, r, nr, k, t_rel, t_kind, th, w1, w2):  # pragma: no cover - compiled
+    """Eq. 3's w1 and w2 terms: reference ring ``r`` turned by ``th``, shifted by ``k``, against the target."""
+    c = np.cos(th)
+    s = np.sin(th)
+    e = 0.0
+    for i in range(t_rel.shape[0]):
+        j = (k + i) % nr
+        px = c * ref_rel[r, j, 0] - s * ref_rel[r, j, 1]
+        py = s * ref_rel[r, j, 0] + c * ref_rel[r, j, 1]
+        dx = t_rel[i, 0] - px
+        dy = t_rel[i, 1] - py
+        e += w1 * np.sqrt(dx * dx + dy * dy)
+        if t_kind[i] != ref_kind[r, j]:
+            e += w2
+    return e
+
+
+@numba.njit(cache=True)
 def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub, mode, flow_theta, frame_theta, frame_w, max_turn, w1, w2, w3, out_err, out_shift, out_theta):  # pragma: no cover - compiled
     R = ref_rel.shape[0]
     T = t_rel.shape[0]
@@ -125,18 +143,7 @@ def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub,
                 th = frame_theta  # no target neighbour: the neighbours' frame, if any
             elif mode == 2:
                 th = flow_theta
-            c = np.cos(th)
-            s = np.sin(th)
-            e = 0.0
-            for i in range(T):
-                j = (k + i) % nr
-                px = c * ref_rel[r, j, 0] - s * ref_rel[r, j, 1]
-                py = s * ref_rel[r, j, 0] + c * ref_rel[r, j, 1]
-                dx = t_rel[i, 0] - px
-                dy = t_rel[i, 1] - py
-                e += w1 * np.sqrt(dx * dx + dy * dy)
-                if t_kind[i] != ref_kind[r, j]:
-                    e += w2
+            e = _ring_cost(ref_rel, ref_kind, r, nr, k, t_rel, t_kind, th, w1, w2)
             if mode == 1 and frame_w > 0.0:
                 # departure from Eq. 4 (see match_references): the turn away from the
                 # frame of the neighbouring elements costs, and is held within max_turn
@@ -147,18 +154,7 @@ def _match_kernel(ref_rel, ref_kind, ref_n, ref_sub, cand, t_rel, t_kind, t_sub,
                 elif d < -max_turn:
                     d = -max_turn
                 th = frame_theta + d
-                e = 0.0
-                c = np.cos(th)
-                s = np.sin(th)
-                for i in range(T):
-                    j = (k + i) % nr
-                    px = c * ref_rel[r, j, 0] - s * ref_rel[r, j, 1]
-                    py = s * ref_rel[r, j, 0] + c * ref_rel[r, j, 1]
-                    dx = t_rel[i, 0] - px
-                    dy = t_rel[i, 1] - py
-                    e += w1 * np.sqrt(dx * dx + dy * dy)
-                    if t_kind[i] != ref_kind[r, j]:
-                        e += w2
+                e = _ring_cost(ref_rel, ref_kind, r, nr, k, t_rel, t_kind, th, w1, w2)
                 e += frame_w * max(T, 1) * abs(d)
             if e < best:
                 best = e
