@@ -47,6 +47,25 @@ def test_touching_squares_do_not_overlap():
     assert len(metrics.overlaps(a)[0]) == 0
 
 
+def test_adjacent_strips_with_nearly_equal_corners_do_not_overlap():
+    # Loi's fig05 stripes at 30 degrees: the shared corner differs by 3e-14 between the two
+    # faces, and GEOS's overlay returned the whole narrow strip as their intersection.
+    a_pts = [[1000.0, 715.9143339999999], [0.0, 138.56406499999997], [0.0, 230.94010799999998], [1000.0, 808.2903769999999]]
+    b_pts = [[1000.0, 808.2903769999999], [0.0, 230.940108], [0.0, 277.128129], [1000.0, 854.478398]]
+    shapes = {"a": Shape.polygon(a_pts), "b": Shape.polygon(b_pts)}
+    arr = Arrangement(shapes, [0, 1], [0, 0], [0, 0])
+    g = arr.geometry
+    assert g[0].area > 0 and g[1].area > 0
+    pairs, _ = metrics.overlaps(arr)
+    assert len(pairs) == 0
+    assert metrics.summary(arr)["filled_overlap_pairs"] == 0
+    # a real overlap of the same strips is still found, with its area
+    shifted = Arrangement(shapes, [0, 1], [0, 0], [0, -20.0])
+    pairs, areas = metrics.overlaps(shifted)
+    assert pairs.tolist() == [[0, 1]]
+    assert areas[0] == pytest.approx(shifted.geometry[0].intersection(shifted.geometry[1]).area, rel=1e-6)
+
+
 @given(st.floats(0.1, 5), st.floats(-3, 3), st.floats(-3, 3))
 def test_overlap_area_of_two_discs_matches_union_identity(r, dx, dy):
     a = Arrangement({"c": Shape.circle(r, 64)}, [0, 0], [0, dx], [0, dy])
