@@ -4,7 +4,8 @@
 staggered rows, then a puzzle tab matched on every edge with match_points.
 (middle) Rosettes: four construction lines matched on each face centroid of a uniform
 partition, then overlapping circles mapped on the resulting vertices.
-(bottom) Random cells shrunk, with a stroke picked from a small set on each edge.
+(bottom) Random cells (cropped by the frame, so they fill it) shrunk, with a stroke
+picked from a small set on each edge.
 Lengths are for the gallery's 800-unit square and scale with ``--size`` (``run_size``).
 Run: strew run fig07_mappers.py --name rosettes --out rosettes.svg
 """
@@ -68,11 +69,19 @@ def flower(vertex):
 rosettes = map_to_vertices(flower, map_to_faces(construction_lines, cells))
 
 # -- shrunk random cells with strokes -----------------------------------------------------
-random_cells = random_partition(irregular_properties(1 / (160 * k) ** 2), KEEP_INSIDE)
+random_cells = random_partition(irregular_properties(1 / (160 * k) ** 2), CROP_ADD_BOUNDARY)
 shrunk = map_to_faces(lambda face: scale(contour(face), 0.8), random_cells)
 
 
+def near_frame(p):
+    return min(p[0], p[1], size - p[0], size - p[1]) < 40 * k
+
+
 def stroke(edge):
+    # cells cropped by the frame keep a straight side along it: a wiggle there would
+    # poke out of the square
+    if near_frame(location(source_vertex(edge))) and near_frame(location(target_vertex(edge))):
+        return to_curve(edge)
     pick = ["w1", "w2", "w3"][int(random(edge, 0, 3, 0)) % 3]
     w = curve_labeled(wiggles, pick)
     return match_points(w, point_labeled(wiggles, "start"), point_labeled(wiggles, "end"), location(source_vertex(edge)), location(target_vertex(edge)))
