@@ -10,7 +10,8 @@ import pytest
 
 @pytest.fixture
 def client(tmp_path):
-    """A TestClient on a studio app serving an empty project folder (``client.project``)."""
+    """A TestClient on a studio app serving an empty project folder (``client.project``),
+    with an empty palette (no example preloaded)."""
     with warnings.catch_warnings():
         # starlette's TestClient warns about httpx at import time
         warnings.simplefilter("ignore")
@@ -19,7 +20,7 @@ def client(tmp_path):
 
     project = tmp_path / "project"
     project.mkdir()
-    with TestClient(create_app(project, warm=False)) as c:
+    with TestClient(create_app(project, warm=False, preload=False)) as c:
         c.project = project
         yield c
 

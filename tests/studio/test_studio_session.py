@@ -152,7 +152,10 @@ def test_fill_fills_the_region_and_stays_inside(tmp_path):
     assert len(scene) >= 15
     inside = s.region.contains(scene.xy)
     assert inside.all()
-    assert np.isfinite(s.distance)
+    # the status bar's readout is the fidelity verdict against the one selected exemplar
+    assert s.fidelity is not None and s.fidelity["exemplar"] == "scales"
+    assert isinstance(s.fidelity["faithful"], bool) and all(isinstance(f, str) for f in s.fidelity["failures"])
+    assert out[-1]["fidelity"] == s.fidelity
     # a second fill finds no room
     n = len(scene)
     s.handle({"type": "fill", "point": [[100.0, 75.0]]})

@@ -139,7 +139,7 @@ def warm_up() -> None:
         pass
 
 
-def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[str, ...] = LOCAL_HOSTS, warm: bool = True) -> Any:
+def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[str, ...] = LOCAL_HOSTS, warm: bool = True, preload: bool = True) -> Any:
     """The FastAPI application of a studio on ``project_dir``.
 
     Parameters
@@ -153,6 +153,10 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
         host is refused.
     warm : bool
         Load the compiled kernels in a background thread at once (:func:`warm_up`).
+    preload : bool
+        On a project's first start (no ``palette.json``), the first page loads the
+        example palette (:data:`~strew.studio._session.PRELOAD_EXAMPLE`), so that the
+        first stroke paints with no extra click.
     """
     root = Path(project_dir).resolve()
     if not root.is_dir():
@@ -177,7 +181,9 @@ def create_app(project_dir: str | Path, *, seed: int = 0, allowed_hosts: tuple[s
 
     # One session per server: reloading the page (or opening it again) finds the palette and
     # the scene as they were. The newest window takes over; the previous one is told and closed.
-    session = Session(root, seed=seed)
+    from ._session import PRELOAD_EXAMPLE
+
+    session = Session(root, seed=seed, preload=PRELOAD_EXAMPLE if preload else None)
     app.state.session = session
     lock = threading.Lock()
     current: dict[str, Any] = {"outbox": None}

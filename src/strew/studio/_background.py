@@ -31,6 +31,8 @@ class BackgroundStudio:
     seed : int
     warm : bool
         Load the compiled kernels before serving (see :func:`strew.studio._app.warm_up`).
+    preload : bool
+        Load the example palette at the first page (see :func:`strew.studio._app.create_app`).
 
     Examples
     --------
@@ -38,14 +40,14 @@ class BackgroundStudio:
     ...     print(studio.url)
     """
 
-    def __init__(self, project_dir: str | Path, *, seed: int = 0, warm: bool = True) -> None:
+    def __init__(self, project_dir: str | Path, *, seed: int = 0, warm: bool = True, preload: bool = True) -> None:
         import uvicorn
 
         from ._app import create_app, warm_up
 
         if warm:
             warm_up()
-        self.app = create_app(project_dir, seed=seed, warm=False)
+        self.app = create_app(project_dir, seed=seed, warm=False, preload=preload)
         from ._protocol import MAX_MESSAGE_BYTES
 
         config = uvicorn.Config(self.app, host="127.0.0.1", port=0, log_level="warning", lifespan="off", ws_max_size=MAX_MESSAGE_BYTES * 4)

@@ -31,15 +31,22 @@ Browser -> server (coordinates are world units, ``points`` is ``[[x, y], ...]``)
 ``save``               ``palette.json`` and ``scene.json`` in PROJECT_DIR
 ``load_project``       reads them back
 ``export``             ``path`` inside PROJECT_DIR: .svg, .png or .json
-``settings``           ``grow_mode``: fixed, rotate or flow (the spray, Ijiri §5.3)
+``settings``           ``grow_mode``: fixed, rotate or flow (the spray, Ijiri §5.3);
+                       ``jitter_scale``, ``jitter_rotation``; ``brush_density`` (0.05-1)
+``clip``               remove the scene elements outside the region (or across a
+                       boundary stroke), locked layers kept
+``layers``             ``order``, ``hidden``, ``locked``: kind names (one layer a kind)
 ``ping``, ``list_files``
 =====================  ==============================================================
 
 Server -> browser: ``shapes`` (the kind library: paths and styles), ``palette`` (each
 exemplar's elements, radii and edges), ``scene`` (``op`` ``replace`` with columns
 ``k, x, y, r, s``, or ``patch`` with ``update`` and ``append``), ``strokes`` (flow and
-boundary strokes, flow arrows, region outline), ``status`` (element count, average
-neighbourhood distance, history depth, message), ``files``, ``saved``, ``exported``,
+boundary strokes, flow arrows, region outline), ``layers``, ``status`` (the element
+count, which is :func:`strew.metrics.visible_count` of the scene as saved; ``rate``:
+elements/s of the last operation; ``fidelity``: the verdict of
+:func:`strew.metrics.fidelity` on the last fill or stroke, or null; ``outside``:
+elements a ``clip`` would remove; history depth; message), ``files``, ``saved``, ``exported``,
 ``pong``, ``error``, ``done``.
 """
 
@@ -99,6 +106,8 @@ MESSAGE_TYPES = (
     "load_project",
     "export",
     "settings",
+    "clip",
+    "layers",
 )
 
 

@@ -44,6 +44,9 @@ PALETTE_FILE = "palette.json"
 SCENE_FILE = "scene.json"
 TOOLS = ("brush", "spray", "erase", "flow", "boundary", "region")
 GROW_MODES = ("fixed", "rotate", "flow")
+#: The example exemplar loaded on a project's first start (no palette.json), so that the
+#: first stroke paints with no extra click.
+PRELOAD_EXAMPLE = "scales.svg"
 MAX_HISTORY = 64
 MAX_SCENE = 200_000
 #: Files the studio loads (exemplars, palette.json, scene.json) are checked against these
@@ -97,9 +100,12 @@ class Session:
         it, so that a session replays identically).
     size : (float, float)
         The default region: the rectangle ``[0, W] x [0, H]``.
+    preload : str or None
+        An example exemplar (a file name under ``examples/exemplars``) loaded into an
+        empty palette at the first ``hello`` when the project has no ``palette.json``.
     """
 
-    def __init__(self, project_dir: str | Path, *, seed: int = 0, size: tuple[float, float] = (800.0, 600.0)) -> None:
+    def __init__(self, project_dir: str | Path, *, seed: int = 0, size: tuple[float, float] = (800.0, 600.0), preload: str | None = None) -> None:
         self.root = Path(project_dir).resolve()
         if not self.root.is_dir():
             raise InputError(f"PROJECT_DIR {str(project_dir)!r}: no such folder")
@@ -123,7 +129,13 @@ class Session:
         self.undo_stack: list[tuple] = []
         self.redo_stack: list[tuple] = []
         self.stroke: dict[str, Any] | None = None
-        self.distance = float("nan")
+        self.fidelity: dict[str, Any] | None = None  # verdict of the last operation (status bar)
+        self.rate: float | None = None  # elements/s of the last operation that added elements
+        self.brush_density = 1.0
+        self.layers: dict[str, list[str]] = {"order": [], "hidden": [], "locked": []}
+        self.preload = preload
+        self.outside = 0  # scene elements outside the region (see _count_outside)
+        self._op: dict[str, Any] | None = None  # the fill or brush stroke under way (see _live_hidden)
         self.cancel = threading.Event()
         self._sent: dict[str, np.ndarray] | None = None
         self._emit: Emit = lambda m: None
@@ -186,6 +198,11 @@ class Session:
         return arr.replace(region=self.region)
 
     def _columns_of(self, arr: Arrangement) -> dict[str, np.ndarray]:
+        """Columns of the visible elements of ``arr`` (:func:`strew.metrics.visible`)."""
+        from ..metrics import visible
+
+        if len(arr) and ("void" in arr or any(arr.shapes[k].is_empty for k in arr.kinds)):
+            arr = arr.select(visible(arr))
         lookup = np.array([self.kinds.index(k) for k in arr.kinds], dtype=np.int64) if arr.kinds else np.zeros(0, np.int64)
         return {
             "k": lookup[arr.kind] if len(arr) else np.zeros(0, np.int64),
@@ -210,6 +227,8 @@ class Session:
         prep = st.prep
         src = st.src
         show = ~np.asarray(prep.void, bool)[src]  # void elements are hidden (§5.6)
+        if self._op is not None and st.n > self._op["n0"]:
+            show[self._op["n0"]:] &= ~self._live_hidden(self._op["n0"], thinned=True)
         src = src[show]
         lookup = np.array([self.kinds.index(k) for k in prep.shapes], dtype=np.int64)
         pos = st.pos[show]
@@ -252,11 +271,83 @@ class Session:
         }
 
     def _scene_count(self) -> int:
-        """Elements the scene shows (void elements of the synthesis state are hidden)."""
+        """Elements the scene shows: the one count (:func:`strew.metrics.visible_count` of
+        the scene as saved), equal to what the browser draws."""
+        return len(self._arrays()["k"])
+
+    # ------------------------------------------------------------------ bounds
+    def _out_of_bounds(self, arr: Arrangement) -> np.ndarray:
+        """(n,) bool: elements not wholly inside the region, or crossing a boundary stroke.
+
+        Filled elements must not overhang the region's border, nor cross a boundary
+        stroke (Ijiri §3, Fig. 1f). Both tests are exact on the outlines (shapely), and run
+        only for elements whose bounding disc reaches the border or a stroke.
+        """
+        n = len(arr)
+        out = np.zeros(n, bool)
+        if n == 0:
+            return out
+        radii = _radii(arr)
+        pts = shapely.points(arr.xy)
+        out |= ~self.region.contains(arr.xy)
+        near = ~out & (self.region.distance_to_boundary(arr.xy) < radii)
+        if near.any():
+            idx = np.flatnonzero(near)
+            tol = 1e-9 * max(1.0, *map(abs, self.region.bounds))  # as SynthState.to_arrangement(clip=True)
+            out[idx[~self.region.contains_geometry(arr.select(idx).geometry, tolerance=tol)]] = True
+        if self.boundary_strokes:
+            walls = shapely.MultiLineString([b for b in self.boundary_strokes if len(b) > 1])
+            near = ~out & (shapely.distance(walls, pts) < radii)
+            if near.any():
+                idx = np.flatnonzero(near)
+                out[idx[shapely.intersects(arr.select(idx).geometry, walls)]] = True
+        return out
+
+    def _live_hidden(self, n0: int, *, thinned: bool) -> np.ndarray:
+        """(st.n - n0,) bool: synthesis elements from index ``n0`` on that the operation
+        under way will remove: out of bounds (:meth:`_out_of_bounds`) and, with
+        ``thinned``, those not yet kept or left out by the brush density
+        (:meth:`_thin`). They are hidden while the operation streams, so that the count
+        never goes back."""
         st = self.state
-        if st is None or st.n == 0:
-            return len(self.fixed)
-        return len(self.fixed) + st.n - int(np.count_nonzero(np.asarray(st.prep.void, bool)[st.src]))
+        idx = np.arange(n0, st.n)
+        hide = self._out_of_bounds(_state_part(st, idx))
+        op = self._op
+        if thinned and op is not None and op.get("density", 1.0) < 1.0:
+            hide |= (st._born[idx] >= op["it0"]) | np.isin(_element_keys(st, idx), op["dropped"])
+        return hide
+
+    def _thin(self) -> None:
+        """Brush density: keep each element the last segment added with probability
+        ``density``, drawn from the session's generator.
+
+        An extension of Davison §5.4 (the paper synthesises at the exemplar's density
+        only; §7 names adapting density as a limitation). Elements born since the last
+        call (``born >= it0``, index from the stroke's first) are new; they stay hidden
+        until this decision, so none blinks. Those left out stay in the state, hidden,
+        until the stroke ends (:meth:`_settle`): they hold their room, so that growth
+        along the stroke does not fill the gaps again.
+        """
+        op, st = self._op, self.state
+        if op is None or st is None or op.get("density", 1.0) >= 1.0:
+            return
+        idx = np.arange(op["n0"], st.n)
+        new = idx[st._born[idx] >= op["it0"]]
+        drop = self.rng.random(len(new)) >= op["density"]
+        op["dropped"] = np.union1d(op["dropped"], _element_keys(st, new[drop]))
+        op["it0"] = st.iterations + 1  # growth iterations count up before they add
+
+    def _settle(self, n0: int, *, thinned: bool) -> np.ndarray:
+        """Remove what :meth:`_live_hidden` hides (from index ``n0`` on); returns the
+        (n,) mask of removed elements over the state as it was."""
+        st = self.state
+        if st is None or st.n <= n0:
+            return np.zeros(0 if st is None else st.n, bool)
+        mask = np.zeros(st.n, bool)
+        mask[n0:] = self._live_hidden(n0, thinned=thinned)
+        if mask.any():
+            st.remove(mask)
+        return mask
 
     # ------------------------------------------------------------------ palette
     def _usable(self) -> dict[str, Arrangement]:
@@ -391,7 +482,9 @@ class Session:
             "type": "status",
             "count": self._scene_count(),
             "synth_rate": rate,
-            "distance": None if not np.isfinite(self.distance) else round(self.distance, 5),
+            "rate": None if self.rate is None else round(self.rate, 1),
+            "fidelity": self.fidelity,
+            "outside": self.outside,
             "undo": len(self.undo_stack),
             "redo": len(self.redo_stack),
             "grow_mode": self.grow_mode,
@@ -400,7 +493,7 @@ class Session:
 
     def full_state(self) -> list[dict[str, Any]]:
         """Everything the browser needs to draw the studio from scratch."""
-        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message()]
+        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message(), self.layers_message()]
         scene = self.scene_message(full=True)
         if scene is not None:
             msgs.append(scene)
@@ -417,15 +510,83 @@ class Session:
             ex = []
         return {"type": "files", "files": list_project_files(self.root), "examples": ex}
 
-    def _measure(self) -> None:
-        """Average neighbourhood distance of the synthesis output (Davison Eq. 5), sampled."""
-        from ..synth import average_neighborhood_distance
+    def _judge(self, area: Any) -> None:
+        """The fidelity verdict of the last operation (:func:`strew.metrics.fidelity`).
 
-        if self.state is not None and self.state.n >= 2 and self.state_version == self.palette_version:
-            try:
-                self.distance = float(average_neighborhood_distance(self.state, sample=200))
-            except (InputError, ValueError):
-                self.distance = float("nan")
+        The scene's elements inside ``area`` (the filled face, or the stroke's discs
+        within the region) are compared with the one selected exemplar. With several
+        exemplars selected, or an area too small to hold an interior, there is no
+        verdict (``None``): the status bar then says nothing.
+        """
+        import warnings
+
+        from ..metrics import fidelity
+
+        self.fidelity = None
+        sel = [n for n in self.selection if n in self.palette]
+        if len(sel) != 1 or area is None:
+            return
+        geom = area.geometry if isinstance(area, Region) else area
+        if geom is None or geom.is_empty or geom.area <= 0:
+            return
+        scene = self.scene()
+        if len(scene) < 2:
+            return
+        result = scene.select(shapely.contains_xy(geom, scene.x, scene.y)).replace(region=None)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # a readout: a small area's warnings are not the user's business
+                rep = fidelity(self.palette[sel[0]], result, Region(geom), eq5=False, local=False)
+        except (InputError, ValueError):
+            return
+        self.fidelity = {"exemplar": sel[0], "faithful": bool(rep.faithful), "failures": [str(f) for f in rep.failures], "count": len(result)}
+
+    def _outside_parts(self) -> tuple[np.ndarray, np.ndarray]:
+        """Elements not wholly inside the region or crossing a boundary stroke (drawn
+        before them), in unlocked layers: what ``clip`` removes. Returns (len(fixed),)
+        and (state.n,) bool masks."""
+        fixed = self.fixed
+        out_f = self._out_of_bounds(fixed) & ~self._locked(fixed) & _visible(fixed) if len(fixed) else np.zeros(0, bool)
+        st = self.state
+        if st is None or st.n == 0:
+            return out_f, np.zeros(0, bool)
+        part = _state_part(st, np.arange(st.n))
+        out_s = self._out_of_bounds(part) & ~self._locked(part) & ~np.asarray(st.prep.void, bool)[st.src]
+        return out_f, out_s
+
+    def _count_outside(self) -> None:
+        """Update :attr:`outside` (the status bar offers to clip them); run after the
+        region, the strokes or the scene changed other than by a tool that keeps inside."""
+        out_f, out_s = self._outside_parts()
+        self.outside = int(out_f.sum() + out_s.sum())
+
+    def _on_clip(self, msg: dict, emit: Emit) -> list[dict]:
+        """Remove the scene elements outside the region (offered once a region is drawn
+        over a filled scene); locked layers are kept."""
+        out_f, out_s = self._outside_parts()
+        n = int(out_f.sum() + out_s.sum())
+        if n == 0:
+            self.outside = 0
+            return [self.status_message("clip: no element outside the region")]
+        self._push_history()
+        if out_f.any():
+            self.fixed = self.fixed.select(~out_f)
+        if out_s.any():
+            self.state.remove(out_s)
+        self._count_outside()
+        self.fidelity = None
+        out = []
+        m = self.scene_message()
+        if m is not None:
+            out.append(m)
+        return out + [self.status_message(f"clipped: {n} elements outside the region removed")]
+
+    def _locked(self, arr: Arrangement) -> np.ndarray:
+        """(n,) bool: elements of a locked layer (kind)."""
+        locked = set(self.layers["locked"])
+        if not locked or len(arr) == 0:
+            return np.zeros(len(arr), bool)
+        return np.isin(arr.kind_names, list(locked))
 
     # ------------------------------------------------------------------ history
     def _copy_state(self) -> Any:
@@ -453,6 +614,7 @@ class Session:
         self._refs.clear()
         self.palette_version = pv
         self._rebuild_flow()
+        self._count_outside()
         if self.state is not None and self.state_version == self.palette_version:
             from .. import synth
 
@@ -467,7 +629,7 @@ class Session:
         self.redo_stack.clear()
 
     def _all_messages(self, message: str = "") -> list[dict[str, Any]]:
-        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message()]
+        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message(), self.layers_message()]
         scene = self.scene_message()
         if scene is not None:
             msgs.append(scene)
@@ -479,7 +641,7 @@ class Session:
             return [self.status_message("nothing to undo")]
         self.redo_stack.append(self._snapshot())
         self._restore(self.undo_stack.pop())
-        self._measure()
+        self.fidelity = None
         return self._all_messages("undone")
 
     def _on_redo(self, msg: dict, emit: Emit) -> list[dict]:
@@ -487,13 +649,33 @@ class Session:
             return [self.status_message("nothing to redo")]
         self.undo_stack.append(self._snapshot())
         self._restore(self.redo_stack.pop())
-        self._measure()
+        self.fidelity = None
         return self._all_messages("redone")
 
     # ------------------------------------------------------------------ simple messages
     def _on_hello(self, msg: dict, emit: Emit) -> list[dict]:
         self._sent = None
+        self._preload()
         return self.full_state()
+
+    def _preload(self) -> None:
+        """Load :attr:`preload` (an example exemplar) into the palette on a project's first
+        start, selected and analysed, so that the first stroke paints at once. Not part
+        of the history (undo does not unload it)."""
+        name, self.preload = self.preload, None
+        if name is None or self.palette or (self.root / PALETTE_FILE).exists():
+            return
+        from .._resources import examples_dir
+
+        path = examples_dir() / "exemplars" / name
+        try:
+            arr = _load_limited(path)
+        except (InputError, OSError):
+            return
+        added = self._add_exemplar(Path(name).stem, arr.replace(region=None, meta={}))
+        self.selection = [added]
+        self._palette_changed()
+        self._prepare()
 
     def _on_ping(self, msg: dict, emit: Emit) -> list[dict]:
         return [{"type": "pong", "t": msg.get("t") if isinstance(msg.get("t"), (int, float)) else None}]
@@ -514,7 +696,41 @@ class Session:
             self.jitter_scale = get_number(msg, "jitter_scale", lo=0.0, hi=0.95)
         if "jitter_rotation" in msg:
             self.jitter_rotation = np.deg2rad(get_number(msg, "jitter_rotation", lo=0.0, hi=180.0))
+        if "brush_density" in msg:
+            self.brush_density = get_number(msg, "brush_density", lo=0.05, hi=1.0)
         return [self.status_message()]
+
+    def layers_message(self) -> dict[str, Any]:
+        """The layers panel: one layer per kind, in drawing order (first drawn first)."""
+        order = [k for k in self.layers["order"] if k in self.shapes]
+        order += [k for k in self.kinds if k not in order]
+        counts: dict[str, int] = dict.fromkeys(order, 0)
+        cols = self._arrays()
+        if len(cols["k"]):
+            for i, c in enumerate(np.bincount(cols["k"], minlength=len(self.kinds)).tolist()):
+                counts[self.kinds[i]] = c
+        return {
+            "type": "layers",
+            "layers": [{"name": k, "count": counts.get(k, 0), "hidden": k in self.layers["hidden"], "locked": k in self.layers["locked"]} for k in order],
+        }
+
+    def _on_layers(self, msg: dict, emit: Emit) -> list[dict]:
+        """Set the layers (one per kind): ``order`` (drawing order, first drawn first),
+        ``hidden`` and ``locked`` (names). Hidden layers are not drawn and not exported;
+        locked layers are kept by the eraser and by ``clip``. Hiding is a view setting: hidden
+        layers are still counted, saved and exported."""
+        new = {}
+        for key in ("order", "hidden", "locked"):
+            if key in msg:
+                names = get_names(msg, key)
+                bad = [n for n in names if n not in self.shapes]
+                if bad:
+                    raise InputError(f"{key}: no layer {bad[0][:60]!r}")
+                new[key] = list(dict.fromkeys(names))
+        self.layers.update(new)
+        if "locked" in new:
+            self._count_outside()
+        return [self.layers_message(), self.status_message()]
 
     # ------------------------------------------------------------------ palette messages
     def _on_load_exemplar(self, msg: dict, emit: Emit) -> list[dict]:
@@ -718,6 +934,7 @@ class Session:
         if self.state is not None:
             self.state.region = region
         self._rebuild_flow()
+        self._count_outside()
 
     def _face(self, point: np.ndarray) -> Region:
         """The part of the region on ``point``'s side of the boundary strokes.
@@ -751,7 +968,7 @@ class Session:
         if what == "scene":
             self.fixed = _empty({})
             self.state = None
-            self.distance = float("nan")
+            self.fidelity = None
         elif what == "flow":
             self.flow_strokes = []
             self._rebuild_flow()
@@ -790,6 +1007,7 @@ class Session:
     def _abandon(self) -> None:
         """Undo the half-done operation whose snapshot is on top of the history."""
         self.stroke = None
+        self._op = None
         if self.undo_stack:
             self._restore(self.undo_stack.pop())
 
@@ -840,13 +1058,26 @@ class Session:
             raise
         if tool == "brush" and stroke["target"] == "scene" and self.state is not None and self.state.n:
             before = self._scene_count()
+            t = time.perf_counter()
             self._finish_brush()
+            if "n_before" in stroke:
+                self._thin()
+                self._settle(stroke["n_before"], thinned=True)
+            self._op = None
+            stroke["compute"] += time.perf_counter() - t
             stroke["added"] += max(0, self._scene_count() - before)
             m = self.scene_message()
             if m is not None:
                 out.append(m)
+        self._op = None
+        if tool in ("boundary", "erase"):
+            self._count_outside()
+        if tool in ("brush", "spray") and stroke["target"] == "scene":
+            if stroke["added"] and stroke["compute"] > 0:
+                self.rate = stroke["added"] / stroke["compute"]
+            area = shapely.LineString(allpts).buffer(stroke["radius"]) if len(allpts) > 1 else shapely.Point(allpts[0]).buffer(stroke["radius"])
+            self._judge(shapely.intersection(area, stroke.get("face", self.region).geometry))
         if tool in ("brush", "spray", "erase"):
-            self._measure()
             if tool == "erase":
                 note = f"erase: {stroke.get('removed', 0)} elements removed"
             else:
@@ -904,6 +1135,7 @@ class Session:
         try:
             if "n_before" not in stroke:
                 stroke["n_before"] = st.n
+                self._op = {"n0": st.n, "density": self.brush_density, "it0": st.iterations, "dropped": np.zeros(0, np.int64)}
                 near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(pts[0], r=radius)) > 0
                 if not near:
                     # §5.4: "If there are no elements near the first brush-point, a random patch
@@ -927,7 +1159,9 @@ class Session:
             synth.brush(st, pts, radius, reoptimize=reopt, progress=progress, max_iterations=BRUSH_ITERATIONS)
         finally:
             st.region = self.region
+        n0 -= int(self._settle(stroke["n_before"], thinned=False)[:n0].sum())
         self._drop_state_overlaps(n0, around=pts, reach=radius + 2.0 * float(np.max(st.prep.rbar)))
+        self._thin()
 
     def _finish_brush(self) -> None:
         """Grow what the stroke's segments left (see :data:`BRUSH_ITERATIONS`) and clear B."""
@@ -971,11 +1205,10 @@ class Session:
         overlap_free = bool(getattr(prep, "overlap_free", False))
         if not overlap_free and len(self.fixed) == 0:
             return
-        src = st.src
         pos = st.pos
 
         def state_part(idx: np.ndarray) -> Arrangement:
-            return Arrangement(prep.shapes, prep.kind[src[idx]].astype(np.int64), pos[idx, 0], pos[idx, 1], prep.rotation[src[idx]], prep.scale[src[idx]])
+            return _state_part(st, idx)
 
         new_idx = np.arange(n0, st.n)
         rmax = float(np.max(_radii(state_part(new_idx))))
@@ -1104,6 +1337,7 @@ class Session:
         if len(out) == 0:
             return
         out = out.replace(meta={}, extra={}, region=None)
+        out = out.select(~self._out_of_bounds(out))  # no overhang, nothing across a boundary stroke
         if not free:
             scene = self.scene()
             if len(scene):
@@ -1115,11 +1349,18 @@ class Session:
         """Eraser (Davison §5.4): elements whose centre lies within ``radius`` of the path."""
         from .. import synth
 
+        path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
         if self.state is not None and self.state.n:
-            synth.erase(self.state, pts, radius)
+            if self.layers["locked"]:  # the same rule as synth.erase, locked layers kept
+                st = self.state
+                part = _state_part(st, np.arange(st.n))
+                gone = shapely.dwithin(path, shapely.points(part.xy), radius) & ~self._locked(part)
+                if gone.any():
+                    st.remove(gone)
+            else:
+                synth.erase(self.state, pts, radius)
         if len(self.fixed):
-            path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
-            gone = shapely.dwithin(path, shapely.points(self.fixed.xy), radius)
+            gone = shapely.dwithin(path, shapely.points(self.fixed.xy), radius) & ~self._locked(self.fixed)
             if gone.any():
                 self.fixed = self.fixed.select(~gone)
 
@@ -1172,15 +1413,19 @@ class Session:
         st = self._ensure_state()
         self.cancel.clear()
         n0 = st.n
+        count0 = self._scene_count()
         t = time.perf_counter()
 
         def progress(done: int, total: int | None, message: str) -> None:
             m = self.scene_message()
             if m is not None:
                 emit(m)
-                emit(self.status_message(f"filling: {done} elements"))
+                # the one count: what the browser shows (overhanging elements hidden)
+                emit(self.status_message(f"filling: {self._scene_count() - count0} elements"))
 
-        st.region = self._face(p)
+        face = self._face(p)
+        st.region = face
+        self._op = {"n0": n0}
         try:
             synth.fill(st, (float(p[0]), float(p[1])), progress=progress, should_cancel=self.cancel.is_set, max_elements=n0 + room)
             note = "filled" if st.n < n0 + room else f"fill stopped at the scene's limit of {MAX_SCENE} elements"
@@ -1191,14 +1436,18 @@ class Session:
             raise
         finally:
             st.region = self.region
+            if self.state is st:  # not abandoned
+                self._settle(n0, thinned=False)
+            self._op = None
         self._drop_state_overlaps(n0)
         dt = time.perf_counter() - t
-        self._measure()
+        added = max(0, self._scene_count() - count0)
+        self.rate = added / dt if dt > 0 and added else self.rate
+        self._judge(face)
         out = []
         m = self.scene_message()
         if m is not None:
             out.append(m)
-        added = st.n - n0
         return out + [self.status_message(f"{note}: {added} elements in {dt:.2f} s")]
 
     # ------------------------------------------------------------------ files
@@ -1240,7 +1489,7 @@ class Session:
             written.append(PALETTE_FILE)
         scene = self.scene().replace(
             meta=self._meta(),
-            extra={"studio": {"flow": [s.tolist() for s in self.flow_strokes], "boundary": [s.tolist() for s in self.boundary_strokes], "grow_mode": self.grow_mode}},
+            extra={"studio": {"flow": [s.tolist() for s in self.flow_strokes], "boundary": [s.tolist() for s in self.boundary_strokes], "grow_mode": self.grow_mode, "layers": self.layers}},
         )
         save(scene, self.root / SCENE_FILE)
         written.append(SCENE_FILE)
@@ -1269,12 +1518,16 @@ class Session:
             self.boundary_strokes = [get_points({"p": s}, "p") for s in studio.get("boundary", [])]
             if studio.get("grow_mode") in GROW_MODES:
                 self.grow_mode = studio["grow_mode"]
+            lay = studio.get("layers")
+            if isinstance(lay, dict):
+                self.layers = {k: [n for n in lay.get(k, []) if isinstance(n, str)] if isinstance(lay.get(k), list) else [] for k in ("order", "hidden", "locked")}
             if scene.region is not None:
                 self.region = scene.region
             self.fixed = self._add_shapes(scene.replace(region=None, meta={}, extra={}), "scene")
             self.state = None
             self._rebuild_flow()
-        self.distance = float("nan")
+        self.fidelity = None
+        self._count_outside()
         return self._all_messages("project loaded")
 
     def _on_export(self, msg: dict, emit: Emit) -> list[dict]:
@@ -1286,6 +1539,24 @@ class Session:
         save(scene, path)
         rel = path.relative_to(self.root).as_posix()
         return [{"type": "exported", "path": rel, "count": len(scene)}, self.files_message(), self.status_message(f"exported {rel}")]
+
+
+def _element_keys(st: Any, idx: np.ndarray) -> np.ndarray:
+    """(len(idx),) int64 keys naming synthesis elements across removals: each element's
+    free-space block (allocated afresh for every added or re-assigned element) and source."""
+    return (st._free_base[idx].astype(np.int64) << 20) | st.src[idx].astype(np.int64)
+
+
+def _visible(arr: Arrangement) -> np.ndarray:
+    from ..metrics import visible
+
+    return visible(arr)
+
+
+def _state_part(st: Any, idx: np.ndarray) -> Arrangement:
+    """Elements ``idx`` of a synthesis state as an arrangement (no columns)."""
+    prep, src, pos = st.prep, st.src, st.pos
+    return Arrangement(prep.shapes, prep.kind[src[idx]].astype(np.int64), pos[idx, 0], pos[idx, 1], prep.rotation[src[idx]], prep.scale[src[idx]])
 
 
 def _radii(arr: Arrangement) -> np.ndarray:
