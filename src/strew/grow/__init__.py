@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InputError
+from .._method import MethodSpec, Param, as_region, check_context, empty_result, free_region, is_empty, seed_record, stamp
 from ..arrangement import Arrangement
 from ..region import Region
 from ._analysis import Reference, analyze, delaunay_edges, flip_edge, size_priority
@@ -37,9 +38,50 @@ __all__ = [
     "relax_positions",
     "size_priority",
     "MODES",
+    "SPEC",
 ]
 
 MODES = ("fixed", "rotate", "flow")
+
+SPEC = MethodSpec(
+    name="grow",
+    command="grow",
+    entry="strew.grow:grow",
+    paper="Ijiri, Mech, Igarashi, Miller, An Example-based Procedural System for Element Arrangement, 2008",
+    summary="Grow from an exemplar, element by element, from one seed (Ijiri et al.).",
+    progress_message="grow",
+    region_required=False,
+    input=Param("exemplar", "any", help="The reference arrangement (or its analysis).", section="§4", parse="arrangement-file", metavar="EXEMPLAR"),
+    params=(
+        Param("count", "int", None, low=1, help="Stop at this many elements [default: fill the region].", section="§5", metavar="N"),
+        Param("start", "point", None, unit="document units", help="The initial seed [default: the region's centre].", parse="point",
+              metavar="X,Y", section="§5.1"),
+        Param("start_kind", "str", None, help="Symbol id (kind) of the initial seed.", metavar="KIND", section="§5.1"),
+        Param("mode", "str", "fixed", choices=MODES, help="Rotation mode: keep, best-fit rotate, or follow the flow field.", section="§5.3"),
+        Param("flow", "any", None, help="Flow field: callable (m, 2) points -> (m, 2) directions; implies mode flow on the CLI.",
+              cli_help="Flow-field strokes (SVG or JSON); implies --mode flow unless --mode is given.", parse="flow-strokes", metavar="FILE",
+              section="§5.3, Fig. 1e"),
+        Param("boundary", "any", None, help="Boundary strokes that no edge of the growth crosses.", parse="strokes", metavar="FILE",
+              cli_help="Boundary strokes (SVG or JSON) that stop growth.", section="Fig. 1f"),
+        Param("spray", "any", None, help="Spray path: only seeds within spray_radius of it grow.", parse="stroke", metavar="FILE",
+              cli_help="Spray path (SVG or JSON): only seeds within --spray-radius of it grow.", section="§3, Fig. 1c"),
+        Param("spray_radius", "float", None, low=0, low_open=True, unit="document units", help="Radius of the spray tool.", section="§3"),
+        Param("priority", "any", None, help="Seed priority per kind [default: larger kinds first when kinds differ in size, else 0].",
+              cli="multiple", parse="kind-numbers", metavar="KIND=P", section="§5.1"),
+        Param("jitter_scale", "float", 0.0, low=0, high=1, high_open=True, help="Relative scale noise S: x(1 +- S).", section="§3"),
+        Param("jitter_rotation", "float", 0.0, low=0, unit="radians", help="Rotation noise (+-).", parse="degrees",
+              cli_help="Rotation noise in degrees (+-).", section="§3"),
+        Param("jitter_color", "float", 0.0, low=0, help="Colour noise C: fill x(1 +- C).", section="§3"),
+        Param("relax", "bool", True, help="The windowed least-squares relaxation.", flag="--no-relax", cli="no-flag",
+              cli_help="Turn off the least-squares relaxation.", section="§5.5"),
+        Param("flips", "any", (), help="Edges (i, j) of the exemplar's connectivity to flip first.", flag="--flip", cli="multiple",
+              parse="index-pairs", metavar="I,J", cli_help="Flip edge I,J of the exemplar's connectivity (repeatable).", section="§4, Fig. 3"),
+        Param("connectivity", "bool", False, help="Write the grown connectivity into the document (entry 'connectivity').", cli="flag"),
+        Param("avoid_overlaps", "bool", True, help="Refuse placements and relaxation steps that would make elements overlap.", cli=False,
+              section="extension"),
+        Param("relax_every", "int", 16, low=1, help="Growth steps between two windowed relaxations.", cli=False, section="§5.5"),
+    ),
+)
 
 
 def _polyline(a: Any, name: str) -> np.ndarray:
@@ -56,28 +98,13 @@ def _polyline(a: Any, name: str) -> np.ndarray:
 
 def grow(
     exemplar: Arrangement | Reference,
+    region: Region | Any = None,
     *,
-    count: int | None = None,
-    region: Region | None = None,
-    start: tuple[float, float] | None = None,
-    start_kind: str | None = None,
-    mode: str = "fixed",
-    flow: Callable[[np.ndarray], np.ndarray] | None = None,
-    boundary: Iterable[np.ndarray] | None = None,
-    spray: np.ndarray | Sequence[Sequence[float]] | None = None,
-    spray_radius: float | None = None,
-    priority: Mapping[str, float] | None = None,
-    jitter_scale: float = 0.0,
-    jitter_rotation: float = 0.0,
-    jitter_color: float = 0.0,
-    relax: bool = True,
-    flips: Iterable[tuple[int, int]] = (),
-    connectivity: bool = False,
-    avoid_overlaps: bool = True,
-    relax_every: int = 16,
+    context: Arrangement | None = None,
     rng: int | np.random.Generator | None = None,
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
+    **params: Any,
 ) -> Arrangement:
     """Grow an arrangement from one seed, element by element, after a reference (§5).
 
@@ -89,7 +116,10 @@ def grow(
         Stop at this many elements. Without it, growth fills ``region`` (or the spray
         area) until no seed can grow.
     region : Region, optional
-        Elements lie wholly inside it.
+        Elements lie wholly inside it (also positional: ``grow(exemplar, region)``).
+    context : Arrangement, optional
+        Fixed elements to grow around (issue 15): obstacles that are never overlapped
+        (the region less their footprint). Not yet used as neighbourhood context.
     start : (x, y), optional
         The initial seed; by default the region's centre (the spray path's start with
         ``spray``, the origin otherwise).
@@ -131,9 +161,13 @@ def grow(
     relax_every : int
         Growth steps between two windowed relaxations.
     rng : int, Generator or None
-        Ties between equally good references and the jitter draw from it.
+        Ties between equally good references and the jitter draw from it. Recorded in
+        ``meta`` (``seed`` or ``rng_state``) with every parameter (:data:`SPEC`).
     progress, should_cancel
         See :mod:`strew._progress`.
+    **params
+        ``count`` ... ``relax_every`` above, keyword only, checked against :data:`SPEC`
+        first (old name ``flip`` is accepted for ``flips``).
 
     Returns
     -------
@@ -148,8 +182,51 @@ def grow(
     >>> len(out)
     50
     """
+    prm = SPEC.validate(params, aliases={"flip": "flips"})
+    gen, seed = seed_record(rng)
+    region = as_region(region)
+    ctx = check_context(context)
+    free = free_region(region, ctx)
+    if is_empty(free):
+        ex = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
+        arr = empty_result(ex.shapes if isinstance(ex, Arrangement) else {}, region,
+                           "the region is empty" if ctx is None else "the context covers the region")
+    else:
+        arr = _grow(exemplar, free, gen, progress, should_cancel, **prm)
+        if free is not region:
+            arr = arr.replace(region=region)
+    src = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
+    return stamp(arr, SPEC, src, prm, seed, region=region, context=ctx)
+
+
+def _grow(
+    exemplar: Arrangement | Reference,
+    region: Region | None,
+    rng: np.random.Generator,
+    progress: Callable[[int, int | None, str], None] | None,
+    should_cancel: Callable[[], bool] | None,
+    *,
+    count: int | None,
+    start: tuple[float, float] | None,
+    start_kind: str | None,
+    mode: str,
+    flow: Callable[[np.ndarray], np.ndarray] | None,
+    boundary: Iterable[np.ndarray] | None,
+    spray: Any,
+    spray_radius: float | None,
+    priority: Mapping[str, float] | None,
+    jitter_scale: float,
+    jitter_rotation: float,
+    jitter_color: float,
+    relax: bool,
+    flips: Iterable[tuple[int, int]],
+    connectivity: bool,
+    avoid_overlaps: bool,
+    relax_every: int,
+) -> Arrangement:
+    """The growth itself (§5) on checked arguments; see :func:`grow`."""
     if mode not in MODES:
-        raise InputError(f"--mode: unknown mode {mode!r}; use one of {', '.join(MODES)}")
+        raise InputError(f"mode: unknown mode {mode!r}; use one of {', '.join(MODES)}")
     if isinstance(exemplar, Reference):
         ref = exemplar
         for i, j in flips:
@@ -160,54 +237,57 @@ def grow(
         raise InputError(f"exemplar: must be an Arrangement or a Reference, got {type(exemplar).__name__}")
     if count is not None:
         if isinstance(count, bool) or int(count) != count or count < 1:
-            raise InputError(f"--count: must be a positive integer, got {count!r}")
+            raise InputError(f"count: must be a positive integer, got {count!r}")
         count = int(count)
     if region is not None and not isinstance(region, Region):
         raise InputError(f"region: must be a Region, got {type(region).__name__}")
     if mode == "flow" and flow is None:
-        raise InputError("--mode flow: needs a flow field (--flow STROKES)")
+        raise InputError("mode: 'flow' needs a flow field (flow=..., the CLI's --flow STROKES)")
     if flow is not None and not callable(flow):
         raise InputError("flow: must be callable, e.g. strew.fields.flow_field(strokes)")
     spray_arr = None
     if spray is not None:
         spray_arr = _polyline(spray, "spray")
         if spray_radius is None or not (np.isfinite(spray_radius) and spray_radius > 0):
-            raise InputError(f"--spray-radius: must be a positive number with --spray, got {spray_radius!r}")
+            raise InputError(f"spray_radius: must be a positive number with spray, got {spray_radius!r}")
     elif spray_radius is not None:
-        raise InputError("--spray-radius: given without --spray")
+        raise InputError("spray_radius: given without spray")
     bounds = [_polyline(b, f"boundary[{i}]") for i, b in enumerate(boundary or [])]
     if count is None and region is None and spray_arr is None:
-        raise InputError("grow: give --count, or a --region / --size (or a spray path) to fill")
+        raise InputError("region: give count, or a region to fill (or a spray path)")
     from .._limits import check_work, element_area  # refuse work beyond the limits (issue 17)
 
-    check_work("--count" if count is not None else "--size/--region", count=count, region=region, per_element=element_area(ref.exemplar))
+    check_work("count" if count is not None else "region", count=count, region=region, per_element=element_area(ref.exemplar))
     kinds = ref.exemplar.kinds
+    # hubs first, then their satellites, for clustered exemplars (:mod:`._clusters`), unless
+    # the user sets priorities or edits the connectivity
+    clusters = priority is None and not isinstance(exemplar, Reference) and not list(flips)
     if priority is None:
         priority = size_priority(ref.exemplar)
     prio: dict[str, float] = {}
     for name, v in dict(priority or {}).items():
         if name not in kinds:
-            raise InputError(f"--priority: unknown kind {name!r} (exemplar kinds: {', '.join(kinds)})")
+            raise InputError(f"priority: unknown kind {name!r} (exemplar kinds: {', '.join(kinds)})")
         try:
             fv = float(v)
         except (TypeError, ValueError):
-            raise InputError(f"--priority {name}: must be a number, got {v!r}") from None
+            raise InputError(f"priority {name}: must be a number, got {v!r}") from None
         if not np.isfinite(fv):
-            raise InputError(f"--priority {name}: must be finite")
+            raise InputError(f"priority {name}: must be finite")
         prio[name] = fv
-    for name, v in (("--jitter-scale", jitter_scale), ("--jitter-rotation", jitter_rotation), ("--jitter-color", jitter_color)):
+    for name, v in (("jitter_scale", jitter_scale), ("jitter_rotation", jitter_rotation), ("jitter_color", jitter_color)):
         if not (np.isfinite(v) and v >= 0):
             raise InputError(f"{name}: must be a non-negative number, got {v!r}")
     if jitter_scale >= 1:
-        raise InputError(f"--jitter-scale: must be below 1 (a scale must stay positive), got {jitter_scale!r}")
+        raise InputError(f"jitter_scale: must be below 1 (a scale must stay positive), got {jitter_scale!r}")
     if start is not None:
         start = tuple(float(v) for v in start)  # type: ignore[assignment]
         if len(start) != 2 or not all(np.isfinite(start)):
-            raise InputError(f"--start: expected a finite point x,y, got {start!r}")
+            raise InputError(f"start: expected a finite point x,y, got {start!r}")
     start_index = -1
     if start_kind is not None:
         if start_kind not in kinds:
-            raise InputError(f"--start-kind: unknown kind {start_kind!r} (exemplar kinds: {', '.join(kinds)})")
+            raise InputError(f"start_kind: unknown kind {start_kind!r} (exemplar kinds: {', '.join(kinds)})")
         start_index = kinds.index(start_kind)
     if int(relax_every) < 1:
         raise InputError(f"relax_every: must be at least 1, got {relax_every!r}")
@@ -229,6 +309,7 @@ def grow(
         relax_every=int(relax_every),
         avoid_overlaps=bool(avoid_overlaps),
         connectivity=bool(connectivity),
+        clusters=clusters,
     )
     meta = {"method": "grow"}
     return grow_reference(ref, params, rng=rng, progress=progress, should_cancel=should_cancel, meta=meta)

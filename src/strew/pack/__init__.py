@@ -11,7 +11,7 @@ Public entry points:
 from __future__ import annotations
 
 from ._exclusive import PackWarning
-from ._pack import DEFAULTS, METHODS, pack
+from ._pack import DEFAULTS, METHODS, SPEC, pack
 from ._poisson import poisson_disk
 
-__all__ = ["pack", "poisson_disk", "PackWarning", "METHODS", "DEFAULTS"]
+__all__ = ["pack", "poisson_disk", "PackWarning", "METHODS", "DEFAULTS", "SPEC"]

@@ -28,7 +28,7 @@ import shapely
 
 from .._errors import InputError
 from .._progress import Reporter
-from .._rng import as_rng
+from .._method import MethodSpec, Param, as_region, check_context, empty_result, free_region, is_empty, seed_record, stamp
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Shape
@@ -38,7 +38,7 @@ from ._fit import NO_FIELD, RUNNING, FitEngine
 from ._placer import Placer
 from ._poisson import poisson_disk
 
-__all__ = ["pack", "METHODS", "DEFAULTS"]
+__all__ = ["pack", "METHODS", "DEFAULTS", "SPEC"]
 
 METHODS = ("fill-gap", "naive")
 
@@ -66,6 +66,53 @@ DEFAULTS: dict[str, Any] = {
 KIND_CHOICES = ("fit", "cycle")
 SCALE_CHOICES = ("random", "fit")
 
+# old keyword names -> current ones (none renamed so far)
+_ALIASES: dict[str, str] = {}
+
+SPEC = MethodSpec(
+    name="pack",
+    command="pack",
+    entry="strew.pack:pack",
+    paper="Sakurai & Miyata, Generating a Layout of Nonperiodic Aggregates",
+    summary="Pack shapes densely and non-periodically into a region (fill-gap).",
+    progress_message="pack",
+    input=Param("shapes", "any", help="Element kinds: a Shape, a list or a mapping name -> Shape.", section="§3.1",
+                parse="shape-files", metavar="SHAPE..."),
+    params=(
+        Param("method", "str", "fill-gap", choices=METHODS, help="Fill-gap (§4) or naive dart throwing (§3.2).", section="§3.2, §4"),
+        Param("max_failures", "int", None, low=1, help="Stop after this many consecutive cancellations [default: 200 fill-gap, 10000 naive].",
+              section="§3.3, §4.2", metavar="N"),
+        Param("rotation", "any", (0.0, 2 * np.pi), unit="radians", help="Rotation range (lo, hi), or a mapping kind -> range ('*' for the rest).",
+              flag="--rotate", cli="multiple", parse="per-kind-range-deg", metavar="[KIND=]A:B",
+              cli_help="Rotation range in degrees [default: 0:360]; repeat with KIND= for one kind.", section="§3.2"),
+        Param("scale", "any", (1.0, 1.0), help="Scale range (lo, hi), or a mapping kind -> range.", cli="multiple", parse="per-kind-range",
+              metavar="[KIND=]A:B", cli_help="Scale range [default: 1:1]; KIND= for one kind.", section="§4.1"),
+        Param("margin", "any", 0.0, unit="document units", help="Grow each exclusive region by this buffer (a number or kind -> number).",
+              cli="multiple", parse="per-kind-number", metavar="[KIND=]M",
+              cli_help="Grow each exclusive region by M (a buffer) [default: 0]; KIND= for one kind.", section="§3.1"),
+        Param("exclusive", "any", None, help="Exclusive shapes in each element's local frame, matched to kinds by name.", parse="shapes-file",
+              metavar="FILE", cli_help="SVG or JSON file of exclusive shapes, matched to kinds by name.", section="§3.1"),
+        Param("weights", "any", None, help="Requested proportions of kinds (a list, or kind -> weight; '*' for the rest) [default: equal].",
+              flag="--weight", cli="multiple", parse="kind-weights", metavar="KIND=W", section="§3.2"),
+        Param("kind_choice", "str", DEFAULTS["kind_choice"], choices=KIND_CHOICES,
+              help="Fill-gap: try the kinds most behind their proportions until one fits the gap, or cycle.", section="extension of §4.2 (cycle: §3.2)"),
+        Param("scale_choice", "str", DEFAULTS["scale_choice"], choices=SCALE_CHOICES,
+              help="Fill-gap: uniform scales in the range, or the largest that fits each gap first.", section="extension of §4.2"),
+        Param("candidates", "int", DEFAULTS["candidates"], low=1, help="Fill-gap: candidates P per round.", section="§4"),
+        Param("power", "float", DEFAULTS["power"], low=0, low_open=True, help="Fill-gap: exponent n of alpha = d**n.", section="§4.2"),
+        Param("resolution", "float", None, low=0, low_open=True, unit="document units",
+              help="Fill-gap: pixel side of the distance field [default: a sixth of the smallest element].", section="§4.2"),
+        Param("sparse_candidates", "int", DEFAULTS["poisson_candidates"], low=1, help="Fill-gap Step 1: Bridson's trial points per active sample.",
+              section="§4.1"),
+        Param("fits", "int", None, low=1, help="Fill-gap Step 2: poses tried per candidate point [default: 48, 96 with scale_choice fit].",
+              section="extension of §4.2"),
+        Param("suppress", "float", DEFAULTS["suppress"], low=0, low_open=True, high=1,
+              help="Fill-gap Step 2: field damping about a cancelled candidate (1: off).", section="extension of §4.2"),
+        Param("tolerance", "float", DEFAULTS["tolerance"], low=0, high=1, low_open=True, high_open=True,
+              help="Fill-gap with kind_choice fit: how far each kind's share may stray from its target.", section="extension of §4.2"),
+    ),
+)
+
 # Step 2 rounds per call of the compiled loop (between progress reports)
 _ROUNDS_PER_TICK = 25
 
@@ -84,26 +131,15 @@ def _as_shapes(shapes: Any) -> dict[str, Shape]:
     return out
 
 
-def _as_region(region: Any) -> Region:
-    if isinstance(region, Region):
-        return region
-    if isinstance(region, (shapely.Polygon, shapely.MultiPolygon)):
-        return Region(region)
-    if isinstance(region, str):
-        return Region.from_size(region)
-    if isinstance(region, (tuple, list)) and len(region) == 2:
-        return Region.rectangle(float(region[0]), float(region[1]))
-    raise InputError(f"region: expected a Region, a polygon, 'WxH' or (W, H), got {type(region).__name__}")
-
-
 def _weights(weights: Any, kinds: list[str]) -> np.ndarray | None:
     if weights is None:
         return None
     if isinstance(weights, Mapping):
-        unknown = [k for k in weights if k not in kinds]
+        unknown = [k for k in weights if k not in kinds and k != "*"]
         if unknown:
             raise InputError(f"weights: unknown kind {unknown[0]!r} (kinds: {', '.join(kinds)})")
-        w = [weights.get(k, 0.0) for k in kinds]
+        rest = weights.get("*", 0.0)  # '*': the weight of every kind not named
+        w = [weights.get(k, rest) for k in kinds]
     else:
         w = list(weights)
         if len(w) != len(kinds):
@@ -136,27 +172,13 @@ def _default_cell(kinds: list[ExclusiveRegion], region: Region) -> float:
 
 def pack(
     shapes: Mapping[str, Shape] | Sequence[Shape] | Shape,
-    region: Region | Any,
+    region: Region | Any = None,
     *,
-    method: str = "fill-gap",
-    rotation: Any = (0.0, 2 * np.pi),
-    scale: Any = (1.0, 1.0),
-    margin: Any = 0.0,
-    exclusive: Mapping[str, Shape] | None = None,
-    weights: Sequence[float] | Mapping[str, float] | None = None,
-    max_failures: int | None = None,
-    candidates: int = DEFAULTS["candidates"],
-    power: float = DEFAULTS["power"],
-    resolution: float | None = None,
-    sparse_candidates: int = DEFAULTS["poisson_candidates"],
-    fits: int | None = None,
-    suppress: float = DEFAULTS["suppress"],
-    kind_choice: str = DEFAULTS["kind_choice"],
-    scale_choice: str = DEFAULTS["scale_choice"],
-    tolerance: float = DEFAULTS["tolerance"],
+    context: Arrangement | None = None,
     rng: int | np.random.Generator | None = None,
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
+    **params: Any,
 ) -> Arrangement:
     """Pack elements densely and non-periodically into a region.
 
@@ -165,7 +187,11 @@ def pack(
     shapes : Shape, sequence of Shape or mapping of kind name -> Shape
         Element kinds: any polygons, concave, elongated or with holes.
     region : Region, shapely polygon, ``"WxH"`` or (W, H)
-        The domain; elements lie wholly inside it (holes included).
+        The domain; elements lie wholly inside it (holes included). Required.
+    context : Arrangement, optional
+        Fixed elements to pack around (issue 15): they are obstacles, never
+        overlapped, kept ``margin`` away like the boundary; they are not part of the
+        result.
     method : {"fill-gap", "naive"}
         Fill-gap (§4) or naive dart throwing (§3.2).
     rotation : (lo, hi) or mapping of kind -> (lo, hi)
@@ -221,14 +247,20 @@ def pack(
         Fill-gap with ``kind_choice="fit"``: how far each kind's proportion may stray
         from the requested one (0.05).
     rng : int, Generator or None
+        Recorded in ``meta`` (``seed``, or the Generator's ``rng_state`` before the run).
     progress, should_cancel : callables, optional
         See :mod:`strew._progress`.
+    **params
+        The parameters above from ``method`` on, keyword only; :data:`SPEC` declares
+        them (type, default, range, paper section) and checks them first.
 
     Returns
     -------
     Arrangement
-        The placed elements, with the domain as its region. ``meta["pack"]`` records
-        the method, the number of trials and why it stopped. It is empty when nothing
+        The placed elements, with the domain as its region. ``meta`` holds the
+        provenance (:func:`strew._method.stamp`: method, version, seed, every parameter
+        resolved, input hash); ``meta["pack"]`` records the algorithm, the number of
+        trials and why it stopped. It is empty when nothing
         fits (``meta["pack"]["stopped"]`` says so).
 
     Raises
@@ -244,10 +276,50 @@ def pack(
     >>> len(arr) > 20, len(overlaps(arr)[0]), len(outside(arr))
     (True, 0, 0)
     """
+    prm = SPEC.validate(params, aliases=_ALIASES)
+    gen, seed = seed_record(rng)
+    lib = _as_shapes(shapes)
+    dom = as_region(region)
+    if dom is None:
+        raise InputError("region: give the region to fill (a Region, a polygon, 'WxH' or (W, H))")
+    ctx = check_context(context)
+    free = free_region(dom, ctx)
+    if is_empty(free):
+        arr = empty_result(lib, dom, "the region is empty" if ctx is None else "the context covers the region")
+        arr = arr.with_meta(pack={"algorithm": prm["method"], "stopped": arr.meta["stopped"], "trials": 0})
+    else:
+        arr = _pack_into(lib, free, gen=gen, progress=progress, should_cancel=should_cancel, **prm).replace(region=dom)
+    return stamp(arr, SPEC, lib, prm, seed, region=dom, context=ctx)
+
+
+def _pack_into(
+    shapes: dict[str, Shape],
+    dom: Region,
+    *,
+    method: str,
+    rotation: Any,
+    scale: Any,
+    margin: Any,
+    exclusive: Mapping[str, Shape] | None,
+    weights: Sequence[float] | Mapping[str, float] | None,
+    max_failures: int | None,
+    candidates: int,
+    power: float,
+    resolution: float | None,
+    sparse_candidates: int,
+    fits: int | None,
+    suppress: float,
+    kind_choice: str,
+    scale_choice: str,
+    tolerance: float,
+    gen: np.random.Generator,
+    progress: Callable[[int, int | None, str], None] | None,
+    should_cancel: Callable[[], bool] | None,
+) -> Arrangement:
+    """The packing itself (§3, §4), on checked arguments; see :func:`pack`."""
+    lib = shapes
     if method not in METHODS:
         raise InputError(f"method: unknown method {method!r}; use one of {', '.join(METHODS)}")
-    lib = _as_shapes(shapes)
-    dom = _as_region(region)
     kinds = build_exclusive_regions(lib, rotation=rotation, scale=scale, margin=margin, exclusive=exclusive)
     w = _weights(weights, list(lib))
     limit = _positive_int(DEFAULTS["max_failures"][method] if max_failures is None else max_failures, "max_failures")
@@ -290,7 +362,6 @@ def pack(
         raise InputError(f"tolerance: must be a number, got {tolerance!r}") from None
     if not (0 < tolerance < 1):
         raise InputError(f"tolerance: must be in (0, 1), got {tolerance}")
-    gen = as_rng(rng)
     rep = Reporter(progress, should_cancel, message=f"pack ({method})")
     placer = Placer(kinds, dom, w, limit)
     info: dict[str, Any] = {"algorithm": method, "max_failures": limit}

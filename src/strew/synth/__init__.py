@@ -47,7 +47,7 @@ from __future__ import annotations
 
 from ._compare import compare_methods, plot_traces
 from ._stroke import brush_points, read_stroke
-from ._api import as_selection, new_state, set_selection, synthesize
+from ._api import SPEC, as_selection, new_state, set_selection, synthesize
 from ._grow import brush, erase, fill, grow, seed_patch
 from ._metric import average_neighborhood_distance, energy, neighborhood_distances
 from ._optimize import optimize
@@ -57,6 +57,7 @@ from ._prepare import Prepared, prepare
 from ._state import SynthParams, SynthState
 
 __all__ = [
+    "SPEC",
     "synthesize",
     "new_state",
     "set_selection",

@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InputError
+from .._method import MethodSpec, Param, as_region, check_context, empty_result, free_region, is_empty, seed_record, stamp
 from ..arrangement import Arrangement
 from ..region import Region
 from ._grow import brush as _brush
@@ -18,7 +19,55 @@ from ._patch import patch_initialize
 from ._prepare import prepare
 from ._state import SynthParams, SynthState
 
-__all__ = ["synthesize", "new_state", "as_selection", "set_selection"]
+__all__ = ["synthesize", "new_state", "as_selection", "set_selection", "SPEC"]
+
+SPEC = MethodSpec(
+    name="synth",
+    command="synth",
+    entry="strew.synth:synthesize",
+    paper="Davison, Samavati, Jacob, Interactive example-palettes for discrete element texture synthesis, 2018",
+    summary="Synthesize a texture from exemplars by fast region growing (Davison et al.).",
+    progress_message="synth",
+    region_required=False,
+    input=Param("exemplars", "any", help="Exemplars: a Palette, Selection, Arrangement, or a list or dict of them.", section="§5.5",
+                parse="palette-files", metavar="EXEMPLAR..."),
+    params=(
+        Param("selection", "any", None, help="Exemplars of the palette to use: a name, names, {name: weight} or {name: Region}.",
+              flag="--select", cli="multiple", parse="selection", metavar="NAME[:W]|NAME=REGION",
+              cli_help="Exemplars of the palette to use, with weights (shares of the region), or each with the region file it fills "
+                       "(repeatable; default all).", section="§5.5"),
+        Param("fill_point", "point", None, unit="document units", help="Filler: grow from this point until no room is left.",
+              flag="--fill", parse="point", metavar="X,Y", section="§5.4"),
+        Param("brush_points", "points", None, help="Generative brush: (m, 2) points along a stroke.", cli=False, section="§5.4"),
+        Param("brush_radius", "any", None, unit="document units", help="Brush radius, one or one per brush point.", parse="number",
+              section="§5.4"),
+        Param("init", "str", "grow", choices=("grow", "patch"), help="Region growing, or Ma et al.'s patch initialisation.", section="§5, §6.4"),
+        Param("k", "int", 5, low=1, help="k-coherence set size.", section="§5.1"),
+        Param("c", "float", 2.0, low=1, low_open=True, help="Ratio constant rejecting poor candidates.", section="§5.1"),
+        Param("optimize", "str", "horizon", choices=("horizon", "global", "none"), help="Optimise the horizon, every element, or nothing.",
+              section="§5.2-5.3, §6.4"),
+        Param("kind_cost", "float", 1.0, low=0, help="Kind mismatch cost omega, in units of the squared pairing threshold.", section="§4, Eq. 1"),
+        Param("time_budget", "float", None, low=0, unit="seconds", help="init patch: seconds of global optimisation after the patches.",
+              cli=False, section="§6.4"),
+        Param("patch_rounds", "int", None, low=0, help="init patch: rounds of global optimisation instead (deterministic) [default: 5 on the CLI].",
+              section="§6.4"),
+        Param("keep_voids", "bool", False, help="Keep void elements (column 'void') instead of hiding them.", cli="flag", section="§5.6"),
+        Param("measure", "bool", True, help="Record the final average neighbourhood distance (Eq. 5) in meta.", cli=False, section="Eq. 5"),
+        Param("trace", "any", None, help="A list receiving (seconds, elements, Eq. 5) after every iteration.", cli=False, section="Fig. 17"),
+        Param("seed_separation", "float", None, low=0, low_open=True, help="Seeds at least this fraction of their neighbourhood radius apart.",
+              cli=False, section="§5.1"),
+        Param("relaxation", "float", None, low=0, high=1, low_open=True, help="Fraction of the least-squares step taken.", cli=False,
+              section="§5.3"),
+        Param("frozen_weight", "float", None, low=0, help="Weight of a frozen element's old position.", cli=False, section="§5.3"),
+        Param("frozen_prediction_weight", "float", None, low=0, help="Factor on predictions for frozen elements.", cli=False, section="§5.3"),
+        Param("horizon_anchor", "float", None, low=0, help="Weight keeping horizon elements near their old positions.", cli=False,
+              section="extension"),
+        Param("max_failures", "int", None, low=1, help="Failures after which a free-space point is dropped.", cli=False, section="§5.1"),
+        Param("check_energy", "bool", None, help="Keep an optimisation step only when it lowers Eq. 2.", cli=False, section="§5.3"),
+        Param("yield_window", "int", None, low=0, help="Iterations whose horizon elements yield to a larger size class.", cli=False,
+              section="extension of §7"),
+    ),
+)
 
 def as_selection(exemplars: Any, selection: Any = None) -> Selection:
     """Normalise exemplars (a Palette, a Selection, one Arrangement, a list or a dict of
@@ -81,22 +130,9 @@ def set_selection(state: SynthState, selection: Any) -> None:
 
 def synthesize(
     exemplars: Any,
-    region: Region | None = None,
+    region: Region | Any = None,
     *,
-    selection: Any = None,
-    fill_point: tuple[float, float] | None = None,
-    brush_points: np.ndarray | None = None,
-    brush_radius: float | np.ndarray | None = None,
-    init: str = "grow",
-    k: int = 5,
-    c: float = 2.0,
-    optimize: str = "horizon",
-    kind_cost: float = 1.0,
-    time_budget: float | None = None,
-    patch_rounds: int | None = None,
-    keep_voids: bool = False,
-    measure: bool = True,
-    trace: list | None = None,
+    context: Arrangement | None = None,
     rng: int | np.random.Generator | None = None,
     progress: Callable | None = None,
     should_cancel: Callable | None = None,
@@ -113,7 +149,12 @@ def synthesize(
     ----------
     exemplars : Palette, Selection, Arrangement, list or dict of Arrangement
         Exemplar columns ``radius``, ``neighborhood_radius`` and ``void`` are honoured.
-    region : Region
+    region : Region, shapely polygon, ``"WxH"`` or (W, H), optional
+        Required unless a brush stroke is given.
+    context : Arrangement, optional
+        Fixed elements to synthesize around (issue 15): obstacles that are never
+        overlapped (the region less their footprint; needs ``region``). Not yet used as
+        neighbourhood context.
     selection : str, list of str or dict of str to float, optional
     fill_point : (2,) float, optional
     brush_points : (m, 2) float, optional
@@ -139,7 +180,12 @@ def synthesize(
         Receives ``(seconds, elements, average neighbourhood distance)`` after every
         iteration (Eq. 5 on a sample of 200 elements; time spent measuring excluded).
     rng : int or Generator or None
+        Recorded in ``meta`` (``seed`` or ``rng_state``) with every parameter.
     progress, should_cancel : callables, optional
+    **params
+        Keyword only, checked against :data:`SPEC` first: the names above from
+        ``selection`` on, and the :class:`SynthParams` fields (``seed_separation``,
+        ``relaxation``, ...).
 
     Returns
     -------
@@ -158,24 +204,69 @@ def synthesize(
     >>> len(out) > 80
     True
     """
+    prm = SPEC.validate(params)
+    gen, seed = seed_record(rng)
+    region = as_region(region)
+    ctx = check_context(context)
+    if ctx is not None and region is None:
+        raise InputError("context: needs a region (the context's elements are kept out of it)")
+    sel = as_selection(exemplars, prm["selection"])
+    free = free_region(region, ctx)
+    if is_empty(free):
+        arr = empty_result({kk: v for a in sel.exemplars() for kk, v in a.shapes.items()}, region,
+                           "the region is empty" if ctx is None else "the context covers the region")
+    else:
+        arr = _synthesize(sel, free, rng=gen, progress=progress, should_cancel=should_cancel, **prm)
+        if free is not region:
+            arr = arr.replace(region=region)
+    record = {k: v for k, v in prm.items() if k != "trace"}
+    return stamp(arr, SPEC, list(sel.exemplars()), record, seed, region=region, context=ctx)
+
+
+def _synthesize(
+    exemplars: Selection,
+    region: Region | None,
+    *,
+    selection: Any,
+    fill_point: tuple[float, float] | None,
+    brush_points: np.ndarray | None,
+    brush_radius: float | np.ndarray | None,
+    init: str,
+    k: int,
+    c: float,
+    optimize: str,
+    kind_cost: float,
+    time_budget: float | None,
+    patch_rounds: int | None,
+    keep_voids: bool,
+    measure: bool,
+    trace: list | None,
+    rng: np.random.Generator,
+    progress: Callable | None,
+    should_cancel: Callable | None,
+    **params: Any,
+) -> Arrangement:
+    """Synthesis on checked arguments; see :func:`synthesize`."""
+    selection = None  # already applied to ``exemplars``
+    params = {key: v for key, v in params.items() if v is not None}
     if init not in ("grow", "patch"):
         raise InputError(f"init: expected grow or patch, got {init!r}")
     if region is None and brush_points is None:
-        raise InputError("synth: give a region (or a size) to fill, or a brush stroke")
+        raise InputError("region: give a region (or a size) to fill, or a brush stroke")
     if region is not None:  # refuse work beyond the limits before starting (issue 17)
         from .._limits import check_work, element_area
 
-        check_work("--size/--region", region=region, per_element=min(element_area(a) for a in as_selection(exemplars, selection).exemplars()))
+        check_work("region", region=region, per_element=min(element_area(a) for a in as_selection(exemplars, selection).exemplars()))
     state = new_state(exemplars, region, selection=selection, k=k, c=c, optimize=optimize, kind_cost=kind_cost, rng=rng, **params)
     if trace is not None:
         state.trace = trace
     if init == "patch":
         if brush_points is not None or fill_point is not None:
-            raise InputError("init patch: fills the whole region; it takes no --fill or --brush")
+            raise InputError("init: 'patch' fills the whole region; it takes no fill_point or brush_points")
         patch_initialize(state, time_budget=float(time_budget or 0.0), rounds=patch_rounds, progress=progress, should_cancel=should_cancel)
     elif brush_points is not None:
         if brush_radius is None:
-            raise InputError("brush: give a brush radius")
+            raise InputError("brush_radius: needed with brush_points")
         _brush(state, np.asarray(brush_points, float), brush_radius, progress=progress, should_cancel=should_cancel)
     else:
         _fill(state, fill_point, progress=progress, should_cancel=should_cancel)
