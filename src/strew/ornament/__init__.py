@@ -25,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from .._method import MethodSpec, Param
 from ..arrangement import Arrangement
 from ..region import Region
 from ._engine import Goal, Ornament, RuleContext, default_seed, grow_elements
@@ -48,6 +49,7 @@ from ._proxies import (
 from ._render import GENERIC_STYLES, Mark, RenderContext, available_styles, render_ornament, skeletal_stroke, tapered_stroke
 
 __all__ = [
+    "SPEC",
     "grow_ornament",
     "grow_elements",
     "render_ornament",
@@ -87,21 +89,47 @@ __all__ = [
 ]
 
 
+SPEC = MethodSpec(
+    name="ornament",
+    command="ornament",
+    entry="strew.ornament:grow_ornament",
+    paper="Wong, Zongker, Salesin, Computer-Generated Floral Ornament, SIGGRAPH 1998",
+    summary="Grow rule-driven floral ornament into a panel (adaptive clip art).",
+    progress_message="ornament",
+    input=Param("pattern", "any", help="A Pattern, a built-in name or the path of a Python rule file.", section="§3, App. A",
+                parse="text", metavar="PATTERN_OR_RULE_FILE"),
+    params=(
+        Param("seeds", "points", None, unit="document units", help="Seed points [default: the centre of the largest inscribed circle].",
+              flag="--seed-point", cli="multiple", parse="points", metavar="X,Y",
+              cli_help="Seed position (repeatable); default: the centre of the largest inscribed circle.", section="§4.2"),
+        Param("resolution", "int", None, low=1, unit="cells",
+              help="Raster cells along the panel's longer side [default: cells of half the minimum radius, 256 to 2048].", section="§4.1"),
+        Param("min_radius", "float", None, low=0, low_open=True, unit="document units",
+              help="Stop when no empty circle is this large [default: the pattern's].", section="§4.1"),
+        Param("delta", "float", None, low=0, unit="document units",
+              help="Elements within delta of the empty circle are tried [default: two cells or a tenth of its radius].", cli=False,
+              section="§4.1"),
+        Param("epsilon", "float", None, low=0, unit="document units",
+              help="Exclude-list points this near a success are dropped [default: its diameter].", cli=False, section="§4.1"),
+        Param("max_elements", "int", None, low=1, help="Stop after this many elements (seeds included).", metavar="N"),
+        Param("style", "str", "outline", help="Rendering style: outline, tapered, filigree, skeletal (-leafy, -beads, -ribbon), or the pattern's.",
+              section="§4, Fig. 17"),
+        Param("line_width", "float", None, low=0, low_open=True, unit="document units",
+              help="Base line width [default: a fifth of the minimum radius].", cli=False),
+        Param("draw_seeds", "bool", False, help="Draw the seeds too.", cli=False),
+    ),
+)
+
+
 def grow_ornament(
     pattern: Pattern | str,
-    region: Region,
+    region: Region | Any = None,
     *,
-    seeds: Sequence[Sequence[float]] | np.ndarray | None = None,
+    context: Arrangement | None = None,
     rng: int | np.random.Generator | None = None,
-    resolution: int | None = None,
-    min_radius: float | None = None,
-    delta: float | None = None,
-    epsilon: float | None = None,
-    max_elements: int | None = None,
-    style: str = "outline",
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
-    **render_options: Any,
+    **params: Any,
 ) -> Arrangement:
     """Grow adaptive clip art in a region and render it (Wong et al. 1998).
 
@@ -110,12 +138,15 @@ def grow_ornament(
     pattern : Pattern or str
         A :class:`Pattern`, a built-in name (``dots``, ``flowers``, ``spirals``,
         ``hierarchy``, ``vase``, ``willow``) or the path of a Python rule file.
-    region : Region
-        The panel: any polygon, holes included.
+    region : Region, shapely polygon, ``"WxH"`` or (W, H)
+        The panel: any polygon, holes included. Required.
+    context : Arrangement, optional
+        Fixed elements to grow around (issue 15): the panel less their footprint, so
+        the ornament never overlaps them.
     seeds : (k, 2) float, optional
         Seed points (§4.2); default: the centre of the largest inscribed circle.
     rng : int, Generator or None
-        Source of every random choice rules make (``ctx.rng``).
+        Source of every random choice rules make (``ctx.rng``); recorded in ``meta``.
     resolution : int, optional
         Cells of the raster buffer along the longer side of the region (§4.1); default:
         cells of half the minimum radius, between 256 and 2048.
@@ -135,8 +166,10 @@ def grow_ornament(
         or one of the pattern's).
     progress, should_cancel : callable, optional
         Progress report and cancellation check.
-    **render_options
-        Passed to :func:`render_ornament` (``line_width``, ``seeds``).
+    line_width : float, optional
+        Passed to :func:`render_ornament`, as ``draw_seeds`` (its ``seeds``).
+
+    The parameters from ``seeds`` on are keyword only, checked against :data:`SPEC`.
 
     Returns
     -------
@@ -144,24 +177,41 @@ def grow_ornament(
         One row per drawn mark; columns ``element``, ``type``, ``parent``, ``phase``;
         ``meta["ornament"]`` holds the run's statistics.
     """
+    from .._errors import InputError
+    from .._method import as_region, check_context, empty_result, free_region, is_empty, seed_record, stamp
     from ._render import available_styles as _styles
 
+    prm = SPEC.validate(params)
+    gen, seed = seed_record(rng)
+    dom = as_region(region)
+    if dom is None:
+        raise InputError("region: give the panel (a Region, a polygon, 'WxH' or (W, H))")
+    ctx = check_context(context)
     pat = load_pattern(pattern)
-    if style not in _styles(pat):
-        from .._errors import InputError
-
-        raise InputError(f"--style: unknown style {style!r} for pattern {pat.name!r} (have: {', '.join(_styles(pat))})")
-    orn = grow_elements(
-        pat,
-        region,
-        seeds=seeds,
-        rng=rng,
-        resolution=resolution,
-        min_radius=min_radius,
-        delta=delta,
-        epsilon=epsilon,
-        max_elements=max_elements,
-        progress=progress,
-        should_cancel=should_cancel,
-    )
-    return orn.render(style, **render_options)
+    if prm["style"] not in _styles(pat):
+        raise InputError(f"style: unknown style {prm['style']!r} for pattern {pat.name!r} (have: {', '.join(_styles(pat))})")
+    free = free_region(dom, ctx)
+    record = {"pattern": pattern if isinstance(pattern, str) else pat.name, **prm}
+    if is_empty(free):
+        arr = empty_result({}, dom, "the region is empty" if ctx is None else "the context covers the region")
+    else:
+        orn = grow_elements(
+            pat,
+            free,
+            seeds=prm["seeds"],
+            rng=gen,
+            resolution=prm["resolution"],
+            min_radius=prm["min_radius"],
+            delta=prm["delta"],
+            epsilon=prm["epsilon"],
+            max_elements=prm["max_elements"],
+            progress=progress,
+            should_cancel=should_cancel,
+        )
+        arr = orn.render(prm["style"], line_width=prm["line_width"], seeds=prm["draw_seeds"])
+        if free is not dom:
+            arr = arr.replace(region=dom)
+        # the engine's resolved values (default seeds, resolution, min_radius) replace the Nones
+        resolved = arr.meta.get("params", {})
+        record.update({k: resolved[k] for k in prm if record.get(k) is None and resolved.get(k) is not None})
+    return stamp(arr, SPEC, pattern if isinstance(pattern, str) else pat.name, record, seed, region=dom, context=ctx)

@@ -26,7 +26,8 @@ Evaluating an arrangement on a region gives a planar map (§4)::
 ``strew run SCRIPT.py --out out.svg`` runs a script and evaluates its module-level
 ``arrangement``. Besides ``__all__`` (exactly the paper's operators and the border
 constants), this module offers :class:`PlanarMap`, :class:`Curves`, :func:`evaluate`,
-:func:`run_script` and :func:`to_strew` for use from Python, and :func:`run_size` (the
+:func:`run` (the method contract: script and region in, Arrangement out, provenance in
+``meta``), :func:`run_script` (the planar map too) and :func:`to_strew` for use from Python, and :func:`run_size` (the
 ``--size`` a script is run at) for scripts that scale with it.
 """
 
@@ -92,7 +93,7 @@ from ._operators import (
     union,
 )
 from ._planar_map import DEFAULT_GRID, Edge, Face, PlanarMap, Vertex, induce
-from ._script import ScriptError, evaluate, export_svg, import_svg, run_script, run_size, to_strew
+from ._script import SPEC, ScriptError, evaluate, export_svg, import_svg, run, run_script, run_size, to_strew
 
 __all__ = [
     # Table 1: partition operators
@@ -169,7 +170,9 @@ _EXTRAS = (
     Vertex,
     evaluate,
     induce,
+    run,
     run_script,
+    SPEC,
     run_size,
     to_strew,
 )

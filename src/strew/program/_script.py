@@ -24,6 +24,8 @@ from typing import Any
 import numpy as np
 
 from .._errors import InputError
+from .._limits import MAX_COORD
+from .._method import MethodSpec, Param
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Path as ShapePath
@@ -33,7 +35,7 @@ from ._curves import Curve, Curves
 from ._operators import ArrangementFunction, MapperError, as_arrangement
 from ._planar_map import PlanarMap
 
-__all__ = ["import_svg", "export_svg", "to_strew", "run_script", "run_size", "evaluate", "ScriptError"]
+__all__ = ["import_svg", "export_svg", "to_strew", "run", "run_script", "run_size", "evaluate", "ScriptError", "SPEC"]
 
 _IN_RUN: ContextVar[bool] = ContextVar("strew_program_in_run", default=False)
 _RUN_SIZE: ContextVar[float | None] = ContextVar("strew_program_run_size", default=None)
@@ -336,12 +338,124 @@ def run_script(script: str | os.PathLike[str], *, size: float = 2000, seed: int 
     if not path.is_file():
         raise ScriptError(f"{str(script)!r}: no such script")
     n, region = _square(size)
+    return _run_on(path, name, region, seed, n)
+
+
+def _run_on(path: Path, name: str, region: Region, seed: int, n: float) -> tuple[PlanarMap, Arrangement]:
+    """Run the script at ``path`` with ``run_size() == n`` and evaluate ``name`` on ``region``."""
     size_token = _RUN_SIZE.set(n)
     try:
         with script_context(seed), _script_environment(path):
             return _run(path, name, region, seed)
     finally:
         _RUN_SIZE.reset(size_token)
+
+
+SPEC = MethodSpec(
+    name="program",
+    command="run",
+    entry="strew.program:run",
+    paper="Loi, Hurtut, Vergne, Thollot, A Programmable Model for Designing Stationary 2D Arrangements, 2015",
+    summary="Run a program script (planar maps, partitions, mappers) and write its arrangement.",
+    progress_message="program",
+    region_required=False,
+    input=Param("script", "any", help="A Python script defining a module-level arrangement (a Python program: trusted files only).",
+                section="§3", parse="text", metavar="SCRIPT"),
+    params=(
+        Param("size", "float", None, low=0, high=MAX_COORD, low_open=True, unit="document units",
+              help="Evaluate on the square [0, N] x [0, N] when no region is given [default: 2000].", cli=False, section="§4"),
+        Param("name", "str", "arrangement", help="Module-level variable to evaluate.", section="§3"),
+    ),
+)
+
+
+def run(
+    script: str | os.PathLike[str],
+    region: Region | Any = None,
+    *,
+    context: Arrangement | None = None,
+    rng: int | np.random.Generator | None = None,
+    progress: Any = None,
+    should_cancel: Any = None,
+    **params: Any,
+) -> Arrangement:
+    """Run a program script and evaluate its arrangement on a region (the method contract).
+
+    Parameters
+    ----------
+    script : path
+        Run as ``python SCRIPT.py`` would (``__file__`` set, its folder on
+        ``sys.path``). A script is a Python program: run only scripts you trust.
+    region : Region, shapely polygon, ``"WxH"`` or (W, H), optional
+        Where to evaluate; default the square [0, size]^2. :func:`run_size` gives
+        scripts the larger side of its bounding box.
+    context : Arrangement, optional
+        Fixed elements (issue 15): faces and edges that would overlap their footprint
+        are left out of the result.
+    rng : int, Generator or None
+        The script's root seed: an int as given, a Generator draws one; recorded in meta.
+    progress, should_cancel : callables, optional
+        Reported (and checked) before the script runs, after it ran and after evaluation.
+    size : float, optional
+        Side of the square when no region is given (2000).
+    name : str
+        The module-level variable to evaluate (``arrangement``).
+
+    Returns
+    -------
+    Arrangement
+        Faces as closed paths, then edges as open paths (see :func:`to_strew`); the
+        planar map itself is :func:`run_script`'s first result.
+    """
+    from .._method import as_region, check_context, context_footprint, empty_result, seed_record, stamp
+    from .._progress import Reporter
+
+    prm = SPEC.validate(params)
+    gen, seed = seed_record(rng)
+    root = int(rng) if isinstance(rng, (int, np.integer)) and not isinstance(rng, bool) else (
+        int(seed["seed"]) if "seed" in seed else int(gen.integers(2**31)))
+    dom = as_region(region)
+    if dom is not None and prm["size"] is not None:
+        raise InputError("size: give a region or a size, not both")
+    if dom is None:
+        n, dom = _square(2000 if prm["size"] is None else prm["size"])
+    else:
+        x0, y0, x1, y1 = dom.bounds
+        n = float(max(x1 - x0, y1 - y0, 0.0))
+    ctx = check_context(context)
+    path = Path(script)
+    if not path.is_file():
+        raise ScriptError(f"{str(script)!r}: no such script")
+    rep = Reporter(progress, should_cancel, total=2, message=f"program {path.name}")
+    rep.tick(0, force=True)
+    if not (dom.area > 0):
+        arr = empty_result({}, dom, "the region is empty")
+    else:
+        _, arr = _run_on(path, prm["name"], dom, root, n)
+        rep.tick(1, force=True)
+        if ctx is not None and len(ctx) and len(arr):
+            arr = _drop_overlapping(arr, context_footprint(ctx))
+    rep.tick(2, force=True)
+    rep.done(2)
+    record = {**prm, "size": prm["size"] if prm["size"] is not None or region is not None else 2000.0}
+    if "seed" in seed and root != seed["seed"]:
+        seed = {**seed, "seed": root}
+    return stamp(arr, SPEC, path, record, seed, region=dom, context=ctx)
+
+
+def _drop_overlapping(arr: Arrangement, footprint: Any) -> Arrangement:
+    """``arr`` without the cells that overlap ``footprint`` (areas, or lines inside it)."""
+    import shapely
+
+    geoms = arr.geometry_of("geometry")
+    inter = shapely.intersection(geoms, footprint)
+    clash = (shapely.area(inter) > 1e-12) | (shapely.length(inter) > 1e-9) & ~shapely.is_empty(inter)
+    # a line along the footprint's edge touches it without overlapping it
+    lines = ~np.asarray([g.area > 0 for g in geoms], bool)
+    if lines.any():
+        inner = shapely.buffer(footprint, -1e-9)
+        clash[lines] = shapely.intersects(geoms[lines], inner)
+    return arr.select(~clash).with_meta(program_context={"left_out": int(clash.sum())})
 
 
 def _run(path: Path, name: str, region: Region, seed: int) -> tuple[PlanarMap, Arrangement]:
