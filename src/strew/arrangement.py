@@ -31,9 +31,12 @@ from ._limits import check_coordinates
 from .region import Region
 from .shape import Shape
 
-__all__ = ["Arrangement", "concat", "transform_points", "CORE_COLUMNS"]
+__all__ = ["Arrangement", "concat", "transform_points", "CORE_COLUMNS", "PARTS_COLUMN"]
 
 CORE_COLUMNS = ("kind", "x", "y", "rotation", "scale")
+# optional per-element geometry: elements of one kind whose curves differ (ornament stems,
+# spirals); see the Arrangement docstring
+PARTS_COLUMN = "parts"
 # characters that XML 1.0 cannot hold, so an SVG could not carry such a kind name
 _CONTROL = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
 
@@ -86,6 +89,40 @@ def _column_array(name: str, values: Any, n: int) -> np.ndarray:
     return _readonly(arr)
 
 
+def _parts_column(values: Any, n: int) -> tuple[np.ndarray, tuple[tuple[Shape, ...] | None, ...]]:
+    """The ``parts`` column, normalised to JSON-ready dicts, and its shapes."""
+    vals = list(values)
+    if len(vals) != n:
+        raise InputError(f"elements.{PARTS_COLUMN}: length {len(vals)} does not match elements.kind length {n}")
+    arr = np.empty(n, dtype=object)
+    shapes: list[tuple[Shape, ...] | None] = []
+    for i, v in enumerate(vals):
+        if isinstance(v, np.ndarray):
+            v = v.tolist()
+        if v is None:
+            shapes.append(None)
+            continue
+        if not isinstance(v, (list, tuple)) or not v:
+            raise InputError(f"elements.{PARTS_COLUMN}[{i}]: must be null or a non-empty list of shapes ({{'paths': [...], 'style': {{...}}}})")
+        sh = tuple(p if isinstance(p, Shape) else Shape.from_dict(p, f"elements.{PARTS_COLUMN}[{i}][{j}]") for j, p in enumerate(v))
+        shapes.append(sh)
+        arr[i] = [s.to_dict() for s in sh]
+    arr.setflags(write=False)
+    return arr, tuple(shapes)
+
+
+def _union_parts(geoms: list[shapely.Geometry], area: bool) -> shapely.Geometry:
+    geoms = [g for g in geoms if not g.is_empty]
+    if not geoms:
+        return shapely.Polygon() if area else shapely.LineString()
+    if len(geoms) == 1:
+        return geoms[0]
+    if area:
+        return shapely.union_all(geoms)
+    lines = [g for part in geoms for g in shapely.get_parts(part)]
+    return shapely.MultiLineString(lines)
+
+
 class Arrangement:
     """Placed elements, column-wise, with their shape library.
 
@@ -109,6 +146,16 @@ class Arrangement:
         How the arrangement was made (generator, method, seed, params, command).
     extra : mapping, optional
         Other top-level document entries (e.g. connectivity), kept for the round trip.
+
+    Notes
+    -----
+    Per-element geometry: the optional column ``parts`` gives an element its own
+    geometry, for kinds whose elements share a role but not a shape (an ornament's
+    stems, each curved its own way). Each entry is ``None`` (draw the kind's shape) or a
+    list of shape dicts ``{"paths": [...], "style": {...}}`` in the element's local
+    frame, drawn in order over one another; x, y, rotation and scale place it as usual,
+    and the kind's shape in the library is then a representative. :attr:`geometry` (so
+    metrics and ``strew info``), the JSON document and SVG export honour it.
 
     Examples
     --------
@@ -192,9 +239,13 @@ class Arrangement:
         self._rotation = core("rotation", rotation, 0.0)
         self._scale = core("scale", scale, 1.0)
         cols: dict[str, np.ndarray] = {}
+        self._parts: tuple[tuple[Shape, ...] | None, ...] | None = None
         for name, values in dict(columns or {}).items():
             if name in CORE_COLUMNS:
                 raise InputError(f"columns: {name!r} is a core column, pass it directly")
+            if name == PARTS_COLUMN:
+                cols[name], self._parts = _parts_column(values, n)
+                continue
             cols[str(name)] = _column_array(name, values, n)
         self._columns = cols
         if region is not None and not isinstance(region, Region):
@@ -285,6 +336,12 @@ class Arrangement:
     def __contains__(self, name: object) -> bool:
         return name in CORE_COLUMNS or name in self._columns
 
+    @property
+    def element_parts(self) -> tuple[tuple[Shape, ...] | None, ...] | None:
+        """(n,) per-element geometry from the ``parts`` column (None where an element draws
+        its kind's shape), or None without that column (see Notes)."""
+        return self._parts
+
     # -- derived ----------------------------------------------------------------------
     @cached_property
     def geometry(self) -> np.ndarray:
@@ -317,6 +374,19 @@ class Arrangement:
                 return np.c_[tx + c * p[:, 0] - s * p[:, 1], ty + s * p[:, 0] + c * p[:, 1]]
 
             out[idx] = shapely.transform(np.full(len(idx), local, dtype=object), f)
+        if self._parts is not None:
+            area = which == "area_geometry"
+            for i, parts in enumerate(self._parts):
+                if parts is None:
+                    continue
+                if which == "geometry":
+                    local = _union_parts([p.area_geometry for p in parts], True)
+                    if local.is_empty:
+                        local = _union_parts([p.line_geometry for p in parts], False)
+                else:
+                    local = _union_parts([getattr(p, which) for p in parts], area)
+                xi, yi, ri, si = self._x[i], self._y[i], self._rotation[i], self._scale[i]
+                out[i] = shapely.transform(local, lambda p, xi=xi, yi=yi, ri=ri, si=si: transform_points(p, xi, yi, ri, si))
         return out
 
     @cached_property

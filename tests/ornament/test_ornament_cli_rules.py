@@ -117,12 +117,13 @@ def test_styles_draw_the_same_geometry_differently():
     drawn = {e.index for e in orn.elements if e.type != "seed"}
     for arr in (outline, ink, tapered):
         assert set(arr["element"].tolist()) == drawn
+        assert len(arr) == len(drawn)  # one row per element, its marks in its parts
     # outline: one unfilled mark per proxy; the ink style fills flowers and leaves
-    assert all(sh.style["fill"] == "none" for sh in outline.shapes.values())
-    ink_fills = {sh.style["fill"] for sh in ink.shapes.values()}
+    assert all(p.style["fill"] == "none" for parts in outline.element_parts for p in parts)
+    ink_fills = {p.style["fill"] for parts in ink.element_parts for p in parts}
     assert len(ink_fills - {"none"}) >= 3
     n_proxies = sum(len(e.proxies) for e in orn.elements if e.type != "seed")
-    assert len(outline) == n_proxies
+    assert sum(len(parts) for parts in outline.element_parts) == n_proxies
 
 
 def test_tapered_stroke_width_varies_along_the_curve():

@@ -128,10 +128,11 @@ def test_every_proxy_kind_grows_renders_and_blocks_space():
         for j in range(i):
             assert not geoms[i].intersects(geoms[j])
     arr = orn.render("outline")
-    assert len(arr) == 5 * len(things)
+    assert len(arr) == len(things)  # one row per element, one mark per proxy in its parts
+    assert [len(parts) for parts in arr.element_parts] == [5] * len(things)
     assert region.contains_geometry(arr.geometry, tolerance=1e-6).all()
     filled = orn.render("tapered")
-    assert any(sh.style["fill"] != "none" for sh in filled.shapes.values())
+    assert any(p.style["fill"] != "none" for parts in filled.element_parts for p in parts)
 
 
 def test_exclude_list_cleared_near_a_success_and_by_rules():

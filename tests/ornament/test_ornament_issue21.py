@@ -8,6 +8,7 @@ import pytest
 import shapely
 
 from strew import Region
+from strew.arrangement import transform_points
 from strew.ornament import grow_elements
 from strew.ornament import _engine
 
@@ -188,19 +189,20 @@ def test_marks_of_one_template_share_a_kind_and_draw_in_place(tmp_path):
     kinds = {}
     for k, t in zip(arr.kind_names, arr["type"]):
         kinds.setdefault(t, set()).add(k)
-    # leaves (any angle) and flowers (anywhere) come from one template each
+    # leaves (any angle) and flowers (anywhere): one kind each
     leaves = sum(e.type == "leaf" for e in orn.elements)
-    assert leaves > 10 and len(kinds["leaf"]) <= 2
-    assert len(kinds["flower"]) == 1
-    # each row draws its element's proxy where it is: shared shapes are placed by a
-    # rotation and a translation
+    assert leaves > 10 and kinds["leaf"] == {"leaf"}
+    assert kinds["flower"] == {"flower"}
+    # each row draws its element's proxies where they are: its parts (one outline per
+    # proxy) placed by a rotation and a translation
     by_index = {e.index: e for e in orn.elements}
-    geoms = arr.geometry
     for i in range(len(arr)):
         el = by_index[int(arr["element"][i])]
-        d = min(shapely.hausdorff_distance(geoms[i], shapely.LineString(pr.polyline()) if len(pr.polyline()) > 1 else pr.geometry)
-                for pr in el.proxies)
-        assert d < 1e-5
+        drawn = [pr for pr in el.proxies if len(pr.polyline()) > 1]
+        assert len(arr.element_parts[i]) == len(drawn)
+        for part, pr in zip(arr.element_parts[i], drawn):
+            world = transform_points(part.points, arr.x[i], arr.y[i], arr.rotation[i], arr.scale[i])
+            assert shapely.hausdorff_distance(shapely.MultiPoint(world), shapely.MultiPoint(pr.polyline())) < 1e-6
     # and reloading keeps the kinds
     save(arr, tmp_path / "f.json")
     back = load(tmp_path / "f.json")

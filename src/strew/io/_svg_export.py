@@ -89,7 +89,7 @@ def _style_attrs(shape: Shape, *, inherit_fill: bool, stroke_width: float) -> st
 def _column_attr_values(arr: Arrangement) -> dict[str, list[str]]:
     out: dict[str, list[str]] = {}
     for name, col in arr.columns.items():
-        if col.ndim != 1 or not re.fullmatch(r"[a-z_][a-z0-9_.-]*", name) or name in {"kind", "index"}:
+        if col.ndim != 1 or not re.fullmatch(r"[a-z_][a-z0-9_.-]*", name) or name in {"kind", "index", "parts"}:
             continue
         vals = []
         for v in col.tolist():
@@ -151,6 +151,7 @@ def to_svg(
     color = arr.columns.get("color")
     inherit_fill = color is not None and color.ndim == 1
     void = arr.columns.get("void")
+    parts = arr.element_parts
 
     out: list[str] = []
     out.append('<?xml version="1.0" encoding="UTF-8"?>')
@@ -213,6 +214,14 @@ def to_svg(
                 extra.append(f"fill={quoteattr(color[i])}")
             if void is not None and bool(void[i]):
                 extra.append('display="none"')
+            if parts is not None and parts[i] is not None:
+                # an element with its own geometry (the `parts` column): a group named by
+                # its kind, one path per part; read_svg brings it back as that kind
+                out.append(f'<g transform="{t}" data-kind={label} {" ".join(extra)}>')
+                for part in parts[i]:
+                    out.append(f'<path d={quoteattr(path_data(part))} {_style_attrs(part, inherit_fill=False, stroke_width=sw)}/>')
+                out.append("</g>")
+                continue
             out.append(f'<use xlink:href="#{ids[k]}" transform="{t}" {" ".join(extra)}/>')
         out.append("</g>")
     out.append("</svg>")

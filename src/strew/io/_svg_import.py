@@ -975,6 +975,7 @@ class _Reader:
         self.doc = doc
         self.kinds: list[_Kind] = []
         self.by_target: dict[tuple[int, bool], _Kind] = {}
+        self.symbol_names: dict[str, _Kind] = {}  # a strew export's kinds by data-kind
         self.names: set[str] = set()
         self.elements: list[_Element] = []
         self.region_els: list[tuple[ET.Element, np.ndarray]] = []
@@ -1010,7 +1011,25 @@ class _Reader:
         """Every ``<symbol>`` is a kind, in document order (unused ones too)."""
         for el in self.doc.root.iter():
             if _local(el.tag) == "symbol":
-                self.target_kind(el, mirrored=False)
+                kind = self.target_kind(el, mirrored=False)
+                self.symbol_names.setdefault(el.get("data-kind") or kind.name, kind)
+
+    def add_parts(self, el: ET.Element, m: np.ndarray, kind: _Kind, void: bool) -> None:
+        """An element of a strew export drawn with its own geometry: a ``<g data-kind>``
+        of one path per part (the ``parts`` column, see :class:`~strew.Arrangement`)."""
+        doc = self.doc
+        props = {**doc.inherited_props(el), **{k: v for k, v in _props(el).items() if k != "display"}}
+        parts = []
+        for child in el:
+            leaves = doc.parts(child, _IDENTITY, props)
+            flat = doc.flatten(leaves, _IDENTITY, doc.tolerance)
+            if flat.paths:
+                paths = [{"points": p.points.tolist(), "closed": bool(p.closed)} for p in flat.paths]
+                parts.append({"paths": paths, "style": _style(doc, leaves)})
+        n = len(self.elements)
+        self.place(kind, _compose(m, doc.transform(el)), void, el)
+        if parts and len(self.elements) > n:
+            self.elements[-1].attrs["parts"] = json.dumps(parts)
 
     def target_kind(self, tgt: ET.Element, mirrored: bool) -> _Kind:
         key = (id(tgt), mirrored)
@@ -1070,6 +1089,9 @@ class _Reader:
 
     def add_object(self, el: ET.Element, m: np.ndarray, void: bool) -> None:
         doc = self.doc
+        if doc.is_strew and _local(el.tag) == "g" and el.get("data-kind") in self.symbol_names:
+            self.add_parts(el, m, self.symbol_names[el.get("data-kind")], void)  # type: ignore[index]
+            return
         if (id(el), False) in self.by_target:  # the original of clones: its own kind
             self.place(self.by_target[(id(el), False)], _IDENTITY, void, el)
             return

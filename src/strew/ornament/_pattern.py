@@ -186,6 +186,7 @@ class Pattern:
         self.types: dict[str, ElementType] = {}
         self.rules: list[Rule] = []
         self.renderers: dict[tuple[str, str], RenderFn] = {}
+        self.groups: dict[str, tuple[str, str]] = {}  # type -> (field, drawn name); see group()
         self.style_help: dict[str, str] = {}
         self.source: str | None = None
 
@@ -264,6 +265,20 @@ class Pattern:
             return fn
 
         return deco
+
+    def group(self, type_name: str, field: str, name: str | None = None) -> None:
+        """Draw the elements of a type that share a field's value as one element.
+
+        The paper grows a spiral as several Bezier segments, dynamic children (§4.2); the
+        reader sees one spiral. With ``pattern.group("arm", "spiral", "spiral")`` the
+        arms of one spiral become one row of the output, of kind ``name`` (default: the
+        type's name), their marks drawn in order, so that counts per kind count spirals.
+        """
+        if type_name not in self.types:
+            raise InputError(f"pattern {self.name!r}: group of unknown element type {type_name!r}")
+        if field not in self.types[type_name].fields:
+            raise InputError(f"pattern {self.name!r}: element type {type_name!r} has no field {field!r} to group by")
+        self.groups[type_name] = (field, name or type_name)
 
     def render(self, type_name: str, style: str = "default", help: str | None = None) -> Callable[[RenderFn], RenderFn]:
         """Decorator declaring how an element type is drawn in a named style (§4, Fig. 17).

@@ -103,6 +103,20 @@ class RenderContext:
     style: str
     line_width: float
     _counts: dict[str, int] = field(default_factory=dict)
+    _groups: dict[tuple[str, Any], list[Element]] | None = None
+
+    def group(self, el: Element) -> list[Element]:
+        """The elements drawn as one with ``el`` (see :meth:`Pattern.group`), in growth
+        order; ``[el]`` for a type that is not grouped."""
+        groups = self.ornament.pattern.groups
+        if el.type not in groups:
+            return [el]
+        if self._groups is None:
+            self._groups = {}
+            for e in self.ornament.elements:
+                if e.type in groups:
+                    self._groups.setdefault((e.type, getattr(e, groups[e.type][0])), []).append(e)
+        return self._groups[(el.type, getattr(el, groups[el.type][0]))]
 
     def count(self, type_name: str) -> int:
         """Number of placed elements of a type."""
@@ -316,11 +330,6 @@ def available_styles(pattern: Any) -> dict[str, str]:
     return out
 
 
-def _key(local: list[np.ndarray], closed: bool, style: dict[str, Any]) -> tuple:
-    # 1e-6 units: far below the flattening tolerance, far above the rounding of rotations
-    return (closed, tuple((np.round(p, 6) + 0.0).tobytes() for p in local), tuple(sorted(style.items())))
-
-
 def _clip_to_panel(paths: list[np.ndarray], closed: bool, panel: Any, cover: Any) -> list[np.ndarray]:
     """Paths of a mark clipped to the panel (``(n, 2)`` arrays in, the same out).
 
@@ -366,10 +375,11 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     Returns
     -------
     Arrangement
-        One row per mark, with columns ``element`` (placement index), ``type``,
-        ``parent`` (placement index of the parent, -1 for none) and ``phase``. Marks are
-        stored as shapes relative to their bounding-box centre; identical marks share a
-        shape.
+        One row per drawn element, of kind ``type`` (one kind per element type), with
+        columns ``element`` (placement index), ``type``, ``parent`` (placement index of
+        the parent, -1 for none), ``phase`` and ``parts``: the element's marks, one
+        shape each, in its own frame (origin at the mean of its vertices). The library
+        holds each type's first element as its representative.
     """
     pat = ornament.pattern
     styles = available_styles(pat)
@@ -378,12 +388,10 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     lw = float(line_width) if line_width is not None else 0.2 * float(ornament.params.get("min_radius", pat.min_radius))
     rc = RenderContext(ornament, style, lw)
     shapes: dict[str, Shape] = {}
-    keys: dict[tuple, str] = {}
-    per_type: dict[str, int] = {}
     kind, xs, ys, rots = [], [], [], []
     col_el, col_type, col_parent, col_phase = [], [], [], []
+    col_parts: list[list[Shape]] = []
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
-    layer: dict[str, tuple[int, int, int]] = {}
     panel = cover = None
     if ornament.region is not None:
         import shapely
@@ -391,15 +399,28 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         panel = ornament.region.geometry
         cover = shapely.buffer(panel, 1e-7 * max(1.0, *np.abs(ornament.region.bounds)))
         shapely.prepare(cover)
+    # elements drawn as one (Pattern.group: the segments of a spiral): the first of each
+    # group stands for it, with the marks of all
+    members: dict[int, list[Element]] = {}
+    grouped: set[int] = set()
+    for el in ornament.elements:
+        if el.type in pat.groups:
+            group = rc.group(el)
+            members[group[0].index] = group
+            grouped.add(el.index)
+    order: dict[str, int] = {}
     for el in sorted(ornament.elements, key=lambda e: (rank.get(e.type, len(rank)), e.index)):
+        if el.index in grouped and el.index not in members:
+            continue
         if el.type == "seed":
             if not seeds:
                 continue
             marks = [Mark.circle(el.proxy.center, 2 * lw, fill="#c33", stroke="none")]  # type: ignore[attr-defined]
         else:
             fn = pat.renderers.get((el.type, style)) or GENERIC_STYLES.get(style) or GENERIC_STYLES["outline"]
-            marks = fn(el, rc)
-        for slot, m in enumerate(marks):
+            marks = [m for member in members.get(el.index, [el]) for m in fn(member, rc)]
+        drawn: list[tuple[list[np.ndarray], bool, dict[str, Any]]] = []
+        for m in marks:
             paths = [np.asarray(p, dtype=float) for p in m.paths if len(p)]
             if not paths:
                 continue
@@ -409,38 +430,37 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
                 paths = _clip_to_panel(paths, m.closed, panel, cover)
                 if not paths:
                     continue
-            allp = np.vstack(paths)
-            # the mark in a frame of its own: origin at the mean of its vertices, x axis
-            # towards its first vertex, so that marks drawn from one template (a type's
-            # leaves at any angle, its flowers anywhere) share one shape, placed by a
-            # translation and a rotation (issue 21: kinds per type, not per element)
-            anchor = allp.mean(axis=0)
-            v0 = paths[0][0] - anchor
-            theta = math.atan2(v0[1], v0[0]) if math.hypot(v0[0], v0[1]) > 1e-9 * (1.0 + float(np.abs(allp).max())) else 0.0
-            c, sn = math.cos(theta), math.sin(theta)
-            unrot = np.array([[c, sn], [-sn, c]])  # R(-theta)
-            local = [(p - anchor) @ unrot.T for p in paths]
             st = {"fill": m.fill, "stroke": m.stroke, "stroke_width": float(m.stroke_width), **m.extra}
-            key = _key(local, m.closed, st)
-            name = keys.get(key)
-            if name is None:
-                k = per_type.get(el.type, 0)
-                per_type[el.type] = k + 1
-                name = el.type if k == 0 else f"{el.type}-{k}"
-                shapes[name] = Shape(tuple(Path(p, m.closed) for p in local), style=st)
-                keys[key] = name
-                layer[name] = (rank.get(el.type, len(rank)), slot, len(layer))
-            kind.append(name)
-            xs.append(anchor[0])
-            ys.append(anchor[1])
-            rots.append(theta)
-            col_el.append(el.index)
-            col_type.append(el.type)
-            col_parent.append(el.parent.index if el.parent is not None else -1)
-            col_phase.append(el.phase or "")
-    # SVG draws one layer per shape, in library order: order the library by draw order,
-    # then by the mark's place within its element (so a flower's centre lies on its petals)
-    shapes = {name: shapes[name] for name in sorted(shapes, key=layer.__getitem__)}
+            drawn.append((paths, m.closed, st))
+        if not drawn:
+            continue
+        # One row per element, its marks grouped (issue 21: kinds per type, counts per
+        # element), in a frame of its own: origin at the mean of its vertices, x axis
+        # towards its first vertex, so that x, y and rotation say where it is and which
+        # way it faces. Its geometry goes in the `parts` column (each element of a type is
+        # curved its own way); the type's first element stands for the kind in the library.
+        allp = np.vstack([p for paths, _, _ in drawn for p in paths])
+        anchor = allp.mean(axis=0)
+        v0 = drawn[0][0][0][0] - anchor
+        theta = math.atan2(v0[1], v0[0]) if math.hypot(v0[0], v0[1]) > 1e-9 * (1.0 + float(np.abs(allp).max())) else 0.0
+        c, sn = math.cos(theta), math.sin(theta)
+        unrot = np.array([[c, sn], [-sn, c]])  # R(-theta)
+        parts = [Shape(tuple(Path((p - anchor) @ unrot.T, closed) for p in paths), style=st) for paths, closed, st in drawn]
+        name = pat.groups[el.type][1] if el.type in pat.groups else el.type
+        if name not in shapes:
+            shapes[name] = parts[0]
+            order[name] = rank.get(el.type, len(rank))
+        kind.append(name)
+        col_parts.append(parts)
+        xs.append(anchor[0])
+        ys.append(anchor[1])
+        rots.append(theta)
+        col_el.append(el.index)
+        col_type.append(name)
+        col_parent.append(el.parent.index if el.parent is not None else -1)
+        col_phase.append(el.phase or "")
+    # SVG draws one layer per kind, in library order: order the library by draw order
+    shapes = {name: shapes[name] for name in sorted(shapes, key=lambda t: (order[t], t))}
     if not shapes:
         shapes = {"empty": Shape(())}
     meta = {
@@ -465,6 +485,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             "type": np.asarray(col_type, dtype=object),
             "parent": np.asarray(col_parent, dtype=np.int64),
             "phase": np.asarray(col_phase, dtype=object),
+            "parts": col_parts,
         },
         region=ornament.region,
         meta=meta,

@@ -31,6 +31,8 @@ pattern = Pattern(
 pattern.element("seed", Point)
 # one Bezier segment of a spiral; `segment` counts from the junction, `segments` is the total
 pattern.element("arm", Bezier, orientation=1, spiral=0, segment=0, segments=1, scale=1.0)
+# the arms of one spiral are drawn as one element, of kind "spiral"
+pattern.group("arm", "spiral", "spiral")
 
 
 def spiral_controls(center, r0, phi0, turn, r_end):
@@ -124,20 +126,35 @@ def arm_to_spiral(ctx, parent, *_):
     return grow_spiral(ctx, parent, pts[k], parent.proxy.tangent_at(ts[k]), -parent.orientation)
 
 
-def _width_profile(arm, rc, reverse):
-    # the whole spiral thins from its junction to its eye; each segment draws its share
+def _spiral_outline(arm, rc, reverse):
+    """The whole spiral of ``arm`` as one filled outline, thinning from its junction to its
+    eye (or the reverse): drawn once, by the spiral's first arm, so that no seam shows
+    where two segments' outlines would meet (issue 23)."""
+    arms = sorted(rc.group(arm), key=lambda a: a.segment)
+    if arm is not arms[0]:
+        return []
+    pts, ts = [], []
+    for a in arms:
+        p = a.proxy.polyline(24)
+        k = 0 if not pts else 1  # each segment starts where the last one ended
+        pts.append(p[k:])
+        # the width falls by segment, as Wong et al. split the spiral (§5), linearly in arc
+        # length within each segment
+        seg = np.hypot(*np.diff(p, axis=0).T)
+        u = np.r_[0.0, np.cumsum(seg)] / max(seg.sum(), 1e-12)
+        ts.append(((a.segment + u) / a.segments)[k:])
+    pts, t = np.vstack(pts), np.concatenate(ts)
     w = min(6 * rc.line_width, max(1.5 * rc.line_width, 0.12 * arm.scale))
-    t0, t1 = arm.segment / arm.segments, (arm.segment + 1) / arm.segments
     if reverse:
-        t0, t1 = 1 - t0, 1 - t1
-    return w * (1 - 0.85 * t0), w * (1 - 0.85 * t1)
+        t = 1 - t
+    return [tapered_stroke(pts, w * (1 - 0.85 * t))]
 
 
 @pattern.render("arm", "vine", help="each spiral one stroke thinning from its junction to its eye (Fig. 12)")
 def vine_arm(arm, rc):
-    return [Mark.polygon(tapered_stroke(arm.proxy.polyline(24), _width_profile(arm, rc, False)), fill="#2f5d3a")]
+    return [Mark.polygon(p, fill="#2f5d3a") for p in _spiral_outline(arm, rc, False)]
 
 
 @pattern.render("arm", "filigree", help="each spiral thickening towards its eye, the reversed variation of Fig. 13")
 def filigree_arm(arm, rc):
-    return [Mark.polygon(tapered_stroke(arm.proxy.polyline(24), _width_profile(arm, rc, True)), fill="#6b3d2f")]
+    return [Mark.polygon(p, fill="#6b3d2f") for p in _spiral_outline(arm, rc, True)]
