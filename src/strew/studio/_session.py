@@ -997,6 +997,8 @@ class Session:
                 raise InputError("spray: grow mode 'flow' needs a flow field; draw flow strokes first")
         self._push_history()
         self.stroke = stroke
+        if tool in ("brush", "spray") and target == "scene":
+            self.rate = None  # until this stroke has its own figure
         self.cancel.clear()
         try:
             return self._apply_segment(pts)
@@ -1073,8 +1075,7 @@ class Session:
         if tool in ("boundary", "erase"):
             self._count_outside()
         if tool in ("brush", "spray") and stroke["target"] == "scene":
-            if stroke["added"] and stroke["compute"] > 0:
-                self.rate = stroke["added"] / stroke["compute"]
+            self.rate = stroke["added"] / stroke["compute"] if stroke["added"] and stroke["compute"] > 0 else None
             area = shapely.LineString(allpts).buffer(stroke["radius"]) if len(allpts) > 1 else shapely.Point(allpts[0]).buffer(stroke["radius"])
             self._judge(shapely.intersection(area, stroke.get("face", self.region).geometry))
         if tool in ("brush", "spray", "erase"):
@@ -1426,6 +1427,7 @@ class Session:
         face = self._face(p)
         st.region = face
         self._op = {"n0": n0}
+        self.rate = None  # until this fill has its own figure
         try:
             synth.fill(st, (float(p[0]), float(p[1])), progress=progress, should_cancel=self.cancel.is_set, max_elements=n0 + room)
             note = "filled" if st.n < n0 + room else f"fill stopped at the scene's limit of {MAX_SCENE} elements"

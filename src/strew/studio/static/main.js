@@ -15,11 +15,13 @@ const studio = {
   tool: "brush",
   strokes: { flow: [], boundary: [], arrows: [], arrow_length: 10, region: [] },
   palette: { exemplars: [], selection: [] },
+  layers: [],          // [{name, count, hidden, locked}] in drawing order
   files: { files: [], examples: [] },
   live: null,          // the stroke being drawn: {tool, points}
   cursor: null,        // world position of the pointer
   errors: [],          // error messages received (for tests)
   messages: [],        // status messages received
+  counts: [],          // element counts of the status messages received (tests: the count never goes back)
   frames: 0,
   stats: { strokeStart: null, countAtStart: 0, firstFrame: null, lastFrame: null, added: 0, rate: null },
   connected: false,
@@ -62,13 +64,16 @@ function onMessage(m) {
     case "palette": studio.palette = m; renderPaletteList(); paletteEditor.update(m); break;
     case "strokes": studio.strokes = m; invalidate(); break;
     case "files": studio.files = m; renderFiles(); break;
+    case "layers": studio.layers = m.layers; renderLayers(); invalidate(); break;
     case "status": onStatus(m); break;
     case "error":
       studio.errors.push(m.message); showMessage(m.message, true);
       if (m.ref === "stroke_start") { studio.live = null; studio.stats.tracking = false; buffer = []; dirty(); }
       resolvePending(m.id, m); break;
     case "done":
-      if (m.ref === "stroke_end") studio.stats.tracking = false;
+      if (m.ref === "stroke_end") { studio.stats.tracking = false; if (studio.status) showRate(studio.status.rate); }
+      // elements that streamed in were drawn on top; redraw in layer order
+      if ((m.ref === "stroke_end" || m.ref === "fill") && studio.layers.length) invalidate();
       resolvePending(m.id, m); break;
     case "exported": studio.lastExport = m; break;
     case "saved": studio.lastSave = m; break;
@@ -95,10 +100,26 @@ function onScene(m) {
 
 function onStatus(m) {
   $("st-count").textContent = `${m.count} elements`;
-  $("st-dist").textContent = "avg. neighbourhood distance " + (m.distance === null ? "–" : m.distance.toPrecision(4));
+  studio.counts.push(m.count);
+  // elements/s of the last fill or stroke, as the server measured it (a live figure while painting)
+  if (!studio.stats.tracking) showRate(m.rate);
+  showFidelity(m.fidelity);
+  const clip = $("clip");
+  clip.hidden = !(m.outside > 0);
+  clip.textContent = `Clip ${m.outside} outside`;
   $("undo").disabled = !m.undo; $("redo").disabled = !m.redo;
   if (m.message) { studio.messages.push(m.message); showMessage(m.message, false); }
   studio.status = m;
+}
+function showRate(rate) { $("st-rate").textContent = rate === null || rate === undefined ? "– el/s" : `${Math.round(rate)} el/s`; }
+// The fidelity verdict (strew.metrics.fidelity) of the last fill or stroke, or nothing.
+function showFidelity(f) {
+  const el = $("st-fid");
+  if (!f) { el.textContent = ""; el.className = ""; el.title = "no fidelity verdict (several exemplars selected, or too small an area)"; return; }
+  if (f.faithful) { el.textContent = `faithful to ${f.exemplar}`; el.className = "ok"; el.title = `strew.metrics.fidelity: every metric passed (${f.count} elements)`; return; }
+  const shown = f.failures.slice(0, 3).join(", ") + (f.failures.length > 3 ? `, +${f.failures.length - 3}` : "");
+  el.textContent = `not faithful to ${f.exemplar}: ${shown}`; el.className = "bad";
+  el.title = "strew.metrics.fidelity failed: " + f.failures.join(", ");
 }
 function showMessage(text, isError) {
   const el = $("st-msg"); el.textContent = text; el.className = isError ? "error" : "";
@@ -120,6 +141,13 @@ function regionBounds() {
   return isFinite(x0) ? [x0, y0, x1, y1] : [0, 0, 800, 600];
 }
 function fit() { const r = canvas.getBoundingClientRect(); studio.view.fit(regionBounds(), r.width, r.height); invalidate(); }
+let shownZoom = null;
+function showZoom() {
+  const z = studio.view.zoom;
+  if (z === shownZoom) return;
+  shownZoom = z;
+  $("st-zoom").textContent = `zoom ${z >= 10 ? Math.round(z * 100) : +(z * 100).toPrecision(3)}%`;
+}
 studio.fit = fit;
 // draw one frame now; returns its duration in ms (benchmarks)
 // (reading a pixel makes the browser rasterise the recorded drawing, so that it is timed too)
@@ -155,7 +183,7 @@ function drawLayer(view, w, h, dpr) {
   g.setLineDash([]);
   // flow field arrows under the elements
   if (studio.strokes.arrows.length) { g.strokeStyle = "rgba(40,110,200,.45)"; g.lineWidth = 1; drawArrows(g, view, studio.strokes.arrows, studio.strokes.arrow_length); }
-  drawElements(g, studio.lib, studio.scene, view, w, h, dpr);
+  drawElements(g, studio.lib, studio.scene, view, w, h, dpr, layerOpts());
   Object.assign(cache, { valid: true, zoom: view.zoom, ox: view.ox, oy: view.oy, n: studio.scene.n, w: canvas.width, h: canvas.height });
 }
 
@@ -168,7 +196,7 @@ function draw(t) {
   if (!sameView || studio.scene.n < cache.n) drawLayer(view, w, h, dpr);
   else if (studio.scene.n > cache.n) {
     const at = { zoom: cache.zoom, ox: cache.ox, oy: cache.oy };
-    drawElements(lctx, studio.lib, studio.scene, at, w, h, dpr, { from: cache.n });
+    drawElements(lctx, studio.lib, studio.scene, at, w, h, dpr, { ...layerOpts(), from: cache.n });
     cache.n = studio.scene.n;
   }
   ctx.setTransform(1, 0, 0, 1, 0, 0);
@@ -192,6 +220,7 @@ function draw(t) {
     ctx.arc(sx, sy, radius() * view.zoom, 0, 2 * Math.PI); ctx.stroke();
   }
   studio.frames++;
+  showZoom();
   // the first frame that shows elements of a stroke: latency and rate (status bar)
   const st = studio.stats;
   if (st.pendingArrival) {
@@ -207,6 +236,37 @@ function draw(t) {
 
 // ------------------------------------------------------------------ tools
 function radius() { return +$("radius").value; }
+// layers: drawing order and hidden kinds, as library indices
+function layerOpts() {
+  const index = new Map(studio.lib.kinds.map((k, i) => [k, i]));
+  const order = studio.layers.map((l) => index.get(l.name)).filter((i) => i !== undefined);
+  for (let i = 0; i < studio.lib.kinds.length; i++) if (!order.includes(i)) order.push(i);
+  return { order, hidden: new Set(studio.layers.filter((l) => l.hidden).map((l) => index.get(l.name))) };
+}
+function sendLayers(layers) {
+  send({ type: "layers", order: layers.map((l) => l.name), hidden: layers.filter((l) => l.hidden).map((l) => l.name), locked: layers.filter((l) => l.locked).map((l) => l.name) });
+}
+function renderLayers() {
+  const ul = $("layers"); ul.innerHTML = "";
+  studio.layers.forEach((layer, i) => {
+    const li = document.createElement("li"); li.dataset.name = layer.name; li.classList.toggle("hidden", layer.hidden);
+    const vis = document.createElement("input"); vis.type = "checkbox"; vis.checked = !layer.hidden; vis.title = "show"; vis.className = "show";
+    const lock = document.createElement("input"); lock.type = "checkbox"; lock.checked = layer.locked; lock.title = "lock: the eraser and Clip keep it"; lock.className = "lock";
+    const name = document.createElement("span"); name.className = "name"; name.textContent = layer.name;
+    const count = document.createElement("span"); count.className = "count"; count.textContent = layer.count;
+    const up = document.createElement("button"); up.textContent = "▲"; up.title = "draw earlier (below)"; up.className = "up"; up.disabled = i === 0;
+    const down = document.createElement("button"); down.textContent = "▼"; down.title = "draw later (on top)"; down.className = "down"; down.disabled = i === studio.layers.length - 1;
+    const change = (f) => { const ls = studio.layers.map((l) => ({ ...l })); f(ls); sendLayers(ls); };
+    vis.addEventListener("change", () => change((ls) => { ls[i].hidden = !vis.checked; }));
+    lock.addEventListener("change", () => change((ls) => { ls[i].locked = lock.checked; }));
+    up.addEventListener("click", () => change((ls) => { [ls[i - 1], ls[i]] = [ls[i], ls[i - 1]]; }));
+    down.addEventListener("click", () => change((ls) => { [ls[i + 1], ls[i]] = [ls[i], ls[i + 1]]; }));
+    li.append(vis, lock, name, count, up, down);
+    ul.appendChild(li);
+  });
+}
+function toggleHelp(show) { const h = $("help"); h.hidden = show === undefined ? !h.hidden : !show; }
+studio.toggleHelp = toggleHelp;
 function setTool(t) {
   studio.tool = t;
   for (const b of document.querySelectorAll("#tools button")) b.classList.toggle("active", b.dataset.tool === t);
@@ -215,6 +275,11 @@ function setTool(t) {
 studio.setTool = setTool;
 for (const b of document.querySelectorAll("#tools button")) b.addEventListener("click", () => setTool(b.dataset.tool));
 $("radius").addEventListener("input", () => { $("radius-out").textContent = $("radius").value; dirty(); });
+$("density").addEventListener("input", () => { $("density-out").textContent = `${Math.round(+$("density").value * 100)}%`; });
+$("density").addEventListener("change", () => send({ type: "settings", brush_density: +$("density").value }));
+$("clip").addEventListener("click", () => send({ type: "clip" }));
+$("help-button").addEventListener("click", () => toggleHelp());
+$("help").addEventListener("click", (ev) => { if (ev.target === $("help")) toggleHelp(false); });
 $("grow-mode").addEventListener("change", () => send({ type: "settings", grow_mode: $("grow-mode").value }));
 $("jitter-scale").addEventListener("change", () => send({ type: "settings", jitter_scale: +$("jitter-scale").value || 0 }));
 $("jitter-rotation").addEventListener("change", () => send({ type: "settings", jitter_rotation: +$("jitter-rotation").value || 0 }));
@@ -295,6 +360,8 @@ let spaceDown = false;
 const keys = { b: "brush", s: "spray", f: "fill", e: "erase", w: "flow", o: "boundary", r: "region" };
 window.addEventListener("keydown", (ev) => {
   if (ev.target.tagName === "INPUT" || ev.target.tagName === "SELECT") return;
+  if (ev.key === "?") { toggleHelp(); ev.preventDefault(); return; }
+  if (ev.key === "Escape") { toggleHelp(false); return; }
   if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === "z") { send({ type: ev.shiftKey ? "redo" : "undo" }); ev.preventDefault(); return; }
   if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === "y") { send({ type: "redo" }); ev.preventDefault(); return; }
   if (ev.key === " ") { spaceDown = true; ev.preventDefault(); return; }

@@ -97,12 +97,16 @@ export class Library {
 }
 
 // Draw elements (from index opts.from on) with culling; returns the number drawn.
+// opts.order: kind indices in drawing order (layers, first drawn first); opts.hidden: a Set
+// of kind indices not drawn.
 export function drawElements(ctx, lib, els, view, width, height, dpr, opts = {}) {
   const z = view.zoom;
   const from = opts.from || 0;
   let drawn = 0;
   const nk = lib.kinds.length;
-  for (let kind = 0; kind < nk; kind++) {
+  const order = opts.order && opts.order.length ? opts.order : [...Array(nk).keys()];
+  for (const kind of order) {
+    if (kind < 0 || kind >= nk || (opts.hidden && opts.hidden.has(kind))) continue;
     const st = lib.style[kind], fill = lib.fill[kind], line = lib.line[kind];
     const rad = lib.radius[kind];
     if (!st) continue;
