@@ -70,6 +70,8 @@ from .._limits import MAX_COORD, check_file, check_paths, check_text
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
+from ._svg_flatten import EMPTY as _EMPTY
+from ._svg_flatten import Segments, flatten, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
 
 __all__ = ["read_svg", "read_svg_shapes", "read_svg_region"]
 
@@ -93,7 +95,6 @@ _AUTO_ID = re.compile(
 )
 _UNITS = {"": 1.0, "px": 1.0, "mm": 96 / 25.4, "cm": 96 / 2.54, "in": 96.0, "pt": 96 / 72, "pc": 16.0}
 _LENGTH = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-z]*)\s*$")
-_MAX_SEGMENT_POINTS = 20000
 # Matching flattens each object at this fraction of its own radius: a scale-invariant
 # tolerance samples similar copies at the same curve parameters, so that their vertex sets
 # are similar too and scale and rotation come out exact.
@@ -135,7 +136,11 @@ def _apply(m: np.ndarray, pts: np.ndarray) -> np.ndarray:
 
 
 def _sigma_max(m: np.ndarray) -> float:
-    return float(np.linalg.norm(m[:, :2], 2))
+    """Largest singular value of the 2x2 linear part (closed form; ``np.linalg.norm(., 2)`` runs an SVD)."""
+    a, b, c, d = float(m[0, 0]), float(m[0, 1]), float(m[1, 0]), float(m[1, 1])
+    q = a * a + b * b + c * c + d * d
+    det = a * d - b * c
+    return math.sqrt(max(0.0, (q + math.sqrt(max(0.0, q * q - 4 * det * det))) / 2))
 
 
 def _similarity(lin: np.ndarray) -> tuple[float, float]:
@@ -207,18 +212,6 @@ def _is_region_el(el: ET.Element, strew_doc: bool) -> bool:
     if strew_doc:  # in a strew export a kind may be called "region": only the layer's id counts
         return ident == "strew-region"
     return ident in ("region", "strew-region") or (_label(el) or "").lower() == "region"
-
-
-def _norm2(v: np.ndarray) -> float:
-    """Euclidean length of a (2,) vector, as ``np.linalg.norm`` computes it, without its overhead."""
-    x, y = float(v[0]), float(v[1])
-    return math.sqrt(x * x + y * y)
-
-
-def _same_point(a: np.ndarray, b: np.ndarray) -> bool:
-    """``np.allclose(a, b, atol=1e-9)`` for two (2,) points, without its overhead."""
-    ax, ay, bx, by = float(a[0]), float(a[1]), float(b[0]), float(b[1])
-    return abs(ax - bx) <= 1e-9 + 1e-5 * abs(bx) and abs(ay - by) <= 1e-9 + 1e-5 * abs(by)
 
 
 def _fmt(v: float) -> str:
@@ -294,7 +287,7 @@ class _Doc:
         self._transforms: dict[int, np.ndarray] = {}
         # svgelements' parse of each element's geometry, done once: an object is flattened
         # two to four times (kind test, signature, shape) and a symbol once per clone.
-        self._segments: dict[int, list[Any]] = {}
+        self._segments: dict[int, Segments] = {}
         self.referenced = {_href(el) for el in self.root.iter() if _local(el.tag) == "use"}
 
     def poll(self) -> None:
@@ -316,13 +309,17 @@ class _Doc:
         m = _IDENTITY
         text = el.get("transform")
         if text and text.strip():
-            import svgelements as se
+            fast = parse_transform(text)
+            if fast is not None:
+                m = fast
+            else:  # units, CSS functions, stray text: svgelements' reading
+                import svgelements as se
 
-            try:
-                sm = se.Matrix(text)
-            except (ValueError, IndexError, TypeError):
-                raise InputError(f"{self.name}: {self.where(el)}: bad transform {text!r}") from None
-            m = np.array([[sm.a, sm.c, sm.e], [sm.b, sm.d, sm.f]], dtype=float)
+                try:
+                    sm = se.Matrix(text)
+                except (ValueError, IndexError, TypeError):
+                    raise InputError(f"{self.name}: {self.where(el)}: bad transform {text!r}") from None
+                m = np.array([[sm.a, sm.c, sm.e], [sm.b, sm.d, sm.f]], dtype=float)
             if not np.all(np.isfinite(m)):
                 raise InputError(f"{self.name}: {self.where(el)}: transform {text!r} is not finite")
         if _local(el.tag) == "svg" and el is not self.root:
@@ -457,48 +454,65 @@ class _Doc:
                 paths.append(Path(_apply(m, pts), closed))
         return _Flat(paths, labels, curves)
 
-    def segments(self, el: ET.Element) -> list[Any]:
-        """svgelements segments of a path or basic shape, in the element's coordinates (parsed once)."""
+    def segments(self, el: ET.Element) -> Segments:
+        """Segments of a path or basic shape, in the element's coordinates (parsed once)."""
         key = id(el)
         segs = self._segments.get(key)
         if segs is None:
             segs = self._segments[key] = self._parse_segments(el)
         return segs
 
-    def _parse_segments(self, el: ET.Element) -> list[Any]:
+    def _parse_segments(self, el: ET.Element) -> Segments:
+        tag = _local(el.tag)
+        try:
+            if tag == "path":
+                d = el.get("d") or ""
+                fast = parse_path(d)
+                return fast if fast is not None else self._svgelements(el, d)
+            if tag not in ("rect", "circle", "ellipse", "line", "polyline", "polygon"):
+                return _EMPTY
+            names = {"rect": ("x", "y", "width", "height"), "circle": ("cx", "cy", "r"), "ellipse": ("cx", "cy", "rx", "ry"),
+                     "line": ("x1", "y1", "x2", "y2")}.get(tag, ())
+            # rounded to 12 digits, as the numbers svgelements was given
+            num = {a: float(_fmt(self.length(el, a))) for a in names}
+            if tag == "rect":
+                if num["width"] <= 0 or num["height"] <= 0:
+                    return _EMPTY
+                if el.get("rx") is not None or el.get("ry") is not None:
+                    return self._svgelements(el, None)
+            elif tag == "circle" and num["r"] <= 0:
+                return _EMPTY
+            elif tag == "ellipse" and (num["rx"] <= 0 or num["ry"] <= 0):
+                return _EMPTY
+            fast = shape_segments(tag, num, el.get("points"))
+            return fast if fast is not None else self._svgelements(el, None)
+        except InputError:
+            raise
+        except Exception as exc:  # bad numbers
+            raise InputError(f"{self.name}: {self.where(el)}: cannot read its geometry ({type(exc).__name__})") from None
+
+    def _svgelements(self, el: ET.Element, d: str | None) -> Segments:
+        """svgelements' reading of what :mod:`._svg_flatten` leaves to it (odd path data, rounded rects)."""
         import svgelements as se
 
         tag = _local(el.tag)
         try:
-            if tag == "path":
-                return list(se.Path(el.get("d") or "").segments())
-            num = {a: _fmt(self.length(el, a)) for a in ("x", "y", "width", "height", "cx", "cy", "r", "x1", "y1", "x2", "y2")}
+            if d is not None:
+                return from_svgelements(list(se.Path(d).segments()))
+            num = {a: _fmt(self.length(el, a)) for a in ("x", "y", "width", "height")}
             if tag == "rect":
                 vals = {k: num[k] for k in ("x", "y", "width", "height")}
                 for k in ("rx", "ry"):
                     if el.get(k) is not None:
                         vals[k] = _fmt(self.length(el, k))
-                if float(vals["width"]) <= 0 or float(vals["height"]) <= 0:
-                    return []
                 shape = se.Rect(vals)
-            elif tag == "circle":
-                if float(num["r"]) <= 0:
-                    return []
-                shape = se.Circle({k: num[k] for k in ("cx", "cy", "r")})
-            elif tag == "ellipse":
-                rx, ry = self.length(el, "rx"), self.length(el, "ry")
-                if rx <= 0 or ry <= 0:
-                    return []
-                shape = se.Ellipse({"cx": num["cx"], "cy": num["cy"], "rx": _fmt(rx), "ry": _fmt(ry)})
-            elif tag == "line":
-                shape = se.SimpleLine({k: num[k] for k in ("x1", "y1", "x2", "y2")})
             elif tag == "polyline":
                 shape = se.Polyline({"points": el.get("points") or ""})
             elif tag == "polygon":
                 shape = se.Polygon({"points": el.get("points") or ""})
             else:
-                return []
-            return list(se.Path(shape).segments())
+                return _EMPTY
+            return from_svgelements(list(se.Path(shape).segments()))
         except InputError:
             raise
         except Exception as exc:  # svgelements raises assorted errors on bad path data
@@ -508,75 +522,13 @@ class _Doc:
         """Subpaths of one element as ``(points (n, 2), closed, curved)`` in its coordinates.
 
         Curves are sampled uniformly in their parameter with ``n`` steps chosen so that the
-        chord error ``h^2 max|B''| / 8`` stays within ``tol``.
+        chord error ``h^2 max|B''| / 8`` stays within ``tol`` (all curves of the element in
+        one batch, see :func:`._svg_flatten.flatten`).
         """
-        import svgelements as se
-
-        out: list[tuple[np.ndarray, bool, bool]] = []
-        cur: list[np.ndarray] = []
-        curved = False
-        closed = False
-
-        def finish() -> None:
-            nonlocal cur, curved, closed
-            if cur:
-                pts = np.concatenate(cur)
-                keep = np.r_[True, np.any(np.abs(np.diff(pts, axis=0)) > 1e-12, axis=1)]
-                pts = pts[keep]
-                ends_meet = _same_point(pts[0], pts[-1])
-                is_closed = closed or (len(pts) >= 4 and ends_meet)
-                if is_closed and len(pts) > 1 and ends_meet:
-                    pts = pts[:-1]
-                if len(pts) >= 2:
-                    out.append((pts, bool(is_closed), curved))
-            cur, curved, closed = [], False, False
-
-        def huge(*points: Any) -> bool:
-            # inf and magnitudes beyond MAX_COORD (NaN points are dropped below, as before)
-            return any(q is not None and (abs(q.x) > MAX_COORD or abs(q.y) > MAX_COORD) for q in points)
-
-        for seg in self.segments(el):
-            if huge(seg.start, seg.end, getattr(seg, "control", None), getattr(seg, "control1", None), getattr(seg, "control2", None)):
-                raise InputError(f"{self.name}: {self.where(el)}: coordinate magnitude over {MAX_COORD:.0e}")
-            if isinstance(seg, se.Move):
-                finish()
-                if seg.end is not None:
-                    cur = [np.array([[seg.end.x, seg.end.y]], dtype=float)]
-                continue
-            if isinstance(seg, se.Close):
-                closed = True
-                finish()
-                if seg.end is not None:
-                    cur = []
-                continue
-            if seg.start is None or seg.end is None:
-                continue
-            if not cur:
-                cur = [np.array([[seg.start.x, seg.start.y]], dtype=float)]
-            if isinstance(seg, se.Line):
-                cur.append(np.array([[seg.end.x, seg.end.y]], dtype=float))
-                continue
-            if isinstance(seg, se.QuadraticBezier):
-                p = np.array([[seg.start.x, seg.start.y], [seg.control.x, seg.control.y], [seg.end.x, seg.end.y]])
-                bound = 2 * _norm2(p[0] - 2 * p[1] + p[2])
-            elif isinstance(seg, se.CubicBezier):
-                p = np.array([[seg.start.x, seg.start.y], [seg.control1.x, seg.control1.y], [seg.control2.x, seg.control2.y], [seg.end.x, seg.end.y]])
-                bound = 6 * max(_norm2(p[0] - 2 * p[1] + p[2]), _norm2(p[1] - 2 * p[2] + p[3]))
-            elif isinstance(seg, se.Arc):
-                bound = float(seg.sweep) ** 2 * max(float(seg.rx), float(seg.ry))
-            else:
-                cur.append(np.array([[seg.end.x, seg.end.y]], dtype=float))
-                continue
-            if not math.isfinite(bound):  # a NaN control point: a point to drop, not a curve
-                cur.append(np.array([[seg.end.x, seg.end.y]], dtype=float))
-                continue
-            n = int(min(_MAX_SEGMENT_POINTS, max(1, math.ceil(math.sqrt(bound / (8 * tol))))))
-            t = np.linspace(0.0, 1.0, n + 1)[1:]
-            pts = np.asarray(seg.npoint(t), dtype=float).reshape(-1, 2)
-            cur.append(pts)
-            curved = True
-        finish()
-        return [(p, c, cv) for p, c, cv in out if np.all(np.isfinite(p))]
+        segs = self.segments(el)
+        if too_large(segs, MAX_COORD):
+            raise InputError(f"{self.name}: {self.where(el)}: coordinate magnitude over {MAX_COORD:.0e}")
+        return flatten(segs, tol)
 
     def signature(self, parts: list[_Part], coarse: _Flat) -> _Signature | None:
         """Similarity invariants of ``parts``, flattened relative to their size (see _SIGNATURE_TOLERANCE)."""
@@ -587,7 +539,8 @@ class _Doc:
         if not radius > 0:
             return None
         tol = _SIGNATURE_TOLERANCE * radius
-        sig = _signature(self.flatten(parts, _IDENTITY, tol).paths)
+        # without curves the flattening does not depend on the tolerance: reuse it
+        sig = _signature(self.flatten(parts, _IDENTITY, tol).paths if coarse.curves else coarse.paths)
         if sig is not None:
             sig.tolerance = tol
         return sig
@@ -599,8 +552,6 @@ class _Doc:
         to the segments (arcs included); anything else (skew, non-uniform scale,
         reflection) gives None.
         """
-        import svgelements as se
-
         pieces: list[str] = []
         for part in parts:
             if part.label is not None:
@@ -614,33 +565,7 @@ class _Doc:
             if s == 0 or np.linalg.det(lin) < 0 or not np.allclose(lin, s * np.array([[math.cos(rot), -math.sin(rot)], [math.sin(rot), math.cos(rot)]]), atol=1e-9 * max(1.0, s)):
                 return None
 
-            def pt(p: Any) -> str:
-                q = _apply(m, np.array([[p.x, p.y]], dtype=float))[0]
-                return f"{_fmt(q[0])},{_fmt(q[1])}"
-
-            out: list[str] = []
-            for seg in self.segments(part.el):
-                if isinstance(seg, se.Move):
-                    if seg.end is not None:
-                        out.append("M" + pt(seg.end))
-                elif isinstance(seg, se.Close):
-                    out.append("Z")
-                elif seg.start is None or seg.end is None:
-                    continue
-                elif isinstance(seg, se.Line):
-                    out.append("L" + pt(seg.end))
-                elif isinstance(seg, se.QuadraticBezier):
-                    out.append(f"Q{pt(seg.control)} {pt(seg.end)}")
-                elif isinstance(seg, se.CubicBezier):
-                    out.append(f"C{pt(seg.control1)} {pt(seg.control2)} {pt(seg.end)}")
-                elif isinstance(seg, se.Arc):
-                    large = int(abs(float(seg.sweep)) > math.pi)
-                    sweep = int(float(seg.sweep) > 0)
-                    axis = math.degrees(float(seg.get_rotation()) + rot)
-                    out.append(f"A{_fmt(s * float(seg.rx))},{_fmt(s * float(seg.ry))} {_fmt(axis)} {large},{sweep} {pt(seg.end)}")
-                else:
-                    out.append("L" + pt(seg.end))
-            pieces.append(" ".join(out))
+            pieces.append(path_d(self.segments(part.el), m, rot, s))
         text = " ".join(p for p in pieces if p)
         return text or None
 
@@ -979,16 +904,20 @@ class _Reader:
         self.names: set[str] = set()
         self.elements: list[_Element] = []
         self.region_els: list[tuple[ET.Element, np.ndarray]] = []
-        self._table = np.zeros((0, 5 + _KMAX - 1))  # per kind: see candidate_kinds
+        self._table = np.zeros((16, 5 + _KMAX - 1))  # per kind: see candidate_kinds (rows beyond _rows unused)
         self._rows = 0
+        self._next: dict[str, int] = {}
 
     def unique(self, name: str) -> str:
         if name not in self.names:
             self.names.add(name)
             return name
-        i = 2
+        # the next free number after the last one given for this name (a scan from 2 made
+        # n distinct unnamed shapes cost n^2 / 2 set lookups)
+        i = self._next.get(name, 2)
         while f"{name}-{i}" in self.names:
             i += 1
+        self._next[name] = i + 1
         self.names.add(f"{name}-{i}")
         return f"{name}-{i}"
 
@@ -1132,21 +1061,27 @@ class _Reader:
         drawing of n distinct shapes costs n^2 / 2 full matches (issue 17).
         """
         n = len(self.kinds)
-        if self._rows < n:  # rows for the kinds added since the last call
-            new = [_invariants(k.signature if k.matchable else None) for k in self.kinds[self._rows : n]]
-            self._table = np.concatenate([self._table, np.array(new, dtype=float).reshape(len(new), -1)])
+        if self._rows < n:  # rows for the kinds added since the last call (capacity doubles)
+            if n > len(self._table):
+                grown = np.zeros((2 * n, self._table.shape[1]))
+                grown[: self._rows] = self._table[: self._rows]
+                self._table = grown
+            for i in range(self._rows, n):
+                k = self.kinds[i]
+                self._table[i] = _invariants(k.signature if k.matchable else None)
             self._rows = n
         if n == 0:
             return np.zeros(0, dtype=np.intp)
         row = _invariants(sig)
-        size, radius, gyration, tol, area = self._table[:, :5].T
+        table = self._table[:n]
+        size, radius, gyration, tol, area = table[:, :5].T
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             scale = np.sqrt(sig.size / size) if sig.is_area else sig.size / size
             t = np.maximum(sig.tolerance, scale * tol)
             ok = (area == row[4]) & np.isfinite(size)
             ok &= ~(np.abs(sig.radius - scale * radius) > 2 * t + 0.02 * sig.radius)
             ok &= ~(np.abs(sig.gyration - scale * gyration) > 2 * t + 0.02 * sig.gyration)
-            mk, mo = self._table[:, 5:], row[5:]
+            mk, mo = table[:, 5:], np.array(row[5:])
             ok &= ~(np.abs(mk - mo) > 0.05 + 0.1 * np.maximum(mk, mo)).any(axis=1)
         return np.flatnonzero(ok)
 
