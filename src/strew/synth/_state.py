@@ -58,6 +58,11 @@ class SynthParams:
     yield_window : int
         Horizon elements made in the last this many iterations yield to new elements of
         a larger size class (an extension for several sizes, see ``grow``; 2).
+    noise_floor : float
+        Optimisation moves are shortened by the spread of the element's predictions,
+        by at most this fraction of its collision radius (0.1; 0 turns it off): the
+        texture's own jitter is kept, not averaged away (an extension of §5.2-5.3, see
+        ``_optimize._soft_threshold``).
     """
 
     k: int = 5
@@ -72,6 +77,7 @@ class SynthParams:
     max_failures: int = 3
     check_energy: bool = False
     yield_window: int = 2
+    noise_floor: float = 0.1
 
     def __post_init__(self) -> None:
         if int(self.k) < 1:
@@ -84,6 +90,8 @@ class SynthParams:
             raise InputError(f"relaxation: must be in (0, 1], got {self.relaxation}")
         if not self.seed_separation > 0:
             raise InputError(f"seed_separation: must be positive, got {self.seed_separation}")
+        if not self.noise_floor >= 0:
+            raise InputError(f"noise_floor: must be non-negative, got {self.noise_floor}")
         if not self.kind_cost >= 0:
             raise InputError(f"kind_cost: must be non-negative, got {self.kind_cost}")
 
