@@ -32,13 +32,21 @@ def items(rng: np.random.Generator) -> list[DemoItem]:
     strokes = load_strokes(example_path("grow", "flow_strokes.json"))
     scales = load(example_path("exemplars", "scales.svg"))
     arr = grow(scales, region=Region.rectangle(300, 220), mode="flow", flow=flow_field(strokes), rng=rng)
+    arr = arr.replace(extra={**arr.extra, "guides": _guides(strokes)})  # drawn over the picture
     out.append(DemoItem("grow-flow", "grow: scales following strokes", arr,
                         "Flow mode (§5.3): two wavy strokes, interpolated by radial basis functions, turn the scales."))
     spray = load_strokes(example_path("grow", "spray_path.json"))[0]
     arr = grow(load(example_path("exemplars", "leaves.svg")), spray=spray, spray_radius=30, rng=rng, mode="rotate")
+    arr = arr.replace(extra={**arr.extra, "guides": _guides([spray])})
     out.append(DemoItem("grow-spray", "grow: spray tool", arr, "Only seeds within 30 units of a zigzag path grow (Fig. 1c)."))
     walls = load_strokes(example_path("grow", "boundary_stroke.json"))
     arr = grow(load(example_path("grow", "tiles_near_regular.json")), region=Region.rectangle(300, 220),
                boundary=walls, rng=rng)
+    arr = arr.replace(extra={**arr.extra, "guides": _guides(walls)})
     out.append(DemoItem("grow-boundary", "grow: boundary strokes", arr, "Two strokes stop the growth (Fig. 1f)."))
     return out
+
+
+def _guides(strokes) -> list:
+    """Tool strokes as plain lists for ``extra["guides"]`` (drawn dashed over the picture)."""
+    return [np.asarray(s, dtype=float).reshape(-1, 2).tolist() for s in strokes]

@@ -107,6 +107,7 @@ def to_svg(
     margin: float = 0.02,
     background: str | None = None,
     show_region: bool = True,
+    show_guides: bool = True,
     stroke_width: float | None = None,
 ) -> str:
     """SVG text for an arrangement.
@@ -123,6 +124,10 @@ def to_svg(
         A fill colour for a background rectangle.
     show_region : bool
         Draw the region outline in its own layer.
+    show_guides : bool
+        Draw the tool strokes recorded in ``arr.extra["guides"]`` (a list of ``(m, 2)``
+        polylines, e.g. grow's boundary strokes) in a layer ``strew-guides``, so a
+        picture shows what shaped it. SVG import skips that layer.
     stroke_width : float, optional
         Default outline width in shape units for shapes without one (default: 3% of
         the median shape radius).
@@ -224,6 +229,19 @@ def to_svg(
                 continue
             out.append(f'<use xlink:href="#{ids[k]}" transform="{t}" {" ".join(extra)}/>')
         out.append("</g>")
+    # drawn last: an overlay over the elements
+    guides = arr.extra.get("guides") if show_guides else None
+    if guides:
+        d = " ".join(
+            "M" + " L".join(f"{_num(x)},{_num(y)}" for x, y in np.asarray(g, dtype=float).reshape(-1, 2))
+            for g in guides if len(g) >= 2
+        )
+        gw = max(2 * sw, 0.004 * max(vb[2], vb[3]))  # legible at any zoom of the page
+        out.append(
+            f'<g id="strew-guides" inkscape:groupmode="layer" inkscape:label="guides">'
+            f'<path d={quoteattr(d)} fill="none" stroke="#d0453a" stroke-width="{_num(gw)}" '
+            f'stroke-dasharray="{_num(4 * gw)} {_num(2.5 * gw)}" stroke-linecap="round" stroke-linejoin="round"/></g>'
+        )
     out.append("</svg>")
     return "\n".join(out) + "\n"
 

@@ -588,6 +588,8 @@ class _Doc:
             if _is_region_el(child, self.is_strew):
                 yield ("region", child, m)
                 continue
+            if self.is_strew and child.get("id") == "strew-guides":
+                continue  # tool strokes drawn over a picture (extra["guides"]), not elements
             if el is self.root and self.is_strew and tag == "rect" and self._is_background(child):
                 continue
             hidden = _hidden(child)
