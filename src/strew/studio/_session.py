@@ -226,6 +226,15 @@ class Session:
             return fixed
         prep = st.prep
         src = st.src
+        # the same state, operation and region give the same columns (this runs several
+        # times per stroke segment: status, scene message, counts)
+        op = self._op
+        key = (st.n, st.iterations, float(st.pos.sum()), int(src.sum()), len(self.boundary_strokes),
+               None if op is None else (op["n0"], op.get("it0"), len(op.get("dropped", ()))))
+        refs = (st, prep, self.fixed, self.region)  # held by the cache, so compared by identity
+        cached = self.__dict__.get("_arrays_cache")
+        if cached is not None and cached[0] == key and all(a is b for a, b in zip(cached[2], refs)):
+            return cached[1]
         show = ~np.asarray(prep.void, bool)[src]  # void elements are hidden (§5.6)
         if self._op is not None and st.n > self._op["n0"]:
             show[self._op["n0"]:] &= ~self._live_hidden(self._op["n0"], thinned=True)
@@ -239,7 +248,9 @@ class Session:
             "r": np.round(prep.rotation[src], 4),
             "s": np.round(prep.scale[src], 4),
         }
-        return {c: np.concatenate([fixed[c], live[c]]) for c in fixed}
+        out = {c: np.concatenate([fixed[c], live[c]]) for c in fixed}
+        self._arrays_cache = (key, out, refs)
+        return out
 
     def scene_message(self, *, full: bool = False) -> dict[str, Any] | None:
         """The change of the scene since the last message: ``replace`` or ``patch``.
@@ -288,20 +299,45 @@ class Session:
         if n == 0:
             return out
         radii = _radii(arr)
-        pts = shapely.points(arr.xy)
+        x, y = arr.x, arr.y
+        inner, band = self._bounds_zones(float(radii.max()))
         out |= ~self.region.contains(arr.xy)
-        near = ~out & (self.region.distance_to_boundary(arr.xy) < radii)
-        if near.any():
-            idx = np.flatnonzero(near)
+        # centres in the region eroded by the widest bounding radius are wholly inside; the
+        # rest (a band along the border) get the exact test
+        near = np.flatnonzero(~out & ~shapely.contains_xy(inner, x, y))
+        if len(near):
             tol = 1e-9 * max(1.0, *map(abs, self.region.bounds))  # as SynthState.to_arrangement(clip=True)
-            out[idx[~self.region.contains_geometry(arr.select(idx).geometry, tolerance=tol)]] = True
-        if self.boundary_strokes:
-            walls = shapely.MultiLineString([b for b in self.boundary_strokes if len(b) > 1])
-            near = ~out & (shapely.distance(walls, pts) < radii)
-            if near.any():
-                idx = np.flatnonzero(near)
-                out[idx[shapely.intersects(arr.select(idx).geometry, walls)]] = True
+            out[near[~self.region.contains_geometry(arr.select(near).geometry, tolerance=tol)]] = True
+        if band is not None:
+            walls = band[1]
+            near = np.flatnonzero(~out & shapely.contains_xy(band[0], x, y))
+            if len(near):
+                out[near[shapely.intersects(arr.select(near).geometry, walls)]] = True
         return out
+
+    def _bounds_zones(self, reach: float) -> tuple[Any, Any]:
+        """For :meth:`_out_of_bounds`: the region eroded by ``reach`` and, with boundary
+        strokes, (the strokes widened by ``reach``, the strokes), both prepared; cached."""
+        key = (self.region, len(self.boundary_strokes), self.boundary_strokes[-1] if self.boundary_strokes else None)
+        cache = self.__dict__.setdefault("_zones", {})
+        old = cache.get("key")
+        if old is None or len(old) != len(key) or not all(a is b for a, b in zip(old, key)):  # held, so compared by identity
+            cache.clear()
+            cache["key"] = key
+        reach = float(np.ceil(reach * 1.01 * 64.0) / 64.0)  # a few widths share one entry
+        if reach not in cache:
+            inner = self.region.geometry.buffer(-reach)
+            shapely.prepare(inner)
+            band = None
+            lines = [b for b in self.boundary_strokes if len(b) > 1]
+            if lines:
+                walls = shapely.MultiLineString(lines)
+                near = walls.buffer(reach)
+                shapely.prepare(near)
+                shapely.prepare(walls)
+                band = (near, walls)
+            cache[reach] = (inner, band)
+        return cache[reach]
 
     def _live_hidden(self, n0: int, *, thinned: bool) -> np.ndarray:
         """(st.n - n0,) bool: synthesis elements from index ``n0`` on that the operation
