@@ -36,6 +36,8 @@ def _region(ex, scale=2.2):
         ("rows_noisy", "fixed"),
         ("stones", "fixed"),
         ("two_sizes", "fixed"),
+        ("clusters", "fixed"),
+        ("rings", "fixed"),
         ("rows_noisy", "rotate"),
         ("bricks", "rotate"),
         ("scales", "rotate"),
@@ -180,3 +182,53 @@ def test_spray_never_places_an_element_across_the_region_edge():
     out = g.grow()
     assert len(out) > 10
     assert np.all(region.contains_geometry(out.geometry, tolerance=1e-9))
+
+
+def test_only_clustered_exemplars_grow_hubs_first():
+    from strew.grow._clusters import satellite_structure
+
+    for name in ("hex_lattice", "bricks", "stones", "two_sizes", "three_sizes", "stripes", "sparse_voids"):
+        assert satellite_structure(make_exemplar(name)) is None, name
+    for name, hub in (("clusters", "disc"), ("rings", "hub")):
+        for v in (None, 5):
+            ex = make_exemplar(name, rng=v)
+            sat = satellite_structure(ex)
+            assert sat is not None and ex.kinds[sat.hub] == hub
+            # every satellite belongs to one hub
+            m = np.concatenate(sat.members)
+            assert len(np.unique(m)) == len(m) and np.all(ex.kind[m] != sat.hub)
+
+
+@pytest.mark.parametrize("name, variant, mode", [("clusters", 3, "fixed"), ("rings", 9, "fixed"), ("rings", 5, "rotate")])
+def test_clustered_variants_nobody_tuned_on_stay_clustered(name, variant, mode):
+    # hubs grown through the whole exemplar's connectivity came closer than the exemplar
+    # ever has them and left satellites in scatter (clusters: g[disc,disc], g[disc,dot],
+    # nn[dot>disc]; rings: five to eight metrics failed)
+    ex = make_exemplar(name, rng=variant)
+    region = _region(ex, 2.5)
+    out = grow(ex, region=region, mode=mode, rng=2)
+    assert len(out) >= 4 * len(ex)
+    assert np.all(region.contains_geometry(out.geometry, tolerance=1e-9))
+    from strew.metrics import summary
+
+    assert summary(out)["overlap_pairs"] == 0
+    rep = fidelity(ex, out, eq5=False, local=False)
+    assert rep.faithful, rep.failures
+
+
+def test_clustered_growth_stops_at_count_with_its_connectivity():
+    ex = make_exemplar("clusters")
+    a = grow(ex, region=_region(ex), count=100, rng=4, connectivity=True)
+    b = grow(ex, region=_region(ex), count=100, rng=4, connectivity=True)
+    assert len(a) == 100
+    assert np.array_equal(a.xy, b.xy) and np.array_equal(a.kind, b.kind)
+    e = np.asarray(a.extra["connectivity"]["edges"])
+    assert e.min() >= 0 and e.max() < 100
+    # each dot is joined to a disc, at the exemplar's disc-to-dot distance
+    dot = np.asarray(a.kind_names) == "dot"
+    assert dot.any() and (~dot).any()
+    linked = e[dot[e[:, 0]] != dot[e[:, 1]]]
+    assert set(linked.ravel().tolist()) >= set(np.flatnonzero(dot).tolist())
+    d = np.hypot(*(a.xy[linked[:, 0]] - a.xy[linked[:, 1]]).T)
+    ring = ex.shapes["disc"].radius + ex.shapes["dot"].radius + 1.5  # the suite's ring_gap
+    assert np.all(np.abs(d / ring - 1) < 0.1)

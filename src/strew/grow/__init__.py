@@ -259,6 +259,9 @@ def _grow(
 
     check_work("count" if count is not None else "region", count=count, region=region, per_element=element_area(ref.exemplar))
     kinds = ref.exemplar.kinds
+    # hubs first, then their satellites, for clustered exemplars (:mod:`._clusters`), unless
+    # the user sets priorities or edits the connectivity
+    clusters = priority is None and not isinstance(exemplar, Reference) and not list(flips)
     if priority is None:
         priority = size_priority(ref.exemplar)
     prio: dict[str, float] = {}
@@ -306,6 +309,7 @@ def _grow(
         relax_every=int(relax_every),
         avoid_overlaps=bool(avoid_overlaps),
         connectivity=bool(connectivity),
+        clusters=clusters,
     )
     meta = {"method": "grow"}
     return grow_reference(ref, params, rng=rng, progress=progress, should_cancel=should_cancel, meta=meta)

@@ -21,6 +21,9 @@ Departures from the paper (each explained where it is made):
   placed only where its larger neighbour can be (``lean_ok``); an element is not placed
   nearer one of another size than the reference's smallest distance between the two
   less that distance's spread below its median (``pair_close``: pebbles crowded stones);
+  in fixed mode the same holds for two elements of one kind;
+- clustered exemplars (hubs ringed by satellites) grow their hubs alone and copy a
+  whole reference cluster around each (:mod:`strew.grow._clusters`, §5.1 after Wong);
 - elements lie wholly inside the region and off boundary strokes, and never overlap;
 - grid cells come from both the spacing and the element size.
 """
@@ -42,6 +45,7 @@ from .._rng import as_rng
 from ..arrangement import Arrangement
 from ..region import Region
 from ._analysis import Reference, size_priority
+from ._clusters import grow_clusters, satellite_structure
 from ._match import MODES, W1, W2, W3, match_references, order_target
 from ._relax import relax_positions
 
@@ -91,6 +95,13 @@ class GrowParams:
     fit_reach: float = 0.5
     #: flow mode: the largest turn of an element's frame from the flow direction
     flow_max_turn: float = math.pi / 18
+    #: clustered exemplars grow their hubs first, then each hub's satellites
+    #: (:mod:`strew.grow._clusters`); off with a user's priorities or edge flips
+    clusters: bool = False
+    #: keep elements of one kind as far apart as the reference's smallest distance
+    #: between two of them, less its spread (see ``_Grower.pair_close``); None: in
+    #: fixed mode only
+    own_kind_close: bool | None = None
 
 
 def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
@@ -165,17 +176,26 @@ class _Grower:
         # size levels of the kinds (see lean_ok); none when all are of about one size
         lv = size_priority(ex)
         self.size_level = np.array([lv.get(k, 0.0) for k in ex.kinds])
-        # the closest an element may be placed to one of a kind of another size (see
-        # place): the reference's smallest distance between the two, less its spread
-        # below the median, at least pair_short
+        # the closest an element may be placed to one of a kind of another size, or of
+        # its own kind (see place): the reference's smallest distance between the two,
+        # less its spread below the median, at least pair_short. For one kind the spread
+        # is taken as at least 5% of that distance: a near-perfect lattice has almost
+        # none. The rule for one kind applies in fixed mode and to the hubs of
+        # clustered exemplars (``own_kind_close``): in rotation mode each element's turn
+        # moves its ring, and bricks refused this way grew less regular rows.
+        # (§5.4 (b) merges only within l_short, half the shortest edge: sparse kinds such
+        # as cluster hubs then came to half the distance the reference ever has them,
+        # and stones and stripes crowded their own kind: nn failed by a few percent.)
         self.pair_close = self.pair_short.copy()
         for k1, k2 in np.ndindex(self.n_kinds, self.n_kinds):
-            if self.size_level[k1] == self.size_level[k2] or not dist_to[k2]:
+            own = p.own_kind_close if p.own_kind_close is not None else p.mode == "fixed"
+            if (k1 == k2 and not own) or (k1 != k2 and self.size_level[k1] == self.size_level[k2]) or not dist_to[k2]:
                 continue
             m = dist_to[k2][k1]
             if len(m) >= 3:
                 lo, med = float(m.min()), float(np.median(m))
-                self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - (med - lo))
+                spread = med - lo if k1 != k2 else max(med - lo, 0.05 * lo)
+                self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - spread)
         self.pair_close = np.maximum(self.pair_close, self.pair_close.T)
         self.pair_close_max = self.pair_close.max(axis=1)
         # a kind "leans" on larger ones when every element of it in the reference has a
@@ -1303,6 +1323,11 @@ def grow_reference(
         raise InputError(f"--start {start[0]:g},{start[1]:g}: lies outside the region")
     total = params.count
     rep = Reporter(progress, should_cancel, total=total, message="growing")
+    sat = satellite_structure(ref.exemplar) if params.clusters and params.spray is None else None
+    if sat is not None:
+        out = grow_clusters(ref.exemplar, sat, params, g.rng, (float(start[0]), float(start[1])), rep, meta or {})
+        rep.done(len(out))
+        return out
     g.run((float(start[0]), float(start[1])), rep)
     rep.done(len(g.order))
     return g.result(meta or {})

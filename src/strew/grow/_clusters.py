@@ -1,0 +1,260 @@
+"""Hubs first, then their satellites: growth of clustered exemplars (§5.1 after Wong et al.).
+
+Some exemplars are made of clusters: a sparse kind (the *hub*: a large disc, the centre
+of a rosette) with elements of the other kinds around each hub at about one distance
+(dots ringed around the disc, wedge tiles around the rosette's centre). §5.1 grows
+"the larger elements at first and [fills] spaces with the smaller elements later"
+(Wong et al.), through seed priorities.
+
+Departure from the paper (§5.1, §5.4): for such exemplars the growth of §5 runs on the
+hubs alone (their own Delaunay connectivity, §4), and each grown hub then takes the
+satellites of the reference hub it copies, turned by the hub's frame (§5.3), as its
+1-ring would give them. Grown through the Delaunay connectivity of the whole exemplar,
+the long edges between neighbouring clusters carry the spacing of the hubs: their noise
+added up along the growth, hubs came closer than the exemplar ever has them and
+satellites were left in scatter where a hub could not follow (the fidelity suite's
+``clusters`` failed g[disc,disc], g[disc,dot] and nn[dot>disc]; ``rings`` failed five to
+eight metrics). Growing the hubs on their own keeps their spacing (the suite's hubs
+alone are faithful on every seed), and copying each hub's ring keeps every cluster
+whole.
+
+An exemplar is read as clustered (:func:`satellite_structure`) only when every kind but
+one sits at about one distance from its nearest element of that one kind, that kind is
+sparse against that distance, and outnumbered.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..arrangement import Arrangement
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .._progress import Reporter
+    from ._growth import GrowParams
+
+__all__ = ["Satellites", "satellite_structure", "grow_clusters"]
+
+#: a kind is a satellite of the hub kind when 90% of its elements have their nearest hub
+#: within this factor of the median distance (the same test as ``_growth.LEAN_SPREAD``)
+SAT_SPREAD = 1.15
+#: ... the hubs' median nearest-hub distance is at least this many times that distance
+HUB_SPARSE = 2.0
+#: ... and it has at least this many elements per hub
+SAT_PER_HUB = 1.5
+#: a satellite belongs to its nearest hub when within this factor of its kind's median
+SAT_REACH = 1.5
+
+
+@dataclass(frozen=True)
+class Satellites:
+    """The cluster structure of an exemplar (see :func:`satellite_structure`).
+
+    Attributes
+    ----------
+    hub : int
+        The hub kind (an index into ``exemplar.kinds``).
+    hubs : (h,) int
+        Exemplar indices of the hubs.
+    members : list of (m_i,) int
+        For each hub, the exemplar indices of its satellites.
+    complete : (h,) bool
+        Hubs far enough from the exemplar's frame that none of their satellites was cut off.
+    """
+
+    hub: int
+    hubs: np.ndarray
+    members: list[np.ndarray]
+    complete: np.ndarray
+
+
+def satellite_structure(ex: Arrangement) -> Satellites | None:
+    """The hubs and satellites of a clustered exemplar, or None when it is not one."""
+    from scipy.spatial import cKDTree
+
+    kinds = [k for k in range(len(ex.kinds)) if np.count_nonzero(ex.kind == k) >= 3]
+    if len(kinds) < 2 or len(kinds) != len(np.unique(ex.kind)):
+        return None
+    for hub in kinds:
+        hubs = np.flatnonzero(ex.kind == hub)
+        others = np.flatnonzero(ex.kind != hub)
+        if len(others) < SAT_PER_HUB * len(hubs):
+            continue
+        d_hh = cKDTree(ex.xy[hubs]).query(ex.xy[hubs], k=2)[0][:, 1]
+        d, q = cKDTree(ex.xy[hubs]).query(ex.xy[others])
+        reach = np.zeros(len(ex.kinds))
+        ok = True
+        for k in kinds:
+            if k == hub:
+                continue
+            dk = d[ex.kind[others] == k]
+            med = float(np.median(dk))
+            if not (med > 0 and np.percentile(dk, 90) <= SAT_SPREAD * med and np.median(d_hh) >= HUB_SPARSE * med):
+                ok = False
+                break
+            reach[k] = SAT_REACH * med
+        if not ok:
+            continue
+        mine = d <= reach[ex.kind[others]]
+        members = [others[mine & (q == i)] for i in range(len(hubs))]
+        complete = np.ones(len(hubs), dtype=bool)
+        if ex.region is not None:
+            complete = ex.region.distance_to_boundary(ex.xy[hubs]) >= float(reach.max())
+        if not complete.any():
+            complete[:] = True
+        return Satellites(hub, hubs, members, complete)
+    return None
+
+
+def _jitter_color(base: Any, amt: float, rng: np.random.Generator) -> Any:
+    from ._growth import _parse_hex
+
+    if amt <= 0:
+        return base
+    rgb = _parse_hex(base)
+    if rgb is None:
+        return base
+    f = 1.0 + float(rng.uniform(-amt, amt))
+    out = [min(1.0, max(0.0, v * f)) for v in rgb]
+    return "#" + "".join(f"{int(round(v * 255)):02x}" for v in out)
+
+
+def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.random.Generator, start: tuple[float, float], rep: Reporter, meta: dict[str, Any]) -> Arrangement:
+    """Grow the hubs (§5 on the hub kind alone), then give each hub its reference's satellites.
+
+    Parameters
+    ----------
+    ex : Arrangement
+        The whole exemplar.
+    sat : Satellites
+        Its cluster structure.
+    params : GrowParams
+        As for :func:`strew.grow._growth.grow_reference`; ``count`` counts hubs and
+        satellites together.
+    """
+    from ._analysis import analyze
+    from ._growth import ELEMENT, _Grower
+
+    hx = ex.select(ex.kind == sat.hub)
+    href = analyze(hx)
+    hp = replace(params, count=None, priority={}, own_kind_close=True, start_kind=params.start_kind if params.start_kind in (-1, sat.hub) else sat.hub)
+    g = _Grower(href, hp, rng)
+    g.begin(start)
+    complete = np.flatnonzero(sat.complete)
+    per_hub = float(np.mean([len(sat.members[i]) for i in complete]))
+    base = ex.columns.get("color")
+    want_color = params.jitter_color > 0 or base is not None
+
+    def color_of(r: int) -> Any:
+        c = base[r] if base is not None and base.ndim == 1 else None
+        if c is None:
+            c = ex.shapes[ex.kinds[ex.kind[r]]].style.get("fill")
+        return _jitter_color(c, params.jitter_color, rng) if want_color else None
+
+    # the output, in placement order: each hub, then its satellites
+    kind: list[int] = []
+    xs: list[float] = []
+    ys: list[float] = []
+    rots: list[float] = []
+    scls: list[float] = []
+    subs: list[int] = []
+    colors: list[Any] = []
+    grower_of: list[int] = []  # the hub's grower index, -1 for satellites
+    hub_of: list[int] = []  # the output index of each satellite's hub
+    done = 0
+    count = params.count
+    target = hp.max_elements if count is None else max(1, math.ceil(count / (1.0 + per_hub)))
+    while True:
+        g.advance(rep, target)
+        g.settle()
+        for h in g.order[done:]:
+            if g.state[h] != ELEMENT:
+                continue
+            g.fixed[h] = True  # Eq. 6: a hub with its satellites holds its position
+            r_hub = int(sat.hubs[int(g.sub[h])])
+            hi = len(kind)
+            kind.append(sat.hub)
+            x, y = g.xy[h]
+            xs.append(x)
+            ys.append(y)
+            rots.append(float(g.rot[h]))
+            scls.append(float(g.scl[h]))
+            subs.append(r_hub)
+            colors.append(g.color[h])
+            grower_of.append(h)
+            hub_of.append(-1)
+            # the satellites of any whole cluster of the reference (none cut off by its
+            # frame), drawn at random: a hub's ring does not depend on its neighbours
+            # among the hubs, and the few interior hubs the hub growth copies (§4 drops
+            # those on the frame) would repeat a handful of rings, whose turns then
+            # repeat between neighbouring clusters (rings: orientation.relative failed)
+            src_i = int(complete[rng.integers(len(complete))])
+            src = int(sat.hubs[src_i])
+            m = sat.members[src_i]
+            th = float(g.frame[h])
+            c, s = math.cos(th), math.sin(th)
+            off = ex.xy[m] - ex.xy[src]
+            for q, r in enumerate(m.tolist()):
+                k = int(ex.kind[r])
+                px = x + c * off[q, 0] - s * off[q, 1]
+                py = y + s * off[q, 0] + c * off[q, 1]
+                rot = float(ex.rotation[r]) + th
+                scale = float(ex.scale[r])
+                if params.jitter_rotation > 0:
+                    rot += float(rng.uniform(-params.jitter_rotation, params.jitter_rotation))
+                if params.jitter_scale > 0:
+                    scale *= float(1.0 + rng.uniform(-params.jitter_scale, params.jitter_scale))
+                if not g.in_domain(px, py) or g.crosses_boundary((x, y), (px, py)):
+                    continue
+                geom = g.element_geometry(k, px, py, rot, scale)
+                if not g.fits_domain(geom):
+                    continue
+                if params.avoid_overlaps and g.overlaps_any(geom, k, px, py, scale):
+                    continue
+                g.add_obstacle(px, py, geom, g.areal[k], float(g.kind_radius[k]) * scale)
+                kind.append(k)
+                xs.append(px)
+                ys.append(py)
+                rots.append(rot)
+                scls.append(scale)
+                subs.append(r)
+                colors.append(color_of(r))
+                grower_of.append(-1)
+                hub_of.append(hi)
+        done = len(g.order)
+        if count is None or len(kind) >= count or not g.heap:
+            break
+        target = done + max(1, math.ceil((count - len(kind)) / (1.0 + per_hub)))
+    n = len(kind) if count is None else min(count, len(kind))
+    sub = np.asarray(subs[:n], dtype=np.int64)
+    columns: dict[str, Any] = {"sub_id": sub}
+    if want_color:
+        columns["color"] = colors[:n]
+    for name, col in ex.columns.items():
+        if name in ("sub_id", "color"):
+            continue
+        a = np.asarray(col)
+        if a.ndim >= 1 and len(a) == len(ex):
+            columns[name] = a[sub].copy()
+    extra: dict[str, Any] = {}
+    if params.connectivity:
+        out_of = {h: i for i, h in enumerate(grower_of[:n]) if h >= 0}
+        edges = {tuple(sorted((out_of[a], out_of[b]))) for a, b in g.edges if a in out_of and b in out_of}
+        edges |= {(hub_of[i], i) for i in range(n) if hub_of[i] >= 0}
+        extra["connectivity"] = {"count": int(n), "edges": [list(e) for e in sorted(edges)]}
+    return Arrangement(
+        ex.shapes,
+        np.asarray(kind[:n], dtype=np.int64),
+        np.asarray(xs[:n]),
+        np.asarray(ys[:n]),
+        np.asarray(rots[:n]),
+        np.asarray(scls[:n]),
+        columns=columns,
+        region=params.region,
+        meta=meta,
+        extra=extra,
+    )
