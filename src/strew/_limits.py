@@ -40,6 +40,7 @@ __all__ = [
     "check_elements",
     "check_memory",
     "check_file",
+    "check_decompressed",
     "check_paths",
     "check_coordinates",
     "check_work",
@@ -167,6 +168,13 @@ def check_text(text: str | bytes, what: str) -> None:
     lim = get_limit("file_size")
     if len(text) > lim:
         raise InputError(f"{what}: {_fmt(len(text))} bytes, over the limit of {_fmt(lim)} bytes ({_how_to_raise('file_size')})")
+
+
+def check_decompressed(size: int, what: str) -> None:
+    """Refuse compressed input (``.svgz``) that inflates past the ``file_size`` limit."""
+    lim = get_limit("file_size")
+    if size > lim:
+        raise InputError(f"{what}: decompresses to over {_fmt(lim)} bytes, the file size limit ({_how_to_raise('file_size')})")
 
 
 def check_paths(count: int, what: str) -> None:

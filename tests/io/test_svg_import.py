@@ -187,19 +187,27 @@ def test_symbol_viewbox_scales_to_the_use_size():
     assert_same_geometry(arr.geometry[0], shapely.box(100, 0, 120, 20), 1e-9)
 
 
-def test_hidden_layer_is_skipped_hidden_object_is_void():
+def test_hidden_layer_is_read_and_marked_or_skipped_hidden_object_is_void():
     svg = (
         HEAD + '<g inkscape:groupmode="layer" style="display:none"><rect width="5" height="5"/></g>'
         '<rect x="10" width="5" height="5"/><rect x="20" width="5" height="5" style="display:none"/></svg>'
     )
-    arr = read_svg(svg)
+    arr = read_svg(svg)  # default: hidden="include" (issue 22: 331 -> 221 elements was data loss)
+    assert len(arr) == 3
+    assert arr["hidden"].tolist() == [True, False, False]
+    assert arr["void"].tolist() == [False, False, True]
+    assert arr.x.tolist() == pytest.approx([2.5, 12.5, 22.5])
+    arr = read_svg(svg, hidden="skip")  # a sketch or reference layer, left out
     assert len(arr) == 2
     assert arr["void"].tolist() == [False, True]
     assert arr.x.tolist() == pytest.approx([12.5, 22.5])
+    with pytest.raises(InputError, match="hidden: expected one of include, skip"):
+        read_svg(svg, hidden="maybe")
 
 
 def test_missing_clone_target_is_named():
-    with pytest.raises(InputError, match="missing #nothing"):
+    # nothing else to read: the 'no shapes' error names the skipped clone
+    with pytest.raises(InputError, match="no shapes found.*missing #nothing"):
         read_svg(HEAD + '<use xlink:href="#nothing"/></svg>')
 
 

@@ -22,7 +22,7 @@ from ._pandas import from_pandas, to_geopandas, to_pandas
 __all__ = ["to_pandas", "from_pandas", "to_geopandas", "load", "save", "save_many", "encode", "load_shapes", "load_region", "atomic_write", "OUTPUT_FORMATS", "check_output_path"]
 
 OUTPUT_FORMATS = (".json", ".svg", ".png")
-INPUT_FORMATS = (".json", ".svg")
+INPUT_FORMATS = (".json", ".svg", ".svgz")
 
 
 def _suffix(path: str | os.PathLike[str], allowed: tuple[str, ...], what: str) -> str:

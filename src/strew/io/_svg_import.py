@@ -1,4 +1,4 @@
-"""SVG import: exemplars, shape libraries and regions from SVG, parsed with svgelements.
+"""SVG import: exemplars, shape libraries and regions from SVG (or gzip-compressed ``.svgz``).
 
 Three entry points share one reading of the document:
 
@@ -9,17 +9,24 @@ Three entry points share one reading of the document:
 
 How elements and kinds are found
 --------------------------------
-The XML tree is walked with :mod:`xml.etree.ElementTree`; svgelements parses path data,
-basic shapes and transforms. Curves are flattened here (not by svgelements) so that the
-largest deviation *after* all transforms is at most ``tolerance`` user units.
+The XML tree is walked with :mod:`xml.etree.ElementTree`; path data, basic shapes and
+transforms are read into arrays by :mod:`._svg_flatten` (svgelements' geometry, without
+its per-segment objects; svgelements itself reads only unusual syntax). Curves are
+flattened so that the largest deviation *after* all transforms is at most ``tolerance``
+user units. A ``.svgz`` file (gzip) is inflated first, within the same ``file_size``
+limit as a plain file (:mod:`strew._limits`), so a gzip bomb is refused.
 
 *Elements* are the objects drawn outside ``<defs>``: every ``<use>`` (a clone), every
 basic shape or path, and every group that is one object. The root, Inkscape layers
 (``inkscape:groupmode="layer"``), ``<a>`` and ``<switch>`` are containers; a plain ``<g>``
 is one object when it carries ``data-kind`` or ``inkscape:label``, or when its children
 touch one another (a leaf drawn as blade + vein); a group of separate objects, or one
-holding clones, is a container. Elements inside a hidden (``display:none``) container are
-skipped; a hidden element itself counts, with ``void = True`` (strew exports void elements so).
+holding clones, is a container. Objects inside a hidden (``display:none``) layer or group
+are read and marked in a ``hidden`` column (``hidden="include"``, the default: artists
+hide a layer while editing the others), or left out (``hidden="skip"``: a sketch or a
+reference); a hidden element itself counts, with ``void = True`` (strew exports void
+elements so). A ``<use>`` of a missing id draws nothing: it is skipped with one
+:class:`SVGImportWarning` naming it, as Inkscape and browsers skip it.
 
 *Kinds* come, in this order, from
 
@@ -28,9 +35,14 @@ skipped; a hidden element itself counts, with ``void = True`` (strew exports voi
    full transform (parent groups, the use's own transform and its ``x``/``y``) gives the
    element's x, y, rotation and scale;
 2. ``data-kind``, else ``inkscape:label``, else an id that is not an editor's automatic
-   one (``path123``), with a trailing number dropped (``stone-3`` -> ``stone``);
+   one (``path123``), with a trailing number dropped (``stone-3`` -> ``stone``); else the
+   ``data-kind`` of the layer or group around it (strew writes one layer per kind, so an
+   unlinked clone in it keeps its kind even after its symbol is cleaned away);
 3. identical geometry: objects equal up to a similarity transform (translation, rotation,
-   uniform scale) share a kind, and their rotation and scale are recovered. The scale
+   uniform scale) share a kind, and their rotation and scale are recovered. An object
+   is also matched against the symbols no clone has used yet: Inkscape's *Unlink Clone*
+   turns a ``<use>`` into a ``<g>`` holding copies of the symbol's paths, and that
+   object keeps the symbol's kind and the clone's pose (issue 22). The scale
    comes from the area (or length) ratio and the rotation from the phase of the complex
    moments ``c_k = integral (z - centroid)^k dA``, which turn by ``k t`` under a rotation
    by ``t``; each candidate pose is then verified by the largest outline distance both
@@ -52,10 +64,12 @@ the kind's shape mirrored in its local x axis, so that its geometry stays exact.
 
 from __future__ import annotations
 
+import gzip
 import json
 import math
 import os
 import re
+import warnings
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
@@ -66,14 +80,21 @@ import numpy as np
 import shapely
 
 from .._errors import Cancelled, InputError
-from .._limits import MAX_COORD, check_file, check_paths, check_text
+from .._limits import MAX_COORD, check_decompressed, check_file, check_paths, check_text, get_limit
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
 from ._svg_flatten import EMPTY as _EMPTY
 from ._svg_flatten import Segments, flatten, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
 
-__all__ = ["read_svg", "read_svg_shapes", "read_svg_region"]
+__all__ = ["read_svg", "read_svg_shapes", "read_svg_region", "SVGImportWarning", "HIDDEN_CHOICES"]
+
+#: What to do with objects in hidden (``display:none``) layers and groups.
+HIDDEN_CHOICES = ("include", "skip")
+
+
+class SVGImportWarning(UserWarning):
+    """Something in an SVG was skipped (a ``<use>`` of a missing id)."""
 
 SVG_NS = "http://www.w3.org/2000/svg"
 XLINK_NS = "http://www.w3.org/1999/xlink"
@@ -243,9 +264,14 @@ class _Flat:
 
 
 class _Doc:
-    def __init__(self, source: Any, tolerance: float, should_cancel: Callable[[], bool] | None = None) -> None:
+    def __init__(self, source: Any, tolerance: float, should_cancel: Callable[[], bool] | None = None, hidden: str = "include") -> None:
         if should_cancel is not None and not callable(should_cancel):
             raise InputError(f"should_cancel: must be callable, got {type(should_cancel).__name__}")
+        if hidden not in HIDDEN_CHOICES:
+            raise InputError(f"hidden: expected one of {', '.join(HIDDEN_CHOICES)}, got {hidden!r}")
+        self.hidden = hidden
+        # <use>s whose target is missing: skipped, and named in one warning (issue 22)
+        self.dangling: list[str] = []
         self.should_cancel = should_cancel
         if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float)) or not (math.isfinite(tolerance) and tolerance > 0):
             raise InputError(f"tolerance: must be a positive number, got {tolerance!r}")
@@ -357,14 +383,31 @@ class _Doc:
             raise InputError(f"{self.name}: {self.where(el)}: {attr}={text!r} is not finite")
         return v
 
-    def target(self, use: ET.Element) -> ET.Element:
+    def target(self, use: ET.Element) -> ET.Element | None:
+        """The element a ``<use>`` refers to; None (recorded in :attr:`dangling`) when it is missing.
+
+        A clone of something that is not there draws nothing in a browser or Inkscape, so
+        it is skipped with a warning rather than rejecting the file (Inkscape's own
+        ``AigaSymbols.svg`` has one).
+        """
         ref = _href(use)
-        if not ref:
-            raise InputError(f"{self.name}: {self.where(use)}: <use> without href")
-        tgt = self.ids.get(ref)
+        tgt = self.ids.get(ref) if ref else None
         if tgt is None:
-            raise InputError(f"{self.name}: {self.where(use)}: <use> refers to missing #{ref}")
+            what = f"{self.where(use)} without href" if not ref else f"{self.where(use)} refers to missing #{ref}"
+            if what not in self.dangling:
+                self.dangling.append(what)
         return tgt
+
+    def warn_dangling(self) -> None:
+        """One warning naming the skipped ``<use>`` elements, if any."""
+        if self.dangling:
+            n = len(self.dangling)
+            listed = "; ".join(self.dangling[:3]) + ("; ..." if n > 3 else "")
+            warnings.warn(f"{self.name}: skipped {n} <use> element{'s' if n > 1 else ''} whose target is missing: {listed}", SVGImportWarning, stacklevel=4)
+
+    def missing_note(self) -> str:
+        """For a 'no shapes found' message: the clones that were skipped."""
+        return f"; skipped: {'; '.join(self.dangling[:3])}" if self.dangling else ""
 
     def use_matrix(self, use: ET.Element, outer: np.ndarray) -> np.ndarray:
         """Map from the referenced element's coordinates to ``outer``'s frame."""
@@ -397,15 +440,18 @@ class _Doc:
         return np.array([[k, 0.0, (vw - k * bw) / 2 - k * bx], [0.0, k, (vh - k * bh) / 2 - k * by]])
 
     # -- parts --------------------------------------------------------------------------
-    def parts(self, el: ET.Element, m: np.ndarray, props: dict[str, str], stack: tuple[int, ...] = ()) -> list[_Part]:
-        """Drawable leaves below ``el`` (clones expanded); ``m`` maps ``el``'s parent frame."""
+    def parts(self, el: ET.Element, m: np.ndarray, props: dict[str, str], stack: tuple[int, ...] = (), show: bool = False) -> list[_Part]:
+        """Drawable leaves below ``el`` (clones expanded); ``m`` maps ``el``'s parent frame.
+
+        ``show`` reads ``el`` itself as if shown (a hidden object read as hidden or void).
+        """
         tag = _local(el.tag)
         if tag is None or tag in _SKIP_TAGS:  # a <symbol> is drawn only through a <use>
             return []
         own = _props(el)
         if tag == "circle" and el.get("data-label") is not None:
             return [_Part(el, _compose(m, self.transform(el)), props, label=el.get("data-label"))]
-        if own.get("display", "").strip() == "none":
+        if own.get("display", "").strip() == "none" and not show:
             return []
         props = {**props, **{k: v for k, v in own.items() if k != "display"}}
         if tag in _SHAPE_TAGS:
@@ -414,6 +460,8 @@ class _Doc:
             if id(el) in stack:
                 raise InputError(f"{self.name}: {self.where(el)}: <use> refers to itself")
             tgt = self.target(el)
+            if tgt is None:
+                return []
             inner = self.use_matrix(el, m)
             if _local(tgt.tag) == "symbol":
                 inner = _compose(inner, self.symbol_viewport(el, tgt))
@@ -423,6 +471,16 @@ class _Doc:
             inner = _compose(m, self.transform(el))
             return [p for child in el for p in self.parts(child, inner, props, stack)]
         return []
+
+    def group_key(self, el: ET.Element) -> str | None:
+        """``data-kind`` of the nearest layer or group around ``el`` (strew's kind layers carry one)."""
+        node = self.parent.get(el)
+        while node is not None and node is not self.root:
+            key = node.get("data-kind")
+            if key is not None and key.strip():
+                return key.strip()
+            node = self.parent.get(node)
+        return None
 
     def inherited_props(self, el: ET.Element) -> dict[str, str]:
         chain = []
@@ -570,14 +628,17 @@ class _Doc:
         return text or None
 
     # -- the rendering tree -------------------------------------------------------------
-    def walk(self) -> Iterator[tuple[str, ET.Element, np.ndarray]]:
-        """Top-level objects in document order: ``(what, element, parent_matrix)``.
+    def walk(self, hidden: str | None = None) -> Iterator[tuple[str, ET.Element, np.ndarray, bool]]:
+        """Top-level objects in document order: ``(what, element, parent_matrix, in_hidden)``.
 
-        ``what`` is ``"use"``, ``"object"``, ``"void-use"``, ``"void-object"`` or ``"region"``.
+        ``what`` is ``"use"``, ``"object"``, ``"void-use"``, ``"void-object"`` or ``"region"``;
+        ``in_hidden`` says the object lies in a hidden (``display:none``) layer or group,
+        which is walked into with ``hidden="include"`` and skipped with ``"skip"``
+        (default: the document's option).
         """
-        yield from self._walk_children(self.root, _IDENTITY)
+        yield from self._walk_children(self.root, _IDENTITY, hidden or self.hidden, False)
 
-    def _walk_children(self, el: ET.Element, m: np.ndarray) -> Iterator[tuple[str, ET.Element, np.ndarray]]:
+    def _walk_children(self, el: ET.Element, m: np.ndarray, hidden_mode: str, in_hidden: bool) -> Iterator[tuple[str, ET.Element, np.ndarray, bool]]:
         for child in el:
             self.poll()
             tag = _local(child.tag)
@@ -586,7 +647,7 @@ class _Doc:
             if tag not in _SHAPE_TAGS and tag not in _GROUP_TAGS and tag != "use":
                 continue
             if _is_region_el(child, self.is_strew):
-                yield ("region", child, m)
+                yield ("region", child, m, in_hidden)
                 continue
             if self.is_strew and child.get("id") == "strew-guides":
                 continue  # tool strokes drawn over a picture (extra["guides"]), not elements
@@ -594,17 +655,22 @@ class _Doc:
                 continue
             hidden = _hidden(child)
             if tag == "use":
-                yield ("void-use" if hidden else "use", child, m)
+                yield ("void-use" if hidden else "use", child, m, in_hidden)
             elif tag in _SHAPE_TAGS:
                 if child.get("data-label") is None:
-                    yield ("void-object" if hidden else "object", child, m)
+                    yield ("void-object" if hidden else "object", child, m, in_hidden)
+            elif hidden and hidden_mode == "skip":
+                continue  # a sketch or reference layer, left out on request
+            elif hidden and (_is_layer(child) or self._is_container(child, m)):
+                # By default a hidden layer or group holds elements an artist has hidden
+                # while editing the others (issue 22): they are read, and marked ``hidden``.
+                yield from self._walk_children(child, _compose(m, self.transform(child)), hidden_mode, True)
             elif hidden:
-                # A hidden layer or group (a sketch, a reference) is not part of the exemplar.
-                continue
+                yield ("object", child, m, True)
             elif self._is_container(child, m):
-                yield from self._walk_children(child, _compose(m, self.transform(child)))
+                yield from self._walk_children(child, _compose(m, self.transform(child)), hidden_mode, in_hidden)
             else:
-                yield ("object", child, m)
+                yield ("object", child, m, in_hidden)
 
     def _is_background(self, rect: ET.Element) -> bool:
         """Whether a rect covers exactly the viewBox: the background ``to_svg`` may draw."""
@@ -641,7 +707,7 @@ class _Doc:
 
 def _source_text(source: Any) -> tuple[str, str | bytes]:
     if isinstance(source, bytes):
-        return "<svg text>", source
+        return "<svg text>", _gunzip(source, "<svg text>")
     if isinstance(source, str) and source.lstrip("\ufeff \t\r\n").startswith("<"):
         return "<svg text>", source
     if not isinstance(source, (str, os.PathLike)):
@@ -649,13 +715,34 @@ def _source_text(source: Any) -> tuple[str, str | bytes]:
     path = FsPath(source)
     check_file(path, path.name)
     try:
-        return path.name, path.read_bytes()
+        return path.name, _gunzip(path.read_bytes(), path.name)
     except FileNotFoundError:
         raise InputError(f"{str(source)!r}: no such file") from None
     except IsADirectoryError:
         raise InputError(f"{str(source)!r}: is a folder, expected a file") from None
     except OSError as exc:
         raise InputError(f"{str(source)!r}: cannot read ({exc.strerror or type(exc).__name__})") from None
+
+
+def _gunzip(data: bytes, name: str) -> bytes:
+    """``data`` itself, or its decompression when it is gzip (``.svgz``), within the file size limit.
+
+    The decompressed size is bounded by the same ``file_size`` limit as a plain file: only
+    that many bytes are ever inflated, so a gzip bomb is refused without filling memory.
+    """
+    if not data.startswith(b"\x1f\x8b"):
+        return data
+    import io
+    import zlib
+
+    limit = int(get_limit("file_size"))
+    try:
+        with gzip.GzipFile(fileobj=io.BytesIO(data)) as f:
+            out = f.read(limit + 1)
+    except (OSError, EOFError, zlib.error) as exc:
+        raise InputError(f"{name}: not a readable gzip-compressed SVG (.svgz): {exc}") from None
+    check_decompressed(len(out), name)
+    return out
 
 
 def _guarded(fn: Any) -> Any:
@@ -882,6 +969,7 @@ class _Kind:
     signature: _Signature | None = None
     max_scale: float = 1.0
     matchable: bool = True
+    strew_symbol: bool = False  # one of a strew export's kind symbols (kept even when unused)
 
 
 @dataclass
@@ -893,6 +981,7 @@ class _Element:
     scale: float
     void: bool
     attrs: dict[str, str]
+    hidden: bool = False  # in a hidden layer or group (see ``hidden=``)
 
 
 class _Reader:
@@ -907,6 +996,11 @@ class _Reader:
         self.elements: list[_Element] = []
         self.region_els: list[tuple[ET.Element, np.ndarray]] = []
         self._table = np.zeros((16, 5 + _KMAX - 1))  # per kind: see candidate_kinds (rows beyond _rows unused)
+        # Symbols no clone has used yet, as kinds that are not listed: an object that is an
+        # unlinked clone (Inkscape's Unlink Clone copies the symbol's paths into a <g>) takes
+        # its symbol's kind even before, or without, any clone of it (issue 22).
+        self.latent: dict[int, tuple[ET.Element, _Kind]] = {}
+        self._latent_made = False
         self._rows = 0
         self._next: dict[str, int] = {}
 
@@ -924,17 +1018,28 @@ class _Reader:
         return f"{name}-{i}"
 
     def new_kind(
-        self, name: str, key: str | None, parts: list[_Part], *, keep_origin: bool, mirrored: bool = False, known: tuple[_Flat, _Signature | None] | None = None
+        self, name: str, key: str | None, parts: list[_Part], *, keep_origin: bool, mirrored: bool = False, known: tuple[_Flat, _Signature | None] | None = None,
+        register: bool = True,
     ) -> _Kind:
-        """A kind drawn by ``parts``; ``known`` is their flattening and signature where the caller has them."""
+        """A kind drawn by ``parts``; ``known`` is their flattening and signature where the caller has them.
+
+        With ``register=False`` the kind is made but not named or listed (see :meth:`latent_kind`).
+        """
         flat = self.doc.flatten(parts, _IDENTITY, self.doc.tolerance) if known is None else known[0]
         if keep_origin:
             origin = np.zeros(2)
         else:
             bounds = _bounds(flat.paths)
             origin = np.array([(bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2])
-        kind = _Kind(self.unique(name), key, parts, origin, mirrored, style=_style(self.doc, parts))
+        kind = _Kind(self.unique(name) if register else name, key, parts, origin, mirrored, style=_style(self.doc, parts))
         kind.signature = self.doc.signature(parts, flat) if known is None else known[1]
+        if register:
+            self.kinds.append(kind)
+        return kind
+
+    def register(self, kind: _Kind) -> _Kind:
+        """List a kind made with ``register=False``, under a name of its own."""
+        kind.name = self.unique(kind.name)
         self.kinds.append(kind)
         return kind
 
@@ -943,6 +1048,7 @@ class _Reader:
         for el in self.doc.root.iter():
             if _local(el.tag) == "symbol":
                 kind = self.target_kind(el, mirrored=False)
+                kind.strew_symbol = self.doc.is_strew and el.get("data-kind") is not None
                 self.symbol_names.setdefault(el.get("data-kind") or kind.name, kind)
 
     def add_parts(self, el: ET.Element, m: np.ndarray, kind: _Kind, void: bool) -> None:
@@ -971,6 +1077,8 @@ class _Reader:
             base = self.target_kind(tgt, False)
             kind = _Kind(self.unique(f"{base.name}-mirrored"), None, base.parts, base.origin, True, dict(base.style), None, 1.0, False)
             self.kinds.append(kind)
+        elif id(tgt) in self.latent:  # made earlier to match unlinked copies against
+            kind = self.register(self.latent.pop(id(tgt))[1])
         else:
             is_symbol = _local(tgt.tag) == "symbol"
             if is_symbol:
@@ -984,17 +1092,19 @@ class _Reader:
         self.by_target[key] = kind
         return kind
 
-    def add_clone(self, use: ET.Element, m: np.ndarray, void: bool) -> None:
+    def add_clone(self, use: ET.Element, m: np.ndarray, void: bool, hidden: bool = False) -> None:
         doc = self.doc
         g = doc.use_matrix(use, m)
         last, tgt = use, doc.target(use)
         seen = {id(use)}
-        while _local(tgt.tag) == "use":  # a clone of a clone
+        while tgt is not None and _local(tgt.tag) == "use":  # a clone of a clone
             if id(tgt) in seen:
                 raise InputError(f"{doc.name}: {doc.where(use)}: <use> refers to itself")
             seen.add(id(tgt))
             g = doc.use_matrix(tgt, g)
             last, tgt = tgt, doc.target(tgt)
+        if tgt is None:  # dangling: skipped, and named in a warning
+            return
         if _local(tgt.tag) == "symbol":
             g = _compose(g, doc.symbol_viewport(last, tgt))
         else:
@@ -1006,9 +1116,9 @@ class _Reader:
             g = _compose(_compose(g, doc.transform(tgt)), _invert(ref))
         mirrored = bool(np.linalg.det(g[:, :2]) < 0)
         kind = self.target_kind(tgt, mirrored)
-        self.place(kind, g, void, use)
+        self.place(kind, g, void, use, hidden)
 
-    def place(self, kind: _Kind, g: np.ndarray, void: bool, el: ET.Element) -> None:
+    def place(self, kind: _Kind, g: np.ndarray, void: bool, el: ET.Element, hidden: bool = False) -> None:
         """Element of ``kind`` drawn by ``g`` (reference frame -> world)."""
         lin = g[:, :2] @ (_MIRROR[:, :2] if kind.mirrored else np.eye(2))
         rot, s = _similarity(lin)
@@ -1016,43 +1126,66 @@ class _Reader:
             return
         x, y = _apply(g, kind.origin[None, :])[0]
         kind.max_scale = max(kind.max_scale, s)
-        self.elements.append(_Element(kind, float(x), float(y), rot, s, void, _data_attrs(el)))
+        self.elements.append(_Element(kind, float(x), float(y), rot, s, void, _data_attrs(el), hidden))
 
-    def add_object(self, el: ET.Element, m: np.ndarray, void: bool) -> None:
+    def add_object(self, el: ET.Element, m: np.ndarray, void: bool, hidden: bool = False) -> None:
         doc = self.doc
         if doc.is_strew and _local(el.tag) == "g" and el.get("data-kind") in self.symbol_names:
             self.add_parts(el, m, self.symbol_names[el.get("data-kind")], void)  # type: ignore[index]
+            if hidden and self.elements:
+                self.elements[-1].hidden = True
             return
         if (id(el), False) in self.by_target:  # the original of clones: its own kind
-            self.place(self.by_target[(id(el), False)], _IDENTITY, void, el)
+            self.place(self.by_target[(id(el), False)], _IDENTITY, void, el, hidden)
             return
         if el.get("id") is not None and el.get("id") in doc.referenced:
-            self.place(self.target_kind(el, False), _IDENTITY, void, el)
+            self.place(self.target_kind(el, False), _IDENTITY, void, el, hidden)
             return
-        parts = doc.parts(el, m, doc.inherited_props(el)) if not void else _visible_parts(doc, el, m)
+        parts = doc.parts(el, m, doc.inherited_props(el), show=True) if not void else _visible_parts(doc, el, m)
         flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
         if not flat.paths:
             return
         sig = doc.signature(parts, flat)
-        key = _key_of(el)
+        # its own name, else the data-kind of its layer or group: an unlinked clone in a
+        # strew export's kind layer keeps that kind (issue 22)
+        key = _key_of(el) or self.doc.group_key(el)
         if sig is not None:
             for i in self.candidate_kinds(sig):
                 kind = self.kinds[i]
                 if not kind.matchable or kind.signature is None or (key is not None and kind.key != key):
                     continue
-                found = _match(kind.signature, sig)
-                if found is None:
-                    continue
-                t, s = found
-                c, sn = math.cos(t), math.sin(t)
-                lin = s * np.array([[c, -sn], [sn, c]])
-                # world = lin (p_ref - ref.centroid) + centroid: a map from the reference frame.
-                g = np.c_[lin, sig.centroid - lin @ kind.signature.centroid]
-                self.place(kind, g, void, el)
-                return
+                g = _pose(kind, sig)
+                if g is not None:
+                    self.place(kind, g, void, el, hidden)
+                    return
+            for tgt, kind in self.latent_kinds(sig, key):
+                g = _pose(kind, sig)
+                if g is not None:
+                    self.place(self.target_kind(tgt, False), g, void, el, hidden)
+                    return
         name = key or "shape"
         kind = self.new_kind(name, key, parts, keep_origin=False, known=(flat, sig))
-        self.place(kind, _IDENTITY, void, el)
+        self.place(kind, _IDENTITY, void, el, hidden)
+
+    def latent_kinds(self, sig: _Signature, key: str | None) -> list[tuple[ET.Element, _Kind]]:
+        """Unused symbols (as unlisted kinds) that may match ``sig`` under ``key``, in document order."""
+        if not self._latent_made:
+            self._latent_made = True
+            for el in self.doc.root.iter():
+                if _local(el.tag) == "symbol" and (id(el), False) not in self.by_target:
+                    self.doc.poll()
+                    parts = [p for child in el for p in self.doc.parts(child, _IDENTITY, _props_no_display(el))]
+                    name = _name_of_target(el)
+                    kind = self.new_kind(name or "kind", name, parts, keep_origin=self.doc.is_strew, register=False)
+                    if kind.signature is not None:
+                        self.latent[id(el)] = (el, kind)
+        if not self.latent:
+            return []
+        items = [(tgt, k) for tgt, k in self.latent.values() if key is None or k.key == key]
+        if not items:
+            return []
+        table = np.array([_invariants(k.signature) for _, k in items])
+        return [items[i] for i in _candidates(table, sig)]
 
     def candidate_kinds(self, sig: _Signature) -> np.ndarray:
         """Indices, in order, of the kinds that may match ``sig`` (see :func:`_match`).
@@ -1074,30 +1207,19 @@ class _Reader:
             self._rows = n
         if n == 0:
             return np.zeros(0, dtype=np.intp)
-        row = _invariants(sig)
-        table = self._table[:n]
-        size, radius, gyration, tol, area = table[:, :5].T
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            scale = np.sqrt(sig.size / size) if sig.is_area else sig.size / size
-            t = np.maximum(sig.tolerance, scale * tol)
-            ok = (area == row[4]) & np.isfinite(size)
-            ok &= ~(np.abs(sig.radius - scale * radius) > 2 * t + 0.02 * sig.radius)
-            ok &= ~(np.abs(sig.gyration - scale * gyration) > 2 * t + 0.02 * sig.gyration)
-            mk, mo = table[:, 5:], np.array(row[5:])
-            ok &= ~(np.abs(mk - mo) > 0.05 + 0.1 * np.maximum(mk, mo)).any(axis=1)
-        return np.flatnonzero(ok)
+        return _candidates(self._table[:n], sig)
 
     def read(self, *, all_symbols: bool) -> None:
         doc = self.doc
         if all_symbols:
             self.symbol_kinds()
-        for what, el, m in doc.walk():  # walk() polls should_cancel per object
+        for what, el, m, hidden in doc.walk():  # walk() polls should_cancel per object
             if what == "region":
                 self.region_els.append((el, m))
             elif what in ("use", "void-use"):
-                self.add_clone(el, m, what == "void-use")
+                self.add_clone(el, m, what == "void-use", hidden)
             else:
-                self.add_object(el, m, what == "void-object")
+                self.add_object(el, m, what == "void-object", hidden)
 
     def shape(self, kind: _Kind, *, centred: bool) -> Shape:
         """The kind's shape in its local frame (flattened finely enough for its largest copy)."""
@@ -1116,6 +1238,33 @@ class _Reader:
                 flat = doc.flatten(kind.parts, frame, tol)
         d = doc.path_data(kind.parts, frame) if flat.curves else None
         return Shape(tuple(flat.paths), d, kind.style, flat.labels)
+
+
+def _candidates(table: np.ndarray, sig: _Signature) -> np.ndarray:
+    """Rows of ``table`` (kinds' :func:`_invariants`) that may match ``sig`` (see :meth:`_Reader.candidate_kinds`)."""
+    row = _invariants(sig)
+    size, radius, gyration, tol, area = table[:, :5].T
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        scale = np.sqrt(sig.size / size) if sig.is_area else sig.size / size
+        t = np.maximum(sig.tolerance, scale * tol)
+        ok = (area == row[4]) & np.isfinite(size)
+        ok &= ~(np.abs(sig.radius - scale * radius) > 2 * t + 0.02 * sig.radius)
+        ok &= ~(np.abs(sig.gyration - scale * gyration) > 2 * t + 0.02 * sig.gyration)
+        mk, mo = table[:, 5:], np.array(row[5:])
+        ok &= ~(np.abs(mk - mo) > 0.05 + 0.1 * np.maximum(mk, mo)).any(axis=1)
+    return np.flatnonzero(ok)
+
+
+def _pose(kind: _Kind, sig: _Signature) -> np.ndarray | None:
+    """(2, 3) map from ``kind``'s reference frame to the object of signature ``sig``, or None."""
+    found = _match(kind.signature, sig)  # type: ignore[arg-type]
+    if found is None:
+        return None
+    t, s = found
+    c, sn = math.cos(t), math.sin(t)
+    lin = s * np.array([[c, -sn], [sn, c]])
+    # world = lin (p_ref - ref.centroid) + centroid: a map from the reference frame.
+    return np.c_[lin, sig.centroid - lin @ kind.signature.centroid]  # type: ignore[union-attr]
 
 
 def _props_no_display(el: ET.Element) -> dict[str, str]:
@@ -1171,7 +1320,7 @@ def _decode(text: str) -> Any:
 # -- public functions -------------------------------------------------------------------
 @_guarded
 def read_svg(
-    source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None
+    source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None, hidden: str = "include"
 ) -> Arrangement:
     """Read an exemplar (or a strew SVG export) into an arrangement.
 
@@ -1184,6 +1333,11 @@ def read_svg(
     should_cancel : callable () -> bool, optional
         Polled after parsing and once per object; when it returns True the import stops
         with :class:`~strew._errors.Cancelled` (the studio's "stop").
+    hidden : {"include", "skip"}
+        Objects in hidden (``display:none``) layers and groups: ``"include"`` reads them
+        and marks them in a boolean ``hidden`` column (an artist often hides a layer
+        while editing the others); ``"skip"`` leaves them out (a sketch or reference
+        layer). A hidden object itself is always read, as a void element.
 
     Returns
     -------
@@ -1195,12 +1349,19 @@ def read_svg(
         ``<metadata><strew:meta>`` becomes ``meta``, ``data-<col>`` attributes (JSON)
         become columns and ``data-index`` restores the element order; symbol circles
         with ``data-label`` become ``Shape.labels``. Hidden elements count, with
-        ``void = True``.
+        ``void = True``. Kinds are those with elements, and in a strew export also its
+        own kind symbols (``<symbol data-kind>``), used or not.
 
     Raises
     ------
     InputError
-        Malformed XML, no shapes, a ``<use>`` of a missing id, bad lengths.
+        Malformed XML, no shapes, bad lengths; a file over the size or path limits
+        (``.svgz`` is read too, and its decompressed size is held to the same limit).
+
+    Warns
+    -----
+    SVGImportWarning
+        A ``<use>`` of a missing id is skipped (it draws nothing).
     Cancelled
         When ``should_cancel`` returned True.
 
@@ -1216,13 +1377,15 @@ def read_svg(
     >>> round(float(arr.rotation[0]), 6)
     1.570796
     """
-    doc = _Doc(source, tolerance, should_cancel)
+    doc = _Doc(source, tolerance, should_cancel, hidden)
     reader = _Reader(doc)
     reader.read(all_symbols=doc.is_strew)
     elements = reader.elements
     if not elements and not doc.is_strew:
-        raise InputError(f"{doc.name}: no shapes found (no path, basic shape or clone outside <defs>)")
-    kinds = [k for k in reader.kinds if doc.is_strew or any(e.kind is k for e in elements)]
+        raise InputError(f"{doc.name}: no shapes found (no path, basic shape or clone outside <defs>){doc.missing_note()}")
+    doc.warn_dangling()
+    used = {id(e.kind) for e in elements}
+    kinds = [k for k in reader.kinds if id(k) in used or k.strew_symbol]
     shapes = {k.name: reader.shape(k, centred=False) for k in kinds}
     order = np.arange(len(elements))
     index = [e.attrs.get("index") for e in elements]
@@ -1240,6 +1403,9 @@ def read_svg(
         columns[n] = [_decode(e.attrs[n]) if n in e.attrs else None for e in elements]
     if any(e.void for e in elements) and "void" not in columns:
         columns["void"] = [e.void for e in elements]
+    if any(e.hidden for e in elements):
+        given = columns.get("hidden", [None] * len(elements))
+        columns["hidden"] = [bool(e.hidden or g is True) for e, g in zip(elements, given)]
     region = _region_of(doc, reader.region_els) if reader.region_els else None
     meta = dict(doc.meta or {})
     meta["svg_import"] = {"source": doc.name, "tolerance": doc.tolerance}
@@ -1261,13 +1427,15 @@ def read_svg(
 
 @_guarded
 def read_svg_shapes(
-    source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None
+    source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None, hidden: str = "include"
 ) -> dict[str, Shape]:
     """The distinct shapes of any SVG, one per kind, centred on their bounding boxes.
 
     Paths (curves and arcs flattened within ``tolerance`` user units after transforms),
-    basic shapes and clones are read, with nested group transforms; every ``<symbol>``
-    is a shape too, used or not. Kinds are found as in :func:`read_svg`. Each shape's
+    basic shapes and clones are read, with nested group transforms. Kinds are found as
+    in :func:`read_svg`. A file that draws nothing outside ``<defs>`` is a symbol
+    library: every ``<symbol>`` is a shape. A file that draws something gives the shapes
+    of what it draws; symbols it does not use are left out (issue 22). Each shape's
     local origin is the bounding-box centre of the kind's reference instance, unrotated
     and at unit scale; ``Shape.d`` keeps exact path data where it can be exact in local
     coordinates, and ``Shape.style`` the fill, stroke and stroke width.
@@ -1279,6 +1447,8 @@ def read_svg_shapes(
     should_cancel : callable () -> bool, optional
         Polled after parsing and once per object; when it returns True the import stops
         with :class:`~strew._errors.Cancelled` (the studio's "stop").
+    hidden : {"include", "skip"}
+        Objects in hidden layers and groups, as in :func:`read_svg`.
 
     Returns
     -------
@@ -1296,18 +1466,22 @@ def read_svg_shapes(
     >>> list(shapes), shapes["brick"].bounds
     (['brick'], (-2.0, -1.0, 2.0, 1.0))
     """
-    doc = _Doc(source, tolerance, should_cancel)
+    doc = _Doc(source, tolerance, should_cancel, hidden)
     reader = _Reader(doc)
     reader.read(all_symbols=True)
+    doc.warn_dangling()
+    used = {id(e.kind.parts) for e in reader.elements}  # a mirrored kind shares its base's parts
     shapes = {}
     for kind in reader.kinds:
         if kind.mirrored:
             continue
+        if used and id(kind.parts) not in used:
+            continue  # a symbol the drawing does not use
         shape = reader.shape(kind, centred=True)
         if not shape.is_empty:
             shapes[kind.name] = shape
     if not shapes:
-        raise InputError(f"{doc.name}: no shapes found (no path, basic shape, symbol or clone)")
+        raise InputError(f"{doc.name}: no shapes found (no path, basic shape, symbol or clone){doc.missing_note()}")
     return shapes
 
 
@@ -1315,10 +1489,11 @@ def read_svg_shapes(
 def read_svg_region(
     source: str | bytes | os.PathLike[str], *, tolerance: float = 0.1, should_cancel: Callable[[], bool] | None = None
 ) -> Region:
-    """A region from the closed paths of an SVG.
+    """A region from the closed paths of an SVG (or ``.svgz``).
 
     The element with id ``region`` or ``strew-region`` (or label ``region``) when there
-    is one; otherwise every closed subpath of every drawn element. Within an element,
+    is one; otherwise every closed subpath of every drawn element (hidden layers and
+    groups are not drawn, so they are left out). Within an element,
     subpaths combine under the even-odd rule (a nested subpath is a hole); separate
     elements are united.
 
@@ -1348,12 +1523,14 @@ def read_svg_region(
     96.0
     """
     doc = _Doc(source, tolerance, should_cancel)
-    chosen = [(el, m) for what, el, m in doc.walk() if what == "region"]
+    # a region is what is drawn: hidden layers and groups are left out
+    chosen = [(el, m) for what, el, m, _ in doc.walk("skip") if what == "region"]
     if not chosen:
-        chosen = [(el, m) for what, el, m in doc.walk() if what in ("object", "use")]
+        chosen = [(el, m) for what, el, m, _ in doc.walk("skip") if what in ("object", "use")]
     region = _region_of(doc, chosen)
     if region is None:
-        raise InputError(f"{doc.name}: no closed path found for a region")
+        raise InputError(f"{doc.name}: no closed path found for a region{doc.missing_note()}")
+    doc.warn_dangling()
     return region
 
 
