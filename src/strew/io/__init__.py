@@ -89,8 +89,15 @@ def load(path: str | os.PathLike[str], **kwargs: Any) -> Arrangement:
 
 
 def encode(arr: Arrangement, path: str | os.PathLike[str], **kwargs: Any) -> str | bytes:
-    """The file contents :func:`save` would write to ``path`` (format from the extension)."""
+    """The file contents :func:`save` would write to ``path`` (format from the extension).
+
+    A name ending in ``.height.png`` gives a 16-bit height map (:mod:`._height`).
+    """
     suffix = _suffix(path, OUTPUT_FORMATS, "--out")
+    if str(path).lower().endswith(".height.png"):
+        from ._height import to_height_png
+
+        return to_height_png(arr, **kwargs)
     if suffix == ".json":
         from .document import dumps
 

@@ -1,4 +1,5 @@
-"""The strew document: JSON with ``"format": "strew.arrangement"``, ``"version": 1``.
+"""The strew document: JSON with ``"format": "strew.arrangement"``, ``"version": 1``
+(``2`` for elements on surfaces, see :mod:`._document3d`).
 
 See DESIGN.md. Loading validates the document and raises :class:`strew.InputError`
 with a message that names the offending field.
@@ -17,6 +18,7 @@ from .._errors import InputError
 from ..arrangement import CORE_COLUMNS, Arrangement
 from ..region import Region
 from ..shape import Shape
+from ._document3d import VERSIONS, check_surface_columns, document_version
 
 __all__ = ["FORMAT", "VERSION", "to_document", "from_document", "dumps", "loads"]
 
@@ -54,7 +56,7 @@ def to_document(arr: Arrangement) -> dict[str, Any]:
             elements[name] = col.tolist()
     doc: dict[str, Any] = {
         "format": FORMAT,
-        "version": VERSION,
+        "version": max(VERSION, document_version(arr.columns)),
         "shapes": {name: sh.to_dict() for name, sh in arr.shapes.items()},
         "elements": elements,
     }
@@ -75,8 +77,8 @@ def from_document(doc: Any) -> Arrangement:
     if "version" not in doc:
         raise InputError("version: missing")
     version = doc["version"]
-    if version != VERSION or isinstance(version, bool):
-        raise InputError(f"version: unsupported version {version!r} (this strew reads version {VERSION})")
+    if version not in VERSIONS or isinstance(version, bool):
+        raise InputError(f"version: unsupported version {version!r} (this strew reads versions {', '.join(map(str, VERSIONS))})")
     shapes_doc = doc.get("shapes")
     if not isinstance(shapes_doc, Mapping):
         raise InputError("shapes: missing or not an object")
@@ -106,6 +108,7 @@ def from_document(doc: Any) -> Arrangement:
                 raise InputError(f"elements.{name}[{i}]: must be a number, got {v!r}")
             if not math.isfinite(v):
                 raise InputError(f"elements.{name}[{i}]: NaN or inf coordinate")
+    check_surface_columns(elements, version)
     columns = {k: v for k, v in elements.items() if k not in CORE_COLUMNS}
     region = None
     if doc.get("region") is not None:

@@ -1,0 +1,49 @@
+"""Element textures on 3D surfaces (Davison et al. §5.7; Sakurai & Miyata §5.3).
+
+Needs the ``surface`` extra (``pip install 'strew[surface]'``: trimesh, potpourri3d).
+
+Public entry points:
+
+:func:`load_mesh`
+    Read and validate a triangle mesh (OBJ, PLY, STL, OFF, GLB/glTF).
+:func:`orientation_field`
+    A smooth tangent direction field (automatic, from strokes or from singularities).
+:func:`pack`
+    Poisson disk and fill-gap on the surface, bounding spheres never overlapping.
+:func:`save_glb` / :func:`to_glb`
+    GLB with one node per element sharing one mesh per kind.
+:func:`save_preview` / :func:`render_preview`
+    A PNG preview without a GPU.
+
+A surface arrangement is a :class:`strew.Arrangement` with the columns
+``z nx ny nz tx ty tz`` (see :mod:`strew.surface._frames`); ``strew.save(arr,
+"scene.json")`` writes it as a version 2 document.
+"""
+
+from __future__ import annotations
+
+from ._field import OrientationField, load_field, orientation_field
+from ._frames import SURFACE_COLUMNS, element_frames, element_matrices, is_surface
+from ._gltf import save_glb, shape_mesh, to_glb, to_scene
+from ._mesh import MESH_FORMATS, load_mesh
+from ._preview import render_preview, save_preview
+from ._sample import pack
+
+__all__ = [
+    "MESH_FORMATS",
+    "OrientationField",
+    "SURFACE_COLUMNS",
+    "element_frames",
+    "element_matrices",
+    "is_surface",
+    "load_field",
+    "load_mesh",
+    "orientation_field",
+    "pack",
+    "render_preview",
+    "save_glb",
+    "save_preview",
+    "shape_mesh",
+    "to_glb",
+    "to_scene",
+]
