@@ -17,6 +17,11 @@ Baseline, measured in the same run: the same stroke sent as the same messages to
 studio's session in-process (no browser, no websocket), i.e. the library's own rate.
 Ratios are given against the baseline and against the targets (100 ms, 2,000 el/s).
 
+Readouts (issue 22 point 5): after a fill in the page, the status bar's count against the
+visible count of the saved scene (they must be equal), its el/s against the fill's own
+elements over seconds (ratio 1), and the time the fidelity verdict and the bounds test
+(no overhang, nothing across boundary strokes) take of the fill, in-process.
+
     python benchmarks/studio.py [--quick] [--repeat N] [--screenshot docs/studio.png]
 """
 
@@ -109,6 +114,51 @@ def paint_in_process(project: Path, example: str, tool: str) -> dict:
     dt = time.perf_counter() - t0
     n = len(s.scene())
     return {"latency_ms": 1000 * first, "rate": n / dt, "count": n}
+
+
+def fill_readouts(page, project: Path, example: str) -> dict:
+    """A fill in the page: the status bar's count and el/s against the saved scene and the
+    fill's own figure; then the same fill in-process, timing the verdict and bounds test."""
+    import re
+
+    from strew import load, metrics
+    from strew.studio._session import Session
+
+    _request(page, {"type": "clear", "what": "scene"})
+    start = len(page.evaluate("window.studio.messages"))
+    _request(page, {"type": "fill", "point": [[REGION[0] / 2, REGION[1] / 2]]})
+    msg = [m for m in page.evaluate("window.studio.messages")[start:] if m.startswith("filled")][-1]
+    added, secs = re.match(r"filled: (\d+) elements in ([\d.]+) s", msg).groups()
+    shown_count = int(page.inner_text("#st-count").split()[0])
+    shown_rate = float(page.inner_text("#st-rate").split()[0])
+    _request(page, {"type": "save"})
+    saved = metrics.visible_count(load(project / "scene.json"))
+    counts = page.evaluate("window.studio.counts")
+
+    inproc = project / "inproc"
+    inproc.mkdir(exist_ok=True)
+    s = Session(inproc, size=REGION)
+    s.handle({"type": "load_exemplar", "example": example})
+    timed = {"_judge": 0.0, "_out_of_bounds": 0.0}
+    for name in timed:
+        orig = getattr(s, name)
+
+        def wrapped(*a, _orig=orig, _name=name, **k):
+            t = time.perf_counter()
+            try:
+                return _orig(*a, **k)
+            finally:
+                timed[_name] += time.perf_counter() - t
+
+        setattr(s, name, wrapped)
+    t = time.perf_counter()
+    s.handle({"type": "fill", "point": [[REGION[0] / 2, REGION[1] / 2]]})
+    total = time.perf_counter() - t
+    return {
+        "count_shown": shown_count, "count_saved": saved, "count_monotone": counts == sorted(counts),
+        "rate_shown": shown_rate, "rate_own": int(added) / float(secs),
+        "fill_s": total, "verdict_s": timed["_judge"], "bounds_s": timed["_out_of_bounds"],
+    }
 
 
 def screenshot(page, path: Path) -> None:
@@ -212,6 +262,16 @@ def main() -> None:
                     latency_vs_target=lat / TARGET_LATENCY_MS,
                     rate_vs_target=painting / TARGET_RATE,
                 )
+            # readouts after a fill: one count, el/s, and what the verdict and bounds test cost
+            _request(page, {"type": "select", "names": ["scales"]})
+            page.evaluate("window.studio.counts.length = 0")
+            ro = fill_readouts(page, project, "scales.svg")
+            bench.row(
+                "scales fill readouts",
+                count=ro["count_shown"], count_saved=ro["count_saved"], count_ok=float(ro["count_shown"] == ro["count_saved"] and ro["count_monotone"]),
+                rate_shown=ro["rate_shown"], rate_own=ro["rate_own"], rate_ratio=ro["rate_shown"] / ro["rate_own"],
+                fill_s=ro["fill_s"], verdict_share=ro["verdict_s"] / ro["fill_s"], bounds_share=ro["bounds_s"] / ro["fill_s"],
+            )
             # drawing: a filled region, panned frame by frame (60 fps leaves 16.7 ms a frame)
             _request(page, {"type": "clear", "what": "scene"})
             _request(page, {"type": "select", "names": ["scales"]})
