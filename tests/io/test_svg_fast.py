@@ -211,3 +211,54 @@ def test_transforms_read_as_svgelements_does(steps, sep):
 @pytest.mark.parametrize("text", ["rotate(45deg)", "translate(1mm 2mm)", "translateX(4)", "scale()", "rotate(1 2)", "junk"])
 def test_odd_transforms_are_left_to_svgelements(text):
     assert parse_transform(text) is None
+
+
+# -- the importer's shortcuts (issue 17.3) --------------------------------------------------
+HEAD = '<svg xmlns="http://www.w3.org/2000/svg">'
+HOOK_D = "M0,0 L10,0 L10,3 L3,3 L3,12 L0,12 Z"
+
+
+def test_copies_of_one_path_text_take_the_transform_as_pose():
+    from strew.io.svg import read_svg
+
+    body = "".join(f'<path d="{HOOK_D}" transform="translate({10 * i} 5) rotate({17 * i}) scale({1 + i / 4})"/>' for i in range(6))
+    arr = read_svg(HEAD + body + "</svg>")
+    assert arr.kinds == ("shape",)
+    np.testing.assert_allclose(np.angle(np.exp(1j * (arr.rotation - np.radians(17 * np.arange(6))))), 0, atol=1e-9)
+    np.testing.assert_allclose(arr.scale, 1 + np.arange(6) / 4, rtol=1e-12)
+
+
+def test_mirrored_or_skewed_copies_of_one_path_text_are_matched_not_copied():
+    from strew.io.svg import read_svg
+
+    body = (f'<path d="{HOOK_D}"/><path d="{HOOK_D}" transform="translate(40 0) scale(-1 1)"/>'
+            f'<path d="{HOOK_D}" transform="translate(80 0) skewX(20)"/><path d="{HOOK_D}" transform="translate(120 0) rotate(90)"/>')
+    arr = read_svg(HEAD + body + "</svg>")
+    # a mirror image and a skewed copy are other shapes; the turned copy is the hook
+    assert arr.kind.tolist() == [0, 1, 2, 0]
+    assert arr.rotation[3] == pytest.approx(math.pi / 2)
+
+
+def test_kind_grid_finds_matches_among_many_distinct_kinds():
+    """Beyond 64 kinds candidates come from a grid on moment invariants: it must not lose any."""
+    from strew.io.svg import read_svg
+
+    rng = np.random.default_rng(5)
+    shapes = []
+    for _ in range(90):
+        t = np.sort(rng.uniform(0, 2 * np.pi, 7))
+        shapes.append(np.c_[np.cos(t), np.sin(t)] * rng.uniform(2, 6, 7)[:, None])
+
+    def d(p: np.ndarray) -> str:
+        return "M" + " L".join(f"{float(x)!r},{float(y)!r}" for x, y in p) + " Z"
+
+    body = "".join(f'<path d="{d(p + (20 * (i % 10), 20 * (i // 10)))}"/>' for i, p in enumerate(shapes))
+    copies = [5, 70, 89, 70]
+    for j, i in enumerate(copies):  # baked coordinates (as Inkscape stores moved copies): matched by geometry
+        a = 0.3 + j
+        rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+        body += f'<path d="{d(1.5 * shapes[i] @ rot.T + (300, 40 * j))}"/>'
+    arr = read_svg(HEAD + body + "</svg>")
+    assert len(arr.kinds) == 90
+    assert arr.kind[90:].tolist() == [arr.kind[i] for i in copies]
+    np.testing.assert_allclose(arr.scale[90:], 1.5, rtol=1e-6)

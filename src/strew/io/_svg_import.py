@@ -144,8 +144,14 @@ def _compose(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def _invert(m: np.ndarray) -> np.ndarray:
-    lin = np.linalg.inv(m[:, :2])
-    return np.c_[lin, -lin @ m[:, 2]]
+    """Inverse of a 2x3 affine map (closed form for the 2x2 part)."""
+    a, b, c, d = float(m[0, 0]), float(m[0, 1]), float(m[1, 0]), float(m[1, 1])
+    det = a * d - b * c
+    if det == 0:
+        raise np.linalg.LinAlgError("singular matrix")
+    ia, ib, ic, id_ = d / det, -b / det, -c / det, a / det
+    e, f = float(m[0, 2]), float(m[1, 2])
+    return np.array([[ia, ib, -(ia * e + ib * f)], [ic, id_, -(ic * e + id_ * f)]])
 
 
 def _translate(x: float, y: float) -> np.ndarray:
@@ -996,11 +1002,14 @@ class _Reader:
         self.elements: list[_Element] = []
         self.region_els: list[tuple[ET.Element, np.ndarray]] = []
         self._table = np.zeros((16, 5 + _KMAX - 1))  # per kind: see candidate_kinds (rows beyond _rows unused)
+        self._grid: dict[tuple[int, ...], list[int]] = {}  # kinds by their first moment invariants
         # Symbols no clone has used yet, as kinds that are not listed: an object that is an
         # unlinked clone (Inkscape's Unlink Clone copies the symbol's paths into a <g>) takes
         # its symbol's kind even before, or without, any clone of it (issue 22).
         self.latent: dict[int, tuple[ET.Element, _Kind]] = {}
         self._latent_made = False
+        # geometry text of single-part objects -> (kind, kind frame -> object coordinates, object map)
+        self.sources: dict[tuple[str, ...], list[Any]] = {}
         self._rows = 0
         self._next: dict[str, int] = {}
 
@@ -1141,14 +1150,18 @@ class _Reader:
         if el.get("id") is not None and el.get("id") in doc.referenced:
             self.place(self.target_kind(el, False), _IDENTITY, void, el, hidden)
             return
+        # its own name, else the data-kind of its layer or group: an unlinked clone in a
+        # strew export's kind layer keeps that kind (issue 22)
+        key = _key_of(el) or self.doc.group_key(el)
+        source = _source_key(el, key)
+        if source is not None and self.copy_of(source, el, m, void, hidden):
+            return
         parts = doc.parts(el, m, doc.inherited_props(el), show=True) if not void else _visible_parts(doc, el, m)
         flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
         if not flat.paths:
             return
         sig = doc.signature(parts, flat)
-        # its own name, else the data-kind of its layer or group: an unlinked clone in a
-        # strew export's kind layer keeps that kind (issue 22)
-        key = _key_of(el) or self.doc.group_key(el)
+        placed: tuple[_Kind, np.ndarray] | None = None
         if sig is not None:
             for i in self.candidate_kinds(sig):
                 kind = self.kinds[i]
@@ -1156,16 +1169,51 @@ class _Reader:
                     continue
                 g = _pose(kind, sig)
                 if g is not None:
-                    self.place(kind, g, void, el, hidden)
-                    return
-            for tgt, kind in self.latent_kinds(sig, key):
-                g = _pose(kind, sig)
-                if g is not None:
-                    self.place(self.target_kind(tgt, False), g, void, el, hidden)
-                    return
-        name = key or "shape"
-        kind = self.new_kind(name, key, parts, keep_origin=False, known=(flat, sig))
-        self.place(kind, _IDENTITY, void, el, hidden)
+                    placed = (kind, g)
+                    break
+            if placed is None:
+                for tgt, kind in self.latent_kinds(sig, key):
+                    g = _pose(kind, sig)
+                    if g is not None:
+                        placed = (self.target_kind(tgt, False), g)
+                        break
+        if placed is None:
+            placed = (self.new_kind(key or "shape", key, parts, keep_origin=False, known=(flat, sig)), _IDENTITY)
+        self.place(placed[0], placed[1], void, el, hidden)
+        if source is not None and len(parts) == 1 and source not in self.sources:
+            # for later objects with the same geometry text (see copy_of)
+            self.sources[source] = [placed[0], placed[1], _compose(m, doc.transform(el)), None]
+
+    def copy_of(self, source: tuple[str, ...], el: ET.Element, m: np.ndarray, void: bool, hidden: bool) -> bool:
+        """Place ``el`` as a copy of an earlier object with the same geometry text, if it is one.
+
+        Objects whose path data (or basic-shape attributes) are the very same text as an
+        earlier object's, drawn under a transform that differs from that object's by a
+        similarity, are that object moved: the pose is the transform itself, without
+        flattening or matching (issue 17.3: tools and scripts repeat one ``d`` under many
+        transforms). Round kinds are left to the matcher, which keeps their rotation 0; a
+        shape with symmetry gets the rotation of the transform, one of the poses the
+        matcher could have returned.
+        """
+        known = self.sources.get(source)
+        if known is None:
+            return False
+        kind, pose, first, frame = known
+        if not kind.matchable or not _has_orientation(kind):
+            return False
+        if frame is None:  # kind frame -> the first object's own coordinates
+            if abs(np.linalg.det(first[:, :2])) < 1e-300:
+                return False
+            frame = known[3] = _compose(_invert(first), pose)
+        own = _compose(m, self.doc.transform(el))
+        # the change from the first copy: lin = L_own L_first^-1 must be a rotation and scale
+        lin = own[:, :2] @ _invert(first)[:, :2]
+        a, b, c, d = float(lin[0, 0]), float(lin[0, 1]), float(lin[1, 0]), float(lin[1, 1])
+        size = math.hypot(a, c)
+        if not (size > 0) or abs(a - d) > 1e-12 * size or abs(b + c) > 1e-12 * size:
+            return False
+        self.place(kind, _compose(own, frame), void, el, hidden)
+        return True
 
     def latent_kinds(self, sig: _Signature, key: str | None) -> list[tuple[ET.Element, _Kind]]:
         """Unused symbols (as unlisted kinds) that may match ``sig`` under ``key``, in document order."""
@@ -1203,11 +1251,21 @@ class _Reader:
                 self._table = grown
             for i in range(self._rows, n):
                 k = self.kinds[i]
-                self._table[i] = _invariants(k.signature if k.matchable else None)
+                row = self._table[i] = _invariants(k.signature if k.matchable else None)
+                if math.isfinite(row[0]):
+                    self._grid.setdefault(_cell(row), []).append(i)
             self._rows = n
         if n == 0:
             return np.zeros(0, dtype=np.intp)
-        return _candidates(self._table[:n], sig)
+        if n <= 64:
+            return _candidates(self._table[:n], sig)
+        # Only kinds in grid cells within the moment tolerance can pass (a drawing of n
+        # distinct shapes would otherwise test n kinds per object: n^2 in all).
+        near = sorted(i for c in _cells_near(_invariants(sig)) for i in self._grid.get(c, ()))
+        if not near:
+            return np.zeros(0, dtype=np.intp)
+        rows = np.array(near, dtype=np.intp)
+        return rows[_candidates(self._table[rows], sig)]
 
     def read(self, *, all_symbols: bool) -> None:
         doc = self.doc
@@ -1240,6 +1298,27 @@ class _Reader:
         return Shape(tuple(flat.paths), d, kind.style, flat.labels)
 
 
+_GRID = 0.05  # cell size of the kinds' grid on the invariants |c_k| / (size gyration^k), k = 2, 3, 4
+_GRID_DIMS = (5, 6, 7)  # their columns in :func:`_invariants`' rows
+
+
+def _cell(row: list[float] | np.ndarray) -> tuple[int, ...]:
+    return tuple(int(math.floor(float(row[j]) / _GRID)) for j in _GRID_DIMS)
+
+
+def _cells_near(row: list[float]) -> list[tuple[int, ...]]:
+    """Cells holding every value ``a`` that :func:`_candidates` accepts next to ``b``:
+    ``|a - b| <= 0.05 + 0.1 max(a, b)``, so ``0.9 b - 0.05 <= a <= (b + 0.05) / 0.9``."""
+    if not all(math.isfinite(row[j]) for j in _GRID_DIMS):
+        return []
+    spans = []
+    for j in _GRID_DIMS:
+        b = float(row[j])
+        lo, hi = 0.9 * b - 0.05, (b + 0.05) / 0.9
+        spans.append(range(int(math.floor(lo / _GRID)) - 1, int(math.floor(hi / _GRID)) + 2))
+    return [(i, j, k) for i in spans[0] for j in spans[1] for k in spans[2]]
+
+
 def _candidates(table: np.ndarray, sig: _Signature) -> np.ndarray:
     """Rows of ``table`` (kinds' :func:`_invariants`) that may match ``sig`` (see :meth:`_Reader.candidate_kinds`)."""
     row = _invariants(sig)
@@ -1253,6 +1332,39 @@ def _candidates(table: np.ndarray, sig: _Signature) -> np.ndarray:
         mk, mo = table[:, 5:], np.array(row[5:])
         ok &= ~(np.abs(mk - mo) > 0.05 + 0.1 * np.maximum(mk, mo)).any(axis=1)
     return np.flatnonzero(ok)
+
+
+_SOURCE_ATTRS = {
+    "path": ("d",),
+    "rect": ("x", "y", "width", "height", "rx", "ry"),
+    "circle": ("cx", "cy", "r"),
+    "ellipse": ("cx", "cy", "rx", "ry"),
+    "line": ("x1", "y1", "x2", "y2"),
+    "polyline": ("points",),
+    "polygon": ("points",),
+}
+
+
+def _source_key(el: ET.Element, key: str | None) -> tuple[str, ...] | None:
+    """The text that defines a basic shape's or path's geometry (with its kind name), or None."""
+    tag = _local(el.tag)
+    attrs = _SOURCE_ATTRS.get(tag or "")
+    if attrs is None:
+        return None
+    return (tag, key or "", *(el.get(a) or "" for a in attrs))  # type: ignore[return-value]
+
+
+def _has_orientation(kind: _Kind) -> bool:
+    """Whether :func:`_match` finds ``kind``'s rotation from its moments (it is not nearly round)."""
+    cached = getattr(kind, "_oriented", None)
+    if cached is None:
+        sig = kind.signature
+        cached = False
+        if sig is not None and sig.size > 0 and sig.gyration > 0:
+            norm = sig.size * sig.gyration
+            cached = any(abs(sig.moments[k]) / (norm * sig.gyration ** (k - 1)) > 0.02 for k in range(2, _KMAX + 1))
+        kind._oriented = cached  # type: ignore[attr-defined]
+    return bool(cached)
 
 
 def _pose(kind: _Kind, sig: _Signature) -> np.ndarray | None:
