@@ -252,8 +252,11 @@ def test_hierarchy_grows_in_phases():
     order = ["vines", "flowers", "leaves", "fillers"]
     phases = [order.index(e.phase) for e in orn.elements]
     assert phases == sorted(phases)  # placed phase by phase
-    by_type = {e.type: e.phase for e in orn.elements if e.type != "seed"}
+    # (a vine that joins two fronts of the structure may come in the flowers phase, see
+    # the pattern's vine_joins_vine)
+    by_type = {e.type: e.phase for e in orn.elements if e.type != "seed" and not (e.type == "vine" and e.target >= 0)}
     assert by_type["vine"] == "vines" and by_type["flower"] == "flowers" and by_type["quote"] == "fillers"
+    assert {e.phase for e in orn.elements if e.type == "vine" and e.target >= 0} <= {"vines", "flowers"}
     assert {e.phase for e in orn.elements if e.type == "leaf"} == {"leaves"}
     for f in orn.of_type("flower"):
         assert f.parent.type in ("vine", "twig")  # flowers hang on (subsidiary) vines

@@ -97,12 +97,17 @@ class RenderContext:
     style : str
     line_width : float
         Base line width in document units.
+    cache : dict
+        Shared by the render functions of one rendering, for what they compute once
+        (the flowers pattern keeps an index of its petal outlines here).
     """
 
     ornament: Ornament
     style: str
     line_width: float
     _counts: dict[str, int] = field(default_factory=dict)
+    #: per-rendering memo for render functions (an index of what other elements draw)
+    cache: dict[str, Any] = field(default_factory=dict)
     _groups: dict[tuple[str, Any], list[Element]] | None = None
 
     def group(self, el: Element) -> list[Element]:

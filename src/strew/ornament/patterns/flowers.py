@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import shapely
 
 from strew.ornament import (
     FAILURE,
@@ -43,6 +44,7 @@ from strew.ornament import (
 )
 
 FLOWER_RADIUS = 3.0
+MIN_STEM_SHOWN = 0.5  # a stem shows at least this long between two flowers (not in Appendix A)
 MAX_STEM = 10.0
 LEAF_MIN_STEM = 8.0  # "if the new flower was placed far enough away, add a leaf as well"
 LEAF_LENGTH = 3.0
@@ -97,6 +99,10 @@ def flower_to_flower(ctx, parent, stem, flower):
     to_goal = ctx.goal.center - parent.proxy.center
     # determine how far away to place the child flower.
     dist = min(distance(ctx.goal.center, parent.proxy.center), MAX_STEM)
+    # Not in Appendix A: never so near that the flowers hide the stem between them (the
+    # new flower would seem to float, issue 23)
+    if dist < parent.proxy.radius + FLOWER_RADIUS + MIN_STEM_SHOWN - 1e-9:
+        return FAILURE
     # place the flower centred `dist` units away in the direction of the goal, radius 3.
     flower.proxy.set(offset(parent.proxy.center, to_goal, dist), FLOWER_RADIUS)
     # if the new flower intersects any already-placed element, cancel this rule.
@@ -134,13 +140,18 @@ def flower_to_flower(ctx, parent, stem, flower):
 def flower_to_bud(ctx, parent, stem, bud):
     # Not in Appendix A: in the second phase, a bud on a stem grows into the goal circle
     # itself (which the appendix's flowers would overfill), as large as it allows.
-    r = min(BUD_RADIUS[1], ctx.goal.radius)
-    if r < BUD_RADIUS[0] or distance(ctx.goal.center, parent.proxy.center) > MAX_STEM + parent.proxy.radius:
+    g, rho, rp = ctx.goal.center, ctx.goal.radius, parent.proxy.radius
+    d = distance(g, parent.proxy.center)
+    # as large as the goal circle allows with a stem of at least MIN_STEM_SHOWN showing:
+    # on the line from the parent through the goal's centre, at distance t = rp + r +
+    # MIN_STEM_SHOWN (at least d), inside the goal circle (t + r <= d + rho)
+    r = min(BUD_RADIUS[1], rho, (d + rho - rp - MIN_STEM_SHOWN) / 2)
+    if r < BUD_RADIUS[0] or d > MAX_STEM + rp:
         return FAILURE
-    bud.proxy.set(ctx.goal.center, r)
+    bud.proxy.set(offset(parent.proxy.center, g - parent.proxy.center, max(d, rp + r + MIN_STEM_SHOWN)), r)
     if ctx.intersects(bud) or not ctx.inside(bud):
         return FAILURE
-    if _stem_crosses(ctx, parent.proxy.center, parent.proxy.radius, bud.proxy.center, r):
+    if _stem_crosses(ctx, parent.proxy.center, rp, bud.proxy.center, r):
         return FAILURE
     stem.proxy.set(parent.proxy.center, bud.proxy.center)
     bud.color = (parent.color + 1) % len(COLORS)
@@ -148,29 +159,62 @@ def flower_to_bud(ctx, parent, stem, bud):
 
 
 # -- an "ink" rendering (Fig. 15e-g): petals, tapered stems, filled leaves ----------------
+# Each stem runs from a flower's centre to its child's, as in Appendix A, under the
+# flowers; it is drawn as what shows of it between them (the petals cut away), and a leaf
+# as what shows beside its stem, so that no two drawn shapes overlap (issue 23).
+def _petals(el):
+    """Petal outline of a flower or bud, (n, 2)."""
+    c, r = el.proxy.center, el.proxy.radius
+    if el.type == "flower":
+        t = np.linspace(0, 2 * np.pi, 121)[:-1]
+        k, inner = 2.5, 0.72
+    else:
+        t = np.linspace(0, 2 * np.pi, 73)[:-1]
+        k, inner = 1.5, 0.75
+    return c + (r * (inner + (1 - inner) * np.abs(np.cos(k * t))))[:, None] * np.c_[np.cos(t), np.sin(t)]
+
+
+def _stem_outline(stem, rc):
+    pts = np.linspace(stem.proxy.start, stem.proxy.end, 12)
+    return tapered_stroke(pts, (2.5 * rc.line_width, 1.2 * rc.line_width))
+
+
+def _index(rc, types, outline):
+    """Polygons that elements of ``types`` draw, and an STRtree over them (once per rendering)."""
+    key = f"flowers:{types}"
+    if key not in rc.cache:
+        polys = [shapely.Polygon(outline(e, rc)) for e in rc.ornament.elements if e.type in types]
+        rc.cache[key] = (polys, shapely.STRtree(polys))
+    return rc.cache[key]
+
+
+def _visible(poly, rc, types, outline):
+    """``poly`` less what elements of ``types`` draw over it: closed (n, 2) rings."""
+    polys, tree = _index(rc, types, outline)
+    hits = [polys[i] for i in tree.query(poly, predicate="intersects") if not polys[i].equals(poly)]
+    if hits:
+        poly = poly.difference(shapely.union_all(hits))
+    return [np.asarray(g.exterior.coords)[:-1] for g in shapely.get_parts(poly) if isinstance(g, shapely.Polygon) and g.area > 0]
+
+
 @pattern.render("flower", "ink", help="petalled flowers, tapered stems and filled leaves (Fig. 15e-g)")
 def ink_flower(flower, rc):
     c, r = flower.proxy.center, flower.proxy.radius
-    t = np.linspace(0, 2 * np.pi, 121)
-    petals = c + (r * (0.72 + 0.28 * np.abs(np.cos(2.5 * t))))[:, None] * np.c_[np.cos(t), np.sin(t)]
     return [
-        Mark([petals[:-1]], closed=True, fill=COLORS[flower.color % len(COLORS)], stroke="#2b2f36", stroke_width=rc.line_width),
+        Mark([_petals(flower)], closed=True, fill=COLORS[flower.color % len(COLORS)], stroke="#2b2f36", stroke_width=rc.line_width),
         Mark.circle(c, 0.3 * r, fill="#2b2f36", stroke="none"),
     ]
 
 
 @pattern.render("bud", "ink")
 def ink_bud(bud, rc):
-    c, r = bud.proxy.center, bud.proxy.radius
-    t = np.linspace(0, 2 * np.pi, 73)
-    petals = c + (r * (0.75 + 0.25 * np.abs(np.cos(1.5 * t))))[:, None] * np.c_[np.cos(t), np.sin(t)]
-    return [Mark([petals[:-1]], closed=True, fill=COLORS[bud.color % len(COLORS)], stroke="#2b2f36", stroke_width=rc.line_width)]
+    return [Mark([_petals(bud)], closed=True, fill=COLORS[bud.color % len(COLORS)], stroke="#2b2f36", stroke_width=rc.line_width)]
 
 
 @pattern.render("stem", "ink")
 def ink_stem(stem, rc):
-    pts = np.linspace(stem.proxy.start, stem.proxy.end, 12)
-    return [Mark.polygon(tapered_stroke(pts, (2.5 * rc.line_width, 1.2 * rc.line_width)), fill="#3d6b35")]
+    shown = _visible(shapely.Polygon(_stem_outline(stem, rc)), rc, ("flower", "bud"), lambda e, rc: _petals(e))
+    return [Mark(shown, closed=True, fill="#3d6b35", stroke="none")] if shown else []
 
 
 @pattern.render("leaf", "ink")
@@ -178,5 +222,5 @@ def ink_leaf(leaf, rc):
     a = leaf.proxies[0].polyline()
     b = leaf.proxies[1].polyline()
     outline = np.vstack([a, b[::-1][1:-1]])
-    return [Mark.polygon(outline, fill="#5d9b4a", stroke="#2b4d24", stroke_width=0.5 * rc.line_width)]
-
+    shown = _visible(shapely.Polygon(outline), rc, ("stem",), _stem_outline)
+    return [Mark(shown, closed=True, fill="#5d9b4a", stroke="#2b4d24", stroke_width=0.5 * rc.line_width)] if shown else []

@@ -26,12 +26,15 @@ from strew.ornament import (
     Point,
     Polygon,
     angle_of,
+    distance,
     offset,
     tapered_stroke,
     unit,
 )
 
-COLORS = ("#c0392b", "#e0b030", "#3e6fb0")  # red flowers, yellow and blue shapes
+COLORS = ("#c0392b", "#e0b030", "#3e6fb0")
+TIP = 0.75  # a vine's last quarter is its tip, where two fronts may be joined
+HEAD_ON = math.cos(math.pi / 4)  # red flowers, yellow and blue shapes
 
 pattern = Pattern(
     "hierarchy",
@@ -44,7 +47,11 @@ pattern = Pattern(
 )
 
 pattern.element("seed", Point)
-pattern.element("vine", Bezier, orientation=1)
+# s0, s1: the vine's depth along the vine structure at its two ends (a child starts at its
+# parent's depth where it branches off), which sets its width when drawn, so that the
+# width runs on without a step at every joint
+# joined, target: see vine_joins_vine
+pattern.element("vine", Bezier, orientation=1, s0=0.0, s1=1.0, joined=False, target=-1)
 pattern.element("twig", Bezier)  # a shorter subsidiary vine carrying a flower
 pattern.element("flower", Circle, color=0)
 # two Bezier edges, and their outline as a polygon so that the inside counts as filled
@@ -53,15 +60,27 @@ pattern.element("leaf", [Bezier, Bezier, Polygon])
 pattern.element("quote", [Circle, Bezier, Circle, Bezier])  # a double-quote-shaped filler
 
 
-def attachment(ctx, parent):
-    """Point of a curve parent nearest the goal centre, and the tangent there."""
-    ts = np.linspace(0.0, 1.0, 25)
-    pts = parent.proxy.point_at(ts)
-    k = int(np.argmin(np.hypot(*(pts - ctx.goal.center).T)))
-    t = parent.proxy.tangent_at(ts[k])
-    if np.dot(t, ctx.goal.center - pts[k]) < 0:
+def nearest_on(curve, point, n=25):
+    """Parameter of the point of a curve nearest ``point`` (sampled at n values)."""
+    ts = np.linspace(0.0, 1.0, n)
+    pts = curve.point_at(ts)
+    return float(ts[int(np.argmin(np.hypot(*(pts - point).T)))])
+
+
+def attachment(ctx, parent, with_t=False):
+    """Point of a curve parent nearest the goal centre, and the tangent there (and its
+    parameter, with ``with_t``)."""
+    u = nearest_on(parent.proxy, ctx.goal.center)
+    p = parent.proxy.point_at(u)
+    t = parent.proxy.tangent_at(u)
+    if np.dot(t, ctx.goal.center - p) < 0:
         t = -t
-    return pts[k], t
+    return (p, t, u) if with_t else (p, t)
+
+
+def depth_at(vine, u):
+    """Depth along the vine structure at parameter u of a vine."""
+    return vine.s0 + u * (vine.s1 - vine.s0)
 
 
 def fits(ctx, children, parent=None):
@@ -93,11 +112,65 @@ def seed_to_vine(ctx, seed, vine):
     return SUCCESS
 
 
+def _tree_distance(a, b, limit=6):
+    """Number of parent links between two elements, or ``limit`` when more."""
+    up = {}
+    e, k = a, 0
+    while e is not None and k < limit:
+        up[e.index] = k
+        e, k = e.parent, k + 1
+    e, k = b, 0
+    while e is not None and k < limit:
+        if e.index in up:
+            return min(limit, up[e.index] + k)
+        e, k = e.parent, k + 1
+    return limit
+
+
+# Not in the paper: where two fronts of the vine structure meet across a gap (the two ends
+# of a ring of vines growing around a panel's hole), a vine joins their tips, so that the
+# main vine closes instead of stopping short (issue 23). It is tried before a vine grows
+# on, and in the flowers phase too: the gap the fronts leave is often narrower than the
+# vines phase's threshold.
+@pattern.rule("vine", children=["vine"], when=lambda state: state.phase in ("vines", "flowers"))
+def vine_joins_vine(ctx, parent, vine):
+    g, rho = ctx.goal.center, ctx.goal.radius
+    start, heading, u = attachment(ctx, parent, with_t=True)
+    if u < TIP or parent.joined:
+        return FAILURE
+    for other in ctx.elements:
+        if other.type != "vine" or other is parent or other.joined or _tree_distance(parent, other) < 4:
+            continue
+        w = nearest_on(other.proxy, g)
+        if w < TIP or any(c.type == "vine" and c.s0 >= depth_at(other, TIP) for c in other.children):
+            continue  # not a free tip: a vine grows on from there
+        end = other.proxy.point_at(w)
+        if distance(end, g) > 1.5 * rho or distance(end, start) > 4 * rho:
+            continue
+        # only tips that grow towards each other, head on (within 45 degrees): fronts
+        # meeting, not a vine running into the side of the structure
+        chord = unit(end - start)
+        if np.dot(parent.proxy.tangent_at(u), chord) < HEAD_ON or np.dot(other.proxy.tangent_at(w), -chord) < HEAD_ON:
+            continue
+        arrive = -other.proxy.tangent_at(w)
+        vine.proxy.set(start, angle_of(heading), 0.4, end, angle_of(arrive), 0.4)
+        if not ctx.intersects(vine, ignore=[parent, other]) and ctx.inside(vine):
+            vine.s0, vine.s1 = depth_at(parent, u), depth_at(other, w)
+            vine.orientation = -parent.orientation
+            parent.joined = other.joined = vine.joined = True  # these tips are taken
+            vine.target = other.index
+            ctx.state.vines += 1
+            return SUCCESS
+    return FAILURE
+
+
 @pattern.rule("vine", children=["vine"], phase="vines")
 def vine_to_vine(ctx, parent, vine):
-    start, heading = attachment(ctx, parent)
+    start, heading, u = attachment(ctx, parent, with_t=True)
     if not grow_vine(ctx, parent, vine, start, heading, -parent.orientation):
         return FAILURE
+    vine.s0 = depth_at(parent, u)
+    vine.s1 = vine.s0 + 1.0
     ctx.state.vines += 1
     return SUCCESS
 
@@ -158,9 +231,22 @@ def quote_filler(ctx, parent, quote):
 
 
 # -- a coloured rendering ---------------------------------------------------------------------------
+def vine_width(s, rc):
+    """Width of a vine at depth s along the vine structure: thinning slowly from the seed."""
+    return rc.line_width * np.maximum(1.5, 4.0 * 0.92 ** np.asarray(s, dtype=float))
+
+
 @pattern.render("vine", "color", help="tapered green vines, coloured flowers, filled leaves and fillers (Fig. 10)")
 def color_vine(vine, rc):
-    return [Mark.polygon(tapered_stroke(vine.proxy.polyline(24), (4 * rc.line_width, 1.5 * rc.line_width)), fill="#2f5d3a")]
+    # the width follows the depth along the structure, so that a vine starts as wide as
+    # its parent where it branches off (no step at the joints); each end is drawn round,
+    # so that the joints overlap smoothly
+    u = np.linspace(0.0, 1.0, 25)  # the curve's own parameter, as depth_at uses it
+    pts = vine.proxy.point_at(u)
+    w = vine_width(depth_at(vine, u), rc)
+    body = tapered_stroke(pts, w)
+    caps = [Mark.circle(pts[k], w[k] / 2, segments=24, fill="#2f5d3a", stroke="none") for k in (0, -1)]
+    return [Mark.polygon(body, fill="#2f5d3a"), *caps]
 
 
 @pattern.render("twig", "color")
