@@ -72,7 +72,9 @@ that level; but incomplete neighbourhoods at a small exemplar's frame push it up
 larger draws of the sparse class reach twice the level), hence 2.5. Its floor is Eq. 5 of
 the exemplar itself with Gaussian positional noise of 0.05 s, which nobody sees.
 Eq. 5 is measured in the global frame, as synth matches neighbourhoods: a texture turned
-as a whole fails it even where the local-frame metrics pass.
+as a whole fails it even where the local-frame metrics pass. A result made in a rotating
+mode (grow's rotate and flow modes, recorded in its ``meta``) is measured in each
+element's local frame instead (``eq5_frame``), with the same tolerance.
 
 Edges. The result is compared in its interior: the region eroded by ``2 s``. The
 exemplar's window is its region (a crop, where elements may cross the frame) or, when
@@ -137,6 +139,8 @@ ORIENT_K = 6
 RESULT_MARGIN = 2.0  # result interior: region eroded by RESULT_MARGIN * s
 EQ5_SAMPLE = 400
 EQ5_JITTER = 0.05  # the Eq. 5 floor: the exemplar with this positional noise (x s)
+EQ5_FRAME_R = 0.5  # a kind has a frame for local-frame Eq. 5 when its rotations' resultant reaches this
+EQ5_FRAMES = ("auto", "global", "local")
 MIN_RECORDS = 30  # an orientation histogram or empty-circle quantile needs this many
 MIN_NN = 5  # nearest-neighbour deciles need this many elements
 DECILES = np.linspace(0.1, 0.9, 9)
@@ -926,9 +930,36 @@ def nearest_neighbor_distances(arr: Arrangement) -> dict[str, dict[str, float]]:
     return out
 
 
-def _eq5(exemplar_vis: Arrangement, output: Arrangement, measure: np.ndarray, sample: int) -> float:
+def _frame_turns(exemplar: Arrangement, output: Arrangement, sym: dict[str, int]) -> np.ndarray:
+    """Each output element's turn from its kind's frame in the exemplar (radians, (n,)).
+
+    The frame of a kind is the circular mean of its exemplar rotations modulo the
+    shape's symmetry (2 pi / order). A kind without one (a disc, or exemplar rotations
+    spread all round: resultant length below :data:`EQ5_FRAME_R`) turns by 0.
+    """
+    turns = np.zeros(len(output))
+    ex_names = np.asarray(exemplar.kind_names)
+    out_names = np.asarray(output.kind_names)
+    for name in np.unique(out_names):
+        order = sym.get(str(name), 0)
+        rot = exemplar.rotation[ex_names == name]
+        if order == 0 or len(rot) == 0:
+            continue
+        z = np.exp(1j * order * rot).mean()
+        if abs(z) < EQ5_FRAME_R:
+            continue
+        sel = out_names == name
+        d = order * output.rotation[sel] - np.angle(z)
+        turns[sel] = np.angle(np.exp(1j * d)) / order  # within (-pi / order, pi / order]
+    return turns
+
+
+def _eq5(exemplar_vis: Arrangement, output: Arrangement, measure: np.ndarray, sample: int, turns: np.ndarray | None = None) -> float:
     """Davison Eq. 5 of the ``measure`` elements of ``output`` against ``exemplar_vis``
-    (kinds matched by name; a fixed-seed sample of ``sample`` elements)."""
+    (kinds matched by name; a fixed-seed sample of ``sample`` elements). With ``turns``
+    (n,) each measured element's neighbourhood is turned back by its turn first: Eq. 5
+    in the element's local frame."""
+    from .synth import _kernels as K
     from .synth._api import new_state
     from .synth._metric import neighborhood_distances
 
@@ -959,10 +990,23 @@ def _eq5(exemplar_vis: Arrangement, output: Arrangement, measure: np.ndarray, sa
         return float("nan")
     if len(which) > sample:
         which = np.sort(np.random.default_rng(0).choice(which, sample, replace=False))
-    return float(neighborhood_distances(state, which).mean())
+    if turns is None:
+        return float(neighborhood_distances(state, which).mean())
+    # neighborhood_distances with each neighbourhood's offsets turned by -turn (its
+    # element's local frame); the same kernels
+    turn = np.asarray(turns, float)[keep][which]
+    src_s = state.src
+    sel = np.flatnonzero(prep.selected_elements).astype(np.int64)
+    ptr, idx, off = K.grid_neighborhoods(state.pos, which, prep.rbar[src_s[which]])
+    t = np.repeat(turn, np.diff(ptr))
+    c, s = np.cos(t), np.sin(t)
+    off = np.ascontiguousarray(np.c_[c * off[:, 0] + s * off[:, 1], -s * off[:, 0] + c * off[:, 1]])
+    cands = np.tile(sel, (len(which), 1))
+    costs = K.candidate_costs(ptr, off, prep.kind[src_s[idx]], 2.0 * prep.r[src_s[idx]], prep.rbar[src_s[which]], prep.kind[src_s[which]], 2.0 * prep.r[src_s[which]], cands, prep.nb_ptr, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind, prep.kind_cost)
+    return float(costs.min(axis=1).mean())
 
 
-def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None = None, *, eq5: bool = True, local: bool = True) -> FidelityReport:
+def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None = None, *, eq5: bool = True, local: bool = True, eq5_frame: str = "auto") -> FidelityReport:
     """Measure how faithfully ``result`` continues ``exemplar``.
 
     Parameters
@@ -978,6 +1022,13 @@ def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None =
         400 result elements).
     local : bool
         Also compute the local fidelity map.
+    eq5_frame : {"auto", "global", "local"}
+        Measure Eq. 5 in the global frame, or in each result element's local frame
+        (its neighbourhood turned back by the element's turn from its kind's frame in
+        the exemplar; kinds without a frame, such as discs, are not turned). ``"auto"``:
+        local for a result made in a rotating mode (``meta["params"]["mode"]`` is
+        ``"rotate"`` or ``"flow"``, as grow records it), else global. The tolerance is
+        the same either way.
 
     Returns
     -------
@@ -1002,6 +1053,12 @@ def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None =
     """
     _check(exemplar, "exemplar")
     _check(result, "result")
+    if eq5_frame not in EQ5_FRAMES:
+        raise InputError(f"eq5_frame: must be one of {', '.join(EQ5_FRAMES)}, got {eq5_frame!r}")
+    if eq5_frame == "auto":
+        params = result.meta.get("params") if isinstance(result.meta, dict) else None
+        mode = params.get("mode") if isinstance(params, dict) else None
+        eq5_frame = "local" if mode in ("rotate", "flow") else "global"
     if region is not None and not isinstance(region, Region):
         raise InputError(f"region: must be a Region, got {type(region).__name__}")
     ex_vis = _visible(exemplar)
@@ -1112,7 +1169,8 @@ def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None =
         res_only = result.select(res_vis)
         if "void" in res_only:
             res_only = res_only.without_columns("void")
-        v = _eq5(ex_only, res_only, shapely.contains_xy(res_win, res_only.x, res_only.y), EQ5_SAMPLE)
+        turns = _frame_turns(ex_only, res_only, sym) if eq5_frame == "local" else None
+        v = _eq5(ex_only, res_only, shapely.contains_xy(res_win, res_only.x, res_only.y), EQ5_SAMPLE, turns)
         cross = []
         for ha, hb in halves[:2]:
             ia = shapely.contains_xy(ha, ex_only.x, ex_only.y)
