@@ -35,15 +35,22 @@ TOLERANCE = 2.0
 VIEWPORT = {"width": 1000, "height": 640}
 
 
-def _open(tmp_path_factory, seed):
+@pytest.fixture(scope="module")
+def browser():
     pytest.importorskip("fastapi")
     sync_api = pytest.importorskip("playwright.sync_api")
+    with sync_api.sync_playwright() as pw:
+        b = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield b
+        b.close()
+
+
+def _open(browser, tmp_path_factory, seed):
+    """A fresh studio (its own server and project folder) in a new page; returns (page, close)."""
     from strew.studio._background import BackgroundStudio
 
     project = tmp_path_factory.mktemp("studio_readouts")
     server = BackgroundStudio(project, seed=seed)
-    pw = sync_api.sync_playwright().start()
-    browser = pw.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
     pg = browser.new_page(viewport=VIEWPORT, device_scale_factor=1)
     errors: list[str] = []
     pg.on("pageerror", lambda e: errors.append(str(e)))
@@ -52,16 +59,15 @@ def _open(tmp_path_factory, seed):
     pg.project, pg.page_errors, pg.server = project, errors, server
 
     def close():
-        browser.close()
-        pw.stop()
+        pg.close()
         server.stop()
 
     return pg, close
 
 
 @pytest.fixture(scope="module")
-def page(tmp_path_factory):
-    pg, close = _open(tmp_path_factory, seed=4)
+def page(browser, tmp_path_factory):
+    pg, close = _open(browser, tmp_path_factory, seed=4)
     yield pg
     close()
 
@@ -280,11 +286,11 @@ STEPS = [
 
 
 @pytest.mark.slow
-def test_screenshot_per_tool_matches_its_baseline(tmp_path_factory):
+def test_screenshot_per_tool_matches_its_baseline(browser, tmp_path_factory):
     from PIL import Image
 
     update = os.environ.get("STREW_UPDATE_BASELINES") == "1"
-    pg, close = _open(tmp_path_factory, seed=7)
+    pg, close = _open(browser, tmp_path_factory, seed=7)
     try:
         pg.wait_for_function("window.studio.palette.selection.length === 1")
         pg.click("#fit")

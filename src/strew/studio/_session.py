@@ -615,7 +615,7 @@ class Session:
         m = self.scene_message()
         if m is not None:
             out.append(m)
-        return out + [self.status_message(f"clipped: {n} elements outside the region removed")]
+        return out + [self.layers_message(), self.status_message(f"clipped: {n} elements outside the region removed")]
 
     def _locked(self, arr: Arrangement) -> np.ndarray:
         """(n,) bool: elements of a locked layer (kind)."""
@@ -1014,7 +1014,7 @@ class Session:
         scene = self.scene_message()
         if scene is not None:
             out.append(scene)
-        return out + [self.status_message(f"cleared {what}")]
+        return out + [self.layers_message(), self.status_message(f"cleared {what}")]
 
     def _on_stroke_start(self, msg: dict, emit: Emit) -> list[dict]:
         tool = get_str(msg, "tool", choices=TOOLS)
@@ -1120,6 +1120,8 @@ class Session:
             else:
                 note = note or f"{tool}: {stroke['added']} elements added"
         self.stroke = None
+        if tool in ("brush", "spray", "erase"):
+            out.append(self.layers_message())  # the layers' counts
         return out + [self.status_message(note)]
 
     def _apply_segment(self, pts: np.ndarray) -> list[dict]:
@@ -1486,7 +1488,7 @@ class Session:
         m = self.scene_message()
         if m is not None:
             out.append(m)
-        return out + [self.status_message(f"{note}: {added} elements in {dt:.2f} s")]
+        return out + [self.layers_message(), self.status_message(f"{note}: {added} elements in {dt:.2f} s")]
 
     # ------------------------------------------------------------------ files
     def palette_arrangement(self) -> Arrangement:
