@@ -14,6 +14,18 @@ With ``--against FILE`` (an older ``_svg_import.py``, e.g. from
 that importer and today's on the same files in one run: n distinct polygons, n copies of
 one curved path under transforms, and n ``<use>`` clones of three symbols (as strew's own
 exports look). Both must give the same arrangement.
+
+With ``--scaling`` (issue 17.3) it times files of about 0.1, 1 and 10 MB (``--max-mb``)
+of four kinds: distinct polygons (every object a kind of its own: the worst case), copies
+of one path text under transforms, copies with their coordinates baked into the path data
+(as Inkscape stores moved copies: one kind found by geometry) and clones of three
+symbols. It prints seconds per MB (CPU time of this process, so that other load on the
+machine counts less) and, with ``--against``, the older importer's seconds per MB on the
+files up to ``--old-max-mb`` (default 1) and the ratio. The path-count limit is raised
+for the run (10 MB holds over 50,000 objects).
+
+    git worktree add /tmp/old_svg 574794a
+    python benchmarks/svg_import.py --scaling --against /tmp/old_svg/src/strew/io/_svg_import.py
 """
 
 from __future__ import annotations
@@ -60,6 +72,78 @@ def clones(n: int, seed: int = 3) -> str:
     return head + "".join(uses) + "</svg>"
 
 
+def baked(n: int, seed: int = 4) -> str:
+    """``n`` copies of one curved outline, each moved, turned and scaled with the numbers
+    written into its path data (Inkscape's default for moved paths)."""
+    rng = np.random.default_rng(seed)
+    ctrl = np.array([[0, 0], [2, 3], [5, 3], [6, 0], [3, -2], [0, 0]], dtype=float) - (3, 0.7)
+    parts = []
+    for _ in range(n):
+        x, y = rng.uniform(0, 1000, 2)
+        a, s = rng.uniform(0, 2 * np.pi), rng.uniform(0.5, 2)
+        q = s * ctrl @ np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]]) + (x, y)
+        f = [f"{v:.4f}" for v in q.ravel()]
+        parts.append(f'<path d="M{f[0]},{f[1]} C{f[2]},{f[3]} {f[4]},{f[5]} {f[6]},{f[7]} Q{f[8]},{f[9]} {f[10]},{f[11]} Z"/>')
+    return '<svg xmlns="http://www.w3.org/2000/svg">' + "".join(parts) + "</svg>"
+
+
+def _cpu(fn: Any) -> tuple[float, Any]:
+    import time
+
+    t0 = time.process_time()
+    out = fn()
+    return time.process_time() - t0, out
+
+
+def _same(arr: Any, old: Any) -> bool:
+    """The same kinds, counts and poses (rotation modulo a full turn) within 1e-3.
+
+    Not 1e-9: the older importer took every copy's pose from moments checked only to the
+    flattening tolerance (on ``copies``: scale off by up to 9e-5 relative, rotation 1.5e-6),
+    where the copy shortcut takes the transform itself (exact to 1e-15)."""
+    if arr.counts() != old.counts() or [arr.kinds[k] for k in arr.kind] != [old.kinds[k] for k in old.kind]:
+        return False
+    turn = np.angle(np.exp(1j * (arr.rotation - old.rotation)))
+    pos = np.c_[arr.x, arr.y, arr.scale] - np.c_[old.x, old.y, old.scale]
+    return bool(np.abs(pos).max() <= 1e-3 * max(1.0, float(np.abs(np.c_[old.x, old.y]).max())) and np.abs(turn).max() <= 1e-3)
+
+
+def scaling(opts: Any, old: Any) -> None:
+    import strew
+    from strew.io.svg import read_svg
+
+    sizes = [mb for mb in (0.1, 1.0, 10.0) if mb <= opts.max_mb]
+    bench = Bench("svg_import_scaling", "SVG import: seconds per MB from 0.1 to 10 MB (CPU time)",
+                  baseline=f"importer in {opts.against}" if old is not None else "none", json_path=opts.json)
+    read_svg(drawing(20)), read_svg(copies(20)), read_svg(baked(20))  # warm-up
+    if old is not None:
+        old.read_svg(drawing(20))
+    makers = {"distinct polygons": (drawing, 109), "copies of one path text": (copies, 103), "baked copies (Inkscape)": (baked, 124), "clones of 3 symbols": (clones, 75)}
+    with strew.limits(paths=1e7, file_size=1e9):
+        for label, (make, per_object) in makers.items():
+            for mb in sizes:
+                n = max(10, int(mb * 1e6 / per_object))
+                text = make(n)
+                t_new, arr = _cpu(lambda: read_svg(text))
+                row: dict[str, Any] = {"MB": round(len(text) / 1e6, 3), "objects": len(arr), "kinds": len(arr.kinds), "cpu_s": t_new, "s_per_MB": t_new / (len(text) / 1e6)}
+                if old is not None and mb <= opts.old_max_mb:
+                    t_old, arr_old = _cpu(lambda: old.read_svg(text))
+                    row.update(old_s_per_MB=t_old / (len(text) / 1e6), ratio=t_new / t_old, same=_same(arr, arr_old))
+                bench.row(f"{label}, {len(text) / 1e6:.2g} MB", **row)
+    bench.finish()
+
+
+def _load_old(path: str) -> Any:
+    import importlib.util
+    import sys
+
+    spec = importlib.util.spec_from_file_location("strew.io._svg_import_baseline", path)
+    old = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = old  # dataclasses look their module up
+    spec.loader.exec_module(old)  # relative imports resolve in strew.io
+    return old
+
+
 def against(opts: Any) -> None:
     import importlib.util
     import sys
@@ -92,7 +176,16 @@ def against(opts: Any) -> None:
 
 
 def main() -> None:
-    opts = parse_args(__doc__, extra=lambda p: p.add_argument("--against", default=None, help="an older _svg_import.py to time against"))
+    def extra(p: Any) -> None:
+        p.add_argument("--against", default=None, help="an older _svg_import.py to time against")
+        p.add_argument("--scaling", action="store_true", help="seconds per MB on 0.1, 1 and 10 MB files")
+        p.add_argument("--max-mb", type=float, default=10.0, help="largest file for --scaling")
+        p.add_argument("--old-max-mb", type=float, default=1.0, help="largest file the older importer reads in --scaling")
+
+    opts = parse_args(__doc__, extra=extra)
+    if opts.scaling:
+        scaling(opts, _load_old(opts.against) if opts.against else None)
+        return
     if opts.against:
         against(opts)
         return

@@ -262,3 +262,41 @@ def test_kind_grid_finds_matches_among_many_distinct_kinds():
     assert len(arr.kinds) == 90
     assert arr.kind[90:].tolist() == [arr.kind[i] for i in copies]
     np.testing.assert_allclose(arr.scale[90:], 1.5, rtol=1e-6)
+
+
+def baked_path(points: np.ndarray, curve: bool = False) -> str:
+    f = [f"{float(v):.5f}" for v in points.ravel()]
+    if curve:  # M p0 C p1 p2 p3 Q p4 p5 Z
+        return f'<path d="M{f[0]},{f[1]} C{f[2]},{f[3]} {f[4]},{f[5]} {f[6]},{f[7]} Q{f[8]},{f[9]} {f[10]},{f[11]} Z"/>'
+    return '<path d="M' + " L".join(f"{f[i]},{f[i + 1]}" for i in range(0, len(f), 2)) + ' Z"/>'
+
+
+@settings(max_examples=20)
+@given(st.lists(st.tuples(st.floats(-200, 200), st.floats(-200, 200), st.floats(-math.pi, math.pi), st.floats(0.3, 3)), min_size=2, max_size=6))
+def test_baked_copies_are_one_kind_with_exact_poses(poses):
+    """Copies moved in Inkscape (numbers rewritten in the path data) share the first one's
+    kind, with the pose of the move to the file's rounding (1e-5 here)."""
+    from strew.io.svg import read_svg
+
+    ctrl = np.array([[0, 0], [2, 3], [5, 3], [6, 0], [3, -2], [0, 0]], dtype=float)
+    body = ""
+    for x, y, a, s in poses:
+        rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+        body += baked_path(s * ctrl @ rot.T + (x, y), curve=True)
+    arr = read_svg(HEAD + body + "</svg>")
+    assert arr.kinds == ("shape",)
+    a0, s0 = poses[0][2], poses[0][3]
+    for i, (_, _, a, s) in enumerate(poses):
+        assert arr.scale[i] / arr.scale[0] == pytest.approx(s / s0, rel=1e-4)
+        assert math.remainder(arr.rotation[i] - arr.rotation[0] - (a - a0), 2 * math.pi) == pytest.approx(0, abs=1e-4)
+
+
+def test_baked_near_copies_stay_other_kinds():
+    from strew.io.svg import read_svg
+
+    square = np.array([[0, 0], [10, 0], [10, 10], [0, 10]], dtype=float)
+    tall = np.array([[0, 0], [10, 0], [10, 10.3], [0, 10.3]], dtype=float)
+    rot = np.array([[0.6, -0.8], [0.8, 0.6]])
+    body = baked_path(square) + baked_path(tall + 30) + baked_path(2 * square @ rot.T + 60) + baked_path(2 * tall @ rot.T + 90)
+    arr = read_svg(HEAD + body + "</svg>")
+    assert arr.kind.tolist() == [0, 1, 0, 1]

@@ -1010,6 +1010,8 @@ class _Reader:
         self._latent_made = False
         # geometry text of single-part objects -> (kind, kind frame -> object coordinates, object map)
         self.sources: dict[tuple[str, ...], list[Any]] = {}
+        # control-point hash of single-part objects -> (kind, kind frame -> world, world control points)
+        self.outlines: dict[tuple[Any, ...], tuple[_Kind, np.ndarray, np.ndarray]] = {}
         self._rows = 0
         self._next: dict[str, int] = {}
 
@@ -1156,6 +1158,9 @@ class _Reader:
         source = _source_key(el, key)
         if source is not None and self.copy_of(source, el, m, void, hidden):
             return
+        outline = self.control_outline(el, m, key) if source is not None else None
+        if outline is not None and self.moved_copy(outline, el, void, hidden):
+            return
         parts = doc.parts(el, m, doc.inherited_props(el), show=True) if not void else _visible_parts(doc, el, m)
         flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
         if not flat.paths:
@@ -1183,6 +1188,68 @@ class _Reader:
         if source is not None and len(parts) == 1 and source not in self.sources:
             # for later objects with the same geometry text (see copy_of)
             self.sources[source] = [placed[0], placed[1], _compose(m, doc.transform(el)), None]
+        if outline is not None and len(parts) == 1 and outline[0] not in self.outlines:
+            self.outlines[outline[0]] = (placed[0], placed[1], outline[1])
+
+    def control_outline(self, el: ET.Element, m: np.ndarray, key: str | None) -> tuple[tuple[Any, ...], np.ndarray] | None:
+        """``(hash, points)``: the control points of a path or basic shape in world coordinates
+        (complex, ``(n,)``) and a hash of their shape up to a similarity, or None.
+
+        The hash holds the segment kinds and the points in the frame that puts the first
+        point at 0 and the farthest one at 1, rounded to 1% of the size: copies that
+        Inkscape moved, turned or scaled by writing new numbers into the path data hash
+        alike (see :meth:`moved_copy`). Arcs are left out (their radii are not points).
+        """
+        segs = self.doc.segments(el)
+        n = len(segs.code)
+        if n == 0 or n > 512 or (segs.code == 3).any():
+            return None
+        used = np.ones((n, 4), dtype=bool)
+        used[:, 1] = segs.code != 0
+        used[:, 2] = segs.code == 2
+        own = _compose(m, self.doc.transform(el))
+        pts = _apply(own, segs.pts[used])
+        z = pts[:, 0] + 1j * pts[:, 1]
+        d = np.abs(z - z[0])
+        far = int(np.argmax(d))
+        if not (d[far] > 0) or not np.isfinite(d[far]):
+            return None
+        if abs(np.linalg.det(own[:, :2])) == 0 or np.linalg.det(own[:, :2]) < 0:
+            return None  # a mirror image is another kind: leave it to the matcher
+        canon = (z - z[0]) / (z[far] - z[0])
+        q = np.round(np.c_[canon.real, canon.imag] * 100).astype(np.int64)
+        return (key or "", segs.code.tobytes(), segs.sub.tobytes(), segs.closed.tobytes(), far, q.tobytes()), z
+
+    def moved_copy(self, outline: tuple[tuple[Any, ...], np.ndarray], el: ET.Element, void: bool, hidden: bool) -> bool:
+        """Place ``el`` as a moved, turned and scaled copy of an earlier object, if it is one.
+
+        The similarity ``z -> a z + b`` that best maps the earlier object's control points
+        onto this one's (least squares) must put every point within 1e-3 of the object's
+        size: a Bezier curve lies in the hull of its control points, so the outlines then
+        agree as closely as :func:`_match` asks (3e-3 of the size), and the pose is exact
+        to the file's rounding instead of to the flattening (issue 17.3). Round kinds are
+        left to the matcher, which keeps their rotation 0.
+        """
+        known = self.outlines.get(outline[0])
+        if known is None:
+            return False
+        kind, pose, zp = known
+        z = outline[1]
+        if len(z) != len(zp) or not kind.matchable or not _has_orientation(kind):
+            return False
+        mp, mz = zp.mean(), z.mean()
+        u, v = zp - mp, z - mz
+        den = float(np.vdot(u, u).real)
+        if not den > 0:
+            return False
+        a = complex(np.vdot(u, v)) / den
+        size = float(np.abs(v).max())
+        if not abs(a) > 0 or float(np.abs(a * u - v).max()) > 1e-3 * size:
+            return False
+        sim = np.array([[a.real, -a.imag, 0.0], [a.imag, a.real, 0.0]])
+        sim[:, 2] = [mz.real - (a * mp).real, mz.imag - (a * mp).imag]
+        self.place(kind, _compose(sim, pose), void, el, hidden)
+        return True
 
     def copy_of(self, source: tuple[str, ...], el: ET.Element, m: np.ndarray, void: bool, hidden: bool) -> bool:
         """Place ``el`` as a copy of an earlier object with the same geometry text, if it is one.
