@@ -66,6 +66,8 @@ SPEC = MethodSpec(
         Param("check_energy", "bool", None, help="Keep an optimisation step only when it lowers Eq. 2.", cli=False, section="§5.3"),
         Param("yield_window", "int", None, low=0, help="Iterations whose horizon elements yield to a larger size class.", cli=False,
               section="extension of §7"),
+        Param("noise_floor", "float", None, low=0, help="Optimisation moves shortened by the element's prediction spread, by at most "
+              "this fraction of its radius (keeps the exemplar's jitter).", cli=False, section="extension of §5.2-5.3"),
     ),
 )
 
