@@ -58,6 +58,7 @@ __all__ = [
     "as_region",
     "check_context",
     "PROVENANCE_FIELDS",
+    "rerun",
 ]
 
 # method name -> package that defines ``SPEC`` (imported on demand; imports point down)
@@ -113,6 +114,8 @@ class Param:
     cli_help : str, optional
         ``--help`` text when the flag reads differently from the Python parameter
         (degrees on the CLI, radians in Python).
+    what : str
+        What the value is, in messages ("the ratio constant must be ...").
     """
 
     name: str
@@ -131,6 +134,7 @@ class Param:
     parse: str | None = None
     metavar: str | None = None
     cli_help: str | None = None
+    what: str = ""
 
     @property
     def cli_flag(self) -> str:
@@ -164,8 +168,22 @@ class Param:
             or (self.high is not None and (v > self.high or (self.high_open and v == self.high)))
         )
         if bad:
-            raise InputError(f"{name}: must be {self.describe_range()}, got {value!r}")
+            what = f"{self.what} " if self.what else ""
+            raise InputError(f"{name}: {what}must be {self.bound_phrase()}, got {value!r}")
         return v
+
+    def bound_phrase(self) -> str:
+        """``a positive integer``, ``at least 2``, ``in (0, 1]``: what the bounds ask for."""
+        lo, hi = self.low, self.high
+        if hi is None and lo is not None:
+            if self.type == "int" and lo in (0, 1) and not self.low_open:
+                return "a positive integer" if lo == 1 else "a non-negative integer"
+            if lo == 0:
+                return "positive" if self.low_open else "non-negative"
+            return f"greater than {lo:g}" if self.low_open else f"at least {lo:g}"
+        if lo is None and hi is not None:
+            return f"below {hi:g}" if self.high_open else f"at most {hi:g}"
+        return self.describe_range()
 
     def check(self, value: Any) -> Any:
         """``value`` converted and checked; :class:`InputError` naming :attr:`name` if bad.
@@ -308,19 +326,20 @@ class MethodSpec:
         return out
 
     def help_line(self, p: Param) -> str:
-        """The ``--help`` text of one parameter: help, unit, range and paper section."""
+        """The ``--help`` text of one parameter: help, unit, range, paper section, default."""
         bits = [p.cli_help or p.help]
         extra = []
-        if p.unit:
-            extra.append(p.unit)
-        rng = p.describe_range()
-        if rng and p.choices is None:
+        unit = "degrees" if p.parse in ("degrees", "per-kind-range-deg") else p.unit
+        if unit:
+            extra.append(unit)
+        rng = p.bound_phrase() if p.choices is None and (p.low is not None or p.high is not None) else ""
+        if rng:
             extra.append(rng)
         if p.section:
             extra.append(p.section)
         if extra:
             bits.append("(" + "; ".join(extra) + ")")
-        if p.default is not None and p.cli in ("value", "multiple") and not isinstance(p.default, (dict, list)):
+        if p.default is not None and p.cli == "value" and "[default" not in bits[0]:
             d = p.default
             if p.parse == "degrees" and isinstance(d, (int, float)):
                 d = math.degrees(d)
@@ -535,8 +554,9 @@ def context_footprint(context: Arrangement, gap: float = 0.0) -> Any:
 def free_region(region: Region | None, context: Arrangement | None, *, gap: float = 0.0) -> Region | None:
     """``region`` less the footprint of ``context`` (issue 15 point 4: fixed obstacles).
 
-    With no context, ``region`` itself. A region that is wholly covered gives an empty
-    Region (zero area), which every method answers with an empty arrangement.
+    With no context, ``region`` itself. A region that the context covers wholly gives
+    :data:`EMPTY_REGION` (see :func:`is_empty`), which every method answers with an
+    empty arrangement.
     """
     if region is None or context is None or len(context) == 0:
         return region
@@ -546,12 +566,26 @@ def free_region(region: Region | None, context: Arrangement | None, *, gap: floa
 
     rest = shapely.difference(region.geometry, context_footprint(context, gap))
     polys = [g for g in shapely.get_parts(rest) if isinstance(g, shapely.Polygon) and g.area > 0]
+    if not polys:
+        return EMPTY_REGION  # type: ignore[return-value]
     return Region(shapely.MultiPolygon(polys) if len(polys) != 1 else polys[0])
 
 
-def is_empty(region: Region | None) -> bool:
-    """Whether a region holds no area at all."""
-    return region is not None and not (region.area > 0)
+class _EmptyRegion:
+    """What is left of a region that a context covers wholly (a Region always has area)."""
+
+    area = 0.0
+
+    def __repr__(self) -> str:
+        return "EMPTY_REGION"
+
+
+EMPTY_REGION = _EmptyRegion()
+
+
+def is_empty(region: Any) -> bool:
+    """Whether a region (from :func:`free_region`) holds no area at all."""
+    return region is EMPTY_REGION or (region is not None and not (region.area > 0))
 
 
 def empty_result(shapes: Mapping[str, Any] | None, region: Region | None, why: str) -> Arrangement:
@@ -571,13 +605,38 @@ def iter_params(specs_: Iterable[MethodSpec]) -> Iterable[tuple[MethodSpec, Para
 def names_to_flags(spec: MethodSpec, message: str) -> str:
     """A library message with its leading Python parameter name replaced by the CLI flag."""
     for p in (spec.input, *spec.params):
-        if not p.cli:
+        if not p.cli and p.flag is None:
             continue
         for sep in (":", " ", "["):
             if message.startswith(p.name + sep):
                 return p.cli_flag + message[len(p.name):]
-    for word, flag in (("region:", "--region/--size:"), ("context:", "--around:"), ("rng:", "--seed:")):
+    for word, flag in (("region:", "--region or --size:"), ("context:", "--around:"), ("rng:", "--seed:")):
         if message.startswith(word):
             return flag + message[len(word):]
     return message
 
+
+
+def rerun(arr: Arrangement, input: Any, *, context: Arrangement | None = None, **overrides: Any) -> Arrangement:
+    """Repeat the run that made ``arr`` from its ``meta``: same method, parameters, seed
+    (or Generator state) and region, on ``input`` (whose content hash must match).
+
+    Parameters recorded as objects (a flow callable, exclusive shapes) cannot be read
+    back from meta: pass them again in ``overrides``. From the CLI, ``strew rerun
+    OUTPUT.json`` repeats the recorded command instead.
+    """
+    meta = arr.meta
+    if "method" not in meta or "params" not in meta:
+        raise InputError("meta: records no method and parameters (not made by a strew method)")
+    s = spec(meta["method"])
+    want = meta.get("input_hash")
+    if want is not None and content_hash(input) != want:
+        raise InputError("input: its content hash differs from the one recorded in meta")
+    params = dict(meta["params"])
+    params.pop("pattern", None)  # ornament records its input by name too
+    for k, v in params.items():
+        if isinstance(v, str) and v.startswith("<") and k not in overrides:
+            raise InputError(f"{k}: recorded as {v}; pass it again to rerun")
+    params.update(overrides)
+    params = {k: v for k, v in params.items() if v is not None}
+    return s.function()(input, arr.region, context=context, rng=generator_from(meta), **params)

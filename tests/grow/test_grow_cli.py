@@ -89,7 +89,7 @@ def test_flip_option_changes_the_connectivity(tmp_path):
     a, b = tmp_path / "a.json", tmp_path / "b.json"
     assert main(["grow", TILES, "--count", "100", "-q", "--out", str(a)]) == 0
     assert main(["grow", TILES, "--count", "100", "--flip", f"{i},{j}", "-q", "--out", str(b)]) == 0
-    assert load(b).meta["params"]["flip"] == [[i, j]]
+    assert load(b).meta["params"]["flips"] == [[i, j]]
     assert not np.array_equal(load(a).xy, load(b).xy)
 
 
@@ -130,13 +130,13 @@ def test_bad_exemplars_exit_2(tmp_path, capsys, xy, message):
 @pytest.mark.parametrize(
     "extra, message",
     [
-        ([], "give --count"),
+        ([], "give count, or a region"),
         (["--count", "5", "--flip", "0,999"], "out of range"),
         (["--count", "5", "--flip", "x"], "--flip"),
         (["--count", "5", "--priority", "scale"], "KIND=P"),
         (["--count", "5", "--priority", "nope=1"], "unknown kind"),
         (["--count", "5", "--mode", "flow"], "flow field"),
-        (["--count", "5", "--spray-radius", "3"], "without --spray"),
+        (["--count", "5", "--spray-radius", "3"], "--spray-radius: given without spray"),
         (["--size", "50x50", "--start", "500,500"], "outside the region"),
         (["--count", "5", "--flow", "missing.json"], "no such file"),
     ],

@@ -136,8 +136,8 @@ def test_region_smaller_than_every_shape(tmp_path, capsys, hook, method):
         (["--scale", "0:1"], "scale[hook]: scales must be positive"),
         (["--scale", "a:b"], "--scale: expected A:B"),
         (["--margin", "wide"], "--margin: expected a number"),
-        (["--weight", "nope=1"], "weights: unknown kind 'nope'"),
-        (["--max-failures", "0"], "max_failures: must be a positive integer"),
+        (["--weight", "nope=1"], "--weight: unknown kind 'nope'"),
+        (["--max-failures", "0"], "--max-failures: must be a positive integer"),
         (["--method", "magic"], "magic"),
     ],
 )

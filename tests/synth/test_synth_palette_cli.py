@@ -110,7 +110,7 @@ def _one_line_error(capsys, rc, needle):
         (["grid.json", "--size", "50x50", "--brush", "stroke.json"], "needs --brush-radius"),
         (["grid.json", "--size", "50x50", "--fill", "500,500"], "outside the region"),
         (["grid.json", "--size", "50x50", "--c", "1"], "ratio constant"),
-        (["grid.json", "--size", "50x50", "--k", "0"], "k: must be at least 1"),
+        (["grid.json", "--size", "50x50", "--k", "0"], "--k: must be a positive integer"),
         (["grid.json"], "--region or --size"),
         (["grid.json", "--size", "50x50", "--plot", "p.svg"], "--plot"),
     ],

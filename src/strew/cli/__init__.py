@@ -32,6 +32,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "grow": ("strew.cli.grow", "Grow from an exemplar, element by element, from one seed (Ijiri et al.)."),
     "studio": ("strew.cli.studio", "Paint with example palettes in the browser (brush, spray, filler, eraser)."),
     "synth": ("strew.cli.synth", "Synthesize a texture from exemplars by fast region growing (Davison et al.)."),
+    "rerun": ("strew.cli.rerun", "Repeat the command recorded in an output's meta and check it byte for byte."),
 }
 
 

@@ -7,8 +7,8 @@ Every command module uses these so that flags, messages and exit codes agree:
 - :func:`resolve_domain` turns ``--region``/``--size`` into a :class:`~strew.Region`;
 - :func:`progress_bar` gives a ``(progress, should_cancel)`` pair for library calls,
   drawing a rich bar on stderr (off with ``--quiet`` or when stderr is not a TTY);
-- :func:`write_outputs` records meta (version, command, seed, params) and writes every
-  ``--out`` atomically;
+- :func:`write_outputs` adds the command line to meta (the library stamps the rest) and
+  writes every ``--out`` atomically;
 - :func:`parse_range`, :func:`parse_point` parse ``A:B`` and ``x,y`` values.
 """
 
@@ -73,6 +73,7 @@ def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
     from .._limits import limits
 
     args = list(sys.argv[1:] if argv is None else argv)
+    _ARGV[:] = args  # for meta.command
     try:
         with limits():
             with group.make_context("strew", args) as ctx:
@@ -297,9 +298,17 @@ def check_outputs(outs: Sequence[str]) -> None:
 _FILLING = ("pack", "grow", "synth", "ornament")
 
 
+# ``strew rerun`` repeats a recorded command and records it unchanged (byte for byte)
+_COMMAND_OVERRIDE: list[str] = []
+# the arguments of the running command (set by run_main; sys.argv when called otherwise)
+_ARGV: list[str] = []
+
+
 def command_line() -> str:
     """The command line that produced this run, for ``meta.command``."""
-    return "strew " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+    if _COMMAND_OVERRIDE:
+        return _COMMAND_OVERRIDE[-1]
+    return "strew " + " ".join(shlex.quote(a) for a in (_ARGV or sys.argv[1:]))
 
 
 def write_outputs(
@@ -311,8 +320,11 @@ def write_outputs(
     params: dict[str, Any] | None = None,
     quiet: bool = False,
 ) -> Arrangement:
-    """Record how the arrangement was made in ``meta`` and write every output, all or none.
+    """Add the command line to ``meta`` and write every output, all or none.
 
+    The methods stamp their own provenance (:func:`strew._method.stamp`: version,
+    method, seed, parameters, input hash); the CLI adds only ``command``. ``seed`` and
+    ``params`` are recorded for commands whose library call does not stamp them.
     Refuses (:class:`InputError`) to write an empty result of a filling method.
 
     Returns the arrangement with its meta filled in.
@@ -321,14 +333,18 @@ def write_outputs(
     from ..io import save_many
 
     if method in _FILLING and len(arr) == 0:
-        raise InputError(f"{method}: no element fits (is the region smaller than one element?); nothing written")
+        info = arr.meta.get(method)
+        why = arr.meta.get("stopped") or (info.get("stopped") if isinstance(info, dict) else None)
+        raise InputError(f"{method}: no element fits ({why or 'is the region smaller than one element?'}); nothing written")
 
-    meta: dict[str, Any] = {"generator": f"strew {__version__}"}
-    if method is not None:
+    meta: dict[str, Any] = {}
+    if "generator" not in arr.meta:
+        meta["generator"] = f"strew {__version__}"
+    if method is not None and "method" not in arr.meta:
         meta["method"] = method
-    if seed is not None:
+    if seed is not None and "seed" not in arr.meta and "rng_state" not in arr.meta:
         meta["seed"] = seed
-    if params is not None:
+    if params is not None and "params" not in arr.meta:
         meta["params"] = params
     meta["command"] = command_line()
     arr = arr.with_meta(**meta)

@@ -363,7 +363,8 @@ SPEC = MethodSpec(
                 section="§3", parse="text", metavar="SCRIPT"),
     params=(
         Param("size", "float", None, low=0, high=MAX_COORD, low_open=True, unit="document units",
-              help="Evaluate on the square [0, N] x [0, N] when no region is given [default: 2000].", cli=False, section="§4"),
+              help="Evaluate on the square [0, N] x [0, N] when no region is given [default: 2000].", cli=False, flag="--size",
+              section="§4"),
         Param("name", "str", "arrangement", help="Module-level variable to evaluate.", section="§3"),
     ),
 )
@@ -431,7 +432,8 @@ def run(
     if not (dom.area > 0):
         arr = empty_result({}, dom, "the region is empty")
     else:
-        _, arr = _run_on(path, prm["name"], dom, root, n)
+        pm, arr = _run_on(path, prm["name"], dom, root, n)
+        arr = arr.with_meta(program={"vertices": pm.n_vertices, "edges": pm.n_edges, "faces": pm.n_faces})
         rep.tick(1, force=True)
         if ctx is not None and len(ctx) and len(arr):
             arr = _drop_overlapping(arr, context_footprint(ctx))

@@ -43,7 +43,7 @@ SPEC = MethodSpec(
               section="§5.4"),
         Param("init", "str", "grow", choices=("grow", "patch"), help="Region growing, or Ma et al.'s patch initialisation.", section="§5, §6.4"),
         Param("k", "int", 5, low=1, help="k-coherence set size.", section="§5.1"),
-        Param("c", "float", 2.0, low=1, low_open=True, help="Ratio constant rejecting poor candidates.", section="§5.1"),
+        Param("c", "float", 2.0, low=1, low_open=True, what="the ratio constant", help="Ratio constant rejecting poor candidates.", section="§5.1"),
         Param("optimize", "str", "horizon", choices=("horizon", "global", "none"), help="Optimise the horizon, every element, or nothing.",
               section="§5.2-5.3, §6.4"),
         Param("kind_cost", "float", 1.0, low=0, help="Kind mismatch cost omega, in units of the squared pairing threshold.", section="§4, Eq. 1"),
@@ -221,8 +221,9 @@ def synthesize(
         arr = _synthesize(sel, free, rng=gen, progress=progress, should_cancel=should_cancel, **prm)
         if free is not region:
             arr = arr.replace(region=region)
-    record = {k: v for k, v in prm.items() if k != "trace"}
-    return stamp(arr, SPEC, list(sel.exemplars()), record, seed, region=region, context=ctx)
+    record = {**prm, "trace": None}  # an output receiver, not a setting
+    given = exemplars if isinstance(exemplars, (Arrangement, list, tuple, Mapping)) else list(sel.exemplars())
+    return stamp(arr, SPEC, given, record, seed, region=region, context=ctx)
 
 
 def _synthesize(
