@@ -3,16 +3,18 @@
 Sakurai & Miyata's fill-gap (§4) carried to a surface, with Davison et al.'s bounding
 spheres (§5.7) as the exclusive regions:
 
-1. Poisson-disk step (§4.1): a batch of candidate points uniform in area over the
-   surface (so uniform in the geodesic metric), each with a kind and a scale; a
-   candidate is kept when its bounding sphere overlaps no placed sphere and no earlier
-   kept candidate of the batch (sequential dart throwing, compiled).
-2. Fill-gap rounds (§4.2): later batches are drawn only on faces that still have room,
-   i.e. faces whose centroid lies farther from the nearest placed element than that
-   element's radius plus the smallest radius (less the face's own extent). This plays
-   the role of the paper's distance field with probability ``d**16``: candidates go
-   to the gaps. Rounds stop when no face has room, or after ``max_failures`` rounds in
-   a row that place nothing.
+1. Free-space points (Davison et al. §5.1): samples uniform in area over the surface
+   (so uniform in the geodesic metric), about 6 per ``r_small**2``, ``r_small`` the
+   smallest bounding radius.
+2. Poisson-disk step (§4.1): the free-space points in random order, each with a random
+   kind and scale, are darts; one is placed when its bounding sphere meets no placed
+   sphere, earlier darts included (sequential dart throwing, compiled, on a grid).
+3. Fill-gap rounds (§4.2): free-space points where a sphere of the smallest radius no
+   longer fits are removed; the rest are thrown again with fresh kinds and scales, so
+   every round throws only into the gaps (the role of the paper's distance field with
+   probability ``d**16``). Rounds stop when no free-space point is left, or after
+   ``max_failures`` rounds in a row that place nothing. The packing is maximal up to the
+   resolution of the free-space points.
 
 Departure from "Poisson disk in geodesic distance": the overlap test uses the chord
 (Euclidean) distance between bounding spheres, as Davison et al. do. A chord is never
@@ -29,6 +31,7 @@ import numba
 import numpy as np
 
 from .._errors import InputError
+from .._limits import check_elements
 from .._progress import Reporter
 from .._rng import as_rng
 from .._version import __version__
@@ -41,17 +44,62 @@ __all__ = ["pack"]
 
 
 @numba.njit(cache=True)
-def _greedy(n: int, indptr: np.ndarray, indices: np.ndarray) -> np.ndarray:
-    """Sequential acceptance in index order: i is kept unless a kept j < i conflicts."""
-    keep = np.zeros(n, dtype=np.bool_)
-    for i in range(n):
-        ok = True
-        for k in range(indptr[i], indptr[i + 1]):
-            j = indices[k]
-            if j < i and keep[j]:
-                ok = False
-                break
-        keep[i] = ok
+def _cell(p: np.ndarray, origin: np.ndarray, h: float, dims: np.ndarray) -> tuple[int, int, int]:
+    out = np.empty(3, dtype=np.int64)
+    for a in range(3):
+        c = int((p[a] - origin[a]) / h)
+        out[a] = min(max(c, 0), dims[a] - 1)
+    return out[0], out[1], out[2]
+
+
+@numba.njit(cache=True)
+def _hits(q: np.ndarray, rq: float, P: np.ndarray, R: np.ndarray, heads: np.ndarray, nxt: np.ndarray,
+          origin: np.ndarray, h: float, dims: np.ndarray) -> bool:
+    """Whether the sphere (q, rq) meets a placed sphere (the grid's cells are >= rq + max R)."""
+    cx, cy, cz = _cell(q, origin, h, dims)
+    for ix in range(max(cx - 1, 0), min(cx + 2, dims[0])):
+        for iy in range(max(cy - 1, 0), min(cy + 2, dims[1])):
+            for iz in range(max(cz - 1, 0), min(cz + 2, dims[2])):
+                j = heads[(ix * dims[1] + iy) * dims[2] + iz]
+                while j >= 0:
+                    d0 = q[0] - P[j, 0]
+                    d1 = q[1] - P[j, 1]
+                    d2 = q[2] - P[j, 2]
+                    lim = rq + R[j]
+                    if d0 * d0 + d1 * d1 + d2 * d2 < lim * lim:
+                        return True
+                    j = nxt[j]
+    return False
+
+
+@numba.njit(cache=True)
+def _covered(Q: np.ndarray, rq: float, P: np.ndarray, R: np.ndarray, heads: np.ndarray, nxt: np.ndarray,
+             origin: np.ndarray, h: float, dims: np.ndarray) -> np.ndarray:
+    """For each free-space point, whether a sphere of radius rq there would meet a placed one."""
+    out = np.zeros(len(Q), dtype=np.bool_)
+    for i in range(len(Q)):
+        out[i] = _hits(Q[i], rq, P, R, heads, nxt, origin, h, dims)
+    return out
+
+
+@numba.njit(cache=True)
+def _throw(C: np.ndarray, rc: np.ndarray, n: int, P: np.ndarray, R: np.ndarray, heads: np.ndarray, nxt: np.ndarray,
+           origin: np.ndarray, h: float, dims: np.ndarray) -> np.ndarray:
+    """Sequential dart throwing: candidate i is placed unless its sphere meets a placed one
+    (earlier candidates included). Placed spheres go to P[n:], R[n:]; returns the mask."""
+    keep = np.zeros(len(C), dtype=np.bool_)
+    for i in range(len(C)):
+        if _hits(C[i], rc[i], P[:n], R[:n], heads, nxt, origin, h, dims):
+            continue
+        keep[i] = True
+        for a in range(3):
+            P[n, a] = C[i, a]
+        R[n] = rc[i]
+        cx, cy, cz = _cell(C[i], origin, h, dims)
+        c = (cx * dims[1] + cy) * dims[2] + cz
+        nxt[n] = heads[c]
+        heads[c] = n
+        n += 1
     return keep
 
 
@@ -91,37 +139,6 @@ def _range(value: Any, name: str) -> tuple[float, float]:
     if not (np.isfinite(lo) and np.isfinite(hi)) or lo <= 0 or hi < lo:
         raise InputError(f"{name}: expected 0 < lo <= hi, got {value!r}")
     return lo, hi
-
-
-def _conflicts(points: np.ndarray, radii: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """CSR adjacency of candidate pairs whose bounding spheres intersect."""
-    from scipy.sparse import coo_matrix
-    from scipy.spatial import cKDTree
-
-    n = len(points)
-    pairs = cKDTree(points).query_pairs(2.0 * float(radii.max()), output_type="ndarray")
-    if len(pairs):
-        d = np.linalg.norm(points[pairs[:, 0]] - points[pairs[:, 1]], axis=1)
-        pairs = pairs[d < radii[pairs[:, 0]] + radii[pairs[:, 1]]]
-    i = np.concatenate([pairs[:, 0], pairs[:, 1]]) if len(pairs) else np.zeros(0, np.int64)
-    j = np.concatenate([pairs[:, 1], pairs[:, 0]]) if len(pairs) else np.zeros(0, np.int64)
-    csr = coo_matrix((np.ones(len(i), dtype=np.int8), (i, j)), shape=(n, n)).tocsr()
-    return csr.indptr.astype(np.int64), csr.indices.astype(np.int64)
-
-
-def _clear_of(tree: Any, placed_r: np.ndarray, points: np.ndarray, radii: np.ndarray, k: int) -> np.ndarray:
-    """Whether each candidate's sphere misses every placed sphere (conservative if crowded)."""
-    rmax = float(placed_r.max())
-    k = min(k, len(placed_r))
-    d, j = tree.query(points, k=k, distance_upper_bound=float(radii.max()) + rmax)
-    d = d.reshape(len(points), k)
-    j = j.reshape(len(points), k)
-    found = np.isfinite(d)
-    rj = np.where(found, placed_r[np.minimum(j, len(placed_r) - 1)], 0.0)
-    ok = np.all(~found | (d >= radii[:, None] + rj), axis=1)
-    if k < len(placed_r):
-        ok &= ~found[:, -1]  # all k neighbours within reach: more may hide beyond, refuse
-    return ok
 
 
 def pack(
@@ -188,8 +205,6 @@ def pack(
     >>> len(a) > 100 and {"z", "nx", "tx"} <= set(a.columns)
     True
     """
-    from scipy.spatial import cKDTree
-
     mesh = load_mesh(mesh)
     lib = _shapes(shapes_or_radius)
     kinds = list(lib)
@@ -230,84 +245,77 @@ def pack(
     areas = np.asarray(mesh.area_faces, dtype=float)
     total = float(areas.sum())
     n_est = total / (2.0 * np.sqrt(3.0) * r_small * r_small)  # hexagonal packing of the smallest
-    from .._limits import check_elements
-
     check_elements(int(n_est), "surface pack")
-    batch = int(min(max(2000, 1.5 * n_est), 400_000))
-    k_nbrs = int(min(64, np.ceil((r_big * 2 / r_small + 1) ** 2)))
-    centroids = V[F].mean(axis=1)
-    extent = np.linalg.norm(V[F] - centroids[:, None, :], axis=2).max(axis=1)
+    # free-space samples per round: about 6 per r_small^2 of the area that still has room
+    density = 6.0 / (r_small * r_small)
 
-    pts_l: list[np.ndarray] = []
-    rad_l: list[np.ndarray] = []
+    # the compiled grid: cells at least as wide as two of the largest spheres
+    lo_c = V.min(axis=0)
+    span = np.maximum(V.max(axis=0) - lo_c, 1e-12)
+    h = max(2.0 * r_big, float(span.max()) / 128.0)
+    dims = np.maximum(np.ceil(span / h).astype(np.int64), 1)
+    heads = np.full(int(np.prod(dims)), -1, dtype=np.int64)
+    cap = int(2 * n_est) + 1024
+    P = np.zeros((cap, 3))
+    R = np.zeros(cap)
+    nxt = np.full(cap, -1, dtype=np.int64)
+
+    # free-space points (Davison §5.1): samples uniform in area, about 6 per r_small^2
+    m = int(min(max(2000, density * total), 4_000_000))
+    q_face = gen.choice(len(F), size=m, p=areas / total)
+    u = gen.random((m, 2))
+    flip = u.sum(axis=1) > 1.0
+    u[flip] = 1.0 - u[flip]
+    q_bary = np.column_stack([1.0 - u[:, 0] - u[:, 1], u[:, 0], u[:, 1]])
+    q_pts = np.einsum("mk,mkj->mj", q_bary, V[F[q_face]])
+    free = np.arange(m)
+
     face_l: list[np.ndarray] = []
     bary_l: list[np.ndarray] = []
     kind_l: list[np.ndarray] = []
     scale_l: list[np.ndarray] = []
-    weight = areas.copy()
     failures = 0
     rounds = 0
     rep = Reporter(progress, should_cancel, total=int(n_est), message="surface pack")
     placed = 0
-    tree = None
-    placed_r = np.zeros(0)
     for rounds in range(1, max_rounds + 1):
         rep.tick(placed)
-        wsum = weight.sum()
-        if wsum <= 0:
+        if placed:
+            # fill-gap (§4.2): only points where a sphere of the smallest radius still
+            # fits stay candidates, so every round throws into the gaps
+            free = free[~_covered(q_pts[free], r_small, P[:placed], R[:placed], heads, nxt, lo_c, h, dims)]
+        if len(free) == 0:
             break
-        faces = gen.choice(len(F), size=batch, p=weight / wsum)
-        u = gen.random((batch, 2))
-        flip = u.sum(axis=1) > 1.0
-        u[flip] = 1.0 - u[flip]
-        bary = np.column_stack([1.0 - u[:, 0] - u[:, 1], u[:, 0], u[:, 1]])
-        kind = gen.choice(len(kinds), size=batch, p=p_kind).astype(np.int32)
-        sc = gen.uniform(lo, hi, size=batch) if hi > lo else np.full(batch, lo)
+        sel = free[gen.permutation(len(free))]
+        kind = gen.choice(len(kinds), size=len(sel), p=p_kind).astype(np.int32)
+        sc = gen.uniform(lo, hi, size=len(sel)) if hi > lo else np.full(len(sel), lo)
         radii = base_r[kind] * sc + margin
-        pts = np.einsum("mk,mkj->mj", bary, V[F[faces]])
-        if tree is not None:
-            ok = _clear_of(tree, placed_r, pts, radii, k_nbrs)
-            sel = np.flatnonzero(ok)
-        else:
-            sel = np.arange(batch)
-        new = 0
-        if len(sel):
-            indptr, indices = _conflicts(pts[sel], radii[sel])
-            keep = sel[_greedy(len(sel), indptr, indices)]
-            new = len(keep)
-            pts_l.append(pts[keep])
-            rad_l.append(radii[keep])
-            face_l.append(faces[keep])
-            bary_l.append(bary[keep])
+        if placed + len(sel) > cap:
+            cap = placed + len(sel)
+            P = np.concatenate([P, np.zeros((cap - len(P), 3))])
+            R = np.concatenate([R, np.zeros(cap - len(R))])
+            nxt = np.concatenate([nxt, np.full(cap - len(nxt), -1, dtype=np.int64)])
+        keep = _throw(q_pts[sel], radii, placed, P, R, heads, nxt, lo_c, h, dims)
+        new = int(keep.sum())
+        if new:
+            face_l.append(q_face[sel[keep]])
+            bary_l.append(q_bary[sel[keep]])
             kind_l.append(kind[keep])
             scale_l.append(sc[keep])
         placed += new
         failures = failures + 1 if new == 0 else 0
         if failures >= max_failures:
             break
-        if new == 0:
-            continue
-        P = np.concatenate(pts_l)
-        placed_r = np.concatenate(rad_l)
-        tree = cKDTree(P)
-        # fill-gap (§4.2): draw the next batch only where a smallest element could fit.
-        # Room only shrinks, so only faces that had room are tested, against the new
-        # elements of this round.
-        active = np.flatnonzero(weight > 0)
-        d, j = cKDTree(pts_l[-1]).query(centroids[active])
-        full = d + extent[active] < rad_l[-1][j] + r_small
-        weight[active[full]] = 0.0
     rep.done(placed)
 
+    P, R = P[:placed], R[:placed]
     if placed:
-        P = np.concatenate(pts_l)
-        R = np.concatenate(rad_l)
         faces = np.concatenate(face_l)
         bary = np.concatenate(bary_l)
         kind = np.concatenate(kind_l)
         sc = np.concatenate(scale_l)
     else:
-        P, R, bary = np.zeros((0, 3)), np.zeros(0), np.zeros((0, 3))
+        bary = np.zeros((0, 3))
         faces, kind, sc = np.zeros(0, np.int64), np.zeros(0, np.int32), np.zeros(0)
     vn = np.asarray(mesh.vertex_normals, dtype=float)
     normals = np.einsum("mk,mkj->mj", bary, vn[F[faces]])
