@@ -9,14 +9,13 @@ from __future__ import annotations
 import html
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
 from ._errors import InputError
+from ._demo_item import DemoItem
 from ._progress import Reporter
-from .arrangement import Arrangement
 
 __all__ = ["DemoItem", "SECTIONS", "build_gallery"]
 
@@ -29,17 +28,6 @@ SECTIONS: list[tuple[str, str]] = [
     ("Adaptive clip art: rule-driven floral ornament (Wong et al.)", "strew.ornament._demo"),
     ("Example palettes and region-growing synthesis (Davison et al.)", "strew.synth._demo"),
 ]
-
-
-@dataclass
-class DemoItem:
-    """One picture of the gallery."""
-
-    name: str
-    title: str
-    arrangement: Arrangement
-    description: str = ""
-    svg_options: dict = field(default_factory=dict)
 
 
 def _section_items(module: str, seed: int) -> list[DemoItem]:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._resources import examples_dir
-from ..demo import DemoItem
+from .._demo_item import DemoItem
 from ..io import load
 
 

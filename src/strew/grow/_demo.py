@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._resources import example_path
-from ..demo import DemoItem
+from .._demo_item import DemoItem
 from ..fields import flow_field
 from ..io import load
 from ..region import Region

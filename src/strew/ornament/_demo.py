@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import shapely
 
-from ..demo import DemoItem
+from .._demo_item import DemoItem
 from ..region import Region
 from . import grow_elements
 

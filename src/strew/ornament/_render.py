@@ -33,8 +33,18 @@ from ..shape import Path, Shape
 from ._pattern import Element
 from ._proxies import Arc, Bezier, Point, Proxy, Segment
 
-if TYPE_CHECKING:
-    from ._engine import Ornament
+if TYPE_CHECKING:  # what a renderer reads of a grown ornament; _engine.Ornament has it
+    from typing import Protocol
+
+    from ..region import Region
+    from ._pattern import Pattern
+
+    class Ornament(Protocol):  # no import of ._engine: the engine imports this module (issue 15.7)
+        pattern: Pattern
+        region: Region
+        elements: list[Element]
+        stats: dict[str, Any]
+        params: dict[str, Any]
 
 __all__ = [
     "Mark",

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._resources import example_path
-from ..demo import DemoItem
+from .._demo_item import DemoItem
 from ..io import load_region, load_shapes
 from ..metrics import coverage
 from ._pack import pack

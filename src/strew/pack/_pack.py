@@ -277,6 +277,11 @@ def pack(
     (True, 0, 0)
     """
     prm = SPEC.validate(params, aliases=_ALIASES)
+    # defaults that depend on other parameters, resolved here so that meta records them
+    if prm["max_failures"] is None:
+        prm["max_failures"] = DEFAULTS["max_failures"][prm["method"]]
+    if prm["fits"] is None:
+        prm["fits"] = DEFAULTS["fits"] * (2 if prm["scale_choice"] == "fit" else 1)
     gen, seed = seed_record(rng)
     lib = _as_shapes(shapes)
     dom = as_region(region)

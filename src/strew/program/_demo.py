@@ -7,7 +7,7 @@ import runpy
 import numpy as np
 
 from .._resources import examples_dir
-from ..demo import DemoItem
+from .._demo_item import DemoItem
 from ._script import run_script
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..demo import DemoItem
+from .._demo_item import DemoItem
 from ..region import Region
 from ._api import new_state, set_selection, synthesize
 from ._exemplars import EXEMPLARS, stones

@@ -1,0 +1,98 @@
+"""Imports point down (issue 15 point 7; README "Architecture").
+
+Layers, lowest first: core types (0), io (1), kernels (2), methods and analysis (3),
+cli / studio / demo and the package facade (4). A module may import its own layer or a
+lower one. The graph is read from the source (every ``import``, also inside functions and
+``if TYPE_CHECKING`` blocks), so deferred imports count too.
+"""
+
+from __future__ import annotations
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import strew
+
+SRC = Path(strew.__file__).resolve().parent
+APP = {"cli", "studio", "demo", "_demos", "tiles", "__main__", ""}
+METHODS = {"pack", "grow", "synth", "ornament", "program", "_method", "surface", "_fidelity", "metrics"}
+KERNELS = {"_kernels", "_numba_geometry", "_kernel_cache"}
+
+# Known upward imports, each deferred into a function (no import-time circle; see
+# test_importing_the_core_type_loads_no_io): Arrangement's display conveniences
+# (to_svg, _repr_svg_, _repr_png_, to_pandas) call the io layer when used.
+ALLOWED = {
+    ("strew.arrangement", "strew.io.svg"),
+    ("strew.arrangement", "strew.io.png"),
+    ("strew.arrangement", "strew.io._pandas"),
+}
+
+
+def _name(p: Path) -> str:
+    parts = ["strew", *p.relative_to(SRC).with_suffix("").parts]
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _layer(m: str) -> int:
+    top = m.split(".")[1] if "." in m else ""
+    if top in APP:
+        return 4
+    if top in METHODS:
+        return 3
+    if top in KERNELS:
+        return 2
+    return 1 if top == "io" else 0
+
+
+def _graph() -> dict[str, set[str]]:
+    modules = {_name(p): p for p in SRC.rglob("*.py")}
+    edges: dict[str, set[str]] = {}
+    for m, p in modules.items():
+        pkg = m if p.name == "__init__.py" else m.rsplit(".", 1)[0]
+        targets: set[str] = set()
+        for node in ast.walk(ast.parse(p.read_text(encoding="utf-8"))):
+            names: list[str] = []
+            if isinstance(node, ast.ImportFrom):
+                if node.level:
+                    base = pkg.split(".")[: len(pkg.split(".")) - (node.level - 1)]
+                    mod = ".".join(base + ([node.module] if node.module else []))
+                else:
+                    mod = node.module or ""
+                names = [mod] + [f"{mod}.{a.name}" for a in node.names]
+            elif isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            for t in names:
+                while t not in modules and "." in t:
+                    t = t.rsplit(".", 1)[0]
+                if t in modules and t != m:
+                    targets.add(t)
+        edges[m] = targets
+    return edges
+
+
+def test_imports_point_down():
+    up = {(m, t) for m, ts in _graph().items() for t in ts if _layer(t) > _layer(m)}
+    assert up <= ALLOWED, sorted(up - ALLOWED)
+
+
+def test_method_packages_do_not_import_the_app_level_demo():
+    bad = [(m, t) for m, ts in _graph().items() for t in ts if _layer(m) == 3 and t == "strew.demo"]
+    assert not bad, bad
+
+
+def test_ornament_render_does_not_import_the_engine():
+    g = _graph()
+    assert "strew.ornament._engine" not in g["strew.ornament._render"]
+    assert "strew.ornament._render" in g["strew.ornament._engine"]  # the one direction left
+
+
+def test_importing_the_core_type_loads_no_io():
+    code = "import sys, strew.arrangement; print(sorted(m for m in sys.modules if m.startswith('strew.io')))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, check=True)
+    assert out.stdout.strip() == "[]", out.stdout
+
+
+def test_no_profiler_dump_in_the_package():
+    assert not [p for p in SRC.rglob("*") if p.name in ("prof",) or p.suffix in (".prof", ".pstats")]
