@@ -1110,10 +1110,6 @@ class Session:
         self._op = None
         if tool in ("boundary", "erase"):
             self._count_outside()
-        if tool in ("brush", "spray") and stroke["target"] == "scene":
-            self.rate = stroke["added"] / stroke["compute"] if stroke["added"] and stroke["compute"] > 0 else None
-            area = shapely.LineString(allpts).buffer(stroke["radius"]) if len(allpts) > 1 else shapely.Point(allpts[0]).buffer(stroke["radius"])
-            self._judge(shapely.intersection(area, stroke.get("face", self.region).geometry))
         if tool in ("brush", "spray", "erase"):
             if tool == "erase":
                 note = f"erase: {stroke.get('removed', 0)} elements removed"
@@ -1122,6 +1118,10 @@ class Session:
         self.stroke = None
         if tool in ("brush", "spray", "erase"):
             out.append(self.layers_message())  # the layers' counts
+        if tool in ("brush", "spray") and stroke["target"] == "scene":
+            self.rate = stroke["added"] / stroke["compute"] if stroke["added"] and stroke["compute"] > 0 else None
+            area = shapely.LineString(allpts).buffer(stroke["radius"]) if len(allpts) > 1 else shapely.Point(allpts[0]).buffer(stroke["radius"])
+            self._judge(shapely.intersection(area, stroke.get("face", self.region).geometry))
         return out + [self.status_message(note)]
 
     def _apply_segment(self, pts: np.ndarray) -> list[dict]:
@@ -1483,12 +1483,16 @@ class Session:
         dt = time.perf_counter() - t
         added = max(0, self._scene_count() - count0)
         self.rate = added / dt if dt > 0 and added else self.rate
-        self._judge(face)
-        out = []
+        # the result is shown at once; the verdict follows (it takes a fraction of the fill)
+        self.fidelity = None
+        final = f"{note}: {added} elements in {dt:.2f} s"
         m = self.scene_message()
         if m is not None:
-            out.append(m)
-        return out + [self.layers_message(), self.status_message(f"{note}: {added} elements in {dt:.2f} s")]
+            emit(m)
+        emit(self.layers_message())
+        emit(self.status_message(final))
+        self._judge(face)
+        return [self.status_message(final)]
 
     # ------------------------------------------------------------------ files
     def palette_arrangement(self) -> Arrangement:
