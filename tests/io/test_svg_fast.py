@@ -300,3 +300,20 @@ def test_baked_near_copies_stay_other_kinds():
     body = baked_path(square) + baked_path(tall + 30) + baked_path(2 * square @ rot.T + 60) + baked_path(2 * tall @ rot.T + 90)
     arr = read_svg(HEAD + body + "</svg>")
     assert arr.kind.tolist() == [0, 1, 0, 1]
+
+
+def test_too_many_objects_are_refused_before_parsing():
+    """The path-count limit is checked on the text: an over-limit file is refused without
+    being parsed (this one is not even well-formed), naming the limit and how to raise it."""
+    import strew
+    from strew import InputError
+    from strew.io.svg import read_svg
+
+    paths = [f'<path d="M{i},0 l1,0 l0,1 z"/>' for i in range(150)]
+    body = "".join(paths)
+    with strew.limits(paths=100):
+        with pytest.raises(InputError, match=r"151 paths, over the limit of 100 \(raise it with `strew --limit-paths N"):
+            read_svg(HEAD + body)  # no </svg>
+        # comments and declarations are not counted
+        ok = '<?xml version="1.0"?><!-- <<<< -->' + HEAD + "<!-- x -->" * 120 + "".join(paths[:40]) + "</svg>"
+        assert len(read_svg(ok)) == 40

@@ -85,7 +85,7 @@ from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
 from ._svg_flatten import EMPTY as _EMPTY
-from ._svg_flatten import Segments, flatten, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
+from ._svg_flatten import ARC, Segments, flatten, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
 
 __all__ = ["read_svg", "read_svg_shapes", "read_svg_region", "SVGImportWarning", "HIDDEN_CHOICES"]
 
@@ -284,6 +284,13 @@ class _Doc:
         self.tolerance = float(tolerance)
         self.name, text = _source_text(source)
         check_text(text, self.name)
+        # Refuse too many objects before parsing (a 30 MB file of 687k paths took 6 s to
+        # parse only to be refused): start tags are "<" less "</", "<!" and "<?"; a "<"
+        # in a comment or CDATA counts too, so this can only overstate, by those.
+        lt, close, bang, pi = (b"<", b"</", b"<!", b"<?") if isinstance(text, bytes) else ("<", "</", "<!", "<?")
+        tags = text.count(lt) - text.count(close) - text.count(bang) - text.count(pi)  # type: ignore[arg-type]
+        if tags > get_limit("paths"):
+            check_paths(tags, self.name)
         try:
             self.root = ET.fromstring(text)
         except ET.ParseError as exc:
@@ -1202,22 +1209,26 @@ class _Reader:
         """
         segs = self.doc.segments(el)
         n = len(segs.code)
-        if n == 0 or n > 512 or (segs.code == 3).any():
+        if n == 0 or n > 512 or ARC in segs.code:
             return None
-        used = np.ones((n, 4), dtype=bool)
-        used[:, 1] = segs.code != 0
-        used[:, 2] = segs.code == 2
         own = _compose(m, self.doc.transform(el))
-        pts = _apply(own, segs.pts[used])
-        z = pts[:, 0] + 1j * pts[:, 1]
-        d = np.abs(z - z[0])
-        far = int(np.argmax(d))
-        if not (d[far] > 0) or not np.isfinite(d[far]):
-            return None
-        if abs(np.linalg.det(own[:, :2])) == 0 or np.linalg.det(own[:, :2]) < 0:
+        if own[0, 0] * own[1, 1] - own[0, 1] * own[1, 0] <= 0:
             return None  # a mirror image is another kind: leave it to the matcher
-        canon = (z - z[0]) / (z[far] - z[0])
-        q = np.round(np.c_[canon.real, canon.imag] * 100).astype(np.int64)
+        if segs.code.any():
+            used = np.ones((n, 4), dtype=bool)
+            used[:, 1] = segs.code != 0
+            used[:, 2] = segs.code == 2
+            local = segs.pts[used]
+        else:  # lines only: starts and ends
+            local = segs.pts[:, ::3].reshape(-1, 2)
+        z = (local[:, 0] * own[0, 0] + local[:, 1] * own[0, 1] + own[0, 2]) + 1j * (local[:, 0] * own[1, 0] + local[:, 1] * own[1, 1] + own[1, 2])
+        rel = z - z[0]
+        d = np.abs(rel)
+        far = int(np.argmax(d))
+        if not (d[far] > 0) or not math.isfinite(float(d[far])):
+            return None
+        canon = rel / rel[far]
+        q = np.round(canon.view(np.float64) * 100).astype(np.int64)
         return (key or "", segs.code.tobytes(), segs.sub.tobytes(), segs.closed.tobytes(), far, q.tobytes()), z
 
     def moved_copy(self, outline: tuple[tuple[Any, ...], np.ndarray], el: ET.Element, void: bool, hidden: bool) -> bool:
@@ -1328,10 +1339,11 @@ class _Reader:
             return _candidates(self._table[:n], sig)
         # Only kinds in grid cells within the moment tolerance can pass (a drawing of n
         # distinct shapes would otherwise test n kinds per object: n^2 in all).
-        near = sorted(i for c in _cells_near(_invariants(sig)) for i in self._grid.get(c, ()))
+        grid = self._grid
+        near = [grid[c] for c in _cells_near(_invariants(sig)) if c in grid]
         if not near:
             return np.zeros(0, dtype=np.intp)
-        rows = np.array(near, dtype=np.intp)
+        rows = np.sort(np.concatenate([np.asarray(v, dtype=np.intp) for v in near]))
         return rows[_candidates(self._table[rows], sig)]
 
     def read(self, *, all_symbols: bool) -> None:
@@ -1365,7 +1377,7 @@ class _Reader:
         return Shape(tuple(flat.paths), d, kind.style, flat.labels)
 
 
-_GRID = 0.05  # cell size of the kinds' grid on the invariants |c_k| / (size gyration^k), k = 2, 3, 4
+_GRID = 0.1  # cell size of the kinds' grid on the invariants |c_k| / (size gyration^k), k = 2, 3, 4
 _GRID_DIMS = (5, 6, 7)  # their columns in :func:`_invariants`' rows
 
 
@@ -1381,8 +1393,8 @@ def _cells_near(row: list[float]) -> list[tuple[int, ...]]:
     spans = []
     for j in _GRID_DIMS:
         b = float(row[j])
-        lo, hi = 0.9 * b - 0.05, (b + 0.05) / 0.9
-        spans.append(range(int(math.floor(lo / _GRID)) - 1, int(math.floor(hi / _GRID)) + 2))
+        lo, hi = 0.9 * b - 0.05, (b + 0.05) / 0.9  # widened below by far more than rounding
+        spans.append(range(int(math.floor((lo - 1e-6) / _GRID)), int(math.floor((hi + 1e-6) / _GRID)) + 1))
     return [(i, j, k) for i in spans[0] for j in spans[1] for k in spans[2]]
 
 
