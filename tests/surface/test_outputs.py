@@ -1,0 +1,77 @@
+"""GLB round trip through trimesh, the PNG preview (issue 20 point 5)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+from PIL import Image
+
+from strew import InputError, Shape
+from strew import surface
+
+from _surface_helpers import positions
+
+
+def test_glb_round_trip(tmp_path, torus, torus_mixed):
+    path = surface.save_glb(torus_mixed, tmp_path / "scene.glb", mesh=torus)
+    scene = trimesh.load(path)
+    assert set(scene.geometry) == {"surface", "leaf", "dot"}
+    nodes = [n for n in scene.graph.nodes_geometry if n != "surface"]
+    assert len(nodes) == len(torus_mixed)
+    p, n, t, b, s = surface.element_frames(torus_mixed)
+    kinds = torus_mixed.kind_names
+    for node in nodes:
+        matrix, geom = scene.graph[node]
+        i = int(node.split("#")[1])
+        assert geom == kinds[i]
+        assert np.allclose(matrix[:3, 3], p[i], atol=1e-6)
+        assert np.allclose(matrix[:3, 0], s[i] * t[i], atol=1e-6)
+        assert np.allclose(matrix[:3, 2], s[i] * n[i], atol=1e-6)
+    # one mesh per kind, shared by its nodes: the file stays small
+    assert path.stat().st_size < 2000 + 600 * len(torus_mixed) + 60 * len(torus.faces)
+    # the surface itself comes back
+    assert np.isclose(scene.geometry["surface"].area, torus.area, rtol=1e-6)
+
+
+def test_element_meshes_and_decals(tmp_path, sphere, sphere_dots):
+    rock = trimesh.creation.icosphere(subdivisions=1, radius=0.05)
+    scene = trimesh.load(surface.save_glb(sphere_dots, tmp_path / "rocks.glb", element_meshes={"dot": rock}))
+    assert len(scene.geometry["dot"].faces) == len(rock.faces)
+    decal = surface.shape_mesh(Shape.circle(1.0), style="decal")
+    assert np.ptp(decal.vertices[:, 2]) == 0 and np.isclose(decal.area, np.pi, rtol=0.02)
+    slab = surface.shape_mesh(Shape.polygon([(0, 0), (2, 0), (2, 1), (1, 0.4), (0, 1)]))
+    # a concave polygon of area 1.4, extruded by a fifth of its radius sqrt(5)
+    assert slab.is_watertight and np.isclose(slab.volume, 1.4 * 0.2 * np.sqrt(5), rtol=1e-9)
+    # mirrored: SVG's y-down point (0, 1) lands at local y = -1
+    asym = surface.shape_mesh(Shape.polygon([(0, 0), (1, 0), (0, 1)]), style="decal")
+    assert asym.vertices[:, 1].min() < -0.99 and asym.vertices[:, 1].max() < 1e-9
+
+
+def test_glb_errors(tmp_path, sphere_dots):
+    with pytest.raises(InputError, match="written as .glb"):
+        surface.save_glb(sphere_dots, tmp_path / "scene.gltf")
+    with pytest.raises(InputError, match="element_meshes: unknown kind 'rock'"):
+        surface.save_glb(sphere_dots, tmp_path / "scene.glb", element_meshes={"rock": "rock.glb"})
+    with pytest.raises(InputError, match="elements.z: missing column"):
+        from strew import Arrangement
+
+        surface.save_glb(Arrangement({"d": Shape.circle(1)}, ["d"], [0], [0]), tmp_path / "flat.glb")
+    assert not (tmp_path / "scene.glb").exists()
+
+
+def test_preview(tmp_path, sphere, sphere_dots):
+    path = surface.save_preview(sphere_dots, tmp_path / "preview.png", sphere, size=300)
+    with Image.open(path) as im:
+        img = np.asarray(im.convert("RGB")).astype(int)
+    assert img.shape == (300, 300, 3)
+    # element colour (first kind: rust) is visible, and so is the grey surface
+    rust = (img[..., 0] > img[..., 2] + 60)
+    grey = (np.abs(img[..., 0] - img[..., 2]) < 30) & (img[..., 0] < 235) & (img[..., 0] > 60)
+    assert rust.mean() > 0.05 and grey.mean() > 0.05
+    # elements on the back are culled: none is drawn outside the sphere's disc
+    yy, xx = np.mgrid[:300, :300]
+    outside = np.hypot(xx - 150, yy - 150) > 150
+    assert rust[outside].mean() < 0.001
+    with pytest.raises(InputError, match="size: expected an integer"):
+        surface.render_preview(sphere_dots, sphere, size=3)
