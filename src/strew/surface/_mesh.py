@@ -36,8 +36,10 @@ def _as_trimesh(source: Any, name: str) -> Any:
             f = np.asarray(source[1])
         except (TypeError, ValueError):
             raise InputError(f"{name}: (vertices, faces) must be numeric arrays") from None
-        if v.ndim != 2 or v.shape[1] != 3 or (v.size and False):
+        if v.ndim != 2 or v.shape[1] != 3:
             raise InputError(f"{name}: vertices must have shape (n, 3), got {v.shape}")
+        if not np.all(np.isfinite(v)):
+            raise InputError(f"{name}: vertices contain NaN or inf")
         if f.size == 0:
             raise InputError(f"{name}: empty (no faces)")
         if f.ndim != 2 or f.shape[1] != 3 or f.dtype.kind not in "iu":
