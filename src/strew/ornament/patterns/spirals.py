@@ -126,10 +126,25 @@ def arm_to_spiral(ctx, parent, *_):
     return grow_spiral(ctx, parent, pts[k], parent.proxy.tangent_at(ts[k]), -parent.orientation)
 
 
+def _full_width(arm, rc):
+    return min(6 * rc.line_width, max(1.5 * rc.line_width, 0.12 * arm.scale))
+
+
+def _width_at_branch(arms, rc):
+    """Width of the parent spiral where ``arms`` branch off it (None from a seed)."""
+    parent = arms[0].parent
+    if parent is None or parent.type != "arm":
+        return None
+    ts = np.linspace(0.0, 1.0, 25)  # where arm_to_spiral looks for the branch point
+    k = int(np.argmin(np.hypot(*(parent.proxy.point_at(ts) - arms[0].proxy.points[0]).T)))
+    return _full_width(parent, rc) * (1 - 0.85 * (parent.segment + ts[k]) / parent.segments)
+
+
 def _spiral_outline(arm, rc, reverse):
     """The whole spiral of ``arm`` as one filled outline, thinning from its junction to its
     eye (or the reverse): drawn once, by the spiral's first arm, so that no seam shows
-    where two segments' outlines would meet (issue 23)."""
+    where two segments' outlines would meet (issue 23). A spiral starts no wider than its
+    parent where it branches off, with a round end."""
     arms = sorted(rc.group(arm), key=lambda a: a.segment)
     if arm is not arms[0]:
         return []
@@ -144,10 +159,22 @@ def _spiral_outline(arm, rc, reverse):
         u = np.r_[0.0, np.cumsum(seg)] / max(seg.sum(), 1e-12)
         ts.append(((a.segment + u) / a.segments)[k:])
     pts, t = np.vstack(pts), np.concatenate(ts)
-    w = min(6 * rc.line_width, max(1.5 * rc.line_width, 0.12 * arm.scale))
+    w = _full_width(arm, rc)
     if reverse:
         t = 1 - t
-    return [tapered_stroke(pts, w * (1 - 0.85 * t))]
+    else:
+        branch = _width_at_branch(arms, rc)
+        if branch is not None:
+            w = min(w, branch)
+    width = w * (1 - 0.85 * t)
+    outline = tapered_stroke(pts, width)
+    # a round start: half a circle from the right side, behind the start, to the left
+    left, right = outline[0], outline[-1]
+    across = (left - right) / max(np.hypot(*(left - right)), 1e-12)
+    back = -unit(pts[1] - pts[0])
+    th = np.linspace(0.0, math.pi, 13)[1:-1]
+    cap = pts[0] + (width[0] / 2) * (np.cos(th)[:, None] * -across + np.sin(th)[:, None] * back)
+    return [np.vstack([outline, cap])]
 
 
 @pattern.render("arm", "vine", help="each spiral one stroke thinning from its junction to its eye (Fig. 12)")
