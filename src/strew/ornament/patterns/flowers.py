@@ -12,13 +12,19 @@ its parent towards the goal circle, joins them with a stem, and adds a leaf at t
 midpoint only when the new flower is farther than 8 units. This file is a complete rule
 file: copy it to start your own.
 
-Two additions to Appendix A, so that the result looks designed (issue 21):
+Additions to Appendix A, so that the result looks designed (issues 21 and 23):
 
 * a stem must not cross the ornament between the two flowers it joins (the appendix
   tests only the new flower; Wong et al. test intersections before placing, §3.2);
 * a second phase (§5's "state preconditions", as the hierarchy pattern) grows buds, small
   flowers of radius 1.2-2 on stems, into the gaps that no full flower fits, above all the
-  band along the panel's edge that the flowers leave, about one flower wide.
+  band along the panel's edge that the flowers leave, about one flower wide;
+* a new flower or bud stands at least ``MIN_STEM_SHOWN`` clear of its parent's rim, so
+  that a stem shows between them (the appendix lets flowers touch, hiding the stem: the
+  child seemed to float);
+* the ``ink`` rendering draws a stem only where it shows between the flowers (it runs
+  from centre to centre, under them) and a leaf beside its stem, so that no two drawn
+  shapes overlap.
 """
 
 from __future__ import annotations

@@ -8,6 +8,12 @@ small gaps. This ordering of rule phases is imposed on the system by adding 'sta
 preconditions to each rule." Here each rule names its phase; a phase ends when no empty
 circle as large as its threshold remains, and the next begins. This file is a complete
 rule file: copy it to start your own.
+
+Additions to the paper (issue 23): where two fronts of the vine structure meet head on
+(the two ends of a ring of vines around a panel's hole), a vine joins their tips, so that
+the main vine closes; and a vine is drawn as wide as its depth along the structure says
+(each vine starts at its parent's depth where it branches off), so that the width runs
+on without a step at the joints.
 """
 
 from __future__ import annotations

@@ -7,6 +7,10 @@ of different sizes need different numbers of segments to stay smooth; a first se
 joins it tangentially to its parent. Each spiral turns the opposite way to its parent
 (§5: "Each spiral curve is given an orientation opposite to that of its parent").
 This file is a complete rule file: copy it to start your own.
+
+Drawing (not in the paper's text): the segments of one spiral are one element of the
+output, of kind ``spiral`` (``pattern.group``), and the ``vine`` and ``filigree`` styles
+draw each spiral as one outline, so that no seam shows at the segments' joins.
 """
 
 from __future__ import annotations
