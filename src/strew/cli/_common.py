@@ -144,15 +144,17 @@ def quiet_option(f: Callable[..., Any]) -> Callable[..., Any]:
     return click.option("--quiet", "-q", is_flag=True, help="No progress bar or summary.")(f)
 
 
-def domain_options(default_size: str | None = None) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
-    """``--region FILE`` (SVG or JSON) or ``--size WxH`` (the rectangle [0, W] x [0, H])."""
+def domain_options(default_size: str | None = None, *, square: bool = False) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """``--region FILE`` (SVG or JSON) or ``--size WxH`` (the rectangle [0, W] x [0, H]);
+    with ``square``, ``--size N`` is also accepted (the square [0, N] x [0, N])."""
 
     def deco(f: Callable[..., Any]) -> Callable[..., Any]:
         f = click.option(
             "--size",
             default=default_size,
             show_default=default_size is not None,
-            help="Rectangle [0, W] x [0, H], written WxH.",
+            metavar="N|WxH" if square else "WxH",
+            help="Square [0, N] x [0, N], or rectangle [0, W] x [0, H] written WxH." if square else "Rectangle [0, W] x [0, H], written WxH.",
         )(f)
         f = click.option(
             "--region", type=click.Path(dir_okay=False), default=None, help="Region to fill: SVG or JSON file."

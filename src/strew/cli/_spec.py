@@ -350,7 +350,7 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
                 metavar=spec.input.metavar,
                 type=click.Path(dir_okay=False) if spec.input.parse in _FILE_INPUTS or spec.name == "program" else click.STRING,
             ),
-            domain_options(),
+            domain_options(square=hooks.domain == "square"),
             *[_param_option(spec, p) for p in cli_params],
             *hooks.options,
             click.option("--around", type=click.Path(dir_okay=False), default=None,
