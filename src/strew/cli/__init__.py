@@ -29,6 +29,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "ornament": ("strew.cli.ornament", "Grow rule-driven floral ornament into a panel (adaptive clip art)."),
     "run": ("strew.cli.run", "Run a program script (planar maps, partitions, mappers) and write its arrangement."),
     "pack": ("strew.cli.pack", "Pack shapes densely and non-periodically into a region (fill-gap)."),
+    "surface": ("strew.cli.surface", "Pack shapes on a 3D surface mesh (.glb, .json, .png preview)."),
     "grow": ("strew.cli.grow", "Grow from an exemplar, element by element, from one seed (Ijiri et al.)."),
     "studio": ("strew.cli.studio", "Paint with example palettes in the browser (brush, spray, filler, eraser)."),
     "synth": ("strew.cli.synth", "Synthesize a texture from exemplars by fast region growing (Davison et al.)."),

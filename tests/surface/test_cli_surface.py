@@ -1,0 +1,87 @@
+"""``strew surface`` (the CLI over strew.surface.pack): outputs, and exit 2 for bad meshes."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+
+import strew
+from strew.cli import main
+
+CONCAVE = Path(__file__).resolve().parents[2] / "examples" / "shapes" / "concave.svg"
+
+
+@pytest.fixture(scope="module")
+def mesh_file(tmp_path_factory):
+    path = tmp_path_factory.mktemp("mesh") / "torus.obj"
+    trimesh.creation.torus(1.0, 0.4, major_sections=48, minor_sections=24).export(path)
+    return path
+
+
+def test_surface_command_writes_every_output(mesh_file, tmp_path, capsys):
+    outs = [tmp_path / "scene.glb", tmp_path / "scene.json", tmp_path / "preview.png", tmp_path / "top.svg"]
+    args = ["surface", "--surface", str(mesh_file), "--radius", "0.08", "--seed", "3"]
+    for o in outs:
+        args += ["--out", str(o)]
+    assert main(args) == 0
+    assert "packed" in capsys.readouterr().out
+    arr = strew.load(outs[1])
+    assert json.loads(outs[1].read_text())["version"] == 2
+    assert arr.meta["command"].startswith("strew surface") and arr.meta["seed"] == 3
+    scene = trimesh.load(outs[0])
+    assert len([n for n in scene.graph.nodes_geometry if n != "surface"]) == len(arr)
+    assert outs[2].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and outs[3].read_text().startswith("<?xml")
+    # same seed, same document
+    again = tmp_path / "again.json"
+    assert main(["surface", "--surface", str(mesh_file), "--radius", "0.08", "--seed", "3", "--out", str(again)]) == 0
+    assert np.array_equal(strew.load(again).x, arr.x)
+
+
+def test_surface_command_with_shapes_and_field(mesh_file, tmp_path):
+    (tmp_path / "design.json").write_text(json.dumps({"sources": [[1.4, 0, 0]]}))
+    out = tmp_path / "stars.json"
+    code = main(["surface", str(CONCAVE), "--surface", str(mesh_file), "--scale", "0.003:0.005",
+                 "--field", str(tmp_path / "design.json"), "--quiet", "--out", str(out)])
+    assert code == 0
+    arr = strew.load(out)
+    assert arr.meta["params"]["field"]["method"] == "singularities" and len(arr) > 10
+
+
+def _bad_meshes(tmp_path):
+    (tmp_path / "empty.obj").write_text("# nothing\n")
+    (tmp_path / "fan.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 0.5\nf 1 2 3\nf 1 2 4\nf 1 2 5\n")
+    (tmp_path / "flat.obj").write_text("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")
+    return {"empty.obj": "empty", "fan.obj": "non-manifold", "flat.obj": "degenerate", "missing.obj": "no such file",
+            "mesh.txt": "unsupported extension"}
+
+
+def test_bad_meshes_exit_2(tmp_path, capsys):
+    for name, message in _bad_meshes(tmp_path).items():
+        out = tmp_path / "out.glb"
+        assert main(["surface", "--surface", str(tmp_path / name), "--radius", "0.1", "--out", str(out)]) == 2
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1 and err.startswith("strew: error: --surface") and message in err, err
+        assert not out.exists()
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--radius", "0.1", "--out", "x.gltf"], "a surface scene is written as .glb, .json, .png, .svg"),
+        (["--out", "x.glb"], "give SHAPE files or --radius R"),
+        (["--radius", "-1", "--out", "x.glb"], "radius: must be a positive number"),
+        (["--radius", "0.1", "--element", "rock", "--out", "x.glb"], "--element: expected KIND=MESH"),
+        (["--radius", "0.1", "--field", "f.txt", "--out", "x.glb"], "no such file"),
+        (["--radius", "0.1", "--out", "nofolder/x.glb"], "does not exist"),
+    ],
+)
+def test_usage_errors_exit_2(args, message, mesh_file, tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(["surface", "--surface", str(mesh_file), *args]) == 2
+    err = capsys.readouterr().err
+    assert message in err and len(err.strip().splitlines()) == 1
+    assert [p.name for p in tmp_path.iterdir()] == []
