@@ -87,7 +87,7 @@ def test_strokes_are_followed(fine_sphere):
     assert np.mean(dots < 0.9) < 0.02
 
 
-def test_field_at_points(fine_sphere, sphere_dots):
+def test_field_at_points(fine_sphere):
     f = surface.orientation_field(fine_sphere)
     rng = np.random.default_rng(0)
     faces = rng.integers(0, len(fine_sphere.faces), 200)

@@ -14,6 +14,9 @@ Public entry points:
     GLB with one node per element sharing one mesh per kind.
 :func:`save_preview` / :func:`render_preview`
     A PNG preview without a GPU.
+:func:`local_map`
+    Davison's m_p (§5.1, §5.7): exemplar offsets to surface points by a geodesic walk
+    in the field's frame (for synthesis on surfaces; synth does not use it yet).
 
 A surface arrangement is a :class:`strew.Arrangement` with the columns
 ``z nx ny nz tx ty tz`` (see :mod:`strew.surface._frames`); ``strew.save(arr,
@@ -28,6 +31,7 @@ from ._gltf import save_glb, shape_mesh, to_glb, to_scene
 from ._mesh import MESH_FORMATS, load_mesh
 from ._preview import render_preview, save_preview
 from ._sample import pack
+from ._walk import local_map, locate
 
 __all__ = [
     "MESH_FORMATS",
@@ -38,6 +42,8 @@ __all__ = [
     "is_surface",
     "load_field",
     "load_mesh",
+    "local_map",
+    "locate",
     "orientation_field",
     "pack",
     "render_preview",
