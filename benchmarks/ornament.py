@@ -15,6 +15,11 @@ time 0.43 s / 0.38 s (1.1).
 Baseline, measured in the same run: the same framework recomputing the whole distance
 transform after every placement (scipy EDT) instead of the incremental update of §4.1.
 
+Issues 21.6 and 23.7 (the last rows): kinds per drawn element type, with the JSON and SVG
+round trips that keep them (the baseline column counts distinct element geometries, a
+kind each before); the gallery's flowers (filled overlaps, flowers without a stem) and
+the hierarchy ring's vine (closed on how many seeds).
+
 Run: ``python benchmarks/ornament.py [--quick] [--repeat N]``.
 """
 
@@ -170,7 +175,54 @@ def main() -> None:
     (tr, _), (td, _) = dots.values()
     print(f"flowers at min_radius 0.5: {tf:.1f} s (< 30 s: {'met' if tf < 30 else 'NOT met'}); "
           f"dots rectangle / disc time: {tr / td:.2f}")
+    kinds_and_gallery(bench, 44 if args.quick else 90)
     bench.finish()
+
+
+def kinds_and_gallery(bench: Bench, size: float) -> None:
+    """Issue 21.6: kinds per drawn type, and the JSON / SVG round trips that keep them;
+    issue 23.7: the gallery flaws (flowers' overlaps and stemless flowers, the hierarchy
+    ring's vine). The baseline column counts the distinct element geometries, one kind each
+    before issue 21.6."""
+    import tempfile
+
+    from strew import load, metrics, save
+    from strew.ornament._demo import _ITEMS, _panels
+
+    style_of = {name: style for name, style, _, _ in _ITEMS}
+    region = Region.rectangle(size, 0.7 * size)
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in ("dots", "flowers", "spirals", "hierarchy", "vase", "willow"):
+            orn = grow_elements(name, region, rng=1)
+            t0 = time.perf_counter()
+            arr = orn.render(style_of[name])
+            t_render = time.perf_counter() - t0
+            distinct = {tuple(np.round(p.points, 6).tobytes() for p in parts) for parts in arr.element_parts}
+            times, kept = {}, True
+            for ext in ("json", "svg"):
+                t0 = time.perf_counter()
+                save(arr, f"{tmp}/o.{ext}")
+                back = load(f"{tmp}/o.{ext}")
+                times[ext] = time.perf_counter() - t0
+                kept &= back.counts() == arr.counts() and len(back.element_parts) == len(arr)
+            bench.row("kinds per type", pattern=f"{name} ({style_of[name]})", panel=f"rect {size:g}", elements=len(arr),
+                      kinds=len(arr.kinds), baseline_distinct_geometries=len(distinct), render_s=t_render,
+                      json_round_trip_s=times["json"], svg_round_trip_s=times["svg"], kinds_kept=kept)
+    panels_ = {k: r for k, _, r in _panels()}
+    for key in ("rect", "arch"):
+        arr = grow_elements("flowers", panels_[key], rng=1).render("ink")
+        pairs, _ = metrics.overlaps(arr)
+        g, kinds = arr.geometry, arr.kind_names
+        blooms = np.isin(kinds, ["flower", "bud"])
+        floating = int((shapely.distance(g[blooms], shapely.union_all(g[kinds == "stem"])) > 1e-6).sum())
+        bench.row("gallery flowers (ink)", panel=key, elements=len(arr), filled_overlap_pairs=len(pairs),
+                  flowers=int(blooms.sum()), without_stem=floating)
+    closed = 0
+    for seed in range(1, 6):
+        arr = grow_elements("hierarchy", panels_["ring"], seeds=[(35, 4)], rng=seed).render("color")
+        vines = shapely.union_all(arr.geometry[arr.kind_names == "vine"])
+        closed += int(isinstance(vines, shapely.Polygon) and len(vines.interiors) == 1)
+    bench.row("gallery hierarchy ring", panel="ring", seeds="1-5", vine_ring_closed=f"{closed}/5")
 
 
 if __name__ == "__main__":
