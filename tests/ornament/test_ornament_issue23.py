@@ -106,7 +106,9 @@ def test_each_spiral_is_one_outline(style):
 
 
 @pytest.mark.parametrize("panel", ["rect", "arch"])
-def test_flowers_do_not_overlap_and_each_sits_on_a_stem(panel):
+def test_flowers_do_not_overlap_and_each_sits_on_a_stem(panel, tmp_path):
+    from strew import load, save
+
     from strew.ornament._demo import _panels
 
     region = {k: r for k, _, r in _panels()}[panel]
@@ -115,19 +117,22 @@ def test_flowers_do_not_overlap_and_each_sits_on_a_stem(panel):
     pairs, areas = metrics.overlaps(arr)
     assert len(pairs) == 0  # all filled: no pair overlaps, none touches by more than an edge
     assert metrics.summary(arr)["filled_overlap_pairs"] == 0
+    # and so once written and read back as SVG (coordinates rounded to 10 digits)
+    save(arr, tmp_path / "f.svg")
+    assert len(metrics.overlaps(load(tmp_path / "f.svg"))[0]) == 0
     kinds = arr.kind_names
     g = arr.geometry
     stems = shapely.union_all(g[kinds == "stem"])
     blooms = np.flatnonzero(np.isin(kinds, ["flower", "bud"]))
     assert len(blooms) > 40
-    # every flower and bud touches a stem (none floats), within 1e-6
-    assert shapely.distance(g[blooms], stems).max() < 1e-6
+    # every flower and bud touches a stem (none floats), within 1e-5 (a 1e-6 gap is kept)
+    assert shapely.distance(g[blooms], stems).max() < 1e-5
     # and a stem shows between the flowers it joins: each one's drawn stem reaches both
     by_index = {e.index: e for e in orn.elements}
     for i in np.flatnonzero(kinds == "stem"):
         st = by_index[int(arr["element"][i])].proxy
         ends = [b for b in blooms if min(np.hypot(*(by_index[int(arr["element"][b])].proxy.center - p)) for p in (st.start, st.end)) < 1e-9]
-        assert len(ends) == 2 and all(shapely.distance(g[i], g[b]) < 1e-6 for b in ends)
+        assert len(ends) == 2 and all(shapely.distance(g[i], g[b]) < 1e-5 for b in ends)
     # stems don't cross stems: the proxies meet only at a shared flower's centre
     segs = [by_index[int(e)].proxy for e, k in zip(arr["element"], kinds) if k == "stem"]
     lines = [shapely.LineString([s.start, s.end]) for s in segs]

@@ -180,6 +180,9 @@ def _petals(el):
     return c + (r * (inner + (1 - inner) * np.abs(np.cos(k * t))))[:, None] * np.c_[np.cos(t), np.sin(t)]
 
 
+GAP = 1e-6
+
+
 def _stem_outline(stem, rc):
     pts = np.linspace(stem.proxy.start, stem.proxy.end, 12)
     return tapered_stroke(pts, (2.5 * rc.line_width, 1.2 * rc.line_width))
@@ -199,7 +202,9 @@ def _visible(poly, rc, types, outline):
     polys, tree = _index(rc, types, outline)
     hits = [polys[i] for i in tree.query(poly, predicate="intersects") if not polys[i].equals(poly)]
     if hits:
-        poly = poly.difference(shapely.union_all(hits))
+        # a hair's gap (1e-6 units), so that the shapes still do not overlap once their
+        # coordinates are rounded (SVG keeps 10 significant digits)
+        poly = poly.difference(shapely.union_all(hits).buffer(GAP, quad_segs=2))
     return [np.asarray(g.exterior.coords)[:-1] for g in shapely.get_parts(poly) if isinstance(g, shapely.Polygon) and g.area > 0]
 
 
