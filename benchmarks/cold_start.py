@@ -1,6 +1,6 @@
 """Cold start: the first run of each method on a fresh install against the second run.
 
-    python benchmarks/cold_start.py [--quick] [--json PATH]
+    python benchmarks/cold_start.py [--quick] [--case NAME ...] [--top N] [--json PATH]
 
 A fresh install has an empty numba cache, so the first command of each method compiles
 its kernels. For every case this script starts a new Python process with an empty
@@ -82,6 +82,7 @@ DRIVER = textwrap.dedent(
     """
     import json, sys, time
     t0 = time.perf_counter()
+    c0 = time.process_time()
     import numba.core.event as ev
     case = json.loads(sys.argv[1])
     with ev.install_recorder("numba:compile") as rec:
@@ -93,23 +94,29 @@ DRIVER = textwrap.dedent(
             project, TOOL = case["project"], case["tool"]
             exec(case["code"])
     total = time.perf_counter() - t0
-    # inclusive compile time per kernel (nested compiles are counted in their callers too)
-    starts, per, outer = {}, {}, 0.0
-    depth = 0
+    cpu = time.process_time() - c0
+    # compile time per kernel: inclusive (nested compiles counted in their callers too)
+    # and self (less the nested compiles), from numba's start/end events
+    starts, per, own, outer = {}, {}, {}, 0.0
+    stack = []
     for t, e in rec.buffer:
         d = e.data["dispatcher"]
         name = f"{d.py_func.__module__}.{d.py_func.__qualname__}"
         key = (name, id(e.data))
         if e.is_start:
-            starts[key] = (t, depth)
-            depth += 1
+            starts[key] = t
+            stack.append([key, 0.0])
         else:
-            depth -= 1
-            t_start, d0 = starts.pop(key)
-            per[name] = per.get(name, 0.0) + (t - t_start)
-            if d0 == 0:
-                outer += t - t_start
-    print(json.dumps({"total": total, "compile": outer, "kernels": per}))
+            t_start = starts.pop(key)
+            _, nested = stack.pop()
+            dt = t - t_start
+            per[name] = per.get(name, 0.0) + dt
+            own[name] = own.get(name, 0.0) + dt - nested
+            if stack:
+                stack[-1][1] += dt
+            else:
+                outer += dt
+    print(json.dumps({"total": total, "cpu": cpu, "compile": outer, "kernels": per, "self": own}))
     """
 )
 
@@ -123,7 +130,11 @@ def run_once(case: dict, cache: str) -> dict:
 
 
 def main() -> None:
-    args = parse_args(__doc__.splitlines()[0])
+    def extra(p):
+        p.add_argument("--case", action="append", default=None, help="run only this case (repeatable), e.g. --case 'pack fill-gap'")
+        p.add_argument("--top", type=int, default=10, help="print the N slowest kernel compiles (self time) per case")
+
+    args = parse_args(__doc__.splitlines()[0], extra)
     bench = Bench(
         "cold_start",
         "first run on an empty numba cache vs the second run (new process, filled cache)",
@@ -131,8 +142,15 @@ def main() -> None:
         json_path=args.json,
     )
     names = list(CLI_CASES) + list(STUDIO_CASES)
-    if args.quick:
+    if args.case:
+        unknown = [c for c in args.case if c not in names]
+        if unknown:
+            raise SystemExit(f"--case: unknown case {unknown}; cases: {names}")
+        names = [n for n in names if n in args.case]
+    elif args.quick:
         names = [n for n in names if n in QUICK]
+    per_kernel: list[str] = []
+    compiles: dict[str, dict[str, list[float]]] = {}
     with tempfile.TemporaryDirectory() as tmp:
         for name in names:
             out = Path(tmp) / name.replace(" ", "_")
@@ -151,13 +169,26 @@ def main() -> None:
                 first_s=first["total"],
                 second_s=second["total"],
                 ratio=first["total"] / second["total"],
+                first_cpu_s=first["cpu"],
+                second_cpu_s=second["cpu"],
+                cpu_ratio=first["cpu"] / second["cpu"],
                 compile_s=first["compile"],
                 compile_2nd_s=second["compile"],
                 kernels=len(first["kernels"]),
                 meets_target=first["total"] <= 2 * second["total"] + 1.0,
+                meets_cpu=first["cpu"] <= 2 * second["cpu"] + 1.0,
                 slowest=", ".join(f"{k.rsplit('.', 1)[-1]} {v:.1f}s" for k, v in top),
             )
+            compiles[name] = {k: [round(v, 3), round(first["kernels"][k], 3)] for k, v in sorted(first["self"].items(), key=lambda kv: -kv[1])}
+            per_kernel.append(f"{name}: slowest compiles, self seconds (inclusive)")
+            for k, v in sorted(first["self"].items(), key=lambda kv: -kv[1])[: args.top]:
+                per_kernel.append(f"  {v:7.2f}  ({first['kernels'][k]:6.2f})  {k}")
     bench.finish()
+    print("\n".join(per_kernel))
+    # the JSON also keeps every kernel's compile seconds of the first run: [self, inclusive]
+    payload = json.loads(bench.json_path.read_text())
+    payload["compile_s_self_inclusive"] = compiles
+    bench.json_path.write_text(json.dumps(payload, indent=2) + "\n")
 
 
 if __name__ == "__main__":
