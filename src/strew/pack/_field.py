@@ -257,13 +257,13 @@ def _edt(free):  # pragma: no cover - numba
                 last = r
                 g[r, c] = 0.0
             else:
-                g[r, c] = float(r - last) ** 2
+                g[r, c] = float(r - last) * float(r - last)  # not ** 2: see _occupy_posed
         last = rows
         for r in range(rows - 1, -1, -1):
             if not free[r, c]:
                 last = r
             else:
-                dd = float(last - r) ** 2
+                dd = float(last - r) * float(last - r)
                 if dd < g[r, c]:
                     g[r, c] = dd
     out = np.zeros((rows, cols))
@@ -299,7 +299,7 @@ def _edt(free):  # pragma: no cover - numba
                 k += 1
             if free[r, q - 1]:
                 p = v[k]
-                out[r, q - 1] = np.sqrt((q - p) ** 2 + f[p])
+                out[r, q - 1] = np.sqrt((q - p) * (q - p) + f[p])
     return out
 
 
@@ -332,15 +332,21 @@ def _occupy_posed(d, x0, y0, cell, segs, bounds, grow, tx, ty, c, sn, lbb):  # p
     """
     rows, cols = d.shape
     ns = len(segs)
-    ax = segs[:, 0].copy()
-    ay = segs[:, 1].copy()
-    ex = segs[:, 2] - segs[:, 0]
-    ey = segs[:, 3] - segs[:, 1]
-    l2 = ex * ex + ey * ey
-    il2 = np.zeros(ns)
+    # explicit loops, not array expressions or column slices, and ``x * x``, not
+    # ``x ** 2``: the same values, but numba compiles the latter into extra ufunc and
+    # power kernels, seconds of a first run (issue 16)
+    ax = np.empty(ns)
+    ay = np.empty(ns)
+    ex = np.empty(ns)
+    ey = np.empty(ns)
+    il2 = np.empty(ns)
     for k in range(ns):
-        if l2[k] > 0.0:
-            il2[k] = 1.0 / l2[k]
+        ax[k] = segs[k, 0]
+        ay[k] = segs[k, 1]
+        ex[k] = segs[k, 2] - segs[k, 0]
+        ey[k] = segs[k, 3] - segs[k, 1]
+        l2 = ex[k] * ex[k] + ey[k] * ey[k]
+        il2[k] = 1.0 / l2 if l2 > 0.0 else 0.0
     xs = np.empty(ns)
     s2 = c * c + sn * sn
     c0 = max(int(np.floor((bounds[0] - grow - x0) / cell)), 0)

@@ -262,7 +262,7 @@ def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp
                             return False
     # every hull ring inside the domain (even-odd over all domain rings)
     for r in range(r0, r1):
-        if _where(hv[hr[r], 0], hv[hr[r], 1], rv, rr, 0, len(rr) - 1) != 1:
+        if _where(hv[hr[r], 0], hv[hr[r], 1], rv, rr, np.int64(0), len(rr) - 1) != 1:  # np.int64: see _rounds
             return False
     # and no domain ring (a hole) inside the hull
     for r in range(len(rr) - 1):
@@ -368,6 +368,23 @@ def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot
         if len(kinds) == 0:
             st[_S_NEXT] = (st[_S_NEXT] + 1) % nk
     return placed
+
+
+@numba.njit(cache=True)
+def _amax(a):  # pragma: no cover - numba
+    """Largest value of a non-empty 1-d array, NaN if it holds one: ``a.max()`` written
+    as a loop (numba compiles ``ndarray.max`` through ``np.nditer`` and ``take``, several
+    seconds of a first run; issue 16)."""
+    m = a[0]
+    if np.isnan(m):
+        return m
+    for i in range(1, len(a)):
+        v = a[i]
+        if np.isnan(v):
+            return v
+        if v > m:
+            m = v
+    return m
 
 
 @numba.njit(cache=True)
@@ -584,7 +601,8 @@ def _rounds(
     for k in range(nkinds):
         maxv = max(maxv, kr[kk[k + 1]] - kr[kk[k]])
         maxr = max(maxr, kk[k + 1] - kk[k])
-    blocker = np.full(1, -1, dtype=np.int64)
+    blocker = np.empty(1, dtype=np.int64)
+    blocker[0] = -1
     # kinds placed so far, and the order in which a candidate tries them
     cnt = np.zeros(nkinds, dtype=np.int64)
     for i in range(st[_S_NP]):
@@ -596,7 +614,9 @@ def _rounds(
     nb = ((rows + BLOCK - 1) // BLOCK) * ((cols + BLOCK - 1) // BLOCK)
     bme = np.zeros(nb)
     bmd = np.zeros(nb)
-    _block_max(d, w, bme, bmd, 0, (rows + BLOCK - 1) // BLOCK, 0, (cols + BLOCK - 1) // BLOCK)
+    # np.int64(0), not a literal 0: numba compiles a second specialisation of a kernel
+    # called with a literal (issue 16)
+    _block_max(d, w, bme, bmd, np.int64(0), (rows + BLOCK - 1) // BLOCK, np.int64(0), (cols + BLOCK - 1) // BLOCK)
     for _ in range(max_rounds):
         if (st[_S_NP] + p_count > caps[0] or st[_S_NV] + p_count * maxv > caps[1]
                 or st[_S_NR] + p_count * maxr > caps[2] or st[_S_NE] + p_count * 9 > caps[3]):
@@ -604,8 +624,8 @@ def _rounds(
         st[_S_ROUNDS] += 1
         # -- candidate points Q: each pixel with probability (e / max e)**n (§4.2), where
         #    e is the distance d times the suppression weight
-        emax = bme.max()
-        dmax = bmd.max()
+        emax = _amax(bme)
+        dmax = _amax(bmd)
         if emax <= 0.0:
             return NO_FIELD
         nq = _draw_q(rs, d, w, bme, emax * thr, emax, power, qbuf)
@@ -649,7 +669,7 @@ def _rounds(
             y = py
             k = korder[0]
             # distance from the candidate point to its pixel's centre
-            off_q = np.sqrt((jx - 0.5) ** 2 + (jy - 0.5) ** 2) * fcell
+            off_q = np.sqrt((jx - 0.5) * (jx - 0.5) + (jy - 0.5) * (jy - 0.5)) * fcell
             for kj in range(nko):
                 k = korder[kj]
                 fixed = rot_lo[k] == rot_hi[k] and sc_lo[k] == sc_hi[k]
@@ -778,7 +798,9 @@ def _grid_segments(segs, gx0, gy0, gc, cols, rows):  # pragma: no cover - numba
     for s in range(len(segs)):
         c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, min(segs[s, 0], segs[s, 2]), min(segs[s, 1], segs[s, 3]), max(segs[s, 0], segs[s, 2]), max(segs[s, 1], segs[s, 3]))
         n += max(c1 - c0 + 1, 0) * max(q1 - q0 + 1, 0)
-    head = np.full(rows * cols, -1, dtype=np.int64)
+    head = np.empty(rows * cols, dtype=np.int64)
+    for i in range(rows * cols):
+        head[i] = -1
     nxt = np.empty(n, dtype=np.int64)
     sid = np.empty(n, dtype=np.int64)
     e = 0
@@ -892,7 +914,9 @@ def _disks(grids: list, most: int = 16) -> tuple[np.ndarray, np.ndarray]:
 def _greedy_disks(pts, clear, most):  # pragma: no cover - numba
     """The greedy choice of :func:`_disks` for one kind: (m, 3) centres and radii."""
     n = len(pts)
-    alive = np.ones(n, dtype=np.bool_)
+    alive = np.empty(n, dtype=np.bool_)
+    for j in range(n):
+        alive[j] = True
     out = np.zeros((most, 3))
     m = 0
     while m < most:
