@@ -85,3 +85,26 @@ def test_kernel_cache_look_follows_numba_cache_dir(tmp_path, monkeypatch):
         assert not kernels_cached(method)
     assert kernels_cached("pack (naive)")  # compiles nothing
     assert kernels_cached("no such method")
+
+
+@pytest.mark.parametrize("cached", [False, True])
+def test_studio_status_bar_says_compiling_once_per_session(tmp_path, monkeypatch, cached):
+    # point 3: the studio's first spray on an empty cache shows the notice in its status
+    # bar (the status message's text), once per session; a filled cache shows nothing
+    import strew._kernel_cache as kc
+    from strew.studio._session import Session
+
+    asked = []
+    monkeypatch.setattr(kc, "kernels_cached", lambda method: asked.append(method) or cached)
+    s = Session(tmp_path, size=(300, 200))
+    s.handle({"type": "load_exemplar", "example": "scales.svg"})
+    seen = []
+    for _ in range(2):  # two strokes
+        out = s.handle({"type": "stroke_start", "tool": "spray", "radius": 30, "points": [[60.0, 100.0]]}, seen.append)
+        out += s.handle({"type": "stroke_move", "points": [[120.0, 110.0]]}, seen.append)
+        out += s.handle({"type": "stroke_end"}, seen.append)
+        seen.extend(out)
+    notices = [m for m in seen if m.get("type") == "status" and m.get("message") == MESSAGE]
+    assert asked == ["grow"]  # the spray grows (Ijiri): grow's kernels, looked up once
+    assert len(notices) == (0 if cached else 1)
+    assert s._scene_count() > 0
