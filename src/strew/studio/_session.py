@@ -141,6 +141,7 @@ class Session:
         self._emit: Emit = lambda m: None
         self._fixed_cache: tuple[Arrangement, dict[str, np.ndarray]] | None = None
         self._refs: dict[tuple[str, int], Any] = {}
+        self._compile_noted: set[str] = set()  # methods whose compile notice was shown
 
     # ------------------------------------------------------------------ dispatch
     def handle(self, msg: dict[str, Any], emit: Emit | None = None) -> list[dict[str, Any]]:
@@ -1035,12 +1036,26 @@ class Session:
         self.stroke = stroke
         if tool in ("brush", "spray") and target == "scene":
             self.rate = None  # until this stroke has its own figure
+        if tool in ("brush", "spray"):
+            self._note_compiling("synth" if tool == "brush" else "grow", emit)
         self.cancel.clear()
         try:
             return self._apply_segment(pts)
         except InputError:
             self._abandon()
             raise
+
+    def _note_compiling(self, method: str, emit: Emit) -> None:
+        """Say in the status bar, once per method and session, that the first stroke or
+        fill compiles the method's kernels (numba's cache is empty: a fresh install),
+        so that a long first stroke does not look hung (issue 16 point 3)."""
+        if method in self._compile_noted:
+            return
+        self._compile_noted.add(method)
+        from .._kernel_cache import kernels_cached
+
+        if not kernels_cached(method):
+            emit(self.status_message("compiling kernels, first run only"))
 
     def _abandon(self) -> None:
         """Undo the half-done operation whose snapshot is on top of the history."""
@@ -1449,6 +1464,7 @@ class Session:
         if room <= 0:
             raise InputError(f"scene: over {MAX_SCENE} elements; erase some first")
         self._push_history()
+        self._note_compiling("synth", emit)
         st = self._ensure_state()
         self.cancel.clear()
         n0 = st.n
