@@ -6,7 +6,7 @@ import json
 
 import numpy as np
 import pytest
-from conftest import arrangements
+from strew_testing import arrangements
 from hypothesis import given
 
 import strew

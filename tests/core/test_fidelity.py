@@ -22,7 +22,7 @@ from strew._errors import InputError
 from strew.arrangement import concat
 from strew.metrics import FidelityReport, fidelity, nearest_neighbor_distances, pair_correlation
 
-from conftest import fidelity_suite
+from strew_testing import fidelity_suite
 
 
 suite = fidelity_suite()

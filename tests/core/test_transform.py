@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import shapely
-from conftest import angles, finite, scales
+from strew_testing import angles, finite, scales
 from hypothesis import given
 from hypothesis import strategies as st
 

@@ -18,7 +18,7 @@ from strew.fields import flow_field
 from strew.grow import analyze, grow, size_priority
 from strew.metrics import fidelity
 
-from conftest import fidelity_suite
+from strew_testing import fidelity_suite
 
 
 make_exemplar = fidelity_suite().make_exemplar

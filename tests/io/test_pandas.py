@@ -8,7 +8,7 @@ from hypothesis import given
 
 from strew import Arrangement, InputError, Region, Shape
 
-from conftest import arrangements
+from strew_testing import arrangements
 
 pd = pytest.importorskip("pandas")
 

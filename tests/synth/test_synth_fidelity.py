@@ -16,7 +16,7 @@ from strew.metrics import fidelity
 from strew.synth import Palette, brush, erase, new_state, synthesize
 from strew.synth._exemplars import grid, stones, stripes
 
-from conftest import fidelity_suite
+from strew_testing import fidelity_suite
 
 
 suite = fidelity_suite()

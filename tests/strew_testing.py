@@ -1,0 +1,63 @@
+"""Hypothesis strategies and loaders shared by the test modules.
+
+Import them with ``from strew_testing import ...`` (``tests/`` is on ``sys.path``).
+Not ``from conftest import ...``: a second ``conftest.py`` in a test folder (such as
+``tests/surface``) takes the module name ``conftest`` over, and such imports break.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import strategies as st
+
+
+finite = st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False)
+angles = st.floats(-np.pi, np.pi, allow_nan=False, exclude_min=True)
+scales = st.floats(0.1, 10.0, allow_nan=False)
+
+
+@st.composite
+def arrangements(draw, max_elements: int = 12, extra_columns: bool = True):
+    """Random arrangements with 1-3 kinds, optional extra columns and meta."""
+    from strew import Arrangement, Shape
+
+    nk = draw(st.integers(1, 3))
+    shapes = {}
+    for k in range(nk):
+        w = draw(st.floats(0.5, 5))
+        h = draw(st.floats(0.5, 5))
+        shapes[f"kind{k}"] = Shape.polygon([(-w, -h), (w, -h), (0.3 * w, h), (-w, 0.2 * h)])
+    n = draw(st.integers(0, max_elements))
+    kind = draw(st.lists(st.integers(0, nk - 1), min_size=n, max_size=n))
+    xs = draw(st.lists(finite, min_size=n, max_size=n))
+    ys = draw(st.lists(finite, min_size=n, max_size=n))
+    rot = draw(st.lists(angles, min_size=n, max_size=n))
+    sc = draw(st.lists(scales, min_size=n, max_size=n))
+    columns = {}
+    if extra_columns:
+        if draw(st.booleans()):
+            columns["color"] = draw(st.lists(st.sampled_from(["#fff", "#a0b", "red"]), min_size=n, max_size=n))
+        if draw(st.booleans()):
+            columns["sub_id"] = draw(st.lists(st.integers(0, 1000), min_size=n, max_size=n))
+        if draw(st.booleans()):
+            columns["radius"] = draw(st.lists(st.floats(0, 100, allow_nan=False), min_size=n, max_size=n))
+        if draw(st.booleans()):
+            columns["void"] = draw(st.lists(st.booleans(), min_size=n, max_size=n))
+    meta = {"seed": draw(st.integers(0, 99)), "params": {"a": draw(st.floats(0, 1))}, "note": "héllo"}
+    return Arrangement(shapes, np.array(kind, dtype=int), xs, ys, rot, sc, columns=columns, meta=meta)
+
+
+def fidelity_suite():
+    """The exemplar suite of ``examples/fidelity/make.py`` (loaded once; it is a script, not a module)."""
+    import importlib.util
+    import sys
+    from pathlib import Path
+
+    name = "strew_fidelity_suite"
+    if name not in sys.modules:
+        path = Path(__file__).resolve().parents[1] / "examples" / "fidelity" / "make.py"
+        spec = importlib.util.spec_from_file_location(name, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[name] = mod
+        spec.loader.exec_module(mod)
+    return sys.modules[name]
