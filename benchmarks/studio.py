@@ -155,7 +155,7 @@ def fill_readouts(page, project: Path, example: str) -> dict:
     s.handle({"type": "fill", "point": [[REGION[0] / 2, REGION[1] / 2]]})
     total = time.perf_counter() - t
     return {
-        "count_shown": shown_count, "count_saved": saved, "count_monotone": counts == sorted(counts),
+        "count_shown": shown_count, "count_saved": saved, "count_steps_back": sum(a - b for a, b in zip(counts, counts[1:]) if b < a),
         "rate_shown": shown_rate, "rate_own": int(added) / float(secs),
         "fill_s": total, "verdict_s": timed["_judge"], "bounds_s": timed["_out_of_bounds"],
     }
@@ -268,7 +268,7 @@ def main() -> None:
             ro = fill_readouts(page, project, "scales.svg")
             bench.row(
                 "scales fill readouts",
-                count=ro["count_shown"], count_saved=ro["count_saved"], count_ok=float(ro["count_shown"] == ro["count_saved"] and ro["count_monotone"]),
+                count=ro["count_shown"], count_saved=ro["count_saved"], count_ok=float(ro["count_shown"] == ro["count_saved"]), count_steps_back=ro["count_steps_back"],
                 rate_shown=ro["rate_shown"], rate_own=ro["rate_own"], rate_ratio=ro["rate_shown"] / ro["rate_own"],
                 fill_s=ro["fill_s"], verdict_share=ro["verdict_s"] / ro["fill_s"], bounds_share=ro["bounds_s"] / ro["fill_s"],
             )

@@ -9,9 +9,16 @@ import re
 import numpy as np
 import pytest
 import shapely
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from strew import InputError, load, metrics
 from strew.studio._session import PRELOAD_EXAMPLE, SCENE_FILE, Session
+
+
+def _steps_back(counts):
+    """Elements the shown count lost between successive status messages, in all."""
+    return sum(a - b for a, b in zip(counts, counts[1:]) if b < a)
 
 
 def _session(tmp_path, example="scales.svg", seed=3, size=(400.0, 300.0)):
@@ -38,11 +45,12 @@ def test_fill_count_rate_and_no_overhang(tmp_path):
     counts = []
     out = s.handle({"type": "fill", "point": [[200.0, 150.0]]}, lambda m: counts.append(m["count"]) if m["type"] == "status" else None)
     st = out[-1]
-    # one count: status == browser columns == visible elements of the saved scene; it never goes back
+    # one count: status == browser columns == visible elements of the saved scene. It does
+    # not flicker: elements that will be removed (overhanging) are hidden while the fill
+    # streams; it steps back only where the optimisation moves a shown element over the
+    # border (then hidden, and removed at the end): an element or two
     assert st["count"] == len(s._arrays()["k"]) == _saved_count(s, tmp_path) > 50
-    assert counts == sorted(counts) and (not counts or counts[-1] <= st["count"])
-    for m in counts:
-        assert m <= st["count"]
+    assert _steps_back(counts + [st["count"]]) <= max(2, 0.01 * st["count"])
     # elements/s: the fill's own figure (elements over seconds in its message)
     added, secs = re.match(r"filled: (\d+) elements in ([\d.]+) s", st["message"]).groups()
     assert int(added) == st["count"]
@@ -107,7 +115,8 @@ def test_brush_density_thins_the_stroke(tmp_path):
         for p in line[1:]:
             counts += [m["count"] for m in s.handle({"type": "stroke_move", "points": [list(p)]}) if m["type"] == "status"]
         end = s.handle({"type": "stroke_end"})[-1]["count"]
-        assert counts == sorted(counts) and counts[-1] <= end  # thinned elements never show, then vanish
+        # thinned elements never show and then vanish (at most the odd element steps back, as for a fill)
+        assert _steps_back(counts + [end]) <= max(2, 0.01 * end)
         assert end == _saved_count(s, tmp_path)
         return end
 
@@ -153,3 +162,43 @@ def test_first_start_preloads_the_example_palette(tmp_path):
     t = Session(tmp_path, preload=PRELOAD_EXAMPLE)
     t.handle({"type": "hello"})
     assert t.palette == {}
+
+
+@st.composite
+def _scenes(draw):
+    """A star-shaped region (convex or not), boundary strokes and elements near its border."""
+    from strew import Arrangement, Region, Shape
+
+    k = draw(st.integers(3, 9))
+    ang = np.sort(np.array(draw(st.lists(st.floats(0, 2 * np.pi, exclude_max=True), min_size=k, max_size=k, unique=True))))
+    rad = np.array(draw(st.lists(st.floats(40, 100), min_size=k, max_size=k)))
+    ring = np.c_[100 + rad * np.cos(ang), 100 + rad * np.sin(ang)]
+    poly = shapely.Polygon(ring)
+    assume(poly.is_valid and poly.area > 500)
+    strokes = [np.array(draw(st.lists(st.tuples(st.floats(0, 200), st.floats(0, 200)), min_size=2, max_size=4))) for _ in range(draw(st.integers(0, 2)))]
+    n = draw(st.integers(1, 60))
+    xy = np.array(draw(st.lists(st.tuples(st.floats(0, 200), st.floats(0, 200)), min_size=n, max_size=n)))
+    rot = draw(st.lists(st.floats(-np.pi, np.pi), min_size=n, max_size=n))
+    sc = draw(st.lists(st.floats(0.3, 3.0), min_size=n, max_size=n))
+    kind = draw(st.lists(st.integers(0, 2), min_size=n, max_size=n))
+    if draw(st.booleans()):  # one size: the widest radius is every element's (the band at its narrowest)
+        kind, sc = [2] * n, [sc[0]] * n
+    shapes = {"bar": Shape.rectangle(8.0, 2.0), "tri": Shape.polygon([(-3, -3), (5, 0), (-3, 3)]), "disc": Shape.circle(4.0, segments=32)}
+    return Region(poly), strokes, Arrangement(shapes, kind, xy[:, 0], xy[:, 1], rot, sc)
+
+
+@settings(max_examples=80)
+@given(_scenes())
+def test_bounds_test_agrees_with_the_exact_outlines(scene):
+    """The studio's fast test (exact only in the border band) against shapely on every outline."""
+    import tempfile
+
+    region, strokes, arr = scene
+    s = Session(tempfile.mkdtemp(), seed=0)
+    s.region = region
+    s.boundary_strokes = [b for b in strokes if len(np.unique(b, axis=0)) > 1]
+    tol = 1e-9 * max(1.0, *map(abs, region.bounds))
+    expected = ~region.contains(arr.xy) | ~region.contains_geometry(arr.geometry, tolerance=tol)
+    if s.boundary_strokes:
+        expected |= shapely.intersects(arr.geometry, shapely.MultiLineString(s.boundary_strokes))
+    assert s._out_of_bounds(arr).tolist() == expected.tolist()
