@@ -8,6 +8,8 @@ from collections import Counter
 import numpy as np
 import pytest
 import shapely
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from strew import Arrangement, InputError, Region, Shape, load, save
 from strew.ornament import BUILTIN_PATTERNS, grow_elements
@@ -115,3 +117,53 @@ def test_parts_column_is_validated_and_travels():
     b = a.select([1]).concat(a.select([0]))
     assert b.element_parts[0] is not None and b.element_parts[1] is None
     assert b.geometry[0].equals(g[1])
+
+
+# -- the parts column through JSON and SVG, on random geometry ---------------------------------
+_coord = st.integers(-400, 400).map(lambda v: v / 40.0)
+_point = st.tuples(_coord, _coord)
+
+
+@st.composite
+def _part(draw):
+    paths = []
+    for _ in range(draw(st.integers(1, 2))):
+        closed = draw(st.booleans())
+        pts = draw(st.lists(_point, min_size=3 if closed else 2, max_size=6, unique=True))
+        paths.append({"points": [list(p) for p in pts], "closed": closed})
+    fill = draw(st.sampled_from(["none", "#c8413b", "#2f5d3a"]))
+    return {"paths": paths, "style": {"fill": fill, "stroke": "#2b2f36", "stroke_width": 0.25}}
+
+
+@st.composite
+def _arrangement(draw):
+    n = draw(st.integers(1, 5))
+    parts = [draw(st.one_of(st.none(), st.lists(_part(), min_size=1, max_size=3))) for _ in range(n)]
+    kinds = [draw(st.sampled_from(["stem", "leaf"])) for _ in range(n)]
+    xs = [draw(st.integers(-1000, 1000)) / 10.0 for _ in range(n)]
+    ys = [draw(st.integers(-1000, 1000)) / 10.0 for _ in range(n)]
+    rot = [draw(st.integers(-314, 314)) / 100.0 for _ in range(n)]
+    sc = [draw(st.integers(5, 30)) / 10.0 for _ in range(n)]
+    shapes = {"stem": Shape.circle(1.0, style={"fill": "none", "stroke": "#000"}),
+              "leaf": Shape.rectangle(2.0, 1.0, style={"fill": "#0a0", "stroke": "none"})}
+    return Arrangement(shapes, kinds, xs, ys, rot, sc, columns={"parts": parts, "order": list(range(n))})
+
+
+@settings(max_examples=40)
+@given(_arrangement())
+def test_parts_round_trip_property(arr):
+    from strew.io.document import dumps, loads
+    from strew.io.svg import read_svg, to_svg
+
+    assert loads(dumps(arr)).equals(arr)
+    back = read_svg(to_svg(arr))
+    assert np.array_equal(back.kind_names, arr.kind_names) and back.counts() == arr.counts()
+    # geometry kept: each element's world geometry within rounding (10 significant digits)
+    d = shapely.hausdorff_distance(arr.geometry, back.geometry)
+    assert np.all(d <= 1e-6)
+    none = (None,) * len(arr)  # a column of nulls only is no column
+    for pa, pb in zip(arr.element_parts, back.element_parts or none):
+        assert (pa is None) == (pb is None)
+        if pa is not None:
+            assert [[p.closed for p in s.paths] for s in pa] == [[p.closed for p in s.paths] for s in pb]
+            assert [s.style["fill"] for s in pa] == [s.style["fill"] for s in pb]
