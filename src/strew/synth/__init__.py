@@ -23,12 +23,17 @@ every candidate); a relative kind-mismatch cost; a learned closest approach per 
 pair; a sparse LU solve with a symmetric ordering instead of a sparse Cholesky; visible
 elements are placed before voids and evict the voids they land on (§5.6), which brings
 the visible density to the exemplar's; while brushing, the horizon that is optimised is
-the part within r-bar of the iteration's new elements (§5.2, "recently synthesized").
+the part within r-bar of the iteration's new elements (§5.2, "recently synthesized");
+in near-regular exemplars each optimisation move is shortened by the spread of the
+element's own predictions (at most 0.1 of its radius and 0.3 of the exemplar's spacing
+slack), so that the least-squares blend does not average the exemplar's jitter away
+(§5.2-5.3, ``noise_floor``).
 
 Extensions for exemplars with elements of several sizes, which §7 names a limitation
 (each is commented where it is made; see ``_grow`` and ``_prepare``): radii at least 2x
 apart form size classes; the copies of all seeds are placed larger classes first;
-horizon elements of the last 2 iterations yield to a new element of a larger class;
+horizon elements of the last 2 iterations yield to a new element of a larger class
+while the output owes that class its exemplar share (within 2 standard errors);
 a small element is copied only with the larger element it leans on (its nearest larger
 Delaunay neighbour in the exemplar), so a neighbourhood's rim does not scatter orphans;
 the closest approach of two kinds is learned over the whole exemplar, not only within
