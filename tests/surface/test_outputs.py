@@ -75,3 +75,25 @@ def test_preview(tmp_path, sphere, sphere_dots):
     assert rust[outside].mean() < 0.001
     with pytest.raises(InputError, match="size: expected an integer"):
         surface.render_preview(sphere_dots, sphere, size=3)
+
+
+def test_flat_arrangement_lifted_to_3d(tmp_path):
+    from strew import Arrangement
+    from strew.arrangement import transform_points
+
+    rng = np.random.default_rng(4)
+    lib = {"tri": Shape.polygon([(0, 0), (3, 0), (0, 1)]), "dot": Shape.circle(0.5)}
+    a = Arrangement(lib, rng.integers(0, 2, 20), rng.uniform(0, 50, 20), rng.uniform(0, 50, 20),
+                    rng.uniform(-np.pi, np.pi, 20), rng.uniform(0.5, 2, 20))
+    lifted = surface.lift(a, z=2.0)
+    p, n, t, b, s = surface.element_frames(lifted)
+    pts = lib["tri"].points
+    for i in np.flatnonzero(a.kind == 0):
+        world = p[i] + s[i] * (pts[:, :1] * t[i] - pts[:, 1:] * b[i])  # the frames' convention
+        flat = transform_points(pts, a.x[i], a.y[i], a.rotation[i], a.scale[i])
+        assert np.allclose(world[:, :2], flat) and np.allclose(world[:, 2], 2.0)
+    rock = trimesh.creation.icosphere(subdivisions=1, radius=0.5)
+    scene = trimesh.load(surface.save_glb(lifted, tmp_path / "flat.glb", element_meshes={"dot": rock}))
+    assert len(scene.graph.nodes_geometry) == len(a)
+    with pytest.raises(InputError, match="z: must be finite"):
+        surface.lift(a, z=float("inf"))

@@ -14,6 +14,8 @@ Public entry points:
     GLB with one node per element sharing one mesh per kind.
 :func:`save_preview` / :func:`render_preview`
     A PNG preview without a GPU.
+:func:`lift`
+    A flat arrangement as 3D elements on a plane (GLB output of 2D results).
 :func:`local_map`
     Davison's m_p (§5.1, §5.7): exemplar offsets to surface points by a geodesic walk
     in the field's frame (for synthesis on surfaces; synth does not use it yet).
@@ -26,7 +28,7 @@ A surface arrangement is a :class:`strew.Arrangement` with the columns
 from __future__ import annotations
 
 from ._field import OrientationField, load_field, orientation_field
-from ._frames import SURFACE_COLUMNS, element_frames, element_matrices, is_surface
+from ._frames import SURFACE_COLUMNS, element_frames, element_matrices, is_surface, lift
 from ._gltf import save_glb, shape_mesh, to_glb, to_scene
 from ._mesh import MESH_FORMATS, load_mesh
 from ._preview import render_preview, save_preview
@@ -40,6 +42,7 @@ __all__ = [
     "element_frames",
     "element_matrices",
     "is_surface",
+    "lift",
     "load_field",
     "load_mesh",
     "local_map",

@@ -15,7 +15,7 @@ import numpy as np
 from .._errors import InputError
 from ..arrangement import Arrangement
 
-__all__ = ["SURFACE_COLUMNS", "is_surface", "element_frames", "element_matrices"]
+__all__ = ["SURFACE_COLUMNS", "is_surface", "element_frames", "element_matrices", "lift"]
 
 SURFACE_COLUMNS = ("z", "nx", "ny", "nz", "tx", "ty", "tz")
 
@@ -64,3 +64,34 @@ def element_matrices(arr: Arrangement) -> np.ndarray:
     m[:, :3, 3] = p
     m[:, 3, 3] = 1.0
     return m
+
+
+def lift(arr: Arrangement, z: float = 0.0) -> Arrangement:
+    """A flat arrangement as a surface arrangement on the plane ``z`` (Sakurai Fig. 15).
+
+    Each element keeps its x, y, rotation and scale; its normal is ``(0, 0, -1)`` and its
+    tangent ``(cos r, sin r, 0)``, so that the elements' 3D geometry coincides with their
+    2D geometry and the scene seen from ``-z`` (x right, y down) reads as the SVG does.
+    Kinds can then carry 3D meshes in :func:`strew.surface.save_glb`.
+
+    Examples
+    --------
+    >>> from strew import Arrangement, Shape
+    >>> a = lift(Arrangement({"d": Shape.circle(1)}, ["d"], [3], [4], [0.5]))
+    >>> float(a["nz"][0]), round(float(a["tx"][0]), 3)
+    (-1.0, 0.878)
+    """
+    n = len(arr)
+    try:
+        z = float(z)
+    except (TypeError, ValueError):
+        raise InputError(f"z: must be a number, got {z!r}") from None
+    if not np.isfinite(z):
+        raise InputError("z: must be finite")
+    c, s = np.cos(arr.rotation), np.sin(arr.rotation)
+    zeros = np.zeros(n)
+    cols = {"z": np.full(n, z), "nx": zeros, "ny": zeros, "nz": np.full(n, -1.0), "tx": c, "ty": s, "tz": zeros}
+    if "radius" not in arr.columns:
+        radii = np.array([sh.radius for sh in arr.shapes.values()])
+        cols["radius"] = radii[np.asarray(arr.kind)] * arr.scale if n else zeros
+    return arr.with_columns(**cols)
