@@ -129,10 +129,11 @@ def test_flowers_do_not_overlap_and_each_sits_on_a_stem(panel, tmp_path):
     assert shapely.distance(g[blooms], stems).max() < 1e-5
     # and a stem shows between the flowers it joins: each one's drawn stem reaches both
     by_index = {e.index: e for e in orn.elements}
+    at = {tuple(np.round(by_index[int(arr["element"][b])].proxy.center, 9)): b for b in blooms}
     for i in np.flatnonzero(kinds == "stem"):
         st = by_index[int(arr["element"][i])].proxy
-        ends = [b for b in blooms if min(np.hypot(*(by_index[int(arr["element"][b])].proxy.center - p)) for p in (st.start, st.end)) < 1e-9]
-        assert len(ends) == 2 and all(shapely.distance(g[i], g[b]) < 1e-5 for b in ends)
+        ends = [at.get(tuple(np.round(p, 9))) for p in (st.start, st.end)]
+        assert None not in ends and all(shapely.distance(g[i], g[b]) < 1e-5 for b in ends)
     # stems don't cross stems: the proxies meet only at a shared flower's centre
     segs = [by_index[int(e)].proxy for e, k in zip(arr["element"], kinds) if k == "stem"]
     lines = [shapely.LineString([s.start, s.end]) for s in segs]

@@ -72,6 +72,7 @@ def test_json_round_trip_keeps_kinds_and_geometry(rendered, tmp_path):
         _same_geometry(arr, back, 0.0)
 
 
+@pytest.mark.slow  # SVG import of each gallery style; the default run reads SVG in test_info_counts_per_type
 def test_svg_round_trip_keeps_kinds_and_geometry(rendered, tmp_path):
     orn, arrs = rendered
     # the gallery style (filled marks, several per element); the outline style's SVG is

@@ -174,8 +174,10 @@ def grow_ornament(
     Returns
     -------
     Arrangement
-        One row per drawn mark; columns ``element``, ``type``, ``parent``, ``phase``;
-        ``meta["ornament"]`` holds the run's statistics.
+        One row per drawn element, of kind ``type`` (one kind per element type); columns
+        ``element``, ``type``, ``parent``, ``phase`` and ``parts`` (the element's own
+        marks, see :class:`~strew.Arrangement`); ``meta["ornament"]`` holds the run's
+        statistics.
     """
     from .._errors import InputError
     from .._method import as_region, check_context, empty_result, free_region, is_empty, seed_record, stamp
