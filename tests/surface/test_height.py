@@ -10,7 +10,7 @@ from hypothesis import given, settings, strategies as st
 from PIL import Image
 
 import strew
-from strew import Arrangement, InputError, Region, Shape
+from strew import Arrangement, InputError, Shape
 from strew.io._height import height_map, to_height_png
 
 GROUND = 32768

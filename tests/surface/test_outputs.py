@@ -10,8 +10,6 @@ from PIL import Image
 from strew import InputError, Shape
 from strew import surface
 
-from _surface_helpers import positions
-
 
 def test_glb_round_trip(tmp_path, torus, torus_mixed):
     path = surface.save_glb(torus_mixed, tmp_path / "scene.glb", mesh=torus)

@@ -94,7 +94,6 @@ def test_field_orients_tangents(sphere):
     a = surface.pack(0.08, sphere, rng=2, field=field)
     p, n, t, _, _ = surface.element_frames(a)
     # away from the poles the tangent points away from the source (south along meridians)
-    south = np.array([0, 0, -1.0]) - n * n[:, 2:3] * -1.0
     south = np.array([0, 0, -1.0])[None] - np.einsum("ij,j->i", n, [0, 0, -1.0])[:, None] * n
     keep = np.abs(p[:, 2]) < 0.8
     south = south[keep] / np.linalg.norm(south[keep], axis=1, keepdims=True)
