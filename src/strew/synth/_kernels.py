@@ -130,7 +130,7 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
     for j in range(q):
         if not used[j]:
             lim = rim - 0.5 * e_d[j]
-            if lim > 0 and e_off[j, 0] ** 2 + e_off[j, 1] ** 2 <= lim * lim:
+            if lim > 0 and e_off[j, 0] * e_off[j, 0] + e_off[j, 1] * e_off[j, 1] <= lim * lim:
                 cost += e_d[j] * e_d[j]  # right-partial pair (0, e')
     return cost
 
@@ -144,7 +144,11 @@ def sort_segments(ptr, idx, off):
         b = ptr[i + 1]
         if b - a < 2:
             continue
-        r2 = off[a:b, 0] ** 2 + off[a:b, 1] ** 2
+        # a loop, not the array expression ``off[a:b, 0] ** 2 + off[a:b, 1] ** 2``: the
+        # same values, without the ufunc kernel numba would compile for it (issue 16)
+        r2 = np.empty(b - a)
+        for k in range(b - a):
+            r2[k] = off[a + k, 0] * off[a + k, 0] + off[a + k, 1] * off[a + k, 1]
         order = np.argsort(r2, kind="mergesort")
         # gather by loops: numba compiles fancy indexing (``idx[a:b][order]``) about 10x
         # slower (issue 16: this kernel took 17 s to compile, 1.5 s written this way)
@@ -158,18 +162,55 @@ def sort_segments(ptr, idx, off):
 
 
 @numba.njit(cache=True, nogil=True)
+def _vmax(a):
+    """``a.max()`` of a non-empty 1-d array as a loop (NaN if it holds one, as numpy):
+    numba compiles ``ndarray.max`` through ``np.nditer`` and ``take``, seconds of a first
+    run (issue 16)."""
+    m = a[0]
+    for i in range(a.shape[0]):
+        v = a[i]
+        if np.isnan(v):
+            return v
+        if v > m:
+            m = v
+    return m
+
+
+@numba.njit(cache=True, nogil=True)
+def _col_range(pts, c):
+    """``pts[:, c].min(), pts[:, c].max()`` of a non-empty (n, k) array, as one loop (NaN
+    if the column holds one, as numpy; see :func:`_vmax`)."""
+    lo = pts[0, c]
+    hi = lo
+    for i in range(pts.shape[0]):
+        v = pts[i, c]
+        if np.isnan(v):
+            return v, v
+        if v < lo:
+            lo = v
+        if v > hi:
+            hi = v
+    return lo, hi
+
+
+@numba.njit(cache=True, nogil=True)
 def _bucket_grid(pts, cell, queries, reverse):
     """Uniform grid over ``pts`` with linked buckets: ``(x0, y0, cell, nx, ny, head, nxt)``.
 
     ``cell`` grows when the grid would hold far more cells than points and ``queries``
     (computed in floats, so a tiny cell over a wide spread cannot overflow). Each bucket
     lists its points in decreasing index order, or increasing with ``reverse``.
+
+    Compiled callers pass ``np.int64(0)`` and ``np.bool_(...)``, never literal constants:
+    numba compiles one specialisation per literal value (issue 16: a cold synth run
+    compiled this kernel three times, :func:`_disc_hits` twice, and :func:`pair_cost`
+    twice, with and without ``bound``; the callers here now always pass it).
     """
     n = pts.shape[0]
-    x0 = pts[:, 0].min()
-    y0 = pts[:, 1].min()
-    w = pts[:, 0].max() - x0
-    h = pts[:, 1].max() - y0
+    x0, x1 = _col_range(pts, 0)
+    y0, y1 = _col_range(pts, 1)
+    w = x1 - x0
+    h = y1 - y0
     cell = max(cell, 1e-12)
     if (w / cell + 1.0) * (h / cell + 1.0) > 4.0 * (n + queries) + 1024.0:
         cell = max(w, h) / np.sqrt(4.0 * (n + queries)) + cell
@@ -230,7 +271,7 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, INF)
             for t in range(eb - ea):
                 if not used[t] and not _inside_convex(hp[s], hp_n[s], q_pos[i, 0] + e_off[ea + t, 0], q_pos[i, 1] + e_off[ea + t, 1]):
                     cost -= e_d[ea + t] * e_d[ea + t]
@@ -269,7 +310,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
+            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, INF)
             out[i, j] = cost + _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
     return out
 
@@ -323,7 +364,7 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
+            pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, INF)
             w = out_ptr[i * k + j]
             n = 0
             for t in range(eb - ea):
@@ -536,7 +577,7 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
             continue
         a, b = q_ptr[i], q_ptr[i + 1]
         ea, eb = e_ptr[c], e_ptr[c + 1]
-        pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen)
+        pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, INF)
         for t in range(b - a):
             if pair[t] >= 0:
                 con_q[n] = i
@@ -646,7 +687,7 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
     out = np.zeros(m, np.bool_)
     if n == 0 or m == 0:
         return out
-    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, False)
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, np.bool_(False))
     for i in range(m):
         gx = int(np.floor((pts[i, 0] - x0) / cell))
         gy = int(np.floor((pts[i, 1] - y0) / cell))
@@ -692,7 +733,7 @@ def conflict_split(pts, qr, qsk, qcls, opos, orad, osk, ocls, oyield, min_dist, 
     soft = np.zeros(m, np.bool_)
     if n == 0 or m == 0:
         return hard, soft
-    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, False)
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, np.bool_(False))
     for i in range(m):
         gx = int(np.floor((pts[i, 0] - x0) / cell))
         gy = int(np.floor((pts[i, 1] - y0) / cell))
@@ -736,7 +777,7 @@ def _disc_hits(pts, pr, centers, cr, strict):
         cell = max(cell, pr[i])
     for j in range(m):
         cell = max(cell, cr[j])
-    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(centers, cell, n, False)
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(centers, cell, n, np.bool_(False))
     for i in range(n):
         fx = (pts[i, 0] - x0) / cell
         fy = (pts[i, 1] - y0) / cell
@@ -768,19 +809,19 @@ def _disc_hits(pts, pr, centers, cr, strict):
 @numba.njit(cache=True, nogil=True)
 def overlaps_any(pts, pr, centers, cr):
     """(n,) bool: is ``|pts[i] - centers[j]| < max(pr[i], cr[j])`` for some j."""
-    return _disc_hits(pts, pr, centers, cr, True)
+    return _disc_hits(pts, pr, centers, cr, np.bool_(True))
 
 
 @numba.njit(cache=True, nogil=True)
 def in_discs(pts, centers, radii):
     """(n,) bool: which ``pts`` lie in some disc ``(centers[j], radii[j])``."""
-    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, radii, False)
+    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, radii, np.bool_(False))
 
 
 @numba.njit(cache=True, nogil=True)
 def near_any(pts, centers, reach):
     """(n,) bool: which ``pts`` lie within ``reach`` of some point of ``centers``."""
-    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, np.full(centers.shape[0], float(reach)), False)
+    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, np.full(centers.shape[0], float(reach)), np.bool_(False))
 
 
 @numba.njit(cache=True, nogil=True)
@@ -794,7 +835,7 @@ def spacing_violations(pos, rad, sk, min_dist, factor, moved, cell):
     out = np.zeros(n, np.bool_)
     if n < 2:
         return out
-    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(pos, cell, 0, False)
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(pos, cell, np.int64(0), np.bool_(False))
     for i in range(n):
         if not moved[i]:
             continue
@@ -832,8 +873,9 @@ def grid_neighborhoods(pos, query, radius):
     ptr = np.zeros(m + 1, np.int64)
     if n == 0 or m == 0:
         return ptr, np.zeros(0, np.int64), np.zeros((0, 2))
-    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(pos, float(radius.max()), 0, True)
-    reach = int(np.ceil(radius.max() / cell))
+    rmax = _vmax(radius)
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(pos, float(rmax), np.int64(0), np.bool_(True))
+    reach = int(np.ceil(rmax / cell))
     idx = np.empty(0, np.int64)
     off = np.empty((0, 2))
     for t in range(2):
@@ -868,7 +910,7 @@ def grid_neighborhoods(pos, query, radius):
                     oy = off[u, 1]
                     du = ox * ox + oy * oy
                     v = u - 1
-                    while v >= start and (off[v, 0] ** 2 + off[v, 1] ** 2 > du or (off[v, 0] ** 2 + off[v, 1] ** 2 == du and idx[v] > ju)):
+                    while v >= start and (off[v, 0] * off[v, 0] + off[v, 1] * off[v, 1] > du or (off[v, 0] * off[v, 0] + off[v, 1] * off[v, 1] == du and idx[v] > ju)):
                         idx[v + 1] = idx[v]
                         off[v + 1, 0] = off[v, 0]
                         off[v + 1, 1] = off[v, 1]
