@@ -175,3 +175,15 @@ def test_bad_options(sphere, args, kwargs, message):
 def test_field_of_another_mesh_is_refused(sphere, torus):
     with pytest.raises(InputError, match="field: has"):
         surface.pack(0.1, sphere, field=surface.orientation_field(torus))
+
+
+def test_density_does_not_follow_curvature(torus):
+    # the torus's inner half has negative Gaussian curvature, its outer half positive:
+    # elements per unit area agree within 10%
+    arr = surface.pack(0.04, torus, rng=3, field=None)
+    f = np.asarray(arr["face"])
+    c = torus.triangles_center
+    inner = np.hypot(c[:, 0], c[:, 1]) < 1.0
+    d_in = np.count_nonzero(inner[f]) / torus.area_faces[inner].sum()
+    d_out = np.count_nonzero(~inner[f]) / torus.area_faces[~inner].sum()
+    assert 0.9 < d_in / d_out < 1.1
