@@ -85,3 +85,16 @@ def test_usage_errors_exit_2(args, message, mesh_file, tmp_path, capsys, monkeyp
     err = capsys.readouterr().err
     assert message in err and len(err.strip().splitlines()) == 1
     assert [p.name for p in tmp_path.iterdir()] == []
+
+
+def test_missing_extra_names_the_install(mesh_file, tmp_path, capsys, monkeypatch):
+    import sys
+
+    from strew.surface import load_mesh
+
+    monkeypatch.setitem(sys.modules, "potpourri3d", None)  # import fails as if not installed
+    assert main(["surface", "--surface", str(mesh_file), "--radius", "0.1", "--out", str(tmp_path / "x.glb")]) == 2
+    assert "strew.surface needs potpourri3d: pip install 'strew[surface]'" in capsys.readouterr().err
+    monkeypatch.setitem(sys.modules, "trimesh", None)
+    with pytest.raises(ImportError, match=r"pip install 'strew\[surface\]'"):
+        load_mesh(mesh_file)

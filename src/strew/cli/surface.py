@@ -61,6 +61,13 @@ def command(shapes: tuple[str, ...], mesh: str, radius: float | None, scale: str
     from .. import surface
     from ..io._atomic import atomic_write_many
 
+    from ..surface._deps import require
+
+    for dep in ("trimesh", "potpourri3d"):
+        try:
+            require(dep)
+        except ImportError as exc:  # a missing extra is a usage problem: exit 2, one line
+            raise InputError(str(exc)) from None
     _check_outs(outs)
     if (radius is None) == (not shapes):
         raise InputError("give SHAPE files or --radius R (one of them)")
