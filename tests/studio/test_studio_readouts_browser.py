@@ -283,7 +283,21 @@ STEPS = [
     ("erase", lambda pg: _stroke(pg, "erase", [(560.0, 100.0), (760.0, 500.0)], 40.0)),
     ("flow", lambda pg: _stroke(pg, "flow", [(100.0, 450.0), (250.0, 520.0), (420.0, 450.0)], 5.0)),
     ("region", lambda pg: _stroke(pg, "region", [(20.0, 20.0), (780.0, 40.0), (760.0, 580.0), (40.0, 560.0)], 5.0)),
+    ("pan", lambda pg: _pan(pg, 80, 40)),
 ]
+
+
+def _pan(page, dx, dy):
+    """The pan tool: drag the view by (dx, dy) screen pixels and let the layer redraw."""
+    page.click("#tools button[data-tool=pan]")
+    box = page.locator("#scene").bounding_box()
+    x, y = box["x"] + 200, box["y"] + 200
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(x + dx, y + dy, steps=4)
+    page.mouse.up()
+    page.mouse.move(box["x"] + box["width"] + 50, y)  # off the canvas: no brush outline
+    page.wait_for_timeout(300)  # the layer is redrawn once the pan rests (120 ms)
 
 
 @pytest.mark.slow
