@@ -55,8 +55,14 @@ def _bridson(width: float, height: float, r: float, k: int, seed: np.uint64, max
     gh = max(1, int(np.ceil(height / cell)))
     # sample coordinates stored in the grid itself (far-away sentinel when empty),
     # padded by two cells so that the 5x5 neighbourhood needs no bounds checks
-    gxs = np.full((gh + 4, gw + 4), -1e300, dtype=np.float64)
-    gys = np.full((gh + 4, gw + 4), -1e300, dtype=np.float64)
+    # np.empty and a loop, not np.full: numba compiles np.full's generic code into every
+    # first run that calls this kernel (strew run; issue 16)
+    gxs = np.empty((gh + 4, gw + 4), dtype=np.float64)
+    gys = np.empty((gh + 4, gw + 4), dtype=np.float64)
+    for yy in range(gh + 4):
+        for xx in range(gw + 4):
+            gxs[yy, xx] = -1e300
+            gys[yy, xx] = -1e300
     cap = min(gw * gh, max_points)
     pts = np.empty((cap, 2), dtype=np.float64)
     active = np.empty(cap, dtype=np.int64)
@@ -136,7 +142,10 @@ def _bridson_variable(
     gw = max(1, int(np.ceil(width / cell)))
     gh = max(1, int(np.ceil(height / cell)))
     reach = int(np.ceil(rmax / cell))
-    grid = np.full((gh, gw), -1, dtype=np.int64)
+    grid = np.empty((gh, gw), dtype=np.int64)  # np.empty and a loop: see _bridson
+    for yy in range(gh):
+        for xx in range(gw):
+            grid[yy, xx] = -1
     cap = min(gw * gh, max_points)
     pts = np.empty((cap, 2), dtype=np.float64)
     rad = np.empty(cap, dtype=np.float64)
