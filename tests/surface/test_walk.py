@@ -13,16 +13,16 @@ from strew import surface
 SPHERE = trimesh.creation.icosphere(subdivisions=4)
 
 
-def _plane():
-    # a flat 4 x 4 grid of squares in z = 0, split into triangles
-    xs = np.linspace(-2, 2, 9)
+def _plane(k=8):
+    # the square [-2, 2]^2 in z = 0 as a k x k grid of squares, split into triangles
+    xs = np.linspace(-2, 2, k + 1)
     X, Y = np.meshgrid(xs, xs)
     v = np.column_stack([X.ravel(), Y.ravel(), np.zeros(X.size)])
     f = []
-    for i in range(8):
-        for j in range(8):
-            a = i * 9 + j
-            f += [[a, a + 1, a + 10], [a, a + 10, a + 9]]
+    for i in range(k):
+        for j in range(k):
+            a = i * (k + 1) + j
+            f += [[a, a + 1, a + k + 2], [a, a + k + 2, a + k + 1]]
     return trimesh.Trimesh(v, np.array(f), process=False)
 
 
@@ -74,3 +74,54 @@ def test_bad_arguments():
         surface.local_map(SPHERE, _sphere_field(), 10**6, [1, 0, 0], [[0.1, 0]])
     with pytest.raises(InputError, match="offsets: NaN"):
         surface.local_map(SPHERE, _sphere_field(), 0, [1, 0, 0], [[np.nan, 0]])
+
+
+def test_chart_of_a_plane_is_an_isometry():
+    from strew import Shape
+    from strew.arrangement import transform_points
+
+    mesh = _plane(32)
+    arr = surface.pack({"tri": Shape.polygon([(0, 0), (0.2, 0), (0, 0.08)])}, mesh, rng=3, rotation="random", field=None)
+    ch = surface.chart(arr, mesh, [0, 0, 0], 1.5)
+    p = np.column_stack([arr.x, arr.y, arr["z"]])
+    keep = np.hypot(p[:, 0], p[:, 1]) < 1.5 - 1e-9
+    assert len(ch) == keep.sum() > 20
+    # distances are kept, and each element's 2D outline is its 3D outline moved rigidly
+    pts = arr.shapes["tri"].points
+    q, n, t, b, s = surface.element_frames(arr)
+    world = q[keep][:, None, :] + s[keep, None, None] * (pts[None, :, :1] * t[keep, None] - pts[None, :, 1:] * b[keep, None])
+    flat = np.stack([transform_points(pts, x, y, r, sc) for x, y, r, sc in zip(ch.x, ch.y, ch.rotation, ch.scale)])
+    d3 = np.linalg.norm(world.reshape(-1, 3)[:, None] - world.reshape(-1, 3)[None], axis=2)
+    d2 = np.linalg.norm(flat.reshape(-1, 2)[:, None] - flat.reshape(-1, 2)[None], axis=2)
+    assert np.all(np.abs(d3 - d2) <= 1e-6 * d3 + 1e-9)
+    within = np.abs(d3 - d2).reshape(len(world), 3, len(world), 3)[np.arange(len(world)), :, np.arange(len(world))]
+    assert within.max() < 1e-9
+    def signed(a):
+        e1, e2 = a[:, 1, :2] - a[:, 0, :2], a[:, 2, :2] - a[:, 0, :2]
+        return e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]
+    # same picture: the surface seen from outside (+z, y up on the screen) against the
+    # chart drawn as SVG (y down): raw signed areas have opposite signs
+    assert np.all(np.sign(signed(world)) == -np.sign(signed(flat)))
+    with pytest.raises(InputError, match="radius: must be positive"):
+        surface.chart(arr, mesh, [0, 0, 0], -1)
+
+
+def test_sphere_charts_are_faithful_to_a_flat_packing():
+    from strew.metrics import fidelity
+
+    r = 0.05
+    flat = surface.pack(r, _plane(), rng=1, field=None)
+    exemplar = flat.select(np.ones(len(flat), bool)).without_columns(*flat.columns)
+    exemplar = exemplar.replace(region=strew_region_box(-2, -2, 2, 2))
+    arr = surface.pack(r, SPHERE, rng=2, field=None)
+    verdicts = [fidelity(exemplar, surface.chart(arr, SPHERE, c, 0.8), local=False, eq5=False).faithful
+                for c in ([0, 0, 1], [1, 0, 0], [0, -1, 0])]
+    assert all(verdicts)
+
+
+def strew_region_box(x0, y0, x1, y1):
+    import shapely
+
+    from strew import Region
+
+    return Region(shapely.box(x0, y0, x1, y1))

@@ -14,6 +14,8 @@ Public entry points:
     GLB with one node per element sharing one mesh per kind.
 :func:`save_preview` / :func:`render_preview`
     A PNG preview without a GPU.
+:func:`chart`
+    Elements near a point in a flat geodesic chart (log map), for 2D metrics.
 :func:`lift`
     A flat arrangement as 3D elements on a plane (GLB output of 2D results).
 :func:`local_map`
@@ -33,9 +35,10 @@ from ._gltf import save_glb, shape_mesh, to_glb, to_scene
 from ._mesh import MESH_FORMATS, load_mesh
 from ._preview import render_preview, save_preview
 from ._sample import pack
-from ._walk import local_map, locate
+from ._walk import chart, local_map, locate
 
 __all__ = [
+    "chart",
     "MESH_FORMATS",
     "OrientationField",
     "SURFACE_COLUMNS",

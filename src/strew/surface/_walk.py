@@ -13,6 +13,7 @@ not use it yet.
 
 from __future__ import annotations
 
+import hashlib
 import weakref
 from typing import Any
 
@@ -22,10 +23,19 @@ from .._errors import InputError
 from ._deps import require
 from ._field import OrientationField
 
-__all__ = ["local_map", "locate"]
+__all__ = ["local_map", "locate", "chart"]
 
 # one geodesic tracer per mesh object (building it costs about as much as 1,000 walks)
-_TRACERS: "weakref.WeakKeyDictionary[Any, tuple[str, Any]]" = weakref.WeakKeyDictionary()
+_TRACERS: "weakref.WeakKeyDictionary[Any, tuple[bytes, Any]]" = weakref.WeakKeyDictionary()
+_SOLVERS: "weakref.WeakKeyDictionary[Any, tuple[bytes, Any]]" = weakref.WeakKeyDictionary()
+
+
+def _mesh_key(mesh: Any) -> bytes:
+    """A digest of the vertices and faces: cached solvers are rebuilt when they change."""
+    h = hashlib.blake2b(digest_size=16)
+    h.update(np.ascontiguousarray(mesh.vertices, dtype=np.float64).tobytes())
+    h.update(np.ascontiguousarray(mesh.faces, dtype=np.int64).tobytes())
+    return h.digest()
 
 
 def locate(mesh: Any, points: np.ndarray, k: int = 12) -> tuple[np.ndarray, np.ndarray]:
@@ -111,7 +121,7 @@ def local_map(
     n /= np.linalg.norm(n)
     t = field.at(np.array([face]), b0[None], n[None])[0]
     b = np.cross(n, t)
-    key = mesh.identifier_hash  # trimesh recomputes it when the mesh changes
+    key = _mesh_key(mesh)
     cached = _TRACERS.get(mesh)
     if cached is None or cached[0] != key:
         cached = (key, pp3d.GeodesicTracer(np.ascontiguousarray(V, dtype=np.float64), np.ascontiguousarray(F, dtype=np.int64)))
@@ -127,3 +137,74 @@ def local_map(
         out[i] = tracer.trace_geodesic_from_face(int(face), b0, d)[-1]
     faces, bc = locate(mesh, out)
     return out, faces, bc
+
+
+def chart(arr: Any, mesh: Any, center: Any, radius: float) -> Any:
+    """The elements within geodesic distance ``radius`` of ``center`` in a flat chart.
+
+    The chart is the logarithmic map at the mesh vertex nearest ``center`` (potpourri3d's
+    vector heat method): each element's position becomes its geodesic polar coordinates,
+    as ``(u, -v)`` in the vertex's tangent basis so that shapes keep their handedness
+    (see :mod:`._frames`), and its rotation is its tangent's direction in the chart. With
+    it, 2D measures (``strew.metrics.fidelity``) apply in the tangent plane (issue 20
+    point 8).
+
+    Parameters
+    ----------
+    arr : Arrangement
+        A surface arrangement on ``mesh`` (with its ``face`` column).
+    mesh : trimesh.Trimesh
+    center : (3,) float
+    radius : float
+        Geodesic radius of the chart; keep it well inside the cut locus of ``center``.
+
+    Returns
+    -------
+    Arrangement
+        2D, with the disc of ``radius`` about the origin as its region.
+    """
+    import shapely
+
+    from ..arrangement import Arrangement
+    from ..region import Region
+
+    pp3d = require("potpourri3d")
+    if "face" not in arr.columns:
+        raise InputError("elements.face: missing column (a surface arrangement made by strew.surface.pack)")
+    try:
+        radius = float(radius)
+    except (TypeError, ValueError):
+        raise InputError(f"radius: must be a number, got {radius!r}") from None
+    if not np.isfinite(radius) or radius <= 0:
+        raise InputError(f"radius: must be positive, got {radius!r}")
+    c = np.asarray(center, dtype=float).reshape(-1)
+    if c.shape != (3,) or not np.all(np.isfinite(c)):
+        raise InputError("center: must be a finite 3D point")
+    V = np.asarray(mesh.vertices, dtype=np.float64)
+    F = np.asarray(mesh.faces, dtype=np.int64)
+    v0 = int(np.argmin(np.linalg.norm(V - c, axis=1)))
+    key = _mesh_key(mesh)
+    cached = _SOLVERS.get(mesh)
+    if cached is None or cached[0] != key:
+        cached = (key, pp3d.MeshVectorHeatSolver(np.ascontiguousarray(V), np.ascontiguousarray(F)))
+        _SOLVERS[mesh] = cached
+    log = np.asarray(cached[1].compute_log_map(v0))
+    log[:, 1] *= -1.0  # (u, -v): y-down like the exemplar space
+    f = np.asarray(arr.columns["face"], dtype=np.int64)
+    p = np.column_stack([arr.x, arr.y, arr.columns["z"]])
+    tri = V[F[f]]
+    trimesh = require("trimesh")
+    bary = trimesh.triangles.points_to_barycentric(tri, p)
+    uv = np.einsum("ik,ikj->ij", bary, log[F[f]])
+    # the tangent through each face's affine chart map: t = E a, chart vector = L a
+    E = np.stack([tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]], axis=2)  # (m, 3, 2)
+    Lm = np.stack([log[F[f, 1]] - log[F[f, 0]], log[F[f, 2]] - log[F[f, 0]]], axis=2)  # (m, 2, 2)
+    t = np.column_stack([arr.columns["tx"], arr.columns["ty"], arr.columns["tz"]])
+    a = np.linalg.solve(np.einsum("mji,mjk->mik", E, E), np.einsum("mji,mj->mi", E, t)[..., None])[..., 0]
+    tv = np.einsum("mij,mj->mi", Lm, a)
+    keep = np.hypot(uv[:, 0], uv[:, 1]) < radius
+    return Arrangement(
+        arr.shapes, np.asarray(arr.kind)[keep], uv[keep, 0], uv[keep, 1], np.arctan2(tv[keep, 1], tv[keep, 0]),
+        np.asarray(arr.scale)[keep], region=Region(shapely.Point(0.0, 0.0).buffer(radius, quad_segs=32)),
+        meta={"chart": {"vertex": v0, "radius": radius}},
+    )
