@@ -181,7 +181,7 @@ class _Grower:
         # less its spread below the median, at least pair_short. The rule for one kind
         # applies to the hubs of clustered exemplars
         # (``own_kind_close``) and, in fixed mode, to kinds whose nearest distances spread
-        # by 5% of their median or more: in rotation mode each element's turn moves its
+        # by 5% of their median or more or exceed 1.2 l: in rotation mode each element's turn moves its
         # ring, and near-perfect lattices gain nothing from it (bricks in rotation mode
         # and scales grew less regular rows: regularity 0.044 -> 0.054, 0.046 -> 0.055).
         # (§5.4 (b) merges only within l_short, half the shortest edge: sparse kinds such
@@ -194,11 +194,16 @@ class _Grower:
             m = dist_to[k2][k1]
             if len(m) >= 3:
                 lo, med = float(m.min()), float(np.median(m))
-                # one kind: in fixed mode, where its distances spread (not a lattice)
-                own = p.own_kind_close if p.own_kind_close is not None else (p.mode == "fixed" and med - lo >= 0.05 * med)
+                # one kind: in fixed mode, where its distances spread (not a lattice) or
+                # its elements lie farther apart than the rings' edges (sparse apples
+                # among voids, drawn as saturated discs, came to half their distance)
+                own = p.own_kind_close if p.own_kind_close is not None else (p.mode == "fixed" and (med - lo >= 0.05 * med or lo >= 1.2 * self.l))
                 if k1 == k2 and not own:
                     continue
-                self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - (med - lo))
+                spread = med - lo
+                if k1 == k2 and p.own_kind_close is None:
+                    spread = max(spread, 0.05 * lo)  # saturated discs have almost none
+                self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - spread)
         self.pair_close = np.maximum(self.pair_close, self.pair_close.T)
         self.pair_close_max = self.pair_close.max(axis=1)
         # a kind "leans" on larger ones when every element of it in the reference has a
