@@ -202,3 +202,24 @@ def test_bounds_test_agrees_with_the_exact_outlines(scene):
     if s.boundary_strokes:
         expected |= shapely.intersects(arr.geometry, shapely.MultiLineString(s.boundary_strokes))
     assert s._out_of_bounds(arr).tolist() == expected.tolist()
+
+
+def test_pen_pressure_scales_the_brush_density(tmp_path):
+    line = [(40.0 + 20 * i, 150.0) for i in range(17)]
+
+    def paint(pressure):
+        s = _session(tmp_path, example="tiles.svg")
+        extra = {} if pressure is None else {"pressure": pressure}
+        s.handle({"type": "stroke_start", "tool": "brush", "radius": 60.0, "points": [list(line[0])], **extra})
+        for p in line[1:]:
+            s.handle({"type": "stroke_move", "points": [list(p)], **extra})
+        end = s.handle({"type": "stroke_end"})[-1]["count"]
+        assert end == _saved_count(s, tmp_path)
+        return end
+
+    mouse, full, light = paint(None), paint(1.0), paint(0.35)
+    assert full == mouse > 40  # full pressure is the mouse's stroke
+    assert 0.15 * full < light < 0.6 * full
+    s = _session(tmp_path)
+    with pytest.raises(InputError, match="pressure"):
+        s.handle({"type": "stroke_start", "tool": "brush", "radius": 10.0, "points": [[5.0, 5.0]], "pressure": 1.5})

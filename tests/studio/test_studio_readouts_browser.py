@@ -215,6 +215,27 @@ def test_clip_boundary_density_and_layers(page):
     thin = stroke(340.0)
     assert full > 10 and thin < 0.7 * full
 
+    # a pen's pressure scales the density (synthetic pen events, as a tablet sends them)
+    page.evaluate("(() => { const d = document.getElementById('density'); d.value = 1; d.dispatchEvent(new Event('input')); d.dispatchEvent(new Event('change')); })()")
+    page.wait_for_function("window.studio.pending.size === 0")
+    n0 = page.evaluate("window.studio.scene.n")
+    start = len(page.evaluate("window.studio.messages"))
+    screen = [list(_screen(page, 300.0 + 30 * i, 140.0)) for i in range(9)]
+    page.evaluate(
+        """async (pts) => {
+        const c = document.getElementById('scene');
+        const ev = (type, p) => c.dispatchEvent(new PointerEvent(type, {clientX: p[0], clientY: p[1], button: 0, buttons: 1, pointerId: 7, pointerType: 'pen', pressure: 0.3, bubbles: true}));
+        ev('pointerdown', pts[0]);
+        for (const p of pts.slice(1)) { await new Promise(r => requestAnimationFrame(r)); ev('pointermove', p); }
+        ev('pointerup', pts[pts.length - 1]);
+    }""",
+        screen,
+    )
+    _wait_message(page, "brush:", start)
+    page.wait_for_function("window.studio.pending.size === 0")
+    pen = page.evaluate("window.studio.scene.n") - n0
+    assert 0 < pen < 0.7 * full
+
     # layers: one per kind, hide (nothing drawn), lock (the eraser keeps it), reorder
     page.wait_for_function("window.studio.layers.length > 0")
     names = [e.get_attribute("data-name") for e in page.query_selector_all("#layers li")]

@@ -21,8 +21,10 @@ Browser -> server (coordinates are world units, ``points`` is ``[[x, y], ...]``)
 ``palette_flip``       ``exemplar, i, j``: flip a connectivity edge (Ijiri Fig. 3)
 ``palette_from_scene`` ``name`` and optional lasso ``points``
 ``stroke_start``       ``tool`` (brush, spray, erase, flow, boundary, region), ``radius``,
-                       ``points``; ``target``: scene or palette (with ``exemplar``)
-``stroke_move``        ``points``: the next segment (results stream back at once)
+                       ``points``; ``target``: scene or palette (with ``exemplar``);
+                       ``pressure`` (0-1, a pen's): scales the brush density
+``stroke_move``        ``points``: the next segment (results stream back at once);
+                       ``pressure`` as above
 ``stroke_end``         optional last ``points``
 ``fill``               ``point``: ``[[x, y]]``; ``stop`` ends it early
 ``region``             ``size``: ``[w, h]``, or ``points``: an outline

@@ -352,7 +352,7 @@ class Session:
         idx = np.arange(n0, st.n)
         hide = self._out_of_bounds(_state_part(st, idx))
         op = self._op
-        if thinned and op is not None and op.get("density", 1.0) < 1.0:
+        if thinned and op is not None and (op.get("density", 1.0) < 1.0 or op.get("pen")):
             hide |= (st._born[idx] >= op["it0"]) | np.isin(_element_keys(st, idx), op["dropped"])
         return hide
 
@@ -368,11 +368,13 @@ class Session:
         along the stroke does not fill the gaps again.
         """
         op, st = self._op, self.state
-        if op is None or st is None or op.get("density", 1.0) >= 1.0:
+        if op is None or st is None or not (op.get("density", 1.0) < 1.0 or op.get("pen")):
             return
+        # a pen's pressure scales the density of what its segment grew
+        keep = op["density"] * (self.stroke.get("pressure", 1.0) if self.stroke is not None else 1.0)
         idx = np.arange(op["n0"], st.n)
         new = idx[st._born[idx] >= op["it0"]]
-        drop = self.rng.random(len(new)) >= op["density"]
+        drop = self.rng.random(len(new)) >= keep
         op["dropped"] = np.union1d(op["dropped"], _element_keys(st, new[drop]))
         op["it0"] = st.iterations + 1  # growth iterations count up before they add
 
@@ -1025,6 +1027,8 @@ class Session:
         radius = get_number(msg, "radius", default=30.0, lo=1e-3, hi=1e6)
         pts = get_points(msg)
         stroke = {"tool": tool, "target": target, "radius": radius, "points": [pts], "added": 0, "compute": 0.0, "t0": time.perf_counter()}
+        if "pressure" in msg:  # a pen: its pressure scales the brush density (see _thin)
+            stroke["pressure"] = get_number(msg, "pressure", lo=0.0, hi=1.0)
         if target == "palette":
             if tool != "brush":
                 raise InputError("target palette: only the generative brush paints into the palette")
@@ -1070,6 +1074,8 @@ class Session:
         if self.stroke is None:
             raise InputError("stroke_move: no stroke in progress (send stroke_start first)")
         pts = get_points(msg)
+        if "pressure" in msg and "pressure" in self.stroke:
+            self.stroke["pressure"] = get_number(msg, "pressure", lo=0.0, hi=1.0)
         self.stroke["points"].append(pts)
         return self._apply_segment(pts)
 
@@ -1191,7 +1197,7 @@ class Session:
         try:
             if "n_before" not in stroke:
                 stroke["n_before"] = st.n
-                self._op = {"n0": st.n, "density": self.brush_density, "it0": st.iterations, "dropped": np.zeros(0, np.int64)}
+                self._op = {"n0": st.n, "density": self.brush_density, "pen": "pressure" in stroke, "it0": st.iterations, "dropped": np.zeros(0, np.int64)}
                 near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(pts[0], r=radius)) > 0
                 if not near:
                     # §5.4: "If there are no elements near the first brush-point, a random patch

@@ -304,8 +304,11 @@ const r3 = (p) => [Math.round(p[0] * 1000) / 1000, Math.round(p[1] * 1000) / 100
 function flush() {
   flushQueued = false;
   if (!studio.live || !buffer.length) return;
-  send({ type: "stroke_move", points: buffer }); buffer = [];
+  const msg = { type: "stroke_move", points: buffer };
+  if (penPressure !== null) msg.pressure = penPressure;  // a pen scales the brush density
+  send(msg); buffer = [];
 }
+let penPressure = null;  // the pen's pressure during a stroke (null for a mouse or touch)
 canvas.addEventListener("pointerdown", (ev) => {
   canvas.focus();
   const p = r3(eventWorld(ev));
@@ -320,7 +323,10 @@ canvas.addEventListener("pointerdown", (ev) => {
   const st = studio.stats;
   Object.assign(st, { strokeStart: performance.now(), countAtStart: studio.scene.n, firstFrame: null, lastFrame: null, added: 0, rate: null, pendingArrival: false, tracking: true });
   buffer = [];
-  send({ type: "stroke_start", tool: studio.tool, radius: radius(), points: [p] });
+  penPressure = ev.pointerType === "pen" ? Math.min(1, Math.max(0, ev.pressure)) : null;
+  const start = { type: "stroke_start", tool: studio.tool, radius: radius(), points: [p] };
+  if (penPressure !== null) start.pressure = penPressure;
+  send(start);
   dirty();
 });
 canvas.addEventListener("pointermove", (ev) => {
@@ -331,6 +337,7 @@ canvas.addEventListener("pointermove", (ev) => {
     dirty(); return;
   }
   if (studio.live) {
+    if (penPressure !== null) penPressure = Math.min(1, Math.max(0, ev.pressure));
     const p = r3(studio.cursor);
     const last = studio.live.points[studio.live.points.length - 1];
     if (Math.hypot(p[0] - last[0], p[1] - last[1]) * studio.view.zoom < 2) { dirty(); return; }
