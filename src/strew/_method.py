@@ -610,8 +610,8 @@ def names_to_flags(spec: MethodSpec, message: str) -> str:
         for sep in (":", " ", "["):
             if message.startswith(p.name + sep):
                 return p.cli_flag + message[len(p.name):]
-    for word, flag in (("region:", "--region or --size:"), ("context:", "--around:"), ("rng:", "--seed:")):
-        if message.startswith(word):
+    for word, flag in (("region", "--region or --size"), ("context", "--around"), ("rng", "--seed")):
+        if message.startswith((word + ":", word + " ")):
             return flag + message[len(word):]
     return message
 

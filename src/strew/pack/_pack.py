@@ -333,7 +333,7 @@ def _pack_into(
 
     check_work("candidates", extra_bytes=256.0 * p_count)  # each round's candidate arrays
     check_work("max_failures", trials=limit)
-    check_work("--size/--region with these shapes and --scale", region=dom, per_element=min(k.area * k.scale[0] ** 2 for k in kinds))
+    check_work("region (with these shapes and scale)", region=dom, per_element=min(k.area * k.scale[0] ** 2 for k in kinds))
     k_sparse = _positive_int(sparse_candidates, "sparse_candidates")
     try:
         power = float(power)
