@@ -489,7 +489,20 @@ def _newton3(px, py, rho, circ, segs):
     d = np.empty(n)
     for k in range(n):
         d[k] = _nearest_on(px, py, circ, segs, k)[0]
-    idx = np.argsort(d)[:3]
+    # the three nearest, as np.argsort(d)[:3] orders them (ties: the lower index first),
+    # by one pass: argsort brought numba's quicksort in, about 1 s of CPU to compile (issue 16)
+    idx = np.full(3, -1, dtype=np.int64)
+    for k in range(n):
+        v = d[k]
+        if idx[0] < 0 or v < d[idx[0]]:
+            idx[2] = idx[1]
+            idx[1] = idx[0]
+            idx[0] = k
+        elif idx[1] < 0 or v < d[idx[1]]:
+            idx[2] = idx[1]
+            idx[1] = k
+        elif idx[2] < 0 or v < d[idx[2]]:
+            idx[2] = k
     three = np.full(1, 3, dtype=np.int32)  # n, lda, ldb
     one = np.ones(1, dtype=np.int32)  # nrhs
     info = np.zeros(1, dtype=np.int32)
