@@ -38,6 +38,8 @@ def _region(ex, scale=2.2):
         ("two_sizes", "fixed"),
         ("clusters", "fixed"),
         ("rings", "fixed"),
+        ("stripes", "fixed"),
+        ("sparse_voids", "fixed"),
         ("rows_noisy", "rotate"),
         ("bricks", "rotate"),
         ("scales", "rotate"),
@@ -315,3 +317,18 @@ def test_priority_changes_which_kind_grows_first_and_fills():
         assert (names == then).sum() >= 0.1 * len(out)
         assert cKDTree(out.xy).query(g)[0].max() <= 1.3 * ex_gap
     assert lead["stone"] >= lead["pebble"] + 0.3
+
+
+@pytest.mark.slow
+def test_sparse_apples_keep_their_distance_in_a_variant_nobody_tuned_on():
+    # saturated sparse discs: the reference never has two apples closer than about 30;
+    # Fig. 6 (b)'s l_short let them come to 13-19 (nn[apple>apple] failed)
+    ex = make_exemplar("sparse_voids", rng=1)
+    out = grow(ex, region=_region(ex), rng=1)
+    rep = fidelity(ex, out, eq5=False, local=False)
+    assert rep.faithful, rep.failures
+    a = out.xy[np.asarray(out.kind_names) == "apple"]
+    e = ex.xy[np.asarray(ex.kind_names) == "apple"]
+    d_out = cKDTree(a).query(a, 2)[0][:, 1].min()
+    d_ex = cKDTree(e).query(e, 2)[0][:, 1].min()
+    assert d_out >= 0.8 * d_ex  # (relaxation moves elements a little after placement)
