@@ -318,9 +318,12 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
         if run.region is None and spec.region_required:
             raise InputError("give --region FILE or --size WxH")
         fn = spec.function()
+        label = spec.progress_message or spec.name
+        if spec.name == "pack" and run.values.get("method") == "naive":
+            label += " (naive)"  # dart throwing compiles no kernel: no compile notice (issue 16)
         t0 = time.perf_counter()
         try:
-            with warnings.catch_warnings(record=True) as caught, progress_bar(spec.progress_message or spec.name, quiet=quiet) as (prog, cancel):
+            with warnings.catch_warnings(record=True) as caught, progress_bar(label, quiet=quiet) as (prog, cancel):
                 warnings.simplefilter("always")
                 arr = fn(run.input, run.region, context=run.context, rng=seed, progress=prog, should_cancel=cancel, **run.values)
         except InputError as exc:  # the library names Python parameters; answer with flags
