@@ -806,22 +806,22 @@ def _disc_hits(pts, pr, centers, cr, strict):
     return out
 
 
-@numba.njit(cache=True, nogil=True)
+# The three front ends of _disc_hits are plain Python: as compiled wrappers each cost a
+# compile of its own on a first run (about a second of CPU each, for a one-line body;
+# issue 16), and they are only called from Python.
 def overlaps_any(pts, pr, centers, cr):
     """(n,) bool: is ``|pts[i] - centers[j]| < max(pr[i], cr[j])`` for some j."""
-    return _disc_hits(pts, pr, centers, cr, np.bool_(True))
+    return _disc_hits(pts, pr, centers, cr, True)
 
 
-@numba.njit(cache=True, nogil=True)
 def in_discs(pts, centers, radii):
     """(n,) bool: which ``pts`` lie in some disc ``(centers[j], radii[j])``."""
-    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, radii, np.bool_(False))
+    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, radii, False)
 
 
-@numba.njit(cache=True, nogil=True)
 def near_any(pts, centers, reach):
     """(n,) bool: which ``pts`` lie within ``reach`` of some point of ``centers``."""
-    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, np.full(centers.shape[0], float(reach)), np.bool_(False))
+    return _disc_hits(pts, np.zeros(pts.shape[0]), centers, np.full(centers.shape[0], float(reach)), False)
 
 
 @numba.njit(cache=True, nogil=True)
