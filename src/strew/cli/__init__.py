@@ -33,6 +33,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "grow": ("strew.cli.grow", "Grow from an exemplar, element by element, from one seed (Ijiri et al.)."),
     "studio": ("strew.cli.studio", "Paint with example palettes in the browser (brush, spray, filler, eraser)."),
     "synth": ("strew.cli.synth", "Synthesize a texture from exemplars by fast region growing (Davison et al.)."),
+    "world": ("strew.cli.world", "Fill a world too large for one process, tile by tile on Dask (Parquet, PNG overview)."),
     "rerun": ("strew.cli.rerun", "Repeat the command recorded in an output's meta and check it byte for byte."),
 }
 

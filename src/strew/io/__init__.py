@@ -74,6 +74,10 @@ def load(path: str | os.PathLike[str], **kwargs: Any) -> Arrangement:
 
     SVG is read as an exemplar (see :func:`strew.io.svg.read_svg`); ``kwargs`` go there.
     """
+    if str(path).lower().endswith(".parquet") and Path(path).is_dir():  # issue 19: a world
+        from ._parquet import load_parquet
+
+        return load_parquet(path)
     suffix = _suffix(path, INPUT_FORMATS, "input")
     if suffix == ".json":
         from .document import loads

@@ -1,0 +1,174 @@
+"""Worlds as partitioned Parquet datasets (issue 19 point 3), through pyarrow.
+
+A dataset is a folder: ``part-NNNNNN.parquet`` per tile (columns ``tile`` int32,
+``kind`` dictionary<string>, ``x``, ``y``, ``rotation``, ``scale`` float64 and the
+arrangement's numeric extra columns) and ``_common_metadata``, whose schema metadata
+holds ``strew`` = JSON ``{"shapes": {name: shape}, "meta": {...}, "region": ...}``.
+pandas (``pd.read_parquet(folder)``), DuckDB (``read_parquet('folder/*.parquet')``) and
+GeoPandas-by-way-of-pandas read it as it is; :func:`iter_parquet_tiles` streams it back
+as arrangements, one tile at a time.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Iterator, Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .._errors import InputError
+
+__all__ = ["ParquetWriter", "iter_parquet_tiles", "parquet_info", "load_parquet", "is_dataset", "LOAD_LIMIT"]
+
+#: largest dataset :func:`load_parquet` reads into one Arrangement
+LOAD_LIMIT = 2_000_000
+
+_HINT = "pip install 'strew[distributed]'"
+_CORE = ("x", "y", "rotation", "scale")
+
+
+def _pa() -> Any:
+    try:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+    except ImportError:
+        raise InputError(f"--out: writing Parquet needs pyarrow: {_HINT}") from None
+    return pa, pq
+
+
+def is_dataset(path: str | os.PathLike[str]) -> bool:
+    """Whether ``path`` is a strew Parquet dataset folder."""
+    p = Path(path)
+    return p.is_dir() and (p / "_common_metadata").is_file()
+
+
+class ParquetWriter:
+    """Writes one file per tile into ``folder``; :meth:`close` writes the metadata.
+
+    Parameters
+    ----------
+    folder : path
+        Created if missing; an existing dataset's part files are replaced.
+    """
+
+    def __init__(self, folder: str | os.PathLike[str]) -> None:
+        self.pa, self.pq = _pa()
+        self.folder = Path(folder)
+        if self.folder.exists() and not self.folder.is_dir():
+            raise InputError(f"--out: {self.folder} exists and is not a folder")
+        self.folder.mkdir(parents=True, exist_ok=True)
+        for old in self.folder.glob("part-*.parquet"):
+            old.unlink()
+        self.kinds: list[str] | None = None
+        self.extra: dict[str, Any] = {}
+
+    def _schema(self) -> Any:
+        pa = self.pa
+        fields = [pa.field("tile", pa.int32()), pa.field("kind", pa.dictionary(pa.int32(), pa.string()))]
+        fields += [pa.field(c, pa.float64()) for c in _CORE]
+        fields += [pa.field(c, t) for c, t in sorted(self.extra.items())]
+        return pa.schema(fields)
+
+    def write(self, index: int, arr: Any) -> None:
+        """Write tile ``index`` (an Arrangement; numeric extra columns are kept)."""
+        pa, pq = self.pa, self.pq
+        if self.kinds is None:
+            self.kinds = list(arr.shapes)
+        kinds = self.kinds
+        if list(arr.shapes) != kinds:
+            raise InputError(f"tile {index}: its kinds {list(arr.shapes)} differ from the dataset's {kinds}")
+        cols: dict[str, Any] = {
+            "tile": pa.array(np.full(len(arr), index, np.int32)),
+            "kind": pa.DictionaryArray.from_arrays(pa.array(arr.kind.astype(np.int32)), pa.array(kinds, pa.string())),
+        }
+        for c in _CORE:
+            cols[c] = pa.array(np.asarray(getattr(arr, c), np.float64))
+        for c, v in arr.columns.items():
+            if c == "tile" or v.dtype.kind not in "biuf":
+                continue  # strings and objects (parts) do not go to Parquet
+            cols[c] = pa.array(np.asarray(v))
+            self.extra.setdefault(c, cols[c].type)
+        table = pa.table(cols)
+        pq.write_table(table, self.folder / f"part-{index:06d}.parquet", compression="zstd")
+
+    def close(self, shapes: Mapping[str, Any], meta: Mapping[str, Any], region: Any = None) -> Path:
+        """Write ``_common_metadata`` (shapes, meta, region) and return the folder."""
+        doc = {
+            "format": "strew-parquet-1",
+            "shapes": {k: s.to_dict() for k, s in shapes.items()},
+            "meta": dict(meta),
+            "region": region.to_dict() if region is not None else None,
+        }
+        text = json.dumps(doc, sort_keys=True, default=str)
+        schema = self._schema().with_metadata({"strew": text})
+        self.pq.write_metadata(schema, self.folder / "_common_metadata")
+        return self.folder
+
+
+def _doc(folder: Path) -> dict[str, Any]:
+    _, pq = _pa()
+    if not is_dataset(folder):
+        raise InputError(f"{folder}: not a strew Parquet dataset (no _common_metadata)")
+    md = pq.read_schema(folder / "_common_metadata").metadata or {}
+    if b"strew" not in md:
+        raise InputError(f"{folder.name}: its _common_metadata holds no strew entry")
+    return json.loads(md[b"strew"])
+
+
+def parquet_info(folder: str | os.PathLike[str]) -> dict[str, Any]:
+    """Shapes, meta, element and tile counts, read from the footers only (no element data).
+
+    Returns
+    -------
+    dict
+        ``{"shapes": {...}, "meta": {...}, "region": ..., "elements": n, "tiles": k}``.
+    """
+    _, pq = _pa()
+    folder = Path(folder)
+    doc = _doc(folder)
+    parts = sorted(folder.glob("part-*.parquet"))
+    doc["elements"] = int(sum(pq.ParquetFile(p).metadata.num_rows for p in parts))
+    doc["tiles"] = len(parts)
+    return doc
+
+
+def iter_parquet_tiles(folder: str | os.PathLike[str]) -> Iterator[Any]:
+    """The dataset's tiles as Arrangements, one file at a time, in tile order."""
+    from ..arrangement import Arrangement
+    from ..shape import Shape
+
+    _, pq = _pa()
+    folder = Path(folder)
+    doc = _doc(folder)
+    shapes = {k: Shape.from_dict(v) for k, v in doc["shapes"].items()}
+    names = list(shapes)
+    for p in sorted(folder.glob("part-*.parquet")):
+        t = pq.read_table(p)
+        kind = t.column("kind").combine_chunks()
+        lookup = np.array([names.index(k) for k in kind.dictionary.to_pylist()], np.int64) if len(kind.dictionary) else np.zeros(0, np.int64)
+        idx = lookup[kind.indices.to_numpy(zero_copy_only=False)] if len(t) else np.zeros(0, np.int64)
+        extra = {c: t.column(c).to_numpy() for c in t.column_names if c not in ("kind", *_CORE)}
+        yield Arrangement(shapes, idx, *(t.column(c).to_numpy() for c in _CORE), columns=extra)
+
+
+def load_parquet(folder: str | os.PathLike[str], *, max_elements: int = LOAD_LIMIT) -> Any:
+    """The whole dataset as one Arrangement, if it holds at most ``max_elements``."""
+    from ..arrangement import concat
+    from ..region import Region
+
+    info = parquet_info(folder)
+    if info["elements"] > max_elements:
+        raise InputError(f"{Path(folder).name}: {info['elements']:,} elements is too many to load whole "
+                         f"(limit {max_elements:,}); stream it with strew.io.iter_parquet_tiles or read it with pandas/DuckDB")
+    region = Region.from_dict(info["region"]) if info.get("region") else None
+    tiles = [a for a in iter_parquet_tiles(folder) if len(a)]
+    if not tiles:
+        from ..arrangement import Arrangement
+        from ..shape import Shape
+
+        shapes = {k: Shape.from_dict(v) for k, v in info["shapes"].items()}
+        return Arrangement(shapes, [], [], [], region=region, meta=info["meta"])
+    return concat(tiles).replace(region=region, meta=info["meta"])

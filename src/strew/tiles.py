@@ -1,0 +1,449 @@
+"""Tiled synthesis of worlds too large for one process (issue 19).
+
+A rectangular world ``[0, W] x [0, H]`` is cut into square tiles of side ``tile_size``.
+Following Wei's parallel Poisson disk sampling (SIGGRAPH 2008, §3 "phase groups"), the
+tiles are coloured in a 2 x 2 pattern: tile ``(i, j)`` has phase ``(j % 2) * 2 + i % 2``.
+Two tiles of one phase are a whole tile apart, so they never share a border zone and
+can run at once. A tile runs the method (any method of the contract in
+:mod:`strew._method`) on its rectangle grown by ``halo`` (clipped to the world), with
+the finished elements of its lower-phase neighbours near it as ``context``; it keeps the
+elements whose centre lies in its own half-open rectangle ``[x0, x1) x [y0, y1)``.
+
+Departure from Wei §3: Wei runs the phases as global barriers (all of phase 0, then all
+of phase 1, ...). Here a tile waits only for its (up to 8) lower-phase neighbours, a
+task graph rather than barriers; the inputs of each tile are the same, so the result is
+the same, and a slow tile holds back only its neighbours.
+
+Each tile draws from ``SeedSequence(seed, spawn_key=(tile_index,))`` (the same as
+``SeedSequence(seed).spawn(n)[tile_index]``): a tile's result depends only on the seed,
+its index and its neighbours' results, so the world is byte-identical whatever the
+number of workers or the order in which tiles finish.
+
+Runners: :func:`world` runs in-process (``workers=1`` or dask missing) or on Dask
+(``workers=N`` starts a ``dask.distributed.LocalCluster``; ``scheduler="tcp://..."``
+uses an existing cluster). Dask and pyarrow come with ``pip install 'strew[distributed]'``.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ._errors import InputError
+
+__all__ = ["Tile", "plan", "world", "tiled", "WorldInfo", "tile_rng", "DISTRIBUTED_HINT"]
+
+DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
+
+# methods whose result is a stationary texture that tiles (issue 19 point 1)
+TILED_METHODS = ("pack", "synth", "ornament")
+
+
+@dataclass(frozen=True)
+class Tile:
+    """One tile of a world.
+
+    Attributes
+    ----------
+    index : int
+        Row-major index ``j * nx + i``.
+    i, j : int
+        Column and row.
+    rect : (4,) tuple of float
+        ``(x0, y0, x1, y1)``; the tile owns the centres in ``[x0, x1) x [y0, y1)``
+        (the world's last column and row also own their far edge).
+    phase : int
+        ``(j % 2) * 2 + i % 2``: tiles of one phase never share a border zone.
+    """
+
+    index: int
+    i: int
+    j: int
+    rect: tuple[float, float, float, float]
+    phase: int
+
+
+def plan(size: tuple[float, float], tile_size: float) -> tuple[list[Tile], int, int]:
+    """The tiles of a ``size = (W, H)`` world, row-major, and the grid ``(nx, ny)``.
+
+    The last column and row are narrower when ``tile_size`` does not divide the size.
+    """
+    w, h = (float(size[0]), float(size[1]))
+    if not (math.isfinite(w) and math.isfinite(h) and w > 0 and h > 0):
+        raise InputError(f"size: must be positive, got {size!r}")
+    t = float(tile_size)
+    if not (math.isfinite(t) and t > 0):
+        raise InputError(f"tile_size: must be positive, got {tile_size!r}")
+    nx, ny = max(1, math.ceil(w / t - 1e-9)), max(1, math.ceil(h / t - 1e-9))
+    tiles = []
+    for j in range(ny):
+        for i in range(nx):
+            rect = (i * t, j * t, min(w, (i + 1) * t), min(h, (j + 1) * t))
+            tiles.append(Tile(j * nx + i, i, j, rect, (j % 2) * 2 + i % 2))
+    return tiles, nx, ny
+
+
+def tile_rng(seed: int, index: int) -> np.random.Generator:
+    """The Generator of tile ``index``: ``SeedSequence(seed, spawn_key=(index,))``."""
+    return np.random.Generator(np.random.PCG64(np.random.SeedSequence(int(seed), spawn_key=(int(index),))))
+
+
+def _neighbours(t: Tile, nx: int, ny: int) -> list[int]:
+    """Indices of the lower-phase tiles among the 8 around ``t`` (its dependencies)."""
+    out = []
+    for dj in (-1, 0, 1):
+        for di in (-1, 0, 1):
+            i, j = t.i + di, t.j + dj
+            if (di or dj) and 0 <= i < nx and 0 <= j < ny:
+                phase = (j % 2) * 2 + i % 2
+                if phase < t.phase:
+                    out.append(j * nx + i)
+    return sorted(out)
+
+
+def _grow(rect: tuple[float, float, float, float], d: float, size: tuple[float, float]) -> tuple[float, float, float, float]:
+    x0, y0, x1, y1 = rect
+    return (max(0.0, x0 - d), max(0.0, y0 - d), min(size[0], x1 + d), min(size[1], y1 + d))
+
+
+def _owned(arr: Any, t: Tile, size: tuple[float, float]) -> np.ndarray:
+    """Mask of the elements whose centre ``t`` owns (half-open, far world edges closed)."""
+    x0, y0, x1, y1 = t.rect
+    x, y = arr.x, arr.y
+    right = (x < x1) | ((x1 >= size[0]) & (x <= x1))
+    top = (y < y1) | ((y1 >= size[1]) & (y <= y1))
+    return (x >= x0) & (y >= y0) & right & top
+
+
+def _near(arr: Any, rect: tuple[float, float, float, float]) -> np.ndarray:
+    x0, y0, x1, y1 = rect
+    return (arr.x >= x0) & (arr.x <= x1) & (arr.y >= y0) & (arr.y <= y1)
+
+
+@dataclass(frozen=True)
+class _Job:
+    """What every tile task needs (sent once to each worker)."""
+
+    method: str
+    input: Any
+    params: dict[str, Any]
+    size: tuple[float, float]
+    halo: float
+    seed: int
+
+
+def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
+    """Run one tile: the method on its grown rectangle around its finished neighbours.
+
+    Parameters
+    ----------
+    job : _Job
+    t : Tile
+    *neighbours : Arrangement
+        The results of :func:`_neighbours` (t), in index order.
+
+    Returns
+    -------
+    Arrangement
+        The elements whose centre ``t`` owns; ``meta`` holds only ``{"tile": index}``.
+    """
+    from ._method import spec
+    from .arrangement import concat
+    from .region import Region
+
+    fn = spec(job.method).function()
+    grown = _grow(t.rect, job.halo, job.size)
+    region = Region.rectangle(grown[2] - grown[0], grown[3] - grown[1])
+    if grown[0] or grown[1]:
+        import shapely
+
+        region = Region(shapely.box(*grown))
+    # every finished element that can touch the grown rectangle: centre within 2 halo
+    # (halo >= the element's diameter, see world())
+    window = _grow(t.rect, 2 * job.halo, job.size)
+    parts = [n.select(_near(n, window)) for n in neighbours if len(n)]
+    context = concat(parts) if parts else None
+    if context is not None and len(context) == 0:
+        context = None
+    arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **job.params)
+    arr = arr.select(_owned(arr, t, job.size))
+    return arr.replace(meta={"tile": t.index}, region=None)
+
+
+@dataclass
+class WorldInfo:
+    """What a world run made (the elements went to ``sink``).
+
+    Attributes
+    ----------
+    meta : dict
+        Provenance: method, params, seed, size, tile_size, halo, tiles, elements.
+    shapes : dict
+        The shape library (from the first tile with elements).
+    counts : (n_tiles,) int ndarray
+        Elements per tile.
+    seconds : float
+    workers : int
+    dashboard : str or None
+    """
+
+    meta: dict[str, Any]
+    shapes: dict[str, Any]
+    counts: np.ndarray
+    seconds: float
+    workers: int
+    dashboard: str | None = None
+    kinds: dict[str, int] = field(default_factory=dict)
+
+
+def _default_halo(method: str, input: Any, params: Mapping[str, Any], tile_size: float) -> float:
+    """Twice the largest element extent for pack (radius x scale + margin), a quarter
+    tile for methods whose elements are known only after the run."""
+    if method == "pack":
+        from .shape import Shape
+
+        shapes = input.values() if isinstance(input, Mapping) else (input if isinstance(input, (list, tuple)) else [input])
+        r = max((s.radius for s in shapes if isinstance(s, Shape)), default=0.0)
+        sc = params.get("scale", (1.0, 1.0))
+        hi = max((v[1] for v in sc.values()), default=1.0) if isinstance(sc, Mapping) else float(sc[1])
+        m = params.get("margin", 0.0)
+        m = max(m.values(), default=0.0) if isinstance(m, Mapping) else float(m or 0.0)
+        if r > 0:
+            return 2.0 * (r * hi + m)
+    return tile_size / 4.0
+
+
+def _connect(scheduler: str | None, workers: int, processes: bool, timeout: float) -> tuple[Any, Any]:
+    """A dask Client (and the LocalCluster it owns, or None)."""
+    try:
+        from dask.distributed import Client, LocalCluster
+    except ImportError:
+        raise InputError(f"workers: running on Dask needs dask.distributed: {DISTRIBUTED_HINT}") from None
+    if scheduler is not None:
+        try:
+            return Client(scheduler, timeout=timeout, set_as_default=False), None
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise InputError(f"scheduler: no Dask scheduler answers at {scheduler} within {timeout:g} s ({type(exc).__name__})") from None
+    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes,
+                           dashboard_address=":0" if processes else None, silence_logs=40)
+    return Client(cluster, set_as_default=False), cluster
+
+
+def world(
+    method: str,
+    input: Any,
+    size: tuple[float, float] | str,
+    *,
+    tile_size: float,
+    halo: float | None = None,
+    seed: int = 0,
+    workers: int = 1,
+    scheduler: str | None = None,
+    processes: bool = True,
+    timeout: float = 10.0,
+    sink: Callable[[int, Any], None] | None = None,
+    progress: Callable[[int, int | None, str], None] | None = None,
+    should_cancel: Callable[[], bool] | None = None,
+    on_dashboard: Callable[[str], None] | None = None,
+    **params: Any,
+) -> WorldInfo:
+    """Fill a ``size = (W, H)`` world tile by tile with ``method``.
+
+    Parameters
+    ----------
+    method : {"pack", "synth", "ornament"}
+    input : object
+        The method's input (shapes, palette, pattern), as for the method itself.
+    size : (W, H) or "WxH"
+    tile_size : float
+        Side of a tile (document units); at least twice ``halo``.
+    halo : float, optional
+        How far a tile grows into its neighbours and sees their elements
+        [default: twice the largest element extent for pack, a quarter tile otherwise].
+    seed : int
+        Tile ``k`` draws from ``SeedSequence(seed, spawn_key=(k,))``.
+    workers : int
+        1 runs in this process; N > 1 on a local Dask cluster of N single-threaded
+        workers (processes unless ``processes=False``).
+    scheduler : str, optional
+        ``"tcp://HOST:PORT"`` of a running Dask scheduler (``workers`` is then ignored).
+    timeout : float
+        Seconds to wait for ``scheduler`` before an :class:`InputError`.
+    sink : callable, optional
+        ``sink(tile_index, arrangement)``, called in this process for every finished tile
+        (in completion order). Without it the tiles are dropped (counts only).
+    progress, should_cancel : callable, optional
+        As for methods: ``progress(tiles_done, tiles, "N el/s")``.
+    on_dashboard : callable, optional
+        Called with the Dask dashboard link when a cluster is used.
+    **params
+        The method's parameters (checked by its spec).
+
+    Returns
+    -------
+    WorldInfo
+    """
+    from ._method import _jsonable, spec
+    from ._version import __version__
+
+    if method not in TILED_METHODS:
+        raise InputError(f"method: {method!r} does not tile; use one of {', '.join(TILED_METHODS)}")
+    if isinstance(size, str):
+        try:
+            w, _, h = size.lower().partition("x")
+            size = (float(w), float(h))
+        except ValueError:
+            raise InputError(f"size: expected WxH, got {size!r}") from None
+    size = (float(size[0]), float(size[1]))
+    tiles, nx, ny = plan(size, tile_size)
+    s = spec(method)
+    checked = s.validate(params)
+    params = {k: v for k, v in params.items()}
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise InputError(f"seed: must be a non-negative integer, got {seed!r}")
+    if halo is None:
+        halo = _default_halo(method, input, checked, float(tile_size))
+    if not (math.isfinite(halo) and 0 < halo <= tile_size / 2):
+        raise InputError(f"halo: must be in (0, tile_size / 2] = (0, {tile_size / 2:g}], got {halo:g} "
+                         f"(elements too large for tiles of {tile_size:g}: raise tile_size)")
+    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
+        raise InputError(f"workers: must be a positive integer, got {workers!r}")
+    job = _Job(method, input, params, size, float(halo), int(seed))
+    counts = np.zeros(len(tiles), np.int64)
+    kinds: dict[str, int] = {}
+    shapes: dict[str, Any] = {}
+    t0 = time.perf_counter()
+
+    def done(t: Tile, arr: Any, ndone: int) -> None:
+        counts[t.index] = len(arr)
+        for k, c in arr.counts().items():
+            kinds[k] = kinds.get(k, 0) + c
+        if not shapes and len(arr):
+            shapes.update(arr.shapes)
+        if sink is not None:
+            sink(t.index, arr)
+        if progress is not None:
+            rate = counts.sum() / max(time.perf_counter() - t0, 1e-9)
+            progress(ndone, len(tiles), f"{int(counts.sum()):,} elements, {rate:,.0f} el/s")
+
+    dashboard = None
+    if workers == 1 and scheduler is None:
+        nworkers = 1
+        _run_serial(job, tiles, nx, ny, done, should_cancel)
+    else:
+        client, cluster = _connect(scheduler, int(workers), processes, float(timeout))
+        try:
+            nworkers = len(client.scheduler_info(n_workers=-1)["workers"]) if scheduler else int(workers)
+            dashboard = client.dashboard_link if processes or scheduler else None
+            if dashboard and on_dashboard is not None:
+                on_dashboard(dashboard)
+            with client.as_current():
+                _run_dask(client, job, tiles, nx, ny, done, should_cancel)
+        finally:
+            client.close()
+            if cluster is not None:
+                cluster.close()
+    meta = {
+        "generator": f"strew {__version__}",
+        "method": method,
+        "seed": int(seed),
+        "params": _jsonable(checked),
+        "world": {"size": list(size), "tile_size": float(tile_size), "halo": float(halo), "grid": [nx, ny],
+                  "tiles": len(tiles), "elements": int(counts.sum()), "phases": "2x2 (Wei 2008)",
+                  "rng": "SeedSequence(seed, spawn_key=(tile,))"},
+    }
+    return WorldInfo(meta, shapes, counts, time.perf_counter() - t0, nworkers, dashboard, kinds)
+
+
+def _check_cancel(should_cancel: Callable[[], bool] | None) -> None:
+    if should_cancel is not None and should_cancel():
+        from ._progress import Cancelled
+
+        raise Cancelled("interrupted")
+
+
+def _run_serial(job: _Job, tiles: list[Tile], nx: int, ny: int, done: Callable[..., None],
+                should_cancel: Callable[[], bool] | None) -> None:
+    """Phase by phase in this process; a tile's result is kept until its last dependent ran."""
+    deps = {t.index: _neighbours(t, nx, ny) for t in tiles}
+    waiting = {t.index: 0 for t in tiles}
+    for t in tiles:
+        for d in deps[t.index]:
+            waiting[d] += 1
+    results: dict[int, Any] = {}
+    ndone = 0
+    for phase in range(4):
+        for t in tiles:
+            if t.phase != phase:
+                continue
+            _check_cancel(should_cancel)
+            arr = run_tile(job, t, *[results[d] for d in deps[t.index]])
+            for d in deps[t.index]:
+                waiting[d] -= 1
+                if waiting[d] == 0:
+                    del results[d]
+            if waiting[t.index]:
+                results[t.index] = arr
+            ndone += 1
+            done(t, arr, ndone)
+
+
+def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done: Callable[..., None],
+              should_cancel: Callable[[], bool] | None) -> None:
+    """A task per tile that depends on its lower-phase neighbours' tasks (module docstring)."""
+    from dask.distributed import as_completed
+
+    [job_f] = client.scatter([job], broadcast=True, hash=False)
+    futures: dict[int, Any] = {}
+    deps = {t.index: _neighbours(t, nx, ny) for t in tiles}
+    for phase in range(4):  # submit in phase order so that dependencies exist
+        for t in tiles:
+            if t.phase == phase:
+                futures[t.index] = client.submit(run_tile, job_f, t, *[futures[d] for d in deps[t.index]],
+                                                 key=f"strew-tile-{t.index}-{id(job)}", pure=False)
+    by_key = {futures[t.index].key: t for t in tiles}
+    ndone = 0
+    try:
+        for fut in as_completed(list(futures.values())):
+            _check_cancel(should_cancel)
+            t = by_key[fut.key]
+            arr = fut.result()
+            ndone += 1
+            done(t, arr, ndone)
+            del futures[t.index]  # the dependents hold their own references to it
+            fut.release()
+    finally:
+        for f in futures.values():
+            f.cancel()
+
+
+def tiled(method: str, input: Any, size: tuple[float, float] | str, *, tile_size: float, **kwargs: Any) -> Any:
+    """The whole world as one :class:`~strew.Arrangement` (small worlds: tests, previews).
+
+    Takes the arguments of :func:`world` (not ``sink``); ``meta`` holds the world's
+    provenance and each element's tile in the column ``tile``.
+    """
+    from .arrangement import Arrangement, concat
+    from .region import Region
+
+    parts: dict[int, Any] = {}
+    info = world(method, input, size, tile_size=tile_size, sink=lambda k, a: parts.__setitem__(k, a), **kwargs)
+    w, h = info.meta["world"]["size"]
+    order = sorted(parts)
+    arrs = [parts[k].with_columns(tile=np.full(len(parts[k]), k, np.int32)) for k in order]
+    shapes = info.shapes
+    arrs = [a for a in arrs if len(a)]
+    if not arrs:
+        return Arrangement(shapes, [], [], [], region=Region.rectangle(w, h), meta=info.meta)
+    return concat(arrs).replace(region=Region.rectangle(w, h), meta=info.meta)
+
+
+def iter_phases(tiles: list[Tile]) -> Iterator[list[Tile]]:
+    """The tiles of each phase, phase by phase (Wei's phase groups)."""
+    for phase in range(4):
+        yield [t for t in tiles if t.phase == phase]
