@@ -18,6 +18,9 @@ a torus (65,536 faces) and a bumpy sphere (81,920 faces, radial bumps of +-12%).
   area in each, CV across the terciles; on the sphere also the CV over 24 equal-area
   patches (Archimedes: 4 bands of equal height x 6 sectors);
 * overlaps between bounding spheres (pairs closer than r_i + r_j): must be 0;
+* fidelity in the tangent plane: ``strew.metrics.fidelity`` of geodesic charts (log map
+  discs of radius 0.3 about 8 random vertices, :func:`strew.surface.chart`) against the
+  same discs packed on a flat square (the exemplar): faithful charts out of 8;
 * packing fraction: elements against the hexagonal packing's area / (2 sqrt(3) r^2);
 * GLB export of the packed elements with the surface (seconds, MB).
 
@@ -26,21 +29,26 @@ Run: ``python benchmarks/surfaces.py`` (``--quick``: 20k-face meshes, one repeat
 Figures of ``python benchmarks/surfaces.py --repeat 3`` on the shared 2-core machine
 under a load average of about 10 (wall times 3-7x the CPU times; ratios from the same run):
 
-=========  =====  ========  =======  ========  ======  ==========  =========  ========  ==========  ========
-mesh       faces  field s   field    elements  pack s  pack CPU s  el/s       vs trimesh  fraction   curv CV
-                  (CPU)     rough                                  (wall)     (el/s)      (trimesh)
-=========  =====  ========  =======  ========  ======  ==========  =========  ==========  ========  ========
-icosphere  81920  2.58      0.05%    8,728     2.66    0.64        3,287      4.7x        0.54/0.17  0.007
-torus      65536  0.69      0        9,607     2.14    0.55        4,481      5.6x        0.54/0.17  0.003
-bumpy      81920  2.40      0.05%    9,031     3.04    0.67        2,969      5.1x        0.54/0.17  0.003
-=========  =====  ========  =======  ========  ======  ==========  =========  ==========  ========  ========
+=========  =====  =====  =====  ========  ======  =====  ======  =========  =========  =======
+mesh       faces  field  field  elements  pack    pack   el/s    el/s vs    fraction   charts
+                  CPU s  rough            wall s  CPU s  (wall)  trimesh    (trimesh)  faithful
+=========  =====  =====  =====  ========  ======  =====  ======  =========  =========  =======
+icosphere  81920  2.21   0.05%  8,728     2.53    0.58   3,449   6.0x       0.54/0.17  8/8
+torus      65536  0.70   0      9,607     2.18    0.73   4,412   5.2x       0.54/0.17  7/8
+bumpy      81920  2.67   0.05%  9,031     2.48    0.71   3,645   5.6x       0.54/0.17  8/8
+=========  =====  =====  =====  ========  ======  =====  ======  =========  =========  =======
 
-Sphere overlaps: 0 on every mesh. Density over the three curvature terciles: max/min
-1.01-1.02 (trimesh's baseline: CV 0.01-0.04); on the sphere the CV over 24 equal-area
-patches is 0.018 (baseline 0.066). The field's time is potpourri3d's first vector heat
-solve, i.e. its sparse factorisation: 0.35 s CPU on the torus but 2.0 s on the icosphere
-(more fill-in); "well under a second at 50k faces" holds for the torus, not for the
-82k-face spheres. GLB of ~9k elements with the surface: 4.5 MB, 1-2 s.
+Sphere overlaps: 0 on every mesh (and for the baseline). Density over the three
+curvature terciles: max/min 1.01-1.02, CV 0.003-0.007 (baseline CV 0.01-0.04); on the
+sphere the CV over 24 equal-area patches is 0.018 (baseline 0.066). The torus's unfaithful
+chart lies on its inner side (K about -4.4): the log map squeezes negatively curved discs
+(density and nearest-neighbour distances of the chart fail, while density per unit area
+there is within 1% of the outer side's). "fraction" is the count against the hexagonal
+packing's; random sequential adsorption saturates near 0.55. The field's time is
+potpourri3d's first vector heat solve, i.e. its sparse factorisation: 0.35 s CPU on the
+torus but 2.0 s on the icosphere (more fill-in); "well under a second at 50k faces"
+holds for the torus, not for the 82k-face spheres. GLB of ~9k elements with the surface:
+4.5 MB, 1-2.5 s.
 """
 
 from __future__ import annotations
@@ -82,6 +90,31 @@ def rough_edges(mesh, d) -> float:
 
     e = np.asarray(mesh.edges_unique)
     return float(np.mean(np.einsum("ij,ij->i", d[e[:, 0]], d[e[:, 1]]) < np.cos(np.radians(25))))
+
+
+def plane_mesh(half: float, k: int):
+    """The square [-half, half]^2 in z = 0 as a k x k grid, split into triangles."""
+    import numpy as np
+    import trimesh
+
+    xs = np.linspace(-half, half, k + 1)
+    X, Y = np.meshgrid(xs, xs)
+    v = np.column_stack([X.ravel(), Y.ravel(), np.zeros(X.size)])
+    a = (np.arange(k)[:, None] * (k + 1) + np.arange(k)[None, :]).ravel()
+    f = np.concatenate([np.column_stack([a, a + 1, a + k + 2]), np.column_stack([a, a + k + 2, a + k + 1])])
+    return trimesh.Trimesh(v, f, process=False)
+
+
+def chart_fidelity(surface, exemplar, arr, mesh, radius: float, n: int, seed: int) -> tuple[int, int]:
+    """Faithful charts (log map discs of ``radius`` about random vertices) out of ``n``."""
+    import numpy as np
+
+    from strew.metrics import fidelity
+
+    rng = np.random.default_rng(seed)
+    centers = np.asarray(mesh.vertices)[rng.choice(len(mesh.vertices), n, replace=False)]
+    ok = sum(fidelity(exemplar, surface.chart(arr, mesh, c, radius), local=False, eq5=False).faithful for c in centers)
+    return int(ok), n
 
 
 def overlap_count(p, r) -> int:
@@ -140,6 +173,14 @@ def main() -> None:
     # warm-up: numba compiles or loads the packing kernels here
     surface.pack(0.2, trimesh.creation.icosphere(subdivisions=2), rng=0, field=None)
 
+    # the flat exemplar for fidelity in the tangent plane: the same discs packed on a plane
+    import shapely
+
+    from strew import Region
+
+    flat = surface.pack(r, plane_mesh(0.6, 160), rng=5, field=None)
+    exemplar = flat.without_columns(*flat.columns).replace(region=Region(shapely.box(-0.6, -0.6, 0.6, 0.6)))
+
     bench = Bench("surfaces", "strew.surface.pack on meshes vs trimesh sample_surface_even",
                   baseline="trimesh.sample.sample_surface_even", json_path=args.json)
     for name, raw in meshes(args.quick).items():
@@ -155,6 +196,7 @@ def main() -> None:
         cv, ratio = curvature_cv(mesh, np.asarray(arr["face"]))
         bcv, bratio = curvature_cv(mesh, np.asarray(bf))
         t_glb, glb = timed(lambda: surface.to_glb(arr, mesh=mesh))
+        faithful, charts = chart_fidelity(surface, exemplar, arr, mesh, 0.3, 3 if args.quick else 8, seed=7)
         row = dict(
             faces=len(mesh.faces),
             load_s=t_load,
@@ -176,6 +218,7 @@ def main() -> None:
             base_curv_cv=bcv,
             overlaps=overlap_count(p, rad),
             base_overlaps=overlap_count(np.asarray(bp), np.full(len(bp), r)),
+            charts_faithful=f"{faithful}/{charts}",
             glb_s=t_glb,
             glb_mb=len(glb) / 1e6,
         )
