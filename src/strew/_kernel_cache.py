@@ -24,6 +24,7 @@ _METHODS = {
     "synth": ("synth",),
     "grow": ("grow",),
     "ornament": ("ornament",),
+    "program": ("pack",),  # strew run: the Poisson-disk sampling of program's partitions
     "gallery": ("pack", "synth", "grow", "ornament"),
 }
 

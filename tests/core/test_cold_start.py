@@ -81,7 +81,7 @@ def test_quiet_or_logged_run_prints_no_compile_message(tmp_path):
 
 def test_kernel_cache_look_follows_numba_cache_dir(tmp_path, monkeypatch):
     monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path))
-    for method in ("pack", "synth", "grow", "ornament", "gallery"):
+    for method in ("pack", "synth", "grow", "ornament", "gallery", "program"):
         assert not kernels_cached(method)
     assert kernels_cached("pack (naive)")  # compiles nothing
     assert kernels_cached("no such method")
