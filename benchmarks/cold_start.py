@@ -16,23 +16,38 @@ took longest (numba's ``numba:compile`` events, inclusive of the kernels they ca
 
 The first run is never hidden behind a warm-up: it is the figure this script exists for.
 
-Figures of ``python benchmarks/cold_start.py --quick`` on the shared 2-core machine (load
-4-7, so wall times swing by 2x between runs; compare ratios), after the first compile-time
-rewrites (ornament's LAPACK calls, pack's plain helper kernels):
+Figures of ``python benchmarks/cold_start.py --case 'pack fill-gap' --case 'synth fill'
+--case grow --case run --case 'studio brush'``, at 574794a (before) and with the issue 16
+compile-time rewrites of this session (after), each tree run on its own in a git worktree
+of the same checkout, on the shared 2-core machine at load 8-10: wall times swing 2-5x
+with the load, so compare the CPU seconds of the process (``first_cpu_s``, imports
+included):
 
-=============  =======  ========  =====  ================================================
-case           first s  second s  ratio  slowest compiles (inclusive)
-=============  =======  ========  =====  ================================================
-pack fill-gap  44.3     2.05      21.6   _rounds 22.2 s, _place_sparse 8.3, _in_region 4.4
-synth fill     56.6     2.81      20.1   sort_segments 17.3 s, raise-with-shape impl 10.0
-grow           4.69     2.46      1.91   _match_kernel 2.3 s (meets the target)
-ornament dots  16.7     2.86      5.83   climb 10.0 s, _newton3 6.1, run_quicksort 2.8
-studio brush   82.4     6.46      12.8   sort_segments 20.5 s, raise-with-shape impl 12.4
-=============  =======  ========  =====  ================================================
+=============  ==================  ===================  =============  =========================
+case           first CPU s         second CPU s         CPU ratio      target (CPU) met
+               before -> after     before -> after      before->after  before -> after
+=============  ==================  ===================  =============  =========================
+pack fill-gap  27.4 -> 25.2        1.13 -> 0.99         24.2 -> 25.5   no -> no
+synth fill     23.8 -> 17.8        1.62 -> 1.67         14.7 -> 10.7   no -> no
+studio brush   23.9 -> 19.9        2.05 -> 1.90         11.7 -> 10.5   no -> no
+grow           2.52 -> 2.77        1.32 -> 1.44         1.91 -> 1.93   yes -> yes
+run            3.37 -> 3.25        1.29 -> 1.57         2.61 -> 2.06   yes -> yes (wall too)
+=============  ==================  ===================  =============  =========================
 
-Before those rewrites ornament dots was 44 s against 4.3 s (ratio 10; numpy's linalg
-``solve_impl`` alone 13 s). Measured CPU seconds of a cold ``strew pack`` (concave,
-200 x 160), old and new code interleaved: 25.8 s before, 21.9 s after.
+Where the rest goes (numba 0.68, profile of a recompile of pack's ``_rounds`` with its
+callees): about a third type inference (each call site of an overloaded function is
+resolved through its templates), a quarter lowering, and the rest LLVM, half of that
+machine-code emission. ``NUMBA_OPT=2`` (26.3 s) or no loop vectoriser (25.6 s) barely
+change a cold pack (27.3 s), so the cost is numba's per-statement work, not LLVM's
+optimisation level: a numba kernel costs about 0.1 s of CPU at the least, and pack,
+synth and the studio compile 35 each. The target (first <= 2 x second + 1 s, about 3-5
+s of CPU here) needs code that is compiled before the first run (an extension module
+built by ``pip install .``), not fewer numba statements.
+
+Earlier figures (previous session, ``--quick``, wall): pack fill-gap 44.3 s vs 2.05 s,
+synth fill 56.6 vs 2.81 (before its ``sort_segments`` rewrite), grow 4.69 vs 2.46,
+ornament dots 16.7 vs 2.86 (44 vs 4.3 before its LAPACK calls), studio brush 82.4 vs
+6.46.
 """
 
 from __future__ import annotations
