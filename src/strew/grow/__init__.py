@@ -192,11 +192,71 @@ def grow(
         arr = empty_result(ex.shapes if isinstance(ex, Arrangement) else {}, region,
                            "the region is empty" if ctx is None else "the context covers the region")
     else:
+        src = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
+        if prm["avoid_overlaps"] and isinstance(src, Arrangement) and _overlapping_exemplar(src):
+            prm["avoid_overlaps"] = False  # recorded in meta as resolved
         arr = _grow(exemplar, free, gen, progress, should_cancel, **prm)
         if free is not region:
             arr = arr.replace(region=region)
+        _say_if_short(arr, prm)
     src = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
     return stamp(arr, SPEC, src, prm, seed, region=region, context=ctx)
+
+
+def _overlapping_exemplar(ex: Arrangement) -> bool:
+    """Whether the exemplar's own elements overlap, so that its copies must too.
+
+    Ijiri's growth has no overlap test (§5); strew refuses placements that overlap
+    (``avoid_overlaps``). When the exemplar itself overlaps (a tessellation drawn with
+    tiles that cover each other's edges, shapes with a stroke), every copy of a
+    neighbourhood collides and growth stops at its seed with no word (issue 22 point 3:
+    1 element of 100). Then grow as the paper does, without the test, and say so.
+    """
+    import warnings
+
+    from ..metrics import overlaps
+    from .._feedback import ResultWarning
+
+    n = len(ex)
+    if n < 2:
+        return False
+    pairs, areas = overlaps(ex)
+    if len(pairs) == 0:
+        return False
+    geom_area = np.asarray([g.area for g in ex.geometry])
+    smaller = np.minimum(geom_area[pairs[:, 0]], geom_area[pairs[:, 1]])
+    real = int(np.count_nonzero(areas > 1e-3 * smaller))  # filled shapes that run into each other
+    if real < max(1, n // 10):
+        return False
+    warnings.warn(
+        f"grow: the exemplar's own elements overlap ({real} pairs), so every copy of its neighbourhoods would "
+        "overlap too; growing without the overlap test, as the paper does (avoid_overlaps=False)",
+        ResultWarning,
+        stacklevel=4,
+    )
+    return True
+
+
+def _say_if_short(arr: Arrangement, prm: Mapping[str, Any]) -> None:
+    """Warn when growth stopped well short of ``count`` (issue 22 point 3)."""
+    from .._feedback import warn_shortfall
+
+    if prm.get("count") is None:
+        return
+    where = []
+    if prm.get("boundary"):
+        where.append("boundary strokes")
+    if prm.get("spray") is not None:
+        where.append(f"the spray path (spray_radius {prm.get('spray_radius')})")
+    if where:
+        reason = f"the growth front found no more room inside {' and '.join(where)}; widen them or ask for fewer"
+    elif len(arr) <= 1:
+        reason = ("no neighbour of the seed could be placed: the exemplar needs elements with Delaunay neighbours "
+                  "(see its connectivity with strew grow --connectivity), at least two of them")
+    else:
+        reason = ("the growth front ran out of places where a copy of an exemplar neighbourhood fits "
+                  "(a region too small, or an exemplar whose copies collide); give a larger region or ask for fewer")
+    warn_shortfall("grow", len(arr), int(prm["count"]), reason, stacklevel=4)
 
 
 def _grow(

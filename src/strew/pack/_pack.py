@@ -294,7 +294,34 @@ def pack(
         arr = arr.with_meta(pack={"algorithm": prm["method"], "stopped": arr.meta["stopped"], "trials": 0})
     else:
         arr = _pack_into(lib, free, gen=gen, progress=progress, should_cancel=should_cancel, **prm).replace(region=dom)
+        arr = _say_if_large(arr, lib, prm["scale"], free)
     return stamp(arr, SPEC, lib, prm, seed, region=dom, context=ctx)
+
+
+def _say_if_large(arr: Arrangement, lib: Mapping[str, Shape], scale: Any, region: Region) -> Arrangement:
+    """Say so when few or no elements fit because the shapes are large (issue 22 point 3).
+
+    A few elements: a :class:`~strew._feedback.ResultWarning`. None: the advice joins
+    ``meta["pack"]["stopped"]``, which the CLI's error gives.
+    """
+    from .._feedback import large_shapes_advice, warn_large_shapes
+
+    def hi(kind: str) -> float:
+        rng = scale.get(kind, scale.get("*", (1.0, 1.0))) if isinstance(scale, Mapping) else scale
+        try:
+            return float(np.max(np.atleast_1d(np.asarray(rng, dtype=float))))
+        except (TypeError, ValueError):
+            return 1.0
+
+    areas = {k: float(s.area) * hi(k) ** 2 for k, s in lib.items()}
+    if len(arr) == 0:
+        advice = large_shapes_advice(areas, region)
+        info = dict(arr.meta.get("pack") or {})
+        if advice and info.get("stopped"):
+            return arr.with_meta(pack={**info, "stopped": f"{info['stopped']}; {advice}"})
+        return arr
+    warn_large_shapes("pack", len(arr), areas, region, stacklevel=4)
+    return arr
 
 
 def _pack_into(
