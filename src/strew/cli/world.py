@@ -103,7 +103,11 @@ def _make(name: str) -> click.Command:
                 info = world(name, inp, wsize, tile_size=tile_size, halo=halo, seed=seed,
                              workers=workers or _default_workers(), scheduler=scheduler, timeout=timeout,
                              sink=sink, progress=prog, should_cancel=cancel, on_dashboard=dashboard, **values)
-        except InputError as exc:
+        except BaseException as exc:
+            for w in writers:
+                w.abort()
+            if not isinstance(exc, InputError):
+                raise
             msg = names_to_flags(s, str(exc))
             for word, flag in (("tile_size", "--tile-size"), ("halo", "--halo"), ("workers", "--workers"),
                                ("scheduler", "--scheduler"), ("size", "--size"), ("seed", "--seed")):

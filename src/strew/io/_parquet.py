@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
@@ -46,22 +47,23 @@ def is_dataset(path: str | os.PathLike[str]) -> bool:
 
 
 class ParquetWriter:
-    """Writes one file per tile into ``folder``; :meth:`close` writes the metadata.
+    """Writes one file per tile; :meth:`close` writes the metadata and publishes it.
 
     Parameters
     ----------
     folder : path
-        Created if missing; an existing dataset's part files are replaced.
+        The dataset folder; an existing strew dataset there is replaced on
+        :meth:`close`, anything else is refused.
     """
 
     def __init__(self, folder: str | os.PathLike[str]) -> None:
         self.pa, self.pq = _pa()
-        self.folder = Path(folder)
-        if self.folder.exists() and not self.folder.is_dir():
-            raise InputError(f"--out: {self.folder} exists and is not a folder")
-        self.folder.mkdir(parents=True, exist_ok=True)
-        for old in self.folder.glob("part-*.parquet"):
-            old.unlink()
+        self.target = Path(folder)
+        if self.target.exists() and not is_dataset(self.target):
+            raise InputError(f"--out: {self.target} exists and is not a strew Parquet dataset")
+        # tiles go to NAME.partial/ (made on the first tile), renamed by close(): a failed
+        # or interrupted run leaves the old dataset, or nothing, at the target
+        self.folder = self.target.with_name(self.target.name + ".partial")
         self.kinds: list[str] | None = None
         self.extra: dict[str, Any] = {}
 
@@ -92,6 +94,10 @@ class ParquetWriter:
             cols[c] = pa.array(np.asarray(v))
             self.extra.setdefault(c, cols[c].type)
         table = pa.table(cols)
+        if not self.folder.is_dir():
+            if self.folder.exists():
+                shutil.rmtree(self.folder)
+            self.folder.mkdir(parents=True)
         pq.write_table(table, self.folder / f"part-{index:06d}.parquet", compression="zstd")
 
     def close(self, shapes: Mapping[str, Any], meta: Mapping[str, Any], region: Any = None) -> Path:
@@ -104,8 +110,17 @@ class ParquetWriter:
         }
         text = json.dumps(doc, sort_keys=True, default=str)
         schema = self._schema().with_metadata({"strew": text})
+        self.folder.mkdir(parents=True, exist_ok=True)
         self.pq.write_metadata(schema, self.folder / "_common_metadata")
-        return self.folder
+        if self.target.exists():
+            shutil.rmtree(self.target)
+        self.folder.rename(self.target)
+        return self.target
+
+    def abort(self) -> None:
+        """Remove the partial dataset."""
+        if self.folder.exists():
+            shutil.rmtree(self.folder)
 
 
 def _doc(folder: Path) -> dict[str, Any]:
