@@ -73,9 +73,10 @@ def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
     from .._limits import limits
 
     args = list(sys.argv[1:] if argv is None else argv)
-    _ARGV[:] = args  # for meta.command
+    _ARGV[:] = args  # for meta.command (with '-' as given)
+    _STDOUT.clear()
     try:
-        with limits():
+        with limits(), _stdin_inputs(args) as args:
             with group.make_context("strew", args) as ctx:
                 group.invoke(ctx)
     except click.exceptions.Exit as exc:
@@ -115,23 +116,106 @@ def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
 
 
 def echo(message: str, *, quiet: bool = False) -> None:
-    """Print a result line on stdout unless quiet."""
+    """Print a result line on stdout unless quiet (on stderr when ``--out -`` writes there)."""
     if not quiet:
-        click.echo(message)
+        click.echo(message, err=bool(_STDOUT))
+
+
+# -- standard input and output (issue 22 point 2) ------------------------------------------
+# ``-`` as an input reads standard input; ``--out -`` writes standard output, in the
+# format given by ``--format``. The data are the same bytes a file would get.
+_STDOUT: list[str] = []  # the format of ``--out -`` in this run, once checked
+_OUT_VALUE_FLAGS = ("-o", "--out", "--exemplar-out", "--plot")
+_STDIN_CAP = 4 * 10**9  # bytes copied from a pipe at most
+
+
+def _sniff(data: bytes) -> str:
+    """The suffix of piped input: ``.svgz`` (gzip), ``.json`` or ``.svg``."""
+    if data[:2] == b"\x1f\x8b":
+        return ".svgz"
+    head = data.lstrip()[:1]
+    if head in (b"{", b"["):
+        return ".json"
+    if head == b"<":
+        return ".svg"
+    raise InputError("-: standard input is neither a strew document (JSON) nor an SVG")
+
+
+@contextlib.contextmanager
+def _stdin_inputs(args: list[str]) -> Iterator[list[str]]:
+    """Replace an input argument ``-`` by a temporary copy of standard input.
+
+    The copy has the suffix its content calls for, so every reader (documents, SVG,
+    regions, shapes) and every check (size limits) works on it unchanged. Only one input
+    can come from standard input.
+    """
+    idx = [i for i, a in enumerate(args) if a == "-" and not (i > 0 and args[i - 1] in _OUT_VALUE_FLAGS)]
+    if not idx:
+        yield args
+        return
+    if len(idx) > 1:
+        raise InputError("-: standard input can be read once; give the other inputs as files")
+    if sys.stdin is None or sys.stdin.isatty():
+        raise InputError("-: standard input is a terminal; pipe a file in (strew ... - < FILE)")
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="strew-stdin-") as tmp:
+        # streamed to disk (the readers' size limit applies to the copy, with the
+        # command's --limit-file-size); a bound so that an endless pipe cannot fill it
+        raw = Path(tmp) / "stdin"
+        with raw.open("wb") as f:
+            copied = 0
+            while chunk := sys.stdin.buffer.read(1 << 20):
+                copied += len(chunk)
+                if copied > _STDIN_CAP:
+                    raise InputError(f"-: standard input runs past {_STDIN_CAP:,} bytes; give a file")
+                f.write(chunk)
+        with raw.open("rb") as f:
+            head = f.read(4096)
+        if not head.strip():
+            raise InputError("-: standard input is empty")
+        path = raw.rename(raw.with_suffix(_sniff(head)))
+        out = list(args)
+        out[idx[0]] = str(path)
+        yield out
+
+
+def _remember_format(ctx: click.Context, param: click.Parameter, value: str | None) -> str | None:
+    ctx.meta["strew.out_format"] = value
+    return value
+
+
+def _out_format() -> str | None:
+    ctx = click.get_current_context(silent=True)
+    while ctx is not None:
+        if "strew.out_format" in ctx.meta:
+            return ctx.meta["strew.out_format"]
+        ctx = ctx.parent
+    return None
 
 
 # -- option decorators ------------------------------------------------------------------
 def out_option(required: bool = True) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """``--out PATH`` (repeatable); the extension picks the format."""
-    return click.option(
+    out = click.option(
         "--out",
         "-o",
         "outs",
         multiple=True,
         required=required,
-        type=click.Path(dir_okay=False),
-        help="Output file; .json, .svg or .png (repeatable).",
+        type=click.Path(dir_okay=False, allow_dash=True),
+        help="Output file; .json, .svg or .png (repeatable); - writes standard output (with --format).",
     )
+    fmt = click.option(
+        "--format",
+        "out_format",
+        type=click.Choice(["json", "svg", "png"]),
+        default=None,
+        expose_value=False,
+        callback=_remember_format,
+        help="Format of --out - (standard output).",
+    )
+    return lambda f: out(fmt(f))
 
 
 def seed_option(f: Callable[..., Any]) -> Callable[..., Any]:
@@ -292,8 +376,18 @@ def check_outputs(outs: Sequence[str]) -> None:
 
     if not outs:
         raise InputError("--out: give at least one output file")
+    fmt = _out_format()
+    piped = [o for o in outs if o == "-"]
+    if len(piped) > 1:
+        raise InputError("--out -: standard output can be given once")
+    if piped and fmt is None:
+        raise InputError("--out -: give --format json, svg or png for standard output")
+    if fmt is not None and not piped:
+        raise InputError(f"--format: only for --out - (a file's extension gives its format), got --format {fmt}")
     for o in outs:
-        check_output_path(o)
+        if o != "-":
+            check_output_path(o)
+    _STDOUT[:] = [fmt] if piped else []
 
 
 # methods that fill a region: an empty result means the region holds no element
@@ -332,7 +426,6 @@ def write_outputs(
     Returns the arrangement with its meta filled in.
     """
     from .. import __version__
-    from ..io import save_many
 
     if method in _FILLING and len(arr) == 0:
         info = arr.meta.get(method)
@@ -350,8 +443,29 @@ def write_outputs(
         meta["params"] = params
     meta["command"] = command_line()
     arr = arr.with_meta(**meta)
-    save_many(arr, outs)
+    files = save_outputs(arr, outs)
     if not quiet:
-        for o in outs:
+        for o in files:
             click.echo(f"wrote {Path(o)}", err=True)
     return arr
+
+
+def save_outputs(arr: Arrangement, outs: Sequence[str], **png_kwargs: Any) -> list[str]:
+    """Write ``arr`` to every ``--out``, all or none; ``-`` is standard output.
+
+    Checked first by :func:`check_outputs`. Returns the files written (not ``-``).
+    """
+    from ..io import encode, save_many
+
+    files = [o for o in outs if o != "-"]
+    piped = None
+    if "-" in outs:  # encoded before any file is written: all or none
+        fmt = _STDOUT[0] if _STDOUT else _out_format()
+        piped = encode(arr, f"stdout.{fmt}", **(png_kwargs if fmt == "png" else {}))
+    if files:
+        save_many(arr, files, **png_kwargs)
+    if piped is not None:
+        stream = sys.stdout.buffer
+        stream.write(piped.encode("utf-8") if isinstance(piped, str) else piped)
+        stream.flush()
+    return files

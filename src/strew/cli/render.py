@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from ._common import check_outputs, out_option, quiet_option
+from ._common import check_outputs, out_option, quiet_option, save_outputs
 
 
 @click.command("render")
@@ -13,8 +13,8 @@ from ._common import check_outputs, out_option, quiet_option
 @click.option("--width", type=click.IntRange(min=1), default=1024, show_default=True, help="PNG width in pixels.")
 @quiet_option
 def command(input: str, outs: tuple[str, ...], width: int, quiet: bool) -> None:
-    """Convert INPUT (.json or .svg) into every --out (.json, .svg or .png)."""
-    from ..io import load, save_many
+    """Convert INPUT (.json or .svg; - reads standard input) into every --out (.json, .svg or .png)."""
+    from ..io import load
 
     check_outputs(outs)
     if any(o.lower().endswith(".png") for o in outs):
@@ -22,7 +22,7 @@ def command(input: str, outs: tuple[str, ...], width: int, quiet: bool) -> None:
 
         check_memory(4.0 * width * width, "--width")  # an RGBA raster, at most square
     arr = load(input)
-    save_many(arr, outs, width=width)  # all or none
+    files = save_outputs(arr, outs, width=width)  # all or none; '-' is standard output
     if not quiet:
-        for o in outs:
+        for o in files:
             click.echo(f"wrote {o} ({len(arr)} elements)", err=True)
