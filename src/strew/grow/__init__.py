@@ -77,7 +77,8 @@ SPEC = MethodSpec(
         Param("flips", "any", (), help="Edges (i, j) of the exemplar's connectivity to flip first.", flag="--flip", cli="multiple",
               parse="index-pairs", metavar="I,J", cli_help="Flip edge I,J of the exemplar's connectivity (repeatable).", section="§4, Fig. 3"),
         Param("connectivity", "bool", False, help="Write the grown connectivity into the document (entry 'connectivity').", cli="flag"),
-        Param("avoid_overlaps", "bool", True, help="Refuse placements and relaxation steps that would make elements overlap.", cli=False,
+        Param("avoid_overlaps", "bool", None, help="Refuse placements and relaxation steps that would make elements overlap "
+              "[default: on, unless the exemplar's own elements overlap; then off, with a warning].", cli=False,
               section="extension"),
         Param("relax_every", "int", 16, low=1, help="Growth steps between two windowed relaxations.", cli=False, section="§5.5"),
     ),
@@ -156,8 +157,11 @@ def grow(
     connectivity : bool
         Store the grown connectivity as the document entry ``connectivity``
         (``{"count": n, "edges": [[i, j], ...]}``).
-    avoid_overlaps : bool
-        Refuse placements and relaxation steps that would make elements overlap.
+    avoid_overlaps : bool, optional
+        Refuse placements and relaxation steps that would make elements overlap (an
+        extension: Ijiri's growth has none). By default on, unless the exemplar's own
+        elements overlap: then every copy of a neighbourhood would collide, so it is
+        off and a :class:`~strew._feedback.ResultWarning` says so.
     relax_every : int
         Growth steps between two windowed relaxations.
     rng : int, Generator or None
@@ -193,8 +197,8 @@ def grow(
                            "the region is empty" if ctx is None else "the context covers the region")
     else:
         src = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
-        if prm["avoid_overlaps"] and isinstance(src, Arrangement) and _overlapping_exemplar(src):
-            prm["avoid_overlaps"] = False  # recorded in meta as resolved
+        if prm["avoid_overlaps"] is None:  # resolved here, and recorded so in meta
+            prm["avoid_overlaps"] = not (isinstance(src, Arrangement) and _overlapping_exemplar(src))
         arr = _grow(exemplar, free, gen, progress, should_cancel, **prm)
         if free is not region:
             arr = arr.replace(region=region)
@@ -252,7 +256,8 @@ def _say_if_short(arr: Arrangement, prm: Mapping[str, Any]) -> None:
         reason = f"the growth front found no more room inside {' and '.join(where)}; widen them or ask for fewer"
     elif len(arr) <= 1:
         reason = ("no neighbour of the seed could be placed: the exemplar needs elements with Delaunay neighbours "
-                  "(see its connectivity with strew grow --connectivity), at least two of them")
+                  "(see its connectivity with strew grow --connectivity), at least two of them"
+                  + (", whose copies do not overlap each other (avoid_overlaps=False lets them)" if prm.get("avoid_overlaps") else ""))
     else:
         reason = ("the growth front ran out of places where a copy of an exemplar neighbourhood fits "
                   "(a region too small, or an exemplar whose copies collide); give a larger region or ask for fewer")
