@@ -10,7 +10,8 @@ import re
 import pytest
 
 from strew import metrics
-from strew.demo import build_gallery
+from strew.cli import main
+from strew.demo import SECTIONS
 from strew.io import load
 
 pytestmark = pytest.mark.slow
@@ -50,16 +51,25 @@ def _cases(names, known):
 
 @pytest.fixture(scope="module")
 def gallery(tmp_path_factory):
+    # built once, through the CLI as a user runs it (`strew demo`), for every test here
     out = tmp_path_factory.mktemp("gallery")
-    build_gallery(out, png_width=48)
+    assert main(["demo", "--out", str(out), "-q"]) == 0
     page = (out / "index.html").read_text()
     captions = {name: int(n) for name, n in re.findall(r'<a href="([^"]+)\.svg">.*?\((\d+) elements\)', page)}
     docs = {p.stem: load(p) for p in out.glob("*.json")}
-    return docs, captions
+    return docs, captions, page
+
+
+def test_full_gallery_has_every_section(gallery):
+    page = gallery[2]
+    sections = re.findall(r"<section><h2>(.*?)</h2>", page)
+    assert len(sections) == len(SECTIONS)
+    for block in page.split("<section>")[1:]:
+        assert "<figure>" in block, f"empty gallery section: {block[:80]}"
 
 
 def test_gallery_lists_every_picture(gallery):
-    docs, captions = gallery
+    docs, captions, _ = gallery
     assert sorted(docs) == sorted(NAMES) == sorted(captions)
 
 
@@ -78,5 +88,5 @@ def test_no_filled_overlaps_where_promised(gallery, name):
 
 @pytest.mark.parametrize("name", NAMES)
 def test_caption_gives_the_visible_count(gallery, name):
-    docs, captions = gallery
+    docs, captions, _ = gallery
     assert captions[name] == metrics.visible_count(docs[name])
