@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import math
 import time
+import uuid
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -400,12 +401,13 @@ def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done:
 
     [job_f] = client.scatter([job], broadcast=True, hash=False)
     futures: dict[int, Any] = {}
+    run_id = uuid.uuid4().hex[:12]  # keys unique on a shared cluster
     deps = {t.index: _neighbours(t, nx, ny) for t in tiles}
     for phase in range(4):  # submit in phase order so that dependencies exist
         for t in tiles:
             if t.phase == phase:
                 futures[t.index] = client.submit(run_tile, job_f, t, *[futures[d] for d in deps[t.index]],
-                                                 key=f"strew-tile-{t.index}-{id(job)}", pure=False)
+                                                 key=f"strew-tile-{run_id}-{t.index}", pure=False)
     by_key = {futures[t.index].key: t for t in tiles}
     ndone = 0
     try:

@@ -213,3 +213,15 @@ def test_cli_two_worker_processes_give_the_same_tiles(tmp_path, shapes_file, wor
     assert len(names) == 20
     for name in names:
         assert (out / name).read_bytes() == (base / "one.parquet" / name).read_bytes(), name
+
+
+def test_cli_info_summarises_a_dataset_without_loading_it(worlds, capsys):
+    import json
+
+    base, (arr, _), _ = worlds
+    assert main(["info", str(base / "one.parquet"), "--json"]) == 0
+    s = json.loads(capsys.readouterr().out)
+    assert s["elements"] == len(arr) and s["tiles"] == 20
+    assert s["counts"] == arr.counts()
+    lo = [float(arr.x.min()), float(arr.y.min()), float(arr.x.max()), float(arr.y.max())]
+    assert s["centre_bounds"] == pytest.approx(lo)

@@ -6,7 +6,7 @@ import click
 
 
 @click.command("info")
-@click.argument("input", type=click.Path(dir_okay=False))
+@click.argument("input", type=click.Path())
 @click.option("--region", type=click.Path(dir_okay=False), default=None, help="Measure against this region instead.")
 @click.option("--json", "as_json", is_flag=True, help="Print the figures as JSON.")
 def command(input: str, region: str | None, as_json: bool) -> None:
@@ -16,6 +16,19 @@ def command(input: str, region: str | None, as_json: bool) -> None:
     from .. import metrics
     from ..io import load, load_region
 
+    from ..io._parquet import is_dataset
+
+    if is_dataset(input):  # a world (issue 19): summarised from its columns, never loaded whole
+        from ..io._parquet import parquet_summary
+
+        s = parquet_summary(input)
+        if as_json:
+            click.echo(json.dumps(s, indent=2, default=str))
+        else:
+            w = s["meta"].get("world", {})
+            click.echo(f"{input}: {s['elements']:,} elements in {s['tiles']} tiles ({w.get('size')}, tile {w.get('tile_size')}), "
+                       + ", ".join(f"{k} {c:,} ({s['kind_fractions'][k]:.3f})" for k, c in s["counts"].items()))
+        return
     arr = load(input)
     reg = load_region(region) if region else None
     s = metrics.summary(arr, reg)
