@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import strew
+from strew import metrics
 from strew.cli import main
 from strew.io.document import dumps
 
@@ -162,3 +163,20 @@ def test_help_imports_no_heavy_module():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert "HEAVY []" in out
     assert "render" in out and "info" in out and "demo" in out
+
+
+def test_summaries_give_the_visible_count_like_info_and_the_gallery(tmp_path, capsys):
+    """One count everywhere (issue 23 point 9): void elements are not counted."""
+    import re
+
+    from strew_testing import fidelity_suite
+
+    ex = fidelity_suite().make_exemplar("sparse_voids", np.random.default_rng(1))
+    assert ex.columns["void"].any()
+    strew.save(ex, tmp_path / "ex.json")
+    out = tmp_path / "out.json"
+    assert main(["synth", str(tmp_path / "ex.json"), "--size", "300x300", "--keep-voids", "--seed", "1", "-o", str(out)]) == 0
+    said = int(re.search(r"synth: (\d+) elements", capsys.readouterr().out).group(1))
+    arr = strew.load(out)
+    assert arr.columns["void"].any()  # voids were kept in the document ...
+    assert said == metrics.visible_count(arr) < len(arr)  # ... and the summary leaves them out

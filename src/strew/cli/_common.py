@@ -115,6 +115,24 @@ def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
     return 0
 
 
+def visible_counts(arr: Arrangement) -> tuple[int, str]:
+    """The visible element count and ``"kind n, ..."`` for a summary line.
+
+    One count everywhere (issue 23 point 9): what the picture shows, as the gallery's
+    captions and ``strew info`` give it; void and hidden elements are left out.
+    """
+    import numpy as np
+
+    from ..metrics import visible
+
+    vis = visible(arr)
+    names = arr.kind_names[vis] if len(arr) else []
+    kinds, n = np.unique(names, return_counts=True) if len(names) else ([], [])
+    order = {k: i for i, k in enumerate(arr.kinds)}
+    pairs = sorted(zip(kinds, n), key=lambda kv: order.get(kv[0], 0))
+    return int(vis.sum()), ", ".join(f"{k} {int(c)}" for k, c in pairs)
+
+
 def echo(message: str, *, quiet: bool = False) -> None:
     """Print a result line on stdout unless quiet (on stderr when ``--out -`` writes there)."""
     if not quiet:

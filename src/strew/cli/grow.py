@@ -43,7 +43,10 @@ def _finish(run, arr) -> None:
 
 
 def _summary(run, arr) -> str:
-    return f"grew {len(arr)} elements in {run.seconds:.2f} s ({len(arr) / max(run.seconds, 1e-9):,.0f} elements/s)"
+    from ._common import visible_counts
+
+    n, _ = visible_counts(arr)
+    return f"grew {n} elements in {run.seconds:.2f} s ({n / max(run.seconds, 1e-9):,.0f} elements/s)"
 
 
 command = method_command(SPEC, Hooks(

@@ -11,10 +11,11 @@ from ._spec import Hooks, method_command
 
 def _summary(run, arr) -> str:
     from .. import metrics
+    from ._common import visible_counts
 
-    counts = ", ".join(f"{k} {c}" for k, c in arr.counts().items())
+    n, counts = visible_counts(arr)
     info = arr.meta["pack"]
-    return (f"packed {len(arr)} elements ({counts}), coverage {100 * metrics.coverage(arr):.1f}%, {run.seconds:.2f} s, "
+    return (f"packed {n} elements ({counts}), coverage {100 * metrics.coverage(arr):.1f}%, {run.seconds:.2f} s, "
             f"{info['algorithm']}, stopped after {info['stopped']}")
 
 

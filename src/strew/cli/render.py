@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from ._common import check_outputs, out_option, quiet_option, save_outputs
+from ._common import check_outputs, out_option, quiet_option, save_outputs, visible_counts
 
 
 @click.command("render")
@@ -25,4 +25,4 @@ def command(input: str, outs: tuple[str, ...], width: int, quiet: bool) -> None:
     files = save_outputs(arr, outs, width=width)  # all or none; '-' is standard output
     if not quiet:
         for o in files:
-            click.echo(f"wrote {o} ({len(arr)} elements)", err=True)
+            click.echo(f"wrote {o} ({visible_counts(arr)[0]} elements)", err=True)

@@ -68,9 +68,11 @@ def _finish(run, arr) -> None:
 
 
 def _summary(run, arr) -> str:
+    from ._common import visible_counts
+
     d = arr.meta.get("synth", {}).get("average_neighborhood_distance")
-    counts = ", ".join(f"{k} {v}" for k, v in arr.counts().items() if v)
-    return f"synth: {len(arr)} elements ({counts}); average neighbourhood distance {d:.4g}" if d is not None else f"synth: {len(arr)} elements"
+    n, counts = visible_counts(arr)
+    return f"synth: {n} elements ({counts}); average neighbourhood distance {d:.4g}" if d is not None else f"synth: {n} elements"
 
 
 command = method_command(SPEC, Hooks(
