@@ -16,6 +16,14 @@ region of >= 6,000 elements in <= 1.5 s; distance below patch initialisation's o
 exemplar; no overlaps beyond the exemplar's; the exemplar's density.
 
     python benchmarks/synth.py [--quick] [--repeat N]
+
+``--seams`` measures issue 13's point 2 instead: each class of the fidelity suite
+(``examples/fidelity/make.py``; sticks left out for time) fills a region ``--scale``
+times its frame's side (default 7.07: 50x its area), and the local fidelity map of
+``strew.metrics.fidelity`` is read: the share of windows that fail and the worst
+window's score (above 1 fails) and metric. Point 2 asks for no failing window.
+
+    python benchmarks/synth.py --seams [--scale 7.07] [--seeds 1] [--only NAME,...]
 """
 
 from __future__ import annotations
@@ -79,8 +87,49 @@ def voronoi_ratio(ex, out, region: Region) -> float:
     return voronoi_density(out.xy, inner) / voronoi_density(vis.xy, dom.buffer(-0.25 * np.sqrt(dom.area)))
 
 
+def seams(args) -> None:
+    """Issue 13 point 2: failing windows of the local fidelity map at ``args.scale``."""
+    import importlib.util
+    from pathlib import Path
+
+    from strew.metrics import fidelity
+
+    spec = importlib.util.spec_from_file_location("fidelity_make", Path(__file__).resolve().parents[1] / "examples" / "fidelity" / "make.py")
+    mk = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mk)
+    names = [n for n in mk.NAMES if n != "sticks"] if not args.only else args.only.split(",")
+    seeds = [int(x) for x in args.seeds.split(",")]
+    bench = Bench("synth_seams", f"synth: local fidelity map at {args.scale:g}x the frame's side ({args.scale ** 2:.0f}x the area)",
+                  baseline="none: point 2 asks for no failing window", json_path=args.json)
+    for name in names:
+        ex = mk.make_exemplar(name)
+        x0, y0, x1, y1 = ex.region.bounds
+        region = Region.rectangle(args.scale * (x1 - x0), args.scale * (y1 - y0))
+        for seed in seeds:
+            t0 = time.perf_counter()
+            out = synthesize(ex, region, rng=seed, measure=False)
+            dt = time.perf_counter() - t0
+            rep = fidelity(ex, out, region, eq5=False)
+            score = np.asarray(rep.local["score"], float)
+            ok = np.isfinite(score)
+            worst = rep.local["worst"] or {}
+            bench.row(name, seed=seed, elements=len(out), faithful=rep.faithful, windows=int(ok.sum()),
+                      failing_share=round(float(np.mean(score[ok] > 1.0)), 3) if ok.any() else None,
+                      worst=round(float(worst.get("score", 0.0)), 3), worst_metric=worst.get("metric"), synth_s=round(dt, 2))
+    bench.finish()
+
+
 def main() -> None:
-    args = parse_args(__doc__.splitlines()[0])
+    def extra(p) -> None:
+        p.add_argument("--seams", action="store_true", help="issue 13 point 2: the local fidelity map on large canvases")
+        p.add_argument("--scale", type=float, default=7.07, help="--seams: region side / exemplar frame side (7.07: 50x the area)")
+        p.add_argument("--seeds", default="1", help="--seams: seeds, comma-separated")
+        p.add_argument("--only", default=None, help="--seams: suite class names, comma-separated")
+
+    args = parse_args(__doc__.splitlines()[0], extra)
+    if args.seams:
+        seams(args)
+        return
     sizes = QUICK if args.quick else SIZES
     repeat = 1 if args.quick else args.repeat
     bench = Bench("synth", "strew.synth region growing vs patch initialisation (Davison et al. Table 1, §6.4)", baseline="patch initialisation + global optimisation, same time", json_path=args.json)
