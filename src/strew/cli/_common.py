@@ -62,6 +62,23 @@ def _interrupted(exc: BaseException) -> bool:
     return False
 
 
+@contextlib.contextmanager
+def _one_line_warnings() -> Iterator[None]:
+    """Warnings raised outside a method's own capture (reading an SVG, say) print as one
+    ``strew: warning: ...`` line, like the method's, not Python's two-line format."""
+    import warnings
+
+    def show(message: Any, category: Any, filename: str, lineno: int, file: Any = None, line: Any = None) -> None:
+        click.echo(f"strew: warning: {message}", err=True)
+
+    saved = warnings.showwarning
+    warnings.showwarning = show
+    try:
+        yield
+    finally:
+        warnings.showwarning = saved
+
+
 def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
     """Run the click group, mapping errors to exit codes (0, 1, 2, 130) and one-line messages.
 
@@ -76,7 +93,7 @@ def run_main(group: click.Group, argv: Sequence[str] | None = None) -> int:
     _ARGV[:] = args  # for meta.command (with '-' as given)
     _STDOUT.clear()
     try:
-        with limits(), _stdin_inputs(args) as args:
+        with limits(), _one_line_warnings(), _stdin_inputs(args) as args:
             with group.make_context("strew", args) as ctx:
                 group.invoke(ctx)
     except click.exceptions.Exit as exc:
