@@ -5,8 +5,11 @@ machine), hence ``slow``."""
 
 from __future__ import annotations
 
+import os
 import re
+from pathlib import Path
 
+import numpy as np
 import pytest
 
 from strew import metrics
@@ -57,7 +60,7 @@ def gallery(tmp_path_factory):
     page = (out / "index.html").read_text()
     captions = {name: int(n) for name, n in re.findall(r'<a href="([^"]+)\.svg">.*?\((\d+) elements\)', page)}
     docs = {p.stem: load(p) for p in out.glob("*.json")}
-    return docs, captions, page
+    return docs, captions, page, out
 
 
 def test_full_gallery_has_every_section(gallery):
@@ -69,7 +72,7 @@ def test_full_gallery_has_every_section(gallery):
 
 
 def test_gallery_lists_every_picture(gallery):
-    docs, captions, _ = gallery
+    docs, captions, *_ = gallery
     assert sorted(docs) == sorted(NAMES) == sorted(captions)
 
 
@@ -88,5 +91,40 @@ def test_no_filled_overlaps_where_promised(gallery, name):
 
 @pytest.mark.parametrize("name", NAMES)
 def test_caption_gives_the_visible_count(gallery, name):
-    docs, captions, _ = gallery
+    docs, captions, *_ = gallery
     assert captions[name] == metrics.visible_count(docs[name])
+
+
+# A few pictures whose method is settled, compared with committed baselines: a visual
+# regression (a shape drawn wrong, a lost layer, a change of palette) shows as a mean
+# difference, where counts and overlaps would not see it. Downsampled to 96 pixels wide in
+# grey, so that antialiasing differences of another renderer build stay far below the
+# tolerance. STREW_UPDATE_BASELINES=1 rewrites them (after a deliberate change).
+BASELINES = ["exemplar-stones", "pack-stones", "program-fig05-partitions-grid", "program-fig07-mappers-puzzle",
+             "ornament-dots-ring", "ornament-spirals-rect"]
+BASELINE_DIR = Path(__file__).resolve().parents[1] / "data" / "gallery_baselines"
+TOLERANCE = 3.0  # mean absolute difference on 0-255 grey
+
+
+def _thumbnail(png: Path):
+    from PIL import Image
+
+    im = Image.open(png).convert("L")
+    w, h = im.size
+    return np.asarray(im.resize((96, max(1, round(96 * h / w))), Image.Resampling.BOX), dtype=float)
+
+
+@pytest.mark.parametrize("name", BASELINES)
+def test_picture_matches_its_baseline(gallery, name):
+    from PIL import Image
+
+    png = gallery[3] / f"{name}.png"
+    got = _thumbnail(png)
+    base = BASELINE_DIR / f"{name}.png"
+    if os.environ.get("STREW_UPDATE_BASELINES") == "1":
+        BASELINE_DIR.mkdir(parents=True, exist_ok=True)
+        Image.fromarray(got.round().astype(np.uint8)).save(base)
+    want = np.asarray(Image.open(base).convert("L"), dtype=float)
+    assert got.shape == want.shape, f"{name}: picture proportions changed ({got.shape} vs {want.shape})"
+    diff = np.abs(got - want).mean()
+    assert diff < TOLERANCE, f"{name}: mean difference {diff:.2f} from tests/data/gallery_baselines (STREW_UPDATE_BASELINES=1 rewrites)"
