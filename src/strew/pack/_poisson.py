@@ -76,57 +76,105 @@ def _bridson(width: float, height: float, r: float, k: int, seed: np.uint64, max
     active[0] = 0
     n = 1
     na = 1
-    while na > 0 and n < cap:
-        a = int(_next(state) * na)
-        if a >= na:
-            a = na - 1
-        i = active[a]
-        px = pts[i, 0]
-        py = pts[i, 1]
-        found = False
-        for _ in range(k):
-            # uniform by area in the annulus [r, 2r]
-            # uniform direction by rejection from the square (no trigonometry)
-            while True:
-                ux = 2.0 * _next(state) - 1.0
-                uy = 2.0 * _next(state) - 1.0
-                q = ux * ux + uy * uy
-                if 1e-12 < q <= 1.0:
-                    break
-            rad = np.sqrt(r2 + _next(state) * 3.0 * r2) / np.sqrt(q)
-            cx = px + rad * ux
-            cy = py + rad * uy
-            if cx < 0.0 or cy < 0.0 or cx >= width or cy >= height:
-                continue
-            gx = int(cx / cell)
-            gy = int(cy / cell)
-            if gx >= gw:
-                gx = gw - 1
-            if gy >= gh:
-                gy = gh - 1
-            ok = True
-            for yy in range(gy, gy + 5):
-                for xx in range(gx, gx + 5):
-                    dx = gxs[yy, xx] - cx
-                    dy = gys[yy, xx] - cy
-                    if dx * dx + dy * dy < r2:
-                        ok = False
+    scan = 0  # the next cell to look at once the front has died out
+    four_r2 = 4.0 * r2
+    while True:
+        while na > 0 and n < cap:
+            a = int(_next(state) * na)
+            if a >= na:
+                a = na - 1
+            i = active[a]
+            px = pts[i, 0]
+            py = pts[i, 1]
+            found = False
+            for _ in range(k):
+                # uniform by area in the annulus [r, 2r]
+                # uniform direction by rejection from the square (no trigonometry)
+                while True:
+                    ux = 2.0 * _next(state) - 1.0
+                    uy = 2.0 * _next(state) - 1.0
+                    q = ux * ux + uy * uy
+                    if 1e-12 < q <= 1.0:
                         break
-                if not ok:
+                rad = np.sqrt(r2 + _next(state) * 3.0 * r2) / np.sqrt(q)
+                cx = px + rad * ux
+                cy = py + rad * uy
+                if cx < 0.0 or cy < 0.0 or cx >= width or cy >= height:
+                    continue
+                gx = int(cx / cell)
+                gy = int(cy / cell)
+                if gx >= gw:
+                    gx = gw - 1
+                if gy >= gh:
+                    gy = gh - 1
+                ok = True
+                for yy in range(gy, gy + 5):
+                    for xx in range(gx, gx + 5):
+                        dx = gxs[yy, xx] - cx
+                        dy = gys[yy, xx] - cy
+                        if dx * dx + dy * dy < r2:
+                            ok = False
+                            break
+                    if not ok:
+                        break
+                if ok:
+                    pts[n, 0] = cx
+                    pts[n, 1] = cy
+                    gxs[gy + 2, gx + 2] = cx
+                    gys[gy + 2, gx + 2] = cy
+                    active[na] = n
+                    na += 1
+                    n += 1
+                    found = True
                     break
-            if ok:
-                pts[n, 0] = cx
-                pts[n, 1] = cy
-                gxs[gy + 2, gx + 2] = cx
-                gys[gy + 2, gx + 2] = cy
-                active[na] = n
-                na += 1
+            if not found:
+                na -= 1
+                active[a] = active[na]
+        if n >= cap:
+            break
+        # Bridson's front can die out before it covers the domain: in a strip narrower
+        # than 2r few candidates of the annulus fall inside it, and k misses in a row end
+        # the run (5 x 27 with r = 3.25 stopped at y = 11). Restart it in the next cell
+        # whose centre is at least 2r from every sample; a point anywhere in that cell
+        # keeps 1.5r from them. Where the front covered the domain there is no such
+        # cell, and the output is what it was.
+        restarted = False
+        while scan < gw * gh:
+            ci = scan // gw
+            cj = scan - ci * gw
+            scan += 1
+            if gxs[ci + 2, cj + 2] > -1e299:
+                continue
+            lo_x = cj * cell
+            hi_x = min((cj + 1) * cell, width)
+            lo_y = ci * cell
+            hi_y = min((ci + 1) * cell, height)
+            ccx = 0.5 * (lo_x + hi_x)
+            ccy = 0.5 * (lo_y + hi_y)
+            far = True
+            for yy in range(max(0, ci - 3), min(gh, ci + 4)):
+                for xx in range(max(0, cj - 3), min(gw, cj + 4)):
+                    dx = gxs[yy + 2, xx + 2] - ccx
+                    dy = gys[yy + 2, xx + 2] - ccy
+                    if dx * dx + dy * dy < four_r2:
+                        far = False
+                        break
+                if not far:
+                    break
+            if far:
+                x = lo_x + _next(state) * (hi_x - lo_x)
+                y = lo_y + _next(state) * (hi_y - lo_y)
+                pts[n, 0] = x
+                pts[n, 1] = y
+                gxs[ci + 2, cj + 2] = x
+                gys[ci + 2, cj + 2] = y
+                active[0] = n
+                na = 1
                 n += 1
-                found = True
+                restarted = True
                 break
-        if not found:
-            na -= 1
-            active[a] = active[na]
+        if not restarted:
+            break
     return pts[:n].copy()
 
 
