@@ -81,8 +81,17 @@ def test_largest_first_scales_cover_more_and_stay_in_range(concave3):
 @pytest.mark.parametrize("scale", [1.0, 2.0])
 def test_shapes_large_against_the_region_finish_with_bounded_work(concave3, scale):
     # issue 21 point 2: at scale 1 a handful of elements fit; the run must not spin
-    arr = pack(concave3, L_SHAPE, scale=(scale, scale), rng=6)
-    nv = pack(concave3, L_SHAPE, scale=(scale, scale), method="naive", rng=6)
+    import warnings
+
+    from strew._feedback import ResultWarning
+
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always", ResultWarning)
+        arr = pack(concave3, L_SHAPE, scale=(scale, scale), rng=6)
+        nv = pack(concave3, L_SHAPE, scale=(scale, scale), method="naive", rng=6)
+    # a handful of large shapes: the run says why and suggests a scale (issue 22 point 3)
+    large = [w for w in said if "large against the region" in str(w.message)]
+    assert len(large) == (len(arr) < 10) + (len(nv) < 10)
     _valid(arr, L_SHAPE)
     info = arr.meta["pack"]
     assert info["stopped"] == "200 consecutive cancellations"
