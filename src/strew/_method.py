@@ -31,7 +31,7 @@ import importlib
 import json
 import math
 import os
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -495,6 +495,29 @@ def stamp(
     if context is not None:
         meta["context"] = {"elements": len(context), "hash": content_hash(context)}
     return arr.replace(meta=meta)
+
+
+# -- inputs --------------------------------------------------------------------------------
+def as_shapes(shapes: Any, name: str = "shapes") -> dict:
+    """A shape library (kind name -> :class:`~strew.Shape`) from a Shape, a sequence of
+    them (kinds ``shape0``, ``shape1``, ...) or a mapping; refuses anything else, an empty
+    library and entries that are not Shapes, naming ``name``."""
+    from .shape import Shape
+
+    if isinstance(shapes, Shape):
+        return {"shape": shapes}
+    if isinstance(shapes, Mapping):
+        out = dict(shapes)
+    elif isinstance(shapes, Sequence) and not isinstance(shapes, str):
+        out = {f"shape{i}": s for i, s in enumerate(shapes)}
+    else:
+        raise InputError(f"{name}: expected a Shape, a list of shapes or a mapping of name -> Shape, got {type(shapes).__name__}")
+    if not out:
+        raise InputError(f"{name}: no shape given")
+    for k, s in out.items():
+        if not isinstance(s, Shape):
+            raise InputError(f"{name}.{k}: must be a Shape, got {type(s).__name__}")
+    return out
 
 
 # -- region and context --------------------------------------------------------------------

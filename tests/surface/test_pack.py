@@ -162,7 +162,7 @@ def test_document_version_2_validation(tmp_path, sphere_dots):
         ((0.1,), {"max_failures": 0}, "max_failures: must be a positive integer"),
         ((0.1,), {"field": "curly"}, "field: expected an OrientationField"),
         (({"a": "not a shape"},), {}, "shapes.a: must be a Shape"),
-        (({},), {}, "shapes: no shapes given"),
+        (({},), {}, "shapes: no shape given"),
         ((0.1,), {"margin": float("nan")}, "margin: must be finite"),
     ],
 )

@@ -28,7 +28,7 @@ import shapely
 
 from .._errors import InputError
 from .._progress import Reporter
-from .._method import MethodSpec, Param, as_region, check_context, empty_result, free_region, is_empty, seed_record, stamp
+from .._method import MethodSpec, Param, as_region, as_shapes, check_context, empty_result, free_region, is_empty, seed_record, stamp
 from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Shape
@@ -115,20 +115,6 @@ SPEC = MethodSpec(
 
 # Step 2 rounds per call of the compiled loop (between progress reports)
 _ROUNDS_PER_TICK = 25
-
-
-def _as_shapes(shapes: Any) -> dict[str, Shape]:
-    if isinstance(shapes, Shape):
-        return {"shape": shapes}
-    if isinstance(shapes, Mapping):
-        out = dict(shapes)
-    elif isinstance(shapes, Sequence) and not isinstance(shapes, str):
-        out = {f"shape{i}": s for i, s in enumerate(shapes)}
-    else:
-        raise InputError(f"shapes: expected a Shape, a list of shapes or a mapping of name -> Shape, got {type(shapes).__name__}")
-    if not out:
-        raise InputError("shapes: no shape given")
-    return out
 
 
 def _weights(weights: Any, kinds: list[str]) -> np.ndarray | None:
@@ -283,7 +269,7 @@ def pack(
     if prm["fits"] is None:
         prm["fits"] = DEFAULTS["fits"] * (2 if prm["scale_choice"] == "fit" else 1)
     gen, seed = seed_record(rng)
-    lib = _as_shapes(shapes)
+    lib = as_shapes(shapes)
     dom = as_region(region)
     if dom is None:
         raise InputError("region: give the region to fill (a Region, a polygon, 'WxH' or (W, H))")

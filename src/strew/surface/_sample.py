@@ -31,6 +31,7 @@ import numba
 import numpy as np
 
 from .._errors import InputError
+from .._method import as_shapes
 from .._limits import check_elements
 from .._progress import Reporter
 from .._rng import as_rng
@@ -111,21 +112,8 @@ def _shapes(shapes_or_radius: Any) -> dict[str, Shape]:
         if not np.isfinite(r) or r <= 0:
             raise InputError(f"radius: must be a positive number, got {shapes_or_radius!r}")
         return {"dot": Shape.circle(r)}
-    if isinstance(shapes_or_radius, Arrangement):
-        out = shapes_or_radius.shapes
-    elif isinstance(shapes_or_radius, Shape):
-        out = {"shape": shapes_or_radius}
-    elif isinstance(shapes_or_radius, Mapping):
-        out = dict(shapes_or_radius)
-    elif isinstance(shapes_or_radius, Sequence) and not isinstance(shapes_or_radius, str):
-        out = {f"shape{i}": s for i, s in enumerate(shapes_or_radius)}
-    else:
-        raise InputError(f"shapes: expected a radius, a Shape, a list or a mapping of Shapes, got {type(shapes_or_radius).__name__}")
-    if not out:
-        raise InputError("shapes: no shapes given")
+    out = as_shapes(shapes_or_radius.shapes if isinstance(shapes_or_radius, Arrangement) else shapes_or_radius)
     for k, s in out.items():
-        if not isinstance(s, Shape):
-            raise InputError(f"shapes.{k}: must be a Shape, got {type(s).__name__}")
         if s.radius <= 0:
             raise InputError(f"shapes.{k}: empty shape (zero bounding radius)")
     return out
