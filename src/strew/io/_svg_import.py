@@ -121,6 +121,9 @@ _LENGTH = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-z]*
 # are similar too and scale and rotation come out exact.
 _SIGNATURE_TOLERANCE = 1e-3
 _IDENTITY = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+# Most objects whose signatures are computed in one batch (see _Reader.object_signature);
+# 1 computes them one by one, as the tests compare.
+_MAX_BATCH = 256
 _MIRROR = np.array([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 
 
@@ -608,18 +611,27 @@ class _Doc:
 
     def signature(self, parts: list[_Part], coarse: _Flat) -> _Signature | None:
         """Similarity invariants of ``parts``, flattened relative to their size (see _SIGNATURE_TOLERANCE)."""
-        if not coarse.paths:
-            return None
-        pts = np.concatenate([p.points for p in coarse.paths])
-        radius = float(np.sqrt(((pts - pts.mean(axis=0)) ** 2).sum(axis=1)).max())
-        if not radius > 0:
-            return None
-        tol = _SIGNATURE_TOLERANCE * radius
-        # without curves the flattening does not depend on the tolerance: reuse it
-        sig = _signature(self.flatten(parts, _IDENTITY, tol).paths if coarse.curves else coarse.paths)
-        if sig is not None:
-            sig.tolerance = tol
-        return sig
+        return self.signatures([(parts, coarse)])[0]
+
+    def signatures(self, batch: list[tuple[list[_Part], _Flat]]) -> list[_Signature | None]:
+        """:meth:`signature` of many objects, the moments computed in one batch (see :func:`_signatures`)."""
+        todo: list[tuple[int, list[Path], float]] = []
+        for i, (parts, coarse) in enumerate(batch):
+            if not coarse.paths:
+                continue
+            pts = coarse.paths[0].points if len(coarse.paths) == 1 else np.concatenate([p.points for p in coarse.paths])
+            radius = float(np.sqrt(((pts - pts.mean(axis=0)) ** 2).sum(axis=1)).max())
+            if not radius > 0:
+                continue
+            tol = _SIGNATURE_TOLERANCE * radius
+            # without curves the flattening does not depend on the tolerance: reuse it
+            todo.append((i, self.flatten(parts, _IDENTITY, tol).paths if coarse.curves else coarse.paths, tol))
+        out: list[_Signature | None] = [None] * len(batch)
+        for (i, _, tol), sig in zip(todo, _signatures([paths for _, paths, _ in todo])):
+            if sig is not None:
+                sig.tolerance = tol
+                out[i] = sig
+        return out
 
     def path_data(self, parts: list[_Part], frame: np.ndarray) -> str | None:
         """Exact path data of ``parts`` mapped by ``frame``, or None where it cannot be exact.
@@ -938,6 +950,79 @@ def _signature(paths: list[Path]) -> _Signature | None:
     )
 
 
+def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
+    """:func:`_signature` of many objects at once (issue 17.3).
+
+    Objects drawn by one closed path whose polygon is valid (most objects) go through
+    shapely's array functions and numpy once for the whole batch: polygons, validity,
+    orientation, edges, then the moments of every edge, summed per object; the rest go
+    through :func:`_signature` one by one. The same figures up to rounding (the sums run
+    in another order).
+    """
+    out: list[_Signature | None] = [None] * len(batch)
+    one = [i for i, paths in enumerate(batch)
+           if len(paths) == 1 and paths[0].closed and len(paths[0].points) >= 3 and not (paths[0].points[0] == paths[0].points[-1]).all()]
+    polys = np.zeros(0, dtype=object)
+    if one:
+        pts_list = [batch[i][0].points for i in one]
+        lens = np.array([len(p) for p in pts_list])
+        coords = np.concatenate(pts_list)
+        polys = shapely.polygons(shapely.linearrings(coords, indices=np.repeat(np.arange(len(one)), lens)))
+        good = shapely.is_valid(polys) & (shapely.area(polys) > 0)
+    else:
+        good = np.zeros(0, dtype=bool)
+    rest = set(range(len(batch))) - {one[j] for j in np.flatnonzero(good)}
+    for i in sorted(rest):
+        out[i] = _signature(batch[i])
+    sel = np.flatnonzero(good)
+    if not len(sel):
+        return out
+    polys = polys[sel]
+    n = len(sel)
+    c, ridx = shapely.get_coordinates(shapely.get_exterior_ring(shapely.orient_polygons(polys)), return_index=True)
+    z = c[:, 0] + 1j * c[:, 1]
+    same = ridx[1:] == ridx[:-1]
+    a, b, obj = z[:-1][same], z[1:][same], ridx[:-1][same]
+    d = b - a
+    # area and centroid in closed form (as _area_centroid), summed per object
+    e0 = d * (np.conj(a) + np.conj(d) / 2) / 2j
+    e1 = d * ((a * np.conj(a)).real + (a * np.conj(d)).real + (d * np.conj(d)).real / 3) / 2j
+    c0 = np.bincount(obj, e0.real, n) + 1j * np.bincount(obj, e0.imag, n)
+    c1 = np.bincount(obj, e1.real, n) + 1j * np.bincount(obj, e1.imag, n)
+    size = c0.real
+    centroid = c1 / c0
+    # moments about each object's centroid (as _moments, area case)
+    q = len(_GL_T)
+    a, b = a - centroid[obj], b - centroid[obj]
+    d = b - a
+    zq = (a[:, None] + _GL_T[None, :] * d[:, None]).ravel()
+    w = (np.conj(zq) * np.repeat(d, q)) * np.tile(_GL_W, len(d))
+    zk = np.empty((len(zq), _KMAX + 1), complex)
+    zk[:, 0] = 1.0
+    zk[:, 1:] = np.cumprod(np.broadcast_to(zq[:, None], (len(zq), _KMAX)), axis=1)
+    starts = np.searchsorted(obj, np.arange(n)) * q  # edges come object by object
+    mom = np.add.reduceat(zk * w[:, None], starts, axis=0) / 2j
+    polar = (np.add.reduceat((zq * np.conj(zq)).real * w, starts) / 2 / 2j).real
+    outlines = shapely.boundary(polys)
+    for j, k in enumerate(sel.tolist()):
+        i = one[k]
+        pts = batch[i][0].points
+        if not size[j] > 0:
+            continue
+        cen = np.array([centroid[j].real, centroid[j].imag])
+        out[i] = _Signature(
+            points=pts,
+            outline=outlines[j],
+            size=float(size[j]),
+            is_area=True,
+            centroid=cen,
+            moments=mom[j],
+            gyration=math.sqrt(max(float(polar[j]), 0.0) / float(size[j])),
+            radius=float(np.sqrt(((pts - cen) ** 2).sum(axis=1)).max()),
+        )
+    return out
+
+
 def _invariants(sig: _Signature | None) -> list[float]:
     """size, radius, gyration, tolerance, +-1 (area or lines), then ``|c_k| / (size gyration^k)``
     for k = 2 .. _KMAX: the similarity invariants :meth:`_Reader.candidate_kinds` compares."""
@@ -1058,6 +1143,12 @@ class _Reader:
         self.outlines: dict[tuple[Any, ...], tuple[_Kind, np.ndarray, np.ndarray]] = {}
         self._rows = 0
         self._next: dict[str, int] = {}
+        # signatures computed ahead, in batches (see :meth:`object_signature`)
+        self._ahead: list[tuple[str, ET.Element, np.ndarray, bool]] = []
+        self._pos = 0  # index in _ahead of the object being read
+        self._batch = 1
+        self._fetched: dict[int, tuple[list[_Part], _Flat]] = {}
+        self._sigs: dict[int, _Signature | None] = {}
 
     def unique(self, name: str) -> str:
         if name not in self.names:
@@ -1205,11 +1296,9 @@ class _Reader:
         outline = self.control_outline(el, m, key) if source is not None else None
         if outline is not None and self.moved_copy(outline, el, void, hidden):
             return
-        parts = doc.parts(el, m, doc.inherited_props(el), show=True) if not void else _visible_parts(doc, el, m)
-        flat = doc.flatten(parts, _IDENTITY, doc.tolerance)
+        parts, flat, sig = self.object_signature(el, m, void)
         if not flat.paths:
             return
-        sig = doc.signature(parts, flat)
         placed: tuple[_Kind, np.ndarray] | None = None
         if sig is not None:
             for i in self.candidate_kinds(sig):
@@ -1234,6 +1323,53 @@ class _Reader:
             self.sources[source] = [placed[0], placed[1], _compose(m, doc.transform(el)), None]
         if outline is not None and len(parts) == 1 and outline[0] not in self.outlines:
             self.outlines[outline[0]] = (placed[0], placed[1], outline[1])
+
+    def _parts_flat(self, el: ET.Element, m: np.ndarray, void: bool) -> tuple[list[_Part], _Flat]:
+        doc = self.doc
+        parts = doc.parts(el, m, doc.inherited_props(el), show=True) if not void else _visible_parts(doc, el, m)
+        return parts, doc.flatten(parts, _IDENTITY, doc.tolerance)
+
+    def object_signature(self, el: ET.Element, m: np.ndarray, void: bool) -> tuple[list[_Part], _Flat, _Signature | None]:
+        """Parts, flattening and signature of the object being read (``_ahead[_pos]``).
+
+        Signatures are computed for this object and up to ``_batch - 1`` of the objects
+        after it at once (:meth:`_Doc.signatures`; issue 17.3: per object, the numpy and
+        shapely calls cost more than their arithmetic). The batch doubles while every
+        object computed ahead needs its signature and falls back to 1 when one did not (a
+        copy placed by :meth:`copy_of` or :meth:`moved_copy`), so that files of copies do
+        not pay for signatures they never use. Objects ahead whose reading fails are left
+        to be read (and to fail) in their turn.
+        """
+        key = id(el)
+        if key in self._sigs:
+            parts, flat = self._fetched.pop(key)
+            return parts, flat, self._sigs.pop(key)
+        if self._fetched or self._sigs:  # computed ahead and not used: a copy took them
+            self._fetched.clear()
+            self._sigs.clear()
+            self._batch = 1
+        batch = [(el, *self._parts_flat(el, m, void))]
+        doc = self.doc
+        for what, other, om, _ in self._ahead[self._pos + 1:]:
+            if len(batch) >= self._batch:
+                break
+            # paths and basic shapes only: a group's parts may look up clones, whose
+            # missing targets must be noted in document order
+            if what not in ("object", "void-object") or _local(other.tag) not in _SHAPE_TAGS or (id(other), False) in self.by_target:
+                continue
+            if other.get("id") is not None and other.get("id") in doc.referenced:
+                continue
+            try:
+                batch.append((other, *self._parts_flat(other, om, what == "void-object")))
+            except (InputError, ValueError, FloatingPointError):
+                break
+        sigs = doc.signatures([(parts, flat) if flat.paths else ([], _Flat([], {}, False)) for _, parts, flat in batch])
+        for (other, parts, flat), sig in zip(batch[1:], sigs[1:]):
+            self._fetched[id(other)] = (parts, flat)
+            self._sigs[id(other)] = sig
+        if len(batch) == self._batch:
+            self._batch = min(2 * self._batch, _MAX_BATCH)
+        return batch[0][1], batch[0][2], sigs[0]
 
     def control_outline(self, el: ET.Element, m: np.ndarray, key: str | None) -> tuple[tuple[Any, ...], np.ndarray] | None:
         """``(hash, points)``: the control points of a path or basic shape in world coordinates
@@ -1388,7 +1524,8 @@ class _Reader:
         doc = self.doc
         if all_symbols:
             self.symbol_kinds()
-        for what, el, m, hidden in doc.walk():  # walk() polls should_cancel per object
+        self._ahead = list(doc.walk())  # walk() polls should_cancel per object
+        for self._pos, (what, el, m, hidden) in enumerate(self._ahead):
             if what == "region":
                 self.region_els.append((el, m))
             elif what in ("use", "void-use"):
