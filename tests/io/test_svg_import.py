@@ -569,3 +569,84 @@ def test_should_cancel_stops_the_import_within_one_object(reader, after):
 def test_should_cancel_must_be_callable():
     with pytest.raises(InputError, match="should_cancel"):
         read_svg(_many_paths(2), should_cancel=True)
+
+
+def _random_drawing(rng: np.random.Generator, n: int) -> str:
+    """Objects of every route through kind detection, shuffled: distinct polygons (some
+    self-intersecting), exact and moved copies of an L and of a curved leaf, rects,
+    circles, a touching group, a path with a hole and an open polyline."""
+    parts = []
+    for _ in range(n):
+        x, y = rng.uniform(0, 400, 2)
+        a, s = rng.uniform(0, 360), rng.uniform(0.5, 2)
+        pick = int(rng.integers(9))
+        if pick == 0:  # distinct polygon (random vertex order: sometimes self-intersecting)
+            k = int(rng.integers(3, 9))
+            pts = rng.uniform(-5, 5, (k, 2)) + (x, y)
+            parts.append('<polygon points="' + " ".join(f"{p:.3f},{q:.3f}" for p, q in pts) + '"/>')
+        elif pick == 1:  # a copy under a transform
+            parts.append(f'<path transform="translate({x:.2f} {y:.2f}) rotate({a:.1f}) scale({s:.2f})" d="{LEAF}"/>')
+        elif pick == 2:  # a moved copy with baked coordinates
+            pts = apply(tr(x, y) @ rot(a) @ sc(s), HOOK)
+            parts.append('<path d="M' + " L".join(f"{p:.5f},{q:.5f}" for p, q in pts) + ' Z"/>')
+        elif pick == 3:
+            parts.append(f'<rect x="{x:.2f}" y="{y:.2f}" width="{3 * s:.2f}" height="{2 * s:.2f}"/>')
+        elif pick == 4:
+            parts.append(f'<circle cx="{x:.2f}" cy="{y:.2f}" r="{s:.2f}"/>')
+        elif pick == 5:  # a group of two touching parts: one object
+            parts.append(f'<g transform="translate({x:.2f} {y:.2f}) rotate({a:.1f})"><rect width="4" height="1"/><rect width="1" height="4"/></g>')
+        elif pick == 6:  # a hole
+            parts.append(f'<path transform="translate({x:.2f} {y:.2f})" d="M0,0 H6 V6 H0 Z M2,2 H4 V4 H2 Z"/>')
+        elif pick == 7:  # open polyline
+            pts = rng.uniform(-5, 5, (4, 2)) + (x, y)
+            parts.append('<polyline points="' + " ".join(f"{p:.3f},{q:.3f}" for p, q in pts) + '"/>')
+        else:  # a distinct curved shape
+            c = rng.uniform(-4, 4, 4)
+            parts.append(f'<path transform="translate({x:.2f} {y:.2f})" d="M0,0 C{c[0]:.2f},{c[1]:.2f} {c[2]:.2f},{c[3]:.2f} 6,0 Q3,-3 0,0 Z"/>')
+    return HEAD + "".join(parts) + "</svg>"
+
+
+@settings(max_examples=12, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), n=st.integers(1, 90))
+def test_batched_signatures_match_one_by_one(seed, n):
+    """Issue 17.3: signatures computed ahead in batches give the kinds, their order, the
+    poses (1e-9 relative) and the shapes of reading every object on its own."""
+    from strew.io import _svg_import
+
+    text = _random_drawing(np.random.default_rng(seed), n)
+    batched = read_svg(text)
+    with pytest.MonkeyPatch.context() as m:
+        m.setattr(_svg_import, "_MAX_BATCH", 1)
+        single = read_svg(text)
+    assert batched.kinds == single.kinds
+    assert np.array_equal(batched.kind, single.kind)
+    for f in ("x", "y", "scale"):
+        u, v = getattr(batched, f), getattr(single, f)
+        assert np.all(np.abs(u - v) <= 1e-9 * np.maximum(1.0, np.abs(v))), f
+    assert np.all(np.abs(np.angle(np.exp(1j * (batched.rotation - single.rotation)))) <= 1e-9)
+    for k in batched.kinds:
+        pa, pb = batched.shapes[k].paths, single.shapes[k].paths
+        assert len(pa) == len(pb)
+        for p, q in zip(pa, pb):
+            assert p.closed == q.closed and p.points.shape == q.points.shape
+            assert np.allclose(p.points, q.points, rtol=0, atol=1e-9 * max(1.0, float(np.abs(q.points).max())))
+
+
+def test_batch_grows_only_while_signatures_are_used():
+    """Distinct shapes are read in growing batches; a file of copies reads ahead none."""
+    from strew.io import _svg_import
+
+    rng = np.random.default_rng(5)
+    angles = np.sort(rng.uniform(0, 2 * np.pi, (200, 6)), axis=1)
+    pts = rng.uniform(2, 6, (200, 6, 1)) * np.stack([np.cos(angles), np.sin(angles)], axis=2)  # star-shaped: simple
+    distinct = HEAD + "".join(
+        '<polygon points="' + " ".join(f"{i * 20 + p:.3f},{q:.3f}" for p, q in poly) + '"/>' for i, poly in enumerate(pts)) + "</svg>"
+    doc = _svg_import._Doc(distinct, 0.05)
+    reader = _svg_import._Reader(doc)
+    reader.read(all_symbols=False)
+    assert len(reader.kinds) == 200 and reader._batch > 64
+    copies = HEAD + "".join(f'<path transform="translate({i * 20} 0)" d="{LEAF}"/>' for i in range(200)) + "</svg>"
+    doc = _svg_import._Doc(copies, 0.05)
+    reader = _svg_import._Reader(doc)
+    reader.read(all_symbols=False)
+    assert len(reader.kinds) == 1 and reader._batch <= 2 and not reader._sigs
