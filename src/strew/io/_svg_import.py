@@ -1142,6 +1142,7 @@ class _Reader:
         # control-point hash of single-part objects -> (kind, kind frame -> world, world control points)
         self.outlines: dict[tuple[Any, ...], tuple[_Kind, np.ndarray, np.ndarray]] = {}
         self._rows = 0
+        self._lrows: list[list[float]] = []  # the table's rows as Python lists (see _candidates_few)
         self._next: dict[str, int] = {}
         # signatures computed ahead, in batches (see :meth:`object_signature`)
         self._ahead: list[tuple[str, ET.Element, np.ndarray, bool]] = []
@@ -1503,6 +1504,7 @@ class _Reader:
             for i in range(self._rows, n):
                 k = self.kinds[i]
                 row = self._table[i] = _invariants(k.signature if k.matchable else None)
+                self._lrows.append(row)
                 if math.isfinite(row[0]):
                     self._grid.setdefault(_cell(row), []).append(i)
             self._rows = n
@@ -1517,6 +1519,8 @@ class _Reader:
         near = [grid[c] for c in _cells_near(inv) if c in grid]
         if not near:
             return np.zeros(0, dtype=np.intp)
+        if sum(len(v) for v in near) <= 16:  # a few kinds: plain floats beat numpy's call cost
+            return _candidates_few(self._lrows, sorted(i for v in near for i in v), sig, inv)
         rows = np.sort(np.concatenate([np.asarray(v, dtype=np.intp) for v in near]))
         return rows[_candidates(self._table[rows], sig, inv)]
 
@@ -1591,6 +1595,35 @@ def _candidates(table: np.ndarray, sig: _Signature, row: list[float] | None = No
         # the full match, n^2 in all (10 MB of distinct polygons: 28 s/MB against 11 at 1 MB)
         ok &= ~(np.abs(mk - mo) > 0.01 + 0.02 * np.maximum(mk, mo)).any(axis=1)
     return np.flatnonzero(ok)
+
+
+def _candidates_few(table: list[list[float]], rows: list[int], sig: _Signature, row: list[float]) -> list[int]:
+    """:func:`_candidates` on a few rows of the table, in plain floats (the same tests and the
+    same answers; a non-finite number anywhere goes to :func:`_candidates`, whose NaN rules
+    it then keeps)."""
+    vals = [table[i] for i in rows]
+    if not all(math.isfinite(v) for r in vals for v in r) or not all(math.isfinite(v) for v in row):
+        sub = np.array(vals).reshape(len(vals), len(row))
+        return [rows[j] for j in _candidates(sub, sig, row)]
+    out = []
+    mo = row[5:]
+    for i, r in zip(rows, vals):
+        size, radius, gyration, tol, area = r[:5]
+        if area != row[4]:
+            continue
+        if not size > 0:  # an infinite scale: numpy's rules
+            out.extend(i for _ in _candidates(np.array([r]), sig, row))
+            continue
+        scale = math.sqrt(sig.size / size) if sig.is_area else sig.size / size
+        t = max(sig.tolerance, scale * tol)
+        if abs(sig.radius - scale * radius) > 2 * t + 0.02 * sig.radius:
+            continue
+        if abs(sig.gyration - scale * gyration) > 2 * t + 0.02 * sig.gyration:
+            continue
+        if any(abs(a - b) > 0.01 + 0.02 * max(a, b) for a, b in zip(r[5:], mo)):
+            continue
+        out.append(i)
+    return out
 
 
 _SOURCE_ATTRS = {
