@@ -1,7 +1,7 @@
 """Tiled synthesis of worlds too large for one process (issue 19).
 
 A rectangular world ``[0, W] x [0, H]`` is cut into square tiles of side ``tile_size``.
-Following Wei's parallel Poisson disk sampling (SIGGRAPH 2008, §3 "phase groups"), the
+Following Wei's parallel Poisson disk sampling (SIGGRAPH 2008; its phase groups), the
 tiles are coloured in a 2 x 2 pattern: tile ``(i, j)`` has phase ``(j % 2) * 2 + i % 2``.
 Two tiles of one phase are a whole tile apart, so they never share a border zone and
 can run at once. A tile runs the method (any method of the contract in
@@ -9,7 +9,7 @@ can run at once. A tile runs the method (any method of the contract in
 the finished elements of its lower-phase neighbours near it as ``context``; it keeps the
 elements whose centre lies in its own half-open rectangle ``[x0, x1) x [y0, y1)``.
 
-Departure from Wei §3: Wei runs the phases as global barriers (all of phase 0, then all
+Departure from Wei: Wei runs the phases as global barriers (all of phase 0, then all
 of phase 1, ...). Here a tile waits only for its (up to 8) lower-phase neighbours, a
 task graph rather than barriers; the inputs of each tile are the same, so the result is
 the same, and a slow tile holds back only its neighbours.
@@ -37,7 +37,7 @@ import numpy as np
 
 from ._errors import InputError
 
-__all__ = ["Tile", "plan", "world", "tiled", "WorldInfo", "tile_rng", "DISTRIBUTED_HINT"]
+__all__ = ["Tile", "plan", "world", "tiled", "WorldInfo", "tile_rng", "border_band", "DISTRIBUTED_HINT"]
 
 DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 
@@ -119,6 +119,15 @@ def _owned(arr: Any, t: Tile, size: tuple[float, float]) -> np.ndarray:
     right = (x < x1) | ((x1 >= size[0]) & (x <= x1))
     top = (y < y1) | ((y1 >= size[1]) & (y <= y1))
     return (x >= x0) & (y >= y0) & right & top
+
+
+def border_band(arr: Any, t: Tile, halo: float) -> Any:
+    """The elements of tile ``t``'s result that a neighbour can see: centres within
+    ``2 halo`` of its rectangle's edges (the only part sent on to dependent tiles)."""
+    x0, y0, x1, y1 = t.rect
+    d = 2 * halo
+    inner = (arr.x > x0 + d) & (arr.x < x1 - d) & (arr.y > y0 + d) & (arr.y < y1 - d)
+    return arr.select(~inner)
 
 
 def _near(arr: Any, rect: tuple[float, float, float, float]) -> np.ndarray:
@@ -389,7 +398,7 @@ def _run_serial(job: _Job, tiles: list[Tile], nx: int, ny: int, done: Callable[.
                 if waiting[d] == 0:
                     del results[d]
             if waiting[t.index]:
-                results[t.index] = arr
+                results[t.index] = border_band(arr, t, job.halo)
             ndone += 1
             done(t, arr, ndone)
 
@@ -401,26 +410,39 @@ def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done:
 
     [job_f] = client.scatter([job], broadcast=True, hash=False)
     futures: dict[int, Any] = {}
+    bands: dict[int, Any] = {}
     run_id = uuid.uuid4().hex[:12]  # keys unique on a shared cluster
     deps = {t.index: _neighbours(t, nx, ny) for t in tiles}
+    needed = {d for ds in deps.values() for d in ds}
     for phase in range(4):  # submit in phase order so that dependencies exist
         for t in tiles:
             if t.phase == phase:
-                futures[t.index] = client.submit(run_tile, job_f, t, *[futures[d] for d in deps[t.index]],
+                futures[t.index] = client.submit(run_tile, job_f, t, *[bands[d] for d in deps[t.index]],
                                                  key=f"strew-tile-{run_id}-{t.index}", pure=False)
+                if t.index in needed:  # dependents get only the border band (less to send)
+                    bands[t.index] = client.submit(border_band, futures[t.index], t, job.halo,
+                                                   key=f"strew-band-{run_id}-{t.index}", pure=False)
     by_key = {futures[t.index].key: t for t in tiles}
+    waiting = {d: 0 for d in needed}
+    for ds in deps.values():
+        for d in ds:
+            waiting[d] += 1
     ndone = 0
     try:
         for fut in as_completed(list(futures.values())):
             _check_cancel(should_cancel)
             t = by_key[fut.key]
             arr = fut.result()
+            for d in deps[t.index]:  # a band is dropped once its last dependent finished
+                waiting[d] -= 1
+                if waiting[d] == 0:
+                    bands.pop(d).release()
             ndone += 1
             done(t, arr, ndone)
-            del futures[t.index]  # the dependents hold their own references to it
+            del futures[t.index]  # the band tasks hold their own references to it
             fut.release()
     finally:
-        for f in futures.values():
+        for f in [*futures.values(), *bands.values()]:
             f.cancel()
 
 
