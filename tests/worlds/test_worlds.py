@@ -225,3 +225,18 @@ def test_cli_info_summarises_a_dataset_without_loading_it(worlds, capsys):
     assert s["counts"] == arr.counts()
     lo = [float(arr.x.min()), float(arr.y.min()), float(arr.x.max()), float(arr.y.max())]
     assert s["centre_bounds"] == pytest.approx(lo)
+
+
+def test_synth_tiles_never_overlap_across_borders():
+    # synth runs through the tiler without overlaps; it is not seamless yet (its context
+    # is an obstacle, not a neighbourhood: border strips 0.45-0.69x the interior's density)
+    from strew.io import load
+
+    ex = load(Path(__file__).parents[2] / "examples" / "exemplars" / "stones.svg")
+    a = tiled("synth", ex, (300, 200), tile_size=100, seed=1)
+    b = tiled("synth", ex, (300, 200), tile_size=100, seed=1)
+    assert len(a) > 50 and a.equals(b)
+    assert overlapping_pairs(a) == 0
+    assert ((a.x >= 0) & (a.x <= 300) & (a.y >= 0) & (a.y <= 200)).all()
+    with pytest.raises(InputError, match="^method: 'ornament' does not tile"):
+        world("ornament", "dots", (200, 200), tile_size=100)
