@@ -243,8 +243,10 @@ def _connect(scheduler: str | None, workers: int, processes: bool, timeout: floa
             return Client(scheduler, timeout=timeout, set_as_default=False), None
         except (OSError, TimeoutError, ValueError) as exc:
             raise InputError(f"scheduler: no Dask scheduler answers at {scheduler} within {timeout:g} s ({type(exc).__name__})") from None
+    # ":0": any free port for the dashboard (its link is printed); the default :8787
+    # fails the start when another cluster or program holds it
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes,
-                           dashboard_address=":0" if processes else None, silence_logs=40)
+                           dashboard_address=":0", silence_logs=40)
     return Client(cluster, set_as_default=False), cluster
 
 
