@@ -1105,6 +1105,7 @@ class _Kind:
     max_scale: float = 1.0
     matchable: bool = True
     strew_symbol: bool = False  # one of a strew export's kind symbols (kept even when unused)
+    flat: _Flat | None = None  # its parts flattened in the reference frame, where new_kind had them
 
 
 @dataclass
@@ -1180,6 +1181,7 @@ class _Reader:
             origin = np.array([(bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2])
         kind = _Kind(self.unique(name) if register else name, key, parts, origin, mirrored, style=_style(self.doc, parts))
         kind.signature = self.doc.signature(parts, flat) if known is None else known[1]
+        kind.flat = flat
         if register:
             self.kinds.append(kind)
         return kind
@@ -1545,6 +1547,12 @@ class _Reader:
         if kind.mirrored:
             frame = _compose(_MIRROR, frame)
         tol = doc.tolerance / max(1.0, kind.max_scale)
+        known = kind.flat
+        if known is not None and known.paths and not known.curves and not known.labels and not kind.mirrored and not centred:
+            # straight lines flatten alike at any tolerance: move the kind's own flattening
+            # into its frame instead of flattening again (issue 17.3; the same points up to
+            # rounding: one translation after the parts' maps instead of one composed map)
+            return Shape(tuple(Path(p.points - origin, p.closed) for p in known.paths), None, kind.style, {})
         flat = doc.flatten(kind.parts, frame, tol)
         if centred:
             b = _bounds(flat.paths)
