@@ -85,6 +85,7 @@ from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
 from ._svg_flatten import EMPTY as _EMPTY
+from ._svg_flatten import _fmt
 from ._svg_flatten import ARC, Segments, flatten, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
 
 __all__ = ["read_svg", "read_svg_shapes", "read_svg_region", "SVGImportWarning", "HIDDEN_CHOICES"]
@@ -247,14 +248,6 @@ def _is_region_el(el: ET.Element, strew_doc: bool) -> bool:
     if strew_doc:  # in a strew export a kind may be called "region": only the layer's id counts
         return ident == "strew-region"
     return ident in ("region", "strew-region") or (_label(el) or "").lower() == "region"
-
-
-def _fmt(v: float) -> str:
-    v = float(v)
-    if abs(v) < 1e-10:  # rounding noise from transforms (e.g. -8.9e-16)
-        v = 0.0
-    s = format(v, ".12g")
-    return "0" if s in ("-0", "0") else s
 
 
 # -- the document -----------------------------------------------------------------------
