@@ -47,7 +47,9 @@ def _layer(m: str) -> int:
 
 
 def _graph() -> dict[str, set[str]]:
-    modules = {_name(p): p for p in SRC.rglob("*.py")}
+    # strew/_examples (the examples folder, shipped in the wheel) holds user scripts: they
+    # use the public API from above, like any script, and are no layer of the library
+    modules = {_name(p): p for p in SRC.rglob("*.py") if "_examples" not in p.relative_to(SRC).parts}
     edges: dict[str, set[str]] = {}
     for m, p in modules.items():
         pkg = m if p.name == "__init__.py" else m.rsplit(".", 1)[0]

@@ -8,7 +8,7 @@ from collections import Counter
 import numpy as np
 import pytest
 import shapely
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from strew import Arrangement, InputError, Region, Shape, load, save
@@ -152,6 +152,10 @@ def _arrangement(draw):
 
 @settings(max_examples=40)
 @given(_arrangement())
+@example(Arrangement({"stem": Shape.circle(1.0, style={"fill": "none", "stroke": "#000"})}, ["stem"], [0.0], [0.0], [0.0], [1.0],
+                     columns={"parts": [[{"paths": [{"points": [[0, 0], [1, 1], [2, 2]], "closed": True}],
+                                          "style": {"fill": "#c8413b", "stroke": "#2b2f36", "stroke_width": 0.25}}]],
+                              "order": [0]}))
 def test_parts_round_trip_property(arr):
     from strew.io.document import dumps, loads
     from strew.io.svg import read_svg, to_svg
@@ -160,7 +164,11 @@ def test_parts_round_trip_property(arr):
     back = read_svg(to_svg(arr))
     assert np.array_equal(back.kind_names, arr.kind_names) and back.counts() == arr.counts()
     # geometry kept: each element's world geometry within rounding (10 significant digits)
-    d = shapely.hausdorff_distance(arr.geometry, back.geometry)
+    # (a part of collinear points has an empty geometry, and must stay empty: hypothesis
+    # found one, whose Hausdorff distance is NaN)
+    empty = shapely.is_empty(arr.geometry)
+    assert np.array_equal(empty, shapely.is_empty(back.geometry))
+    d = shapely.hausdorff_distance(arr.geometry[~empty], back.geometry[~empty])
     assert np.all(d <= 1e-6)
     none = (None,) * len(arr)  # a column of nulls only is no column
     for pa, pb in zip(arr.element_parts, back.element_parts or none):
