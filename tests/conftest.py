@@ -2,13 +2,19 @@
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, settings
 from hypothesis import strategies as st
 
 settings.register_profile("strew", deadline=None, suppress_health_check=[HealthCheck.too_slow], max_examples=60)
-settings.load_profile("strew")
+# CI (the landing gate) draws the same examples on every run, so that a verdict depends on
+# the code, not on the draw; a local run keeps exploring new ones (both of this round's
+# hypothesis finds, a Poisson strip and an empty part geometry, came from local runs)
+settings.register_profile("ci", parent=settings.get_profile("strew"), derandomize=True, database=None)
+settings.load_profile("ci" if os.environ.get("CI") else "strew")
 
 
 @pytest.fixture
