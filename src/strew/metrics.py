@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 import shapely
 
+from . import _periodic
 from ._errors import InputError
 from ._fidelity import FidelityReport, MetricResult, fidelity, nearest_neighbor_distances, pair_correlation
 from .arrangement import Arrangement
@@ -34,6 +35,8 @@ __all__ = [
     "MetricResult",
     "pair_correlation",
     "nearest_neighbor_distances",
+    "wrap_overlaps",
+    "repeat_report",
 ]
 
 
@@ -306,3 +309,277 @@ def summary(arr: Arrangement, region: Region | None = None) -> dict[str, Any]:
         out["outside"] = int(len(outside(arr, reg)))
         out["region_area"] = reg.area
     return out
+
+
+# -- repeat tiles (issue 18) --------------------------------------------------------------
+
+
+def _tile_of(arr: Arrangement, tile: Any) -> tuple[float, float, float, float]:
+    f = _periodic.frame(arr) if tile is None else _periodic._as_frame(tile, "tile")
+    if f is None:
+        raise InputError("repeat: the arrangement is not periodic (no meta.periodic); give tile=[x0, y0, W, H] to judge it as one")
+    return f
+
+
+def _neighbourhood(arr: Arrangement, f: tuple[float, float, float, float]) -> tuple[Arrangement, np.ndarray, np.ndarray]:
+    """The tile's elements and every copy of the repeat whose bounding box reaches the
+    canonical elements' bounding box (so every overlap of the repeat shows as a pair with
+    one canonical element). Returns the arrangement, the original index and the tile
+    offset ``(m, 2)`` int of each row (the first ``len(arr)`` rows are ``arr``, offset 0)."""
+    x0, y0, w, h = f
+    n = len(arr)
+    b = shapely.bounds(arr.geometry)
+    ok = np.isfinite(b).all(axis=1)
+    if not ok.any():
+        return arr, np.arange(n), np.zeros((n, 2), np.int64)
+    hx0, hy0 = b[ok, 0].min(), b[ok, 1].min()
+    hx1, hy1 = b[ok, 2].max(), b[ok, 3].max()
+    # elements larger than the tile reach copies further than the next one
+    kx = min(3, int(np.ceil((hx1 - hx0) / w)))
+    ky = min(3, int(np.ceil((hy1 - hy0) / h)))
+    idx, off = [np.arange(n)], [np.zeros((n, 2), np.int64)]
+    for j in range(-ky, ky + 1):
+        for i in range(-kx, kx + 1):
+            if i == 0 and j == 0:
+                continue
+            dx, dy = i * w, j * h
+            hit = ok & (b[:, 2] + dx > hx0) & (b[:, 0] + dx < hx1) & (b[:, 3] + dy > hy0) & (b[:, 1] + dy < hy1)
+            k = np.flatnonzero(hit)
+            idx.append(k)
+            off.append(np.tile([i, j], (len(k), 1)))
+    index = np.concatenate(idx)
+    offset = np.concatenate(off)
+    sub = arr.select(index)
+    sub = sub.replace(x=sub.x + offset[:, 0] * w, y=sub.y + offset[:, 1] * h, region=None)
+    return sub, index, offset
+
+
+def wrap_overlaps(arr: Arrangement, *, tile: Any = None, tolerance: float = 1e-9) -> dict[str, Any]:
+    """Overlaps of a repeat tile laid side by side: inside the tile and across the wrap.
+
+    Every pair of the infinite repeat is counted once, as a pair of the tile's elements
+    ``(i, j)`` with the tile offset of ``j``'s copy (an element may meet its own copy).
+    Pairs are split as :func:`summary` splits them: filled shapes overlapping by more
+    than ``tolerance`` in area, and visible strokes that cross or touch.
+
+    Parameters
+    ----------
+    arr : Arrangement
+        A periodic arrangement (``meta["periodic"]``), or any arrangement with ``tile``.
+    tile : (4,) float, optional
+        ``x0, y0, W, H``; default the arrangement's own frame.
+    tolerance : float
+        Intersection area at or below this does not count (as in :func:`overlaps`).
+
+    Returns
+    -------
+    dict
+        ``pairs`` (m, 4) int array of ``i, j, ox, oy`` (offset of j's copy; ``i <= j``),
+        ``filled`` (m,) bool, ``areas`` (m,) float, and the counts ``inside`` / ``across``
+        (filled overlaps with offset 0 / not 0) and ``stroke_crossings_inside`` /
+        ``stroke_crossings_across``.
+    """
+    f = _tile_of(arr, tile)
+    n = len(arr)
+    empty = {"pairs": np.zeros((0, 4), np.int64), "filled": np.zeros(0, bool), "areas": np.zeros(0), "inside": 0, "across": 0, "stroke_crossings_inside": 0, "stroke_crossings_across": 0}
+    if n == 0:
+        return empty
+    x, y = _periodic.canonical(arr.x, arr.y, f)
+    arr = arr.replace(x=x, y=y)
+    sub, index, offset = _neighbourhood(arr, f)
+    pairs, areas = overlaps(sub, tolerance=tolerance)
+    if len(pairs) == 0:
+        return empty
+    # keep pairs with a canonical element, as (i, j, offset of j relative to i)
+    a, b = pairs[:, 0], pairs[:, 1]
+    keep = (a < n) | (b < n)
+    a, b, areas = a[keep], b[keep], areas[keep]
+    swap = a >= n  # put the canonical one first
+    a, b = np.where(swap, b, a), np.where(swap, a, b)
+    i, j = index[a], index[b]
+    o = offset[b] - offset[a]
+    # one key per pair of the repeat: i <= j, and for i == j the offset's sign fixed
+    flip = (i > j) | ((i == j) & ((o[:, 0] < 0) | ((o[:, 0] == 0) & (o[:, 1] < 0))))
+    i, j = np.where(flip, j, i), np.where(flip, i, j)
+    o = np.where(flip[:, None], -o, o)
+    key = np.c_[i, j, o]
+    key, first = np.unique(key, axis=0, return_index=True)
+    areas = areas[first]
+    vis = visible(arr)
+    filled = _filled(arr) & vis
+    both_vis = vis[key[:, 0]] & vis[key[:, 1]]
+    both_filled = filled[key[:, 0]] & filled[key[:, 1]] & (areas > tolerance)
+    across = (key[:, 2] != 0) | (key[:, 3] != 0)
+    stroke = both_vis & ~both_filled
+    return {
+        "pairs": key,
+        "filled": both_filled,
+        "areas": areas,
+        "inside": int((both_filled & ~across).sum()),
+        "across": int((both_filled & across).sum()),
+        "stroke_crossings_inside": int((stroke & ~across).sum()),
+        "stroke_crossings_across": int((stroke & across).sum()),
+    }
+
+
+def _ratio(a: float, b: float) -> float:
+    return float(a / b) if b > 0 and np.isfinite(a) else float("nan")
+
+
+def repeat_report(arr: Arrangement, exemplar: Arrangement | None = None, *, tile: Any = None, strip: float | None = None) -> dict[str, Any]:
+    """How well a tile repeats: overlaps across the wrap, and the tile's edge strips
+    against its interior (issue 18).
+
+    The edge strips are the bands of width ``strip`` along the four edges of the tile;
+    on the torus they are bands of width ``2 strip`` straddling the seams of the repeat.
+    A seamless tile has the same density, coverage and kind fractions there as in its
+    interior; a tile made without wrapping thins out along its edges (centres kept a
+    radius inside).
+
+    Parameters
+    ----------
+    arr : Arrangement
+        A periodic arrangement (``meta["periodic"]``), or any arrangement with ``tile``
+        (e.g. a non-periodic run of the same size, for comparison).
+    exemplar : Arrangement, optional
+        Also compare the local fidelity (:func:`fidelity`'s local map) of windows
+        straddling the seams with windows inside the tile: the map is computed on the
+        tile and the copies around it, cropped to the tile grown by a window and a half.
+    tile : (4,) float, optional
+        ``x0, y0, W, H``; default the arrangement's own frame.
+    strip : float, optional
+        Strip width; default twice the median nearest-neighbour distance on the torus,
+        at most a quarter of the tile's shorter side.
+
+    Returns
+    -------
+    dict
+        ``tile``, ``count``, ``strip``, ``overlaps`` (``inside``, ``across``,
+        ``stroke_crossings_inside``, ``stroke_crossings_across``), ``density``,
+        ``coverage`` (each ``edge``, ``interior`` and ``ratio`` edge / interior),
+        ``kind_fractions`` (``edge``, ``interior``, ``max_difference``) and, with an
+        exemplar, ``fidelity`` (``seam`` and ``interior`` median window scores, their
+        ``ratio``, the share of failing windows ``seam_failing`` / ``interior_failing``
+        and the window counts).
+
+    Examples
+    --------
+    >>> from strew import Arrangement, Shape, _periodic
+    >>> a = _periodic.mark(Arrangement({"d": Shape.circle(1)}, ["d", "d"], [0.5, 9.6], [5, 5]), [0, 0, 10, 10])
+    >>> repeat_report(a)["overlaps"]["across"]
+    1
+    """
+    f = _tile_of(arr, tile)
+    x0, y0, w, h = f
+    n = len(arr)
+    if n:
+        cx, cy = _periodic.canonical(arr.x, arr.y, f)
+        arr = arr.replace(x=cx, y=cy)
+    ov = wrap_overlaps(arr, tile=f)
+    out: dict[str, Any] = {
+        "tile": [x0, y0, w, h],
+        "count": visible_count(arr),
+        "overlaps": {k: ov[k] for k in ("inside", "across", "stroke_crossings_inside", "stroke_crossings_across")},
+    }
+    vis = visible(arr)
+    if strip is None:
+        s = float("nan")
+        if vis.sum() >= 2:
+            from scipy.spatial import cKDTree
+
+            p = np.c_[arr.x[vis] - x0, arr.y[vis] - y0]
+            p = np.minimum(np.maximum(p, 0.0), np.nextafter([w, h], 0))  # cKDTree's box is half-open
+            d, _ = cKDTree(p, boxsize=[w, h]).query(p, k=2)
+            s = float(np.median(d[:, 1]))
+        strip = min(2.0 * s, 0.25 * min(w, h)) if np.isfinite(s) and s > 0 else 0.125 * min(w, h)
+    strip = float(strip)
+    if not 0 < strip < 0.5 * min(w, h):
+        raise InputError(f"strip: must be positive and under half the tile's shorter side ({0.5 * min(w, h):g}), got {strip:g}")
+    out["strip"] = strip
+    tile_box = shapely.box(x0, y0, x0 + w, y0 + h)
+    inner_box = shapely.box(x0 + strip, y0 + strip, x0 + w - strip, y0 + h - strip)
+    edge_area = w * h - inner_box.area
+    inner_area = inner_box.area
+    inner = (arr.x >= x0 + strip) & (arr.x < x0 + w - strip) & (arr.y >= y0 + strip) & (arr.y < y0 + h - strip)
+    n_in, n_edge = int((vis & inner).sum()), int((vis & ~inner).sum())
+    out["density"] = {"edge": n_edge / edge_area, "interior": n_in / inner_area, "ratio": _ratio(n_edge / edge_area, n_in / inner_area)}
+    # coverage: the area drawn in each part, wrapped copies included (the tile as drawn)
+    cov = {"edge": float("nan"), "interior": float("nan"), "ratio": float("nan")}
+    if n:
+        im = _periodic.images(arr, f)
+        geoms = im.geometry_of("area_geometry")[visible(im)]
+        geoms = geoms[shapely.area(geoms) > 0]
+        if len(geoms):
+            try:
+                union = shapely.union_all(geoms)
+            except shapely.errors.GEOSException:  # a self-intersecting outline
+                union = shapely.union_all(shapely.make_valid(geoms))
+            union = shapely.intersection(union, tile_box)
+            a_in = float(shapely.intersection(union, inner_box).area)
+            a_edge = float(union.area) - a_in
+            cov = {"edge": a_edge / edge_area, "interior": a_in / inner_area, "ratio": _ratio(a_edge / edge_area, a_in / inner_area)}
+    out["coverage"] = cov
+    names = arr.kind_names[vis] if n else np.zeros(0, dtype=object)
+    part = inner[vis] if n else np.zeros(0, bool)
+
+    def fractions(sel: np.ndarray) -> dict[str, float]:
+        m = int(sel.sum())
+        return {k: (float(np.sum(names[sel] == k)) / m if m else float("nan")) for k in arr.kinds}
+
+    fe, fi = fractions(~part), fractions(part)
+    diffs = [abs(fe[k] - fi[k]) for k in arr.kinds if np.isfinite(fe[k]) and np.isfinite(fi[k])]
+    out["kind_fractions"] = {"edge": fe, "interior": fi, "max_difference": float(max(diffs)) if diffs else float("nan")}
+    if exemplar is not None:
+        out["fidelity"] = _seam_fidelity(arr, exemplar, f)
+    return out
+
+
+def _seam_fidelity(arr: Arrangement, exemplar: Arrangement, f: tuple[float, float, float, float]) -> dict[str, Any]:
+    """Local fidelity of windows straddling the repeat's seams against windows inside the tile."""
+    from . import _fidelity
+
+    x0, y0, w, h = f
+    ex_vis = exemplar.select(visible(exemplar))
+    s = _fidelity._median_nn(ex_vis.xy) if len(ex_vis) >= 2 else 0.0
+    ex_area = exemplar.region.area if exemplar.region is not None else max(float(np.prod(np.subtract(exemplar.bounds[2:], exemplar.bounds[:2]))), 0.0)
+    side = float(np.sqrt(ex_area))
+    # the map's windows cover the block's interior (eroded by RESULT_MARGIN s): grow the
+    # tile so that windows centred on every seam fit
+    m = min(_fidelity.RESULT_MARGIN * s + side, max(w, h))
+    block = (x0 - m, y0 - m, w + 2 * m, h + 2 * m)
+    big = _periodic.tiled_copies(arr, 3 + 2 * int(np.ceil(m / w)), 3 + 2 * int(np.ceil(m / h)), tile=f)
+    keep = (big.x >= block[0]) & (big.x < block[0] + block[2]) & (big.y >= block[1]) & (big.y < block[1] + block[3])
+    big = big.select(np.flatnonzero(keep)).replace(region=Region.rectangle(block[2], block[3], block[0], block[1]))
+    rep = fidelity(exemplar, big, eq5=False, local=True)
+    loc = rep.local
+    score = np.asarray(loc["score"], float)
+    seam, interior = [], []
+    if score.size:
+        for r in range(score.shape[0]):
+            for c in range(score.shape[1]):
+                v = score[r, c]
+                if not np.isfinite(v):
+                    continue
+                wx, wy = loc["x0"] + c * loc["step"], loc["y0"] + r * loc["step"]
+                sd = loc["window"]
+                # a seam crosses the window's middle half: both sides of it are in view
+                kx = np.arange(np.ceil((wx + sd / 4 - x0) / w), np.floor((wx + 3 * sd / 4 - x0) / w) + 1)
+                ky = np.arange(np.ceil((wy + sd / 4 - y0) / h), np.floor((wy + 3 * sd / 4 - y0) / h) + 1)
+                if len(kx) or len(ky):
+                    seam.append(v)
+                elif wx >= x0 and wx + sd <= x0 + w and wy >= y0 and wy + sd <= y0 + h:
+                    interior.append(v)
+    sv, iv = np.array(seam), np.array(interior)
+    med_s = float(np.median(sv)) if len(sv) else float("nan")
+    med_i = float(np.median(iv)) if len(iv) else float("nan")
+    return {
+        "seam": med_s,
+        "interior": med_i,
+        "ratio": _ratio(med_s, med_i),
+        "seam_failing": float(np.mean(sv > 1)) if len(sv) else float("nan"),
+        "interior_failing": float(np.mean(iv > 1)) if len(iv) else float("nan"),
+        "seam_windows": int(len(sv)),
+        "interior_windows": int(len(iv)),
+        "faithful": bool(rep.faithful),
+        "window": float(loc["window"]) if loc["window"] is not None else float("nan"),
+    }
