@@ -230,8 +230,32 @@ def _out_format() -> str | None:
 
 
 # -- option decorators ------------------------------------------------------------------
+def _remember_repeat(ctx: click.Context, param: click.Parameter, value: str | None) -> tuple[int, int] | None:
+    counts = None
+    if value is not None:
+        from ..io._svg_export import _repeat_counts
+
+        try:
+            counts = _repeat_counts(value)
+        except InputError as exc:
+            raise click.BadParameter(str(exc).removeprefix("--repeat: "), ctx=ctx, param=param) from None
+    ctx.meta["strew.out_repeat"] = counts
+    return counts
+
+
+def _out_repeat() -> tuple[int, int] | None:
+    ctx = click.get_current_context(silent=True)
+    while ctx is not None:
+        if "strew.out_repeat" in ctx.meta:
+            return ctx.meta["strew.out_repeat"]
+        ctx = ctx.parent
+    return None
+
+
 def out_option(required: bool = True) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
-    """``--out PATH`` (repeatable); the extension picks the format."""
+    """``--out PATH`` (repeatable); the extension picks the format. With it come
+    ``--format`` (of ``--out -``) and ``--repeat NxM`` (a periodic tile's SVG and PNG
+    outputs show ``N x M`` copies; issue 18)."""
     out = click.option(
         "--out",
         "-o",
@@ -250,7 +274,16 @@ def out_option(required: bool = True) -> Callable[[Callable[..., Any]], Callable
         callback=_remember_format,
         help="Format of --out - (standard output).",
     )
-    return lambda f: out(fmt(f))
+    repeat = click.option(
+        "--repeat",
+        "out_repeat",
+        default=None,
+        metavar="NxM",
+        expose_value=False,
+        callback=_remember_repeat,
+        help="SVG and PNG outputs of a periodic tile repeat it N across and M down (SVG through a <pattern>); .json keeps the tile.",
+    )
+    return lambda f: out(fmt(repeat(f)))
 
 
 def seed_option(f: Callable[..., Any]) -> Callable[..., Any]:
@@ -490,14 +523,29 @@ def save_outputs(arr: Arrangement, outs: Sequence[str], **png_kwargs: Any) -> li
 
     Checked first by :func:`check_outputs`. Returns the files written (not ``-``).
     """
-    from ..io import encode, save_many
+    from ..io import atomic_write_many, encode, save_many
 
     files = [o for o in outs if o != "-"]
+    repeat = _out_repeat()
+    if repeat is not None:
+        from .._periodic import frame
+
+        if frame(arr) is None:
+            raise InputError("--repeat: the arrangement is not periodic (no meta.periodic); make it with --periodic")
+
+    def kwargs(name: str) -> dict[str, Any]:
+        low = name.lower()
+        if low.endswith(".png") and not low.endswith(".height.png"):
+            return {**png_kwargs, **({"repeat": repeat} if repeat else {})}
+        return {"repeat": repeat} if repeat and low.endswith(".svg") else {}
+
     piped = None
     if "-" in outs:  # encoded before any file is written: all or none
         fmt = _STDOUT[0] if _STDOUT else _out_format()
-        piped = encode(arr, f"stdout.{fmt}", **(png_kwargs if fmt == "png" else {}))
-    if files:
+        piped = encode(arr, f"stdout.{fmt}", **kwargs(f"stdout.{fmt}"))
+    if files and repeat is not None:
+        atomic_write_many([(p, encode(arr, p, **kwargs(p))) for p in files])
+    elif files:
         save_many(arr, files, **png_kwargs)
     if piped is not None:
         stream = sys.stdout.buffer

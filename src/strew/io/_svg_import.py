@@ -672,8 +672,8 @@ class _Doc:
             if _is_region_el(child, self.is_strew):
                 yield ("region", child, m, in_hidden)
                 continue
-            if self.is_strew and child.get("id") == "strew-guides":
-                continue  # tool strokes drawn over a picture (extra["guides"]), not elements
+            if self.is_strew and child.get("id") in ("strew-guides", "strew-wrap"):
+                continue  # tool strokes (extra["guides"]) and a repeat tile's wrapped copies, not elements
             if el is self.root and self.is_strew and tag == "rect" and self._is_background(child):
                 continue
             hidden = _hidden(child)
