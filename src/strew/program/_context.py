@@ -25,7 +25,18 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Context", "current", "top", "evaluation", "script_context", "derive_seed", "unit_random"]
+__all__ = [
+    "Context",
+    "current",
+    "top",
+    "evaluation",
+    "script_context",
+    "derive_seed",
+    "unit_random",
+    "Periodic",
+    "periodic",
+    "periodic_evaluation",
+]
 
 
 def derive_seed(seed: int, *parts: object) -> int:
@@ -115,3 +126,47 @@ def script_context(seed: int) -> Iterator[Context]:
     finally:
         _CURRENT.reset(token2)
         _TOP.reset(token)
+
+
+# -- periodic domains (issue 18) -------------------------------------------------------------
+@dataclass(frozen=True)
+class Periodic:
+    """A periodic evaluation: the tile, and the padded domain the script is evaluated on.
+
+    Attributes
+    ----------
+    tile : (4,) float
+        ``x0, y0, W, H``: the torus the arrangement repeats on.
+    domain : shapely Polygon
+        The tile grown by a margin: the region the top-level arrangement is evaluated on,
+        so that every cell meeting the tile is whole (§6: mappers see whole faces).
+    """
+
+    tile: tuple[float, float, float, float]
+    domain: object
+
+    def shift(self, x: float, y: float) -> tuple[float, float]:
+        """The whole periods that take ``(x, y)`` into the half-open tile: ``(sx, sy)`` with
+        ``(x - sx, y - sy)`` canonical."""
+        import math
+
+        x0, y0, w, h = self.tile
+        return (math.floor((x - x0) / w) * w, math.floor((y - y0) / h) * h)
+
+
+_PERIODIC: ContextVar[Periodic | None] = ContextVar("strew_program_periodic", default=None)
+
+
+def periodic() -> Periodic | None:
+    """The periodic evaluation in progress, if any."""
+    return _PERIODIC.get()
+
+
+@contextmanager
+def periodic_evaluation(p: Periodic | None) -> Iterator[Periodic | None]:
+    """Make ``p`` the periodic evaluation (None: the plane)."""
+    token = _PERIODIC.set(p)
+    try:
+        yield p
+    finally:
+        _PERIODIC.reset(token)

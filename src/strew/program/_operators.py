@@ -18,10 +18,10 @@ import shapely
 
 from .._errors import InputError
 from ..region import Region
-from ._context import Context, current, evaluation, top
+from ._context import Context, Periodic, current, evaluation, periodic, top
 from ._curves import EMPTY, Curve, Curves, concat_curves
 from ._planar_map import DEFAULT_GRID, Face, PlanarMap, Vertex, Edge, _Cell
-from ._sampling import poisson, poisson_disk
+from ._sampling import periodic_poisson, periodic_poisson_disk, poisson, poisson_disk
 
 __all__ = [
     "ArrangementFunction",
@@ -272,6 +272,39 @@ def _padded_bounds(geom: shapely.Geometry, pad: float) -> tuple[float, float, fl
     return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
 
 
+# -- periodic tiles (issue 18) ------------------------------------------------------------
+_ODD = 0.3183098861837907  # 1/pi: offsets the window that picks a cell's period shift
+
+
+def _periodic_top(geom: shapely.Geometry) -> Periodic | None:
+    """The periodic evaluation when ``geom`` is its top-level domain, else None."""
+    per = periodic()
+    return per if per is not None and geom is per.domain else None
+
+
+def _equivariant(fn: Callable[[shapely.Geometry, Context], Curves]) -> Callable[[shapely.Geometry, Context], Curves]:
+    """A partition that commutes with the tile's periods on a periodic evaluation.
+
+    Not in the paper (its partitions are fixed in the plane): inside a mapper, on a
+    periodic tile, a partition of a face is computed on the face's translate into the
+    tile and moved back, so that a face and its translates by whole periods get the same
+    sub-arrangement and the pieces of a face cut by the tile's edge match up.
+    """
+
+    def g(geom: shapely.Geometry, ctx: Context) -> Curves:
+        per = periodic()
+        if per is None or geom is per.domain:
+            return fn(geom, ctx)
+        x0, y0, x1, y1 = geom.bounds
+        sx, sy = per.shift(0.5 * (x0 + x1) - _ODD * per.tile[2], 0.5 * (y0 + y1) - _ODD * per.tile[3])
+        if sx == 0.0 and sy == 0.0:
+            return fn(geom, ctx)
+        out = fn(shapely.transform(geom, lambda p: p - np.array([sx, sy])), ctx)
+        return out.transformed(np.array([[1.0, 0.0, sx], [0.0, 1.0, sy]]))
+
+    return g
+
+
 # -- label groups -------------------------------------------------------------------------
 def _label_list(labels: tuple[Any, ...], where: str) -> tuple[str, ...]:
     if not labels:
@@ -377,6 +410,37 @@ def set_face_labels(p: StripesProperties, l1: str, *labels: str) -> StripesPrope
     return replace(p, face_labels=p.face_labels + (_label_list((l1, *labels), "set_face_labels"),))
 
 
+def _snap_stripes(p: StripesProperties, tile: tuple[float, float, float, float]) -> StripesProperties:
+    """The stripes set nearest ``p`` that repeats with the tile's periods (issue 18).
+
+    A stripes set of unit normal ``n`` and repeat ``P`` (the widths' cycle, extended to a
+    whole number of every label cycle) is invariant under the translation ``t`` when
+    ``t . n`` is a multiple of ``P``. With ``n / P = (k / W, l / H)`` for integers ``k``
+    and ``l`` both tile periods are; ``k`` and ``l`` are the nearest integers to the
+    requested ``W n_x / P`` and ``H n_y / P``. The angle and the widths change a little
+    (the widths all by one factor), which the paper's fixed stripes do not need.
+    """
+    _, _, w, h = tile
+    m = len(p.widths)
+    cycle = m
+    for g in (*p.edge_labels, *p.face_labels):
+        cycle = cycle * len(g) // math.gcd(cycle, len(g))
+    period = float(sum(p.widths)) * cycle / m
+    n0 = np.array([-math.sin(p.angle), math.cos(p.angle)])
+    k, l = round(w * n0[0] / period), round(h * n0[1] / period)
+    if k == 0 and l == 0:
+        raise InputError(
+            f"periodic: the tile ({w:g} x {h:g}) is smaller than two stripes of this set "
+            f"(it repeats every {period:g} units); use a larger --size or narrower stripes"
+        )
+    v = np.array([k / w, l / h])
+    p_new = 1.0 / float(np.hypot(v[0], v[1]))
+    n = v * p_new
+    angle = math.atan2(-n[0], n[1])
+    f = p_new / period
+    return replace(p, angle=angle, widths=tuple(x * f for x in p.widths))
+
+
 def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float]) -> list[Curve]:
     """Lines of a stripes set covering ``bounds``; line 0 passes through the origin.
 
@@ -435,10 +499,12 @@ def stripes_partition(p: StripesProperties, *, border: Border | None = None) -> 
         raise InputError("stripes_partition: stripes faces are infinite; border must be CROP or CROP_ADD_BOUNDARY")
 
     def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
-        lines = _stripe_lines(p, _padded_bounds(geom, 1.0))
+        per = _periodic_top(geom)
+        q = p if per is None else _snap_stripes(p, per.tile)
+        lines = _stripe_lines(q, _padded_bounds(geom, 1.0))
         return _apply_border(Curves(tuple(lines)), geom, b)
 
-    return ArrangementFunction(fn, "stripes_partition")
+    return ArrangementFunction(_equivariant(fn), "stripes_partition")
 
 
 def grid_partition(s1: StripesProperties, s2: StripesProperties, b: Border) -> ArrangementFunction:
@@ -455,12 +521,16 @@ def grid_partition(s1: StripesProperties, s2: StripesProperties, b: Border) -> A
         raise InputError("grid_partition: the two stripes sets are parallel")
 
     def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
-        pad = 2.0 * max(max(s1.widths), max(s2.widths)) / max(abs(math.sin(s1.angle - s2.angle)), 0.05) + 1.0
+        per = _periodic_top(geom)
+        t1, t2 = (s1, s2) if per is None else (_snap_stripes(s1, per.tile), _snap_stripes(s2, per.tile))
+        if abs(math.sin(t1.angle - t2.angle)) < 1e-9:
+            raise InputError("grid_partition: on this periodic tile the two stripes sets snap to one direction; use a larger --size")
+        pad = 2.0 * max(max(t1.widths), max(t2.widths)) / max(abs(math.sin(t1.angle - t2.angle)), 0.05) + 1.0
         bounds = _padded_bounds(geom, pad)
-        lines = _stripe_lines(s1, bounds) + _stripe_lines(s2, bounds)
+        lines = _stripe_lines(t1, bounds) + _stripe_lines(t2, bounds)
         return _apply_border(Curves(tuple(lines)), geom, border)
 
-    return ArrangementFunction(fn, "grid_partition")
+    return ArrangementFunction(_equivariant(fn), "grid_partition")
 
 
 # -- irregular partitions -----------------------------------------------------------------
@@ -520,8 +590,29 @@ def set_weighted_face_labels(p: IrregularProperties, l1: str, w1: float, *more: 
     return replace(p, face_labels=p.face_labels + (_weighted_list((l1, w1, *more), "set_weighted_face_labels"),))
 
 
-def _voronoi_curves(sites: np.ndarray, p: IrregularProperties, bounds: tuple[float, float, float, float], rng: np.random.Generator) -> Curves:
-    """Voronoi edges of ``sites`` as labelled curves (face labels on their sides)."""
+def _canonical_ids(keys: np.ndarray) -> np.ndarray:
+    """Dense ids of the rows of an integer array (equal rows, equal ids), in sorted order."""
+    if len(keys) == 0:
+        return np.zeros(0, np.int64)
+    _, inv = np.unique(keys, axis=0, return_inverse=True)
+    return inv.reshape(-1).astype(np.int64)
+
+
+def _voronoi_curves(
+    sites: np.ndarray,
+    p: IrregularProperties,
+    bounds: tuple[float, float, float, float],
+    rng: np.random.Generator,
+    *,
+    periodic_tile: tuple[float, float, float, float] | None = None,
+    site_ids: np.ndarray | None = None,
+) -> Curves:
+    """Voronoi edges of ``sites`` as labelled curves (face labels on their sides).
+
+    With ``periodic_tile`` the sites are translates of ``site_ids.max() + 1`` canonical
+    sites (``site_ids`` (n,) gives each one's), and every label is drawn once per cell of
+    the torus: a face, edge or vertex and its translates carry the same labels.
+    """
     from scipy.spatial import Voronoi
 
     n = len(sites)
@@ -533,12 +624,29 @@ def _voronoi_curves(sites: np.ndarray, p: IrregularProperties, bounds: tuple[flo
     # four far guard sites make every real cell bounded, whatever the number of sites
     guards = np.array([[cx - 20 * span, cy], [cx + 20 * span, cy], [cx, cy - 20 * span], [cx, cy + 20 * span]])
     vor = Voronoi(np.vstack([sites, guards]), qhull_options="Qbb Qc Qz")
-    face_labs = _draw_labels(p.face_labels, n, rng)
     rp = vor.ridge_points
     rv = np.array(vor.ridge_vertices, dtype=np.int64)
     keep = (rp.min(axis=1) < n) & (rv.min(axis=1) >= 0)
     rp, rv = rp[keep], rv[keep]
-    edge_labs = _draw_labels(p.edge_labels, len(rp), rng)
+    if periodic_tile is None or site_ids is None:
+        face_labs = _draw_labels(p.face_labels, n, rng)
+        edge_labs = _draw_labels(p.edge_labels, len(rp), rng)
+    else:
+        # one draw per torus cell: a face by its canonical site, an edge by its two
+        # canonical sites and the offset between them
+        ids = np.r_[site_ids, -1 - np.arange(len(guards))]
+        n_canon = int(site_ids.max()) + 1
+        canon = _draw_labels(p.face_labels, n_canon, rng)
+        face_labs = [canon[int(k)] for k in site_ids]
+        q = 1e-6 * max(periodic_tile[2], periodic_tile[3])
+        a, b = ids[rp[:, 0]], ids[rp[:, 1]]
+        off = np.rint((vor.points[rp[:, 1]] - vor.points[rp[:, 0]]) / q).astype(np.int64)
+        swap = a > b
+        a2, b2 = np.where(swap, b, a), np.where(swap, a, b)
+        off = np.where(swap[:, None], -off, off)
+        eid = _canonical_ids(np.c_[a2, b2, off])
+        canon_e = _draw_labels(p.edge_labels, int(eid.max()) + 1 if len(eid) else 0, rng)
+        edge_labs = [canon_e[int(k)] for k in eid]
     curves = []
     V = vor.vertices
     for (a, b), (va, vb), elab in zip(rp.tolist(), rv.tolist(), edge_labs):
@@ -556,7 +664,19 @@ def _voronoi_curves(sites: np.ndarray, p: IrregularProperties, bounds: tuple[flo
     marks: tuple[tuple[float, float, frozenset[str]], ...] = ()
     if p.vertex_labels:
         used = np.unique(rv)
-        vlabs = _draw_labels(p.vertex_labels, len(used), rng)
+        if periodic_tile is None:
+            vlabs = _draw_labels(p.vertex_labels, len(used), rng)
+        else:
+            x0, y0, w, h = periodic_tile
+            q = 1e-6 * max(w, h)
+            cv = V[used] - np.array([x0, y0])
+            cv = np.c_[np.mod(cv[:, 0], w), np.mod(cv[:, 1], h)]
+            key = np.rint(cv / q).astype(np.int64)
+            key[:, 0] %= int(round(w / q))
+            key[:, 1] %= int(round(h / q))
+            vid = _canonical_ids(key)
+            canon_v = _draw_labels(p.vertex_labels, int(vid.max()) + 1, rng)
+            vlabs = [canon_v[int(k)] for k in vid]
         marks = tuple((float(V[k, 0]), float(V[k, 1]), lab) for k, lab in zip(used.tolist(), vlabs) if lab)
     return Curves(tuple(curves), {}, marks)
 
@@ -568,6 +688,9 @@ def _irregular_partition(p: IrregularProperties, b: Border, name: str, sampler: 
     def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
         rng = ctx.rng(name, p)
         spacing = 1.0 / math.sqrt(p.density)
+        per = _periodic_top(geom)
+        if per is not None:
+            return _periodic_irregular(p, border, name, geom, per, rng, spacing)
         x0, y0, x1, y1 = geom.bounds
         expected = p.density * (x1 - x0 + 8 * spacing) * (y1 - y0 + 8 * spacing)
         if expected > 5e6:
@@ -577,7 +700,39 @@ def _irregular_partition(p: IrregularProperties, b: Border, name: str, sampler: 
         sites = sampler(bounds, p.density, rng)
         return _apply_border(_voronoi_curves(sites, p, bounds, rng), geom, border)
 
-    return ArrangementFunction(fn, name)
+    return ArrangementFunction(_equivariant(fn), name)
+
+
+def _periodic_irregular(
+    p: IrregularProperties, border: Border, name: str, geom: shapely.Geometry, per: Periodic, rng: np.random.Generator, spacing: float
+) -> Curves:
+    """An irregular partition that repeats with the tile: the Voronoi diagram of the
+    translates of a point set on the torus (issue 18; §5.1's sets, drawn on the torus)."""
+    x0, y0, w, h = per.tile
+    expected = p.density * w * h
+    if expected < 2:
+        raise InputError(
+            f"periodic: the tile ({w:g} x {h:g}) holds about {expected:.2g} cells at density {p.density:g}; "
+            "it needs at least two (use a larger --size or a higher density)"
+        )
+    if expected > 5e6:
+        raise InputError(f"{name}: density {p.density:g} asks for about {expected:.3g} cells on this tile; lower it")
+    sampler = periodic_poisson_disk if name == "uniform_partition" else periodic_poisson
+    base = sampler(per.tile, p.density, rng)
+    bounds = _padded_bounds(geom, 4 * spacing)
+    i0, i1 = math.floor((bounds[0] - x0) / w), math.floor((bounds[2] - x0) / w)
+    j0, j1 = math.floor((bounds[1] - y0) / h), math.floor((bounds[3] - y0) / h)
+    pts, ids = [], []
+    for j in range(j0, j1 + 1):
+        for i in range(i0, i1 + 1):
+            q = base + np.array([i * w, j * h])
+            inside = (q[:, 0] >= bounds[0]) & (q[:, 0] <= bounds[2]) & (q[:, 1] >= bounds[1]) & (q[:, 1] <= bounds[3])
+            pts.append(q[inside])
+            ids.append(np.flatnonzero(inside))
+    sites = np.vstack(pts)
+    site_ids = np.concatenate(ids)
+    curves = _voronoi_curves(sites, p, bounds, rng, periodic_tile=per.tile, site_ids=site_ids)
+    return _apply_border(curves, geom, border)
 
 
 def uniform_partition(p: IrregularProperties, b: Border) -> ArrangementFunction:

@@ -187,6 +187,11 @@ class PlanarMap:
         the order of cells, on execution order, or on the rest of the map.
         """
         t = self._t
+        from ._context import periodic
+
+        per = periodic()
+        if per is not None and not (kind == "face" and i == 0):
+            return self._periodic_key(kind, i, per)
         if kind == "vertex":
             return _hash_bytes(b"v", t.vertex_ij[i].tobytes())
         if kind == "edge":
@@ -200,6 +205,36 @@ class PlanarMap:
         ij = ij[np.lexsort((ij[:, 1], ij[:, 0]))]
         ij = ij[np.r_[True, np.any(ij[1:] != ij[:-1], axis=1)]]
         return _hash_bytes(b"f", np.ascontiguousarray(ij).tobytes())
+
+    def _periodic_key(self, kind: str, i: int, per: Any) -> bytes:
+        """:meth:`cell_key` on a periodic tile (issue 18): the same for a cell and its
+        translates by whole periods, so that they draw the same random values.
+
+        The cell is moved into the tile (by the periods that take its centre there) and
+        quantised on a grid of 1e-5 of the tile's size, coarser than the map's own grid,
+        so that a translate computed with other rounding still gives the same digest.
+        """
+        t = self._t
+        q = 1e-5 * max(per.tile[2], per.tile[3])
+        if kind == "vertex":
+            pts = t.vertex_ij[i][None, :] * t.grid
+        elif kind == "edge":
+            pts = t.edge_points[i]
+        else:
+            pts = shapely.get_coordinates(t.face_polygons[i])
+        c = 0.5 * (pts.min(axis=0) + pts.max(axis=0))
+        # the window that decides the shift is offset by an odd fraction of the tile, so
+        # that no regular partition puts centres on its edge (where rounding would pick
+        # different periods for a cell and its translate)
+        sx, sy = per.shift(float(c[0]) - 0.3183098861837907 * per.tile[2], float(c[1]) - 0.3183098861837907 * per.tile[3])
+        ij = np.rint((pts - np.array([sx, sy])) / q).astype(np.int64)
+        tag = kind[0].encode() + b"p"
+        if kind == "edge":
+            return _hash_bytes(tag, min(ij.tobytes(), ij[::-1].tobytes()))
+        if kind == "face":
+            ij = ij[np.lexsort((ij[:, 1], ij[:, 0]))]
+            ij = ij[np.r_[True, np.any(ij[1:] != ij[:-1], axis=1)]]
+        return _hash_bytes(tag, np.ascontiguousarray(ij).tobytes())
 
     @cached_property
     def vertex_index(self) -> dict[tuple[int, int], int]:

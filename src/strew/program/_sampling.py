@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-__all__ = ["poisson_disk", "poisson", "DISK_PACKING"]
+__all__ = ["poisson_disk", "poisson", "periodic_poisson_disk", "periodic_poisson", "DISK_PACKING"]
 
 #: Points per r^2 of a (near-maximal) Bridson set in the plane (measured: 0.62 on large
 #: domains), used to turn a density (points per unit area) into a disk radius.
@@ -39,3 +39,75 @@ def poisson(bounds: tuple[float, float, float, float], density: float, rng: np.r
     x0, y0, x1, y1 = bounds
     n = int(rng.poisson(density * (x1 - x0) * (y1 - y0)))
     return rng.uniform([x0, y0], [x1, y1], size=(n, 2))
+
+
+def periodic_poisson_disk(tile: tuple[float, float, float, float], density: float, rng: np.random.Generator) -> np.ndarray:
+    """A Poisson-disk set on the torus ``tile = (x0, y0, W, H)`` (issue 18).
+
+    Bridson's dart throwing (30 candidates per active point) with distances measured
+    around the torus, so that the set and its translates by ``W`` and ``H`` keep the disk
+    radius across the tile's edges. The radius is shrunk a little, if need be, so that a
+    whole number of background-grid cells spans each period.
+
+    Returns
+    -------
+    (n, 2) float
+        Points in ``[x0, x0 + W) x [y0, y0 + H)``.
+    """
+    x0, y0, w, h = tile
+    r = math.sqrt(DISK_PACKING / density)
+    r = min(r, 0.5 * min(w, h))  # a disk wider than half the tile meets its own translate
+    cell = r / math.sqrt(2.0)
+    nx, ny = max(1, int(math.ceil(w / cell))), max(1, int(math.ceil(h / cell)))
+    cx, cy = w / nx, h / ny  # cells no larger than r / sqrt(2): one point per cell
+    grid = -np.ones((ny, nx), np.int64)
+    pts: list[tuple[float, float]] = []
+    r2 = r * r
+    reach_x, reach_y = int(math.ceil(r / cx)), int(math.ceil(r / cy))
+
+    def far_enough(px: float, py: float) -> bool:
+        i, j = int(py / cy) % ny, int(px / cx) % nx
+        for di in range(-reach_y, reach_y + 1):
+            for dj in range(-reach_x, reach_x + 1):
+                k = grid[(i + di) % ny, (j + dj) % nx]
+                if k >= 0:
+                    dx = px - pts[k][0]
+                    dy = py - pts[k][1]
+                    dx -= w * math.floor(dx / w + 0.5)
+                    dy -= h * math.floor(dy / h + 0.5)
+                    if dx * dx + dy * dy < r2:
+                        return False
+        return True
+
+    def add(px: float, py: float) -> None:
+        grid[int(py / cy) % ny, int(px / cx) % nx] = len(pts)
+        pts.append((px, py))
+
+    add(float(rng.uniform(0, w)), float(rng.uniform(0, h)))
+    active = [0]
+    while active:
+        a = int(rng.integers(len(active)))
+        bx, by = pts[active[a]]
+        rad = np.sqrt(rng.uniform(r2, 4 * r2, 30))
+        ang = rng.uniform(0, 2 * math.pi, 30)
+        found = False
+        for rr, aa in zip(rad.tolist(), ang.tolist()):
+            px = (bx + rr * math.cos(aa)) % w
+            py = (by + rr * math.sin(aa)) % h
+            px, py = (0.0 if px >= w else px), (0.0 if py >= h else py)
+            if far_enough(px, py):
+                add(px, py)
+                active.append(len(pts) - 1)
+                found = True
+                break
+        if not found:
+            active[a] = active[-1]
+            active.pop()
+    return np.asarray(pts, dtype=float).reshape(-1, 2) + np.array([x0, y0])
+
+
+def periodic_poisson(tile: tuple[float, float, float, float], density: float, rng: np.random.Generator) -> np.ndarray:
+    """A Poisson set on the torus ``tile = (x0, y0, W, H)``: uniform points, Poisson count."""
+    x0, y0, w, h = tile
+    n = int(rng.poisson(density * w * h))
+    return rng.uniform([x0, y0], [x0 + w, y0 + h], size=(n, 2))

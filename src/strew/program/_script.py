@@ -341,12 +341,15 @@ def run_script(script: str | os.PathLike[str], *, size: float = 2000, seed: int 
     return _run_on(path, name, region, seed, n)
 
 
-def _run_on(path: Path, name: str, region: Region, seed: int, n: float) -> tuple[PlanarMap, Arrangement]:
-    """Run the script at ``path`` with ``run_size() == n`` and evaluate ``name`` on ``region``."""
+def _run_on(
+    path: Path, name: str, region: Region, seed: int, n: float, tile: tuple[float, float, float, float] | None = None
+) -> tuple[PlanarMap, Arrangement]:
+    """Run the script at ``path`` with ``run_size() == n`` and evaluate ``name`` on ``region``
+    (on the torus ``tile`` when given: see :func:`_periodic_map`)."""
     size_token = _RUN_SIZE.set(n)
     try:
         with script_context(seed), _script_environment(path):
-            return _run(path, name, region, seed)
+            return _run(path, name, region, seed, tile)
     finally:
         _RUN_SIZE.reset(size_token)
 
@@ -366,6 +369,8 @@ SPEC = MethodSpec(
               help="Evaluate on the square [0, N] x [0, N] when no region is given [default: 2000].", cli=False, flag="--size",
               section="§4"),
         Param("name", "str", "arrangement", help="Module-level variable to evaluate.", section="§3"),
+        Param("periodic", "bool", False, cli="flag",
+              help="Make a repeat tile of the rectangular region: partitions repeat with it and faces cut by its edge continue on the opposite side (issue 18)."),
     ),
 )
 
@@ -429,10 +434,15 @@ def run(
         raise ScriptError(f"{str(script)!r}: no such script")
     rep = Reporter(progress, should_cancel, total=2, message=f"program {path.name}")
     rep.tick(0, force=True)
+    tile = None
+    if prm["periodic"]:
+        from .._periodic import frame_of_region
+
+        tile = frame_of_region(dom)
     if not (dom.area > 0):
         arr = empty_result({}, dom, "the region is empty")
     else:
-        pm, arr = _run_on(path, prm["name"], dom, root, n)
+        pm, arr = _run_on(path, prm["name"], dom, root, n, tile)
         arr = arr.with_meta(program={"vertices": pm.n_vertices, "edges": pm.n_edges, "faces": pm.n_faces})
         rep.tick(1, force=True)
         if ctx is not None and len(ctx) and len(arr):
@@ -460,7 +470,64 @@ def _drop_overlapping(arr: Arrangement, footprint: Any) -> Arrangement:
     return arr.select(~clash).with_meta(program_context={"left_out": int(clash.sum())})
 
 
-def _run(path: Path, name: str, region: Region, seed: int) -> tuple[PlanarMap, Arrangement]:
+#: Label of the tile's outline on a periodic evaluation: it closes the faces cut by the
+#: tile's edge but is a seam, not a line of the arrangement, so it is not drawn.
+_SEAM = "__strew_tile_seam__"
+
+
+def _periodic_map(value: Any, name: str, tile: tuple[float, float, float, float], seed: int) -> tuple[PlanarMap, Any]:
+    """Evaluate ``value`` as a repeat tile (issue 18; not in the paper, which works in the plane).
+
+    The arrangement is evaluated on the tile grown by half its larger side, with its
+    partitions made periodic (stripes snapped to the tile's periods, irregular sets drawn
+    on the torus) and every per-cell random value a function of the cell's position on
+    the torus, so that mappers see whole faces and a cell's translates get the same
+    result. The curves are then cut at the tile, whose outline (labelled ``_SEAM``) closes
+    the faces that cross its edge: their pieces continue on the opposite side.
+
+    Returns
+    -------
+    (PlanarMap, shapely geometry)
+        The planar map of the tile, and the lines of the arrangement in it (the seam
+        is drawn where they run along it).
+    """
+    import shapely
+
+    from ._context import Periodic, periodic_evaluation
+    from ._operators import _crop
+
+    x0, y0, w, h = tile
+    box = shapely.box(x0, y0, x0 + w, y0 + h)
+    margin = 0.5 * max(w, h)
+    domain = shapely.box(x0 - margin, y0 - margin, x0 + w + margin, y0 + h + margin)
+    with periodic_evaluation(Periodic(tuple(tile), domain)):
+        curves = as_arrangement(value, name).curves(domain, seed=seed)
+    cut = _crop(curves, box, True)
+    outline = Curve(np.array([[x0, y0], [x0 + w, y0], [x0 + w, y0 + h], [x0, y0 + h]]), True, frozenset([_SEAM]))
+    lines = [shapely.LineString(c.polyline) for c in cut.curves if len(c.polyline) >= 2]
+    drawn = shapely.union_all(lines) if lines else shapely.LineString()
+    return PlanarMap(Curves(cut.curves + (outline,), cut.points, cut.marks)), drawn
+
+
+def _drop_seam(arr: Arrangement, drawn: Any, tol: float) -> Arrangement:
+    """``arr`` without the tile's outline: edges that carry only the seam label go, unless
+    a line of the arrangement runs along them (``drawn``, within ``tol``); the seam label
+    leaves the others."""
+    import shapely
+
+    labels = np.asarray(arr["labels"], dtype=object)
+    cells = np.asarray(arr["cell"], dtype=object)
+    seam_only = (cells == "edge") & (labels == _SEAM)
+    idx = np.flatnonzero(seam_only)
+    if len(idx) and not drawn.is_empty:
+        along = shapely.covered_by(arr.geometry[idx], shapely.buffer(drawn, tol))
+        seam_only[idx[along]] = False
+    cleaned = [" ".join(x for x in str(lab).split(" ") if x != _SEAM) for lab in labels.tolist()]
+    out = arr.with_columns(labels=np.asarray(cleaned, dtype=object))
+    return out.select(np.flatnonzero(~seam_only))
+
+
+def _run(path: Path, name: str, region: Region, seed: int, tile: tuple[float, float, float, float] | None = None) -> tuple[PlanarMap, Arrangement]:
     """Body of :func:`run_script`, inside the script's context and environment."""
     try:
         glb = runpy.run_path(str(path), run_name="__main__")
@@ -483,7 +550,10 @@ def _run(path: Path, name: str, region: Region, seed: int) -> tuple[PlanarMap, A
     if not isinstance(value, (ArrangementFunction, Curves)):
         raise ScriptError(f"{path.name}: {name!r} is {type(value).__name__}, expected an arrangement (the result of a partition, mapping or merging operator)")
     try:
-        pm = as_arrangement(value, name)(region, seed=seed)
+        if tile is None:
+            pm = as_arrangement(value, name)(region, seed=seed)
+        else:
+            pm, drawn = _periodic_map(value, name, tile, seed)
         _ = pm.n_faces  # induce inside the error handling
     except MapperError:
         raise
@@ -491,5 +561,12 @@ def _run(path: Path, name: str, region: Region, seed: int) -> tuple[PlanarMap, A
         line = _script_line(exc, path)
         where = f"{path.name} line {line}" if line else path.name
         raise ScriptError(f"{where}: {exc}") from exc
-    return pm, to_strew(pm, region)
+    if tile is None:
+        return pm, to_strew(pm, region)
+    from .._periodic import mark
+
+    arr = _drop_seam(to_strew(pm, region), drawn, 1e-7 * max(tile[2], tile[3]))
+    if len(arr) < 2:
+        raise InputError(f"periodic: the tile ({tile[2]:g} x {tile[3]:g}) holds fewer than two cells; use a larger --size")
+    return pm, mark(arr, tile)
 
