@@ -633,7 +633,8 @@ def test_batched_signatures_match_one_by_one(seed, n):
 
 
 def test_batch_grows_only_while_signatures_are_used():
-    """Distinct shapes are read in growing batches; a file of copies reads ahead none."""
+    """Distinct shapes are all read ahead, in one bulk (``_Reader.prepare``; before it, in
+    batches growing past 64); a file of copies reads ahead none but the first."""
     from strew.io import _svg_import
 
     rng = np.random.default_rng(5)
@@ -644,9 +645,9 @@ def test_batch_grows_only_while_signatures_are_used():
     doc = _svg_import._Doc(distinct, 0.05)
     reader = _svg_import._Reader(doc)
     reader.read(all_symbols=False)
-    assert len(reader.kinds) == 200 and reader._batch > 64
+    assert len(reader.kinds) == 200 and len(reader._prep_index) == 200 and not reader._prepared
     copies = HEAD + "".join(f'<path transform="translate({i * 20} 0)" d="{LEAF}"/>' for i in range(200)) + "</svg>"
     doc = _svg_import._Doc(copies, 0.05)
     reader = _svg_import._Reader(doc)
     reader.read(all_symbols=False)
-    assert len(reader.kinds) == 1 and reader._batch <= 2 and not reader._sigs
+    assert len(reader.kinds) == 1 and reader._batch <= 2 and not reader._sigs and len(reader._prep_index) <= 1

@@ -1144,6 +1144,13 @@ class _Reader:
         self._batch = 1
         self._fetched: dict[int, tuple[list[_Part], _Flat]] = {}
         self._sigs: dict[int, _Signature | None] = {}
+        # objects prepared in bulk before reading (see :meth:`prepare`): id(el) -> parts,
+        # flattening, signature; their control outlines; their kind candidates
+        self._prepared: dict[int, tuple[list[_Part], _Flat, _Signature | None]] = {}
+        self._outline_of: dict[int, tuple[tuple[Any, ...], np.ndarray] | None] = {}
+        self._prep_index: dict[int, int] = {}  # id(el) -> index among the prepared objects
+        self._partners: tuple[np.ndarray, np.ndarray] | None = None  # CSR: earlier prepared objects that may match
+        self._kind_at: dict[int, int] = {}  # prepared index -> index in kinds of the kind it made
 
     def unique(self, name: str) -> str:
         if name not in self.names:
@@ -1289,7 +1296,12 @@ class _Reader:
         source = _source_key(el, key)
         if source is not None and self.copy_of(source, el, m, void, hidden):
             return
-        outline = self.control_outline(el, m, key) if source is not None else None
+        if source is None:
+            outline = None
+        elif id(el) in self._outline_of:
+            outline = self._outline_of.pop(id(el))
+        else:
+            outline = self.control_outline(el, m, key)
         if outline is not None and self.moved_copy(outline, el, void, hidden):
             return
         parts, flat, sig = self.object_signature(el, m, void)
@@ -1297,7 +1309,8 @@ class _Reader:
             return
         placed: tuple[_Kind, np.ndarray] | None = None
         if sig is not None:
-            for i in self.candidate_kinds(sig):
+            found = self.prepared_candidates(el)
+            for i in self.candidate_kinds(sig) if found is None else found:
                 kind = self.kinds[i]
                 if not kind.matchable or kind.signature is None or (key is not None and kind.key != key):
                     continue
@@ -1313,6 +1326,9 @@ class _Reader:
                         break
         if placed is None:
             placed = (self.new_kind(key or "shape", key, parts, keep_origin=False, known=(flat, sig)), _IDENTITY)
+            j = self._prep_index.get(id(el))
+            if j is not None:
+                self._kind_at[j] = len(self.kinds) - 1
         self.place(placed[0], placed[1], void, el, hidden)
         if source is not None and len(parts) == 1 and source not in self.sources:
             # for later objects with the same geometry text (see copy_of)
@@ -1337,6 +1353,8 @@ class _Reader:
         to be read (and to fail) in their turn.
         """
         key = id(el)
+        if key in self._prepared:
+            return self._prepared.pop(key)
         if key in self._sigs:
             parts, flat = self._fetched.pop(key)
             return parts, flat, self._sigs.pop(key)
@@ -1353,6 +1371,8 @@ class _Reader:
             # missing targets must be noted in document order
             if what not in ("object", "void-object") or _local(other.tag) not in _SHAPE_TAGS or (id(other), False) in self.by_target:
                 continue
+            if id(other) in self._prepared:
+                continue
             if other.get("id") is not None and other.get("id") in doc.referenced:
                 continue
             try:
@@ -1366,6 +1386,77 @@ class _Reader:
         if len(batch) == self._batch:
             self._batch = min(2 * self._batch, _MAX_BATCH)
         return batch[0][1], batch[0][2], sigs[0]
+
+    def prepare(self) -> None:
+        """Parts, flattening, signature and kind candidates of the plain objects ahead, in bulk.
+
+        Issue 17.3: per object, the numpy and shapely calls cost more than their arithmetic.
+        Before reading, every path or basic shape that :meth:`add_object` would flatten and
+        match is prepared at once: its control outline (:meth:`control_outline`), its
+        flattening, its signature (one :meth:`_Doc.signatures` call for all), and the
+        earlier prepared objects whose invariants pass :func:`_candidates`' tests against
+        it (:func:`_candidate_pairs`, on a grid of the invariants instead of a lookup per
+        object). Objects that repeat an earlier one's geometry text or control-outline
+        hash are left out (:meth:`copy_of` and :meth:`moved_copy` place them without a
+        signature); so are objects whose reading fails (they fail in their turn). The
+        reading itself, its order and its decisions are unchanged.
+        """
+        doc = self.doc
+        seen_source: set[tuple[str, ...]] = set()
+        seen_outline: set[tuple[Any, ...]] = set()
+        items: list[tuple[ET.Element, list[_Part], _Flat]] = []
+        for what, el, m, _ in self._ahead:
+            if what not in ("object", "void-object") or _local(el.tag) not in _SHAPE_TAGS:
+                continue
+            ident = el.get("id")
+            if ident is not None and ident in doc.referenced:
+                continue
+            key = _key_of(el) or doc.group_key(el)
+            source = _source_key(el, key)
+            if source is None or source in seen_source:
+                continue
+            seen_source.add(source)
+            if len(items) % 256 == 255:
+                doc.poll()
+            try:
+                outline = self.control_outline(el, m, key)
+                self._outline_of[id(el)] = outline
+                if outline is not None:
+                    if outline[0] in seen_outline:
+                        continue
+                    seen_outline.add(outline[0])
+                parts, flat = self._parts_flat(el, m, what == "void-object")
+            except Cancelled:
+                raise
+            except Exception:  # read (and failed) in its turn
+                continue
+            items.append((el, parts, flat))
+        if not items:
+            return
+        sigs = doc.signatures([(parts, flat) if flat.paths else ([], _Flat([], {}, False)) for _, parts, flat in items])
+        rows = []
+        for j, ((el, parts, flat), sig) in enumerate(zip(items, sigs)):
+            self._prepared[id(el)] = (parts, flat, sig)
+            self._prep_index[id(el)] = j
+            rows.append(_invariants(sig))
+        self._partners = _candidate_pairs(np.array(rows), np.array([sig is not None for sig in sigs]))
+
+    def prepared_candidates(self, el: ET.Element) -> list[int] | None:
+        """:meth:`candidate_kinds` of a prepared object from :meth:`prepare`'s pairs, or None.
+
+        Valid while every kind so far was made by a prepared object (then the kinds that
+        pass the tests are exactly the kinds of its partners); otherwise None, and the
+        caller asks :meth:`candidate_kinds`.
+        """
+        j = self._prep_index.get(id(el))
+        if j is None or self._partners is None or len(self._kind_at) != len(self.kinds):
+            return None
+        start, earlier = self._partners
+        lo, hi = int(start[j]), int(start[j + 1])
+        if lo == hi:
+            return []
+        kind_at = self._kind_at
+        return [kind_at[i] for i in earlier[lo:hi].tolist() if i in kind_at]
 
     def control_outline(self, el: ET.Element, m: np.ndarray, key: str | None) -> tuple[tuple[Any, ...], np.ndarray] | None:
         """``(hash, points)``: the control points of a path or basic shape in world coordinates
@@ -1524,6 +1615,8 @@ class _Reader:
         if all_symbols:
             self.symbol_kinds()
         self._ahead = list(doc.walk())  # walk() polls should_cancel per object
+        if _MAX_BATCH > 1:
+            self.prepare()
         for self._pos, (what, el, m, hidden) in enumerate(self._ahead):
             if what == "region":
                 self.region_els.append((el, m))
@@ -1596,6 +1689,81 @@ def _candidates(table: np.ndarray, sig: _Signature, row: list[float] | None = No
         # the full match, n^2 in all (10 MB of distinct polygons: 28 s/MB against 11 at 1 MB)
         ok &= ~(np.abs(mk - mo) > 0.01 + 0.02 * np.maximum(mk, mo)).any(axis=1)
     return np.flatnonzero(ok)
+
+
+def _candidate_pairs(rows: np.ndarray, valid: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """For each object ``j``, the earlier objects ``i < j`` whose :func:`_invariants` row
+    passes :func:`_candidates`' tests as a kind against ``j``'s signature (issue 17.3).
+
+    ``rows`` (n, 5 + _KMAX - 1) are the objects' invariants; ``valid`` (n,) says which
+    have a signature (the others are neither kinds that can match nor matched). Pairs
+    are found on a grid of the moment invariants k = 2, 3, 4 whose cells are as wide as
+    the largest difference :func:`_candidates` accepts, so only neighbouring cells are
+    compared, then tested with :func:`_candidates`' own arithmetic on the pairs.
+
+    Returns
+    -------
+    (start (n + 1,), earlier (m,)) or None
+        Object ``j``'s candidates are ``earlier[start[j]:start[j + 1]]``, ascending. None
+        when an invariant is not finite (:func:`_candidates`' NaN rules are left to it)
+        or the grid would be too large.
+    """
+    n = len(rows)
+    idx = np.flatnonzero(valid)
+    if len(idx) and not np.isfinite(rows[idx]).all():
+        return None
+    if len(idx) < 2:
+        return np.zeros(n + 1, dtype=np.intp), np.zeros(0, dtype=np.intp)
+    sub = rows[idx]
+    # |a - b| <= 0.01 + 0.02 max(a, b) (a, b >= 0) gives min + 0.5 >= 0.98 (max + 0.5):
+    # on log(v + 0.5) every accepted pair is within -log(0.98) in each dimension
+    with np.errstate(invalid="ignore"):
+        pts = np.log(sub[:, list(_GRID_DIMS)] + 0.5)
+    if not np.isfinite(pts).all():
+        return None
+    r = -math.log(0.98) * (1 + 1e-6) + 1e-9
+    cell = np.floor(pts / r).astype(np.int64)
+    cell -= cell.min(axis=0)
+    span = cell.max(axis=0) + 3
+    if float(span[0]) * float(span[1]) * float(span[2]) > 2.0**60:
+        return None
+    key = ((cell[:, 0] + 1) * span[1] + (cell[:, 1] + 1)) * span[2] + (cell[:, 2] + 1)
+    order = np.argsort(key, kind="stable")
+    sorted_key = key[order]
+    qs, ks = [], []
+    m = len(idx)
+    for dx in (-1, 0, 1):
+        for dy in (-1, 0, 1):
+            for dz in (-1, 0, 1):
+                target = key + (dx * span[1] + dy) * span[2] + dz
+                lo = np.searchsorted(sorted_key, target, "left")
+                cnt = np.searchsorted(sorted_key, target, "right") - lo
+                total = int(cnt.sum())
+                if not total:
+                    continue
+                q = np.repeat(np.arange(m), cnt)
+                k = order[np.repeat(lo - (np.cumsum(cnt) - cnt), cnt) + np.arange(total)]
+                keep = k < q  # the kind is the earlier object
+                qs.append(q[keep])
+                ks.append(k[keep])
+    q = np.concatenate(qs) if qs else np.zeros(0, dtype=np.intp)
+    k = np.concatenate(ks) if ks else np.zeros(0, dtype=np.intp)
+    # _candidates' tests, kind row k against the signature of q, in its arithmetic
+    kr, qr = sub[k], sub[q]
+    size, radius, gyration, tol, area = kr[:, :5].T
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        scale = np.where(qr[:, 4] == 1.0, np.sqrt(qr[:, 0] / size), qr[:, 0] / size)
+        t = np.maximum(qr[:, 3], scale * tol)
+        ok = (area == qr[:, 4]) & np.isfinite(size)
+        ok &= ~(np.abs(qr[:, 1] - scale * radius) > 2 * t + 0.02 * qr[:, 1])
+        ok &= ~(np.abs(qr[:, 2] - scale * gyration) > 2 * t + 0.02 * qr[:, 2])
+        mk, mo = kr[:, 5:], qr[:, 5:]
+        ok &= ~(np.abs(mk - mo) > 0.01 + 0.02 * np.maximum(mk, mo)).any(axis=1)
+    q, k = idx[q[ok]], idx[k[ok]]
+    order = np.lexsort((k, q))
+    q, k = q[order], k[order]
+    start = np.searchsorted(q, np.arange(n + 1), "left")
+    return start.astype(np.intp), k.astype(np.intp)
 
 
 def _candidates_few(table: list[list[float]], rows: list[int], sig: _Signature, row: list[float]) -> list[int]:
