@@ -1,0 +1,103 @@
+"""Benchmark of repeat tiles (issue 18 point 5): every method that takes ``periodic``.
+
+For each method whose spec declares a ``periodic`` parameter (read from
+``strew._method.spec(name).names``, so methods join as they gain it), a few tiles are
+made twice with the same seed and size: periodic, and not (the baseline). Each result is
+judged by :func:`strew.metrics.repeat_report` as if laid side by side (the non-periodic
+one with its rectangle as the tile): overlaps across the wrap (must be 0 for the
+periodic tile), the density and coverage of the strips along the tile's edges against
+the interior (1 is seamless; a tile made without wrapping thins out there), the largest
+difference of kind fractions between them, and, for the exemplar methods, the median
+local fidelity score of windows straddling the seams against windows inside the tile.
+Times are medians of ``--repeat`` runs; ``time_ratio`` is periodic / non-periodic from
+the same run.
+
+    python benchmarks/periodic.py [--quick] [--repeat N] [--only pack,synth]
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from _runner import Bench, median_time, parse_args  # noqa: E402
+
+from strew import Region, Shape, _method, load, metrics  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _cases(quick: bool) -> dict[str, list[tuple[str, Any, dict[str, Any], Region, Any]]]:
+    """method -> [(label, input, params, region, exemplar or None)]."""
+    k = 0.6 if quick else 1.0
+    shapes = {"disc": Shape.circle(5), "bar": Shape.rectangle(16, 5), "tri": Shape.polygon([(-6, 5), (6, 5), (0, -6)])}
+    rect = Region.rectangle(round(300 * k), round(200 * k))
+    ex = ROOT / "examples" / "synth" / "stones.json"
+    return {
+        "pack": [
+            ("pack fill-gap", shapes, {"method": "fill-gap"}, rect, None),
+            ("pack naive", shapes, {"method": "naive", "max_failures": 2000}, rect, None),
+        ],
+        "synth": [("synth stones", load(ex), {}, Region.rectangle(round(400 * k), round(300 * k)), load(ex))],
+        "grow": [("grow stones", load(ex), {}, Region.rectangle(round(300 * k), round(240 * k)), load(ex))],
+        "ornament": [("ornament dots", "dots", {}, Region.rectangle(round(150 * k), round(100 * k)), None)],
+        "program": [("program grid", str(ROOT / "examples" / "program" / "fig05_partitions.py"), {"name": "grid"}, Region.rectangle(round(600 * k), round(400 * k)), None)],
+    }
+
+
+def _figures(prefix: str, arr: Any, tile: Any, exemplar: Any) -> dict[str, Any]:
+    r = metrics.repeat_report(arr, exemplar, tile=tile)
+    out = {
+        f"{prefix}n": r["count"],
+        f"{prefix}wrap_ov": r["overlaps"]["across"],
+        f"{prefix}in_ov": r["overlaps"]["inside"],
+        f"{prefix}edge_dens": r["density"]["ratio"],
+        f"{prefix}edge_cov": r["coverage"]["ratio"],
+        f"{prefix}kind_diff": r["kind_fractions"]["max_difference"],
+    }
+    if "fidelity" in r:
+        out[f"{prefix}seam_fid"] = r["fidelity"]["ratio"]
+        out[f"{prefix}seam_fail"] = r["fidelity"]["seam_failing"]
+    return out
+
+
+def main() -> int:
+    args = parse_args(__doc__.splitlines()[0], lambda p: p.add_argument("--only", default=None, help="comma-separated methods"))
+    only = set(args.only.split(",")) if args.only else None
+    bench = Bench("periodic", "repeat tiles: periodic vs the same run without wrapping", baseline="periodic=False, same seed and size", json_path=args.json)
+    from strew import _periodic
+
+    for name, cases in _cases(args.quick).items():
+        if only and name not in only:
+            continue
+        spec = _method.spec(name)
+        if "periodic" not in spec.names:
+            bench.row(name, note="no periodic parameter yet")
+            continue
+        fn = spec.function()
+        for label, data, params, region, exemplar in cases:
+            seed = 1
+            try:
+                t_p, tile_arr = median_time(lambda: fn(data, region, rng=seed, periodic=True, **params), repeat=args.repeat)
+                t_f, flat = median_time(lambda: fn(data, region, rng=seed, periodic=False, **params), repeat=args.repeat)
+            except Exception as exc:  # a method mid-change: say so and go on
+                bench.row(label, note=f"failed: {type(exc).__name__}: {str(exc)[:80]}")
+                continue
+            frame = _periodic.frame(tile_arr)
+            row: dict[str, Any] = {"time_ratio": t_p / t_f if t_f > 0 else float("nan")}
+            if frame is None:
+                row["note"] = "periodic=True gave no meta.periodic"
+                bench.row(label, **row)
+                continue
+            row.update(_figures("p_", tile_arr, None, exemplar))
+            row.update(_figures("f_", flat, frame, exemplar))
+            bench.row(label, **row)
+    bench.finish()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
