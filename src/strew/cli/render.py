@@ -13,7 +13,11 @@ from ._common import check_outputs, out_option, quiet_option, save_outputs, visi
 @click.option("--width", type=click.IntRange(min=1), default=1024, show_default=True, help="PNG width in pixels.")
 @quiet_option
 def command(input: str, outs: tuple[str, ...], width: int, quiet: bool) -> None:
-    """Convert INPUT (.json or .svg; - reads standard input) into every --out (.json, .svg or .png)."""
+    """Convert INPUT (.json or .svg; - reads standard input) into every --out (.json, .svg or .png).
+
+    A periodic tile (made with --periodic) is drawn complete and seamless; --repeat 3x3
+    previews it repeated (the PNG width is rounded to whole pixels per tile).
+    """
     from ..io import load
 
     check_outputs(outs)
