@@ -20,7 +20,11 @@ Public entry points:
     A flat arrangement as 3D elements on a plane (GLB output of 2D results).
 :func:`local_map`
     Davison's m_p (§5.1, §5.7): exemplar offsets to surface points by a geodesic walk
-    in the field's frame (for synthesis on surfaces; synth does not use it yet).
+    in the field's frame.
+:func:`synthesize` / :func:`new_synth_state`
+    Davison et al.'s region growing on the surface (§5.7) with the brush, filler and
+    eraser (§5.4) on a :class:`SurfaceSynthState`, and view priority (§5.8) with a
+    :class:`Camera`.
 
 A surface arrangement is a :class:`strew.Arrangement` with the columns
 ``z nx ny nz tx ty tz`` (see :mod:`strew.surface._frames`); ``strew.save(arr,
@@ -35,9 +39,15 @@ from ._gltf import save_glb, shape_mesh, to_glb, to_scene
 from ._mesh import MESH_FORMATS, load_mesh
 from ._preview import render_preview, save_preview
 from ._sample import pack
+from ._synth import SurfaceSynthState, new_synth_state, synthesize
+from ._view import Camera
 from ._walk import chart, local_map, locate
 
 __all__ = [
+    "Camera",
+    "SurfaceSynthState",
+    "new_synth_state",
+    "synthesize",
     "chart",
     "MESH_FORMATS",
     "OrientationField",
