@@ -34,7 +34,9 @@ Browser -> server (coordinates are world units, ``points`` is ``[[x, y], ...]``)
 ``load_project``       reads them back
 ``export``             ``path`` inside PROJECT_DIR: .svg, .png or .json
 ``settings``           ``grow_mode``: fixed, rotate or flow (the spray, Ijiri §5.3);
-                       ``jitter_scale``, ``jitter_rotation``; ``brush_density`` (0.05-1)
+                       ``jitter_scale``, ``jitter_rotation``; ``brush_density`` (0.05-1);
+                       ``repeat`` (true/false): the repeat view, where brush, spray and
+                       eraser strokes wrap across the (rectangular) region's edges
 ``clip``               remove the scene elements outside the region (or across a
                        boundary stroke), locked layers kept
 ``layers``             ``order``, ``hidden``, ``locked``: kind names (one layer a kind)

@@ -132,6 +132,7 @@ class Session:
         self.fidelity: dict[str, Any] | None = None  # verdict of the last operation (status bar)
         self.rate: float | None = None  # elements/s of the last operation that added elements
         self.brush_density = 1.0
+        self.repeat = False  # the repeat view (issue 18.4): strokes wrap across the tile's edges
         self.layers: dict[str, list[str]] = {"order": [], "hidden": [], "locked": []}
         self.preload = preload
         self.outside = 0  # scene elements outside the region (see _count_outside)
@@ -529,6 +530,7 @@ class Session:
             "undo": len(self.undo_stack),
             "redo": len(self.redo_stack),
             "grow_mode": self.grow_mode,
+            "repeat": self._repeat_tile(),
             "message": message,
         }
 
@@ -739,7 +741,69 @@ class Session:
             self.jitter_rotation = np.deg2rad(get_number(msg, "jitter_rotation", lo=0.0, hi=180.0))
         if "brush_density" in msg:
             self.brush_density = get_number(msg, "brush_density", lo=0.05, hi=1.0)
+        if "repeat" in msg:
+            if not isinstance(msg["repeat"], bool):
+                raise InputError(f"repeat: expected true or false, got {str(msg['repeat'])[:40]!r}")
+            if msg["repeat"]:
+                self._tile()  # refuses a region that is not a rectangle
+            self.repeat = msg["repeat"]
         return [self.status_message()]
+
+    # ------------------------------------------------------------------ repeat view
+    def _repeat_tile(self) -> list[float] | None:
+        """The tile shown by the repeat view, or None (off, or the region is no longer a rectangle)."""
+        if self.repeat:
+            try:
+                return list(self._tile())
+            except InputError:
+                self.repeat = False
+        return None
+
+    def _tile(self) -> tuple[float, float, float, float]:
+        """The repeat tile: the region, which must be a rectangle."""
+        from .. import _periodic
+
+        try:
+            return _periodic.frame_of_region(self.region)
+        except InputError:
+            raise InputError("repeat: the repeat view needs a rectangular region (draw none, or set a size)") from None
+
+    def _wrap_runs(self, seg: np.ndarray, radius: float = 0.0) -> list[np.ndarray]:
+        """A stroke segment on the torus of the tile, as runs inside the tile.
+
+        Points are wrapped into the tile (:func:`strew._periodic.canonical`); where the
+        stroke crosses an edge it continues at the opposite edge: the run before the
+        crossing ends on the far side of the edge, the run after it starts there. With
+        ``radius``, the runs' copies one tile away whose discs reach into the tile
+        follow, so a brush or eraser near an edge also works across it.
+        """
+        from .. import _periodic
+
+        if not self.repeat or len(seg) == 0:
+            return [seg]
+        tile = self._tile()
+        x, y = _periodic.canonical(seg[:, 0], seg[:, 1], tile)
+        pts = np.c_[x, y]
+        runs: list[np.ndarray] = []
+        start = 0
+        for i in range(1, len(pts)):
+            a, b = pts[i - 1], pts[i]
+            step = np.array([_periodic.wrap_delta(b[0] - a[0], tile[2]), _periodic.wrap_delta(b[1] - a[1], tile[3])])
+            if np.allclose(a + step, b):
+                continue
+            runs.append(np.vstack([pts[start:i], a + step]))  # up to the crossing, beyond the edge
+            pts[i - 1] = b - step  # the next run starts beyond the opposite edge
+            start = i - 1
+        runs.append(pts[start:])
+        if radius > 0:
+            x0, y0, w, h = tile
+            for run in list(runs):
+                lo, hi = run.min(axis=0) - radius, run.max(axis=0) + radius
+                for i, j in _periodic.translations(3, 3):
+                    dx, dy = i * w, j * h
+                    if (i or j) and lo[0] + dx < x0 + w and hi[0] + dx > x0 and lo[1] + dy < y0 + h and hi[1] + dy > y0:
+                        runs.append(run + [dx, dy])
+        return runs
 
     def layers_message(self) -> dict[str, Any]:
         """The layers panel: one layer per kind, in drawing order (first drawn first)."""
@@ -1143,7 +1207,7 @@ class Session:
             out.append(self.layers_message())  # the layers' counts
         if tool in ("brush", "spray") and stroke["target"] == "scene":
             self.rate = stroke["added"] / stroke["compute"] if stroke["added"] and stroke["compute"] > 0 else None
-            area = shapely.LineString(allpts).buffer(stroke["radius"]) if len(allpts) > 1 else shapely.Point(allpts[0]).buffer(stroke["radius"])
+            area = shapely.union_all([shapely.LineString(r).buffer(stroke["radius"]) if len(r) > 1 else shapely.Point(r[0]).buffer(stroke["radius"]) for r in self._wrap_runs(allpts)])
             self._judge(shapely.intersection(area, stroke.get("face", self.region).geometry))
         return out + [self.status_message(note)]
 
@@ -1163,12 +1227,13 @@ class Session:
         before = self._scene_count()
         if self._scene_count() >= MAX_SCENE and tool != "erase":
             raise InputError(f"scene: over {MAX_SCENE} elements; erase some first")
-        if tool == "brush":
-            self._brush(seg, st["radius"], self._emit)
-        elif tool == "spray":
-            self._spray(seg, st["radius"], self._emit)
-        else:
-            self._erase(seg, st["radius"])
+        for run in self._wrap_runs(seg, st["radius"]):  # one run unless the repeat view wraps the stroke
+            if tool == "brush":
+                self._brush(run, st["radius"], self._emit)
+            elif tool == "spray":
+                self._spray(run, st["radius"], self._emit)
+            else:
+                self._erase(run, st["radius"])
         st["compute"] += time.perf_counter() - t
         st["added"] += max(0, self._scene_count() - before)
         st["removed"] = st.get("removed", 0) + max(0, before - self._scene_count())
@@ -1557,7 +1622,7 @@ class Session:
             written.append(PALETTE_FILE)
         scene = self.scene().replace(
             meta=self._meta(),
-            extra={"studio": {"flow": [s.tolist() for s in self.flow_strokes], "boundary": [s.tolist() for s in self.boundary_strokes], "grow_mode": self.grow_mode, "layers": self.layers}},
+            extra={"studio": {"flow": [s.tolist() for s in self.flow_strokes], "boundary": [s.tolist() for s in self.boundary_strokes], "grow_mode": self.grow_mode, "layers": self.layers, "repeat": self.repeat}},
         )
         save(scene, self.root / SCENE_FILE)
         written.append(SCENE_FILE)
@@ -1586,6 +1651,7 @@ class Session:
             self.boundary_strokes = [get_points({"p": s}, "p") for s in studio.get("boundary", [])]
             if studio.get("grow_mode") in GROW_MODES:
                 self.grow_mode = studio["grow_mode"]
+            self.repeat = studio.get("repeat") is True
             lay = studio.get("layers")
             if isinstance(lay, dict):
                 self.layers = {k: [n for n in lay.get(k, []) if isinstance(n, str)] if isinstance(lay.get(k), list) else [] for k in ("order", "hidden", "locked")}
@@ -1604,6 +1670,10 @@ class Session:
 
         path = resolve_in_project(self.root, msg.get("path"), suffixes=(".svg", ".png", ".json"))
         scene = self.scene().replace(meta=self._meta())
+        if self.repeat:  # a repeat tile: its SVG and PNG draw it complete and seamless
+            from .. import _periodic
+
+            scene = _periodic.mark(scene, self._tile())
         save(scene, path)
         rel = path.relative_to(self.root).as_posix()
         return [{"type": "exported", "path": rel, "count": len(scene)}, self.files_message(), self.status_message(f"exported {rel}")]

@@ -26,6 +26,8 @@ const studio = {
   stats: { strokeStart: null, countAtStart: 0, firstFrame: null, lastFrame: null, added: 0, rate: null },
   connected: false,
   pending: new Map(),
+  repeat: null,        // the repeat view's tile [x0, y0, W, H] (issue 18.4), or null
+  copiesDrawn: 0,      // tile copies drawn in the last full redraw (1, or 9 in the repeat view)
 };
 window.studio = studio;
 
@@ -104,6 +106,7 @@ function onStatus(m) {
   // elements/s of the last fill or stroke, as the server measured it (a live figure while painting)
   if (!studio.stats.tracking) showRate(m.rate);
   showFidelity(m.fidelity);
+  setRepeat(m.repeat || null);
   const clip = $("clip");
   clip.hidden = !(m.outside > 0);
   clip.textContent = `Clip ${m.outside} outside`;
@@ -140,7 +143,34 @@ function regionBounds() {
   for (const ring of studio.strokes.region) for (const [x, y] of ring) { x0 = Math.min(x0, x); y0 = Math.min(y0, y); x1 = Math.max(x1, x); y1 = Math.max(y1, y); }
   return isFinite(x0) ? [x0, y0, x1, y1] : [0, 0, 800, 600];
 }
-function fit() { const r = canvas.getBoundingClientRect(); studio.view.fit(regionBounds(), r.width, r.height); invalidate(); }
+function fit() {
+  const r = canvas.getBoundingClientRect();
+  let b = regionBounds();
+  const t = studio.repeat;
+  if (t) b = [t[0] - t[2], t[1] - t[3], t[0] + 2 * t[2], t[1] + 2 * t[3]];  // the 3 x 3 block
+  studio.view.fit(b, r.width, r.height); invalidate();
+}
+// The repeat view: the canvas tiled 3 x 3, the centre tile live and its copies around it
+// (the server wraps the strokes; here it is only drawing).
+function setRepeat(tile) {
+  const was = studio.repeat;
+  studio.repeat = tile;
+  $("repeat").classList.toggle("active", !!tile);
+  $("repeat").setAttribute("aria-pressed", tile ? "true" : "false");
+  canvas.dataset.repeat = tile ? "3x3" : "off";
+  if (JSON.stringify(was) !== JSON.stringify(tile)) fit();
+}
+// world offsets of the tile copies to draw: the centre last (on top)
+function tileOffsets() {
+  const t = studio.repeat;
+  if (!t) return [[0, 0]];
+  const out = [];
+  for (let j = -1; j <= 1; j++) for (let i = -1; i <= 1; i++) if (i || j) out.push([i * t[2], j * t[3]]);
+  out.push([0, 0]);
+  return out;
+}
+const COPY_ALPHA = 0.55;
+function shifted(view, dx, dy) { return { zoom: view.zoom, ox: view.ox + view.zoom * dx, oy: view.oy + view.zoom * dy, toScreen: (x, y) => view.toScreen(x + dx, y + dy) }; }
 let shownZoom = null;
 function showZoom() {
   const z = studio.view.zoom;
@@ -171,19 +201,26 @@ function drawLayer(view, w, h, dpr) {
   const g = lctx;
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
   g.clearRect(0, 0, w, h);
-  // region: white inside, dashed outline
+  const offsets = tileOffsets();
+  // region: white inside, dashed outline (each copy of the tile in the repeat view)
   g.fillStyle = "#fff"; g.beginPath();
-  for (const ring of studio.strokes.region) {
-    ring.forEach(([x, y], i) => { const [sx, sy] = view.toScreen(x, y); i ? g.lineTo(sx, sy) : g.moveTo(sx, sy); });
-    g.closePath();
+  for (const [dx, dy] of offsets) {
+    for (const ring of studio.strokes.region) {
+      ring.forEach(([x, y], i) => { const [sx, sy] = view.toScreen(x + dx, y + dy); i ? g.lineTo(sx, sy) : g.moveTo(sx, sy); });
+      g.closePath();
+    }
   }
-  g.fill("evenodd");
+  g.fill(offsets.length > 1 ? "nonzero" : "evenodd");
   g.setLineDash([5, 4]); g.strokeStyle = "#999"; g.lineWidth = 1;
-  for (const ring of studio.strokes.region) drawPolyline(g, view, ring, true);
+  for (const [dx, dy] of offsets) for (const ring of studio.strokes.region) drawPolyline(g, shifted(view, dx, dy), ring, true);
   g.setLineDash([]);
   // flow field arrows under the elements
   if (studio.strokes.arrows.length) { g.strokeStyle = "rgba(40,110,200,.45)"; g.lineWidth = 1; drawArrows(g, view, studio.strokes.arrows, studio.strokes.arrow_length); }
-  drawElements(g, studio.lib, studio.scene, view, w, h, dpr, layerOpts());
+  for (const [dx, dy] of offsets) {
+    const copy = dx !== 0 || dy !== 0;
+    drawElements(g, studio.lib, studio.scene, shifted(view, dx, dy), w, h, dpr, copy ? { ...layerOpts(), alpha: COPY_ALPHA } : layerOpts());
+  }
+  studio.copiesDrawn = offsets.length;
   Object.assign(cache, { valid: true, zoom: view.zoom, ox: view.ox, oy: view.oy, n: studio.scene.n, w: canvas.width, h: canvas.height });
 }
 
@@ -195,8 +232,11 @@ function draw(t) {
   const sameView = cache.valid && cache.zoom === view.zoom && cache.w === canvas.width && cache.h === canvas.height;
   if (!sameView || studio.scene.n < cache.n) drawLayer(view, w, h, dpr);
   else if (studio.scene.n > cache.n) {
-    const at = { zoom: cache.zoom, ox: cache.ox, oy: cache.oy };
-    drawElements(lctx, studio.lib, studio.scene, at, w, h, dpr, { ...layerOpts(), from: cache.n });
+    const at = { zoom: cache.zoom, ox: cache.ox, oy: cache.oy, toScreen: (x, y) => [cache.zoom * x + cache.ox, cache.zoom * y + cache.oy] };
+    for (const [dx, dy] of tileOffsets()) {
+      const copy = dx !== 0 || dy !== 0;
+      drawElements(lctx, studio.lib, studio.scene, shifted(at, dx, dy), w, h, dpr, { ...layerOpts(), from: cache.n, ...(copy ? { alpha: COPY_ALPHA } : {}) });
+    }
     cache.n = studio.scene.n;
   }
   ctx.setTransform(1, 0, 0, 1, 0, 0);
@@ -287,6 +327,9 @@ $("undo").addEventListener("click", () => send({ type: "undo" }));
 $("redo").addEventListener("click", () => send({ type: "redo" }));
 $("stop").addEventListener("click", () => send({ type: "stop" }));
 $("fit").addEventListener("click", fit);
+function toggleRepeat() { send({ type: "settings", repeat: !studio.repeat }); }
+studio.toggleRepeat = toggleRepeat;
+$("repeat").addEventListener("click", toggleRepeat);
 $("clear").addEventListener("change", () => { const v = $("clear").value; if (v) send({ type: "clear", what: v }); $("clear").value = ""; });
 $("save").addEventListener("click", () => send({ type: "save" }));
 $("load").addEventListener("click", () => send({ type: "load_project" }));
@@ -372,6 +415,7 @@ window.addEventListener("keydown", (ev) => {
   if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === "z") { send({ type: ev.shiftKey ? "redo" : "undo" }); ev.preventDefault(); return; }
   if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === "y") { send({ type: "redo" }); ev.preventDefault(); return; }
   if (ev.key === " ") { spaceDown = true; ev.preventDefault(); return; }
+  if (!ev.ctrlKey && !ev.metaKey && ev.key === "t") { toggleRepeat(); return; }
   if (!ev.ctrlKey && !ev.metaKey && keys[ev.key]) setTool(keys[ev.key]);
 });
 window.addEventListener("keyup", (ev) => { if (ev.key === " ") spaceDown = false; });
