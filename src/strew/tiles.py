@@ -37,15 +37,15 @@ import numpy as np
 
 from ._errors import InputError
 
-__all__ = ["Tile", "plan", "world", "tiled", "WorldInfo", "tile_rng", "border_band", "DISTRIBUTED_HINT"]
+__all__ = ["Tile", "plan", "plan_periodic", "world", "tiled", "periodic", "WorldInfo", "tile_rng", "border_band", "DISTRIBUTED_HINT"]
 
 DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 
 # methods whose result is a stationary texture that tiles (issue 19 point 1). pack is
-# seamless (tests/worlds: border strips 0.95-1.0x the interior's density); synth runs
-# without overlaps but is not yet seamless (its context is an obstacle, not a
-# neighbourhood: strips 0.45-0.7x on stones.svg); ornament is not here yet (its tiles
-# give one kind name different shapes, which concat refuses).
+# seamless (tests/worlds: border strips 0.985-1.03x the interior's density); synth runs
+# without overlaps, as seamless as its context makes it (a neighbourhood, not only an
+# obstacle); ornament is not here yet (its tiles give one kind name different shapes).
+# On a torus (periodic=True) any method with context tiles.
 TILED_METHODS = ("pack", "synth")
 
 
@@ -93,36 +93,87 @@ def plan(size: tuple[float, float], tile_size: float) -> tuple[list[Tile], int, 
     return tiles, nx, ny
 
 
+def plan_periodic(size: tuple[float, float], tile_size: float | None = None) -> tuple[list[Tile], int, int]:
+    """The tiles of a periodic ``size = (W, H)`` world (a torus), row-major, and ``(nx, ny)``.
+
+    The counts per axis are even (at least 2), so that the 2 x 2 phase colouring holds
+    across the wrap: ``nx = 2 round(W / 2T)`` (at least 2) and the tiles are the equal
+    ``W / nx x H / ny`` rectangles nearest to ``tile_size`` [default: 2 x 2 tiles].
+    """
+    w, h = (float(size[0]), float(size[1]))
+    if not (math.isfinite(w) and math.isfinite(h) and w > 0 and h > 0):
+        raise InputError(f"size: must be positive, got {size!r}")
+    if tile_size is None:
+        nx = ny = 2
+    else:
+        t = float(tile_size)
+        if not (math.isfinite(t) and t > 0):
+            raise InputError(f"tile_size: must be positive, got {tile_size!r}")
+        nx, ny = (max(2, 2 * round(v / (2 * t))) for v in (w, h))
+    tw, th = w / nx, h / ny
+    tiles = []
+    for j in range(ny):
+        for i in range(nx):
+            x1 = w if i == nx - 1 else (i + 1) * tw
+            y1 = h if j == ny - 1 else (j + 1) * th
+            tiles.append(Tile(j * nx + i, i, j, (i * tw, j * th, x1, y1), (j % 2) * 2 + i % 2))
+    return tiles, nx, ny
+
+
 def tile_rng(seed: int, index: int) -> np.random.Generator:
     """The Generator of tile ``index``: ``SeedSequence(seed, spawn_key=(index,))``."""
     return np.random.Generator(np.random.PCG64(np.random.SeedSequence(int(seed), spawn_key=(int(index),))))
 
 
-def _neighbours(t: Tile, nx: int, ny: int) -> list[int]:
-    """Indices of the lower-phase tiles among the 8 around ``t`` (its dependencies)."""
-    out = []
+def _neighbours(t: Tile, nx: int, ny: int, periodic: bool = False) -> list[int]:
+    """Indices of the lower-phase tiles among the 8 around ``t`` (its dependencies);
+    on a torus (``periodic``) the grid wraps."""
+    return sorted(_links(t, nx, ny, (float(nx), float(ny)) if periodic else None))
+
+
+def _links(t: Tile, nx: int, ny: int, torus: tuple[float, float] | None) -> dict[int, list[tuple[float, float]]]:
+    """The lower-phase neighbours of ``t`` and the translations that carry their
+    elements next to ``t``: ``{index: [(dx, dy), ...]}``.
+
+    In a plane every translation is (0, 0). On a torus of size ``torus = (W, H)`` the
+    grid wraps: a neighbour across the edge is moved by +-W or +-H, and with 2 tiles
+    along an axis the tile on the left is also the one on the right (two translations).
+    """
+    out: dict[int, list[tuple[float, float]]] = {}
     for dj in (-1, 0, 1):
         for di in (-1, 0, 1):
+            if not (di or dj):
+                continue
             i, j = t.i + di, t.j + dj
-            if (di or dj) and 0 <= i < nx and 0 <= j < ny:
-                phase = (j % 2) * 2 + i % 2
-                if phase < t.phase:
-                    out.append(j * nx + i)
-    return sorted(out)
+            if torus is None:
+                if not (0 <= i < nx and 0 <= j < ny):
+                    continue
+                shift = (0.0, 0.0)
+            else:
+                shift = ((i // nx) * torus[0], (j // ny) * torus[1])
+                i, j = i % nx, j % ny
+            if (j % 2) * 2 + i % 2 < t.phase:
+                out.setdefault(j * nx + i, []).append(shift)
+    return dict(sorted(out.items()))
 
 
-def _grow(rect: tuple[float, float, float, float], d: float, size: tuple[float, float]) -> tuple[float, float, float, float]:
+def _grow(rect: tuple[float, float, float, float], d: float, size: tuple[float, float] | None) -> tuple[float, float, float, float]:
+    """``rect`` grown by ``d``, clipped to the world ``[0, W] x [0, H]`` (not on a torus: ``size`` None)."""
     x0, y0, x1, y1 = rect
+    if size is None:
+        return (x0 - d, y0 - d, x1 + d, y1 + d)
     return (max(0.0, x0 - d), max(0.0, y0 - d), min(size[0], x1 + d), min(size[1], y1 + d))
 
 
-def _owned(arr: Any, t: Tile, size: tuple[float, float]) -> np.ndarray:
-    """Mask of the elements whose centre ``t`` owns (half-open, far world edges closed)."""
-    x0, y0, x1, y1 = t.rect
-    x, y = arr.x, arr.y
-    right = (x < x1) | ((x1 >= size[0]) & (x <= x1))
-    top = (y < y1) | ((y1 >= size[1]) & (y <= y1))
-    return (x >= x0) & (y >= y0) & right & top
+def _owner(x: np.ndarray, y: np.ndarray, job: _Job) -> np.ndarray:
+    """Index of the tile whose half-open rectangle holds each centre (the world's far
+    edges closed; on a torus, of the centre wrapped into the world)."""
+    w, h = job.size
+    if job.periodic:
+        x, y = np.mod(x, w), np.mod(y, h)
+    i = np.clip(np.floor(x / job.tile[0]), 0, job.grid[0] - 1).astype(np.int64)
+    j = np.clip(np.floor(y / job.tile[1]), 0, job.grid[1] - 1).astype(np.int64)
+    return j * job.grid[0] + i
 
 
 def border_band(arr: Any, t: Tile, halo: float) -> Any:
@@ -149,6 +200,13 @@ class _Job:
     size: tuple[float, float]
     halo: float
     seed: int
+    tile: tuple[float, float] = (0.0, 0.0)  # tile width and height (the last column/row may be narrower)
+    grid: tuple[int, int] = (1, 1)
+    periodic: bool = False
+
+    @property
+    def torus(self) -> tuple[float, float] | None:
+        return self.size if self.periodic else None
 
 
 def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
@@ -159,33 +217,56 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     job : _Job
     t : Tile
     *neighbours : Arrangement
-        The results of :func:`_neighbours` (t), in index order.
+        The border bands of :func:`_neighbours` (t), in index order.
 
     Returns
     -------
     Arrangement
-        The elements whose centre ``t`` owns; ``meta`` holds only ``{"tile": index}``.
+        The new elements whose centre lies in ``t`` or in a finished (lower-phase)
+        neighbour; ``meta`` holds only ``{"tile": index}``. On a torus the positions are
+        not wrapped (they stay next to ``t``, as its dependents expect them).
+
+    Notes
+    -----
+    The keep-rule. A tile keeps what it placed in its finished neighbours' part of its
+    grown rectangle, and drops only what lies in the unfinished ones (they fill it
+    themselves, seeing this tile's elements). Keeping only the centres in ``t`` left a
+    thin empty seam: the gaps of a finished tile's edge were filled by elements centred
+    on its side, which were then dropped (pack, 150 x 120 world, tiles 30: centres
+    within 1 unit of a border at 0.81x the interior's density). An element kept in a
+    neighbour's rectangle lies in ``t``'s grown rectangle, so every later tile that can
+    touch it is a neighbour of ``t`` and sees it in ``t``'s border band.
     """
     from ._method import spec
     from .arrangement import concat
     from .region import Region
 
     fn = spec(job.method).function()
-    grown = _grow(t.rect, job.halo, job.size)
-    region = Region.rectangle(grown[2] - grown[0], grown[3] - grown[1])
+    torus = job.torus
+    grown = _grow(t.rect, job.halo, None if torus else job.size)
     if grown[0] or grown[1]:
         import shapely
 
         region = Region(shapely.box(*grown))
+    else:
+        region = Region.rectangle(grown[2] - grown[0], grown[3] - grown[1])
     # every finished element that can touch the grown rectangle: centre within 2 halo
-    # (halo >= the element's diameter, see world())
-    window = _grow(t.rect, 2 * job.halo, job.size)
-    parts = [n.select(_near(n, window)) for n in neighbours if len(n)]
+    # (halo >= the element's diameter, see world()); across the wrap, moved next to t
+    window = _grow(t.rect, 2 * job.halo, None if torus else job.size)
+    links = _links(t, job.grid[0], job.grid[1], torus)
+    parts = []
+    for n, shifts in zip(neighbours, links.values()):
+        if not len(n):
+            continue
+        for dx, dy in shifts:
+            m = n.replace(x=n.x + dx, y=n.y + dy) if (dx or dy) else n
+            parts.append(m.select(_near(m, window)))
+    parts = [p for p in parts if len(p)]
     context = concat(parts) if parts else None
-    if context is not None and len(context) == 0:
-        context = None
     arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **job.params)
-    arr = arr.select(_owned(arr, t, job.size))
+    owner = _owner(arr.x, arr.y, job)
+    keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
+    arr = arr.select(keep)
     return arr.replace(meta={"tile": t.index}, region=None)
 
 
@@ -255,9 +336,10 @@ def world(
     input: Any,
     size: tuple[float, float] | str,
     *,
-    tile_size: float,
+    tile_size: float | None,
     halo: float | None = None,
     seed: int = 0,
+    periodic: bool = False,
     workers: int = 1,
     scheduler: str | None = None,
     processes: bool = True,
@@ -277,12 +359,18 @@ def world(
         The method's input (shapes, palette, pattern), as for the method itself.
     size : (W, H) or "WxH"
     tile_size : float
-        Side of a tile (document units); at least twice ``halo``.
+        Side of a tile (document units); at least twice ``halo``. With ``periodic``
+        optional: the tiles are the equal rectangles nearest to it that make an even
+        count per axis [default: 2 x 2 tiles] (:func:`plan_periodic`).
     halo : float, optional
         How far a tile grows into its neighbours and sees their elements
         [default: twice the largest element extent for pack, a quarter tile otherwise].
     seed : int
         Tile ``k`` draws from ``SeedSequence(seed, spawn_key=(k,))``.
+    periodic : bool
+        The world is a torus (issue 18): tiles across the edges are neighbours, their
+        elements seen moved by +-W, +-H; any method with ``context`` then tiles. The
+        elements that ``sink`` receives are wrapped into ``[0, W) x [0, H)``.
     workers : int
         1 runs in this process; N > 1 on a local Dask cluster of N single-threaded
         workers (processes unless ``processes=False``).
@@ -307,7 +395,7 @@ def world(
     from ._method import _jsonable, spec
     from ._version import __version__
 
-    if method not in TILED_METHODS:
+    if method not in TILED_METHODS and not periodic:
         raise InputError(f"method: {method!r} does not tile; use one of {', '.join(TILED_METHODS)}")
     if isinstance(size, str):
         try:
@@ -316,20 +404,32 @@ def world(
         except ValueError:
             raise InputError(f"size: expected WxH, got {size!r}") from None
     size = (float(size[0]), float(size[1]))
-    tiles, nx, ny = plan(size, tile_size)
+    if periodic:
+        tiles, nx, ny = plan_periodic(size, tile_size)
+        tw, th = size[0] / nx, size[1] / ny
+    else:
+        if tile_size is None:
+            raise InputError("tile_size: give the side of a tile")
+        tiles, nx, ny = plan(size, tile_size)
+        tw = th = float(tile_size)
+    tmin = min(tw, th)
     s = spec(method)
     checked = s.validate(params)
     params = {k: v for k, v in params.items()}
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise InputError(f"seed: must be a non-negative integer, got {seed!r}")
     if halo is None:
-        halo = _default_halo(method, input, checked, float(tile_size))
-    if not (math.isfinite(halo) and 0 < halo <= tile_size / 2):
-        raise InputError(f"halo: must be in (0, tile_size / 2] = (0, {tile_size / 2:g}], got {halo:g} "
-                         f"(elements too large for tiles of {tile_size:g}: raise tile_size)")
+        halo = _default_halo(method, input, checked, tmin)
+    if not (math.isfinite(halo) and 0 < halo <= tmin / 2):
+        if periodic:
+            raise InputError(f"size: a periodic {size[0]:g} x {size[1]:g} tile is cut into {nx} x {ny} tiles (an even "
+                             f"count per axis, for the 2x2 phases across the wrap) of {tw:g} x {th:g}, less than twice "
+                             f"the halo {halo:g} (the elements' reach): make the size at least {4 * halo:g} on each side")
+        raise InputError(f"halo: must be in (0, tile_size / 2] = (0, {tmin / 2:g}], got {halo:g} "
+                         f"(elements too large for tiles of {tmin:g}: raise tile_size)")
     if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
         raise InputError(f"workers: must be a positive integer, got {workers!r}")
-    job = _Job(method, input, params, size, float(halo), int(seed))
+    job = _Job(method, input, params, size, float(halo), int(seed), (tw, th), (nx, ny), bool(periodic))
     counts = np.zeros(len(tiles), np.int64)
     kinds: dict[str, int] = {}
     shapes: dict[str, Any] = {}
@@ -342,6 +442,10 @@ def world(
         if not shapes and len(arr):
             shapes.update(arr.shapes)
         if sink is not None:
+            if periodic and len(arr):
+                from ._periodic import canonical
+
+                arr = arr.replace(**dict(zip("xy", canonical(arr.x, arr.y, (0.0, 0.0, *size)))))
             sink(t.index, arr)
         if progress is not None:
             rate = counts.sum() / max(time.perf_counter() - t0, 1e-9)
@@ -369,7 +473,8 @@ def world(
         "method": method,
         "seed": int(seed),
         "params": _jsonable(checked),
-        "world": {"size": list(size), "tile_size": float(tile_size), "halo": float(halo), "grid": [nx, ny],
+        "world": {"size": list(size), "tile_size": float(tmin) if tile_size is None else float(tile_size),
+                  "tile": [tw, th], "periodic": bool(periodic), "halo": float(halo), "grid": [nx, ny],
                   "tiles": len(tiles), "elements": int(counts.sum()), "phases": "2x2 (Wei 2008)",
                   "rng": "SeedSequence(seed, spawn_key=(tile,))"},
     }
@@ -386,7 +491,7 @@ def _check_cancel(should_cancel: Callable[[], bool] | None) -> None:
 def _run_serial(job: _Job, tiles: list[Tile], nx: int, ny: int, done: Callable[..., None],
                 should_cancel: Callable[[], bool] | None) -> None:
     """Phase by phase in this process; a tile's result is kept until its last dependent ran."""
-    deps = {t.index: _neighbours(t, nx, ny) for t in tiles}
+    deps = {t.index: _neighbours(t, nx, ny, job.periodic) for t in tiles}
     waiting = {t.index: 0 for t in tiles}
     for t in tiles:
         for d in deps[t.index]:
@@ -418,7 +523,7 @@ def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done:
     futures: dict[int, Any] = {}
     bands: dict[int, Any] = {}
     run_id = uuid.uuid4().hex[:12]  # keys unique on a shared cluster
-    deps = {t.index: _neighbours(t, nx, ny) for t in tiles}
+    deps = {t.index: _neighbours(t, nx, ny, job.periodic) for t in tiles}
     needed = {d for ds in deps.values() for d in ds}
     for phase in range(4):  # submit in phase order so that dependencies exist
         for t in tiles:
@@ -452,7 +557,7 @@ def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done:
             f.cancel()
 
 
-def tiled(method: str, input: Any, size: tuple[float, float] | str, *, tile_size: float, **kwargs: Any) -> Any:
+def tiled(method: str, input: Any, size: tuple[float, float] | str, *, tile_size: float | None, **kwargs: Any) -> Any:
     """The whole world as one :class:`~strew.Arrangement` (small worlds: tests, previews).
 
     Takes the arguments of :func:`world` (not ``sink``); ``meta`` holds the world's
@@ -471,6 +576,75 @@ def tiled(method: str, input: Any, size: tuple[float, float] | str, *, tile_size
     if not arrs:
         return Arrangement(shapes, [], [], [], region=Region.rectangle(w, h), meta=info.meta)
     return concat(arrs).replace(region=Region.rectangle(w, h), meta=info.meta)
+
+
+def periodic(method: str, input: Any, size: Any, *, rng: Any = None, tile_size: float | None = None,
+             halo: float | None = None, workers: int = 1, **params: Any) -> Any:
+    """A repeat tile (issue 18) made by tiling a torus: any method with ``context``.
+
+    The ``W x H`` tile is cut into an even number of tiles per axis (2 x 2 by default),
+    so that the 2 x 2 phases of :func:`world` hold across the wrap; each tile runs
+    ``method`` around its finished neighbours, those across the edges moved by +-W or
+    +-H. Every contact of the repeat is thus made by one run seeing the other side as
+    its context: tiled copies of the result do not overlap (pack's context is an
+    obstacle; synth and grow continue their neighbourhoods across it, as far as their
+    ``context`` does).
+
+    Parameters
+    ----------
+    method : str
+        A method name of :mod:`strew._method` (``"pack"``, ``"synth"``, ``"grow"``, ...).
+    input : object
+        The method's input.
+    size : (W, H), "WxH" or Region
+        The tile; a Region must be an axis-aligned rectangle (its corner is kept).
+    rng : int, Generator or None
+        The tiles' seed is this int, or one drawn from the Generator; ``meta`` records
+        it as the methods do (``seed`` or ``rng_state``).
+    tile_size : float, optional
+        Side of the tiles the torus is cut into (rounded to even counts) [default: 2 x 2].
+    halo : float, optional
+        As for :func:`world`.
+    workers : int
+        As for :func:`world` (1: this process).
+    **params
+        The method's parameters.
+
+    Returns
+    -------
+    Arrangement
+        Marked with :func:`strew._periodic.mark`: ``meta["periodic"] = [x0, y0, W, H]``,
+        canonical positions; ``meta["world"]`` holds the tiling and ``tile`` each
+        element's tile.
+
+    Raises
+    ------
+    InputError
+        A region that is not a rectangle; a tile too small for 2 x 2 tiles of at least
+        twice the halo.
+    """
+    from . import _periodic
+    from ._method import METHODS, as_region, seed_record, spec, stamp
+    from .region import Region
+
+    if method not in METHODS:
+        raise InputError(f"method: unknown method {method!r}")
+    dom = as_region(size, "size")
+    if dom is None:
+        raise InputError("size: give the tile to fill, (W, H) or 'WxH'")
+    x0, y0, w, h = _periodic.frame_of_region(dom)
+    gen, seed_rec = seed_record(rng)
+    seed = int(seed_rec["seed"]) if "seed" in seed_rec else int(gen.integers(0, 2**63 - 1))
+    arr = tiled(method, input, (w, h), tile_size=tile_size, halo=halo, seed=seed, workers=workers,
+                periodic=True, **params)
+    if x0 or y0:
+        arr = arr.replace(x=arr.x + x0, y=arr.y + y0)
+    world_meta = dict(arr.meta["world"], seed=seed)
+    checked = spec(method).validate(params)
+    region = Region.rectangle(w, h, x0, y0) if (x0 or y0) else Region.rectangle(w, h)
+    arr = arr.replace(region=region, meta={"world": world_meta})
+    arr = stamp(arr, spec(method), input, checked, seed_rec, region=region)
+    return _periodic.mark(arr, (x0, y0, w, h))
 
 
 def iter_phases(tiles: list[Tile]) -> Iterator[list[Tile]]:

@@ -76,15 +76,15 @@ def test_no_overlaps_across_borders_and_all_inside(worlds):
 
 
 def test_border_strips_match_the_interior(worlds):
-    # measured (seed 3): strips of half-width halo along the inner tile borders hold
-    # 0.948x the interior's density (an untiled pack of a 300x240 world: 1.009x on the
-    # same lines; tiled 300x240: 1.000x), and bar fractions 0.468 vs 0.449: the seam
-    # costs up to ~6% density in the narrowest strips, not the 3% (report).
+    # measured: strips of half-width halo along the inner tile borders hold 0.985x the
+    # interior's density (seed 3; seeds 3-6: 0.985-1.032, mean 1.012; an untiled pack
+    # of the same world on the same lines: 0.980-1.000, mean 0.992). Before the
+    # keep-rule of run_tile (a tile keeps what it places in finished neighbours): 0.948x.
     _, (arr, info), _ = worlds
     halo = info.meta["world"]["halo"]
     strip, inner, sa, ia = border_strips(arr, SIZE, TILE, halo, halo)
     ratio = (strip.sum() / sa) / (inner.sum() / ia)
-    assert 0.92 <= ratio <= 1.08, ratio
+    assert 0.97 <= ratio <= 1.03, ratio
     frac_strip = (arr.kind[strip] == 0).mean()
     frac_inner = (arr.kind[inner] == 0).mean()
     assert abs(frac_strip - frac_inner) < 0.03, (frac_strip, frac_inner)
