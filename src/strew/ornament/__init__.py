@@ -117,6 +117,8 @@ SPEC = MethodSpec(
         Param("line_width", "float", None, low=0, low_open=True, unit="document units",
               help="Base line width [default: a fifth of the minimum radius].", cli=False),
         Param("draw_seeds", "bool", False, help="Draw the seeds too.", cli=False),
+        Param("periodic", "bool", False, cli="flag",
+              help="Grow a repeat tile of the rectangular region: growth wraps around its edges (issue 18)."),
     ),
 )
 
@@ -168,6 +170,11 @@ def grow_ornament(
         Progress report and cancellation check.
     line_width : float, optional
         Passed to :func:`render_ornament`, as ``draw_seeds`` (its ``seeds``).
+    periodic : bool
+        Grow a repeat tile: the region must be a rectangle, the tile of a torus; empty
+        circles, distances and collisions wrap around its edges, so that rules grow
+        across an edge into the opposite side. Elements are kept once, at canonical
+        positions, and ``meta["periodic"]`` records the tile (see :mod:`strew._periodic`).
 
     The parameters from ``seeds`` on are keyword only, checked against :data:`SPEC`.
 
@@ -192,6 +199,13 @@ def grow_ornament(
     pat = load_pattern(pattern)
     if prm["style"] not in _styles(pat):
         raise InputError(f"style: unknown style {prm['style']!r} for pattern {pat.name!r} (have: {', '.join(_styles(pat))})")
+    tile = None
+    if prm["periodic"]:
+        from .._periodic import frame_of_region
+
+        tile = frame_of_region(dom)
+        if ctx is not None:
+            raise InputError("periodic: a repeat tile cannot grow around context elements (--around)")
     free = free_region(dom, ctx)
     record = {"pattern": pattern if isinstance(pattern, str) else pat.name, **prm}
     if is_empty(free):
@@ -209,10 +223,17 @@ def grow_ornament(
             max_elements=prm["max_elements"],
             progress=progress,
             should_cancel=should_cancel,
+            periodic=prm["periodic"],
         )
+        if tile is not None:
+            orn.region = None  # type: ignore[assignment]  # elements crossing the edge are drawn whole
         arr = orn.render(prm["style"], line_width=prm["line_width"], seeds=prm["draw_seeds"])
-        if free is not dom:
+        if free is not dom or tile is not None:
             arr = arr.replace(region=dom)
+        if tile is not None:
+            from .._periodic import mark
+
+            arr = mark(arr, tile)
         # the engine's resolved values (default seeds, resolution, min_radius) replace the Nones
         resolved = arr.meta.get("params", {})
         record.update({k: resolved[k] for k in prm if record.get(k) is None and resolved.get(k) is not None})

@@ -62,6 +62,39 @@ class Goal:
     radius: float
 
 
+class _Image:
+    """A proxy translated by a whole number of tile periods (issue 18: periodic growth).
+
+    Stands in :class:`_Placed` for the wrapped copies of an element near the tile's
+    edges: it answers ``geometry``, ``polyline``, ``closed`` and ``bounding_circle`` as
+    the translated proxy would.
+    """
+
+    __slots__ = ("base", "dx", "dy", "_geom")
+
+    def __init__(self, base: Proxy, dx: float, dy: float) -> None:
+        self.base, self.dx, self.dy = base, float(dx), float(dy)
+        self._geom = None
+
+    @property
+    def geometry(self) -> shapely.Geometry:
+        if self._geom is None:
+            d = np.array([self.dx, self.dy])
+            self._geom = shapely.transform(self.base.geometry, lambda p: p + d)
+        return self._geom
+
+    def polyline(self) -> np.ndarray:
+        return self.base.polyline() + np.array([self.dx, self.dy])
+
+    @property
+    def closed(self) -> bool:
+        return self.base.closed
+
+    def bounding_circle(self) -> tuple[float, float, float]:
+        cx, cy, r = self.base.bounding_circle()
+        return cx + self.dx, cy + self.dy, r
+
+
 class _Placed:
     """Placed proxies: bounding circles in growable arrays, exact geometry on demand."""
 
@@ -76,11 +109,16 @@ class _Placed:
         self.br = np.empty(cap)
         self.round = np.empty(cap, bool)  # point or circle: exact analytic tests
         self.owner = np.empty(cap, np.int64)
-        self.proxies: list[Proxy] = []
+        self.ox = np.empty(cap)  # the image's translation (periodic growth), 0 for the proxy itself
+        self.oy = np.empty(cap)
+        self.proxies: list[Any] = []
 
-    def add(self, proxy: Proxy, owner: int) -> None:
+    def add(self, proxy: Proxy, owner: int, dx: float = 0.0, dy: float = 0.0) -> None:
+        rnd = isinstance(proxy, (Circle, Point))
+        if dx != 0.0 or dy != 0.0:
+            proxy = _Image(proxy, dx, dy)  # type: ignore[assignment]
         if self.n == len(self.bx):
-            for name in ("bx", "by", "br", "round", "owner"):
+            for name in ("bx", "by", "br", "round", "owner", "ox", "oy"):
                 a = getattr(self, name)
                 b = np.empty(2 * len(a), a.dtype)
                 b[: self.n] = a
@@ -88,8 +126,9 @@ class _Placed:
         cx, cy, r = proxy.bounding_circle()
         i = self.n
         self.bx[i], self.by[i], self.br[i] = cx, cy, r
-        self.round[i] = isinstance(proxy, (Circle, Point))
+        self.round[i] = rnd
         self.owner[i] = owner
+        self.ox[i], self.oy[i] = dx, dy
         self.proxies.append(proxy)
         self.n += 1
         b = self.bucket
@@ -213,6 +252,8 @@ class RuleContext:
     def boundary_distance(self, point: Any) -> float:
         """Distance from ``point`` to the region boundary: positive inside, negative outside."""
         p = vec(point)
+        if self._g.periodic is not None:
+            return math.inf  # a torus has no boundary
         d = float(shapely.distance(self._g.region.boundary, shapely.Point(p)))
         return d if self._g.region.contains(p[None])[0] else -d
 
@@ -291,6 +332,7 @@ class _Grower:
         max_elements: int | None,
         reporter: Reporter,
         incremental: bool = True,
+        periodic: tuple[float, float, float, float] | None = None,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -311,13 +353,25 @@ class _Grower:
             self.rules_by_parent.setdefault(r.parent, []).append(r)
         bx0, by0, bx1, by1 = region.bounds
         size = max(bx1 - bx0, by1 - by0)
+        # Periodic growth (issue 18; the paper grows in a panel): the region is the tile of
+        # a torus. Every placed proxy gets its 8 translates by whole periods (ghost images
+        # for the exact tests), the raster covers the tile and a margin around it into
+        # which those images are rendered, and only cells of the tile itself are candidate
+        # centres. Distances, empty circles and collisions therefore wrap around the torus.
+        self.periodic = periodic
+        self.margin = 0.0
+        if periodic is not None:
+            # the medial axis of the field restricted to the tile lies within half the
+            # tile's diagonal of the obstacles that shape it: render their images that far
+            self.margin = 0.5 * math.hypot(bx1 - bx0, by1 - by0)
+            bx0, by0, bx1, by1 = bx0 - self.margin, by0 - self.margin, bx1 + self.margin, by1 + self.margin
         if resolution is None:
             # cells of half the minimum radius, between 256 and 2048 along the longer side
             resolution = int(np.clip(np.ceil(size / (0.5 * min_radius)), 256, 2048))
         if not (isinstance(resolution, (int, np.integer)) and 8 <= resolution <= 8192):
             raise InputError(f"resolution: expected an integer between 8 and 8192 cells, got {resolution!r}")
         self.resolution = int(resolution)
-        h = size / resolution
+        h = size / resolution  # (cells along the region's, or the tile's, longer side)
         self.h = h
         self.pad = h * math.sqrt(0.5)
         self.tol = 1e-9 * max(1.0, size)
@@ -330,7 +384,11 @@ class _Grower:
         ys = self.y0 + (np.arange(rows) + 0.5) * h
         gx, gy = np.meshgrid(xs, ys)
         inside = shapely.contains_xy(region.prepared, gx.ravel(), gy.ravel()).reshape(rows, cols)
-        covered = np.where(inside, 0, 1).astype(np.int8)
+        if periodic is None:
+            covered = np.where(inside, 0, 1).astype(np.int8)
+        else:
+            # no boundary on a torus: cells outside the tile are only not candidates (bit 4)
+            covered = np.where(inside, 0, 4).astype(np.int8)
         # Cells whose centre lies outside R are covered. Circles cover the cells whose
         # centre they contain; lines and points cover the cells within half a cell
         # diagonal, so that none slips between cell centres. Raster distances therefore
@@ -339,9 +397,13 @@ class _Grower:
         self.has_lines = False
         self.covered = covered
         # -- initial distance transform (the MAT's values) ------------------------------
-        d, (ii, jj) = ndimage.distance_transform_edt(covered == 0, return_indices=True)
-        self.dist_all = d.astype(np.float64)
-        self.near_all = (ii.astype(np.int64) * cols + jj).astype(np.int64)
+        if periodic is None:
+            d, (ii, jj) = ndimage.distance_transform_edt(covered == 0, return_indices=True)
+            self.dist_all = d.astype(np.float64)
+            self.near_all = (ii.astype(np.int64) * cols + jj).astype(np.int64)
+        else:  # nothing covered yet: the seeds' waves set every distance
+            self.dist_all = np.full((rows, cols), np.inf)
+            self.near_all = np.full((rows, cols), -1, np.int64)
         self.dist_el = np.full((rows, cols), np.inf)
         self.near_el = np.full((rows, cols), -1, np.int64)
         self.skip = np.zeros((rows, cols), bool)
@@ -359,6 +421,8 @@ class _Grower:
             ring = np.vstack([p.points, p.points[:1]])
             rings.append(np.c_[ring[:-1], ring[1:]])
         self.boundary_segs = np.ascontiguousarray(np.vstack(rings), dtype=np.float64)
+        if periodic is not None:
+            self.boundary_segs = np.zeros((0, 4))
         self.region_cover = shapely.buffer(region.geometry, 1e-7 * max(1.0, size))
         shapely.prepare(self.region_cover)
         self.stats: dict[str, Any] = dict(iterations=0, successes=0, failures=0, rejected=0, outside=0)
@@ -371,6 +435,8 @@ class _Grower:
 
     # -- exact environment queries --------------------------------------------------------
     def element_distance(self, p: np.ndarray, ignore: set[int], reach: float) -> float:
+        if not math.isfinite(reach):  # on a torus (no boundary): as far as the images reach
+            reach = self.margin
         idx = self.placed.near(p[0], p[1], reach)
         if ignore:
             idx = idx[~np.isin(self.placed.owner[idx], list(ignore))]
@@ -417,6 +483,15 @@ class _Grower:
         return False
 
     def inside(self, proxies: Sequence[Proxy]) -> bool:
+        if self.periodic is not None:
+            # on a torus every place is inside; an element wider than the raster's margin
+            # would reach past the images that stand for its neighbours, so it is refused
+            for pr in proxies:
+                if not pr.is_set:
+                    raise InputError(f"inside: {pr.kind} proxy was not set")
+                if not pr.bounding_circle()[2] < self.margin:
+                    return False
+            return True
         for pr in proxies:
             if not pr.is_set:
                 raise InputError(f"inside: {pr.kind} proxy was not set")
@@ -432,8 +507,10 @@ class _Grower:
         return True
 
     # -- buffer updates -----------------------------------------------------------------
-    def _cells(self, pr: Proxy) -> np.ndarray:
-        a = (self.rows, self.cols, self.x0, self.y0, self.h)
+    def _cells(self, pr: Proxy, dx: float = 0.0, dy: float = 0.0) -> np.ndarray:
+        # the proxy translated by (dx, dy) covers the cells the proxy covers in a raster
+        # whose origin is moved by (-dx, -dy)
+        a = (self.rows, self.cols, self.x0 - dx, self.y0 - dy, self.h)
         if isinstance(pr, Circle):
             cells = cover_disc(*a, float(pr.center[0]), float(pr.center[1]), pr.radius, 0.0)  # type: ignore[index]
             if len(cells):
@@ -458,8 +535,9 @@ class _Grower:
             ch.phase = self.state.phase
             self.elements.append(ch)
             for pr in ch.proxies:
-                self.placed.add(pr, ch.index)
-                cells.append(self._cells(pr))
+                for dx, dy in self._offsets(ch):
+                    self.placed.add(pr, ch.index, dx, dy)
+                    cells.append(self._cells(pr, dx, dy))
         if not cells:
             return
         c = np.unique(np.concatenate(cells))
@@ -467,7 +545,7 @@ class _Grower:
             return
         self.covered.flat[c] |= 2
         if not self.incremental:
-            d, (ii, jj) = ndimage.distance_transform_edt(self.covered == 0, return_indices=True)
+            d, (ii, jj) = ndimage.distance_transform_edt((self.covered & 3) == 0, return_indices=True)
             changed = d < self.dist_all
             self.dist_all, self.near_all = d, ii.astype(np.int64) * self.cols + jj
             d, (ii, jj) = ndimage.distance_transform_edt((self.covered & 2) == 0, return_indices=True)
@@ -480,6 +558,27 @@ class _Grower:
         lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self.dist_all, 0.0, False, *w)
         lower_wave(self.dist_el, self.near_el, self.skip, c, self.dirty, _BLOCK, self.dist_all, self.adj_tol + 1.0, True, *w)
 
+    def _offsets(self, el: Element) -> list[tuple[float, float]]:
+        """Translations at which element ``el`` is placed: itself only, or on a torus the
+        3 x 3 translates around its canonical position (its first proxy's centre moved
+        into the tile), which keep their place however far growth carried the element."""
+        if self.periodic is None:
+            return [(0.0, 0.0)]
+        x0, y0, w, h = self.periodic
+        cx, cy, _ = el.proxies[0].bounding_circle()
+        sx, sy = math.floor((cx - x0) / w) * w, math.floor((cy - y0) / h) * h
+        return [(i * w - sx, j * h - sy) for j in (0, -1, 1) for i in (0, -1, 1)]
+
+    def _wrap_points(self, p: np.ndarray) -> np.ndarray:
+        """``p`` (2,) and, on a torus, its translates that fall in the raster, (k, 2)."""
+        if self.periodic is None:
+            return p[None, :]
+        x0, y0, w, h = self.periodic
+        q = np.array([[p[0] + i * w, p[1] + j * h] for j in (-1, 0, 1) for i in (-1, 0, 1)])
+        m = self.margin
+        keep = (q[:, 0] >= x0 - m) & (q[:, 0] <= x0 + w + m) & (q[:, 1] >= y0 - m) & (q[:, 1] <= y0 + h + m)
+        return q[keep]
+
     # -- exclude list ---------------------------------------------------------------------
     def _block_centres(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         idx = self.best_idx
@@ -487,20 +586,25 @@ class _Grower:
         i, j = np.divmod(np.where(valid, idx, 0), self.cols)
         return valid, self.x0 + (j + 0.5) * self.h, self.y0 + (i + 0.5) * self.h
 
-    def add_exclude(self, p: np.ndarray) -> None:
-        if self.n_ex == len(self.ex):
-            self.ex = np.vstack([self.ex, np.empty_like(self.ex)])
-        self.ex[self.n_ex] = p
-        self.n_ex += 1
-        valid, cx, cy = self._block_centres()
-        r = self.best_val * self.h
-        self.dirty |= valid & ((cx - p[0]) ** 2 + (cy - p[1]) ** 2 < r * r)
+    def add_exclude(self, p0: np.ndarray) -> None:
+        for p in self._wrap_points(p0):  # on a torus: the point and its translates
+            if self.n_ex == len(self.ex):
+                self.ex = np.vstack([self.ex, np.empty_like(self.ex)])
+            self.ex[self.n_ex] = p
+            self.n_ex += 1
+            valid, cx, cy = self._block_centres()
+            r = self.best_val * self.h
+            self.dirty |= valid & ((cx - p[0]) ** 2 + (cy - p[1]) ** 2 < r * r)
 
     def clear_exclude_near(self, p: np.ndarray, eps: float) -> None:
         if self.n_ex == 0:
             return
         pts = self.ex[: self.n_ex]
-        gone = np.hypot(pts[:, 0] - p[0], pts[:, 1] - p[1]) <= eps
+        dx, dy = pts[:, 0] - p[0], pts[:, 1] - p[1]
+        if self.periodic is not None:  # distance around the torus: a point goes with its translates
+            w, h = self.periodic[2], self.periodic[3]
+            dx, dy = dx - w * np.floor(dx / w + 0.5), dy - h * np.floor(dy / h + 0.5)
+        gone = np.hypot(dx, dy) <= eps
         if not gone.any():
             return
         removed = pts[gone].copy()
@@ -563,7 +667,12 @@ class _Grower:
         segs.append(b[np.hypot(gap[:, 0], gap[:, 1]) <= reach])
         allsegs = np.ascontiguousarray(np.vstack(segs))
         x, y, v = climb(float(c[0]), float(c[1]), np.ascontiguousarray(circ), allsegs, 0.5 * self.h, 0.02 * self.h, target)
-        if v > rho and self.region.contains(np.array([[x, y]]))[0]:
+        if self.periodic is not None:
+            x0, y0, w, h = self.periodic
+            ok = x0 - self.margin / 2 <= x <= x0 + w + self.margin / 2 and y0 - self.margin / 2 <= y <= y0 + h + self.margin / 2
+        else:
+            ok = bool(self.region.contains(np.array([[x, y]]))[0])
+        if v > rho and ok:
             return np.array([x, y]), float(v)
         return c, rho
 
@@ -633,11 +742,13 @@ class _Grower:
             delta = self.delta if self.delta is not None else max(2 * h, 0.1 * rho)
             owners = self.placed.owner[idx]
             order: dict[int, float] = {}
-            for o, dd in zip(owners.tolist(), dists.tolist()):
+            shift: dict[int, tuple[float, float]] = {}
+            for o, dd, k in zip(owners.tolist(), dists.tolist(), idx.tolist()):
                 if dd - rho <= delta and (o not in order or dd < order[o]):
                     order[o] = dd
+                    shift[o] = (float(self.placed.ox[k]), float(self.placed.oy[k]))
             cand = sorted(order, key=lambda o: (order[o], o))
-            success = self._try(goal, cand)
+            success = self._try(goal, cand, shift)
             if success:
                 self.stats["successes"] += 1
                 eps = self.epsilon if self.epsilon is not None else 2 * rho
@@ -653,19 +764,25 @@ class _Grower:
         self.stats["largest_circle_raster"] = largest
         self.stats["phase"] = self.state.phase
 
-    def _try(self, goal: Goal, candidates: list[int]) -> bool:
+    def _try(self, goal: Goal, candidates: list[int], shift: dict[int, tuple[float, float]] | None = None) -> bool:
         types = self.pattern.types
         for o in candidates:
             parent = self.elements[o]
             if parent.sterile:
                 continue
+            g = goal
+            if shift and shift.get(o, (0.0, 0.0)) != (0.0, 0.0):
+                # C touches a translate of the parent (across the tile's edge): the rule
+                # sees C in the parent's own frame
+                dx, dy = shift[o]
+                g = Goal(goal.center - np.array([dx, dy]), goal.radius)
             for rule in self.rules_by_parent.get(parent.type, ()):
                 if rule.phase is not None and rule.phase != self.state.phase:
                     continue  # state precondition (§5): the rule fails at once
                 if rule.when is not None and not rule.when(self.state):
                     continue
                 children = [Element(types[t]) for t in rule.children]
-                ctx = RuleContext(self, goal, parent)
+                ctx = RuleContext(self, g, parent)
                 result = rule.body(ctx, parent, *children)
                 if not isinstance(result, (bool, np.bool_)):
                     raise InputError(f"rule {rule.name!r} returned {result!r}; return SUCCESS or FAILURE")
@@ -700,10 +817,14 @@ def grow_elements(
     max_elements: int | None = None,
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
+    periodic: bool = False,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
-    See :func:`strew.ornament.grow_ornament` for the parameters.
+    See :func:`strew.ornament.grow_ornament` for the parameters. With ``periodic`` the
+    region must be a rectangle, the tile of a torus: growth wraps around its edges, and
+    elements keep the positions they were grown at (``Ornament.tile`` is set; render and
+    :func:`strew._periodic.mark` move them into the tile).
     """
     import time
 
@@ -723,6 +844,16 @@ def grow_elements(
     mr = pat.min_radius if min_radius is None else float(min_radius)
     if not (math.isfinite(mr) and mr > 0):
         raise InputError(f"min_radius: must be positive, got {min_radius!r}")
+    tile = None
+    if periodic:
+        from .._periodic import frame_of_region
+
+        tile = frame_of_region(region)
+        if min(tile[2], tile[3]) < 4 * mr:
+            raise InputError(
+                f"periodic: a {tile[2]:g} x {tile[3]:g} tile is smaller than two elements of the minimum radius "
+                f"{mr:g}; use a larger --size or a smaller --min-radius"
+            )
     for name, val in (("delta", delta), ("epsilon", epsilon)):
         if val is not None and not (math.isfinite(val) and val >= 0):
             raise InputError(f"{name}: must be a finite number >= 0, got {val!r}")
@@ -733,7 +864,7 @@ def grow_elements(
     check_work("--min-radius" if min_radius is not None else "--size/--region", count=max_elements, region=region, per_element=math.pi * mr * mr)
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
-    g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep)
+    g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile)
     g.run()
     rep.done(len(g.elements) - g.n_seeds)
     stats = dict(g.stats)
@@ -750,4 +881,6 @@ def grow_elements(
         epsilon=epsilon,
         max_elements=max_elements,
     )
+    if tile is not None:
+        params["periodic"] = list(tile)
     return Ornament(pat, region, g.elements, pts, stats, params)
