@@ -158,6 +158,6 @@ def test_posed_update_equals_the_plain_update():
             bb = np.r_[ring.min(axis=0), ring.max(axis=0)]
             grow = max(a.d.max(), b.d.max()) + 0.7
             _occupy(a.d, a.x0, a.y0, 0.7, segs, np.array([0, len(segs)]), bb[None], grow)
-            _occupy_posed(b.d, b.x0, b.y0, 0.7, segs, bb, grow, tx, ty, c, sn, lbb)
+            _occupy_posed(b.d, b.x0, b.y0, 0.7, 0.7, segs, bb, grow, tx, ty, c, sn, lbb)
             assert np.allclose(a.d, b.d, rtol=0, atol=1e-12)
         assert (a.d == 0).sum() > (DistanceField(region, 0.7).d == 0).sum()  # regions were marked

@@ -47,7 +47,10 @@ class DistanceField:
     """
 
     def __init__(self, region: Region, cell: float, placed: list | None = None,
-                 segments: tuple[np.ndarray, np.ndarray] | None = None) -> None:
+                 segments: tuple[np.ndarray, np.ndarray] | None = None, periodic: tuple | None = None) -> None:
+        if periodic is not None:
+            self._init_torus(cell, segments, periodic)
+            return
         # The same grid as Region.rasterize (pixel centres at x0 + (c + 0.5) * cell), but
         # filled by even-odd scanlines over the domain's rings and then cleared inside
         # the regions placed so far (Step 1), and one exact Euclidean distance transform
@@ -70,6 +73,47 @@ class DistanceField:
         # distance of each free pixel centre to the nearest obstacle pixel centre, with
         # the pixels just outside the raster as obstacles (the box edge is boundary)
         self.d = _edt(free) * cell
+        self.dmax = float(self.d.max()) if self.d.size else 0.0
+        self.cell_y = cell
+
+    def _init_torus(self, cell: float, segments: tuple[np.ndarray, np.ndarray] | None, tile: tuple) -> None:
+        """The field on the torus of a repeat tile ``(x0, y0, W, H)`` (issue 18).
+
+        The raster has a whole number of pixels across each side, so that it wraps
+        exactly: pixels ``W / cols`` by ``H / rows``, each side at most ``cell``. Placed
+        regions are marked with their wrapped images, and the distance transform runs on
+        the mask repeated 3 x 3 (``scipy.ndimage.distance_transform_edt`` with the
+        pixels' sampling), of which the centre copy is kept: on the torus no obstacle is
+        farther than half the tile's diagonal, so these are the wrapped distances to the
+        obstacle pixel centres (at least the true distances, as in the plane).
+        """
+        from scipy.ndimage import distance_transform_edt
+
+        x0, y0, w, h = (float(v) for v in tile)
+        cell = float(cell)
+        self.x0, self.y0 = x0, y0
+        self.cols = max(1, int(np.ceil(w / cell)))
+        self.rows = max(1, int(np.ceil(h / cell)))
+        self.cell = w / self.cols
+        self.cell_y = h / self.rows
+        free = np.ones((self.rows, self.cols), dtype=np.bool_)
+        if segments is not None and len(segments[0]):
+            segs, offsets = segments
+            # the scanline fill works on square pixels: scale y by cell / cell_y, which
+            # keeps every even-odd decision
+            sy = self.cell / self.cell_y
+            for i in (-1, 0, 1):
+                for j in (-1, 0, 1):
+                    t = np.asarray(segs, dtype=float) + [i * w, j * h, i * w, j * h]
+                    t[:, [1, 3]] = y0 + (t[:, [1, 3]] - y0) * sy
+                    _scan_fill(free, x0, y0, self.cell, np.ascontiguousarray(t), offsets, False)
+        if free.all():
+            # nothing placed: no obstacle anywhere; a distance larger than any element
+            self.d = np.full(free.shape, float(w + h))
+        else:
+            big = np.tile(free, (3, 3))
+            self.d = distance_transform_edt(big, sampling=(self.cell_y, self.cell))[self.rows:2 * self.rows, self.cols:2 * self.cols]
+            self.d = np.ascontiguousarray(self.d)
         self.dmax = float(self.d.max()) if self.d.size else 0.0
 
     def occupy(self, geoms: np.ndarray | list) -> None:
@@ -318,8 +362,9 @@ def _seg_dist2(px, py, ax, ay, ex, ey, il2, best):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
-def _occupy_posed(d, x0, y0, cell, segs, bounds, grow, tx, ty, c, sn, lbb):  # pragma: no cover - numba
-    """:func:`_occupy` for one region placed with a known pose: its rings are a kind's
+def _occupy_posed(d, x0, y0, cell, cell_y, segs, bounds, grow, tx, ty, c, sn, lbb):  # pragma: no cover - numba
+    """:func:`_occupy` for one region placed with a known pose (pixels ``cell`` by
+    ``cell_y``, equal but on a repeat tile's torus): its rings are a kind's
     rings ``p`` in local coordinates mapped to ``(tx, ty) + (c, -sn; sn, c) p`` (``c = s
     cos t``, ``sn = s sin t``), whose local bounding box is ``lbb``.
 
@@ -350,11 +395,11 @@ def _occupy_posed(d, x0, y0, cell, segs, bounds, grow, tx, ty, c, sn, lbb):  # p
     xs = np.empty(ns)
     s2 = c * c + sn * sn
     c0 = max(int(np.floor((bounds[0] - grow - x0) / cell)), 0)
-    r0 = max(int(np.floor((bounds[1] - grow - y0) / cell)), 0)
+    r0 = max(int(np.floor((bounds[1] - grow - y0) / cell_y)), 0)
     c1 = min(int(np.ceil((bounds[2] + grow - x0) / cell)) + 1, cols)
-    r1 = min(int(np.ceil((bounds[3] + grow - y0) / cell)) + 1, rows)
+    r1 = min(int(np.ceil((bounds[3] + grow - y0) / cell_y)) + 1, rows)
     for r in range(r0, r1):
-        py = y0 + (r + 0.5) * cell
+        py = y0 + (r + 0.5) * cell_y
         m = 0  # this row's crossings (as in _occupy: half-open in y)
         for k in range(ns):
             ay_ = segs[k, 1]

@@ -338,10 +338,11 @@ def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, h
 @numba.njit(cache=True)
 def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi,
                   rv, rr, rsegs, rhead, rnext, rsid, rstamp, cv, ch, cbb, hbb,
-                  pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
+                  pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st, per):  # pragma: no cover - numba
     """Step 1 (§4.1): place an element at each Poisson-disk point, in order, when it lies
-    inside the domain (exact test); the points' circles already keep elements apart, so
-    no collision test runs. ``u_rot``, ``u_sc``: uniform numbers mapped into each kind's
+    inside the domain (exact test; on a repeat tile's torus, ``per`` not empty, every
+    point does); the points' circles already keep elements apart, so no collision test
+    runs. ``u_rot``, ``u_sc``: uniform numbers mapped into each kind's
     ranges; ``kinds``: drawn by weight, or empty for cyclic kinds (advanced on each
     placement). Returns the number placed."""
     nk = len(kk) - 1
@@ -356,7 +357,9 @@ def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot
         y = xy[i, 1]
         _pose(kv, kr, kk[k], kk[k + 1], x, y, c, sn, cv, cbb)
         st[_S_QID] += 1
-        if same_hull[k]:
+        if per.size:
+            inside = True
+        elif same_hull[k]:
             inside = _in_region(cv, kr, kk[k], kk[k + 1], cbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, st[_S_QID])
         else:
             _pose(hv, hr, hk[k], hk[k + 1], x, y, c, sn, ch, hbb)
@@ -573,13 +576,54 @@ def _kind_order(target, tol, cnt, n, order):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
+def _wrap(v, lo, period):  # pragma: no cover - numba
+    """``v`` moved by whole periods into ``[lo, lo + period)``."""
+    v = v - period * np.floor((v - lo) / period)
+    if v >= lo + period:  # rounding of a tiny negative offset
+        v = lo
+    return v
+
+
+@numba.njit(cache=True)
+def _collides_torus(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st, buf, blocker, per, ct, tbb):  # pragma: no cover - numba
+    """:func:`_collides` on the torus of a repeat tile (issue 18): the posed body at its
+    canonical place and its images by the lattice translations whose boxes reach the
+    placed regions (their reference points lie in the tile, so their boxes lie within
+    ``per[4]`` of it). The body cannot meet its own images: the tile is at least twice
+    its circumscribed diameter (checked in :func:`strew.pack.pack`)."""
+    x0, y0, w, h, reach = per[0], per[1], per[2], per[3], per[4]
+    for ti in range(-1, 2):
+        for tj in range(-1, 2):
+            dx = ti * w
+            dy = tj * h
+            if (cbb[0] + dx > x0 + w + reach or cbb[2] + dx < x0 - reach
+                    or cbb[1] + dy > y0 + h + reach or cbb[3] + dy < y0 - reach):
+                continue
+            st[_S_QID] += 1  # a fresh stamp: each image meets the neighbours anew
+            if ti == 0 and tj == 0:
+                if _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
+                    return True
+                continue
+            for i in range(kr[r0], kr[r1]):
+                ct[i, 0] = cv[i, 0] + dx
+                ct[i, 1] = cv[i, 1] + dy
+            tbb[0] = cbb[0] + dx
+            tbb[1] = cbb[1] + dy
+            tbb[2] = cbb[2] + dx
+            tbb[3] = cbb[3] + dy
+            if _collides(ct, kr, r0, r1, tbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
+                return True
+    return False
+
+
+@numba.njit(cache=True)
 def _rounds(
     rs, max_rounds, limit, p_count, power, fits, suppress, sup_r, ktarget, ktol, sfit, kanch, ka, kdisk, kdo, kbb,
     d, w, fx0, fy0, fcell, qbuf, cand, cdraw,
     kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi, cumw,
     rv, rr, rsegs, rhead, rnext, rsid, rstamp,
     pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, stamp,
-    cv, ch, cbb, hbb, buf, segs, caps, st,
+    cv, ch, cbb, hbb, buf, segs, caps, st, fcell_y, per, ct, tbb,
 ):  # pragma: no cover - numba
     """Up to ``max_rounds`` rounds of Step 2 (§4.2); returns a status code.
 
@@ -591,8 +635,28 @@ def _rounds(
     cumulative weights ``cumw`` (empty: cyclic), as the paper. ``ktol``: the share a
     kind may run ahead of its target. ``sfit``: a candidate's poses run from the largest
     scale of the kind's range down (True) or draw scales uniformly (False, the paper).
+
+    Repeat tiles (issue 18): ``per`` = (x0, y0, W, H, R) makes the domain the torus of
+    the tile ``[x0, x0 + W) x [y0, y0 + H)``, R the largest circumscribed radius of a
+    posed region; empty: the plane. On the torus a pose's reference point is wrapped
+    into the tile, the domain test is void, a pose is tested for collision with its
+    images by the lattice translations that reach placed regions, the field's pixels
+    (``fcell`` by ``fcell_y``, a whole number across the tile) wrap, and a placement
+    updates the field with its wrapped images. ``ct``, ``tbb``: scratch for a translated
+    pose.
     """
     rows, cols = d.shape
+    periodic = per.size > 0
+    pw0 = 0.0
+    ph0 = 0.0
+    pw = 0.0
+    ph = 0.0
+    preach = 0.0
+    nt = 0  # lattice translations -nt..nt per axis (0: the plane)
+    if periodic:
+        pw0, ph0, pw, ph, preach = per[0], per[1], per[2], per[3], per[4]
+        nt = 1
+    fcm = max(fcell, fcell_y)  # the longer side of a pixel bounds offsets within it
     dflat = d.ravel()
     wflat = w.ravel()
     nkinds = len(kk) - 1
@@ -609,6 +673,7 @@ def _rounds(
         cnt[pkind[i]] += 1
     korder = np.zeros(nkinds, dtype=np.int64)
     icell = 1.0 / fcell
+    icell_y = 1.0 / fcell_y
     thr = 1e-9 ** (1.0 / power)  # pixels below this alpha (1e-9) are skipped without a draw
     # maxima of e = d w and of d over pixel blocks, kept up to date below
     nb = ((rows + BLOCK - 1) // BLOCK) * ((cols + BLOCK - 1) // BLOCK)
@@ -648,7 +713,7 @@ def _rounds(
             if e_now < cdraw[ci] and _rand(rs) >= _alpha(e_now / cdraw[ci], power):
                 continue  # thinned: the field shrank here since the draw (extension, §4.2)
             px = fx0 + (q % cols + jx) * fcell
-            py = fy0 + (q // cols + jy) * fcell
+            py = fy0 + (q // cols + jy) * fcell_y
             if ktarget.size:
                 nko = _kind_order(ktarget, ktol, cnt, st[_S_NP], korder)
             elif cumw.size == 0:
@@ -669,7 +734,7 @@ def _rounds(
             y = py
             k = korder[0]
             # distance from the candidate point to its pixel's centre
-            off_q = np.sqrt((jx - 0.5) * (jx - 0.5) + (jy - 0.5) * (jy - 0.5)) * fcell
+            off_q = np.sqrt((jx - 0.5) * (jx - 0.5) + (jy - 0.5) * (jy - 0.5)) * fcm
             for kj in range(nko):
                 k = korder[kj]
                 fixed = rot_lo[k] == rot_hi[k] and sc_lo[k] == sc_hi[k]
@@ -709,6 +774,9 @@ def _rounds(
                     if anchored:
                         x = px - (c * ax_ - sn * ay_)
                         y = py - (sn * ax_ + c * ay_)
+                    if periodic:
+                        x = _wrap(x, pw0, pw)
+                        y = _wrap(y, ph0, ph)
                     st[_S_POSES] += 1
                     # certain rejection from the field (extension, §4.2): the field is never
                     # below the true distance to the obstacles at a pixel centre, so a disk
@@ -718,15 +786,18 @@ def _rounds(
                     for i in range(kdo[k], kdo[k + 1]):
                         # the disk's centre in pixel units
                         u = (x + c * kdisk[i, 0] - sn * kdisk[i, 1] - fx0) * icell
-                        v = (y + sn * kdisk[i, 0] + c * kdisk[i, 1] - fy0) * icell
-                        if not (0.0 <= u < cols and 0.0 <= v < rows):
+                        v = (y + sn * kdisk[i, 0] + c * kdisk[i, 1] - fy0) * icell_y
+                        if periodic:
+                            u = _wrap(u, 0.0, float(cols))
+                            v = _wrap(v, 0.0, float(rows))
+                        elif not (0.0 <= u < cols and 0.0 <= v < rows):
                             hit = True  # outside the domain's box
                             break
-                        fc = int(u)
-                        fr = int(v)
+                        fc = min(int(u), cols - 1)
+                        fr = min(int(v), rows - 1)
                         ox = u - (fc + 0.5)
                         oy = v - (fr + 0.5)
-                        if kdisk[i, 2] * s > d[fr, fc] + np.sqrt(ox * ox + oy * oy) * fcell:
+                        if kdisk[i, 2] * s > d[fr, fc] + np.sqrt(ox * ox + oy * oy) * fcm:
                             hit = True
                             break
                     if hit:
@@ -740,6 +811,12 @@ def _rounds(
                         hb = hbb
                         hvv = ch
                     st[_S_QID] += 1
+                    if periodic:
+                        if _collides_torus(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp,
+                                           st, buf, blocker, per, ct, tbb):
+                            continue
+                        ok = True
+                        break
                     if not _in_region(hvv, hr if not same_hull[k] else kr, hk[k] if not same_hull[k] else kk[k],
                                       hk[k + 1] if not same_hull[k] else kk[k + 1], hb, rv, rr, rsegs, g,
                                       rhead, rnext, rsid, rstamp, st[_S_QID]):
@@ -762,12 +839,43 @@ def _rounds(
                         segs[ns, 2] = pv[i + 1, 0]
                         segs[ns, 3] = pv[i + 1, 1]
                         ns += 1
-                grow = dmax + fcell
-                _occupy_posed(d, fx0, fy0, fcell, segs[:ns], cbb, grow, x, y, c, sn, kbb[k])
-                _refresh(d, w, bme, bmd, int(np.floor((cbb[1] - grow - fy0) / fcell)),
-                         int(np.ceil((cbb[3] + grow - fy0) / fcell)) + 1,
-                         int(np.floor((cbb[0] - grow - fx0) / fcell)),
-                         int(np.ceil((cbb[2] + grow - fx0) / fcell)) + 1)
+                grow = dmax + fcm
+                if not periodic:
+                    _occupy_posed(d, fx0, fy0, fcell, fcell_y, segs[:ns], cbb, grow, x, y, c, sn, kbb[k])
+                    _refresh(d, w, bme, bmd, int(np.floor((cbb[1] - grow - fy0) / fcell_y)),
+                             int(np.ceil((cbb[3] + grow - fy0) / fcell_y)) + 1,
+                             int(np.floor((cbb[0] - grow - fx0) / fcell)),
+                             int(np.ceil((cbb[2] + grow - fx0) / fcell)) + 1)
+                else:
+                    # the region and its wrapped images whose grown boxes reach the raster
+                    fx1 = fx0 + cols * fcell
+                    fy1 = fy0 + rows * fcell_y
+                    for ti in range(-nt, nt + 1):
+                        for tj in range(-nt, nt + 1):
+                            dx = ti * pw
+                            dy = tj * ph
+                            if (cbb[0] + dx - grow >= fx1 or cbb[2] + dx + grow <= fx0
+                                    or cbb[1] + dy - grow >= fy1 or cbb[3] + dy + grow <= fy0):
+                                continue
+                            for i in range(ns):
+                                segs[i, 0] += dx
+                                segs[i, 1] += dy
+                                segs[i, 2] += dx
+                                segs[i, 3] += dy
+                            tbb[0] = cbb[0] + dx
+                            tbb[1] = cbb[1] + dy
+                            tbb[2] = cbb[2] + dx
+                            tbb[3] = cbb[3] + dy
+                            _occupy_posed(d, fx0, fy0, fcell, fcell_y, segs[:ns], tbb, grow, x + dx, y + dy, c, sn, kbb[k])
+                            _refresh(d, w, bme, bmd, int(np.floor((tbb[1] - grow - fy0) / fcell_y)),
+                                     int(np.ceil((tbb[3] + grow - fy0) / fcell_y)) + 1,
+                                     int(np.floor((tbb[0] - grow - fx0) / fcell)),
+                                     int(np.ceil((tbb[2] + grow - fx0) / fcell)) + 1)
+                            for i in range(ns):
+                                segs[i, 0] -= dx
+                                segs[i, 1] -= dy
+                                segs[i, 2] -= dx
+                                segs[i, 3] -= dy
                 st[_S_CONSEC] = 0
                 cnt[k] += 1
                 if cumw.size == 0:
@@ -777,15 +885,29 @@ def _rounds(
                 if suppress < 1.0:
                     # damp the failed spot (extension, §4.2)
                     cc = int((px - fx0) / fcell)
-                    rq = int((py - fy0) / fcell)
+                    rq = int((py - fy0) / fcell_y)
                     rad = int(sup_r / fcell) + 1
-                    for r in range(max(rq - rad, 0), min(rq + rad + 1, rows)):
-                        for c in range(max(cc - rad, 0), min(cc + rad + 1, cols)):
-                            ddx = fx0 + (c + 0.5) * fcell - px
-                            ddy = fy0 + (r + 0.5) * fcell - py
-                            if ddx * ddx + ddy * ddy <= sup_r * sup_r:
-                                w[r, c] *= suppress
-                    _refresh(d, w, bme, bmd, rq - rad, rq + rad + 1, cc - rad, cc + rad + 1)
+                    rad_y = int(sup_r / fcell_y) + 1
+                    if not periodic:
+                        for r in range(max(rq - rad_y, 0), min(rq + rad_y + 1, rows)):
+                            for c in range(max(cc - rad, 0), min(cc + rad + 1, cols)):
+                                ddx = fx0 + (c + 0.5) * fcell - px
+                                ddy = fy0 + (r + 0.5) * fcell_y - py
+                                if ddx * ddx + ddy * ddy <= sup_r * sup_r:
+                                    w[r, c] *= suppress
+                        _refresh(d, w, bme, bmd, rq - rad_y, rq + rad_y + 1, cc - rad, cc + rad + 1)
+                    else:
+                        # the disk wraps (it is narrower than half the tile: see pack)
+                        for r in range(rq - rad_y, rq + rad_y + 1):
+                            for c in range(cc - rad, cc + rad + 1):
+                                ddx = fx0 + (c + 0.5) * fcell - px
+                                ddy = fy0 + (r + 0.5) * fcell_y - py
+                                if ddx * ddx + ddy * ddy <= sup_r * sup_r:
+                                    w[r % rows, c % cols] *= suppress
+                        for ti in range(-1, 2):
+                            for tj in range(-1, 2):
+                                _refresh(d, w, bme, bmd, rq - rad_y + tj * rows, rq + rad_y + 1 + tj * rows,
+                                         cc - rad + ti * cols, cc + rad + 1 + ti * cols)
                 if st[_S_CONSEC] >= limit:
                     return DONE
     return RUNNING
@@ -950,9 +1072,12 @@ class FitEngine:
         Kind probabilities; None: cyclic (§3.2).
     next_kind : int
         The kind to place next in cyclic mode (after Step 1).
+    periodic : (x0, y0, W, H), optional
+        Fill the torus of this repeat tile (issue 18; ``domain`` is its rectangle).
     """
 
-    def __init__(self, kinds: list[ExclusiveRegion], domain: shapely.Geometry, weights: np.ndarray | None, next_kind: int) -> None:
+    def __init__(self, kinds: list[ExclusiveRegion], domain: shapely.Geometry, weights: np.ndarray | None, next_kind: int,
+                 periodic: tuple | None = None) -> None:
         self.kv, self.kr, self.kk = ring_layout([k.body for k in kinds])
         self.hv, self.hr, self.hk = ring_layout([k.hull for k in kinds])
         self.same_hull = np.array([k.hull is k.body for k in kinds])
@@ -969,6 +1094,12 @@ class FitEngine:
         self.rv, self.rr, _ = ring_layout([domain])
         x0, y0, x1, y1 = domain.bounds
         gc = max(max(k.radius * k.scale[1] for k in kinds), (x1 - x0 + y1 - y0) / 2000.0)
+        if periodic is not None:
+            # on a repeat tile's torus, placed regions reach up to their circumscribed
+            # radius beyond the tile, and so do the translated poses tested against them:
+            # the grid covers the tile grown by that much (a cell more for rounding)
+            grow = max(k.radius * k.scale[1] for k in kinds) + gc
+            x0, y0, x1, y1 = x0 - grow, y0 - grow, x1 + grow, y1 + grow
         cols = int(np.floor((x1 - x0) / gc)) + 1
         rows = int(np.floor((y1 - y0) / gc)) + 1
         self.g = np.array([x0, y0, gc, cols, rows], dtype=float)
@@ -988,6 +1119,10 @@ class FitEngine:
         self.st = np.zeros(10, dtype=np.int64)
         self.st[_S_NEXT] = next_kind
         self.head = np.full(cols * rows, -1, dtype=np.int64)
+        reach = max(k.radius * k.scale[1] for k in kinds)
+        self.per = np.zeros(0) if periodic is None else np.array([*(float(v) for v in periodic), reach], dtype=float)
+        self.ct = np.zeros((len(self.kv), 2))
+        self.tbb = np.zeros(4)
         self._alloc(256, 256 * nv, 256 * 4, 256 * 8)
 
     def _alloc(self, np_: int, nv: int, nr: int, ne: int) -> None:
@@ -1047,7 +1182,7 @@ class FitEngine:
                                  self.hk, self.same_hull, self.rot_lo, self.rot_hi, self.sc_lo, self.sc_hi, self.rv,
                                  self.rr, self.rsegs, self.rhead, self.rnext, self.rsid, self.rstamp, self.cv, self.ch,
                                  self.cbb, self.hbb, self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g,
-                                 self.head, self.enext, self.epoly, self.st))
+                                 self.head, self.enext, self.epoly, self.st, self.per))
 
     def segments(self) -> tuple[np.ndarray, np.ndarray]:
         """Ring edges of the placed exclusive regions: (s, 4) ``x0, y0, x1, y1`` and
@@ -1088,6 +1223,7 @@ class FitEngine:
                 self.rv, self.rr, self.rsegs, self.rhead, self.rnext, self.rsid, self.rstamp,
                 self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g, self.head, self.enext, self.epoly,
                 self.stamp, self.cv, self.ch, self.cbb, self.hbb, self.buf, self.segs, self.caps, self.st,
+                float(getattr(field, "cell_y", field.cell)), self.per, self.ct, self.tbb,
             )
             if status != NEED_ROOM:
                 return status

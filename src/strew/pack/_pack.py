@@ -110,6 +110,9 @@ SPEC = MethodSpec(
               help="Fill-gap Step 2: field damping about a cancelled candidate (1: off).", section="extension of §4.2"),
         Param("tolerance", "float", DEFAULTS["tolerance"], low=0, high=1, low_open=True, high_open=True,
               help="Fill-gap with kind_choice fit: how far each kind's share may stray from its target.", section="extension of §4.2"),
+        Param("periodic", "bool", False, cli="flag",
+              help="Make a seamless repeat tile of a rectangular region (--size WxH): distances, free space and "
+                   "overlap tests wrap around its edges.", section="extension (issue 18)"),
     ),
 )
 
@@ -232,6 +235,15 @@ def pack(
     tolerance : float in (0, 1)
         Fill-gap with ``kind_choice="fit"``: how far each kind's proportion may stray
         from the requested one (0.05).
+    periodic : bool
+        Fill the torus of a rectangular region, a seamless repeat tile (issue 18; an
+        extension: the paper's aggregates are non-periodic). Every method wraps around
+        the tile's edges: Poisson-disk points, the distance field, candidate points and
+        the collision tests, so that copies of the result laid side by side never
+        overlap. The result keeps each element once, at its canonical position
+        (:mod:`strew._periodic`, ``meta["periodic"] = [x0, y0, W, H]``). The tile must
+        be at least two elements across (twice the largest circumscribed diameter of
+        an exclusive region at its largest scale) on each side; ``context`` is refused.
     rng : int, Generator or None
         Recorded in ``meta`` (``seed``, or the Generator's ``rng_state`` before the run).
     progress, should_cancel : callables, optional
@@ -252,7 +264,9 @@ def pack(
     Raises
     ------
     InputError
-        Zero-area exclusive regions, inverted ranges, unknown methods or kinds.
+        Zero-area exclusive regions, inverted ranges, unknown methods or kinds; with
+        ``periodic``, a region that is not a rectangle, a tile smaller than two
+        elements, or a context.
 
     Examples
     --------
@@ -274,6 +288,13 @@ def pack(
     if dom is None:
         raise InputError("region: give the region to fill (a Region, a polygon, 'WxH' or (W, H))")
     ctx = check_context(context)
+    tile = None
+    if prm["periodic"]:
+        from .._periodic import frame_of_region
+
+        tile = frame_of_region(dom)
+        if ctx is not None and len(ctx):
+            raise InputError("periodic: a repeat tile cannot be packed around a context (--around); give one or the other")
     free = free_region(dom, ctx)
     if is_empty(free):
         arr = empty_result(lib, dom, "the region is empty" if ctx is None else "the context covers the region")
@@ -281,6 +302,10 @@ def pack(
     else:
         arr = _pack_into(lib, free, gen=gen, progress=progress, should_cancel=should_cancel, **prm).replace(region=dom)
         arr = _say_if_large(arr, lib, prm["scale"], free)
+    if tile is not None:
+        from .._periodic import mark
+
+        arr = mark(arr, tile)
     return stamp(arr, SPEC, lib, prm, seed, region=dom, context=ctx)
 
 
@@ -333,6 +358,7 @@ def _pack_into(
     gen: np.random.Generator,
     progress: Callable[[int, int | None, str], None] | None,
     should_cancel: Callable[[], bool] | None,
+    periodic: bool = False,
 ) -> Arrangement:
     """The packing itself (§3, §4), on checked arguments; see :func:`pack`."""
     lib = shapes
@@ -380,8 +406,9 @@ def _pack_into(
         raise InputError(f"tolerance: must be a number, got {tolerance!r}") from None
     if not (0 < tolerance < 1):
         raise InputError(f"tolerance: must be in (0, 1), got {tolerance}")
+    tile = _tile(dom, kinds) if periodic else None
     rep = Reporter(progress, should_cancel, message=f"pack ({method})")
-    placer = Placer(kinds, dom, w, limit)
+    placer = Placer(kinds, dom, w, limit, periodic=tile)
     info: dict[str, Any] = {"algorithm": method, "max_failures": limit}
     if all(k.area * k.scale[0] ** 2 > dom.area for k in kinds):
         info["stopped"] = "no shape fits: the region is smaller than every shape"
@@ -399,12 +426,34 @@ def _pack_into(
             target = np.full(len(kinds), 1.0 / len(kinds)) if w is None else w
             info["tolerance"] = tolerance
         info["stopped"] = _fill_gap(placer, dom, gen, rep, p_count, power, cell, k_sparse, n_fits, suppress, info, target, tolerance,
-                                    scale_choice == "fit")
+                                    scale_choice == "fit", tile)
     if len(placer) == 0 and "no shape fits" not in info["stopped"]:
         info["stopped"] = f"no shape fits in the region ({info['stopped']})"
     info["trials"] = placer.trials
     rep.done(len(placer))
     return _arrangement(lib, kinds, placer, dom, info)
+
+
+def _tile(dom: Region, kinds: list[ExclusiveRegion]) -> tuple[float, float, float, float]:
+    """The repeat tile of a periodic pack (issue 18): the region's rectangle, at least two
+    elements across on each side.
+
+    "Two elements" is twice the largest circumscribed diameter (§4.1's circle O) of an
+    exclusive region at its largest scale: then no element meets its own wrapped image,
+    and every element meets the images of the others through the 3 x 3 block of tiles
+    around it only.
+    """
+    from .._periodic import frame_of_region
+
+    tile = frame_of_region(dom)
+    big = max(kinds, key=lambda k: k.radius * k.scale[1])
+    diameter = 2 * big.radius * big.scale[1]
+    if min(tile[2], tile[3]) < 2 * diameter:
+        raise InputError(
+            f"periodic: the tile {tile[2]:g} x {tile[3]:g} is smaller than two elements across: kind {big.name!r} "
+            f"spans {diameter:g} (its exclusive region's circumscribed diameter at scale {big.scale[1]:g}); "
+            f"make each side at least {2 * diameter:g}, or the shapes smaller")
+    return tile
 
 
 def _arrangement(lib: dict[str, Shape], kinds: list[ExclusiveRegion], placer: Placer, dom: Region, info: dict) -> Arrangement:
@@ -456,17 +505,19 @@ def _fill_gap(
     target: np.ndarray | None = None,
     tolerance: float = 0.05,
     scale_fit: bool = False,
+    tile: tuple[float, float, float, float] | None = None,
 ) -> str:
     kinds = placer.kinds
     # Step 1 (§4.1): Poisson-disk points with the circumscribed circle O of the largest
     # exclusive region at its largest scale, in the domain shrunk by that radius, so that
-    # regions neither overlap nor leave the domain.
+    # regions neither overlap nor leave the domain. On a repeat tile (issue 18) the
+    # points are sampled on its torus and nothing is shrunk: the torus has no boundary.
     radius = max(k.radius * k.scale[1] for k in kinds)
-    inner = shapely.buffer(dom.geometry, -radius)
-    engine = FitEngine(kinds, dom.geometry, placer.weights, placer.next_kind)
+    inner = dom.geometry if tile is not None else shapely.buffer(dom.geometry, -radius)
+    engine = FitEngine(kinds, dom.geometry, placer.weights, placer.next_kind, periodic=tile)
     sparse = 0
     if not inner.is_empty and inner.area > 0:
-        pts = poisson_disk(inner, 2 * radius, candidates=k_sparse, rng=gen)
+        pts = poisson_disk(inner, 2 * radius, candidates=k_sparse, rng=gen, periodic=tile is not None)
         m = len(pts)
         # compiled: exact containment tests, no collision test (§4.1); Step 1 places no
         # cancellations on purpose, only Step 2 counts them
@@ -474,7 +525,7 @@ def _fill_gap(
         placer.trials += m
     info["sparse"] = sparse
     rep.tick(len(engine), message=f"step 1: {sparse} placed", force=True)
-    field = DistanceField(dom, cell, segments=engine.segments())
+    field = DistanceField(dom, cell, segments=engine.segments(), periodic=tile)
     # Step 2 (§4.2): rounds of P candidates from the normalised distance field, in a
     # compiled loop (see _fit for the fit, suppression and fresh-candidate extensions).
     # suppression disk: a quarter of the smallest element's circumscribed radius, at least a pixel

@@ -37,9 +37,15 @@ class Placer:
         Kind probabilities; None picks kinds cyclically (§3.2).
     max_failures : int
         Stop once this many consecutive placements have been cancelled.
+    periodic : (x0, y0, W, H), optional
+        Place on the torus of this repeat tile (issue 18; ``region`` is its rectangle):
+        no containment test, and each placed region also blocks with its wrapped
+        images, so that candidates (whose reference points lie in the tile) are tested
+        across the wrap.
     """
 
-    def __init__(self, kinds: Sequence[ExclusiveRegion], region: Region, weights: np.ndarray | None, max_failures: int) -> None:
+    def __init__(self, kinds: Sequence[ExclusiveRegion], region: Region, weights: np.ndarray | None, max_failures: int,
+                 periodic: Sequence[float] | None = None) -> None:
         self.kinds = list(kinds)
         self.region = region
         self.weights = weights
@@ -56,6 +62,11 @@ class Placer:
         self.scale: list[float] = []
         self._tree: shapely.STRtree | None = None
         self._tree_n = 0
+        self.periodic = None if periodic is None else tuple(float(v) for v in periodic)
+        # wrapped images of the placed regions that reach within the largest circumscribed
+        # radius of the tile (periodic only)
+        self._images: list[shapely.Geometry] = []
+        self._reach = max(k.radius * k.scale[1] for k in self.kinds) if self.kinds else 0.0
 
     @property
     def done(self) -> bool:
@@ -67,9 +78,30 @@ class Placer:
 
     def _tree_now(self) -> shapely.STRtree | None:
         if self._tree_n != len(self.geoms):
-            self._tree = shapely.STRtree(np.array(self.geoms, dtype=object)) if self.geoms else None
+            obstacles = self.geoms + self._images
+            self._tree = shapely.STRtree(np.array(obstacles, dtype=object)) if obstacles else None
             self._tree_n = len(self.geoms)
         return self._tree
+
+    def wrapped_images(self, geom: shapely.Geometry) -> list[shapely.Geometry]:
+        """Copies of ``geom`` by the tile's lattice translations (3 x 3 less the centre)
+        whose boxes reach within the largest circumscribed radius of the tile."""
+        if self.periodic is None:
+            return []
+        x0, y0, w, h = self.periodic
+        reach = self._reach
+        b = shapely.bounds(geom)
+        out = []
+        for i in (-1, 0, 1):
+            for j in (-1, 0, 1):
+                if i == 0 and j == 0:
+                    continue
+                dx, dy = i * w, j * h
+                if (b[0] + dx > x0 + w + reach or b[2] + dx < x0 - reach
+                        or b[1] + dy > y0 + h + reach or b[3] + dy < y0 - reach):
+                    continue
+                out.append(shapely.transform(geom, lambda p, dx=dx, dy=dy: p + (dx, dy)))
+        return out
 
     def draw_kinds(self, rng: np.random.Generator, m: int) -> np.ndarray | None:
         """(m,) kinds drawn by weight, or None in cyclic mode."""
@@ -128,7 +160,10 @@ class Placer:
             body = transform_many(ex.body, pos[idx], rot[idx], sc[idx])
             hull = body if ex.hull is ex.body else transform_many(ex.hull, pos[idx], rot[idx], sc[idx])
             geoms[idx] = body
-            inside = np.asarray(shapely.covers(self.region.prepared, hull), dtype=bool)
+            if self.periodic is None:
+                inside = np.asarray(shapely.covers(self.region.prepared, hull), dtype=bool)
+            else:  # the torus has no boundary
+                inside = np.ones(len(idx), dtype=bool)
             ok[idx] = inside
             if tree is not None and inside.any():
                 sub = idx[inside]
@@ -153,12 +188,15 @@ class Placer:
             self.consecutive = 0
             placed.append(len(self.geoms))
             self.geoms.append(geoms[j])
+            images = self.wrapped_images(geoms[j])
+            self._images.extend(images)
             self.kind.append(k)
             self.xy.append((float(pos[j, 0]), float(pos[j, 1])))
             self.rotation.append(float(rot[j]))
             self.scale.append(float(sc[j]))
             if collide:
                 pending.append(geoms[j])
+                pending.extend(images)
             if kinds is None and len(self.kinds) > 1:
                 self.next_kind = (self.next_kind + 1) % len(self.kinds)
             if len(pending) > _PENDING_LIMIT:

@@ -179,6 +179,156 @@ def _bridson(width: float, height: float, r: float, k: int, seed: np.uint64, max
 
 
 @numba.njit(cache=True)
+def _wrap_d(d: float, period: float) -> float:
+    """Shortest signed difference on a circle of length ``period``."""
+    return d - period * np.floor(d / period + 0.5)
+
+
+@numba.njit(cache=True)
+def _bridson_torus(width: float, height: float, r: float, k: int, seed: np.uint64, max_points: int) -> np.ndarray:
+    """Bridson sampling of the torus [0, width) x [0, height) (issue 18): distances and
+    the background grid wrap around, so the points tile without a seam; (n, 2) points.
+
+    The grid has a whole number of cells across each side (cells ``width / gw`` by
+    ``height / gh``, each at most ``r / sqrt(2)``, so a cell holds at most one sample),
+    and a candidate looks at the cells within ``r`` of it, wrapped.
+    """
+    state = np.empty(1, dtype=np.uint64)
+    state[0] = seed
+    cell0 = r / np.sqrt(2.0)
+    gw = max(1, int(np.ceil(width / cell0)))
+    gh = max(1, int(np.ceil(height / cell0)))
+    cw = width / gw
+    ch = height / gh
+    grid = np.empty(gw * gh, dtype=np.int64)
+    for i in range(gw * gh):
+        grid[i] = -1
+    cap = min(gw * gh, max_points)
+    pts = np.empty((cap, 2), dtype=np.float64)
+    active = np.empty(cap, dtype=np.int64)
+    r2 = r * r
+    four_r2 = 4.0 * r2
+    # cells to look at on each side (all of them, once, when the torus is that narrow)
+    rx = int(np.ceil(r / cw))
+    ry = int(np.ceil(r / ch))
+    rx2 = int(np.ceil(2.0 * r / cw)) + 1
+    ry2 = int(np.ceil(2.0 * r / ch)) + 1
+    # a window of 2 reach + 1 cells, or every cell once where the torus is narrower
+    nx, sx = (2 * rx + 1, rx) if 2 * rx + 1 < gw else (gw, 0)
+    ny, sy = (2 * ry + 1, ry) if 2 * ry + 1 < gh else (gh, 0)
+    nx2, sx2 = (2 * rx2 + 1, rx2) if 2 * rx2 + 1 < gw else (gw, 0)
+    ny2, sy2 = (2 * ry2 + 1, ry2) if 2 * ry2 + 1 < gh else (gh, 0)
+    n = 0
+    na = 0
+    scan = 0
+    x = _next(state) * width
+    y = _next(state) * height
+    while True:
+        if n == 0 or na == 0:
+            # the first sample, or a restart (see _bridson) at (x, y) set below
+            if n >= cap:
+                break
+            gx = min(int(x / cw), gw - 1)
+            gy = min(int(y / ch), gh - 1)
+            pts[n, 0] = x
+            pts[n, 1] = y
+            grid[gy * gw + gx] = n
+            active[0] = n
+            na = 1
+            n += 1
+        while na > 0 and n < cap:
+            a = int(_next(state) * na)
+            if a >= na:
+                a = na - 1
+            i = active[a]
+            px = pts[i, 0]
+            py = pts[i, 1]
+            found = False
+            for _ in range(k):
+                while True:
+                    ux = 2.0 * _next(state) - 1.0
+                    uy = 2.0 * _next(state) - 1.0
+                    q = ux * ux + uy * uy
+                    if 1e-12 < q <= 1.0:
+                        break
+                rad = np.sqrt(r2 + _next(state) * 3.0 * r2) / np.sqrt(q)
+                cx = px + rad * ux
+                cy = py + rad * uy
+                # wrapped into the tile (the torus has no edge to reject at)
+                cx -= width * np.floor(cx / width)
+                cy -= height * np.floor(cy / height)
+                if cx >= width:
+                    cx = 0.0
+                if cy >= height:
+                    cy = 0.0
+                gx = min(int(cx / cw), gw - 1)
+                gy = min(int(cy / ch), gh - 1)
+                if grid[gy * gw + gx] >= 0:
+                    continue
+                ok = True
+                for oy in range(ny):
+                    yy = (gy - sy + oy) % gh
+                    for ox in range(nx):
+                        xx = (gx - sx + ox) % gw
+                        j = grid[yy * gw + xx]
+                        if j >= 0:
+                            dx = _wrap_d(pts[j, 0] - cx, width)
+                            dy = _wrap_d(pts[j, 1] - cy, height)
+                            if dx * dx + dy * dy < r2:
+                                ok = False
+                                break
+                    if not ok:
+                        break
+                if ok:
+                    pts[n, 0] = cx
+                    pts[n, 1] = cy
+                    grid[gy * gw + gx] = n
+                    active[na] = n
+                    na += 1
+                    n += 1
+                    found = True
+                    break
+            if not found:
+                na -= 1
+                active[a] = active[na]
+        if n >= cap:
+            break
+        # restart the front in the next empty cell whose centre is at least 2r from every
+        # sample (as _bridson); none: the torus is covered
+        restarted = False
+        while scan < gw * gh:
+            ci = scan // gw
+            cj = scan - ci * gw
+            scan += 1
+            if grid[scan - 1] >= 0:
+                continue
+            ccx = (cj + 0.5) * cw
+            ccy = (ci + 0.5) * ch
+            far = True
+            for oy in range(ny2):
+                yy = (ci - sy2 + oy) % gh
+                for ox in range(nx2):
+                    xx = (cj - sx2 + ox) % gw
+                    j = grid[yy * gw + xx]
+                    if j >= 0:
+                        dx = _wrap_d(pts[j, 0] - ccx, width)
+                        dy = _wrap_d(pts[j, 1] - ccy, height)
+                        if dx * dx + dy * dy < four_r2:
+                            far = False
+                            break
+                if not far:
+                    break
+            if far:
+                x = (cj + _next(state)) * cw
+                y = (ci + _next(state)) * ch
+                restarted = True
+                break
+        if not restarted:
+            break
+    return pts[:n].copy()
+
+
+@numba.njit(cache=True)
 def _bridson_variable(
     width: float, height: float, rmap: np.ndarray, mcell: float, rmin: float, rmax: float, k: int, seed: np.uint64, max_points: int
 ) -> np.ndarray:
@@ -287,6 +437,7 @@ def poisson_disk(
     candidates: int = 30,
     max_points: int = 50_000_000,
     rng: int | np.random.Generator | None = None,
+    periodic: bool = False,
 ) -> np.ndarray:
     """Poisson-disk points in a region: no two closer than ``radius``.
 
@@ -309,6 +460,10 @@ def poisson_disk(
     max_points : int
         Safety cap on the number of points generated in the bounding box.
     rng : int, Generator or None
+    periodic : bool
+        Sample the torus of a rectangular region (issue 18): distances wrap around its
+        edges, so that copies of the points laid side by side keep ``radius`` apart
+        across the seams too. Needs a constant ``radius``.
 
     Returns
     -------
@@ -333,6 +488,19 @@ def poisson_disk(
         raise InputError(f"candidates: must be at least 1, got {candidates}")
     gen = as_rng(rng)
     geom = _as_geometry(region)
+    if periodic:
+        from .._periodic import frame_of_region
+
+        if callable(radius):
+            raise InputError("radius: periodic sampling needs a constant radius, not a callable")
+        x0, y0, w, h = (0.0, 0.0, geom[2], geom[3]) if isinstance(geom, tuple) else frame_of_region(geom)
+        if w * h / (radius * radius) > 4 * max_points:
+            raise InputError(f"radius: {radius} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
+        seed = np.uint64(gen.integers(0, 2**63, dtype=np.int64))
+        pts = _bridson_torus(float(w), float(h), radius, int(candidates), seed, int(max_points))
+        pts[:, 0] += x0
+        pts[:, 1] += y0
+        return pts
     if isinstance(geom, tuple):
         x0, y0, x1, y1 = geom
         poly = None
