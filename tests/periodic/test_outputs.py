@@ -174,3 +174,12 @@ def test_cli_render_repeat(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "--repeat" in err and "not periodic" in err
     assert not bad.exists() and not (tmp_path / "bad.svg").exists()
+
+
+def test_cli_repeat_without_periodic_is_refused(tmp_path, capsys):
+    disc = tmp_path / "disc.json"
+    strew.save(Arrangement({"disc": Shape.circle(3)}, ["disc"], [0.0], [0.0]), disc)
+    out = tmp_path / "o.svg"
+    assert main(["pack", str(disc), "--size", "60x40", "--repeat", "2x2", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "--repeat" in err and "periodic" in err and not out.exists()

@@ -455,6 +455,10 @@ def check_outputs(outs: Sequence[str]) -> None:
     for o in outs:
         if o != "-":
             check_output_path(o)
+    ctx = click.get_current_context(silent=True)
+    if _out_repeat() is not None and ctx is not None and "periodic" in ctx.params and not ctx.params["periodic"]:
+        # refused before the work (the written tile is checked again in save_outputs)
+        raise InputError("--repeat: the result is not periodic; add --periodic to make a repeat tile")
     _STDOUT[:] = [fmt] if piped else []
 
 
