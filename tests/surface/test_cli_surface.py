@@ -98,3 +98,64 @@ def test_missing_extra_names_the_install(mesh_file, tmp_path, capsys, monkeypatc
     monkeypatch.setitem(sys.modules, "trimesh", None)
     with pytest.raises(ImportError, match=r"pip install 'strew\[surface\]'"):
         load_mesh(mesh_file)
+
+
+# -- strew pack|synth|grow --surface MESH ---------------------------------------------------
+@pytest.fixture(scope="module")
+def grid_file(tmp_path_factory):
+    from strew.synth._exemplars import grid
+
+    path = tmp_path_factory.mktemp("ex") / "grid.json"
+    strew.save(grid(n=8), path)
+    return path
+
+
+def test_synth_on_surface_writes_scene(mesh_file, grid_file, tmp_path, capsys):
+    outs = [tmp_path / "scene.glb", tmp_path / "scene.json"]
+    args = ["synth", str(grid_file), "--surface", str(mesh_file), "--mesh-scale", "0.03", "--seed", "2"]
+    for o in outs:
+        args += ["--out", str(o)]
+    assert main(args) == 0
+    assert "elements" in capsys.readouterr().out
+    arr = strew.load(outs[1])
+    assert arr.meta["method"] == "surface.synth" and arr.meta["params"]["scale"] == 0.03
+    assert arr.meta["command"].startswith("strew synth")
+    mesh = trimesh.load(mesh_file, force="mesh")
+    p = np.column_stack([arr.x, arr.y, arr["z"]])
+    f = np.asarray(arr["face"])
+    dist = np.abs(np.einsum("ij,ij->i", p - mesh.triangles[f][:, 0], mesh.face_normals[f]))
+    assert len(arr) > 100 and dist.max() < 1e-6 * float(np.linalg.norm(mesh.extents))
+    scene = trimesh.load(outs[0])
+    assert len([n for n in scene.graph.nodes_geometry if n != "surface"]) == len(arr)
+
+
+def test_pack_on_surface_follows_the_field_unless_rotated(mesh_file, tmp_path):
+    out = tmp_path / "pack.json"
+    assert main(["pack", str(CONCAVE), "--surface", str(mesh_file), "--mesh-scale", "0.004", "--seed", "1", "--out", str(out)]) == 0
+    arr = strew.load(out)
+    assert arr.meta["method"] == "surface.pack" and arr.meta["params"]["rotation"] == "field" and len(arr) > 50
+    out2 = tmp_path / "pack2.json"
+    assert main(["pack", str(CONCAVE), "--surface", str(mesh_file), "--mesh-scale", "0.004", "--rotate", "0:360", "--out", str(out2)]) == 0
+    assert strew.load(out2).meta["params"]["rotation"] == "random"
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["synth", "{ex}", "--surface", "{mesh}", "--size", "10x10"], "leave out --region"),
+        (["synth", "{ex}", "--surface", "{mesh}", "--optimize", "global"], "--optimize"),
+        (["synth", "{ex}", "--surface", "{mesh}", "--fill", "1,2"], "--fill"),
+        (["grow", "{ex}", "--surface", "{mesh}"], "grow does not run on surfaces"),
+        (["pack", "{shape}", "--surface", "{mesh}", "--method", "naive"], "--method"),
+        (["pack", "{shape}", "--surface", "{mesh}", "--rotate", "0:90"], "--rotate"),
+        (["synth", "{ex}", "--surface", "{bad}"], "--surface"),
+    ],
+)
+def test_surface_option_refuses_what_has_no_meaning(mesh_file, grid_file, tmp_path, capsys, args, message):
+    bad = tmp_path / "bad.obj"
+    bad.write_text("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")
+    fill = {"ex": str(grid_file), "mesh": str(mesh_file), "shape": str(CONCAVE), "bad": str(bad)}
+    argv = [a.format(**fill) for a in args] + ["--out", str(tmp_path / "x.glb")]
+    assert main(argv) == 2
+    assert message in capsys.readouterr().err
+    assert not (tmp_path / "x.glb").exists()

@@ -288,6 +288,8 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
     """The click command of a method, generated from its spec."""
     hooks = hooks or Hooks()
     cli_params = [p for p in spec.params if p.cli]
+    on_surfaces = spec.name in ("pack", "synth", "grow")
+    from . import surface as _surface
 
     def callback(**options: Any) -> None:
         outs = options.pop("outs")
@@ -296,6 +298,9 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
         around = options.pop("around")
         region_file, size = options.pop("region"), options.pop("size")
         raw_input = options.pop(spec.input.name)
+        surf = _surface.pop_surface_options(options) if on_surfaces else {}
+        if surf.get("surface_mesh") is not None:  # --surface MESH: strew.surface does the work (issue 20)
+            return _surface.run_on_surface(spec, options, raw_input, outs, surf, seed=seed, quiet=quiet, region=(region_file, size), around=around)
         check_outputs(outs)
         run = Run(spec, options, {}, seed=seed, quiet=quiet)
         if hooks.check is not None:
@@ -356,6 +361,7 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
             domain_options(square=hooks.domain == "square"),
             *[_param_option(spec, p) for p in cli_params],
             *hooks.options,
+            *(_surface.surface_options() if on_surfaces else []),
             click.option("--around", type=click.Path(dir_okay=False), default=None,
                          help="Fixed elements (.json or .svg) to fill around: never overlapped (context)."),
             click.option("--seed", type=int, default=0, show_default=True, help="Random seed."),

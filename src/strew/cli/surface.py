@@ -59,24 +59,12 @@ def command(shapes: tuple[str, ...], mesh: str, radius: float | None, scale: str
     import time
 
     from .. import surface
-    from ..io._atomic import atomic_write_many
 
-    from ..surface._deps import require
-
-    for dep in ("trimesh", "potpourri3d"):
-        try:
-            require(dep)
-        except ImportError as exc:  # a missing extra is a usage problem: exit 2, one line
-            raise InputError(str(exc)) from None
+    _require()
     _check_outs(outs)
     if (radius is None) == (not shapes):
         raise InputError("give SHAPE files or --radius R (one of them)")
-    element_meshes: dict[str, str] = {}
-    for text in elements:
-        kind, sep, path = text.partition("=")
-        if not sep or not kind or not path:
-            raise InputError(f"--element: expected KIND=MESH, got {text!r}")
-        element_meshes[kind] = path
+    element_meshes = _element_meshes(elements)
     if shapes:
         from ..io import load_shapes
 
@@ -96,7 +84,37 @@ def command(shapes: tuple[str, ...], mesh: str, radius: float | None, scale: str
     seconds = time.perf_counter() - t0
     if len(arr) == 0:
         raise InputError("surface: no element fits (are the shapes larger than the mesh?); nothing written")
-    arr = arr.with_meta(command=command_line(), surface_file=Path(mesh).name)
+    write_scene(arr, m, outs, mesh_file=mesh, element_meshes=element_meshes, style=style, quiet=quiet)
+    counts = ", ".join(f"{k} {c}" for k, c in arr.counts().items())
+    echo(f"packed {len(arr)} elements ({counts}) on {len(m.faces)} faces, {seconds:.2f} s", quiet=quiet)
+
+
+def _require() -> None:
+    from ..surface._deps import require
+
+    for dep in ("trimesh", "potpourri3d"):
+        try:
+            require(dep)
+        except ImportError as exc:  # a missing extra is a usage problem: exit 2, one line
+            raise InputError(str(exc)) from None
+
+
+def _element_meshes(elements: tuple[str, ...]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for text in elements:
+        kind, sep, path = text.partition("=")
+        if not sep or not kind or not path:
+            raise InputError(f"--element: expected KIND=MESH, got {text!r}")
+        out[kind] = path
+    return out
+
+
+def write_scene(arr, m, outs: tuple[str, ...], *, mesh_file: str, element_meshes: dict, style: str, quiet: bool) -> None:
+    """Write a surface arrangement to every ``--out`` (.glb, .json, .png, .svg), all or none."""
+    from .. import surface
+    from ..io._atomic import atomic_write_many
+
+    arr = arr.with_meta(command=command_line(), surface_file=Path(mesh_file).name)
     data = []
     for o in outs:
         suffix = Path(o).suffix.lower()
@@ -112,5 +130,73 @@ def command(shapes: tuple[str, ...], mesh: str, radius: float | None, scale: str
     if not quiet:
         for o in outs:
             click.echo(f"wrote {o}", err=True)
+
+
+# -- ``strew pack|synth|grow --surface MESH`` (the options and the run; cli/_spec.py calls these)
+def surface_options() -> list:
+    """The options a method command gains for surfaces (issue 20)."""
+    return [
+        click.option("--surface", "surface_mesh", type=click.Path(dir_okay=False), default=None,
+                     help="Run on this triangle mesh (.obj, .ply, .stl, .off, .glb, .gltf); outputs .glb, .json, .png, .svg."),
+        click.option("--field", "surface_field", type=click.Path(dir_okay=False), default=None,
+                     help="With --surface: orientation field, per-vertex directions (.npy) or a design (.json) "
+                          "[default: the smoothest field, Davison §5.7]."),
+        click.option("--mesh-scale", "surface_unit", type=float, default=None,
+                     help="With --surface: mesh units per document unit [default: pack 1; synth about 2,000 elements]."),
+        click.option("--element", "surface_elements", multiple=True, metavar="KIND=MESH",
+                     help="With --surface: a 3D mesh for a kind in the .glb (repeatable)."),
+        click.option("--style", "surface_style", type=click.Choice(["extrude", "decal"]), default="extrude", show_default=True,
+                     help="With --surface: how 2D shapes are drawn in the .glb."),
+    ]
+
+
+_SURFACE_KEYS = ("surface_mesh", "surface_field", "surface_unit", "surface_elements", "surface_style")
+
+
+def pop_surface_options(options: dict) -> dict:
+    """Remove the surface options from a command's options; returns them."""
+    return {k: options.pop(k) for k in _SURFACE_KEYS if k in options}
+
+
+def run_on_surface(spec, options: dict, raw_input, outs: tuple[str, ...], surf: dict, *, seed: int, quiet: bool,
+                   region: tuple, around) -> None:
+    """``strew METHOD ... --surface MESH``: convert the options as the generated command
+    does, run :func:`strew.surface.on_surface`, write the scene."""
+    import time
+
+    from .. import surface
+    from .._method import names_to_flags
+    from ..surface._methods import on_surface
+    from ._spec import INPUTS, _convert
+
+    _require()
+    _check_outs(outs)
+    if any(v is not None for v in region) or around is not None:
+        raise InputError("--surface: the surface is the domain; leave out --region, --size and --around")
+    values = {}
+    for p in spec.params:
+        if p.cli:
+            v = _convert(p, options.get(p.name))
+            if v is not None:
+                values[p.name] = v
+    element_meshes = _element_meshes(surf.get("surface_elements") or ())
+    data = INPUTS[spec.input.parse or "text"](raw_input)
+    m = surface.load_mesh(surf["surface_mesh"], name="--surface")
+    field = surface.load_field(surf["surface_field"], m) if surf.get("surface_field") else "smoothest"
+    t0 = time.perf_counter()
+    try:
+        with progress_bar(spec.progress_message or spec.name, quiet=quiet) as (prog, cancel):
+            arr = on_surface(spec.name, data, m, field=field, unit=surf.get("surface_unit"), rng=seed, progress=prog,
+                             should_cancel=cancel, **values)
+    except InputError as exc:  # the library names Python parameters; answer with flags
+        msg = names_to_flags(spec, str(exc))
+        if msg == str(exc):
+            raise
+        raise InputError(msg) from exc
+    seconds = time.perf_counter() - t0
+    if len(arr) == 0:
+        raise InputError(f"{spec.name}: no element fits on the surface (are the elements larger than the mesh?); nothing written")
+    write_scene(arr, m, outs, mesh_file=surf["surface_mesh"], element_meshes=element_meshes,
+                style=surf.get("surface_style") or "extrude", quiet=quiet)
     counts = ", ".join(f"{k} {c}" for k, c in arr.counts().items())
-    echo(f"packed {len(arr)} elements ({counts}) on {len(m.faces)} faces, {seconds:.2f} s", quiet=quiet)
+    echo(f"{spec.name}: {len(arr)} elements ({counts}) on {len(m.faces)} faces, {seconds:.2f} s", quiet=quiet)
