@@ -44,9 +44,11 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # methods whose result is a stationary texture that tiles (issue 19 point 1). pack is
 # seamless (tests/worlds: border strips 0.985-1.03x the interior's density); synth runs
 # without overlaps, as seamless as its context makes it (a neighbourhood, not only an
-# obstacle); ornament is not here yet (its tiles give one kind name different shapes).
+# obstacle); ornament's tiles give one kind name shapes that differ a little, but its
+# elements carry their geometry in ``parts``, so the tiles' libraries are made to agree
+# (_harmonize).
 # On a torus (periodic=True) any method with context tiles.
-TILED_METHODS = ("pack", "synth")
+TILED_METHODS = ("pack", "synth", "ornament")
 
 
 @dataclass(frozen=True)
@@ -262,12 +264,50 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
             m = n.replace(x=n.x + dx, y=n.y + dy) if (dx or dy) else n
             parts.append(m.select(_near(m, window)))
     parts = [p for p in parts if len(p)]
-    context = concat(parts) if parts else None
+    context = concat(_harmonize(parts)) if parts else None
     arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **job.params)
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
-    arr = arr.select(keep)
+    arr = _own_parts(arr.select(keep))
     return arr.replace(meta={"tile": t.index}, region=None)
+
+
+def _own_parts(arr: Any) -> Any:
+    """``arr`` with every element's geometry in its ``parts`` when it has that column
+    (ornament): the elements that draw their kind's shape get it as their one part."""
+    from .arrangement import PARTS_COLUMN
+
+    parts = arr.element_parts
+    if parts is None or all(p is not None for p in parts):
+        return arr
+    names = arr.kinds
+    col = [list(p) if p is not None else [arr.shapes[names[k]]] for p, k in zip(parts, arr.kind)]
+    return arr.with_columns(**{PARTS_COLUMN: col})
+
+
+def _harmonize(arrs: list[Any]) -> list[Any]:
+    """Arrangements whose shape libraries agree, so that they concatenate.
+
+    Tiles of ornament give one kind name shapes that differ a little (each run builds
+    its own), but every element carries its geometry in ``parts``: where a later input
+    names a kind's shape differently and all its elements of that kind have parts, the
+    first input's shape is taken (drawing and overlaps read the parts). A kind without
+    parts that differs is left for concat to refuse.
+    """
+    ref: dict[str, Any] = {}
+    out = []
+    for a in arrs:
+        lib = dict(a.shapes)
+        parts = a.element_parts
+        for k, sh in a.shapes.items():
+            if k not in ref:
+                ref[k] = sh
+            elif ref[k] != sh and parts is not None:
+                idx = np.flatnonzero(a.kind == a.kinds.index(k))
+                if all(parts[i] is not None for i in idx):
+                    lib[k] = ref[k]
+        out.append(a.replace(shapes=lib) if lib != a.shapes else a)
+    return out
 
 
 @dataclass
@@ -433,13 +473,16 @@ def world(
     counts = np.zeros(len(tiles), np.int64)
     kinds: dict[str, int] = {}
     shapes: dict[str, Any] = {}
+    first = [len(tiles)]
     t0 = time.perf_counter()
 
     def done(t: Tile, arr: Any, ndone: int) -> None:
         counts[t.index] = len(arr)
         for k, c in arr.counts().items():
             kinds[k] = kinds.get(k, 0) + c
-        if not shapes and len(arr):
+        if len(arr) and (not shapes or t.index < first[0]):  # the lowest tile's: the same whatever the order
+            first[0] = t.index
+            shapes.clear()
             shapes.update(arr.shapes)
         if sink is not None:
             if periodic and len(arr):
@@ -575,7 +618,7 @@ def tiled(method: str, input: Any, size: tuple[float, float] | str, *, tile_size
     arrs = [a for a in arrs if len(a)]
     if not arrs:
         return Arrangement(shapes, [], [], [], region=Region.rectangle(w, h), meta=info.meta)
-    return concat(arrs).replace(region=Region.rectangle(w, h), meta=info.meta)
+    return concat(_harmonize(arrs)).replace(region=Region.rectangle(w, h), meta=info.meta)
 
 
 def periodic(method: str, input: Any, size: Any, *, rng: Any = None, tile_size: float | None = None,

@@ -14,7 +14,7 @@ def overlapping_pairs(arr, tol: float = 1e-9) -> int:
     m = left < right
     if not m.any():
         return 0
-    return int((shapely.intersection(g[left[m]], g[right[m]]).area > tol).sum())
+    return int((shapely.area(shapely.intersection(g[left[m]], g[right[m]])) > tol).sum())
 
 
 def border_strips(arr, size, tile_size: float, width: float, margin: float):

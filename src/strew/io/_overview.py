@@ -55,6 +55,11 @@ class Overview:
         if len(arr) == 0:
             return
         px, h = self.px, self.height
+        if arr.element_parts is not None:
+            self._add_parts(arr)
+            arr = arr.select(np.array([p is None for p in arr.element_parts], bool))
+            if len(arr) == 0:
+                return
         for k, name in enumerate(arr.kinds):
             idx = np.flatnonzero(arr.kind == k)
             if len(idx) == 0:
@@ -75,6 +80,29 @@ class Overview:
             xs, ys = wx * px, (h - wy) * px
             for a, b in zip(xs, ys):
                 self.draw.polygon(list(zip(a.tolist(), b.tolist())), fill=colour)
+
+    def _add_parts(self, arr: Any) -> None:
+        """Draw the elements that carry their own geometry (``parts``: ornament), every
+        path of every part, filled when closed, stroked when open."""
+        px, h = self.px, self.height
+        for i, parts in enumerate(arr.element_parts):
+            if parts is None:
+                continue
+            colour = self._colour(arr.kinds[arr.kind[i]], arr.shapes[arr.kinds[arr.kind[i]]])
+            c, s = np.cos(arr.rotation[i]) * arr.scale[i], np.sin(arr.rotation[i]) * arr.scale[i]
+            for part in parts:
+                if part.radius * arr.scale[i] * px < 1.5:
+                    self.draw.point((float(arr.x[i] * px), float((h - arr.y[i]) * px)), fill=colour)
+                    continue
+                for path in part.paths:
+                    q = path.points
+                    xs = (arr.x[i] + c * q[:, 0] - s * q[:, 1]) * px
+                    ys = (h - (arr.y[i] + s * q[:, 0] + c * q[:, 1])) * px
+                    pts = list(zip(xs.tolist(), ys.tolist()))
+                    if path.closed and len(pts) >= 3:
+                        self.draw.polygon(pts, fill=colour)
+                    elif len(pts) >= 2:
+                        self.draw.line(pts, fill=colour, width=1)
 
     def png(self) -> bytes:
         """The canvas as PNG bytes."""

@@ -1,8 +1,9 @@
 """Worlds as partitioned Parquet datasets (issue 19 point 3), through pyarrow.
 
 A dataset is a folder: ``part-NNNNNN.parquet`` per tile (columns ``tile`` int32,
-``kind`` dictionary<string>, ``x``, ``y``, ``rotation``, ``scale`` float64 and the
-arrangement's numeric extra columns) and ``_common_metadata``, whose schema metadata
+``kind`` dictionary<string>, ``x``, ``y``, ``rotation``, ``scale`` float64, the
+arrangement's numeric and text extra columns, and ``parts``, each element's own
+geometry as JSON text, where it has one: ornament) and ``_common_metadata``, whose schema metadata
 holds ``strew`` = JSON ``{"shapes": {name: shape}, "meta": {...}, "region": ...}``.
 pandas (``pd.read_parquet(folder)``), DuckDB (``read_parquet('folder/*.parquet')``) and
 GeoPandas-by-way-of-pandas read it as it is; :func:`iter_parquet_tiles` streams it back
@@ -29,6 +30,7 @@ LOAD_LIMIT = 2_000_000
 
 _HINT = "pip install 'strew[distributed]'"
 _CORE = ("x", "y", "rotation", "scale")
+PARTS_COLUMN = "parts"
 
 
 def _pa() -> Any:
@@ -89,10 +91,20 @@ class ParquetWriter:
         for c in _CORE:
             cols[c] = pa.array(np.asarray(getattr(arr, c), np.float64))
         for c, v in arr.columns.items():
-            if c == "tile" or v.dtype.kind not in "biuf":
-                continue  # strings and objects (parts) do not go to Parquet
-            cols[c] = pa.array(np.asarray(v))
+            if c == "tile":
+                continue
+            if c == PARTS_COLUMN:  # per-element geometry (ornament): JSON text, null where none
+                cols[c] = pa.array([None if p is None else json.dumps(p, separators=(",", ":")) for p in v], pa.string())
+            elif v.dtype.kind in "biuf":
+                cols[c] = pa.array(np.asarray(v))
+            elif v.dtype.kind in "UO" and all(e is None or isinstance(e, str) for e in v):
+                cols[c] = pa.array(v.tolist(), pa.string())
+            else:
+                continue  # other objects do not go to Parquet
             self.extra.setdefault(c, cols[c].type)
+        for c, typ in self.extra.items():  # a column the first tiles had and this one lacks: nulls
+            if c not in cols:
+                cols[c] = pa.nulls(len(arr), typ)
         table = pa.table(cols)
         if not self.folder.is_dir():
             if self.folder.exists():
@@ -182,7 +194,7 @@ def iter_parquet_tiles(folder: str | os.PathLike[str]) -> Iterator[Any]:
     from ..arrangement import Arrangement
     from ..shape import Shape
 
-    _, pq = _pa()
+    pa, pq = _pa()
     folder = Path(folder)
     doc = _doc(folder)
     shapes = {k: Shape.from_dict(v) for k, v in doc["shapes"].items()}
@@ -192,7 +204,17 @@ def iter_parquet_tiles(folder: str | os.PathLike[str]) -> Iterator[Any]:
         kind = t.column("kind").combine_chunks()
         lookup = np.array([names.index(k) for k in kind.dictionary.to_pylist()], np.int64) if len(kind.dictionary) else np.zeros(0, np.int64)
         idx = lookup[kind.indices.to_numpy(zero_copy_only=False)] if len(t) else np.zeros(0, np.int64)
-        extra = {c: t.column(c).to_numpy() for c in t.column_names if c not in ("kind", *_CORE)}
+        extra = {}
+        for c in t.column_names:
+            if c in ("kind", *_CORE):
+                continue
+            col = t.column(c)
+            if c == PARTS_COLUMN:
+                extra[c] = [None if v is None else json.loads(v) for v in col.to_pylist()]
+            elif col.type == pa.string():
+                extra[c] = np.array(col.to_pylist(), dtype=object)
+            else:
+                extra[c] = col.to_numpy()
         yield Arrangement(shapes, idx, *(t.column(c).to_numpy() for c in _CORE), columns=extra)
 
 
