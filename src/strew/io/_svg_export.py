@@ -339,8 +339,11 @@ def _element_layers(arr: Arrangement, ids: list[str], sw: float, inherit_fill: b
     """One group per kind (an Inkscape layer when ``layers``) with its elements."""
     out: list[str] = []
     kind = arr.kind
+    col_attrs = _column_attr_values(arr)  # once: a library may hold hundreds of kinds
+    order = np.argsort(kind, kind="stable")
+    cuts = np.searchsorted(kind[order], np.arange(len(arr.kinds) + 1))
     for k, name in enumerate(arr.kinds):
-        idx = np.flatnonzero(kind == k)
+        idx = order[cuts[k] : cuts[k + 1]]
         if len(idx) == 0:
             continue
         label = quoteattr(name)
@@ -348,19 +351,20 @@ def _element_layers(arr: Arrangement, ids: list[str], sw: float, inherit_fill: b
             out.append(f'<g id="layer-{ids[k]}" inkscape:groupmode="layer" inkscape:label={label} data-kind={label}{clip}>')
         else:
             out.append(f"<g data-kind={label}{clip}>")
-        out.extend(_element_lines(arr, ids, sw, inherit_fill, idx))
+        out.extend(_element_lines(arr, ids, sw, inherit_fill, idx, col_attrs=col_attrs))
         out.append("</g>")
     return out
 
 
-def _element_lines(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, idx: np.ndarray, *, src: np.ndarray | None = None) -> list[str]:
+def _element_lines(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, idx: np.ndarray, *, src: np.ndarray | None = None, col_attrs: dict[str, list[str]] | None = None) -> list[str]:
     """``<use>`` (or a group of parts) for each element in ``idx``; with ``src``, they are
     wrapped copies of the elements ``src[i]``: marked ``data-copy-of``, without columns."""
     out: list[str] = []
     color = arr.columns.get("color")
     void = arr.columns.get("void")
     parts = arr.element_parts
-    col_attrs = _column_attr_values(arr) if src is None else {}
+    if col_attrs is None:
+        col_attrs = _column_attr_values(arr) if src is None else {}
     kind = arr.kind
     xs, ys, rot, sc = arr.x, arr.y, arr.rotation, arr.scale
     names = arr.kinds
