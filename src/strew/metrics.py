@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from . import _periodic
+from ._periodic import _as_frame, canonical, frame, images, tiled_copies
 from ._errors import InputError
 from ._fidelity import FidelityReport, MetricResult, fidelity, nearest_neighbor_distances, pair_correlation
 from .arrangement import Arrangement
@@ -315,7 +315,7 @@ def summary(arr: Arrangement, region: Region | None = None) -> dict[str, Any]:
 
 
 def _tile_of(arr: Arrangement, tile: Any) -> tuple[float, float, float, float]:
-    f = _periodic.frame(arr) if tile is None else _periodic._as_frame(tile, "tile")
+    f = frame(arr) if tile is None else _as_frame(tile, "tile")
     if f is None:
         raise InputError("repeat: the arrangement is not periodic (no meta.periodic); give tile=[x0, y0, W, H] to judge it as one")
     return f
@@ -384,7 +384,7 @@ def wrap_overlaps(arr: Arrangement, *, tile: Any = None, tolerance: float = 1e-9
     empty = {"pairs": np.zeros((0, 4), np.int64), "filled": np.zeros(0, bool), "areas": np.zeros(0), "inside": 0, "across": 0, "stroke_crossings_inside": 0, "stroke_crossings_across": 0}
     if n == 0:
         return empty
-    x, y = _periodic.canonical(arr.x, arr.y, f)
+    x, y = canonical(arr.x, arr.y, f)
     arr = arr.replace(x=x, y=y)
     sub, index, offset = _neighbourhood(arr, f)
     pairs, areas = overlaps(sub, tolerance=tolerance)
@@ -473,7 +473,7 @@ def repeat_report(arr: Arrangement, exemplar: Arrangement | None = None, *, tile
     x0, y0, w, h = f
     n = len(arr)
     if n:
-        cx, cy = _periodic.canonical(arr.x, arr.y, f)
+        cx, cy = canonical(arr.x, arr.y, f)
         arr = arr.replace(x=cx, y=cy)
     ov = wrap_overlaps(arr, tile=f)
     out: dict[str, Any] = {
@@ -506,7 +506,7 @@ def repeat_report(arr: Arrangement, exemplar: Arrangement | None = None, *, tile
     # summed over elements (an overlap counts twice), clipped by rectangles: fast
     cov = {"edge": float("nan"), "interior": float("nan"), "ratio": float("nan")}
     if n:
-        im = _periodic.images(arr, f)
+        im = images(arr, f)
         geoms = im.geometry_of("area_geometry")[visible(im)]
         geoms = geoms[shapely.area(geoms) > 0]
         if len(geoms):
@@ -537,18 +537,18 @@ def repeat_report(arr: Arrangement, exemplar: Arrangement | None = None, *, tile
 
 def _seam_fidelity(arr: Arrangement, exemplar: Arrangement, f: tuple[float, float, float, float]) -> dict[str, Any]:
     """Local fidelity of windows straddling the repeat's seams against windows inside the tile."""
-    from . import _fidelity
+    from ._fidelity import RESULT_MARGIN, _median_nn
 
     x0, y0, w, h = f
     ex_vis = exemplar.select(visible(exemplar))
-    s = _fidelity._median_nn(ex_vis.xy) if len(ex_vis) >= 2 else 0.0
+    s = _median_nn(ex_vis.xy) if len(ex_vis) >= 2 else 0.0
     ex_area = exemplar.region.area if exemplar.region is not None else max(float(np.prod(np.subtract(exemplar.bounds[2:], exemplar.bounds[:2]))), 0.0)
     side = float(np.sqrt(ex_area))
     # the map's windows cover the block's interior (eroded by RESULT_MARGIN s): grow the
     # tile so that windows centred on every seam fit
-    m = min(_fidelity.RESULT_MARGIN * s + side, max(w, h))
+    m = min(RESULT_MARGIN * s + side, max(w, h))
     block = (x0 - m, y0 - m, w + 2 * m, h + 2 * m)
-    big = _periodic.tiled_copies(arr, 3 + 2 * int(np.ceil(m / w)), 3 + 2 * int(np.ceil(m / h)), tile=f)
+    big = tiled_copies(arr, 3 + 2 * int(np.ceil(m / w)), 3 + 2 * int(np.ceil(m / h)), tile=f)
     keep = (big.x >= block[0]) & (big.x < block[0] + block[2]) & (big.y >= block[1]) & (big.y < block[1] + block[3])
     big = big.select(np.flatnonzero(keep)).replace(region=Region.rectangle(block[2], block[3], block[0], block[1]))
     rep = fidelity(exemplar, big, eq5=False, local=True)

@@ -20,7 +20,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
-from .. import _periodic
+from .._periodic import frame, images
 from .._errors import InputError
 from ..arrangement import Arrangement
 from ..shape import Shape
@@ -185,7 +185,7 @@ def to_svg(
     -------
     str
     """
-    tile = _periodic.frame(arr)
+    tile = frame(arr)
     counts = None
     if repeat is not None:
         counts = _repeat_counts(repeat)
@@ -323,7 +323,7 @@ def _draw_tile(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, 
     n = len(arr)
     if n == 0:
         return out
-    im = _periodic.images(arr.with_columns(copy_of=np.arange(n)))
+    im = images(arr.with_columns(copy_of=np.arange(n)))
     if len(im) == n:
         return out
     copies = im.select(np.arange(n, len(im)))

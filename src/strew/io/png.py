@@ -70,13 +70,13 @@ def to_png(arr: Arrangement, *, width: int = 1024, background: str | None = "#ff
     bottom edges continue each other pixel for pixel. ``repeat=(n, m)`` (or ``"NxM"``)
     shows ``n x m`` copies, e.g. a 3 x 3 preview; it needs a periodic arrangement.
     """
-    from .. import _periodic
+    from .._periodic import frame
     from ._svg_export import _repeat_counts
     from .svg import to_svg
 
     if width <= 0:
         raise InputError(f"width: must be positive, got {width}")
-    tile = _periodic.frame(arr)
+    tile = frame(arr)
     counts = None if repeat is None else _repeat_counts(repeat)
     if tile is None:
         if counts is not None:
