@@ -280,3 +280,69 @@ def test_ornament_tiles_without_overlaps_and_round_trips_its_parts(tmp_path):
     back = load_parquet(tmp_path / "o.parquet")
     assert len(back) == len(a)
     assert all(g.equals(h) for g, h in zip(back.geometry, a.geometry))
+
+
+def test_render_streams_a_dataset_to_png_and_refuses_large_svg(worlds, tmp_path, capsys, monkeypatch):
+    from PIL import Image
+
+    import strew.io._parquet as pq_mod
+
+    base, (arr, _), _ = worlds
+    folder = str(base / "one.parquet")
+    png = tmp_path / "o.png"
+    assert main(["render", folder, "--out", str(png), "--width", "300", "-q"]) == 0
+    im = np.asarray(Image.open(png).convert("RGB"))
+    assert im.shape == (240, 300, 3)
+    assert 0.05 < (im.sum(axis=2) < 3 * 250).mean() < 0.95
+    # the same picture as the overview that strew world draws while it runs
+    from strew.io._overview import Overview
+
+    ov = Overview(SIZE, 300, kinds=list(arr.shapes))
+    for a in pq_mod.iter_parquet_tiles(folder):
+        ov.add(a)
+    assert np.array_equal(np.asarray(ov.image), im)
+    # small worlds still convert to SVG; above the stated size the message points to Parquet
+    assert main(["render", folder, "--out", str(tmp_path / "o.svg"), "-q"]) == 0
+    assert (tmp_path / "o.svg").stat().st_size > 1000
+    monkeypatch.setattr(pq_mod, "TEXT_LIMIT", 100)
+    assert main(["render", folder, "--out", str(tmp_path / "big.json")]) == 2
+    err = capsys.readouterr().err
+    assert f"{len(arr):,} elements, more than 100 for SVG or JSON" in err and "Parquet" in err
+    assert not (tmp_path / "big.json").exists()
+
+
+def test_pyramid_levels_agree_and_match_the_overview(worlds, tmp_path):
+    from PIL import Image
+
+    from strew.io._overview import write_pyramid
+
+    base, (arr, _), _ = worlds
+    out = tmp_path / "pyr"
+    n = write_pyramid(base / "one.parquet", out, 2)
+    # level 2: 4 x 4 tiles over the 150 x 150 square; the world (150 x 120) misses none of
+    # them (120 > 3/4 of 150): 16 + 4 + 1
+    assert n == 21
+    assert sorted(p.relative_to(out).as_posix() for p in out.glob("0/*/*.png")) == ["0/0/0.png"]
+    z2 = {(int(p.parent.name), int(p.stem)): np.asarray(Image.open(p).convert("RGB")) for p in out.glob("2/*/*.png")}
+    assert len(z2) == 16 and all(im.shape == (256, 256, 3) for im in z2.values())
+    # the four level-2 tiles of the top-left quarter, halved, make level 1's tile 0/0
+    big = np.zeros((512, 512, 3))
+    for dx in (0, 1):
+        for dy in (0, 1):
+            big[dy * 256:(dy + 1) * 256, dx * 256:(dx + 1) * 256] = z2[(dx, dy)]
+    halved = big.reshape(256, 2, 256, 2, 3).mean(axis=(1, 3))
+    z1 = np.asarray(Image.open(out / "1" / "0" / "0.png").convert("RGB")).astype(float)
+    assert np.abs(halved - z1).mean() < 2.0
+    # the top row of the world (y near 120) is the bottom band of level 2's row 0
+    # (the square's top 30 units lie above the world): drawn white
+    top = z2[(1, 0)]
+    assert (top[:40] == 255).all() and (top[-60:] < 250).any()
+    with pytest.raises(InputError, match="pyramid-zoom"):
+        write_pyramid(base / "one.parquet", out, 13)
+
+
+def test_cli_pyramid_needs_a_parquet_out(tmp_path, shapes_file, capsys):
+    argv = ["world", "pack", str(shapes_file), "--size", "60x60", "--tile-size", "30", "--out", str(tmp_path / "x.png"),
+            "--pyramid", str(tmp_path / "pyr")]
+    assert main(argv) == 2
+    assert "--pyramid: the pyramid is drawn from the Parquet dataset" in capsys.readouterr().err

@@ -8,7 +8,7 @@ from ._common import check_outputs, out_option, quiet_option, save_outputs, visi
 
 
 @click.command("render")
-@click.argument("input", type=click.Path(dir_okay=False))
+@click.argument("input", type=click.Path())
 @out_option()
 @click.option("--width", type=click.IntRange(min=1), default=1024, show_default=True, help="PNG width in pixels.")
 @quiet_option
@@ -19,7 +19,12 @@ def command(input: str, outs: tuple[str, ...], width: int, quiet: bool) -> None:
     previews it repeated (the PNG width is rounded to whole pixels per tile).
     """
     from ..io import load
+    from ..io._parquet import is_dataset
 
+    if is_dataset(input):  # a world.parquet (issue 19): a PNG streamed file by file, never loaded whole
+        from .world import render_dataset
+
+        return render_dataset(input, outs, width, quiet)
     check_outputs(outs)
     if any(o.lower().endswith(".png") for o in outs):
         from .._limits import check_memory

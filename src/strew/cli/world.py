@@ -62,8 +62,11 @@ def _make(name: str) -> click.Command:
         size, tile_size, halo = options.pop("size"), options.pop("tile_size"), options.pop("halo")
         workers, scheduler, timeout = options.pop("workers"), options.pop("scheduler"), options.pop("timeout")
         overview_px = options.pop("overview_px")
+        pyramid, zoom = options.pop("pyramid"), options.pop("pyramid_zoom")
         raw_input = options.pop(s.input.name)
         _check_outs(outs)
+        if pyramid is not None and not any(o.lower().endswith(".parquet") for o in outs):
+            raise InputError("--pyramid: the pyramid is drawn from the Parquet dataset: add --out world.parquet")
         values = {}
         for p in cli_params:
             v = _convert(p, options.get(p.name))
@@ -126,6 +129,11 @@ def _make(name: str) -> click.Command:
             data = canvas.png()
             for o in pngs:
                 atomic_write(o, data)
+        if pyramid is not None:
+            from ..io._overview import write_pyramid
+
+            made = write_pyramid(parquet[0], pyramid, zoom)
+            echo(f"pyramid: {made} PNG tiles of 256 px, levels 0-{zoom}, in {pyramid}/z/x/y.png", quiet=quiet)
         secs = time.perf_counter() - t0
         n = int(info.counts.sum())
         echo(f"world: {n:,} elements in {len(info.counts)} tiles ({', '.join(f'{k} {c:,}' for k, c in info.kinds.items())}), "
@@ -148,6 +156,10 @@ def _make(name: str) -> click.Command:
         click.option("--seed", type=int, default=0, show_default=True, help="Random seed (tile k draws from (seed, k))."),
         click.option("--overview-px", type=click.IntRange(16, 16384), default=2048, show_default=True,
                      help="Longer side of the PNG overview."),
+        click.option("--pyramid", type=click.Path(file_okay=False), default=None, metavar="DIR",
+                     help="Also write a z/x/y pyramid of 256-pixel PNG tiles (web map viewers) into DIR."),
+        click.option("--pyramid-zoom", type=click.IntRange(0, 12), default=4, show_default=True, metavar="Z",
+                     help="Deepest pyramid level: 2^Z x 2^Z tiles across the world's longer side."),
         click.option("--out", "-o", "outs", multiple=True, required=True, type=click.Path(),
                      help="world.parquet (dataset folder, one file per tile) and/or overview.png."),
         quiet_option,
@@ -155,6 +167,35 @@ def _make(name: str) -> click.Command:
         f = deco(f)
     return click.command(name, help=f"Fill a world with {name}, tile by tile (phases of 2x2 tiles, Wei 2008), "
                          f"in this process or on Dask ({s.summary})")(f)
+
+
+def render_dataset(input: str, outs: tuple[str, ...], width: int, quiet: bool) -> None:
+    """``strew render world.parquet --out ...``: a PNG overview streamed from the files;
+    SVG and JSON only up to :data:`strew.io._parquet.TEXT_LIMIT` elements (then loaded)."""
+    from ..io import atomic_write
+    from ..io._overview import render_dataset_png
+    from ..io._parquet import TEXT_LIMIT, load_parquet, parquet_info
+    from ._common import check_outputs, save_outputs
+
+    check_outputs(outs)
+    info = parquet_info(input)
+    n = info["elements"]
+    for o in outs:
+        if not o.lower().endswith(".png") and n > TEXT_LIMIT:
+            raise InputError(f"--out {o}: the world holds {n:,} elements, more than {TEXT_LIMIT:,} for SVG or JSON "
+                             "(hundreds of MB of text); keep it as Parquet (pandas, DuckDB or strew.io.iter_parquet_tiles "
+                             "read it) and render a PNG overview or a pyramid (strew world --pyramid)")
+    size = info["meta"].get("world", {}).get("size") or [1.0, 1.0]
+    for o in outs:
+        if o.lower().endswith(".png"):
+            from .._limits import check_memory
+
+            side = max(1, round(width * max(size) / size[0]))
+            check_memory(4.0 * side * side, "--width")
+            atomic_write(o, render_dataset_png(input, side))
+        else:
+            save_outputs(load_parquet(input, max_elements=TEXT_LIMIT), (o,), width=width)
+        echo(f"wrote {o} ({n:,} elements)", quiet=quiet)
 
 
 class _WorldGroup(click.Group):

@@ -23,10 +23,13 @@ import numpy as np
 
 from .._errors import InputError
 
-__all__ = ["ParquetWriter", "iter_parquet_tiles", "parquet_info", "parquet_summary", "load_parquet", "is_dataset", "LOAD_LIMIT"]
+__all__ = ["ParquetWriter", "iter_parquet_tiles", "table_to_arrangement", "TEXT_LIMIT", "parquet_info", "parquet_summary", "load_parquet", "is_dataset", "LOAD_LIMIT"]
 
 #: largest dataset :func:`load_parquet` reads into one Arrangement
 LOAD_LIMIT = 2_000_000
+#: largest world written as SVG or JSON (``strew render world.parquet --out x.svg``):
+#: about 100-300 bytes an element, so at most a few hundred MB of text
+TEXT_LIMIT = 1_000_000
 
 _HINT = "pip install 'strew[distributed]'"
 _CORE = ("x", "y", "rotation", "scale")
@@ -189,33 +192,43 @@ def parquet_summary(folder: str | os.PathLike[str]) -> dict[str, Any]:
     }
 
 
+def table_to_arrangement(t: Any, shapes: Mapping[str, Any]) -> Any:
+    """An Arrangement of the rows of a pyarrow table of this format (a file, or a
+    filtered scan of the dataset), with ``shapes`` as its library."""
+    from ..arrangement import Arrangement
+
+    pa, _ = _pa()
+    names = list(shapes)
+    where = {k: i for i, k in enumerate(names)}
+    pieces = [np.zeros(0, np.int64)]
+    for chunk in t.column("kind").chunks:  # the files of a scan each have their own dictionary
+        lookup = np.array([where[k] for k in chunk.dictionary.to_pylist()] + [0], np.int64)
+        pieces.append(lookup[chunk.indices.to_numpy(zero_copy_only=False)])
+    idx = np.concatenate(pieces)
+    extra: dict[str, Any] = {}
+    for c in t.column_names:
+        if c in ("kind", *_CORE):
+            continue
+        col = t.column(c)
+        if c == PARTS_COLUMN:
+            extra[c] = [None if v is None else json.loads(v) for v in col.to_pylist()]
+        elif col.type == pa.string():
+            extra[c] = np.array(col.to_pylist(), dtype=object)
+        else:
+            extra[c] = col.to_numpy()
+    return Arrangement(dict(shapes), idx, *(np.asarray(t.column(c).to_numpy(), np.float64) for c in _CORE), columns=extra)
+
+
 def iter_parquet_tiles(folder: str | os.PathLike[str]) -> Iterator[Any]:
     """The dataset's tiles as Arrangements, one file at a time, in tile order."""
-    from ..arrangement import Arrangement
     from ..shape import Shape
 
-    pa, pq = _pa()
+    _, pq = _pa()
     folder = Path(folder)
     doc = _doc(folder)
     shapes = {k: Shape.from_dict(v) for k, v in doc["shapes"].items()}
-    names = list(shapes)
     for p in sorted(folder.glob("part-*.parquet")):
-        t = pq.read_table(p)
-        kind = t.column("kind").combine_chunks()
-        lookup = np.array([names.index(k) for k in kind.dictionary.to_pylist()], np.int64) if len(kind.dictionary) else np.zeros(0, np.int64)
-        idx = lookup[kind.indices.to_numpy(zero_copy_only=False)] if len(t) else np.zeros(0, np.int64)
-        extra = {}
-        for c in t.column_names:
-            if c in ("kind", *_CORE):
-                continue
-            col = t.column(c)
-            if c == PARTS_COLUMN:
-                extra[c] = [None if v is None else json.loads(v) for v in col.to_pylist()]
-            elif col.type == pa.string():
-                extra[c] = np.array(col.to_pylist(), dtype=object)
-            else:
-                extra[c] = col.to_numpy()
-        yield Arrangement(shapes, idx, *(t.column(c).to_numpy() for c in _CORE), columns=extra)
+        yield table_to_arrangement(pq.read_table(p), shapes)
 
 
 def load_parquet(folder: str | os.PathLike[str], *, max_elements: int = LOAD_LIMIT) -> Any:
