@@ -167,22 +167,22 @@ def parquet_info(folder: str | os.PathLike[str]) -> dict[str, Any]:
 
 def parquet_summary(folder: str | os.PathLike[str]) -> dict[str, Any]:
     """Counts per kind, bounds of the centres and the world's meta, reading only the
-    ``kind``, ``x`` and ``y`` columns one file at a time (``strew info world.parquet``)."""
+    ``kind``, ``x`` and ``y`` columns one record batch at a time (``strew info world.parquet``)."""
     _, pq = _pa()
     folder = Path(folder)
     info = parquet_info(folder)
     counts = dict.fromkeys(info["shapes"], 0)
     lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
-    for p in sorted(folder.glob("part-*.parquet")):
-        t = pq.read_table(p, columns=["kind", "x", "y"])
-        if len(t) == 0:
-            continue
-        kind = t.column("kind").combine_chunks()
-        names = kind.dictionary.to_pylist()
-        for k, c in zip(*np.unique(kind.indices.to_numpy(zero_copy_only=False), return_counts=True)):
-            counts[names[k]] = counts.get(names[k], 0) + int(c)
-        xy = np.c_[t.column("x").to_numpy(), t.column("y").to_numpy()]
-        lo, hi = np.minimum(lo, xy.min(axis=0)), np.maximum(hi, xy.max(axis=0))
+    for p in sorted(folder.glob("part-*.parquet")):  # row group by row group: memory is one batch
+        for t in pq.ParquetFile(p).iter_batches(batch_size=65536, columns=["kind", "x", "y"]):
+            if len(t) == 0:
+                continue
+            kind = t.column("kind")
+            names = kind.dictionary.to_pylist()
+            for k, c in zip(*np.unique(kind.indices.to_numpy(zero_copy_only=False), return_counts=True)):
+                counts[names[k]] = counts.get(names[k], 0) + int(c)
+            xy = np.c_[t.column("x").to_numpy(), t.column("y").to_numpy()]
+            lo, hi = np.minimum(lo, xy.min(axis=0)), np.maximum(hi, xy.max(axis=0))
     n = max(info["elements"], 1)
     return {
         "elements": info["elements"], "tiles": info["tiles"], "counts": counts,
