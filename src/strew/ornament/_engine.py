@@ -407,6 +407,24 @@ class _Grower:
         self.dist_el = np.full((rows, cols), np.inf)
         self.near_el = np.full((rows, cols), -1, np.int64)
         self.skip = np.zeros((rows, cols), bool)
+        # On a torus the waves of the dist_all field stop where the distance exceeds the
+        # largest empty circle still in the tile (plus slack): no tile cell's nearest
+        # obstacle lies farther, so cells of the margin beyond it need no update.
+        self._tile_rows = self._tile_cols = slice(0)
+        if periodic is not None:
+            ii, jj = np.nonzero(covered == 0)
+            self._tile_rows, self._tile_cols = slice(int(ii.min()), int(ii.max()) + 1), slice(int(jj.min()), int(jj.max()) + 1)
+        self._commits = 0
+        self._edge_dist = None
+        if periodic is not None:
+            # distance in cells from each cell to the tile's cells
+            ci = np.arange(rows)
+            cj = np.arange(cols)
+            di = np.maximum(0, np.maximum(self._tile_rows.start - ci, ci - (self._tile_rows.stop - 1)))
+            dj = np.maximum(0, np.maximum(self._tile_cols.start - cj, cj - (self._tile_cols.stop - 1)))
+            self._edge_dist = np.hypot(di[:, None].astype(float), dj[None, :].astype(float))
+        self._cap_cells = math.inf
+        self._cap_all = np.full((rows, cols), np.inf) if periodic is not None else None
         self._ring = np.empty(rows * cols, np.int64)
         self._inq = np.zeros(rows * cols, bool)
         br, bc = -(-rows // _BLOCK), -(-cols // _BLOCK)
@@ -535,9 +553,11 @@ class _Grower:
             ch.phase = self.state.phase
             self.elements.append(ch)
             for pr in ch.proxies:
+                bc = pr.bounding_circle()
                 for dx, dy in self._offsets(ch):
                     self.placed.add(pr, ch.index, dx, dy)
-                    cells.append(self._cells(pr, dx, dy))
+                    if self._renders(bc, dx, dy):
+                        cells.append(self._cells(pr, dx, dy))
         if not cells:
             return
         c = np.unique(np.concatenate(cells))
@@ -555,7 +575,18 @@ class _Grower:
             self.dirty[:] = True
             return
         w = (self._ring, self._inq)
-        lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self.dist_all, 0.0, False, *w)
+        if self._cap_all is None:
+            lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self.dist_all, 0.0, False, *w)
+        else:
+            lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self._cap_all, 0.0, True, *w)
+            self._commits += 1
+            if self._commits % 8 == 1:
+                r = float(self.dist_all[self._tile_rows, self._tile_cols].max()) + 4.0
+                if r < 0.75 * self._cap_cells:
+                    # a wave reaching a tile cell within r passes margin cells at most r
+                    # minus their distance to the tile from its obstacle
+                    self._cap_cells = r
+                    np.subtract(r, self._edge_dist, out=self._cap_all)
         lower_wave(self.dist_el, self.near_el, self.skip, c, self.dirty, _BLOCK, self.dist_all, self.adj_tol + 1.0, True, *w)
 
     def _offsets(self, el: Element) -> list[tuple[float, float]]:
@@ -568,6 +599,18 @@ class _Grower:
         cx, cy, _ = el.proxies[0].bounding_circle()
         sx, sy = math.floor((cx - x0) / w) * w, math.floor((cy - y0) / h) * h
         return [(i * w - sx, j * h - sy) for j in (0, -1, 1) for i in (0, -1, 1)]
+
+    def _renders(self, bc: tuple[float, float, float], dx: float, dy: float) -> bool:
+        """Whether a proxy (bounding circle ``bc``) translated by ``(dx, dy)`` goes into
+        the raster: always in a panel; on a torus only when it comes within the largest
+        empty circle still in the tile of the tile (farther, it is no cell's nearest)."""
+        if self.periodic is None or (dx == 0.0 and dy == 0.0):
+            return True
+        x0, y0, w, h = self.periodic
+        cx, cy, r = bc[0] + dx, bc[1] + dy, bc[2]
+        gx = max(x0 - cx, 0.0, cx - (x0 + w))
+        gy = max(y0 - cy, 0.0, cy - (y0 + h))
+        return math.hypot(gx, gy) - r <= (self._cap_cells + 2.0) * self.h
 
     def _wrap_points(self, p: np.ndarray) -> np.ndarray:
         """``p`` (2,) and, on a torus, its translates that fall in the raster, (k, 2)."""
