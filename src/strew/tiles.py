@@ -7,7 +7,13 @@ Two tiles of one phase are a whole tile apart, so they never share a border zone
 can run at once. A tile runs the method (any method of the contract in
 :mod:`strew._method`) on its rectangle grown by ``halo`` (clipped to the world), with
 the finished elements of its lower-phase neighbours near it as ``context``; it keeps the
-elements whose centre lies in its own half-open rectangle ``[x0, x1) x [y0, y1)``.
+elements whose centre lies in its own half-open rectangle ``[x0, x1) x [y0, y1)`` or in
+a finished neighbour's (see :func:`run_tile`), and drops those in unfinished ones.
+
+On a torus (``periodic=True``, issue 18) the grid wraps: its counts per axis are even,
+so the 2 x 2 colouring holds across the edges, and a neighbour across an edge is seen
+moved by +-W or +-H. :func:`periodic` makes a repeat tile this way with any method
+that takes ``context``.
 
 Departure from Wei: Wei runs the phases as global barriers (all of phase 0, then all
 of phase 1, ...). Here a tile waits only for its (up to 8) lower-phase neighbours, a

@@ -127,3 +127,17 @@ def test_torus_plan_has_even_counts_and_phases_differ_across_the_wrap(w, h, frac
             for dx, dy in shifts:  # the moved neighbour touches x's rectangle
                 assert r[0] + dx <= x.rect[2] + 1e-9 * w and r[2] + dx >= x.rect[0] - 1e-9 * w
                 assert r[1] + dy <= x.rect[3] + 1e-9 * h and r[3] + dy >= x.rect[1] - 1e-9 * h
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_tiles_at_the_halo_limit_never_overlap(seed):
+    # elements as large as the tiles allow (halo = twice the bar's reach = 6.7, tiles of
+    # 15 >= 2 halo), where a tile's kept elements reach deepest into its neighbours
+    big = {"bar": strew.Shape.rectangle(6, 3), "disc": strew.Shape.circle(2.0, 16)}
+    a = periodic("pack", big, (60, 60), rng=seed, tile_size=15)
+    assert a.meta["world"]["grid"] == [4, 4] and a.meta["world"]["halo"] == pytest.approx(2 * np.hypot(3, 1.5))
+    assert len(a) > 60 and overlapping_pairs(P.tiled_copies(a)) == 0
+    from strew.tiles import tiled
+
+    b = tiled("pack", big, (75, 45), tile_size=15, seed=seed)  # 5 x 3 tiles, not a torus
+    assert len(b) > 60 and overlapping_pairs(b) == 0
