@@ -59,9 +59,10 @@ def test_tiled_three_by_three_no_element_overlaps_another(w, h, seed, method, ho
         extra["max_failures"] = 300
     arr = pack(shapes, Region.rectangle(w, h, 3.0, -2.0), rng=seed, method=method, periodic=True, **extra)
     assert len(arr) > 0
-    assert arr.meta["periodic"] == [3.0, -2.0, w, h]
+    x0, y0, tw, th = arr.meta["periodic"]
+    np.testing.assert_allclose([x0, y0, tw, th], [3.0, -2.0, w, h], rtol=1e-12)  # the region's bounds, rounded
     # each element once, at its canonical position
-    assert np.all((arr.x >= 3.0) & (arr.x < 3.0 + w) & (arr.y >= -2.0) & (arr.y < -2.0 + h))
+    assert np.all((arr.x >= x0) & (arr.x < x0 + tw) & (arr.y >= y0) & (arr.y < y0 + th))
     _no_overlap_across_the_wrap(arr)
 
 
@@ -148,3 +149,29 @@ def test_periodic_poisson_disk_keeps_apart_across_the_wrap_and_covers_the_torus(
     d, _ = tree.query(np.c_[gx.ravel(), gy.ravel()])
     assert d.max() < 2 * r
     assert np.array_equal(pts, poisson_disk(Region.rectangle(w, h, -1.0, 2.0), r, rng=seed, periodic=True))
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    rows=st.integers(2, 40),
+    cols=st.integers(2, 40),
+    p=st.sampled_from([0.005, 0.05, 0.4]),
+    sx=st.floats(0.5, 1.5),
+    sy=st.floats(0.5, 1.5),
+    seed=st.integers(0, 2**32 - 1),
+)
+def test_torus_distance_transform_equals_brute_force(rows, cols, p, sx, sy, seed):
+    """The fill-gap field on a tile: wrapped distances to the nearest obstacle pixel
+    centre, with pixels sx by sy (sparse obstacles make the padding grow)."""
+    from strew.pack._field import _edt_torus
+
+    rng = np.random.default_rng(seed)
+    free = rng.random((rows, cols)) > p
+    free[rng.integers(rows), rng.integers(cols)] = False
+    rr, cc = np.mgrid[0:rows, 0:cols]
+    best = np.full((rows, cols), np.inf)
+    for r0, c0 in np.argwhere(~free):
+        dy = np.minimum((rr - r0) % rows, (r0 - rr) % rows)
+        dx = np.minimum((cc - c0) % cols, (c0 - cc) % cols)
+        best = np.minimum(best, np.hypot(dx * sx, dy * sy))
+    np.testing.assert_allclose(_edt_torus(free, sx, sy), best, rtol=0, atol=1e-9)

@@ -82,13 +82,10 @@ class DistanceField:
         The raster has a whole number of pixels across each side, so that it wraps
         exactly: pixels ``W / cols`` by ``H / rows``, each side at most ``cell``. Placed
         regions are marked with their wrapped images, and the distance transform runs on
-        the mask repeated 3 x 3 (``scipy.ndimage.distance_transform_edt`` with the
-        pixels' sampling), of which the centre copy is kept: on the torus no obstacle is
-        farther than half the tile's diagonal, so these are the wrapped distances to the
-        obstacle pixel centres (at least the true distances, as in the plane).
+        the mask padded by its own wrapped rows and columns (:func:`_edt_torus`): the
+        wrapped distances to the obstacle pixel centres (at least the true distances,
+        as in the plane).
         """
-        from scipy.ndimage import distance_transform_edt
-
         x0, y0, w, h = (float(v) for v in tile)
         cell = float(cell)
         self.x0, self.y0 = x0, y0
@@ -111,9 +108,7 @@ class DistanceField:
             # nothing placed: no obstacle anywhere; a distance larger than any element
             self.d = np.full(free.shape, float(w + h))
         else:
-            big = np.tile(free, (3, 3))
-            self.d = distance_transform_edt(big, sampling=(self.cell_y, self.cell))[self.rows:2 * self.rows, self.cols:2 * self.cols]
-            self.d = np.ascontiguousarray(self.d)
+            self.d = _edt_torus(free, self.cell, self.cell_y)
         self.dmax = float(self.d.max()) if self.d.size else 0.0
 
     def occupy(self, geoms: np.ndarray | list) -> None:
@@ -344,6 +339,89 @@ def _edt(free):  # pragma: no cover - numba
             if free[r, q - 1]:
                 p = v[k]
                 out[r, q - 1] = np.sqrt((q - p) * (q - p) + f[p])
+    return out
+
+
+def _edt_torus(free: np.ndarray, sx: float, sy: float) -> np.ndarray:
+    """Distance (document units) of each True pixel of a wrapping raster to the nearest
+    False pixel on the torus, pixels ``sx`` by ``sy``; 0 at False pixels.
+
+    The mask is padded with its own wrapped rows and columns, a margin of 16 pixels
+    first (fill-gap's pixels are a sixth of the smallest element), and the padded
+    array's edge counts as an obstacle (:func:`_edt_aniso`). A value no larger than
+    the margin is then exact: any nearer obstacle would lie in the padded array. While a
+    value exceeds it, the margin doubles (the values are bounded: at most half the
+    tile's diagonal).
+    """
+    rows, cols = free.shape
+    py = px = 16
+    while True:
+        big = np.pad(free, ((py, py), (px, px)), mode="wrap")
+        d = _edt_aniso(big, sx, sy)[py:py + rows, px:px + cols]
+        if d.max() <= min(py * sy, px * sx):
+            return np.ascontiguousarray(d)
+        py, px = 2 * py, 2 * px
+
+
+@numba.njit(cache=True)
+def _edt_aniso(free, sx, sy):  # pragma: no cover - numba
+    """:func:`_edt` for pixels ``sx`` by ``sy`` (document units; repeat tiles, issue 18):
+    the distance of each True pixel centre to the nearest False one or to the pixels
+    just outside the array, by the same two passes of lower envelopes of parabolas."""
+    rows, cols = free.shape
+    g = np.empty((rows, cols))
+    for c in range(cols):
+        last = -1
+        for r in range(rows):
+            if not free[r, c]:
+                last = r
+                g[r, c] = 0.0
+            else:
+                dd = float(r - last) * sy
+                g[r, c] = dd * dd
+        last = rows
+        for r in range(rows - 1, -1, -1):
+            if not free[r, c]:
+                last = r
+            else:
+                dd = float(last - r) * sy
+                if dd * dd < g[r, c]:
+                    g[r, c] = dd * dd
+    out = np.zeros((rows, cols))
+    n = cols + 2
+    f = np.empty(n)
+    v = np.empty(n, dtype=np.int64)
+    z = np.empty(n + 1)
+    s2 = sx * sx
+    for r in range(rows):
+        f[0] = 0.0
+        f[n - 1] = 0.0
+        for c in range(cols):
+            f[c + 1] = g[r, c] if free[r, c] else 0.0
+        # lower envelope of the parabolas sx**2 (q - i)**2 + f[i]
+        k = 0
+        v[0] = 0
+        z[0] = -np.inf
+        z[1] = np.inf
+        for q in range(1, n):
+            while True:
+                p = v[k]
+                sq = ((f[q] + s2 * q * q) - (f[p] + s2 * p * p)) / (2.0 * s2 * (q - p))
+                if sq <= z[k]:
+                    k -= 1
+                else:
+                    break
+            k += 1
+            v[k] = q
+            z[k] = sq
+            z[k + 1] = np.inf
+        k = 0
+        for q in range(1, n - 1):
+            while z[k + 1] < q:
+                k += 1
+            if free[r, q - 1]:
+                p = v[k]
+                out[r, q - 1] = np.sqrt(s2 * (q - p) * (q - p) + f[p])
     return out
 
 

@@ -787,12 +787,13 @@ def _rounds(
                         # the disk's centre in pixel units
                         u = (x + c * kdisk[i, 0] - sn * kdisk[i, 1] - fx0) * icell
                         v = (y + sn * kdisk[i, 0] + c * kdisk[i, 1] - fy0) * icell_y
-                        if periodic:
-                            u = _wrap(u, 0.0, float(cols))
-                            v = _wrap(v, 0.0, float(rows))
-                        elif not (0.0 <= u < cols and 0.0 <= v < rows):
-                            hit = True  # outside the domain's box
-                            break
+                        if not (0.0 <= u < cols and 0.0 <= v < rows):
+                            if periodic:
+                                u = _wrap(u, 0.0, float(cols))
+                                v = _wrap(v, 0.0, float(rows))
+                            else:
+                                hit = True  # outside the domain's box
+                                break
                         fc = min(int(u), cols - 1)
                         fr = min(int(v), rows - 1)
                         ox = u - (fc + 0.5)
