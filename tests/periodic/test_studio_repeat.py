@@ -68,3 +68,12 @@ def test_repeat_needs_a_rectangle(tmp_path):
     with pytest.raises(InputError, match="true or false"):
         s.handle({"type": "settings", "repeat": "yes"})
     assert s.status_message()["repeat"] is None
+
+
+def test_a_spray_stroke_across_the_edge_grows_on_both_sides(tmp_path):
+    s = _session(tmp_path)
+    s.handle({"type": "settings", "repeat": True})
+    _stroke(s, "spray", [(500.0 + 20 * i, 150.0 + 5 * i) for i in range(12)], 40.0)  # to x = 720
+    sc = s.scene()
+    assert np.sum(sc.x < 100) >= 5 and np.sum(sc.x > 480) >= 5
+    assert np.all((sc.x >= 0) & (sc.x < 600))
