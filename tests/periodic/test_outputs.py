@@ -63,6 +63,20 @@ def test_tile_svg_draws_wrapped_parts_and_keeps_each_element_once(edge_tile, tmp
     assert len(back) == 3 and P.frame(back) == (0.0, 0.0, 100.0, 50.0)
     doc = loads(dumps(edge_tile))
     assert len(doc) == 3 and P.frame(doc) == P.frame(edge_tile)
+    # a copy clones its element (Inkscape moves it with the element)
+    assert all(u.get("{http://www.w3.org/1999/xlink}href") == f"#strew-e{u.get('data-copy-of')}" for u in wrap.iter(f"{SVG}use"))
+
+
+def test_tile_svg_reads_back_with_each_element_once(tmp_path):
+    a = _torus(5, 40, 30)
+    p = tmp_path / "t.svg"
+    p.write_text(to_svg(a))
+    back = read_svg(p)
+    assert len(back) == len(a) and len(P.images(a)) > len(a)
+    order = np.lexsort((a.y, a.x))
+    border = np.lexsort((back.y, back.x))
+    np.testing.assert_allclose(back.xy[border], a.xy[order], atol=1e-6)
+    assert back.kind_names[border].tolist() == a.kind_names[order].tolist()
 
 
 def test_pattern_page(edge_tile):

@@ -316,26 +316,30 @@ def to_svg(
 
 def _draw_tile(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, *, layers: bool) -> list[str]:
     """A periodic tile: its elements once (per-kind layers), then the wrapped copies that
-    reach into the tile (layer ``strew-wrap``, each ``<use>`` naming its element by
-    ``data-copy-of``), all clipped to the tile (``#strew-tile``)."""
+    reach into the tile (layer ``strew-wrap``), all clipped to the tile (``#strew-tile``).
+
+    A copy is a clone of its element (``<use xlink:href="#strew-eI">`` moved by a whole
+    tile, ``data-copy-of="I"``): in Inkscape, moving or restyling an element near an edge
+    moves and restyles the part that wraps in at the opposite edge.
+    """
     clip = ' clip-path="url(#strew-tile)"'
-    out = _element_layers(arr, ids, sw, inherit_fill, clip=clip, layers=layers)
     n = len(arr)
-    if n == 0:
-        return out
-    im = images(arr.with_columns(copy_of=np.arange(n)))
-    if len(im) == n:
-        return out
+    im = images(arr.with_columns(copy_of=np.arange(n))) if n else arr
     copies = im.select(np.arange(n, len(im)))
-    src = np.asarray(copies["copy_of"], dtype=np.int64)
+    src = np.asarray(copies["copy_of"], dtype=np.int64) if len(copies) else np.zeros(0, np.int64)
+    out = _element_layers(arr, ids, sw, inherit_fill, clip=clip, layers=layers, named=set(src.tolist()))
+    if len(copies) == 0:
+        return out
     group = 'id="strew-wrap" inkscape:groupmode="layer" inkscape:label="wrapped copies"' if layers else 'data-strew="wrap"'
     out.append(f"<g {group}{clip}>")
-    out.extend(_element_lines(copies, ids, sw, inherit_fill, np.arange(len(copies)), src=src))
+    dx, dy = copies.x - arr.x[src], copies.y - arr.y[src]
+    for i, a, b in zip(src.tolist(), dx.tolist(), dy.tolist()):
+        out.append(f'<use xlink:href="#strew-e{i}" transform="translate({_num(a)} {_num(b)})" data-copy-of="{i}"/>')
     out.append("</g>")
     return out
 
 
-def _element_layers(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, *, clip: str, layers: bool = True) -> list[str]:
+def _element_layers(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, *, clip: str, layers: bool = True, named: set[int] | None = None) -> list[str]:
     """One group per kind (an Inkscape layer when ``layers``) with its elements."""
     out: list[str] = []
     kind = arr.kind
@@ -351,20 +355,20 @@ def _element_layers(arr: Arrangement, ids: list[str], sw: float, inherit_fill: b
             out.append(f'<g id="layer-{ids[k]}" inkscape:groupmode="layer" inkscape:label={label} data-kind={label}{clip}>')
         else:
             out.append(f"<g data-kind={label}{clip}>")
-        out.extend(_element_lines(arr, ids, sw, inherit_fill, idx, col_attrs=col_attrs))
+        out.extend(_element_lines(arr, ids, sw, inherit_fill, idx, col_attrs=col_attrs, named=named))
         out.append("</g>")
     return out
 
 
-def _element_lines(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, idx: np.ndarray, *, src: np.ndarray | None = None, col_attrs: dict[str, list[str]] | None = None) -> list[str]:
-    """``<use>`` (or a group of parts) for each element in ``idx``; with ``src``, they are
-    wrapped copies of the elements ``src[i]``: marked ``data-copy-of``, without columns."""
+def _element_lines(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bool, idx: np.ndarray, *, col_attrs: dict[str, list[str]] | None = None, named: set[int] | None = None) -> list[str]:
+    """``<use>`` (or a group of parts) for each element in ``idx``; those in ``named`` get
+    ``id="strew-eI"`` (their wrapped copies clone them)."""
     out: list[str] = []
     color = arr.columns.get("color")
     void = arr.columns.get("void")
     parts = arr.element_parts
     if col_attrs is None:
-        col_attrs = _column_attr_values(arr) if src is None else {}
+        col_attrs = _column_attr_values(arr)
     kind = arr.kind
     xs, ys, rot, sc = arr.x, arr.y, arr.rotation, arr.scale
     names = arr.kinds
@@ -376,7 +380,7 @@ def _element_lines(arr: Arrangement, ids: list[str], sw: float, inherit_fill: bo
             t += f" rotate({_num(math.degrees(rot[i]))})"
         if sc[i] != 1:
             t += f" scale({_num(sc[i])})"
-        extra = [f'data-index="{i}"'] if src is None else [f'data-copy-of="{int(src[i])}"']
+        extra = [f'id="strew-e{i}" data-index="{i}"' if named and i in named else f'data-index="{i}"']
         for cname, vals in col_attrs.items():
             extra.append(f"data-{cname}={quoteattr(vals[i])}")
         if inherit_fill and isinstance(color[i], str):
