@@ -36,8 +36,9 @@ LINE, QUAD, CUBIC, ARC = 0, 1, 2, 3
 MAX_SEGMENT_POINTS = 20000
 
 _FLOAT = r"[-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?"  # svgelements' PATTERN_FLOAT
-_PATH_TOKEN = re.compile(rf"([MmZzLlHhVvCcSsQqTtAa])|({_FLOAT})|[ ,\t\n\r\x0c]+|(.)", re.DOTALL)
-_NUMBERS = re.compile(rf"({_FLOAT})|[ ,\t\n\r\x0c]+|(.)", re.DOTALL)
+_FLOAT_RE = re.compile(_FLOAT)
+_COMMAND = re.compile(r"([MmZzLlHhVvCcSsQqTtAa])")
+_SEPARATORS = re.compile(r"[ ,\t\n\r\x0c]*")
 _TRANSFORM = re.compile(r"\s*(matrix|translate|scale|rotate|skewX|skewY)\s*\(([^()]*)\)\s*,?", re.IGNORECASE)
 _ARGS = {"m": 2, "l": 2, "h": 1, "v": 1, "c": 6, "s": 4, "q": 4, "t": 2, "a": 7}
 
@@ -186,25 +187,26 @@ class _Builder:
 
 
 def parse_path(d: str) -> Segments | None:
-    """Segments of SVG path data, or None where svgelements must read it (see the module doc)."""
-    tokens = _PATH_TOKEN.findall(d)
+    """Segments of SVG path data, or None where svgelements must read it (see the module doc).
+
+    The data is split at its command letters (a number cannot hold one); each command's
+    text must be numbers and separators only (issue 17.3: a scan token by token cost
+    most of the reading of a path).
+    """
+    pieces = _COMMAND.split(d)
+    if _SEPARATORS.fullmatch(pieces[0]) is None:
+        return None  # numbers (or anything else) before the first command
     b = _Builder()
-    i, n = 0, len(tokens)
     started = False
-    while i < n:
-        cmd, num, bad = tokens[i]
-        if bad:
+    for i in range(1, len(pieces), 2):
+        cmd, text = pieces[i], pieces[i + 1]
+        if _SEPARATORS.fullmatch(_FLOAT_RE.sub("", text)) is None:
             return None
-        if not cmd:
-            if num:
-                return None  # numbers without a command
-            i += 1
-            continue
-        i += 1
+        vals = _FLOAT_RE.findall(text)
         low = cmd.lower()
         rel = cmd != cmd.upper()
         if low == "z":
-            if not started:
+            if not started or vals:
                 return None
             b.close()
             continue
@@ -212,14 +214,6 @@ def parse_path(d: str) -> Segments | None:
             return None
         started = True
         k = _ARGS[low]
-        vals: list[str] = []
-        while i < n:
-            c2, num2, bad2 = tokens[i]
-            if bad2 or c2:
-                break
-            if num2:
-                vals.append(num2)
-            i += 1
         if not vals or len(vals) % k:
             return None  # svgelements has its own readings of these (inline z, empty commands)
         if low == "a":
@@ -256,14 +250,15 @@ def parse_path(d: str) -> Segments | None:
 
 
 def parse_numbers(text: str) -> list[float] | None:
-    """The numbers of a list separated by spaces or commas, or None when it holds anything else."""
-    out = []
-    for num, bad in _NUMBERS.findall(text):
-        if bad:
-            return None
-        if num:
-            out.append(float(num))
-    return out
+    """The numbers of a list separated by spaces or commas, or None when it holds anything else.
+
+    The numbers are those a left-to-right scan for numbers and separators finds; the text
+    left when they are removed must be separators only (a scan would stop at anything
+    else at the same place, since a number cannot start with a separator).
+    """
+    if _SEPARATORS.fullmatch(_FLOAT_RE.sub("", text)) is None:
+        return None
+    return list(map(float, _FLOAT_RE.findall(text)))
 
 
 def parse_points(text: str) -> list[float] | None:
@@ -308,8 +303,15 @@ def shape_segments(tag: str, num: dict[str, float], points: str | None) -> Segme
         vals = parse_points(points or "")
         if vals is None:
             return None
-        if not vals:
+        if len(vals) < 4:  # no segment
             return EMPTY
+        # what the builder makes, in a few array operations: one line per pair of points
+        xy = np.array(vals).reshape(-1, 2)
+        n = len(xy) - 1
+        pts = np.zeros((n, 4, 2))
+        pts[:, 0] = xy[:-1]
+        pts[:, 3] = xy[1:]
+        return Segments(np.zeros(n, np.int8), pts, np.zeros((n, 5)), np.zeros(n, np.intp), np.array([tag == "polygon"]))
         b.move(vals[0], vals[1])
         for j in range(2, len(vals), 2):
             b.line(vals[j], vals[j + 1])
@@ -644,3 +646,113 @@ def path_d(segs: Segments, m: np.ndarray, rot: float, s: float) -> str:
     if prev_sub >= 0 and segs.closed[prev_sub]:
         out.append("Z")
     return " ".join(out)
+
+
+# -- many elements at once ---------------------------------------------------------------
+def flatten_many(tables: list[Segments], tols: np.ndarray) -> list[list[tuple[np.ndarray, bool, bool]]]:
+    """:func:`flatten` of many elements in one batch of numpy (issue 17.3).
+
+    Parameters
+    ----------
+    tables : list of Segments
+        One table per element.
+    tols : (k,) float
+        The tolerance of each element.
+
+    Returns
+    -------
+    list of lists of ``(points (m, 2), closed, curved)``
+        What :func:`flatten` returns for each element: the same points, bit for bit (the
+        same formulas in the same order, elementwise), the same merging of equal points
+        and the same closing rule.
+    """
+    k = len(tables)
+    out: list[list[tuple[np.ndarray, bool, bool]]] = [[] for _ in range(k)]
+    nseg = np.fromiter((len(t.code) for t in tables), dtype=np.intp, count=k)
+    if k == 0 or not nseg.any():
+        return out
+    nsub = np.fromiter((len(t.closed) for t in tables), dtype=np.intp, count=k)
+    code = np.concatenate([t.code for t in tables])
+    pts = np.concatenate([t.pts for t in tables])
+    arc = np.concatenate([t.arc for t in tables])
+    closed_flag = np.concatenate([t.closed for t in tables])
+    elem = np.repeat(np.arange(k), nseg)
+    # subpath ids, unique over all elements
+    sub = np.concatenate([t.sub for t in tables]) + np.repeat(np.cumsum(nsub) - nsub, nseg)
+    n = len(code)
+    segs = Segments(code, pts, arc, sub, closed_flag)
+    bound = curve_bounds(segs)
+    is_curve = (code != LINE) & np.isfinite(bound)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        steps = np.ceil(np.sqrt(bound / (8 * np.asarray(tols, dtype=float)[elem])))
+        cnt = np.where(is_curve, np.clip(steps, 1, MAX_SEGMENT_POINTS), 1).astype(np.intp)
+    # every subpath: its start point, then cnt samples per segment
+    first_of_sub = np.r_[True, sub[1:] != sub[:-1]]
+    lead = first_of_sub.astype(np.intp)  # one leading point before the segment's samples
+    per_seg = cnt + lead
+    total = int(per_seg.sum())
+    seg_of = np.repeat(np.arange(n), per_seg)
+    first = np.cumsum(per_seg) - per_seg
+    j = np.arange(total) - first[seg_of] + 1 - lead[seg_of]  # 0 for a leading point, else 1 .. cnt
+    samples = np.empty((total, 2))
+    is_lead = j == 0
+    samples[is_lead] = pts[seg_of[is_lead], 0]
+    body = ~is_lead
+    sb = seg_of[body]
+    jb = j[body]
+    t = jb * (1.0 / cnt)[sb]
+    last = jb == cnt[sb]
+    t[last] = 1.0
+    res = np.empty((len(sb), 2))
+    p = pts[sb]
+    c = code[sb]
+    sel = c == LINE
+    res[sel] = p[sel, 3]
+    sel = c == QUAD
+    if sel.any():
+        u = t[sel][:, None]
+        v = 1 - u
+        pp = p[sel]
+        res[sel] = v * v * pp[:, 0] + 2 * (v * u) * pp[:, 1] + u * u * pp[:, 3]
+    sel = c == CUBIC
+    if sel.any():
+        u = t[sel][:, None]
+        v = 1 - u
+        pp = p[sel]
+        res[sel] = v * v * v * pp[:, 0] + 3 * (v * v * u * pp[:, 1] + u * u * v * pp[:, 2]) + u * u * u * pp[:, 3]
+    sel = c == ARC
+    if sel.any():
+        ar = arc[sb[sel]]
+        pp = p[sel]
+        tt = ar[:, 3] + ar[:, 4] * t[sel]
+        cr, sr = np.cos(ar[:, 2]), np.sin(ar[:, 2])
+        ct, st = np.cos(tt), np.sin(tt)
+        res[sel, 0] = pp[:, 1, 0] + ar[:, 0] * ct * cr - ar[:, 1] * st * sr
+        res[sel, 1] = pp[:, 1, 1] + ar[:, 0] * ct * sr + ar[:, 1] * st * cr
+    res[last] = pts[sb[last], 3]  # the end of every segment is its end point exactly
+    samples[body] = res
+    group = sub[seg_of]  # subpath of every sample
+    # merge consecutive equal points, each against the previous point (kept or not)
+    keep = np.ones(total, dtype=bool)
+    diff = np.abs(samples[1:] - samples[:-1]) > 1e-12
+    keep[1:] = (diff[:, 0] | diff[:, 1]) | (group[1:] != group[:-1])
+    samples, group = samples[keep], group[keep]
+    gstart = np.flatnonzero(np.r_[True, group[1:] != group[:-1]])
+    gend = np.r_[gstart[1:], len(group)]
+    gid = group[gstart]
+    count = gend - gstart
+    a, b = samples[gstart], samples[gend - 1]
+    meet = (np.abs(a[:, 0] - b[:, 0]) <= 1e-9 + 1e-5 * np.abs(b[:, 0])) & (np.abs(a[:, 1] - b[:, 1]) <= 1e-9 + 1e-5 * np.abs(b[:, 1]))
+    closed = closed_flag[gid] | ((count >= 4) & meet)
+    drop = closed & (count > 1) & meet
+    gend = gend - drop
+    count = gend - gstart
+    finite = np.isfinite(samples).all(axis=1)
+    bad = np.r_[0, np.cumsum(~finite)]
+    ok = (count >= 2) & (bad[gend] == bad[gstart])
+    curved_sub = np.zeros(len(closed_flag), dtype=bool)
+    np.logical_or.at(curved_sub, sub, is_curve)
+    elem_of_sub = np.repeat(np.arange(k), nsub)
+    for g, s0, s1, cl in zip(gid[ok].tolist(), gstart[ok].tolist(), gend[ok].tolist(), closed[ok].tolist()):
+        out[elem_of_sub[g]].append((samples[s0:s1], cl, bool(curved_sub[g])))
+    return out

@@ -86,7 +86,7 @@ from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
 from ._svg_flatten import EMPTY as _EMPTY
 from ._svg_flatten import _fmt
-from ._svg_flatten import ARC, Segments, flatten, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
+from ._svg_flatten import ARC, Segments, flatten, flatten_many, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
 
 __all__ = ["read_svg", "read_svg_shapes", "read_svg_region", "SVGImportWarning", "HIDDEN_CHOICES"]
 
@@ -268,6 +268,7 @@ class _Flat:
     paths: list[Path]
     labels: dict[str, tuple[float, float]]
     curves: bool
+    bounds: tuple[float, float, float, float] | None = None  # of the paths' points, where known
 
 
 class _Doc:
@@ -526,6 +527,41 @@ class _Doc:
                 paths.append(Path(_apply(m, pts), closed))
         return _Flat(paths, labels, curves)
 
+    def flatten_all(self, jobs: list[tuple[list[_Part], float]]) -> list[_Flat]:
+        """``[self.flatten(parts, _IDENTITY, tol) for parts, tol in jobs]``, the curves of
+        every part sampled in one :func:`._svg_flatten.flatten_many` call (issue 17.3).
+
+        The same paths, point for point; the first part whose coordinates are too large
+        raises, as in the loop.
+        """
+        tables: list[Segments] = []
+        tols: list[float] = []
+        where: list[tuple[int, np.ndarray]] = []
+        labels: list[dict[str, tuple[float, float]]] = [{} for _ in jobs]
+        for i, (parts, tol) in enumerate(jobs):
+            for part in parts:
+                m = part.m
+                if part.label is not None:
+                    pt = _apply(m, np.array([[self.length(part.el, "cx"), self.length(part.el, "cy")]]))[0]
+                    labels[i][part.label] = (float(pt[0]), float(pt[1]))
+                    continue
+                smax = _sigma_max(m)
+                if smax == 0:
+                    continue
+                segs = self.segments(part.el)
+                if too_large(segs, MAX_COORD):
+                    raise InputError(f"{self.name}: {self.where(part.el)}: coordinate magnitude over {MAX_COORD:.0e}")
+                tables.append(segs)
+                tols.append(tol / smax)
+                where.append((i, m))
+        paths: list[list[Path]] = [[] for _ in jobs]
+        curves = [False] * len(jobs)
+        for (i, m), flat in zip(where, flatten_many(tables, np.array(tols))):
+            for pts, closed, curved in flat:
+                curves[i] |= curved
+                paths[i].append(Path(_apply(m, pts), closed))
+        return [_Flat(p, lab, c) for p, lab, c in zip(paths, labels, curves)]
+
     def segments(self, el: ET.Element) -> Segments:
         """Segments of a path or basic shape, in the element's coordinates (parsed once)."""
         key = id(el)
@@ -609,16 +645,27 @@ class _Doc:
     def signatures(self, batch: list[tuple[list[_Part], _Flat]]) -> list[_Signature | None]:
         """:meth:`signature` of many objects, the moments computed in one batch (see :func:`_signatures`)."""
         todo: list[tuple[int, list[Path], float]] = []
-        for i, (parts, coarse) in enumerate(batch):
-            if not coarse.paths:
-                continue
-            pts = coarse.paths[0].points if len(coarse.paths) == 1 else np.concatenate([p.points for p in coarse.paths])
-            radius = float(np.sqrt(((pts - pts.mean(axis=0)) ** 2).sum(axis=1)).max())
+        have = [i for i, (_, coarse) in enumerate(batch) if coarse.paths]
+        if not have:
+            return [None] * len(batch)
+        # every object's largest distance from its mean vertex, for all at once: the
+        # same sums (numpy adds the rows of an (n, 2) array one after another) and roots
+        pts = np.concatenate([p.points for i in have for p in batch[i][1].paths])
+        count = np.array([sum(len(p.points) for p in batch[i][1].paths) for i in have])
+        start = np.cumsum(count) - count
+        mean = np.add.reduceat(pts, start, axis=0) / count[:, None]
+        dist = np.sqrt(((pts - np.repeat(mean, count, axis=0)) ** 2).sum(axis=1))
+        radii = np.maximum.reduceat(dist, start).tolist()
+        for i, radius in zip(have, radii):
+            parts, coarse = batch[i]
             if not radius > 0:
                 continue
             tol = _SIGNATURE_TOLERANCE * radius
             # without curves the flattening does not depend on the tolerance: reuse it
-            todo.append((i, self.flatten(parts, _IDENTITY, tol).paths if coarse.curves else coarse.paths, tol))
+            todo.append((i, coarse.paths, tol))
+        curved = [j for j, (i, _, _) in enumerate(todo) if batch[i][1].curves]
+        for j, fine in zip(curved, self.flatten_all([(batch[todo[j][0]][0], todo[j][2]) for j in curved])):
+            todo[j] = (todo[j][0], fine.paths, todo[j][2])
         out: list[_Signature | None] = [None] * len(batch)
         for (i, _, tol), sig in zip(todo, _signatures([paths for _, paths, _ in todo])):
             if sig is not None:
@@ -997,12 +1044,17 @@ def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
     mom = np.add.reduceat(zk * w[:, None], starts, axis=0) / 2j
     polar = (np.add.reduceat((zq * np.conj(zq)).real * w, starts) / 2 / 2j).real
     outlines = shapely.boundary(polys)
+    pts_all = np.concatenate([pts_list[k] for k in sel.tolist()])
+    cnt = lens[sel]
+    first = np.cumsum(cnt) - cnt
+    cen_all = np.c_[centroid.real, centroid.imag]
+    radius = np.maximum.reduceat(np.sqrt(((pts_all - np.repeat(cen_all, cnt, axis=0)) ** 2).sum(axis=1)), first)
     for j, k in enumerate(sel.tolist()):
         i = one[k]
         pts = batch[i][0].points
         if not size[j] > 0:
             continue
-        cen = np.array([centroid[j].real, centroid[j].imag])
+        cen = cen_all[j]
         out[i] = _Signature(
             points=pts,
             outline=outlines[j],
@@ -1011,7 +1063,7 @@ def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
             centroid=cen,
             moments=mom[j],
             gyration=math.sqrt(max(float(polar[j]), 0.0) / float(size[j])),
-            radius=float(np.sqrt(((pts - cen) ** 2).sum(axis=1)).max()),
+            radius=float(radius[j]),
         )
     return out
 
@@ -1148,6 +1200,7 @@ class _Reader:
         # flattening, signature; their control outlines; their kind candidates
         self._prepared: dict[int, tuple[list[_Part], _Flat, _Signature | None]] = {}
         self._outline_of: dict[int, tuple[tuple[Any, ...], np.ndarray] | None] = {}
+        self._key_source: dict[int, tuple[str | None, tuple[str, ...] | None]] = {}
         self._prep_index: dict[int, int] = {}  # id(el) -> index among the prepared objects
         self._partners: tuple[np.ndarray, np.ndarray] | None = None  # CSR: earlier prepared objects that may match
         self._kind_at: dict[int, int] = {}  # prepared index -> index in kinds of the kind it made
@@ -1177,7 +1230,7 @@ class _Reader:
         if keep_origin:
             origin = np.zeros(2)
         else:
-            bounds = _bounds(flat.paths)
+            bounds = flat.bounds if flat.bounds is not None else _bounds(flat.paths)
             origin = np.array([(bounds[0] + bounds[2]) / 2, (bounds[1] + bounds[3]) / 2])
         kind = _Kind(self.unique(name) if register else name, key, parts, origin, mirrored, style=_style(self.doc, parts))
         kind.signature = self.doc.signature(parts, flat) if known is None else known[1]
@@ -1292,8 +1345,12 @@ class _Reader:
             return
         # its own name, else the data-kind of its layer or group: an unlinked clone in a
         # strew export's kind layer keeps that kind (issue 22)
-        key = _key_of(el) or self.doc.group_key(el)
-        source = _source_key(el, key)
+        known = self._key_source.pop(id(el), None)
+        if known is not None:
+            key, source = known
+        else:
+            key = _key_of(el) or self.doc.group_key(el)
+            source = _source_key(el, key)
         if source is not None and self.copy_of(source, el, m, void, hidden):
             return
         if source is None:
@@ -1403,8 +1460,7 @@ class _Reader:
         """
         doc = self.doc
         seen_source: set[tuple[str, ...]] = set()
-        seen_outline: set[tuple[Any, ...]] = set()
-        items: list[tuple[ET.Element, list[_Part], _Flat]] = []
+        todo: list[tuple[ET.Element, bool, str | None, Segments, np.ndarray]] = []
         for what, el, m, _ in self._ahead:
             if what not in ("object", "void-object") or _local(el.tag) not in _SHAPE_TAGS:
                 continue
@@ -1413,29 +1469,46 @@ class _Reader:
                 continue
             key = _key_of(el) or doc.group_key(el)
             source = _source_key(el, key)
+            self._key_source[id(el)] = (key, source)
             if source is None or source in seen_source:
                 continue
             seen_source.add(source)
-            if len(items) % 256 == 255:
+            if len(todo) % 256 == 255:
                 doc.poll()
             try:
-                outline = self.control_outline(el, m, key)
-                self._outline_of[id(el)] = outline
-                if outline is not None:
-                    if outline[0] in seen_outline:
-                        continue
-                    seen_outline.add(outline[0])
-                parts, flat = self._parts_flat(el, m, what == "void-object")
+                segs = doc.segments(el)
+                if too_large(segs, MAX_COORD):
+                    continue
+                own = _compose(m, doc.transform(el))
             except Cancelled:
                 raise
             except Exception:  # read (and failed) in its turn
                 continue
-            items.append((el, parts, flat))
-        if not items:
+            todo.append((el, what == "void-object", key, segs, own))
+        if not todo:
             return
-        sigs = doc.signatures([(parts, flat) if flat.paths else ([], _Flat([], {}, False)) for _, parts, flat in items])
+        seen_outline: set[tuple[Any, ...]] = set()
+        items: list[tuple[ET.Element, list[_Part]]] = []
+        for (el, void, key, segs, own), outline in zip(todo, _control_outlines([(t[2], t[3], t[4]) for t in todo])):
+            self._outline_of[id(el)] = outline
+            if outline is not None:
+                if outline[0] in seen_outline:
+                    continue  # a moved copy: moved_copy places it
+                seen_outline.add(outline[0])
+            props = {**doc.inherited_props(el), **{k: v for k, v in _props(el).items() if k != "display"}}
+            items.append((el, [_Part(el, own, props)]))
+        flats = doc.flatten_all([(parts, doc.tolerance) for _, parts in items])
+        have = [f for f in flats if f.paths]
+        if have:  # bounds for new_kind, all at once (min and max are exact)
+            pts = np.concatenate([p.points for f in have for p in f.paths])
+            count = np.array([sum(len(p.points) for p in f.paths) for f in have])
+            start = np.cumsum(count) - count
+            lo, hi = np.minimum.reduceat(pts, start, axis=0).tolist(), np.maximum.reduceat(pts, start, axis=0).tolist()
+            for f, (x0, y0), (x1, y1) in zip(have, lo, hi):
+                f.bounds = (x0, y0, x1, y1)
+        sigs = doc.signatures([(parts, flat) if flat.paths else ([], _Flat([], {}, False)) for (_, parts), flat in zip(items, flats)])
         rows = []
-        for j, ((el, parts, flat), sig) in enumerate(zip(items, sigs)):
+        for j, ((el, parts), flat, sig) in enumerate(zip(items, flats, sigs)):
             self._prepared[id(el)] = (parts, flat, sig)
             self._prep_index[id(el)] = j
             rows.append(_invariants(sig))
@@ -1467,11 +1540,14 @@ class _Reader:
         Inkscape moved, turned or scaled by writing new numbers into the path data hash
         alike (see :meth:`moved_copy`). Arcs are left out (their radii are not points).
         """
-        segs = self.doc.segments(el)
+        return self.control_outline_of(key, self.doc.segments(el), _compose(m, self.doc.transform(el)))
+
+    @staticmethod
+    def control_outline_of(key: str | None, segs: Segments, own: np.ndarray) -> tuple[tuple[Any, ...], np.ndarray] | None:
+        """:meth:`control_outline` of segments ``segs`` drawn by the map ``own``."""
         n = len(segs.code)
         if n == 0 or n > 512 or ARC in segs.code:
             return None
-        own = _compose(m, self.doc.transform(el))
         if own[0, 0] * own[1, 1] - own[0, 1] * own[1, 0] <= 0:
             return None  # a mirror image is another kind: leave it to the matcher
         if segs.code.any():
@@ -1689,6 +1765,58 @@ def _candidates(table: np.ndarray, sig: _Signature, row: list[float] | None = No
         # the full match, n^2 in all (10 MB of distinct polygons: 28 s/MB against 11 at 1 MB)
         ok &= ~(np.abs(mk - mo) > 0.01 + 0.02 * np.maximum(mk, mo)).any(axis=1)
     return np.flatnonzero(ok)
+
+
+def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> list[tuple[tuple[Any, ...], np.ndarray] | None]:
+    """:meth:`_Reader.control_outline` of many objects, ``(key, segments, own map)`` each,
+    in one batch of numpy (issue 17.3): the same hashes and points, elementwise the same
+    arithmetic. Objects with a point that is not finite are left to the method."""
+    out: list[tuple[tuple[Any, ...], np.ndarray] | None] = [None] * len(items)
+    sel: list[int] = []
+    for i, (_, segs, own) in enumerate(items):
+        n = len(segs.code)
+        if n == 0 or n > 512 or ARC in segs.code:
+            continue
+        if own[0, 0] * own[1, 1] - own[0, 1] * own[1, 0] <= 0:
+            continue  # a mirror image is another kind: leave it to the matcher
+        sel.append(i)
+    if not sel:
+        return out
+    code = np.concatenate([items[i][1].code for i in sel])
+    pts = np.concatenate([items[i][1].pts for i in sel])
+    nseg = np.array([len(items[i][1].code) for i in sel])
+    used = np.ones((len(code), 4), dtype=bool)
+    used[:, 1] = code != 0
+    used[:, 2] = code == 2
+    local = pts[used]
+    npts = np.bincount(np.repeat(np.arange(len(sel)), nseg), used.sum(axis=1), len(sel)).astype(np.intp)
+    own = np.array([items[i][2] for i in sel])[np.repeat(np.arange(len(sel)), npts)]
+    z = (local[:, 0] * own[:, 0, 0] + local[:, 1] * own[:, 0, 1] + own[:, 0, 2]) + 1j * (local[:, 0] * own[:, 1, 0] + local[:, 1] * own[:, 1, 1] + own[:, 1, 2])
+    start = np.cumsum(npts) - npts
+    obj = np.repeat(np.arange(len(sel)), npts)
+    rel = z - z[start][obj]
+    d = np.abs(rel)
+    finite = np.isfinite(rel)
+    bad = np.r_[0, np.cumsum(~finite)]
+    end = start + npts
+    top = np.maximum.reduceat(d, start)
+    # the first point at the largest distance (np.argmax's choice)
+    is_top = d == top[obj]
+    far_at = np.minimum.reduceat(np.where(is_top, np.arange(len(d)), len(d)), start)
+    far = far_at - start
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        canon = rel / rel[far_at][obj]
+        q = np.round(canon.view(np.float64) * 100).astype(np.int64)
+    for j, i in enumerate(sel):
+        s0, s1 = int(start[j]), int(end[j])
+        if bad[s1] != bad[s0] or not np.isfinite(top[j]):
+            out[i] = _Reader.control_outline_of(*items[i])
+            continue
+        if not top[j] > 0:
+            continue
+        segs = items[i][1]
+        out[i] = ((items[i][0] or "", segs.code.tobytes(), segs.sub.tobytes(), segs.closed.tobytes(), int(far[j]), q[2 * s0 : 2 * s1].tobytes()), z[s0:s1])
+    return out
 
 
 def _candidate_pairs(rows: np.ndarray, valid: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
