@@ -10,7 +10,9 @@ growth with n shows how far from linear the import is.
     python benchmarks/svg_import.py [--quick] [--repeat N]
 
 With ``--against FILE`` (an older ``_svg_import.py``, e.g. from
-``git show COMMIT:src/strew/io/_svg_import.py > /tmp/old_import.py``) it instead times
+``git show COMMIT:src/strew/io/_svg_import.py > /tmp/old_import.py``, read with today's
+``_svg_flatten``) or ``--against COMMIT`` (the reader as it was at that commit: its
+``_svg_import.py`` and its ``_svg_flatten.py``) it instead times
 that importer and today's on the same files in one run: n distinct polygons, n copies of
 one curved path under transforms, and n ``<use>`` clones of three symbols (as strew's own
 exports look). Both must give the same kinds, counts and poses (to 1e-3, see ``_same``).
@@ -24,8 +26,7 @@ machine counts less) and, with ``--against``, the older importer's seconds per M
 files up to ``--old-max-mb`` (default 1) and the ratio. The path-count limit is raised
 for the run (10 MB holds over 50,000 objects).
 
-    git worktree add /tmp/old_svg 574794a
-    python benchmarks/svg_import.py --scaling --against /tmp/old_svg/src/strew/io/_svg_import.py
+    python benchmarks/svg_import.py --scaling --against b8e4e2d
 """
 
 from __future__ import annotations
@@ -133,15 +134,39 @@ def scaling(opts: Any, old: Any) -> None:
     bench.finish()
 
 
-def _load_old(path: str) -> Any:
+def _load_module(name: str, path: str) -> Any:
     import importlib.util
     import sys
 
-    spec = importlib.util.spec_from_file_location("strew.io._svg_import_baseline", path)
-    old = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = old  # dataclasses look their module up
-    spec.loader.exec_module(old)  # relative imports resolve in strew.io
-    return old
+    spec = importlib.util.spec_from_file_location(name, path)
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod  # dataclasses look their module up
+    spec.loader.exec_module(mod)  # relative imports resolve in strew.io
+    return mod
+
+
+def _load_old(path: str) -> Any:
+    """An older importer: a file (read with today's ``_svg_flatten``), or a git revision,
+    whose ``_svg_import.py`` and ``_svg_flatten.py`` are both loaded (the whole reader as
+    it was at that commit)."""
+    import os
+    import re
+    import subprocess
+    import tempfile
+
+    if os.path.isfile(path):
+        return _load_module("strew.io._svg_import_baseline", path)
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    tag = re.sub(r"\W", "_", path)
+    folder = tempfile.mkdtemp(prefix="strew_svg_baseline_")
+    files = {}
+    for name in ("_svg_flatten", "_svg_import"):
+        text = subprocess.run(["git", "show", f"{path}:src/strew/io/{name}.py"], cwd=root, capture_output=True, text=True, check=True).stdout
+        files[name] = os.path.join(folder, f"{name}_{tag}.py")
+        with open(files[name], "w") as f:
+            f.write(text.replace("from ._svg_flatten import", f"from ._svg_flatten_{tag} import"))
+    _load_module(f"strew.io._svg_flatten_{tag}", files["_svg_flatten"])
+    return _load_module(f"strew.io._svg_import_{tag}", files["_svg_import"])
 
 
 def against(opts: Any) -> None:
@@ -170,7 +195,7 @@ def against(opts: Any) -> None:
 
 def main() -> None:
     def extra(p: Any) -> None:
-        p.add_argument("--against", default=None, help="an older _svg_import.py to time against")
+        p.add_argument("--against", default=None, help="an older _svg_import.py, or a git commit, to time against")
         p.add_argument("--scaling", action="store_true", help="seconds per MB on 0.1, 1 and 10 MB files")
         p.add_argument("--max-mb", type=float, default=10.0, help="largest file for --scaling")
         p.add_argument("--old-max-mb", type=float, default=1.0, help="largest file the older importer reads in --scaling")

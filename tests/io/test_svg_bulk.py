@@ -198,3 +198,29 @@ def test_path_data_is_read_as_the_scan_read_it(d):
                 fl.parse_path(text)
             continue
         assert _same_segments(fl.parse_path(text), want)
+
+
+@settings(max_examples=40, deadline=None)
+@given(ds=st.lists(_well_formed_path(), min_size=1, max_size=12), seed=st.integers(0, 2**32 - 1))
+def test_many_elements_flatten_as_each_alone(ds, seed):
+    """flatten_many gives every element flatten's subpaths, bit for bit, at its own tolerance."""
+    rng = np.random.default_rng(seed)
+    tables = []
+    for d in ds:
+        try:
+            segs = fl.parse_path(d)
+        except ArithmeticError:
+            continue
+        if segs is not None:
+            tables.append(segs)
+    k = int(rng.integers(0, 6))  # polygons and polylines, some with repeated points
+    for i in range(k):
+        pts = rng.uniform(-5, 5, (int(rng.integers(1, 9)), 2)).round(int(rng.integers(0, 3)))
+        tables.append(fl.shape_segments("polygon" if i % 2 else "polyline", {}, " ".join(f"{a},{b}" for a, b in pts)))
+    tols = 10 ** rng.uniform(-4, 0.5, len(tables))
+    for small in (400, 0):  # flatten's plain-float and array branches
+        for segs, tol, got in zip(tables, tols, fl.flatten_many(tables, tols)):
+            want = fl.flatten(segs, tol, small=small)
+            assert len(got) == len(want)
+            for (p, c, cv), (q, d, dv) in zip(got, want):
+                assert (c, cv) == (d, dv) and np.array_equal(p, q)

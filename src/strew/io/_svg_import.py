@@ -993,36 +993,60 @@ def _signature(paths: list[Path]) -> _Signature | None:
 def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
     """:func:`_signature` of many objects at once (issue 17.3).
 
-    Objects drawn by one closed path whose polygon is valid (most objects) go through
+    Objects drawn by one closed path whose polygon is valid (most objects), or whose
+    self-intersecting polygon shapely's ``make_valid`` repairs into polygons, go through
     shapely's array functions and numpy once for the whole batch: polygons, validity,
-    orientation, edges, then the moments of every edge, summed per object; the rest go
-    through :func:`_signature` one by one. The same figures up to rounding (the sums run
+    repair, orientation, edges, then the moments of every edge, summed per object; the
+    rest go through :func:`_signature` one by one. The same figures up to rounding (the sums run
     in another order).
     """
     out: list[_Signature | None] = [None] * len(batch)
-    one = [i for i, paths in enumerate(batch)
-           if len(paths) == 1 and paths[0].closed and len(paths[0].points) >= 3 and not (paths[0].points[0] == paths[0].points[-1]).all()]
+    one = [i for i, paths in enumerate(batch) if len(paths) == 1 and paths[0].closed and len(paths[0].points) >= 3]
     polys = np.zeros(0, dtype=object)
+    valid = good = np.zeros(0, dtype=bool)
     if one:
         pts_list = [batch[i][0].points for i in one]
         lens = np.array([len(p) for p in pts_list])
         coords = np.concatenate(pts_list)
+        last = np.cumsum(lens) - 1
+        open_ring = (coords[last - lens + 1] != coords[last]).any(axis=1)  # first point not repeated at the end
+        if not open_ring.all():
+            one = [i for i, o in zip(one, open_ring.tolist()) if o]
+            pts_list = [p for p, o in zip(pts_list, open_ring.tolist()) if o]
+            lens = lens[open_ring]
+            coords = np.concatenate(pts_list) if pts_list else np.zeros((0, 2))
+    if one:
         polys = shapely.polygons(shapely.linearrings(coords, indices=np.repeat(np.arange(len(one)), lens)))
-        good = shapely.is_valid(polys) & (shapely.area(polys) > 0)
-    else:
-        good = np.zeros(0, dtype=bool)
-    rest = set(range(len(batch))) - {one[j] for j in np.flatnonzero(good)}
+        valid = shapely.is_valid(polys)
+        good = valid & (shapely.area(polys) > 0)
+    # Self-intersecting rings: repaired as paths_to_polygon repairs them (make_valid, its
+    # polygons of positive area), all at once; where that gives anything but polygons,
+    # or nothing, the object goes through _signature.
+    geom_of = {k: g for k, g in zip(np.flatnonzero(good).tolist(), polys[good])}
+    broken = np.flatnonzero(~valid)
+    if len(broken):
+        parts, owner = shapely.get_parts(shapely.make_valid(polys[broken]), return_index=True)
+        kind = shapely.get_type_id(parts)
+        odd = set(owner[(kind != 3) & (kind != 1) & (kind != 0) & (kind != 5) & (kind != 4)].tolist())  # not polygon, line or point
+        areal = (kind == 3) & (shapely.area(parts) > 0)
+        for j in sorted(set(owner[areal].tolist()) - odd):
+            found = parts[areal & (owner == j)]
+            geom_of[int(broken[j])] = found[0] if len(found) == 1 else shapely.MultiPolygon(list(found))
+    sel = np.array(sorted(geom_of), dtype=np.intp)
+    rest = set(range(len(batch))) - {one[k] for k in sel.tolist()}
     for i in sorted(rest):
         out[i] = _signature(batch[i])
-    sel = np.flatnonzero(good)
     if not len(sel):
         return out
-    polys = polys[sel]
+    polys = np.array([geom_of[k] for k in sel.tolist()], dtype=object)
     n = len(sel)
-    c, ridx = shapely.get_coordinates(shapely.get_exterior_ring(shapely.orient_polygons(polys)), return_index=True)
+    # every ring of every (oriented) polygon: exteriors counter-clockwise, holes clockwise
+    parts, part_owner = shapely.get_parts(shapely.orient_polygons(polys), return_index=True)
+    rings, ring_part = shapely.get_rings(parts, return_index=True)
+    c, ridx = shapely.get_coordinates(rings, return_index=True)
     z = c[:, 0] + 1j * c[:, 1]
     same = ridx[1:] == ridx[:-1]
-    a, b, obj = z[:-1][same], z[1:][same], ridx[:-1][same]
+    a, b, obj = z[:-1][same], z[1:][same], part_owner[ring_part[ridx[:-1][same]]]
     d = b - a
     # area and centroid in closed form (as _area_centroid), summed per object
     e0 = d * (np.conj(a) + np.conj(d) / 2) / 2j
