@@ -14,7 +14,9 @@ kernels are loaded (or compiled) by a small warm-up world in every worker first.
 machine is shared: the ratios are from the same run.
 
 Run: ``python benchmarks/worlds.py`` (``--quick``: 2e4 and 1e5 only; ``--repeat N``
-repeats of the speed-up pair, default 3). Writes ``benchmarks/results/worlds.json``.
+repeats of the speed-up pair, default 3; ``--sizes 1e5,1e6,1e7`` the sizes of (a)).
+Writes ``benchmarks/results/worlds.json``. ``--seams`` prints only the border-strip
+statistics of tiled and periodic worlds (``benchmarks/results/worlds_seams.json``).
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import statistics
 import subprocess
 import sys
@@ -95,14 +98,87 @@ def run(n: float, workers: int) -> dict:
     return r
 
 
+def seams(seeds: tuple[int, ...] = (3, 4, 5, 6)) -> dict:
+    """Border-strip statistics (issue 19 point 4, issue 18 through strew.tiles.periodic).
+
+    pack: a 150 x 120 world in tiles of 30, strips of half-width halo about the inner
+    borders against the rest (and an untiled pack of the same world on the same lines);
+    periodic pack (200 x 200), synth (stones.svg) and grow (tiles.svg) 400 x 400 in tiles
+    of 100: strips along the repeat tile's edges (width halo for pack, halo / 2 else),
+    and the overlaps of 3 x 3 copies.
+    """
+    import numpy as np
+
+    import strew
+    from strew import _periodic as P
+    from strew.io import load
+    from strew.pack import pack
+    from strew.tiles import periodic, tiled
+
+    sys.path.insert(0, str(Path(__file__).parents[1] / "tests" / "worlds"))
+    from world_stats import border_strips, overlapping_pairs
+
+    shapes = {"bar": strew.Shape.rectangle(3, 1.5), "disc": strew.Shape.circle(1.0, 16)}
+    size, tile = (150.0, 120.0), 30.0
+    out: dict = {"pack_tiled": [], "pack_untiled": []}
+    for seed in seeds:
+        for key, arr in (("pack_tiled", tiled("pack", shapes, size, tile_size=tile, seed=seed)),
+                         ("pack_untiled", pack(shapes, strew.Region.rectangle(*size), rng=seed))):
+            halo = 2 * float(np.hypot(1.5, 0.75))
+            st, inn, sa, ia = border_strips(arr, size, tile, halo, halo)
+            ratio = (st.sum() / sa) / (inn.sum() / ia)
+            dfrac = float((arr.kind[st] == 0).mean() - (arr.kind[inn] == 0).mean())
+            out[key].append({"seed": seed, "elements": len(arr), "strip_density_ratio": ratio, "bar_fraction_diff": dfrac})
+            print(f"  {key:13s} seed {seed}: {len(arr):,} el, border strips {ratio:.3f}x the interior's density, "
+                  f"bar fraction strip - interior {dfrac:+.3f}", flush=True)
+
+    def edge(a, width):
+        x0, y0, w, h = P.frame(a)
+        x, y = a.x - x0, a.y - y0
+        e = (x < width) | (x > w - width) | (y < width) | (y > h - width)
+        ea = w * h - (w - 2 * width) * (h - 2 * width)
+        return float((e.sum() / ea) / ((~e).sum() / (w * h - ea)))
+
+    ex = Path(__file__).parents[1] / "examples" / "exemplars"
+    runs = [("periodic pack", "pack", shapes, 200.0, None, 1.0), ("periodic synth", "synth", load(ex / "stones.svg"), 400.0, 100.0, 0.5),
+            ("periodic grow", "grow", load(ex / "tiles.svg"), 400.0, 100.0, 0.5)]
+    for name, method, inp, side, t, frac in runs:
+        out[name] = []
+        for seed in (1, 2, 3):
+            a = periodic(method, inp, (side, side), rng=seed, tile_size=t)
+            width = frac * a.meta["world"]["halo"]
+            r = {"seed": seed, "elements": len(a), "edge_density_ratio": edge(a, width), "edge_width": width,
+                 "overlaps_3x3": overlapping_pairs(P.tiled_copies(a))}
+            out[name].append(r)
+            print(f"  {name:14s} seed {seed}: {len(a):,} el, edge strips (width {width:.2f}) {r['edge_density_ratio']:.3f}x "
+                  f"the interior's density, overlaps in 3x3 copies {r['overlaps_3x3']}", flush=True)
+    return out
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--sizes", default=None, help="comma-separated element counts of (a), e.g. 1e5,1e6,1e7")
+    ap.add_argument("--seams", action="store_true", help="only the border-strip statistics (writes worlds_seams.json)")
     args = ap.parse_args()
+    if args.seams:
+        t0 = time.perf_counter()
+        print("border strips (issue 19 point 4; issue 18 through strew.tiles.periodic):")
+        res = {"benchmark": "worlds --seams", "command": "python benchmarks/worlds.py --seams", **seams()}
+        out = Path(__file__).parent / "results" / "worlds_seams.json"
+        out.parent.mkdir(exist_ok=True)
+        out.write_text(json.dumps(res, indent=1) + "\n")
+        print(f"wrote {out} ({time.perf_counter() - t0:.0f} s)")
+        return
     sizes = [2e4, 1e5] if args.quick else [1e5, 3e5, 1e6]
+    if args.sizes:
+        sizes = sorted(float(v) for v in args.sizes.split(","))
     small = sizes[0] if args.quick else 1e5
     t0 = time.perf_counter()
+    load0 = os.getloadavg()
+    print(f"machine: {os.cpu_count()} cores, load average {load0[0]:.1f} (other work shares the cores: "
+          "wall-clock ratios are noisy, CPU per element less so)")
     print(f"(b) speed-up, {small:.0e} elements, medians of {args.repeat}:")
     one = [run(small, 1) for _ in range(args.repeat)]
     two = [run(small, 2) for _ in range(args.repeat)]
@@ -123,7 +199,8 @@ def main() -> None:
           f"{c1 / c2:.2f}x: the ideal speed-up on an idle machine is at most 2 x this)")
     result = {
         "benchmark": "worlds",
-        "command": "python benchmarks/worlds.py" + (" --quick" if args.quick else ""),
+        "command": "python benchmarks/worlds.py" + (" --quick" if args.quick else "") + (f" --sizes {args.sizes}" if args.sizes else ""),
+        "cores": os.cpu_count(), "load_average_start": load0[0], "load_average_end": os.getloadavg()[0],
         "tile_size": TILE,
         "speedup": {"elements": small, "one_worker_s": s1, "two_workers_s": s2, "ratio": s1 / s2,
                     "runs_one": one, "runs_two": two},
