@@ -30,8 +30,6 @@ import math
 
 import numba
 import numpy as np
-from llvmlite import binding as llvm_binding
-from numba.extending import get_cython_function_address
 
 from .._numba_geometry import seg_dist2
 
@@ -44,18 +42,6 @@ __all__ = [
 ]
 
 _NB = dict(cache=True, nogil=True)
-
-# LAPACK's dgetrf and dgesv, called directly (for _newton3): the routines (scipy's
-# LAPACK) that numba's np.linalg.det and np.linalg.solve call, on the same Fortran-order
-# copies, so the same bits, without numba's generic linalg code, whose compilation took
-# most of the ornament kernels' first run (issue 16: solve_impl alone about 13 s).
-# (external symbols, not ctypes pointers, so that the kernel can be cached)
-llvm_binding.add_symbol("strew_dgetrf", get_cython_function_address("scipy.linalg.cython_lapack", "dgetrf"))
-llvm_binding.add_symbol("strew_dgesv", get_cython_function_address("scipy.linalg.cython_lapack", "dgesv"))
-_VP = numba.types.voidptr
-_dgetrf = numba.types.ExternalFunction("strew_dgetrf", numba.types.void(_VP, _VP, _VP, _VP, _VP, _VP))
-_dgesv = numba.types.ExternalFunction("strew_dgesv", numba.types.void(_VP, _VP, _VP, _VP, _VP, _VP, _VP, _VP))
-
 
 @numba.njit(**_NB)
 def cover_disc(rows, cols, x0, y0, h, cx, cy, r, pad):
@@ -85,10 +71,24 @@ def cover_polyline(rows, cols, x0, y0, h, pts, pad):
 
     ``pts`` is ``(n, 2)``; consecutive points are joined.
     """
-    total = 0
     n = pts.shape[0]
-    out = np.empty(64, np.int64)
     p2 = pad * pad
+    # first pass: the cells of every segment's box bound the output (one allocation, no
+    # growing copies: slice assignment compiles slowly, issue 16)
+    bound = 0
+    for s in range(max(1, n - 1)):
+        ax, ay = pts[s, 0], pts[s, 1]
+        if n > 1:
+            bx, by = pts[s + 1, 0], pts[s + 1, 1]
+        else:
+            bx, by = ax, ay
+        j0 = max(0, int(np.floor((min(ax, bx) - pad - x0) / h - 0.5)))
+        j1 = min(cols - 1, int(np.ceil((max(ax, bx) + pad - x0) / h - 0.5)))
+        i0 = max(0, int(np.floor((min(ay, by) - pad - y0) / h - 0.5)))
+        i1 = min(rows - 1, int(np.ceil((max(ay, by) + pad - y0) / h - 0.5)))
+        bound += max(0, i1 - i0 + 1) * max(0, j1 - j0 + 1)
+    out = np.empty(bound, np.int64)
+    total = 0
     for s in range(max(1, n - 1)):
         ax, ay = pts[s, 0], pts[s, 1]
         if n > 1:
@@ -104,10 +104,6 @@ def cover_polyline(rows, cols, x0, y0, h, pts, pad):
             for j in range(j0, j1 + 1):
                 px = x0 + (j + 0.5) * h
                 if seg_dist2(px, py, ax, ay, bx, by) <= p2:
-                    if total == out.shape[0]:
-                        bigger = np.empty(2 * total, np.int64)
-                        bigger[:total] = out
-                        out = bigger
                     out[total] = i * cols + j
                     total += 1
     return out[:total]
@@ -117,8 +113,14 @@ def cover_polyline(rows, cols, x0, y0, h, pts, pad):
 def cover_polygon(rows, cols, x0, y0, h, pts):
     """Flat indices of cells whose centre lies inside the polygon ``pts`` (n, 2) (even-odd)."""
     n = pts.shape[0]
-    xmin, xmax = pts[:, 0].min(), pts[:, 0].max()
-    ymin, ymax = pts[:, 1].min(), pts[:, 1].max()
+    # the box by loops (array reductions bring numba's ufunc machinery in: issue 16)
+    xmin = xmax = pts[0, 0]
+    ymin = ymax = pts[0, 1]
+    for a in range(1, n):
+        xmin = min(xmin, pts[a, 0])
+        xmax = max(xmax, pts[a, 0])
+        ymin = min(ymin, pts[a, 1])
+        ymax = max(ymax, pts[a, 1])
     j0 = max(0, int(np.floor((xmin - x0) / h - 0.5)))
     j1 = min(cols - 1, int(np.ceil((xmax - x0) / h - 0.5)))
     i0 = max(0, int(np.floor((ymin - y0) / h - 0.5)))
@@ -333,45 +335,58 @@ def _clearance(px, py, circ, segs):
 
 
 @numba.njit(**_NB)
-def _ascent_dir(px, py, circ, segs, dmin, band):
-    """Direction increasing every obstacle distance within ``band`` of the minimum."""
-    gx = 0.0
-    gy = 0.0
-    ga = np.empty((circ.shape[0] + segs.shape[0], 2))
-    na = 0
-    for k in range(circ.shape[0]):
+def _near_normal(px, py, circ, segs, k, dmin, band):
+    """Unit vector from obstacle k (circles first, then segments) to the point, and
+    whether that obstacle lies within ``band`` of the minimum distance ``dmin``."""
+    nc = circ.shape[0]
+    if k < nc:
         ux = px - circ[k, 0]
         uy = py - circ[k, 1]
         ln = np.sqrt(ux * ux + uy * uy)
         if ln - circ[k, 2] <= dmin + band and ln > 0:
-            ga[na, 0] = ux / ln
-            ga[na, 1] = uy / ln
+            return True, ux / ln, uy / ln
+        return False, 0.0, 0.0
+    j = k - nc
+    ax, ay, bx, by = segs[j, 0], segs[j, 1], segs[j, 2], segs[j, 3]
+    dx = bx - ax
+    dy = by - ay
+    ll = dx * dx + dy * dy
+    t = 0.0
+    if ll > 0:
+        t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / ll))
+    ux = px - (ax + t * dx)
+    uy = py - (ay + t * dy)
+    ln = np.sqrt(ux * ux + uy * uy)
+    if ln <= dmin + band and ln > 0:
+        return True, ux / ln, uy / ln
+    return False, 0.0, 0.0
+
+
+@numba.njit(**_NB)
+def _ascent_dir(px, py, circ, segs, dmin, band):
+    """Direction increasing every obstacle distance within ``band`` of the minimum.
+
+    Two passes over the obstacles (the normals summed, then each checked against the
+    sum) instead of a work array: arrays cost compile time (issue 16).
+    """
+    n = circ.shape[0] + segs.shape[0]
+    gx = 0.0
+    gy = 0.0
+    na = 0
+    for k in range(n):
+        ok, ux, uy = _near_normal(px, py, circ, segs, k, dmin, band)
+        if ok:
+            gx += ux
+            gy += uy
             na += 1
-    for k in range(segs.shape[0]):
-        ax, ay, bx, by = segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3]
-        dx = bx - ax
-        dy = by - ay
-        ll = dx * dx + dy * dy
-        t = 0.0
-        if ll > 0:
-            t = min(1.0, max(0.0, ((px - ax) * dx + (py - ay) * dy) / ll))
-        ux = px - (ax + t * dx)
-        uy = py - (ay + t * dy)
-        ln = np.sqrt(ux * ux + uy * uy)
-        if ln <= dmin + band and ln > 0:
-            ga[na, 0] = ux / ln
-            ga[na, 1] = uy / ln
-            na += 1
-    for k in range(na):
-        gx += ga[k, 0]
-        gy += ga[k, 1]
     ln = np.sqrt(gx * gx + gy * gy)
     if na == 0 or ln < 1e-12:
         return 0.0, 0.0
     gx /= ln
     gy /= ln
-    for k in range(na):
-        if ga[k, 0] * gx + ga[k, 1] * gy <= 1e-9:
+    for k in range(n):
+        ok, ux, uy = _near_normal(px, py, circ, segs, k, dmin, band)
+        if ok and ux * gx + uy * gy <= 1e-9:
             return 0.0, 0.0
     return gx, gy
 
@@ -415,8 +430,9 @@ def climb(cx, cy, circ, segs, step, min_step, target):
         else:
             s *= 0.5
     s2 = np.sqrt(0.5)
-    dx = np.array([1.0, -1.0, 0.0, 0.0, s2, -s2, s2, -s2])
-    dy = np.array([0.0, 0.0, 1.0, -1.0, s2, -s2, -s2, s2])
+    # the eight compass directions as tuples (arrays here cost compile time: issue 16)
+    dx = (1.0, -1.0, 0.0, 0.0, s2, -s2, s2, -s2)
+    dy = (0.0, 0.0, 1.0, -1.0, s2, -s2, -s2, s2)
     s = step * 0.25
     while s > min_step and best < target:
         bk = -1
@@ -469,11 +485,42 @@ def _nearest_on(px, py, circ, segs, k):
 
 
 @numba.njit(**_NB)
-def _copy3(a, out):
-    """``out[:, :] = a`` for (3, 3) arrays, as loops (slice assignment compiles slowly)."""
-    for r in range(3):
-        for c in range(3):
-            out[r, c] = a[r, c]
+def _solve3(a00, a01, a02, a10, a11, a12, a20, a21, a22, b0, b1, b2):
+    """Solve the 3 x 3 system by Gaussian elimination with partial pivoting, in scalars.
+
+    Returns ``(ok, x0, x1, x2)``; ``ok`` is False when the determinant (the product of
+    the pivots) is below 1e-12 in magnitude. Scalars, not numba's linalg nor LAPACK
+    through arrays: those cost most of the ornament kernels' compile time (issue 16).
+    """
+    # pivot for column 0
+    if abs(a10) > abs(a00) and abs(a10) >= abs(a20):
+        a00, a01, a02, b0, a10, a11, a12, b1 = a10, a11, a12, b1, a00, a01, a02, b0
+    elif abs(a20) > abs(a00):
+        a00, a01, a02, b0, a20, a21, a22, b2 = a20, a21, a22, b2, a00, a01, a02, b0
+    if a00 == 0.0:
+        return False, 0.0, 0.0, 0.0
+    l1 = a10 / a00
+    l2 = a20 / a00
+    a11 -= l1 * a01
+    a12 -= l1 * a02
+    b1 -= l1 * b0
+    a21 -= l2 * a01
+    a22 -= l2 * a02
+    b2 -= l2 * b0
+    # pivot for column 1
+    if abs(a21) > abs(a11):
+        a11, a12, b1, a21, a22, b2 = a21, a22, b2, a11, a12, b1
+    if a11 == 0.0:
+        return False, 0.0, 0.0, 0.0
+    l = a21 / a11
+    a22 -= l * a12
+    b2 -= l * b1
+    if abs(a00 * a11 * a22) < 1e-12:
+        return False, 0.0, 0.0, 0.0
+    x2 = b2 / a22
+    x1 = (b1 - a12 * x2) / a11
+    x0 = (b0 - a01 * x1 - a02 * x2) / a00
+    return True, x0, x1, x2
 
 
 @numba.njit(**_NB)
@@ -486,71 +533,38 @@ def _newton3(px, py, rho, circ, segs):
     n = circ.shape[0] + segs.shape[0]
     if n < 3:
         return px, py
-    d = np.empty(n)
-    for k in range(n):
-        d[k] = _nearest_on(px, py, circ, segs, k)[0]
     # the three nearest, as np.argsort(d)[:3] orders them (ties: the lower index first),
     # by one pass: argsort brought numba's quicksort in, about 1 s of CPU to compile (issue 16)
-    idx = np.full(3, -1, dtype=np.int64)
+    i0 = i1 = i2 = -1
+    d0 = d1 = d2 = 0.0
     for k in range(n):
-        v = d[k]
-        if idx[0] < 0 or v < d[idx[0]]:
-            idx[2] = idx[1]
-            idx[1] = idx[0]
-            idx[0] = k
-        elif idx[1] < 0 or v < d[idx[1]]:
-            idx[2] = idx[1]
-            idx[1] = k
-        elif idx[2] < 0 or v < d[idx[2]]:
-            idx[2] = k
-    three = np.full(1, 3, dtype=np.int32)  # n, lda, ldb
-    one = np.ones(1, dtype=np.int32)  # nrhs
-    info = np.zeros(1, dtype=np.int32)
-    ipiv = np.empty(3, dtype=np.int32)
-    a = np.empty((3, 3)).T  # Fortran order, as LAPACK (and numba's linalg) takes it
-    lu = np.empty((3, 3)).T
-    f = np.empty(3)
+        v = _nearest_on(px, py, circ, segs, k)[0]
+        if i0 < 0 or v < d0:
+            i2, d2 = i1, d1
+            i1, d1 = i0, d0
+            i0, d0 = k, v
+        elif i1 < 0 or v < d1:
+            i2, d2 = i1, d1
+            i1, d1 = k, v
+        elif i2 < 0 or v < d2:
+            i2, d2 = k, v
     for _ in range(12):
-        for r in range(3):
-            dk, gx, gy = _nearest_on(px, py, circ, segs, idx[r])
-            a[r, 0] = gx
-            a[r, 1] = gy
-            a[r, 2] = -1.0
-            f[r] = dk - rho
-        finite = True
-        for r in range(3):
-            finite = finite and math.isfinite(f[r]) and math.isfinite(a[r, 0]) and math.isfinite(a[r, 1])
-        if not finite:
+        f0, g00, g01 = _nearest_on(px, py, circ, segs, i0)
+        f1, g10, g11 = _nearest_on(px, py, circ, segs, i1)
+        f2, g20, g21 = _nearest_on(px, py, circ, segs, i2)
+        f0 -= rho
+        f1 -= rho
+        f2 -= rho
+        if not (math.isfinite(f0) and math.isfinite(f1) and math.isfinite(f2) and math.isfinite(g00) and math.isfinite(g01)
+                and math.isfinite(g10) and math.isfinite(g11) and math.isfinite(g20) and math.isfinite(g21)):
             break  # (np.linalg raised here; the point stays as the local search left it)
-        # det(a) as np.linalg.det: sign and log-sum of the diagonal of dgetrf's LU
-        _copy3(a, lu)
-        _dgetrf(three.ctypes, three.ctypes, lu.ctypes, three.ctypes, ipiv.ctypes, info.ctypes)
-        det = 0.0
-        if info[0] <= 0:
-            sgn = 1
-            for k in range(3):
-                sgn = sgn + (ipiv[k] != (k + 1))
-            sgn = sgn & 1
-            if sgn == 0:
-                sgn = -1
-            acc = 0.0
-            for k in range(3):
-                v = lu[k, k]
-                if v < 0.0:
-                    sgn = -sgn
-                    v = -v
-                acc = acc + np.log(v)
-            det = sgn * np.exp(acc)
-        if abs(det) < 1e-12:
+        ok, s0, s1, s2 = _solve3(g00, g01, -1.0, g10, g11, -1.0, g20, g21, -1.0, -f0, -f1, -f2)
+        if not ok:
             break
-        # np.linalg.solve(a, -f): dgesv on a copy of a and of -f
-        _copy3(a, lu)
-        step = -f
-        _dgesv(three.ctypes, one.ctypes, lu.ctypes, three.ctypes, ipiv.ctypes, step.ctypes, three.ctypes, info.ctypes)
-        px += step[0]
-        py += step[1]
-        rho += step[2]
-        if abs(step[0]) + abs(step[1]) + abs(step[2]) < 1e-12:
+        px += s0
+        py += s1
+        rho += s2
+        if abs(s0) + abs(s1) + abs(s2) < 1e-12:
             break
     return px, py
 
