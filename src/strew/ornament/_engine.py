@@ -593,7 +593,7 @@ class _Grower:
         """Translations at which element ``el`` is placed: itself only, or on a torus the
         3 x 3 translates around its canonical position (its first proxy's centre moved
         into the tile), which keep their place however far growth carried the element."""
-        if self.periodic is None:
+        if self.periodic is None or not el.proxies:
             return [(0.0, 0.0)]
         x0, y0, w, h = self.periodic
         cx, cy, _ = el.proxies[0].bounding_circle()
