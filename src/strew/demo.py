@@ -27,6 +27,7 @@ SECTIONS: list[tuple[str, str]] = [
     ("Programmable arrangements: planar maps, partitions, mappers (Loi et al.)", "strew.program._demo"),
     ("Adaptive clip art: rule-driven floral ornament (Wong et al.)", "strew.ornament._demo"),
     ("Example palettes and region-growing synthesis (Davison et al.)", "strew.synth._demo"),
+    ("Seamless repeat tiles: wallpaper, textile and game textures", "strew._demos.repeat"),
 ]
 
 
@@ -81,7 +82,7 @@ def build_gallery(
             json_path = out / f"{item.name}.json"
             arr = item.arrangement.with_meta(demo=item.name)
             save(arr, svg_path, **item.svg_options)
-            save(arr, png_path, width=png_width)
+            save(arr, png_path, width=png_width, **{k: v for k, v in item.svg_options.items() if k == "repeat"})
             atomic_write(json_path, dumps(arr))
             written += [svg_path, png_path, json_path]
             figs.append(

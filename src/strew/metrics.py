@@ -114,6 +114,10 @@ def _region(arr: Arrangement, region: Region | None) -> Region | None:
 def outside(arr: Arrangement, region: Region | None = None, *, tolerance: float = 1e-6) -> np.ndarray:
     """Indices of elements not wholly inside the region.
 
+    A periodic arrangement (``meta["periodic"]``, issue 18) lives on a torus: an element
+    crossing the tile's edge wraps in at the opposite edge, so there, with no ``region``
+    given, an element is outside only if its centre is not in the half-open tile.
+
     Parameters
     ----------
     region : Region, optional
@@ -125,6 +129,11 @@ def outside(arr: Arrangement, region: Region | None = None, *, tolerance: float 
     -------
     (k,) int
     """
+    tile = frame(arr) if region is None else None
+    if tile is not None:
+        x0, y0, w, h = tile
+        ok = (arr.x >= x0 - tolerance) & (arr.x < x0 + w) & (arr.y >= y0 - tolerance) & (arr.y < y0 + h)
+        return np.flatnonzero(~ok)
     reg = _region(arr, region)
     if reg is None or len(arr) == 0:
         return np.zeros(0, dtype=np.intp)

@@ -37,7 +37,11 @@ NAMES = [
     "program-fig12b-cracks-arrangement",
     *(f"synth-{n}" for n in ("apples", "grid", "rings", "stripes", "two-scales", "palette")),
     *(f"synth-exemplar-{n}" for n in ("apples", "grid", "rings", "stripes")),
+    *(f"repeat-{n}{r}" for n in ("leaves", "dots") for r in ("", "-3x3")),
 ]
+
+# Repeat tiles: no overlaps anywhere in the infinite repeat (across the wrap too).
+REPEAT = [n for n in NAMES if n.startswith("repeat-")]
 
 # Methods that promise filled shapes which do not overlap: packing, growth, synthesis
 # outputs and the partitions of the program examples (cells tile their face).
@@ -87,6 +91,13 @@ def test_nothing_outside_the_region(gallery, name):
 def test_no_filled_overlaps_where_promised(gallery, name):
     s = metrics.summary(gallery[0][name])
     assert s["filled_overlap_pairs"] == 0, f"{name}: {s['filled_overlap_pairs']} pairs, area {s['filled_overlap_area']:.4g}"
+
+
+@pytest.mark.parametrize("name", REPEAT)
+def test_repeat_tiles_do_not_overlap_across_the_wrap(gallery, name):
+    rep = metrics.repeat_report(gallery[0][name])
+    assert rep["overlaps"]["inside"] == rep["overlaps"]["across"] == 0, f"{name}: {rep['overlaps']}"
+    assert 0.8 < rep["coverage"]["ratio"] < 1.25, f"{name}: edge strips cover {rep['coverage']['ratio']:.2f}x the interior"
 
 
 @pytest.mark.parametrize("name", NAMES)
