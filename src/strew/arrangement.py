@@ -390,6 +390,26 @@ class Arrangement:
         return out
 
     @cached_property
+    def radii(self) -> np.ndarray:
+        """(n,) float bounding radii in world units: the largest distance of an element's
+        outline from its position (its shape's :attr:`~strew.shape.Shape.radius`, or the
+        largest of its ``parts``' radii, times ``|scale|``).
+
+        A disc of this radius about ``(x, y)`` holds the element, whatever its rotation;
+        spatial queries use it to find the elements that may touch.
+        """
+        if len(self) == 0:
+            return np.zeros(0)
+        per_kind = np.array([self._shapes[k].radius for k in self._kinds], dtype=float)
+        r = per_kind[self._kind]
+        if self._parts is not None:
+            r = r.copy()
+            for i, parts in enumerate(self._parts):
+                if parts is not None:
+                    r[i] = max((p.radius for p in parts), default=0.0)
+        return r * np.abs(self._scale)
+
+    @cached_property
     def sindex(self) -> shapely.STRtree:
         """STRtree over :attr:`geometry` (indices are element indices)."""
         return shapely.STRtree(self.geometry)

@@ -17,7 +17,7 @@ from ._errors import InputError
 from ._limits import MAX_COORD
 from .shape import Path, _normalise_path, paths_to_polygon
 
-__all__ = ["Region", "parse_size"]
+__all__ = ["Region", "parse_size", "stroke_walls", "cut_along"]
 
 
 def parse_size(text: str) -> tuple[float, float]:
@@ -218,3 +218,58 @@ class Region:
     def __repr__(self) -> str:
         b = tuple(round(v, 3) for v in self.bounds)
         return f"Region(area={self.area:.6g}, bounds={b})"
+
+
+def stroke_walls(strokes: Sequence[np.ndarray], width: float = 0.0) -> shapely.Geometry:
+    """Strokes as one geometry, widened by ``width`` on each side.
+
+    Parameters
+    ----------
+    strokes : sequence of (m, 2) float arrays
+        Polylines; a one-point stroke is a point.
+    width : float
+        Buffer distance (0: the bare lines).
+
+    Returns
+    -------
+    shapely.Geometry
+        Their union (empty with no strokes).
+    """
+    lines = [shapely.LineString(s) if len(s) > 1 else shapely.Point(s[0]) for s in map(np.asarray, strokes) if len(s)]
+    if not lines:
+        return shapely.GeometryCollection()
+    walls = shapely.union_all(lines)
+    return walls.buffer(width) if width > 0 else walls
+
+
+def cut_along(region: Region, strokes: Sequence[np.ndarray], point: Sequence[float], width: float) -> Region:
+    """The piece of ``region`` on ``point``'s side of boundary strokes.
+
+    Boundary strokes stop growth (Ijiri et al. 2008, §3, Fig. 1f). A method that knows
+    only a region is confined by them when the region is cut along the strokes, each
+    widened by ``width`` on both sides, and only the piece that holds ``point`` is kept.
+
+    Parameters
+    ----------
+    region : Region
+    strokes : sequence of (m, 2) float arrays
+        Boundary strokes (polylines; a one-point stroke cuts a disc).
+    point : (2,) float
+        Where the fill or the stroke starts.
+    width : float
+        Half the width of the cut (typically half the largest element radius), > 0.
+
+    Returns
+    -------
+    Region
+        The piece covering ``point``; ``region`` itself with no strokes, or when
+        ``point`` lies in no piece (on a stroke or outside the region).
+    """
+    if not len(strokes):
+        return region
+    pieces = region.geometry.difference(stroke_walls(strokes, width))
+    here = shapely.Point(float(point[0]), float(point[1]))
+    for part in shapely.get_parts(pieces):
+        if part.covers(here):
+            return Region(part)
+    return region

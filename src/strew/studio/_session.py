@@ -35,6 +35,8 @@ from .._errors import Cancelled, InputError
 from ..arrangement import Arrangement, concat
 from ..region import Region
 from ..shape import Shape
+from ..editing import Bounds, overlap_drops, overlapping, wrap_stroke
+from ..region import cut_along
 from ._paths import list_project_files, resolve_in_project
 from ._protocol import MESSAGE_TYPES, get_int, get_names, get_number, get_points, get_str
 
@@ -290,58 +292,19 @@ class Session:
 
     # ------------------------------------------------------------------ bounds
     def _out_of_bounds(self, arr: Arrangement) -> np.ndarray:
-        """(n,) bool: elements not wholly inside the region, or crossing a boundary stroke.
+        """(n,) bool: elements not wholly inside the region, or crossing a boundary stroke
+        (:meth:`strew.editing.Bounds.outside`)."""
+        return self._bounds().outside(arr)
 
-        Filled elements must not overhang the region's border, nor cross a boundary
-        stroke (Ijiri §3, Fig. 1f). Both tests are exact on the outlines (shapely), and run
-        only for elements whose bounding disc reaches the border or a stroke.
-        """
-        n = len(arr)
-        out = np.zeros(n, bool)
-        if n == 0:
-            return out
-        radii = _radii(arr)
-        x, y = arr.x, arr.y
-        inner, band = self._bounds_zones(float(radii.max()))
-        out |= ~self.region.contains(arr.xy)
-        # centres in the region eroded by the widest bounding radius are wholly inside; the
-        # rest (a band along the border) get the exact test
-        near = np.flatnonzero(~out & ~shapely.contains_xy(inner, x, y))
-        if len(near):
-            tol = 1e-9 * max(1.0, *map(abs, self.region.bounds))  # as SynthState.to_arrangement(clip=True)
-            out[near[~self.region.contains_geometry(arr.select(near).geometry, tolerance=tol)]] = True
-        if band is not None:
-            walls = band[1]
-            near = np.flatnonzero(~out & shapely.contains_xy(band[0], x, y))
-            if len(near):
-                out[near[shapely.intersects(arr.select(near).geometry, walls)]] = True
-        return out
-
-    def _bounds_zones(self, reach: float) -> tuple[Any, Any]:
-        """For :meth:`_out_of_bounds`: the region eroded by ``reach`` and, with boundary
-        strokes, (the strokes widened by ``reach``, the strokes), both prepared; cached."""
+    def _bounds(self) -> Bounds:
+        """The region and boundary strokes as a :class:`strew.editing.Bounds` (cached
+        while both stay the same objects)."""
         key = (self.region, len(self.boundary_strokes), self.boundary_strokes[-1] if self.boundary_strokes else None)
-        cache = self.__dict__.setdefault("_zones", {})
-        old = cache.get("key")
-        if old is None or len(old) != len(key) or not all(a is b for a, b in zip(old, key)):  # held, so compared by identity
-            cache.clear()
-            cache["key"] = key
-        # 5% over: buffer() draws round joins and caps as inscribed chords (about 2% short
-        # at its 8 segments a quarter circle); a few widths share one entry
-        reach = float(np.ceil(reach * 1.05 * 64.0) / 64.0)
-        if reach not in cache:
-            inner = self.region.geometry.buffer(-reach)
-            shapely.prepare(inner)
-            band = None
-            lines = [b for b in self.boundary_strokes if len(b) > 1]
-            if lines:
-                walls = shapely.MultiLineString(lines)
-                near = walls.buffer(reach)
-                shapely.prepare(near)
-                shapely.prepare(walls)
-                band = (near, walls)
-            cache[reach] = (inner, band)
-        return cache[reach]
+        old = self.__dict__.get("_bounds_cache")
+        if old is None or len(old[0]) != len(key) or not all(a is b for a, b in zip(old[0], key)):  # held, so compared by identity
+            old = (key, Bounds(self.region, self.boundary_strokes))
+            self._bounds_cache = old
+        return old[1]
 
     def _live_hidden(self, n0: int, *, thinned: bool) -> np.ndarray:
         """(st.n - n0,) bool: synthesis elements from index ``n0`` on that the operation
@@ -473,7 +436,7 @@ class Session:
                 r, rbar = element_parameters(ex, name=name)
                 note = ""
             except InputError as exc:
-                r = np.array([ex.shapes[k].radius for k in ex.kind_names]) * ex.scale if len(ex) else np.zeros(0)
+                r = ex.radii
                 rbar = np.full(len(ex), np.nan)
                 note = str(exc)
             edges, enote = self._edges(name)
@@ -771,39 +734,11 @@ class Session:
     def _wrap_runs(self, seg: np.ndarray, radius: float = 0.0) -> list[np.ndarray]:
         """A stroke segment on the torus of the tile, as runs inside the tile.
 
-        Points are wrapped into the tile (:func:`strew._periodic.canonical`); where the
-        stroke crosses an edge it continues at the opposite edge: the run before the
-        crossing ends on the far side of the edge, the run after it starts there. With
-        ``radius``, the runs' copies one tile away whose discs reach into the tile
-        follow, so a brush or eraser near an edge also works across it.
+        :func:`strew.editing.wrap_stroke` with the repeat view on; ``[seg]`` with it off.
         """
-        from .. import _periodic
-
         if not self.repeat or len(seg) == 0:
             return [seg]
-        tile = self._tile()
-        x, y = _periodic.canonical(seg[:, 0], seg[:, 1], tile)
-        pts = np.c_[x, y]
-        runs: list[np.ndarray] = []
-        start = 0
-        for i in range(1, len(pts)):
-            a, b = pts[i - 1], pts[i]
-            step = np.array([_periodic.wrap_delta(b[0] - a[0], tile[2]), _periodic.wrap_delta(b[1] - a[1], tile[3])])
-            if np.allclose(a + step, b):
-                continue
-            runs.append(np.vstack([pts[start:i], a + step]))  # up to the crossing, beyond the edge
-            pts[i - 1] = b - step  # the next run starts beyond the opposite edge
-            start = i - 1
-        runs.append(pts[start:])
-        if radius > 0:
-            x0, y0, w, h = tile
-            for run in list(runs):
-                lo, hi = run.min(axis=0) - radius, run.max(axis=0) + radius
-                for i, j in _periodic.translations(3, 3):
-                    dx, dy = i * w, j * h
-                    if (i or j) and lo[0] + dx < x0 + w and hi[0] + dx > x0 and lo[1] + dy < y0 + h and hi[1] + dy > y0:
-                        runs.append(run + [dx, dy])
-        return runs
+        return wrap_stroke(seg, self._tile(), radius)
 
     def layers_message(self) -> dict[str, Any]:
         """The layers panel: one layer per kind, in drawing order (first drawn first)."""
@@ -1050,17 +985,9 @@ class Session:
         element radius of the selection) and synthesis is confined to the piece where
         the stroke or the fill starts.
         """
-        if not self.boundary_strokes:
-            return self.region
         st = self.state
         half = 0.5 * float(np.max(st.prep.r)) if st is not None and len(st.prep.r) else 1.0
-        walls = shapely.union_all([shapely.LineString(b) if len(b) > 1 else shapely.Point(b[0]) for b in self.boundary_strokes]).buffer(half)
-        pieces = self.region.geometry.difference(walls)
-        here = shapely.Point(float(point[0]), float(point[1]))
-        for part in shapely.get_parts(pieces):
-            if part.covers(here):
-                return Region(part)
-        return self.region
+        return cut_along(self.region, self.boundary_strokes, point, half)
 
     def _rebuild_flow(self) -> None:
         from ..fields import flow_field
@@ -1338,11 +1265,11 @@ class Session:
             return _state_part(st, idx)
 
         new_idx = np.arange(n0, st.n)
-        rmax = float(np.max(_radii(state_part(new_idx))))
+        rmax = float(np.max(state_part(new_idx).radii))
         cand = new_idx
         if overlap_free and n0:
             old_xy = pos[:n0]
-            r_old = _radii(state_part(np.arange(n0)))
+            r_old = state_part(np.arange(n0)).radii
             hits = cKDTree(pos[new_idx]).query_ball_point(old_xy, r=r_old + rmax, return_length=True) > 0
             if around is not None and len(around):
                 hits |= cKDTree(np.asarray(around, float)).query_ball_point(old_xy, r=reach, return_length=True) > 0
@@ -1351,20 +1278,12 @@ class Session:
         fixed = self.fixed.replace(columns={}, meta={}, extra={}, region=None)
         if len(fixed):
             tree = cKDTree(local.xy)
-            near = tree.query_ball_point(fixed.xy, r=_radii(fixed) + float(np.max(_radii(local))), return_length=True) > 0
+            near = tree.query_ball_point(fixed.xy, r=fixed.radii + float(np.max(local.radii)), return_length=True) > 0
             fixed = fixed.select(near)
         combined = concat([fixed, local]) if len(fixed) else local
         nf = len(fixed)
         pairs, _ = overlaps(combined)
-        dropped = np.zeros(len(cand), bool)
-        for i, j in sorted(map(tuple, pairs.tolist()), key=lambda p: (p[1], p[0])):
-            if j < nf:
-                continue
-            if i < nf:
-                if cand[j - nf] >= n0:
-                    dropped[j - nf] = True
-            elif overlap_free and not dropped[i - nf]:
-                dropped[j - nf] = True
+        dropped = overlap_drops(pairs, nf, cand >= n0, later=overlap_free)
         if dropped.any():
             mask = np.zeros(st.n, bool)
             mask[cand[dropped]] = True
@@ -1404,6 +1323,7 @@ class Session:
                 rng=int(self.rng.integers(2**31)),
             )
             stroke["spray"] = g
+            stroke["spray_reach"] = self._spray_reach(self._selection()[0])
             stroke["spray_scene"] = self._spray_scene()
         self._spray_obstacles(g, pts, radius)
         g.add_points(pts)
@@ -1426,6 +1346,15 @@ class Session:
                     time.sleep(0)  # let the server's event loop send it (growth holds the GIL)
             chunk = chunk_size
 
+    def _spray_reach(self, name: str) -> float:
+        """Bounding radius of the widest element a spray growth from exemplar ``name`` can
+        place: its widest kind at its largest scale, jittered (Ijiri §3). The growth
+        knows it too; it does not say so publicly."""
+        ex = self.palette[name]
+        widest = max((ex.shapes[k].radius for k in ex.kinds), default=0.0)
+        top = float(np.max(ex.scale)) if len(ex) else 1.0
+        return widest * max(1.0, top * (1.0 + self.jitter_scale))
+
     def _spray_scene(self) -> dict[str, Any] | None:
         """The scene when a spray stroke starts, indexed for :meth:`_spray_obstacles`."""
         from scipy.spatial import cKDTree
@@ -1438,8 +1367,7 @@ class Session:
         scene = concat(parts) if len(parts) > 1 else self.fixed
         if len(scene) == 0:
             return None
-        radii = _radii(scene)
-        return {"scene": scene, "tree": cKDTree(scene.xy), "reach": float(radii.max()), "added": np.zeros(len(scene), bool)}
+        return {"scene": scene, "tree": cKDTree(scene.xy), "reach": float(scene.radii.max()), "added": np.zeros(len(scene), bool)}
 
     def _spray_obstacles(self, g: Any, pts: np.ndarray, radius: float) -> None:
         """Hand the growth the scene elements it can reach from the segment (once each)."""
@@ -1448,7 +1376,7 @@ class Session:
             return
         # a seed within the spray radius can hold an element as wide as the widest
         # exemplar element; the margin covers both that element and the scene's widest
-        margin = radius + 2.0 * sc["reach"] + 4.0 * g._g.other_rmax
+        margin = radius + 2.0 * sc["reach"] + 4.0 * self.stroke["spray_reach"]
         hits = sc["tree"].query_ball_point(np.asarray(pts, float), r=margin)
         idx = np.unique(np.concatenate([np.asarray(h, dtype=np.intp) for h in hits])) if len(hits) else np.zeros(0, np.intp)
         idx = idx[~sc["added"][idx]]
@@ -1468,7 +1396,7 @@ class Session:
         if not free:
             scene = self.scene()
             if len(scene):
-                out = out.select(~_overlapping(out, scene))
+                out = out.select(~overlapping(out, scene))
         if len(out):
             self.fixed = concat([self.fixed, out]).replace(region=None) if len(self.fixed) else out
 
@@ -1518,7 +1446,7 @@ class Session:
         if out is None or len(out) == 0:
             return 0
         if len(base):
-            out = out.select(~_overlapping(out, base))
+            out = out.select(~overlapping(out, base))
         keep = {c: out[c] for c in ("radius", "neighborhood_radius") if c in out}
         out = Arrangement(out.shapes, out.kind_names, out.x, out.y, out.rotation, out.scale, columns=keep)
         merged = concat([base, out]) if len(base) else out
@@ -1695,30 +1623,3 @@ def _state_part(st: Any, idx: np.ndarray) -> Arrangement:
     """Elements ``idx`` of a synthesis state as an arrangement (no columns)."""
     prep, src, pos = st.prep, st.src, st.pos
     return Arrangement(prep.shapes, prep.kind[src[idx]].astype(np.int64), pos[idx, 0], pos[idx, 1], prep.rotation[src[idx]], prep.scale[src[idx]])
-
-
-def _radii(arr: Arrangement) -> np.ndarray:
-    """(n,) bounding radii of the elements (shape radius times scale)."""
-    per_kind = np.array([arr.shapes[k].radius for k in arr.kinds]) if arr.kinds else np.zeros(0)
-    return per_kind[arr.kind] * np.abs(arr.scale) if len(arr) else np.zeros(0)
-
-
-def _overlapping(new: Arrangement, existing: Arrangement) -> np.ndarray:
-    """(len(new),) bool: elements of ``new`` whose geometry intersects ``existing``'s."""
-    if len(new) == 0 or len(existing) == 0:
-        return np.zeros(len(new), bool)
-    # only existing elements near the new ones take part (bounding circles)
-    rn = np.array([new.shapes[k].radius for k in new.kinds])[new.kind] * new.scale
-    re = np.array([existing.shapes[k].radius for k in existing.kinds])[existing.kind] * existing.scale
-    from scipy.spatial import cKDTree
-
-    tree = cKDTree(new.xy)
-    near = tree.query_ball_point(existing.xy, r=re + rn.max())
-    cand = np.flatnonzero([len(v) > 0 for v in near])
-    if len(cand) == 0:
-        return np.zeros(len(new), bool)
-    sub = existing.select(cand)
-    hit = np.zeros(len(new), bool)
-    ia, _ = shapely.STRtree(sub.geometry).query(new.geometry, predicate="intersects")
-    hit[np.unique(ia)] = True
-    return hit
