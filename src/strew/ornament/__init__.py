@@ -225,8 +225,6 @@ def grow_ornament(
             should_cancel=should_cancel,
             periodic=prm["periodic"],
         )
-        if tile is not None:
-            orn.region = None  # type: ignore[assignment]  # elements crossing the edge are drawn whole
         arr = orn.render(prm["style"], line_width=prm["line_width"], seeds=prm["draw_seeds"])
         if free is not dom or tile is not None:
             arr = arr.replace(region=dom)

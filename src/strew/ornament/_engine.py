@@ -866,8 +866,9 @@ def grow_elements(
 
     See :func:`strew.ornament.grow_ornament` for the parameters. With ``periodic`` the
     region must be a rectangle, the tile of a torus: growth wraps around its edges, and
-    elements keep the positions they were grown at (``Ornament.tile`` is set; render and
-    :func:`strew._periodic.mark` move them into the tile).
+    elements keep the positions they were grown at (``params["periodic"]`` holds the tile
+    ``[x0, y0, W, H]``; rendering draws them whole, unclipped, and
+    :func:`strew._periodic.mark` moves the drawn elements into the tile).
     """
     import time
 

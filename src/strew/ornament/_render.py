@@ -408,7 +408,9 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     col_parts: list[list[Shape]] = []
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
     panel = cover = None
-    if ornament.region is not None:
+    # a periodic tile's elements are drawn whole: those crossing its edge wrap in at the
+    # opposite one (strew._periodic.images), they are not clipped
+    if ornament.region is not None and not ornament.params.get("periodic"):
         import shapely
 
         panel = ornament.region.geometry
