@@ -52,6 +52,24 @@ def test_jittered_rows_and_three_sizes_are_faithful(name):
     assert rep.faithful, rep.failures
 
 
+@pytest.mark.parametrize("variant", [1, 3])
+def test_untuned_cluster_variants_are_faithful(variant):
+    """Clusters drawn at other seeds (nobody tuned on them): before the fixes, variant 1
+    grew dots without discs (dots 1.7x too dense: dot seeds copied a disc's
+    neighbourhood, and a disc's ring was copied where an output dot had been paired
+    with the disc) and variant 3 stopped growing (the discs' r-bar did not reach the
+    next cluster). 4x the frame's area."""
+    ex = suite.make_exemplar("clusters", rng=variant)
+    x0, y0, x1, y1 = ex.region.bounds
+    region = Region.rectangle(2 * (x1 - x0), 2 * (y1 - y0))
+    out = synthesize(ex, region, rng=2, measure=False)
+    rep = fidelity(ex, out, region, eq5=False, local=False)
+    assert rep.faithful, rep.failures
+    dots, discs = out.select(out.kind == out.kinds.index("dot")), out.select(out.kind == out.kinds.index("disc"))
+    near = cKDTree(discs.xy).query(dots.xy)[0] < 1.3 * 12.5  # within 1.3 ring radii of a disc
+    assert near.mean() > 0.9
+
+
 def test_optimisation_keeps_the_exemplars_jitter():
     """§5.2-5.3 extension (``noise_floor``): the least-squares blend of many
     predictions put every tile of noisy rows on its ideal lattice point. With the soft

@@ -37,7 +37,12 @@ while the output owes that class its exemplar share (within 2 standard errors);
 a small element is copied only with the larger element it leans on (its nearest larger
 Delaunay neighbour in the exemplar), so a neighbourhood's rim does not scatter orphans;
 the closest approach of two kinds is learned over the whole exemplar, not only within
-neighbourhoods. The bounding radius of §4.1 is the collision bound wherever the
+neighbourhoods; k-coherence sets hold elements of the element's own size class; a
+child whose parent is paired with an output element is placed from that element, and
+not at all when that element is of a smaller class; elements whose parent the frame
+may have cut off are never copied beside a candidate; a larger class whose spacing
+lies beyond the default r-bar's reach sees 1.5 times its spacing (``_palette``).
+``context`` elements are frozen, already-synthesized neighbours (``_context``). The bounding radius of §4.1 is the collision bound wherever the
 exemplar gives it; default radii shrink per kind to the exemplar's spacing, and where
 they shrink below 0.9 of the bounding radius (elongated shapes) the shapes themselves
 are tested while growing and after optimising (``_shapes``); kinds next to another size

@@ -154,9 +154,13 @@ def synthesize(
     region : Region, shapely polygon, ``"WxH"`` or (W, H), optional
         Required unless a brush stroke is given.
     context : Arrangement, optional
-        Fixed elements to synthesize around (issue 15): obstacles that are never
-        overlapped (the region less their footprint; needs ``region``). Not yet used as
-        neighbourhood context.
+        Fixed elements to synthesize around (issues 15, 18, 19; needs ``region``). They
+        are never overlapped (the region less their footprint), and those near the
+        region whose kind names are kinds of the selection are already-synthesized
+        neighbours: each takes the attributes of its best-matching exemplar element
+        (Eq. 1), neighbourhood matching and optimisation see them (frozen, §5.2), and
+        growth starts from them, so a tile grown beside finished ones continues their
+        texture (see ``_context``). They are not part of the result.
     selection : str, list of str or dict of str to float, optional
     fill_point : (2,) float, optional
     brush_points : (m, 2) float, optional
@@ -218,7 +222,7 @@ def synthesize(
         arr = empty_result({kk: v for a in sel.exemplars() for kk, v in a.shapes.items()}, region,
                            "the region is empty" if ctx is None else "the context covers the region")
     else:
-        arr = _synthesize(sel, free, rng=gen, progress=progress, should_cancel=should_cancel, **prm)
+        arr = _synthesize(sel, free, rng=gen, progress=progress, should_cancel=should_cancel, context=ctx, **prm)
         if free is not region:
             arr = arr.replace(region=region)
     record = {**prm, "trace": None}  # an output receiver, not a setting
@@ -247,6 +251,7 @@ def _synthesize(
     rng: np.random.Generator,
     progress: Callable | None,
     should_cancel: Callable | None,
+    context: Arrangement | None = None,
     **params: Any,
 ) -> Arrangement:
     """Synthesis on checked arguments; see :func:`synthesize`."""
@@ -263,6 +268,11 @@ def _synthesize(
     state = new_state(exemplars, region, selection=selection, k=k, c=c, optimize=optimize, kind_cost=kind_cost, rng=rng, **params)
     if trace is not None:
         state.trace = trace
+    with_context = False
+    if context is not None and len(context) and region is not None:
+        from ._context import add_context
+
+        with_context = len(add_context(state, context)) > 0
     if init == "patch":
         if brush_points is not None or fill_point is not None:
             raise InputError("init: 'patch' fills the whole region; it takes no fill_point or brush_points")
@@ -271,9 +281,13 @@ def _synthesize(
         if brush_radius is None:
             raise InputError("brush_radius: needed with brush_points")
         _brush(state, np.asarray(brush_points, float), brush_radius, progress=progress, should_cancel=should_cancel)
+    elif with_context and fill_point is None and len(state.prep.selection.names) == 1 and state.prep.selection.regions is None:
+        from ._context import fill_with_context
+
+        fill_with_context(state, progress=progress, should_cancel=should_cancel)
     else:
         _fill(state, fill_point, progress=progress, should_cancel=should_cancel)
-    meta: dict[str, Any] = {"synth": {"iterations": state.iterations, "elements_with_voids": state.n}}
+    meta: dict[str, Any] = {"synth": {"iterations": state.iterations, "elements_with_voids": int((~state.fixed).sum())}}
     if measure:
         d = average_neighborhood_distance(state, sample=1000) if state.n else None
         meta["synth"]["average_neighborhood_distance"] = d

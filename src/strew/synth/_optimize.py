@@ -237,6 +237,8 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
         hbar = expanded_horizon(state, np.asarray(horizon, np.int64), tree)
         in_h = np.zeros(n, bool)
         in_h[horizon] = True
+    fixed = state.fixed
+    in_h &= ~fixed  # context elements are frozen, and below they do not move at all
     if len(hbar) == 0:
         return 0.0
     best, cost0, con_q, con_o, con_off = match_neighborhoods(state, hbar, tree)
@@ -289,7 +291,7 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     # Guards: keep centres in the region (and brush) and do not make elements intersect.
     # An element whose brush disc was already dropped (spent) stays where it is: a move
     # from outside the remaining discs could otherwise carry it past the stroke's edge.
-    out = ~state.in_domain(new)
+    out = ~state.in_domain(new) | fixed[hbar]
     new[out] = old[out]
     state._pos[moved] = new
     _undo_intersections(state, moved, old)

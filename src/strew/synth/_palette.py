@@ -28,6 +28,7 @@ from ..shape import Shape
 __all__ = ["Palette", "Selection", "element_parameters", "load_palette", "save_palette", "average_spacing"]
 
 RING_FACTOR = 3.0  # r-bar = 3a, a "3-ring" neighbourhood (§6.1)
+LARGE_RING = 1.5  # r-bar of a larger size class: at least this many times its own spacing (see element_parameters)
 
 
 def average_spacing(xy: np.ndarray) -> float:
@@ -73,6 +74,27 @@ def element_parameters(exemplar: Arrangement, *, name: str = "exemplar") -> tupl
         r = np.where(np.isfinite(given), given, r)
     a = average_spacing(xy)
     rbar = np.full(n, RING_FACTOR * a)
+    # Extension of §4.1 (per-element r-bar, as the paper's houses beside cobblestones)
+    # for several sizes (§7): where the neighbourhood an exemplar element is compared
+    # and copied with (r-bar plus the pairing margin 2 r_max, see _prepare) does not hold
+    # the next element of its own larger size class (its class's average spacing plus
+    # its radius), that class sees LARGE_RING times its spacing. With 3a of the whole
+    # exemplar (dominated by small elements) a cluster's disc saw only its own ring:
+    # the neighbouring disc (61.8 away, r-bar 41.8, reach 57.8) was never copied, and
+    # growth crossed the gaps only through dots copied without their disc (clusters
+    # variants 1 and 3: dots 1.7x too dense, or growth dying). Applied to every larger
+    # class it broke three sizes (large stones 30.2 apart, reach 51: nn[small>large]
+    # failing on 4/5 seeds).
+    from ._prepare import size_classes
+
+    cls = size_classes(r)
+    reach = RING_FACTOR * a + 2.0 * float(r.max())
+    for c in range(1, int(cls.max()) + 1 if n else 0):
+        members = cls == c
+        if members.sum() >= 2:
+            a_c = average_spacing(xy[members])
+            if a_c + float(r[members].mean()) > reach:
+                rbar[members] = np.maximum(rbar[members], LARGE_RING * a_c)
     if "neighborhood_radius" in exemplar:
         given = np.asarray(exemplar["neighborhood_radius"], dtype=float)
         rbar = np.where(np.isfinite(given), given, rbar)

@@ -151,6 +151,7 @@ class SynthState:
         self._horizon = np.zeros(cap, bool)
         self._free_base = np.zeros(cap, np.int64)
         self._born = np.zeros(cap, np.int64)  # state.iterations when added
+        self._fixed = np.zeros(cap, bool)  # context elements: neighbours that never move nor leave
         self.grow_start = 0  # first iteration of the running grow() call
         self._flags_n = 0
         self._alive = np.zeros(1024, bool)
@@ -178,6 +179,12 @@ class SynthState:
         return self._horizon[: self.n]
 
     @property
+    def fixed(self) -> np.ndarray:
+        """(n,) bool: context elements (see ``_context``): seen as neighbours, never
+        moved, removed or output."""
+        return self._fixed[: self.n]
+
+    @property
     def r(self) -> np.ndarray:
         return self.prep.r[self.src]
 
@@ -194,7 +201,7 @@ class SynthState:
         if n <= cap:
             return
         new = max(n, 2 * cap)
-        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born"):
+        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born", "_fixed"):
             old = getattr(self, name)
             arr = np.zeros((new, *old.shape[1:]), dtype=old.dtype)
             arr[: self.n] = old[: self.n]
@@ -217,7 +224,7 @@ class SynthState:
         self._flags_n = need
         return base.astype(np.int64)
 
-    def add(self, src: np.ndarray, pos: np.ndarray, *, horizon: bool = True) -> np.ndarray:
+    def add(self, src: np.ndarray, pos: np.ndarray, *, horizon: bool = True, fixed: bool = False) -> np.ndarray:
         """Append elements copied from exemplar elements ``src`` at ``pos``; returns their indices."""
         src = np.asarray(src, np.int64)
         m = len(src)
@@ -229,6 +236,7 @@ class SynthState:
         self._horizon[idx] = horizon
         self._free_base[idx] = self._alloc_flags(src)
         self._born[idx] = self.iterations
+        self._fixed[idx] = fixed
         self.n += m
         return idx
 
@@ -241,11 +249,11 @@ class SynthState:
         self._free_base[idx] = self._alloc_flags(src)
 
     def remove(self, mask: np.ndarray) -> int:
-        """Delete elements where ``mask`` is True; returns how many."""
-        keep = ~np.asarray(mask, bool)
+        """Delete elements where ``mask`` is True (context elements stay); returns how many."""
+        keep = ~(np.asarray(mask, bool) & ~self.fixed)
         k = int(keep.sum())
         removed = self.n - k
-        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born"):
+        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born", "_fixed"):
             arr = getattr(self, name)
             arr[:k] = arr[: self.n][keep]
         self.n = k
@@ -345,6 +353,7 @@ class SynthState:
         prep = self.prep
         src = self.src
         keep = np.ones(self.n, bool) if keep_voids else ~prep.void[src]
+        keep &= ~self.fixed  # context elements are the caller's, not output
         cols: dict[str, Any] = {
             "radius": prep.r[src],
             "neighborhood_radius": prep.rbar[src],
