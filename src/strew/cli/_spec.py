@@ -284,11 +284,32 @@ def _convert(p: Param, raw: Any) -> Any:
     return raw
 
 
+# methods whose --periodic runs through strew.tiles.periodic (no torus of their own)
+TILED_PERIODIC = ("synth",)
+
+
+def _tiled_periodic(method: str) -> Callable[..., Any]:
+    """``fn(input, region, *, context, rng, progress, should_cancel, **params)`` for a repeat tile."""
+
+    def fn(input: Any, region: Any, *, context: Any = None, rng: Any = None, progress: Any = None,
+           should_cancel: Any = None, **params: Any) -> Any:
+        from ..tiles import periodic
+
+        if region is None:
+            raise InputError("--periodic: give the tile with --size WxH")
+        return periodic(method, input, region, rng=rng, **params)
+
+    return fn
+
+
 def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Command:
     """The click command of a method, generated from its spec."""
     hooks = hooks or Hooks()
     cli_params = [p for p in spec.params if p.cli]
     on_surfaces = spec.name in ("pack", "synth", "grow")
+    # --periodic for methods without a torus of their own (synth): strew.tiles
+    # grows the tile as a torus of 2 x 2 tiles, each around its finished neighbours (issue 18)
+    tiled_periodic = spec.name in TILED_PERIODIC and "periodic" not in spec.names
     from . import surface as _surface
 
     def callback(**options: Any) -> None:
@@ -298,7 +319,10 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
         around = options.pop("around")
         region_file, size = options.pop("region"), options.pop("size")
         raw_input = options.pop(spec.input.name)
+        periodic = options.pop("periodic", False) if tiled_periodic else False
         surf = _surface.pop_surface_options(options) if on_surfaces else {}
+        if periodic and surf.get("surface_mesh") is not None:
+            raise InputError("--periodic makes a flat repeat tile: it does not apply with --surface")
         if surf.get("surface_mesh") is not None:  # --surface MESH: strew.surface does the work (issue 20)
             return _surface.run_on_surface(spec, options, raw_input, outs, surf, seed=seed, quiet=quiet, region=(region_file, size), around=around)
         check_outputs(outs)
@@ -323,6 +347,10 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
         if run.region is None and spec.region_required:
             raise InputError("give --region FILE or --size WxH")
         fn = spec.function()
+        if periodic:
+            if run.context is not None:
+                raise InputError("--periodic: --around is not supported with a repeat tile (the tile's own edges are its context)")
+            fn = _tiled_periodic(spec.name)
         label = spec.progress_message or spec.name
         if spec.name == "pack" and run.values.get("method") == "naive":
             label += " (naive)"  # dart throwing compiles no kernel: no compile notice (issue 16)
@@ -362,6 +390,10 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
             *[_param_option(spec, p) for p in cli_params],
             *hooks.options,
             *(_surface.surface_options() if on_surfaces else []),
+            *([click.option("--periodic", is_flag=True, default=False,
+                            help="Make a seamless repeat tile of --size WxH: grown as a torus of 2 x 2 tiles, "
+                                 "each around its neighbours across the edges (strew.tiles.periodic).")]
+              if tiled_periodic else []),
             click.option("--around", type=click.Path(dir_okay=False), default=None,
                          help="Fixed elements (.json or .svg) to fill around: never overlapped (context)."),
             click.option("--seed", type=int, default=0, show_default=True, help="Random seed."),
