@@ -116,3 +116,23 @@ def test_order_target_starts_at_the_boundary():
     rel = HEX[[1, 2, 0, 5]]
     order = order_target(rel)
     assert rel[order].round(6).tolist() == HEX[[5, 0, 1, 2]].round(6).tolist()
+
+
+@given(st.floats(-0.08, 0.08).filter(lambda t: abs(t) > 1e-3), st.integers(0, 5))
+def test_few_neighbours_keep_the_frame_when_a_turn_gains_less_than_it_costs(turn, start):
+    # two target neighbours of a hexagonal ring, both turned by a small angle (noise):
+    # the fitted turn is within max_turn, but with a frame weight of 3 l per radian and
+    # neighbour, keeping the neighbours' frame costs less than the turn saves
+    rings = _rings([HEX])
+    c, s = np.cos(turn), np.sin(turn)
+    t = HEX[[start, (start + 1) % 6]] @ np.array([[c, s], [-s, c]])
+    kw = dict(mode="rotate", frame_theta=0.0, frame_weight=30.0, max_turn=0.2)
+    err, shift, theta = match_references(rings, t, np.zeros(2, np.int64), np.full(2, -7), keep_frame=3, **kw)
+    assert theta[0] == 0.0 and shift[0] == start
+    # without the candidate the noisy fit turns the element
+    _, _, theta0 = match_references(rings, t, np.zeros(2, np.int64), np.full(2, -7), keep_frame=0, **kw)
+    assert abs(theta0[0] - turn) < 1e-9
+    # three neighbours or more take the fitted turn
+    t3 = HEX[[start, (start + 1) % 6, (start + 2) % 6]] @ np.array([[c, s], [-s, c]])
+    _, _, theta3 = match_references(rings, t3, np.zeros(3, np.int64), np.full(3, -7), keep_frame=3, **kw)
+    assert abs(theta3[0] - turn) < 1e-9

@@ -91,6 +91,10 @@ class GrowParams:
     #: flow mode: fit the rotation to the neighbours near the flow direction (see
     #: ``_Grower.choose``); False turns each reference to the flow exactly (§5.3)
     flow_fit: bool = True
+    #: rotation and flow modes: a seed with fewer placed neighbours than this may also
+    #: keep the neighbours' frame (or the flow direction) unturned, when that fits
+    #: better than the turn (see :func:`strew.grow.match_references`); 0: never
+    keep_frame: int = 3
     #: a seed moves to its fitted position only within this many l_short
     fit_reach: float = 0.5
     #: flow mode: the largest turn of an element's frame from the flow direction
@@ -102,6 +106,16 @@ class GrowParams:
     #: between two of them, less its spread (see ``_Grower.pair_close``); None: in
     #: fixed mode only
     own_kind_close: bool | None = None
+    #: kinds of different sizes: the share of the spread of the reference's distances
+    #: below their median that a placement may come nearer than their smallest (see
+    #: ``_Grower.pair_close``)
+    close_spread: float = 0.5
+    #: a seed whose nearest element or seed of a larger kind lies farther than this
+    #: quantile of the reference's distances between the two kinds first tries to become
+    #: one of that kind (see ``_Grower.missing_larger``); None turns it off
+    canopy_quantile: float | None = 1.0
+    #: the reach of that try's fitted position, in mean edge lengths
+    canopy_reach: float = 1.0
 
 
 def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
@@ -159,6 +173,7 @@ class _Grower:
         from scipy.spatial import cKDTree
 
         dist_to: list[dict[int, np.ndarray]] = [{} for _ in range(self.n_kinds)]
+        nearest_to: dict[int, np.ndarray] = {}
         for k2 in range(self.n_kinds):
             sel = np.flatnonzero(self.ex_kind == k2)
             if len(sel) == 0:
@@ -166,6 +181,7 @@ class _Grower:
             d, q = cKDTree(ex.xy[sel]).query(ex.xy, k=2)
             nearest = np.where(sel[q[:, 0]] == np.arange(len(ex)), d[:, 1], d[:, 0])
             dist_to[k2] = {}
+            nearest_to[k2] = nearest
             for k1 in range(self.n_kinds):
                 m = nearest[(self.ex_kind == k1) & np.isfinite(nearest)]
                 dist_to[k2][k1] = m
@@ -201,6 +217,8 @@ class _Grower:
                 if k1 == k2 and not own:
                     continue
                 spread = med - lo
+                if k1 != k2:
+                    spread *= p.close_spread
                 if k1 == k2 and p.own_kind_close is None:
                     spread = max(spread, 0.05 * lo)  # saturated discs have almost none
                 self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - spread)
@@ -219,6 +237,23 @@ class _Grower:
                 # must not decide it)
                 self.leans[k1] = bool(np.percentile(d, 90) <= LEAN_SPREAD * np.median(d))
         self.several_sizes = bool(self.leans.any())
+        # the farthest an element of one kind lies from its nearest element of a larger
+        # kind in the reference (Hanisch border correction: only elements nearer to that
+        # one than to the frame), per pair of kinds; inf where the reference does not say
+        # (see missing_larger)
+        self.reach_larger = np.full((self.n_kinds, self.n_kinds), np.inf)
+        if p.canopy_quantile is not None:
+            to_frame = shapely.distance(ex.region.geometry.boundary, shapely.points(ex.xy)) if ex.region is not None else np.full(len(ex), np.inf)
+            for k2, nearest in nearest_to.items():
+                for k1 in range(self.n_kinds):
+                    if self.size_level[k2] <= self.size_level[k1]:
+                        continue
+                    sel = self.ex_kind == k1
+                    d = nearest[sel]
+                    d = d[np.isfinite(d) & (d <= to_frame[sel])]
+                    if len(d) >= 5:
+                        self.reach_larger[k1, k2] = float(np.quantile(d, p.canopy_quantile))
+        self.canopy = bool(np.isfinite(self.reach_larger).any())
         # per-reference: angular gaps of the ring, mean ring edge length
         n_ref = len(self.ref_ids)
         self.ring_gap_min = []  # (k,) smallest of the two gaps beside each ring slot
@@ -777,6 +812,36 @@ class _Grower:
             ok &= ~shapely.intersects(self.boundary, arr)
         return ok
 
+    def missing_larger(self, s: int) -> list[int]:
+        """Larger kinds with no element or seed where the reference always has one.
+
+        Not in the paper. With kinds of several sizes (stones ringed by pebbles) the
+        larger ones come only from the rings of placed elements (§5.4); where their seeds
+        die (overlaps, the priority wait of §5.1) no ring proposes another, and the small
+        ones fill a gap in the larger kind that the reference never has: three sizes grew
+        small stones up to 30 units from the nearest large one where the reference has at
+        most 23. A seed of kind ``a`` that has no element or seed of a larger kind ``b``
+        within :attr:`reach_larger` ``[a, b]`` (a quantile of the reference's distances
+        from ``a`` to its nearest ``b``) is first tried as a ``b`` (largest kind first).
+        """
+        k = int(self.kind[s])
+        if k < 0:
+            return []  # an extra seed of Fig. 6e fills a gap; it has no kind to miss a larger one
+        row = self.reach_larger[k]
+        want = np.flatnonzero(np.isfinite(row))
+        if len(want) == 0:
+            return []
+        x, y = self.xy[s]
+        r = float(row[want].max())
+        have = set()
+        for o in self.near(x, y, r):
+            b = int(self.kind[o])
+            if o != s and b >= 0 and (self.xy[o][0] - x) ** 2 + (self.xy[o][1] - y) ** 2 <= row[b] ** 2:
+                have.add(b)
+        out = [int(b) for b in want if int(b) not in have]
+        out.sort(key=lambda b: -self.size_level[b])
+        return out
+
     def choose(self, s: int) -> tuple[int, int, float] | None:
         """§5.2: the reference element minimising Eq. 3 for seed ``s``."""
         # §5.2: w(e_tar) are the seed's immediate neighbours. We take the placed elements
@@ -828,6 +893,7 @@ class _Grower:
             frame_theta=frame_theta,
             frame_weight=frame_w,
             max_turn=self.p.flow_max_turn if self.mode_code == 2 else self.p.max_turn,
+            keep_frame=self.p.keep_frame if self.mode_code == 1 else 0,
         )
         best = float(err.min()) if len(err) else math.inf
         if not math.isfinite(best):
@@ -839,7 +905,26 @@ class _Grower:
         self._last_nb = nb_arr
         return a, int(shift[a]), float(theta[a])
 
-    def place(self, s: int, a: int, k: int, th: float) -> bool:
+    def try_larger(self, s: int) -> bool:
+        """Place seed ``s`` as a larger kind it misses (:meth:`missing_larger`); True when placed."""
+        kinds = self.missing_larger(s)
+        if not kinds:
+            return False
+        own = int(self.kind[s])
+        ox, oy = self.xy[s]
+        for b in kinds:
+            if not self.kind_has_candidates[b]:
+                continue
+            self.kind[s] = b
+            pick = self.choose(s)
+            if pick is not None and self.place(s, *pick, reach=self.p.canopy_reach * self.l):
+                return True
+            self.kind[s] = own
+            if self.xy[s] != (ox, oy):
+                self._move(s, ox, oy)
+        return False
+
+    def place(self, s: int, a: int, k: int, th: float, reach: float | None = None) -> bool:
         """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
         p = self.p
         if self.rep is not None and self.order:
@@ -852,8 +937,8 @@ class _Grower:
         c, sn = math.cos(th), math.sin(th)
         rel = self.rings["rel"][a, :n_ring]
         nb = self._last_nb
-        if len(nb) >= 2:
-            self._fit_position(s, nb, rel, k, c, sn)
+        if len(nb) >= 2 or (reach is not None and len(nb) >= 1):
+            self._fit_position(s, nb, rel, k, c, sn, reach)
         x, y = self.xy[s]
         rot = float(self.ex_rot[r]) + th
         scale = float(self.ex_scale[r])
@@ -954,7 +1039,7 @@ class _Grower:
         self.ring_n[s] = n_ring
         return True
 
-    def _fit_position(self, s: int, nb: np.ndarray, rel: np.ndarray, k: int, c: float, sn: float) -> None:
+    def _fit_position(self, s: int, nb: np.ndarray, rel: np.ndarray, k: int, c: float, sn: float, reach: float | None = None) -> None:
         """Move seed ``s`` to where the chosen ring fits its placed neighbours best.
 
         Not in the paper, which keeps the seed where the element that made it put it:
@@ -981,7 +1066,9 @@ class _Grower:
         d2 = (fx - ox) ** 2 + (fy - oy) ** 2
         if d2 <= (1e-9 * self.l) ** 2:
             return  # already there (a perfect lattice): nothing to check
-        if d2 > (self.p.fit_reach * self.l_short) ** 2 or not self.in_domain(fx, fy):
+        if reach is None:
+            reach = self.p.fit_reach * self.l_short
+        if d2 > reach**2 or not self.in_domain(fx, fy):
             return
         if self.crosses_boundary((ox, oy), (fx, fy)):
             return
@@ -1230,11 +1317,12 @@ class _Grower:
             if self.outranked(s):
                 self.deferred.add(s)
                 continue
-            pick = self.choose(s)
-            if pick is None or not self.place(s, *pick):
-                self.kill(s)
-                self.release_deferred(s)
-                continue
+            if not (self.canopy and self.try_larger(s)):
+                pick = self.choose(s)
+                if pick is None or not self.place(s, *pick):
+                    self.kill(s)
+                    self.release_deferred(s)
+                    continue
             if self.first:
                 self.fixed[self.s0] = True  # Eq. 6: the initial element holds its position
                 self.first = False
