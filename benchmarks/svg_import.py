@@ -23,7 +23,9 @@ of one path text under transforms, copies with their coordinates baked into the 
 (as Inkscape stores moved copies: one kind found by geometry) and clones of three
 symbols. It prints seconds per MB (CPU time of this process, so that other load on the
 machine counts less) and, with ``--against``, the older importer's seconds per MB on the
-files up to ``--old-max-mb`` (default 1) and the ratio. The path-count limit is raised
+files up to ``--old-max-mb`` (default 1) and the ratio, and the exponent ``e`` of
+cost ~ size^e between consecutive sizes (1 is linear). ``--max-mb 50`` adds 50 MB files
+(the size of issue 17's 687k-path file); ``--only distinct,clones`` picks kinds of file. The path-count limit is raised
 for the run (10 MB holds over 50,000 objects).
 
     python benchmarks/svg_import.py --scaling --against b8e4e2d
@@ -110,10 +112,12 @@ def _same(arr: Any, old: Any) -> bool:
 
 
 def scaling(opts: Any, old: Any) -> None:
+    import math
+
     import strew
     from strew.io.svg import read_svg
 
-    sizes = [mb for mb in (0.1, 1.0, 10.0) if mb <= opts.max_mb]
+    sizes = [mb for mb in (0.1, 1.0, 10.0, 50.0) if mb <= opts.max_mb]
     bench = Bench("svg_import_scaling", "SVG import: seconds per MB from 0.1 to 10 MB (CPU time)",
                   baseline=f"importer in {opts.against}" if old is not None else "none", json_path=opts.json)
     read_svg(drawing(20)), read_svg(copies(20)), read_svg(baked(20))  # warm-up
@@ -122,6 +126,9 @@ def scaling(opts: Any, old: Any) -> None:
     makers = {"distinct polygons": (drawing, 109), "copies of one path text": (copies, 103), "baked copies (Inkscape)": (baked, 124), "clones of 3 symbols": (clones, 75)}
     with strew.limits(paths=1e7, file_size=1e9):
         for label, (make, per_object) in makers.items():
+            if opts.only and not any(w in label for w in opts.only.split(",")):
+                continue
+            seen: list[tuple[float, float]] = []
             for mb in sizes:
                 n = max(10, int(mb * 1e6 / per_object))
                 text = make(n)
@@ -130,6 +137,9 @@ def scaling(opts: Any, old: Any) -> None:
                 if old is not None and mb <= opts.old_max_mb:
                     t_old, arr_old = _cpu(lambda: old.read_svg(text))
                     row.update(old_s_per_MB=t_old / (len(text) / 1e6), ratio=t_new / t_old, same=_same(arr, arr_old))
+                if seen:  # cost ~ size^exponent between this file and the previous one (1: linear)
+                    row["exponent"] = math.log(t_new / seen[-1][1]) / math.log(len(text) / seen[-1][0])
+                seen.append((len(text), t_new))
                 bench.row(f"{label}, {len(text) / 1e6:.2g} MB", **row)
     bench.finish()
 
@@ -199,6 +209,7 @@ def main() -> None:
         p.add_argument("--scaling", action="store_true", help="seconds per MB on 0.1, 1 and 10 MB files")
         p.add_argument("--max-mb", type=float, default=10.0, help="largest file for --scaling")
         p.add_argument("--old-max-mb", type=float, default=1.0, help="largest file the older importer reads in --scaling")
+        p.add_argument("--only", default=None, help="--scaling: only the kinds of file whose label holds one of these comma-separated words")
 
     opts = parse_args(__doc__, extra=extra)
     if opts.scaling:
