@@ -33,8 +33,9 @@ Browser -> server (coordinates are world units, ``points`` is ``[[x, y], ...]``)
 ``save``               ``palette.json`` and ``scene.json`` in PROJECT_DIR
 ``load_project``       reads them back
 ``export``             ``path`` inside PROJECT_DIR: .svg, .png or .json
-``settings``           ``grow_mode``: fixed, rotate or flow (the spray, Ijiri §5.3);
-                       ``jitter_scale``, ``jitter_rotation``; ``brush_density`` (0.05-1);
+``settings``           the ``controls``' keys (``grow_mode``, ``jitter_scale``,
+                       ``jitter_rotation`` in degrees, ``brush_density``), checked by
+                       their methods' Params;
                        ``repeat`` (true/false): the repeat view, where brush, spray and
                        eraser strokes wrap across the (rectangular) region's edges
 ``clip``               remove the scene elements outside the region (or across a
@@ -46,7 +47,9 @@ Browser -> server (coordinates are world units, ``points`` is ``[[x, y], ...]``)
 Server -> browser: ``shapes`` (the kind library: paths and styles), ``palette`` (each
 exemplar's elements, radii and edges), ``scene`` (``op`` ``replace`` with columns
 ``k, x, y, r, s``, or ``patch`` with ``update`` and ``append``), ``strokes`` (flow and
-boundary strokes, flow arrows, region outline), ``layers``, ``status`` (the element
+boundary strokes, flow arrows, region outline), ``controls`` (each parameter control:
+the method's Param declaration, its ``settings`` key and element id; see
+``studio/_controls.py``), ``layers``, ``status`` (the element
 count, which is :func:`strew.metrics.visible_count` of the scene as saved; ``rate``:
 elements/s of the last operation; ``fidelity``: the verdict of
 :func:`strew.metrics.fidelity` on the last fill or stroke, or null; ``outside``:

@@ -37,6 +37,7 @@ from ..region import Region
 from ..shape import Shape
 from ..editing import Bounds, overlap_drops, overlapping, wrap_stroke
 from ..region import cut_along
+from ._controls import controls_message, read_setting
 from ._paths import list_project_files, resolve_in_project
 from ._protocol import MESSAGE_TYPES, get_int, get_names, get_number, get_points, get_str
 
@@ -499,7 +500,7 @@ class Session:
 
     def full_state(self) -> list[dict[str, Any]]:
         """Everything the browser needs to draw the studio from scratch."""
-        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message(), self.layers_message()]
+        msgs = [self.shapes_message(), self.palette_message(), self.strokes_message(), controls_message(), self.layers_message()]
         scene = self.scene_message(full=True)
         if scene is not None:
             msgs.append(scene)
@@ -696,14 +697,9 @@ class Session:
     def _on_settings(self, msg: dict, emit: Emit) -> list[dict]:
         """Spray settings: ``grow_mode`` (Ijiri §5.3) and per-element variation (§3):
         ``jitter_scale`` (relative, below 1) and ``jitter_rotation`` (degrees)."""
-        if "grow_mode" in msg:
-            self.grow_mode = get_str(msg, "grow_mode", choices=GROW_MODES)
-        if "jitter_scale" in msg:
-            self.jitter_scale = get_number(msg, "jitter_scale", lo=0.0, hi=0.95)
-        if "jitter_rotation" in msg:
-            self.jitter_rotation = np.deg2rad(get_number(msg, "jitter_rotation", lo=0.0, hi=180.0))
-        if "brush_density" in msg:
-            self.brush_density = get_number(msg, "brush_density", lo=0.05, hi=1.0)
+        for key in ("grow_mode", "jitter_scale", "jitter_rotation", "brush_density"):
+            if key in msg:  # checked by the method's Param (studio/_controls.py); angles in degrees
+                setattr(self, key, read_setting(msg, key))
         if "repeat" in msg:
             if not isinstance(msg["repeat"], bool):
                 raise InputError(f"repeat: expected true or false, got {str(msg['repeat'])[:40]!r}")

@@ -65,6 +65,7 @@ function onMessage(m) {
     case "scene": onScene(m); break;
     case "palette": studio.palette = m; renderPaletteList(); paletteEditor.update(m); break;
     case "strokes": studio.strokes = m; invalidate(); break;
+    case "controls": buildControls(m.controls); break;
     case "files": studio.files = m; renderFiles(); break;
     case "layers": studio.layers = m.layers; renderLayers(); invalidate(); break;
     case "status": onStatus(m); break;
@@ -320,9 +321,44 @@ $("density").addEventListener("change", () => send({ type: "settings", brush_den
 $("clip").addEventListener("click", () => send({ type: "clip" }));
 $("help-button").addEventListener("click", () => toggleHelp());
 $("help").addEventListener("click", (ev) => { if (ev.target === $("help")) toggleHelp(false); });
-$("grow-mode").addEventListener("change", () => send({ type: "settings", grow_mode: $("grow-mode").value }));
-$("jitter-scale").addEventListener("change", () => send({ type: "settings", jitter_scale: +$("jitter-scale").value || 0 }));
-$("jitter-rotation").addEventListener("change", () => send({ type: "settings", jitter_rotation: +$("jitter-rotation").value || 0 }));
+// Parameter controls come from the methods' specs (the "controls" message): one input per
+// control, drawn once; an input already in the page (the density slider) only takes the
+// declared bounds and help.
+function buildControls(list) {
+  const box = $("method-controls");
+  for (const c of list) {
+    const title = [c.help, c.unit, c.section].filter(Boolean).join("; ");
+    let el = $(c.id);
+    if (el) {
+      if (c.low !== null) el.min = c.low;
+      if (c.high !== null) el.max = c.high;
+      el.title = title;
+      continue;
+    }
+    if (c.choices) {
+      el = document.createElement("select");
+      for (const v of c.choices) { const o = document.createElement("option"); o.textContent = v; el.appendChild(o); }
+      el.value = c.default;
+    } else {
+      el = document.createElement("input");
+      el.type = "number";
+      el.size = 3;
+      if (c.low !== null) el.min = c.low;
+      if (c.high !== null) el.max = c.high;
+      el.step = c.unit === "degrees" ? 5 : (c.type === "int" ? 1 : 0.05);
+      el.value = c.default ?? "";
+    }
+    el.id = c.id;
+    el.title = title;
+    el.dataset.key = c.key;
+    el.addEventListener("change", () => send({ type: "settings", [c.key]: c.choices ? el.value : (+el.value || 0) }));
+    const label = document.createElement("label");
+    label.textContent = `${c.method} ${c.name.replace(/_/g, " ")}${c.unit === "degrees" ? " °" : ""} `;
+    label.title = title;
+    label.appendChild(el);
+    box.appendChild(label);
+  }
+}
 $("undo").addEventListener("click", () => send({ type: "undo" }));
 $("redo").addEventListener("click", () => send({ type: "redo" }));
 $("stop").addEventListener("click", () => send({ type: "stop" }));
