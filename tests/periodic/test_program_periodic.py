@@ -1,6 +1,7 @@
 """program on a periodic tile (issue 18 point 2): stripes, grid and uniform partitions
 whose faces continue across the tile's edges."""
 
+import math
 import subprocess
 import sys
 import textwrap
@@ -8,6 +9,8 @@ import textwrap
 import numpy as np
 import pytest
 import shapely
+from hypothesis import given
+from hypothesis import strategies as st
 
 from strew import _periodic as P
 from strew import metrics
@@ -143,16 +146,27 @@ def test_uniform_sites_keep_their_distance_across_the_wrap():
     assert len(pts) > 0.8 * 300 * 200 / 20**2  # near maximal
 
 
-def test_snapped_stripes_repeat_with_the_tile():
-    from strew.program._operators import _snap_stripes, stripes_properties
+@given(st.floats(-3.2, 3.2), st.lists(st.floats(1, 40), min_size=1, max_size=3), st.floats(100, 900), st.floats(100, 900))
+def test_snapped_stripes_repeat_with_the_tile(angle, widths, w, h):
+    from strew.program._operators import _snap_stripes, set_face_labels, stripes_properties
 
-    p = _snap_stripes(stripes_properties(0.4, 30, 20), (0, 0, 500, 300))
-    n = np.array([-np.sin(p.angle), np.cos(p.angle)])
-    period = sum(p.widths)
-    for t in ([500, 0], [0, 300]):
-        k = float(np.dot(t, n)) / period
-        assert abs(k - round(k)) < 1e-9
-    assert abs(p.angle - 0.4) < 0.1 and abs(period - 50) < 10
+    p = set_face_labels(stripes_properties(angle, *widths), "a", "b", "c")
+    m = len(widths)
+    asked = sum(widths) * (m * 3 // np.gcd(m, 3)) / m  # the set's whole cycle of lines and labels
+    if round(w * -math.sin(angle) / asked) == 0 and round(h * math.cos(angle) / asked) == 0:
+        with pytest.raises(InputError, match="smaller than two stripes"):
+            _snap_stripes(p, (0, 0, w, h))
+        return
+    q = _snap_stripes(p, (0, 0, w, h))
+    n = np.array([-np.sin(q.angle), np.cos(q.angle)])
+    n0 = np.array([-np.sin(angle), np.cos(angle)])
+    # the whole cycle (widths and labels: lcm(len(widths), 3) lines) repeats with both periods
+    repeat = sum(q.widths) * (m * 3 // np.gcd(m, 3)) / m
+    for t in ([w, 0.0], [0.0, h]):
+        k = float(np.dot(t, n)) / repeat
+        assert abs(k - round(k)) < 1e-7 * max(1.0, abs(k))
+    np.testing.assert_allclose(np.array(q.widths) / sum(q.widths), np.array(widths) / sum(widths), rtol=1e-9)
+    assert n @ n0 > 0.5  # near the asked direction, never flipped
 
 
 def test_periodic_is_deterministic(script):
