@@ -332,3 +332,25 @@ def test_sparse_apples_keep_their_distance_in_a_variant_nobody_tuned_on():
     d_out = cKDTree(a).query(a, 2)[0][:, 1].min()
     d_ex = cKDTree(e).query(e, 2)[0][:, 1].min()
     assert d_out >= 0.8 * d_ex  # (relaxation moves elements a little after placement)
+
+
+@pytest.mark.slow
+def test_small_stones_stay_as_near_a_large_one_as_the_reference_has_them():
+    # three sizes 1:2:4: where the seeds of the large kind die, small stones filled
+    # gaps in it that the reference never has (nn[small>large] failed 0/5 at 3.5x);
+    # a seed that misses a larger kind first tries to become one (§5.1 departure)
+    ex = make_exemplar("three_sizes")
+    region = _region(ex)
+    out = grow(ex, region=region, rng=2)
+    assert len(out) >= 4 * len(ex)
+
+    def far(arr, a, b):  # nearest b from each a, where the region's edge hides none (Hanisch)
+        xy, k = arr.xy, arr.kind
+        d = cKDTree(xy[k == b]).query(xy[k == a])[0]
+        return d[arr.region.distance_to_boundary(xy[k == a]) > d]
+
+    small, large = ex.kinds.index("small"), ex.kinds.index("large")
+    # the 90th percentile: 23.1 in the reference, 31.0 before, 26.3 now
+    assert np.quantile(far(out, small, large), 0.9) <= 1.2 * np.quantile(far(ex, small, large), 0.9)
+    rep = fidelity(ex, out, eq5=False, local=False)
+    assert rep.metrics["nn[small>large]"].passed, rep.metrics["nn[small>large]"]
