@@ -536,12 +536,12 @@ class _Doc:
                 paths.append(Path(_apply(m, pts), closed))
         return _Flat(paths, labels, curves)
 
-    def flatten_all(self, jobs: list[tuple[list[_Part], float]]) -> list[_Flat]:
+    def flatten_all(self, jobs: list[tuple[list[_Part], float]], checked: bool = False) -> list[_Flat]:
         """``[self.flatten(parts, _IDENTITY, tol) for parts, tol in jobs]``, the curves of
         every part sampled in one :func:`._svg_flatten.flatten_many` call (issue 17.3).
 
         The same paths, point for point; the first part whose coordinates are too large
-        raises, as in the loop.
+        raises, as in the loop (``checked``: the caller has made sure none is).
         """
         tables: list[Segments] = []
         tols: list[float] = []
@@ -558,7 +558,7 @@ class _Doc:
                 if smax == 0:
                     continue
                 segs = self.segments(part.el)
-                if too_large(segs, MAX_COORD):
+                if not checked and too_large(segs, MAX_COORD):
                     raise InputError(f"{self.name}: {self.where(part.el)}: coordinate magnitude over {MAX_COORD:.0e}")
                 tables.append(segs)
                 tols.append(tol / smax)
@@ -673,7 +673,8 @@ class _Doc:
             # without curves the flattening does not depend on the tolerance: reuse it
             todo.append((i, coarse.paths, tol))
         curved = [j for j, (i, _, _) in enumerate(todo) if batch[i][1].curves]
-        for j, fine in zip(curved, self.flatten_all([(batch[todo[j][0]][0], todo[j][2]) for j in curved])):
+        # these parts were flattened once already, so their coordinates were checked
+        for j, fine in zip(curved, self.flatten_all([(batch[todo[j][0]][0], todo[j][2]) for j in curved], checked=True)):
             todo[j] = (todo[j][0], fine.paths, todo[j][2])
         out: list[_Signature | None] = [None] * len(batch)
         for (i, _, tol), sig in zip(todo, _signatures([paths for _, paths, _ in todo])):
@@ -1540,9 +1541,8 @@ class _Reader:
                 doc.poll()
             try:
                 segs = doc.segments(el)
-                if too_large(segs, MAX_COORD):
-                    continue
-                own = _compose(m, doc.transform(el))
+                t = doc.transform(el)
+                own = m if t is _IDENTITY else _compose(m, t)
             except Cancelled:
                 raise
             except Exception:  # read (and failed) in its turn
@@ -1550,6 +1550,18 @@ class _Reader:
             todo.append((el, what == "void-object", key, segs, own))
         if not todo:
             return
+        # coordinates too large: read (and refused) in their turn; the largest magnitude
+        # of each element at once, too_large itself only where it is over the limit
+        counts = np.array([len(t[3].code) for t in todo])
+        if counts.any():
+            has = counts > 0
+            top = np.zeros(len(todo))
+            mags = np.abs(np.concatenate([t[3].pts for t in todo])).reshape(-1, 8).max(axis=1)
+            top[has] = np.maximum.reduceat(mags, (np.cumsum(counts) - counts)[has])
+            over = np.flatnonzero(~(top <= MAX_COORD)).tolist()
+            if over:
+                drop = {i for i in over if too_large(todo[i][3], MAX_COORD)}
+                todo = [t for i, t in enumerate(todo) if i not in drop]
         seen_outline: set[tuple[Any, ...]] = set()
         rows: list[list[float]] = []
         valid: list[bool] = []
@@ -1569,7 +1581,7 @@ class _Reader:
             if not items:
                 continue
             doc.poll()
-            flats = doc.flatten_all([(parts, doc.tolerance) for _, parts in items])
+            flats = doc.flatten_all([(parts, doc.tolerance) for _, parts in items], checked=True)  # too_large above
             have = [f for f in flats if f.paths]
             if have:  # bounds for new_kind, all at once (min and max are exact)
                 pts = np.concatenate([p.points for f in have for p in f.paths])
@@ -1859,14 +1871,18 @@ def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> l
     in one batch of numpy (issue 17.3): the same hashes and points, elementwise the same
     arithmetic. Objects with a point that is not finite are left to the method."""
     out: list[tuple[tuple[Any, ...], np.ndarray] | None] = [None] * len(items)
-    sel: list[int] = []
-    for i, (_, segs, own) in enumerate(items):
-        n = len(segs.code)
-        if n == 0 or n > 512 or ARC in segs.code:
-            continue
-        if own[0, 0] * own[1, 1] - own[0, 1] * own[1, 0] <= 0:
-            continue  # a mirror image is another kind: leave it to the matcher
-        sel.append(i)
+    if not items:
+        return out
+    counts = np.array([len(segs.code) for _, segs, _ in items])
+    maps = np.array([own for _, _, own in items]).reshape(len(items), 2, 3)
+    det = maps[:, 0, 0] * maps[:, 1, 1] - maps[:, 0, 1] * maps[:, 1, 0]
+    arcs = np.zeros(len(items), dtype=bool)
+    if counts.any():
+        codes = np.concatenate([segs.code for _, segs, _ in items])
+        has = counts > 0
+        arcs[has] = np.logical_or.reduceat(codes == ARC, (np.cumsum(counts) - counts)[has])
+    # no arcs, at most 512 segments; a mirror image (det <= 0) is another kind: left to the matcher
+    sel = np.flatnonzero((counts > 0) & (counts <= 512) & ~arcs & (det > 0)).tolist()
     if not sel:
         return out
     code = np.concatenate([items[i][1].code for i in sel])
