@@ -425,7 +425,7 @@ def _edt_aniso(free, sx, sy):  # pragma: no cover - numba
     return out
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _seg_dist2(px, py, ax, ay, ex, ey, il2, best):  # pragma: no cover - numba
     """Smallest squared distance from (px, py) to segments ``a + t e`` (``il2 = 1 / |e|**2``,
     0 for a point), starting from ``best``; branch-free, so the loop vectorises."""

@@ -97,7 +97,7 @@ def ring_layout(geoms: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 TOL = 1e-12
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _cell_span(gx0, gy0, gc, cols, rows, xmin, ymin, xmax, ymax):  # pragma: no cover - numba
     """Grid cells ``(c0, c1, q0, q1)`` (inclusive, clamped) that a box touches."""
     c0 = max(int((xmin - gx0) / gc), 0)
@@ -107,7 +107,7 @@ def _cell_span(gx0, gy0, gc, cols, rows, xmin, ymin, xmax, ymax):  # pragma: no 
     return c0, c1, q0, q1
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _orient(ax, ay, bx, by, cx, cy):  # pragma: no cover - numba
     """Orientation of c about ab: +1, -1, or 0 when too close to call (within TOL)."""
     u = (bx - ax) * (cy - ay)
@@ -118,7 +118,7 @@ def _orient(ax, ay, bx, by, cx, cy):  # pragma: no cover - numba
     return 1 if det > 0 else -1
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _seg_hit(ax, ay, bx, by, cx, cy, dx, dy):  # pragma: no cover - numba
     """Closed segments ab and cd meet, or come too close to call (touching counts;
     collinear overlap counts)."""
@@ -137,7 +137,7 @@ def _seg_hit(ax, ay, bx, by, cx, cy, dx, dy):  # pragma: no cover - numba
     return d3 * d4 <= 0
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _inside(px, py, v, rings, r0, r1):  # pragma: no cover - numba
     """Even-odd point in the rings ``r0:r1`` of a flat ring layout."""
     inside = False
@@ -153,7 +153,7 @@ def _inside(px, py, v, rings, r0, r1):  # pragma: no cover - numba
     return inside
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _where(px, py, v, rings, r0, r1):  # pragma: no cover - numba
     """Even-odd point in the rings ``r0:r1``: 1 inside, 0 outside, -1 when a crossing
     lies within TOL of the point (too close to call)."""
@@ -214,7 +214,7 @@ def _polys_hit(av, arings, ar0, ar1, abb, bv, brings, br0, br1, bbb, buf):  # pr
     return False
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _pose(kv, kr, r0, r1, x, y, c, sn, out, bb):  # pragma: no cover - numba
     """Transform rings ``r0:r1`` of a kind (T + s R p, Eq. 1, with ``c = s cos t`` and
     ``sn = s sin t``) into ``out``; fill bbox."""
@@ -272,7 +272,7 @@ def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp
     return True
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, qid, buf, blocker):  # pragma: no cover - numba
     """True when the posed body meets a placed exclusive region (grid neighbours only).
 
@@ -304,7 +304,7 @@ def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp
     return False
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
     """Append the posed body (already in ``cv``) to the placed store and the grid."""
     n, nv, nr, ne = st[_S_NP], st[_S_NV], st[_S_NR], st[_S_NE]
@@ -340,7 +340,7 @@ def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot
                   rv, rr, rsegs, rhead, rnext, rsid, rstamp, cv, ch, cbb, hbb,
                   pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st, per):  # pragma: no cover - numba
     """Step 1 (§4.1): place an element at each Poisson-disk point, in order, when it lies
-    inside the domain (exact test; on a repeat tile's torus, ``per`` not empty, every
+    inside the domain (exact test; on a repeat tile's torus, ``per`` not None, every
     point does); the points' circles already keep elements apart, so no collision test
     runs. ``u_rot``, ``u_sc``: uniform numbers mapped into each kind's
     ranges; ``kinds``: drawn by weight, or empty for cyclic kinds (advanced on each
@@ -357,7 +357,7 @@ def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot
         y = xy[i, 1]
         _pose(kv, kr, kk[k], kk[k + 1], x, y, c, sn, cv, cbb)
         st[_S_QID] += 1
-        if per.size:
+        if per is not None:
             inside = True
         elif same_hull[k]:
             inside = _in_region(cv, kr, kk[k], kk[k + 1], cbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, st[_S_QID])
@@ -373,7 +373,7 @@ def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot
     return placed
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _amax(a):  # pragma: no cover - numba
     """Largest value of a non-empty 1-d array, NaN if it holds one: ``a.max()`` written
     as a loop (numba compiles ``ndarray.max`` through ``np.nditer`` and ``take``, several
@@ -390,7 +390,7 @@ def _amax(a):  # pragma: no cover - numba
     return m
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _alpha(r, power):  # pragma: no cover - numba
     if power == 16.0:
         r = r * r
@@ -400,7 +400,7 @@ def _alpha(r, power):  # pragma: no cover - numba
     return r**power
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _rand(state):  # pragma: no cover - numba
     """Uniform double in [0, 1) from xoshiro256+ (``state``: (4,) uint64, not all zero),
     compiled: the loops draw several numbers per pose, and a call into numpy's generator
@@ -444,7 +444,7 @@ def _block_max(d, w, bme, bmd, br0, br1, bc0, bc1):  # pragma: no cover - numba
             bmd[br * bcols + bc] = md
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _refresh(d, w, bme, bmd, r0, r1, c0, c1):  # pragma: no cover - numba
     """Refresh the block maxima after a change to pixels ``r0:r1`` x ``c0:c1``."""
     rows, cols = d.shape
@@ -575,7 +575,7 @@ def _kind_order(target, tol, cnt, n, order):  # pragma: no cover - numba
     return m
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _wrap(v, lo, period):  # pragma: no cover - numba
     """``v`` moved by whole periods into ``[lo, lo + period)``."""
     v = v - period * np.floor((v - lo) / period)
@@ -584,7 +584,7 @@ def _wrap(v, lo, period):  # pragma: no cover - numba
     return v
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _collides_torus(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st, buf, blocker, per, ct, tbb):  # pragma: no cover - numba
     """:func:`_collides` on the torus of a repeat tile (issue 18): the posed body at its
     canonical place and its images by the lattice translations whose boxes reach the
@@ -638,7 +638,9 @@ def _rounds(
 
     Repeat tiles (issue 18): ``per`` = (x0, y0, W, H, R) makes the domain the torus of
     the tile ``[x0, x0 + W) x [y0, y0 + H)``, R the largest circumscribed radius of a
-    posed region; empty: the plane. On the torus a pose's reference point is wrapped
+    posed region; None: the plane. The tests are ``per is None`` on the argument itself,
+    so that numba prunes the other branches when it compiles a specialisation: a plain
+    pack compiles none of the torus code (issue 16). On the torus a pose's reference point is wrapped
     into the tile, the domain test is void, a pose is tested for collision with its
     images by the lattice translations that reach placed regions, the field's pixels
     (``fcell`` by ``fcell_y``, a whole number across the tile) wrap, and a placement
@@ -646,14 +648,13 @@ def _rounds(
     pose.
     """
     rows, cols = d.shape
-    periodic = per.size > 0
     pw0 = 0.0
     ph0 = 0.0
     pw = 0.0
     ph = 0.0
     preach = 0.0
     nt = 0  # lattice translations -nt..nt per axis (0: the plane)
-    if periodic:
+    if per is not None:
         pw0, ph0, pw, ph, preach = per[0], per[1], per[2], per[3], per[4]
         nt = 1
     fcm = max(fcell, fcell_y)  # the longer side of a pixel bounds offsets within it
@@ -774,7 +775,7 @@ def _rounds(
                     if anchored:
                         x = px - (c * ax_ - sn * ay_)
                         y = py - (sn * ax_ + c * ay_)
-                    if periodic:
+                    if per is not None:
                         x = _wrap(x, pw0, pw)
                         y = _wrap(y, ph0, ph)
                     st[_S_POSES] += 1
@@ -788,7 +789,7 @@ def _rounds(
                         u = (x + c * kdisk[i, 0] - sn * kdisk[i, 1] - fx0) * icell
                         v = (y + sn * kdisk[i, 0] + c * kdisk[i, 1] - fy0) * icell_y
                         if not (0.0 <= u < cols and 0.0 <= v < rows):
-                            if periodic:
+                            if per is not None:
                                 u = _wrap(u, 0.0, float(cols))
                                 v = _wrap(v, 0.0, float(rows))
                             else:
@@ -812,7 +813,7 @@ def _rounds(
                         hb = hbb
                         hvv = ch
                     st[_S_QID] += 1
-                    if periodic:
+                    if per is not None:
                         if _collides_torus(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp,
                                            st, buf, blocker, per, ct, tbb):
                             continue
@@ -841,7 +842,7 @@ def _rounds(
                         segs[ns, 3] = pv[i + 1, 1]
                         ns += 1
                 grow = dmax + fcm
-                if not periodic:
+                if per is None:
                     _occupy_posed(d, fx0, fy0, fcell, fcell_y, segs[:ns], cbb, grow, x, y, c, sn, kbb[k])
                     _refresh(d, w, bme, bmd, int(np.floor((cbb[1] - grow - fy0) / fcell_y)),
                              int(np.ceil((cbb[3] + grow - fy0) / fcell_y)) + 1,
@@ -889,7 +890,7 @@ def _rounds(
                     rq = int((py - fy0) / fcell_y)
                     rad = int(sup_r / fcell) + 1
                     rad_y = int(sup_r / fcell_y) + 1
-                    if not periodic:
+                    if per is None:
                         for r in range(max(rq - rad_y, 0), min(rq + rad_y + 1, rows)):
                             for c in range(max(cc - rad, 0), min(cc + rad + 1, cols)):
                                 ddx = fx0 + (c + 0.5) * fcell - px
@@ -1121,7 +1122,7 @@ class FitEngine:
         self.st[_S_NEXT] = next_kind
         self.head = np.full(cols * rows, -1, dtype=np.int64)
         reach = max(k.radius * k.scale[1] for k in kinds)
-        self.per = np.zeros(0) if periodic is None else np.array([*(float(v) for v in periodic), reach], dtype=float)
+        self.per = None if periodic is None else np.array([*(float(v) for v in periodic), reach], dtype=float)
         self.ct = np.zeros((len(self.kv), 2))
         self.tbb = np.zeros(4)
         self._alloc(256, 256 * nv, 256 * 4, 256 * 8)

@@ -34,7 +34,7 @@ _S11 = np.uint64(11)
 _INV53 = 1.0 / 9007199254740992.0
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _next(state: np.ndarray) -> float:
     """Uniform float in [0, 1) from a SplitMix64 state held in ``state[0]``."""
     state[0] = state[0] + _GOLDEN
@@ -178,10 +178,25 @@ def _bridson(width: float, height: float, r: float, k: int, seed: np.uint64, max
     return pts[:n].copy()
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _wrap_d(d: float, period: float) -> float:
-    """Shortest signed difference on a circle of length ``period``."""
-    return d - period * np.floor(d / period + 0.5)
+    """Shortest signed difference on a circle of length ``period``, for ``|d| < period``
+    (two points of the tile)."""
+    if d > 0.5 * period:
+        return d - period
+    if d < -0.5 * period:
+        return d + period
+    return d
+
+
+@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _wrap_i(i: int, n: int) -> int:
+    """``i`` modulo ``n`` for ``-n <= i < 2 n``."""
+    if i >= n:
+        return i - n
+    if i < 0:
+        return i + n
+    return i
 
 
 @numba.njit(cache=True)
@@ -267,9 +282,9 @@ def _bridson_torus(width: float, height: float, r: float, k: int, seed: np.uint6
                     continue
                 ok = True
                 for oy in range(ny):
-                    yy = (gy - sy + oy) % gh
+                    yy = _wrap_i(gy - sy + oy, gh)
                     for ox in range(nx):
-                        xx = (gx - sx + ox) % gw
+                        xx = _wrap_i(gx - sx + ox, gw)
                         j = grid[yy * gw + xx]
                         if j >= 0:
                             dx = _wrap_d(pts[j, 0] - cx, width)
@@ -306,9 +321,9 @@ def _bridson_torus(width: float, height: float, r: float, k: int, seed: np.uint6
             ccy = (ci + 0.5) * ch
             far = True
             for oy in range(ny2):
-                yy = (ci - sy2 + oy) % gh
+                yy = _wrap_i(ci - sy2 + oy, gh)
                 for ox in range(nx2):
-                    xx = (cj - sx2 + ox) % gw
+                    xx = _wrap_i(cj - sx2 + ox, gw)
                     j = grid[yy * gw + xx]
                     if j >= 0:
                         dx = _wrap_d(pts[j, 0] - ccx, width)
