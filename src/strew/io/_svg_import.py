@@ -183,7 +183,8 @@ def _sigma_max(m: np.ndarray) -> float:
 
 def _similarity(lin: np.ndarray) -> tuple[float, float]:
     """Rotation (radians) and scale of the similarity closest to a 2x2 matrix (least squares)."""
-    p, q = lin[0, 0] + lin[1, 1], lin[1, 0] - lin[0, 1]
+    (a, b), (c, d) = lin.tolist()
+    p, q = a + d, c - b
     return math.atan2(q, p), math.hypot(p, q) / 2
 
 
@@ -364,7 +365,7 @@ class _Doc:
                 except (ValueError, IndexError, TypeError):
                     raise InputError(f"{self.name}: {self.where(el)}: bad transform {text!r}") from None
                 m = np.array([[sm.a, sm.c, sm.e], [sm.b, sm.d, sm.f]], dtype=float)
-            if not np.all(np.isfinite(m)):
+            if not all(map(math.isfinite, m.ravel().tolist())):
                 raise InputError(f"{self.name}: {self.where(el)}: transform {text!r} is not finite")
         if _local(el.tag) == "svg" and el is not self.root:
             # A nested <svg> is read as a group moved by (x, y); its viewBox is ignored.
@@ -429,8 +430,10 @@ class _Doc:
 
     def use_matrix(self, use: ET.Element, outer: np.ndarray) -> np.ndarray:
         """Map from the referenced element's coordinates to ``outer``'s frame."""
-        m = _compose(outer, self.transform(use))
-        return _compose(m, _translate(self.length(use, "x"), self.length(use, "y")))
+        t = self.transform(use)
+        m = outer if t is _IDENTITY else _compose(outer, t)
+        x, y = self.length(use, "x"), self.length(use, "y")
+        return m if x == 0.0 and y == 0.0 else _compose(m, _translate(x, y))
 
     def symbol_viewport(self, use: ET.Element, symbol: ET.Element) -> np.ndarray:
         """Map from a symbol's viewBox to the viewport a ``<use>`` gives it (identity without one).
@@ -482,7 +485,8 @@ class _Doc:
                 return []
             inner = self.use_matrix(el, m)
             if _local(tgt.tag) == "symbol":
-                inner = _compose(inner, self.symbol_viewport(el, tgt))
+                view = self.symbol_viewport(el, tgt)
+                inner = inner if view is _IDENTITY else _compose(inner, view)
                 return [p for child in tgt for p in self.parts(child, inner, props, (*stack, id(el)))]
             return self.parts(tgt, inner, props, (*stack, id(el)))
         if tag in _GROUP_TAGS:
@@ -1372,7 +1376,8 @@ class _Reader:
         if tgt is None:  # dangling: skipped, and named in a warning
             return
         if _local(tgt.tag) == "symbol":
-            g = _compose(g, doc.symbol_viewport(last, tgt))
+            view = doc.symbol_viewport(last, tgt)
+            g = g if view is _IDENTITY else _compose(g, view)
         else:
             # The clone draws the object with the object's own transform but not its
             # parents'; relative to the object as drawn, it is moved by g T W_ref^-1.
