@@ -157,6 +157,45 @@ def sphere_patch_cv(p) -> float:
     return float(c.std() / c.mean())
 
 
+def synth_rows(surface, meshes_, quick: bool, repeat: int):
+    """Surface synthesis (Davison et al. §5.7) with the suite's exemplars, about 2,000
+    elements per mesh (the default scale): el/s (wall, and CPU of one run) against the
+    planar ``strew.synth`` filling the same number of elements in the same run; the
+    nearest-neighbour distance (chord; geodesic within 0.1 % at these spacings) median
+    and 10th percentile against the exemplar's; kind shares; sphere overlaps."""
+    import numpy as np
+    from scipy.spatial import cKDTree
+
+    import strew
+    from strew.synth._exemplars import EXEMPLARS
+
+    names = ("grid", "stripes") if quick else ("grid", "stripes", "rings")
+    rows = []
+    for ename in names:
+        ex = EXEMPLARS[ename]()
+        de, _ = cKDTree(ex.xy).query(ex.xy, k=2)
+        surface.synthesize(ex, meshes_["icosphere"], scale=0.05, max_elements=50, rng=0)  # warm-up (numba)
+        for mname, mesh in meshes_.items():
+            field = surface.orientation_field(mesh)
+            t, arr = median_time(lambda: surface.synthesize(ex, mesh, field=field, rng=1), repeat=repeat, warmup=0)
+            c = cpu(lambda: surface.synthesize(ex, mesh, field=field, rng=1))
+            sc = arr.meta["params"]["scale"]
+            p = np.column_stack([arr.x, arr.y, arr["z"]])
+            d, _ = cKDTree(p).query(p, k=2)
+            side = float(np.sqrt(len(arr) / len(ex) * np.prod(np.ptp(ex.xy, axis=0))))
+            tb, flat = median_time(lambda: strew.synth.synthesize(ex, (side, side), rng=1), repeat=repeat, warmup=0)
+            shares = {k: round(v / len(arr), 3) for k, v in arr.counts().items()}
+            ex_shares = {k: round(v / len(ex), 3) for k, v in ex.counts().items()}
+            rows.append((f"synth {ename} {mname}", dict(
+                faces=len(mesh.faces), elements=len(arr), synth_s=t, synth_cpu_s=c, el_per_s=len(arr) / t,
+                base_elements=len(flat), base_el_per_s=len(flat) / tb, speed_ratio=(len(arr) / t) / (len(flat) / tb),
+                nn_median_ratio=float(np.median(d[:, 1]) / sc / np.median(de[:, 1])),
+                nn_p10_ratio=float(np.percentile(d[:, 1], 10) / sc / np.percentile(de[:, 1], 10)),
+                shares=shares, exemplar_shares=ex_shares, overlaps=overlap_count(p, np.asarray(arr["radius"])),
+            )))
+    return rows
+
+
 def main() -> None:
     args = parse_args(__doc__.splitlines()[0])
     try:
@@ -225,6 +264,9 @@ def main() -> None:
         if name == "icosphere":
             row["patch_cv"] = sphere_patch_cv(p)
             row["base_patch_cv"] = sphere_patch_cv(np.asarray(bp))
+        bench.row(name, **row)
+        assert row["overlaps"] == 0
+    for name, row in synth_rows(surface, {k: surface.load_mesh(v) for k, v in meshes(args.quick).items()}, args.quick, repeat):
         bench.row(name, **row)
         assert row["overlaps"] == 0
     bench.finish()

@@ -127,6 +127,9 @@ def test_synth_on_surface_writes_scene(mesh_file, grid_file, tmp_path, capsys):
     assert len(arr) > 100 and dist.max() < 1e-6 * float(np.linalg.norm(mesh.extents))
     scene = trimesh.load(outs[0])
     assert len([n for n in scene.graph.nodes_geometry if n != "surface"]) == len(arr)
+    inst = tmp_path / "inst.glb"
+    assert main(args[:-4] + ["--instancing", "--out", str(inst)]) == 0
+    assert b"EXT_mesh_gpu_instancing" in inst.read_bytes()[:4000] and inst.stat().st_size < outs[0].stat().st_size
 
 
 def test_pack_on_surface_follows_the_field_unless_rotated(mesh_file, tmp_path):

@@ -95,3 +95,45 @@ def test_flat_arrangement_lifted_to_3d(tmp_path):
     assert len(scene.graph.nodes_geometry) == len(a)
     with pytest.raises(InputError, match="z: must be finite"):
         surface.lift(a, z=float("inf"))
+
+
+def test_glb_gpu_instancing_holds_every_element_frame():
+    import json
+    import struct
+
+    from scipy.spatial.transform import Rotation
+
+    m = trimesh.creation.icosphere(subdivisions=2)
+    arr = surface.pack({"a": Shape.circle(0.15), "b": Shape.rectangle(0.3, 0.1)}, m, rng=2, rotation="random")
+    g = surface.to_glb(arr, mesh=m, instancing=True)
+    assert g[:4] == b"glTF" and struct.unpack_from("<I", g, 8)[0] == len(g)
+    jl = struct.unpack_from("<I", g, 12)[0]
+    doc = json.loads(g[20:20 + jl])
+    binary = g[20 + jl + 8:]
+    assert "EXT_mesh_gpu_instancing" in doc["extensionsUsed"] and "EXT_mesh_gpu_instancing" not in doc.get("extensionsRequired", [])
+
+    def read(i):
+        acc = doc["accessors"][i]
+        view = doc["bufferViews"][acc["bufferView"]]
+        width = {"VEC3": 3, "VEC4": 4}[acc["type"]]
+        return np.frombuffer(binary, np.float32, acc["count"] * width, view.get("byteOffset", 0)).reshape(-1, width)
+
+    p, n, t, b, s = surface.element_frames(arr)
+    seen = 0
+    for node in doc["nodes"]:
+        ext = node.get("extensions", {}).get("EXT_mesh_gpu_instancing")
+        if ext is None:
+            continue
+        k = arr.kinds.index(node["name"].split(":", 1)[1])
+        rows = np.flatnonzero(np.asarray(arr.kind) == k)
+        at = ext["attributes"]
+        assert np.allclose(read(at["TRANSLATION"]), p[rows], atol=1e-6)
+        rot = Rotation.from_quat(read(at["ROTATION"]).astype(float))
+        assert np.allclose(rot.apply([1.0, 0, 0]), t[rows], atol=1e-5) and np.allclose(rot.apply([0, 0, 1.0]), n[rows], atol=1e-5)
+        assert np.allclose(read(at["SCALE"]), s[rows, None], atol=1e-6)
+        seen += len(rows)
+    assert seen == len(arr)
+    # readers without the extension still open the file (surface + one copy per kind)
+    scene = trimesh.load(trimesh.util.wrap_as_stream(g), file_type="glb")
+    assert len(scene.geometry) == 3
+    assert len(g) < len(surface.to_glb(arr, mesh=m))

@@ -45,11 +45,12 @@ def _check_outs(outs: tuple[str, ...]) -> None:
 @click.option("--style", type=click.Choice(["extrude", "decal"]), default="extrude", show_default=True,
               help="How 2D shapes are drawn in the .glb.")
 @click.option("--element", "elements", multiple=True, metavar="KIND=MESH", help="A 3D mesh for a kind in the .glb (repeatable).")
+@click.option("--instancing", is_flag=True, help="One .glb node per kind with EXT_mesh_gpu_instancing (not one node per element).")
 @click.option("--seed", type=int, default=0, show_default=True, help="Random seed.")
 @out_option()
 @quiet_option
 def command(shapes: tuple[str, ...], mesh: str, radius: float | None, scale: str | None, margin: float,
-            field_file: str | None, rotation: str, style: str, elements: tuple[str, ...], seed: int,
+            field_file: str | None, rotation: str, style: str, elements: tuple[str, ...], instancing: bool, seed: int,
             outs: tuple[str, ...], quiet: bool) -> None:
     """Pack SHAPE... (SVG or JSON files), or discs of --radius, on the --surface mesh.
 
@@ -84,7 +85,7 @@ def command(shapes: tuple[str, ...], mesh: str, radius: float | None, scale: str
     seconds = time.perf_counter() - t0
     if len(arr) == 0:
         raise InputError("surface: no element fits (are the shapes larger than the mesh?); nothing written")
-    write_scene(arr, m, outs, mesh_file=mesh, element_meshes=element_meshes, style=style, quiet=quiet)
+    write_scene(arr, m, outs, mesh_file=mesh, element_meshes=element_meshes, style=style, quiet=quiet, instancing=instancing)
     counts = ", ".join(f"{k} {c}" for k, c in arr.counts().items())
     echo(f"packed {len(arr)} elements ({counts}) on {len(m.faces)} faces, {seconds:.2f} s", quiet=quiet)
 
@@ -109,7 +110,8 @@ def _element_meshes(elements: tuple[str, ...]) -> dict[str, str]:
     return out
 
 
-def write_scene(arr, m, outs: tuple[str, ...], *, mesh_file: str, element_meshes: dict, style: str, quiet: bool) -> None:
+def write_scene(arr, m, outs: tuple[str, ...], *, mesh_file: str, element_meshes: dict, style: str, quiet: bool,
+                instancing: bool = False) -> None:
     """Write a surface arrangement to every ``--out`` (.glb, .json, .png, .svg), all or none."""
     from .. import surface
     from ..io._atomic import atomic_write_many
@@ -119,7 +121,7 @@ def write_scene(arr, m, outs: tuple[str, ...], *, mesh_file: str, element_meshes
     for o in outs:
         suffix = Path(o).suffix.lower()
         if suffix == ".glb":
-            data.append((o, surface.to_glb(arr, mesh=m, element_meshes=element_meshes, style=style)))
+            data.append((o, surface.to_glb(arr, mesh=m, element_meshes=element_meshes, style=style, instancing=instancing)))
         elif suffix == ".png":
             data.append((o, surface.render_preview(arr, m)))
         else:
@@ -147,10 +149,12 @@ def surface_options() -> list:
                      help="With --surface: a 3D mesh for a kind in the .glb (repeatable)."),
         click.option("--style", "surface_style", type=click.Choice(["extrude", "decal"]), default="extrude", show_default=True,
                      help="With --surface: how 2D shapes are drawn in the .glb."),
+        click.option("--instancing", "surface_instancing", is_flag=True,
+                     help="With --surface: one .glb node per kind with EXT_mesh_gpu_instancing."),
     ]
 
 
-_SURFACE_KEYS = ("surface_mesh", "surface_field", "surface_unit", "surface_elements", "surface_style")
+_SURFACE_KEYS = ("surface_mesh", "surface_field", "surface_unit", "surface_elements", "surface_style", "surface_instancing")
 
 
 def pop_surface_options(options: dict) -> dict:
@@ -197,6 +201,6 @@ def run_on_surface(spec, options: dict, raw_input, outs: tuple[str, ...], surf: 
     if len(arr) == 0:
         raise InputError(f"{spec.name}: no element fits on the surface (are the elements larger than the mesh?); nothing written")
     write_scene(arr, m, outs, mesh_file=surf["surface_mesh"], element_meshes=element_meshes,
-                style=surf.get("surface_style") or "extrude", quiet=quiet)
+                style=surf.get("surface_style") or "extrude", quiet=quiet, instancing=bool(surf.get("surface_instancing")))
     counts = ", ".join(f"{k} {c}" for k, c in arr.counts().items())
     echo(f"{spec.name}: {len(arr)} elements ({counts}) on {len(m.faces)} faces, {seconds:.2f} s", quiet=quiet)

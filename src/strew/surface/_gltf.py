@@ -1,7 +1,9 @@
 """GLB/glTF output of surface arrangements (issue 20, point 5).
 
 One glTF mesh per kind and one node per element that references it (instancing by
-shared meshes, which Blender, three.js, Godot and Unity all read), written by trimesh.
+shared meshes, which Blender, three.js, Godot and Unity all read), written by trimesh;
+or, with ``instancing=True``, one node per kind with the ``EXT_mesh_gpu_instancing``
+extension (per-instance translation, rotation and scale).
 A kind is drawn by its own 3D mesh where one is given (``element_meshes``), otherwise
 its 2D shape becomes a thin slab (``"extrude"``) or a flat decal (``"decal"``) in the
 element's tangent plane. The base surface goes in as the node ``surface``.
@@ -124,10 +126,91 @@ def to_scene(
     return scene
 
 
-def to_glb(arr: Arrangement, **kwargs: Any) -> bytes:
-    """GLB bytes of :func:`to_scene` (same arguments)."""
-    data = to_scene(arr, **kwargs).export(file_type="glb")
-    return bytes(data)
+def to_glb(arr: Arrangement, *, instancing: bool = False, **kwargs: Any) -> bytes:
+    """GLB bytes of :func:`to_scene` (same arguments).
+
+    With ``instancing``, each kind is one node carrying the ``EXT_mesh_gpu_instancing``
+    extension (per-instance TRANSLATION, ROTATION, SCALE accessors) instead of one node
+    per element: a smaller file that three.js and Blender (4.x) draw as GPU instances.
+    The extension is declared used but not required, so readers without it still open
+    the file (and draw one copy of each kind).
+    """
+    if not instancing:
+        return bytes(to_scene(arr, **kwargs).export(file_type="glb"))
+    return _instanced_glb(arr, **kwargs)
+
+
+def _instanced_glb(arr: Arrangement, *, mesh: Any = None, element_meshes: Mapping[str, Any] | None = None,
+                   style: str = "extrude") -> bytes:
+    import json
+    import struct
+
+    from scipy.spatial.transform import Rotation
+
+    trimesh = require("trimesh")
+    element_meshes = dict(element_meshes or {})
+    unknown = set(element_meshes) - set(arr.kinds)
+    if unknown:
+        raise InputError(f"element_meshes: unknown kind {sorted(unknown)[0]!r} (known: {', '.join(arr.kinds)})")
+    mats = element_matrices(arr)
+    scene = trimesh.Scene()
+    if mesh is not None:
+        scene.add_geometry(_as_trimesh(mesh, "mesh"), geom_name="surface", node_name="surface")
+    kind_idx = np.asarray(arr.kind)
+    rows_of: dict[str, np.ndarray] = {}
+    for k, name in enumerate(arr.kinds):
+        rows = np.flatnonzero(kind_idx == k)
+        if len(rows) == 0:
+            continue
+        geom = _as_trimesh(element_meshes[name], f"element_meshes.{name}") if name in element_meshes else shape_mesh(arr.shapes[name], style=style)
+        scene.add_geometry(geom, geom_name=name, node_name=f"instances:{name}")
+        rows_of[f"instances:{name}"] = rows
+    glb = bytes(scene.export(file_type="glb"))
+    # split the GLB: header, JSON chunk, BIN chunk
+    jlen = struct.unpack_from("<I", glb, 12)[0]
+    doc = json.loads(glb[20:20 + jlen])
+    rest = 20 + jlen
+    binary = bytearray(glb[rest + 8: rest + 8 + struct.unpack_from("<I", glb, rest)[0]]) if rest < len(glb) else bytearray()
+    doc.setdefault("bufferViews", [])
+    doc.setdefault("accessors", [])
+    if not doc.get("buffers"):
+        doc["buffers"] = [{"byteLength": 0}]
+
+    def accessor(data: np.ndarray, kind: str) -> int:
+        data = np.ascontiguousarray(data, dtype=np.float32)
+        while len(binary) % 4:
+            binary.append(0)
+        doc["bufferViews"].append({"buffer": 0, "byteOffset": len(binary), "byteLength": data.nbytes})
+        binary.extend(data.tobytes())
+        doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": 5126, "count": int(len(data)),
+                                 "type": kind, "min": data.min(axis=0).tolist(), "max": data.max(axis=0).tolist()})
+        return len(doc["accessors"]) - 1
+
+    for node in doc.get("nodes", []):
+        rows = rows_of.get(node.get("name", ""))
+        if rows is None:
+            continue
+        m = mats[rows]
+        s = np.linalg.norm(m[:, :3, 0], axis=1)
+        rot = m[:, :3, :3] / s[:, None, None]
+        quat = Rotation.from_matrix(rot).as_quat()  # (x, y, z, w), as glTF stores them
+        node.pop("matrix", None)
+        node["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {
+            "TRANSLATION": accessor(m[:, :3, 3], "VEC3"),
+            "ROTATION": accessor(quat, "VEC4"),
+            "SCALE": accessor(np.repeat(s[:, None], 3, axis=1), "VEC3"),
+        }}}
+    doc["buffers"][0]["byteLength"] = len(binary)
+    used = doc.setdefault("extensionsUsed", [])
+    if "EXT_mesh_gpu_instancing" not in used:
+        used.append("EXT_mesh_gpu_instancing")
+    text = json.dumps(doc, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    while len(binary) % 4:
+        binary.append(0)
+    total = 12 + 8 + len(text) + 8 + len(binary)
+    return (struct.pack("<III", 0x46546C67, 2, total) + struct.pack("<I", len(text)) + b"JSON" + text
+            + struct.pack("<I", len(binary)) + b"BIN\x00" + bytes(binary))
 
 
 def save_glb(arr: Arrangement, path: str | os.PathLike[str], **kwargs: Any) -> Path:

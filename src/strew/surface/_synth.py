@@ -422,7 +422,7 @@ class SurfaceSynthState:
         """Copy exemplar elements ``exs`` to surface points unless they intersect O.
 
         ``parent`` (m,) gives for each item the item number of the larger element it
-        leans on (-1: none, -2: outside the copied neighbourhood): an item is copied only
+        leans on (-1: none, below -1: never, e.g. outside the copied neighbourhood): an item is copied only
         together with its parent, or when the parent's point lies outside the domain
         (``Prepared.parent``, as in the planar synth: no orphaned small elements).
         Parents come before their children in the order given.
@@ -438,7 +438,7 @@ class SurfaceSynthState:
                 break
             if parent is not None:
                 ps = int(parent[i])
-                if ps == -2 or (ps >= 0 and not placed[ps] and ok[ps]):
+                if ps < -1 or (ps >= 0 and not placed[ps] and ok[ps]):
                     continue
             if not ok[i]:
                 continue
@@ -549,7 +549,7 @@ class SurfaceSynthState:
             np.cumsum(sizes, out=out_ptr[1:])
             count, ex, ppos, pslot = K.generate_proposals(np.zeros((len(seeds), 2)), q_ptr, q_off, q_kind, q_d, rbar_s, cands,
                                                            prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d,
-                                                           prep.kind_cost, out_ptr, prep.parent)
+                                                           prep.kind_cost, out_ptr, prep.parent, *_follow(K, prep))
             slack = 2.0 * (2.0 * prep.r[osrc[seeds]]) ** 2
             reach = (rbar_s + 2.0 * float(prep.rc.max()) + float(prep.free_cover.max())) * self.scale
             flists = ftree.query_ball_point(self.P[seeds], r=reach)
@@ -805,6 +805,15 @@ def _separated_kernel(P, order, sep):
             out[ns] = i
             ns += 1
     return out[:ns]
+
+
+def _follow(K: Any, prep: Any) -> tuple:
+    """The extra argument of ``generate_proposals`` where the synth kernels take one
+    (``Prepared.follow``: children placed from their parent's stand-in)."""
+    argc = getattr(getattr(K.generate_proposals, "py_func", None), "__code__", None)
+    if argc is not None and argc.co_argcount >= 16 and hasattr(prep, "follow"):
+        return (prep.follow,)
+    return ()
 
 
 def _separated(P: np.ndarray, order: np.ndarray, sep: np.ndarray) -> np.ndarray:
