@@ -317,7 +317,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
 
 
 @numba.njit(cache=True, nogil=True)
-def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr, parent):
+def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr, parent, follow):
     """Right-partial pairs of each (seed, candidate), mapped to output space (§5.1).
 
     The new position of a copied element is ``p_s + m_{p_s}(p_{e'} - p_c)``.
@@ -335,6 +335,9 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
         The larger element each exemplar element leans on (-1 for none, -3 for one
         beyond the exemplar's edge: never copied beside a candidate; see
         ``Prepared.parent``).
+    follow : (n_ex,) bool
+        Elements whose only larger Delaunay neighbour is their parent (a dot ringing
+        its disc): placed from the output element paired with the parent.
 
     Returns
     -------
@@ -404,13 +407,17 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
                         if used[u]:
                             if partner_d[u] * SIZE_STEP < e_d[ea + u] * (1.0 - 1e-9):
                                 ps = -2
-                            else:
+                            elif follow[e_idx[ea + t]]:
                                 # The child leans on the output element that stands for
                                 # its parent (paired up to d = 2 r away): placed at the
                                 # exemplar's offset from it, not from the seed, so a dot
                                 # keeps its distance to the disc it rings (clusters
                                 # variant 1: 7 % of dots 20-30 from any disc, none in
-                                # the exemplar).
+                                # the exemplar). Only children with one larger
+                                # neighbour: a pebble between several stones that
+                                # followed one of them was refused by the others more
+                                # often (two sizes variant 1: pebbles sparser, failing
+                                # nn[pebble>pebble] on 2/2 seeds).
                                 mx, my = map_offset(px + partner_off[u, 0], py + partner_off[u, 1],
                                                     e_off[ea + t, 0] - e_off[ea + u, 0], e_off[ea + t, 1] - e_off[ea + u, 1])
                                 pos[slot[t], 0] = px + partner_off[u, 0] + mx

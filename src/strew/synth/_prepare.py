@@ -102,6 +102,7 @@ class Prepared:
     size_class: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
     rc: np.ndarray = field(default_factory=lambda: np.zeros(0))
     parent: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))
+    follow: np.ndarray = field(default_factory=lambda: np.zeros(0, bool))
     selection: Selection | None = None
     shape_clearance: np.ndarray | None = None  # (kinds, kinds), see _shapes.clearance
 
@@ -466,7 +467,8 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         domains=polys,
         overlap_free=all(len(overlaps(ex)[0]) == 0 for ex in exemplars),
         size_class=(cls := size_classes(r)),
-        parent=parents(pos, cls, sources, void, depth_all, kind),
+        parent=parents(pos, cls, sources, void, depth_all, kind, follow=(follow := np.zeros(len(arr), bool))),
+        follow=follow,
     )
     prep.set_selection(selection)
     return prep
@@ -627,7 +629,7 @@ def size_classes(r: np.ndarray) -> np.ndarray:
 
 
 def parents(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, void: np.ndarray, depth: np.ndarray | None = None,
-            kind: np.ndarray | None = None) -> np.ndarray:
+            kind: np.ndarray | None = None, follow: np.ndarray | None = None) -> np.ndarray:
     """The larger element each exemplar element leans on (-1 for none, -3 for one
     that may lie beyond the exemplar's edge).
 
@@ -657,6 +659,8 @@ def parents(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, void: np.ndarr
         1: nn[dot>disc] failing, 0.11 against a tolerance of 0.05).
     kind : (n,) int, optional
         Kinds, for the median parent distance (default: size classes).
+    follow : (n,) bool, optional, output
+        Set True for elements whose parent is their only larger Delaunay neighbour.
 
     Returns
     -------
@@ -682,6 +686,8 @@ def parents(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, void: np.ndarr
             if len(js):
                 d = np.hypot(*(pos[ids[js]] - pos[ids[a]]).T)
                 out[ids[a]] = ids[js[np.argmin(d)]]
+                if follow is not None:
+                    follow[ids[a]] = len(js) == 1
         if depth is not None:
             has = out[ids] >= 0
             pd = np.full(len(ids), np.inf)
