@@ -172,7 +172,11 @@ def main() -> int:
     scale = args.scale if args.scale is not None else (2.5 if args.quick else 3.5)
     seeds = _seeds(args.seeds)
     eq5 = not args.quick
-    bench = Bench("fidelity", f"fidelity of grow and synth to their exemplar, region {scale:g}x the frame's side", baseline="copy: the exemplar tiled", json_path=args.json)
+    # a partial run (some exemplars, seeds, one method, a variant) must not overwrite the
+    # committed figures of the full suite: it writes fidelity-partial.json unless told
+    partial = bool(args.quick or args.only or args.method or args.variant is not None)
+    json_path = args.json or (str(Path(__file__).parent / "results" / "fidelity-partial.json") if partial else None)
+    bench = Bench("fidelity", f"fidelity of grow and synth to their exemplar, region {scale:g}x the frame's side", baseline="copy: the exemplar tiled", json_path=json_path)
     sheet_rows = []
     totals: dict[str, list[int]] = {}
     t_all = time.perf_counter()
