@@ -11,7 +11,8 @@ Public entry points:
 :func:`pack`
     Poisson disk and fill-gap on the surface, bounding spheres never overlapping.
 :func:`save_glb` / :func:`to_glb`
-    GLB with one node per element sharing one mesh per kind.
+    GLB with one node per element sharing one mesh per kind, or with
+    ``instancing=True`` one node per kind with EXT_mesh_gpu_instancing.
 :func:`save_preview` / :func:`render_preview`
     A PNG preview without a GPU.
 :func:`chart`

@@ -7,8 +7,7 @@ tangent ``t``, exemplar +y along ``-b``, ``b = n x t``, as in :mod:`._frames`) a
 map at ``p``). Departure from §5.7: Davison et al. walk along the integral curve of the
 orientation field turned by the offset's angle; on a smooth field and at neighbourhood
 distances the two differ by the field's turning along the path, and the geodesic needs
-no step size. This is the building block for synthesis on surfaces; synth itself does
-not use it yet.
+no step size. :mod:`._synth` walks the same way, batched with cached geometry.
 """
 
 from __future__ import annotations
