@@ -22,7 +22,7 @@ from ._periodic import canonical, translations, wrap_delta
 from .arrangement import Arrangement
 from .region import Region, stroke_walls
 
-__all__ = ["overlapping", "overlap_drops", "Bounds", "wrap_stroke"]
+__all__ = ["overlapping", "overlap_drops", "Bounds", "wrap_stroke", "near_stroke"]
 
 
 def overlapping(new: Arrangement, existing: Arrangement) -> np.ndarray:
@@ -161,6 +161,33 @@ class Bounds:
             if len(near):
                 out[near[shapely.intersects(arr.select(near).geometry, band[1])]] = True
         return out
+
+
+def near_stroke(xy: np.ndarray, points: np.ndarray, radius: float) -> np.ndarray:
+    """Which points lie within ``radius`` of a stroke: the eraser's rule.
+
+    Davison et al. 2018, §5.4: the eraser removes the elements whose centre lies within
+    the brush radius of its path (as :func:`strew.synth.erase` does on a synthesis state).
+
+    Parameters
+    ----------
+    xy : (n, 2) float
+        Element centres.
+    points : (m, 2) float
+        The stroke, a polyline; one point is a disc about it.
+    radius : float
+        The tool's radius (the bound counts as within).
+
+    Returns
+    -------
+    (n,) bool
+    """
+    xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+    points = np.asarray(points, dtype=float).reshape(-1, 2)
+    if len(xy) == 0 or len(points) == 0:
+        return np.zeros(len(xy), bool)
+    path = shapely.LineString(points) if len(points) > 1 else shapely.Point(points[0])
+    return shapely.dwithin(path, shapely.points(xy), radius)
 
 
 def wrap_stroke(points: np.ndarray, tile: tuple[float, float, float, float], radius: float = 0.0) -> list[np.ndarray]:

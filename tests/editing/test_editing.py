@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from strew import Arrangement
-from strew.editing import Bounds, overlap_drops, overlapping, wrap_stroke
+from strew.editing import Bounds, near_stroke, overlap_drops, overlapping, wrap_stroke
 from strew.region import Region, cut_along
 from strew.shape import Shape
 
@@ -138,3 +138,23 @@ def test_wrap_stroke_copies_reach_across_the_edge():
     runs = wrap_stroke(np.array([[98.0, 40], [99, 40]]), tile, radius=5.0)
     assert len(runs) == 2 and np.allclose(runs[1], runs[0] - [100, 0])
     assert len(wrap_stroke(np.array([[50.0, 40], [51, 40]]), tile, radius=5.0)) == 1
+
+
+@settings(max_examples=40, deadline=None)
+@given(points, st.lists(st.tuples(coords, coords), min_size=1, max_size=6), st.floats(0.5, 10))
+def test_near_stroke_is_the_distance_to_the_polyline(xy, stroke, radius):
+    xy, stroke = np.asarray(xy, float), np.asarray(stroke, float)
+    got = near_stroke(xy, stroke, radius)
+
+    def dist(p):  # brute force: distance to each segment (or the point)
+        if len(stroke) == 1:
+            return np.hypot(*(p - stroke[0]))
+        a, b = stroke[:-1], stroke[1:]
+        ab = b - a
+        t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-300), 0, 1)
+        return np.min(np.hypot(*(a + t[:, None] * ab - p).T))
+
+    d = np.array([dist(p) for p in xy])
+    sure = np.abs(d - radius) > 1e-6  # off the bound, where rounding may go either way
+    assert np.array_equal(got[sure], (d <= radius)[sure])
+    assert near_stroke(np.zeros((0, 2)), stroke, radius).shape == (0,)

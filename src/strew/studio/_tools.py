@@ -17,7 +17,7 @@ import shapely
 
 from .._errors import Cancelled, InputError
 from ..arrangement import Arrangement, concat
-from ..editing import overlap_drops, overlapping
+from ..editing import near_stroke, overlap_drops, overlapping
 from ._common import Emit, FIRST_SPRAY, TOOLS, _r, _state_part
 from ._protocol import get_number, get_points, get_str
 
@@ -413,18 +413,17 @@ class ToolsMixin:
         """Eraser (Davison §5.4): elements whose centre lies within ``radius`` of the path."""
         from .. import synth
 
-        path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
         if self.state is not None and self.state.n:
             if self.layers["locked"]:  # the same rule as synth.erase, locked layers kept
                 st = self.state
                 part = _state_part(st, np.arange(st.n))
-                gone = shapely.dwithin(path, shapely.points(part.xy), radius) & ~self._locked(part)
+                gone = near_stroke(part.xy, pts, radius) & ~self._locked(part)
                 if gone.any():
                     st.remove(gone)
             else:
                 synth.erase(self.state, pts, radius)
         if len(self.fixed):
-            gone = shapely.dwithin(path, shapely.points(self.fixed.xy), radius) & ~self._locked(self.fixed)
+            gone = near_stroke(self.fixed.xy, pts, radius) & ~self._locked(self.fixed)
             if gone.any():
                 self.fixed = self.fixed.select(~gone)
 
