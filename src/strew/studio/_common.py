@@ -54,13 +54,18 @@ def _empty(shapes: dict[str, Shape]) -> Arrangement:
 
 
 # The synthesis state's elements as the studio needs them. _element_keys reads two
-# private arrays of strew.synth's state (_free_base; _born is read in _scene.py): the
+# private arrays of strew.synth's state (_free_base, _born), here and nowhere else: the
 # hooks strew.synth should expose are listed in _state_part's docstring.
 def _element_keys(st: Any, idx: np.ndarray) -> np.ndarray:
     """(len(idx),) int64 keys naming synthesis elements across removals: each element's
     free-space block (allocated afresh for every added or re-assigned element) and source."""
     return (st._free_base[idx].astype(np.int64) << 20) | st.src[idx].astype(np.int64)
 
+
+
+def _born(st: Any, idx: np.ndarray) -> np.ndarray:
+    """(len(idx),) int: the growth iteration in which each synthesis element was added."""
+    return st._born[idx]
 
 
 def _visible(arr: Arrangement) -> np.ndarray:
