@@ -17,6 +17,11 @@ The scene is two parts: ``fixed`` (an :class:`~strew.Arrangement` of elements th
 current synthesis state does not own: sprayed elements, a loaded scene, elements made
 with an earlier palette) and ``state`` (the live synthesis output, which the brush
 re-optimises). The browser sees their concatenation.
+
+The studio holds no algorithm of its own: what an element may not do is decided by
+:mod:`strew.editing` (overlaps, the region and boundary strokes, the eraser's rule,
+strokes on a repeat tile) and :func:`strew.region.cut_along`; the parameter controls
+come from the methods' specs (``_controls.py``).
 """
 
 from __future__ import annotations
