@@ -157,3 +157,23 @@ def test_bad_input(ball, grid_ex):
     st = surface.new_synth_state(grid_ex, ball, scale=0.02, rng=1)
     with pytest.raises(InputError, match="eraser radius"):
         st.erase([[1.0, 0, 0]], 0)
+
+
+def test_open_mesh_walks_stop_at_the_boundary(grid_ex):
+    # a wavy 2 x 2 sheet with a boundary: copies whose walk runs off the edge are dropped,
+    # so elements do not pile up along it
+    n = 30
+    xs = np.linspace(0.0, 2.0, n + 1)
+    X, Y = np.meshgrid(xs, xs)
+    V = np.column_stack([X.ravel(), Y.ravel(), 0.1 * np.sin(2 * X.ravel())])
+    a = np.arange(n)[:, None] * (n + 1) + np.arange(n)[None, :]
+    a = a.ravel()
+    F = np.concatenate([np.column_stack([a, a + 1, a + n + 2]), np.column_stack([a, a + n + 2, a + n + 1])])
+    sheet = trimesh.Trimesh(V, F)
+    arr = surface.synthesize(grid_ex, sheet, scale=0.02, rng=1)
+    assert_on_surface(arr, sheet)
+    assert_no_overlaps(arr)
+    p = positions(arr)
+    assert 85 < len(arr) < 125  # area about 2.1 / 0.2^2
+    edge = np.minimum.reduce([p[:, 0], 2 - p[:, 0], p[:, 1], 2 - p[:, 1]])
+    assert np.sum(edge < 0.05) < 0.14 * len(arr)  # a 0.05 rim is 10 % of the area (16 % with walks cut short kept)

@@ -79,6 +79,8 @@ class _Surface:
         self.edge = float(np.mean(mesh.edges_unique_length))
         lo = self.V.min(axis=0)
         self.size = float(np.linalg.norm(self.V.max(axis=0) - lo))
+        edges = np.sort(np.concatenate([self.F[:, [0, 1]], self.F[:, [1, 2]], self.F[:, [2, 0]]]), axis=1)
+        self.has_boundary = bool(np.any(np.unique(edges, axis=0, return_counts=True)[1] == 1))
 
     def locate(self, pts: np.ndarray, k: int = 8) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Closest points of the mesh to ``pts`` (near the surface) among the faces of the
@@ -98,11 +100,20 @@ class _Surface:
         n /= np.linalg.norm(n, axis=1, keepdims=True).clip(1e-300)
         return n, self.field.at(faces, bary, n)
 
-    def walk(self, faces: np.ndarray, bary: np.ndarray, dirs: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def walk(self, faces: np.ndarray, bary: np.ndarray, dirs: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """m_p: from each start (face, bary) along the surface by the 3D tangent vector
-        ``dirs`` (its length is the distance walked). Returns faces, bary, points."""
+        ``dirs`` (its length is the distance walked).
+
+        Returns
+        -------
+        faces, bary, points
+        complete : (m,) bool
+            False where the walk was cut short by the mesh's boundary (the point is not
+            at distance ``|v|``; callers drop it).
+        """
         m = len(faces)
         ends = np.empty((m, 3))
+        complete = np.ones(m, bool)
         tr = self.tracer
         big = 2**62
         for i in range(m):
@@ -110,8 +121,13 @@ class _Surface:
             if d[0] == 0.0 and d[1] == 0.0 and d[2] == 0.0:
                 ends[i] = bary[i] @ self.tri[faces[i]]
                 continue
-            ends[i] = tr.trace_geodesic_from_face(int(faces[i]), bary[i], d, big)[-1]
-        return self.locate(ends)
+            path = tr.trace_geodesic_from_face(int(faces[i]), bary[i], d, big)
+            ends[i] = path[-1]
+            if self.has_boundary:
+                walked = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
+                complete[i] = walked >= (1.0 - 1e-6) * float(np.linalg.norm(d))
+        f, b, p = self.locate(ends)
+        return f, b, p, complete
 
 
 @numba.njit(cache=True)
@@ -382,7 +398,10 @@ class SurfaceSynthState:
         t = self.T[owner]
         b = np.cross(self.N[owner], t)
         dirs = off[:, :1] * t - off[:, 1:2] * b
-        ff, fb, pts = self.surf.walk(self.face[owner], self.bary[owner], dirs)
+        ff, fb, pts, done = self.surf.walk(self.face[owner], self.bary[owner], dirs)
+        if not done.all():  # free space beyond the mesh's boundary
+            ff, fb, pts, owner, rows = ff[done], fb[done], pts[done], owner[done], rows[done]
+            total = int(done.sum())
         a, z = self.nf, self.nf + total
         self._reserve_free(z)
         self.FP[a:z] = pts
@@ -471,7 +490,8 @@ class SurfaceSynthState:
         n0, t0 = self.surf.frames(f0, b0)
         b = np.cross(n0[0], t0[0])
         dirs = off[:, :1] * t0[0] - off[:, 1:2] * b
-        faces, bary, pts = self.surf.walk(np.repeat(f0, len(ids)), np.repeat(b0, len(ids), axis=0), dirs)
+        faces, bary, pts, done = self.surf.walk(np.repeat(f0, len(ids)), np.repeat(b0, len(ids), axis=0), dirs)
+        ids, faces, bary, pts = ids[done], faces[done], bary[done], pts[done]
         new = np.asarray(self._place(ids, faces, bary, pts, max_elements)[0], np.int64)
         self._make_free(new)
         return new
@@ -601,7 +621,7 @@ class SurfaceSynthState:
                 T0 = self.T[s_idx]
                 B0 = np.cross(self.N[s_idx], T0)
                 off = ppos[rows] * self.scale
-                faces, bary, pts = self.surf.walk(self.face[s_idx], self.bary[s_idx], off[:, :1] * T0 - off[:, 1:2] * B0)
+                faces, bary, pts, done = self.surf.walk(self.face[s_idx], self.bary[s_idx], off[:, :1] * T0 - off[:, 1:2] * B0)
                 # the copies of all seeds, larger size classes first and within a class
                 # the anchors (a ring's hub), seed order otherwise: as the planar synth
                 # places them (strew.synth._kernels.place_proposals, _grow.anchors);
@@ -612,6 +632,8 @@ class SurfaceSynthState:
                 item_of = np.full(len(ppos), -1, np.int64)
                 item_of[rows[order]] = np.arange(len(order))
                 par = np.where(prow[order] >= 0, item_of[np.maximum(prow[order], 0)], prow[order])
+                # a copy whose walk ran into the mesh's boundary is not placed (nor its children)
+                par = np.where(done[order], par, -2)
                 new, placed = self._place(ex[rows[order]], faces[order], bary[order], pts[order], max_elements, par)
                 if new:
                     self._make_free(np.asarray(new, np.int64))
