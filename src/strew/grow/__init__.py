@@ -81,6 +81,9 @@ SPEC = MethodSpec(
               "[default: on, unless the exemplar's own elements overlap; then off, with a warning].", cli=False,
               section="extension"),
         Param("relax_every", "int", 16, low=1, help="Growth steps between two windowed relaxations.", cli=False, section="§5.5"),
+        Param("periodic", "bool", False, cli="flag",
+              help="Make a seamless repeat tile of a rectangular region (--size WxH): growth, matching, merging and "
+                   "overlap tests wrap around its edges.", section="extension (issue 18)"),
     ),
 )
 
@@ -164,6 +167,14 @@ def grow(
         off and a :class:`~strew._feedback.ResultWarning` says so.
     relax_every : int
         Growth steps between two windowed relaxations.
+    periodic : bool
+        Grow a seamless repeat tile of the rectangular ``region`` (issue 18; not in the
+        paper): the growth lives on the torus, its seeds wrap around the tile's edges
+        and meet the elements grown from the other side there (Fig. 6b merges them), and
+        the output keeps each element once at its canonical place with
+        ``meta["periodic"]`` (:mod:`strew._periodic`). A lattice exemplar repeats
+        exactly only when the tile is a multiple of its periods; otherwise its rows
+        meet at the seam with a few dislocations. Not with ``context`` or ``spray``.
     rng : int, Generator or None
         Ties between equally good references and the jitter draw from it. Recorded in
         ``meta`` (``seed`` or ``rng_state``) with every parameter (:data:`SPEC`).
@@ -199,10 +210,16 @@ def grow(
         src = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
         if prm["avoid_overlaps"] is None:  # resolved here, and recorded so in meta
             prm["avoid_overlaps"] = not (isinstance(src, Arrangement) and _overlapping_exemplar(src))
+        if prm["periodic"] and ctx is not None:
+            raise InputError("periodic: a repeat tile cannot grow around context elements (--around)")
         arr = _grow(exemplar, free, gen, progress, should_cancel, **prm)
         if free is not region:
             arr = arr.replace(region=region)
         _say_if_short(arr, prm)
+    if prm["periodic"]:
+        from .. import _periodic
+
+        arr = _periodic.mark(arr, _periodic.frame_of_region(region))
     src = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
     return stamp(arr, SPEC, src, prm, seed, region=region, context=ctx)
 
@@ -288,6 +305,7 @@ def _grow(
     connectivity: bool,
     avoid_overlaps: bool,
     relax_every: int,
+    periodic: bool = False,
 ) -> Arrangement:
     """The growth itself (§5) on checked arguments; see :func:`grow`."""
     if mode not in MODES:
@@ -318,6 +336,15 @@ def _grow(
     elif spray_radius is not None:
         raise InputError("spray_radius: given without spray")
     bounds = [_polyline(b, f"boundary[{i}]") for i, b in enumerate(boundary or [])]
+    tile = None
+    if periodic:
+        from .._periodic import frame_of_region
+
+        if region is None:
+            raise InputError("periodic: a repeat tile needs a rectangular region (--size WxH)")
+        if spray_arr is not None:
+            raise InputError("periodic: the spray tool paints a path, not a repeat tile; leave out spray or periodic")
+        tile = frame_of_region(region)
     if count is None and region is None and spray_arr is None:
         raise InputError("region: give count, or a region to fill (or a spray path)")
     from .._limits import check_work, element_area  # refuse work beyond the limits (issue 17)
@@ -326,7 +353,8 @@ def _grow(
     kinds = ref.exemplar.kinds
     # hubs first, then their satellites, for clustered exemplars (:mod:`._clusters`), unless
     # the user sets priorities or edits the connectivity
-    clusters = priority is None and not isinstance(exemplar, Reference) and not list(flips)
+    # (not on a torus: :mod:`._clusters` places whole clusters in the plane)
+    clusters = priority is None and not isinstance(exemplar, Reference) and not list(flips) and tile is None
     if priority is None:
         priority = size_priority(ref.exemplar)
     prio: dict[str, float] = {}
@@ -375,6 +403,7 @@ def _grow(
         avoid_overlaps=bool(avoid_overlaps),
         connectivity=bool(connectivity),
         clusters=clusters,
+        tile=tile,
     )
     meta = {"method": "grow"}
     return grow_reference(ref, params, rng=rng, progress=progress, should_cancel=should_cancel, meta=meta)

@@ -25,7 +25,12 @@ Departures from the paper (each explained where it is made):
 - clustered exemplars (hubs ringed by satellites) grow their hubs alone and copy a
   whole reference cluster around each (:mod:`strew.grow._clusters`, §5.1 after Wong);
 - elements lie wholly inside the region and off boundary strokes, and never overlap;
-- grid cells come from both the spacing and the element size.
+- grid cells come from both the spacing and the element size;
+- ``tile`` (issue 18, not in the paper) grows on a torus: each object near the tile's
+  edges has ghost images, translated by the tile's periods, that mirror its state, so
+  that merging (Fig. 6b), matching (§5.2), the edge-collision and overlap tests and
+  the relaxation see across the edges; a seed beyond the edge is made at its wrapped
+  position and an edge to an image is kept at both of its ends.
 """
 
 from __future__ import annotations
@@ -116,6 +121,9 @@ class GrowParams:
     canopy_quantile: float | None = 1.0
     #: the reach of that try's fitted position, in mean edge lengths
     canopy_reach: float = 1.0
+    #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
+    #: docstring); None grows in the plane
+    tile: tuple[float, float, float, float] | None = None
 
 
 def _segments_cross(p: tuple[float, float], q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> bool:
@@ -314,6 +322,13 @@ class _Grower:
         self.refslot = np.full(cap, -1, dtype=np.int64)  # reference row of each element
         self.frame = np.zeros(cap)  # rotation of the reference ring each element copies (§5.3)
         self.n = 0
+        # periodic tiles: the original of each object (itself but for ghost images), the
+        # image's tile offset, and the ghosts of each original by offset
+        self.tile = p.tile
+        self.orig_of: list[int] = []
+        self.off_of: list[tuple[int, int]] = []
+        self.ghosts: dict[int, dict[tuple[int, int], int]] = {}
+        self.margin = 0.0
         self.adj: list[set[int]] = []
         self.target: list[dict[int, tuple[float, float]] | None] = []  # ring offsets r_ji
         self.geom: list[Any] = []
@@ -383,6 +398,16 @@ class _Grower:
         return (math.floor(x / self.cell), math.floor(y / self.cell))
 
     def new_object(self, x: float, y: float, kind: int) -> int:
+        """A new seed at (x, y); on a torus, the image at (x, y) of a seed made at its wrapped place."""
+        if self.tile is not None:
+            x0, y0, w, h = self.tile
+            ki, kj = math.floor((x - x0) / w), math.floor((y - y0) / h)
+            i = self._new_object(x - ki * w, y - kj * h, kind)
+            self._ensure_ghosts(i)
+            return self.image(i, (ki, kj))
+        return self._new_object(x, y, kind)
+
+    def _new_object(self, x: float, y: float, kind: int) -> int:
         if self.n == len(self.state):
             self._grow_capacity()
         i = self.n
@@ -395,12 +420,93 @@ class _Grower:
         self.target.append(None)
         self.geom.append(None)
         self.color.append(None)
+        self.orig_of.append(i)
+        self.off_of.append((0, 0))
         self.grid.setdefault(self._cell(x, y), []).append(i)
         heapq.heappush(self.heap, (math.hypot(x - self.origin[0], y - self.origin[1]), i))
         self.dirty.add(i)
         if self.use_prio and self.seed_priority(i) > self.none_prio:
             self.hgrid.setdefault((math.floor(x / self.hcell), math.floor(y / self.hcell)), set()).add(i)
         return i
+
+    # -- torus (issue 18) ------------------------------------------------------------------
+    def image(self, i: int, off: tuple[int, int]) -> int:
+        """The ghost of original ``i`` translated by ``off`` tile periods (made on demand).
+
+        A ghost mirrors its original's state (:meth:`_sync`), is held fixed by the
+        relaxation and never grows itself: only originals are on the heap.
+        """
+        if off == (0, 0):
+            return i
+        own = self.ghosts.setdefault(i, {})
+        g = own.get(off)
+        if g is not None:
+            return g
+        assert self.tile is not None
+        _, _, w, h = self.tile
+        if self.n == len(self.state):
+            self._grow_capacity()
+        g = self.n
+        self.n += 1
+        x, y = self.xy[i]
+        gx, gy = x + off[0] * w, y + off[1] * h
+        self.pos[g] = (gx, gy)
+        self.xy.append((gx, gy))
+        self.fixed[g] = True
+        self.adj.append(set())
+        self.target.append(None)
+        self.geom.append(None)
+        self.color.append(None)
+        self.orig_of.append(i)
+        self.off_of.append(off)
+        own[off] = g
+        self._copy_state(i, g)
+        if self.state[g] != DEAD:
+            self.grid.setdefault(self._cell(gx, gy), []).append(g)
+        return g
+
+    def _copy_state(self, i: int, g: int) -> None:
+        for a in (self.state, self.kind, self.sub, self.rot, self.scl, self.refslot, self.frame):
+            a[g] = a[i]
+        self.color[g] = self.color[i]
+        gi = self.geom[i]
+        if gi is None:
+            self.geom[g] = None
+        else:
+            dx, dy = self.xy[g][0] - self.xy[i][0], self.xy[g][1] - self.xy[i][1]
+            self.geom[g] = shapely.transform(gi, lambda q: q + (dx, dy))
+
+    def _sync(self, i: int) -> None:
+        """Ghosts of ``i`` take its state (placed, died, new outline)."""
+        for g in self.ghosts.get(i, {}).values():
+            was = self.state[g]
+            self._copy_state(i, g)
+            if self.state[g] == DEAD and was != DEAD:
+                cell = self.grid.get(self._cell(*self.xy[g]))
+                if cell is not None and g in cell:
+                    cell.remove(g)
+
+    def _ensure_ghosts(self, i: int) -> None:
+        """Ghosts of original ``i`` wherever one lies within the margin of the tile."""
+        x0, y0, w, h = self.tile  # type: ignore[misc]
+        m = self.margin
+        x, y = self.xy[i]
+        for ki in (-1, 0, 1):
+            px = x + ki * w
+            if px < x0 - m or px > x0 + w + m:
+                continue
+            for kj in (-1, 0, 1):
+                py = y + kj * h
+                if (ki or kj) and y0 - m <= py <= y0 + h + m:
+                    self.image(i, (ki, kj))
+
+    def has_edge(self, a: int, b: int) -> bool:
+        if self.tile is None:
+            return b in self.adj[a]
+        ia, ib = self.orig_of[a], self.orig_of[b]
+        oa, ob = self.off_of[a], self.off_of[b]
+        g = self.ghosts.get(ib, {}).get((ob[0] - oa[0], ob[1] - oa[1])) if ob != oa else ib
+        return g is not None and g in self.adj[ia]
 
     def near(self, x: float, y: float, r: float, states: tuple[int, ...] = (SEED, ELEMENT)) -> list[int]:
         h = self.cell
@@ -453,6 +559,11 @@ class _Grower:
             # edges are indexed by midpoint: reinsert the ones of i
             for j in self.adj[i]:
                 self._index_edge(i, j)
+        if self.tile is not None and self.orig_of[i] == i:
+            _, _, w, h = self.tile
+            for (ki, kj), g in list(self.ghosts.get(i, {}).items()):
+                self._move(g, x + ki * w, y + kj * h)
+            self._ensure_ghosts(i)
 
     # -- edges --------------------------------------------------------------------------
     def _edge_cells(self, pa: Sequence[float], pb: Sequence[float]) -> list[tuple[int, int]]:
@@ -472,6 +583,21 @@ class _Grower:
             self.edge_grid.setdefault(c, set()).add(e)
 
     def add_edge(self, a: int, b: int) -> None:
+        if self.tile is not None:
+            # on the torus an edge is kept at both ends: from each original to the image
+            # of the other
+            ia, ib = self.orig_of[a], self.orig_of[b]
+            if ia == ib:
+                return
+            oa, ob = self.off_of[a], self.off_of[b]
+            rel = (ob[0] - oa[0], ob[1] - oa[1])
+            self._add_edge(ia, self.image(ib, rel))
+            if rel != (0, 0):
+                self._add_edge(self.image(ia, (-rel[0], -rel[1])), ib)
+            return
+        self._add_edge(a, b)
+
+    def _add_edge(self, a: int, b: int) -> None:
         if a == b or b in self.adj[a]:
             return
         self.adj[a].add(b)
@@ -480,12 +606,28 @@ class _Grower:
         self._index_edge(a, b)
 
     def remove_edge(self, a: int, b: int) -> None:
+        if self.tile is not None:
+            ia, ib = self.orig_of[a], self.orig_of[b]
+            oa, ob = self.off_of[a], self.off_of[b]
+            rel = (ob[0] - oa[0], ob[1] - oa[1])
+            pairs = [(ia, self.ghosts.get(ib, {}).get(rel) if rel != (0, 0) else ib)]
+            if rel != (0, 0):
+                pairs.append((self.ghosts.get(ia, {}).get((-rel[0], -rel[1])), ib))
+            for u, v in pairs:
+                if u is not None and v is not None:
+                    self._remove_edge(u, v)
+            return
+        self._remove_edge(a, b)
+
+    def _remove_edge(self, a: int, b: int) -> None:
         self.adj[a].discard(b)
         self.adj[b].discard(a)
         self.edges.discard((a, b) if a < b else (b, a))
 
     def crosses_edges(self, a: int | None, pa: tuple[float, float], b: int | None, pb: tuple[float, float]) -> bool:
         """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge?"""
+        if self.tile is not None:
+            return self._crosses_edges_torus(a, pa, b, pb)
         xy = self.xy
         edges = self.edges
         edge_grid = self.edge_grid
@@ -521,6 +663,50 @@ class _Grower:
                     return True
         return False
 
+    def _crosses_edges_torus(self, a: int | None, pa: tuple[float, float], b: int | None, pb: tuple[float, float]) -> bool:
+        """:meth:`crosses_edges` on the torus: the segment's images near the tile against
+        the stored edges (each kept at both ends, so one image meets every edge that
+        crosses it); edges at any image of ``a`` or ``b`` do not count."""
+        x0, y0, w, h = self.tile  # type: ignore[misc]
+        m = self.margin
+        oo = self.orig_of
+        ia = -2 if a is None else oo[a]
+        ib = -2 if b is None else oo[b]
+        lx, hx = min(pa[0], pb[0]), max(pa[0], pb[0])
+        ly, hy = min(pa[1], pb[1]), max(pa[1], pb[1])
+        xy = self.xy
+        edges = self.edges
+        for ki in (-1, 0, 1):
+            dx = ki * w
+            if hx + dx < x0 - m or lx + dx > x0 + w + m:
+                continue
+            for kj in (-1, 0, 1):
+                dy = kj * h
+                if hy + dy < y0 - m or ly + dy > y0 + h + m:
+                    continue
+                px, py = pa[0] + dx, pa[1] + dy
+                qx, qy = pb[0] + dx, pb[1] + dy
+                fx, fy = qx - px, qy - py
+                lists = [cell for cell in map(self.edge_grid.get, self._edge_cells((px, py), (qx, qy))) if cell]
+                if not lists:
+                    continue
+                cand = set().union(*lists) & edges
+                for u, v in cand:
+                    ou, ov = oo[u], oo[v]
+                    if ou == ia or ou == ib or ov == ia or ov == ib:
+                        continue
+                    ax, ay = xy[u]
+                    bx, by = xy[v]
+                    ex, ey = bx - ax, by - ay
+                    d1 = ex * (py - ay) - ey * (px - ax)
+                    d2 = ex * (qy - ay) - ey * (qx - ax)
+                    if (d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0):
+                        d3 = fx * (ay - py) - fy * (ax - px)
+                        d4 = fx * (by - py) - fy * (bx - px)
+                        if (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0):
+                            return True
+        return False
+
     def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
         if self.boundary is None:
             return False
@@ -536,6 +722,8 @@ class _Grower:
         cell = self.grid.get(self._cell(*self.xy[i]))
         if cell is not None and i in cell:
             cell.remove(i)
+        if self.tile is not None:
+            self._sync(i)
 
     # -- geometry guard -----------------------------------------------------------------
     def element_geometry(self, kind: int, x: float, y: float, rot: float, scale: float) -> Any:
@@ -593,7 +781,7 @@ class _Grower:
         kind = int(self.kind[g])
         x, y = self.xy[g]
         r = self.kind_radius[kind] * self.scl[g] + self.other_rmax
-        others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if j != g]
+        others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if self.orig_of[j] != g]
         if not others:
             return []
         geom = self.geom[g]
@@ -625,7 +813,7 @@ class _Grower:
             x, y = xy[g]
             rg = kr[kind] * float(scl[g])
             for j in self.near(x, y, rg + self.other_rmax, (ELEMENT, OBSTACLE)):
-                if j == g:
+                if j == g or self.orig_of[j] == g:
                     continue
                 kj = int(kinds[j])
                 if state[j] == ELEMENT and kj < nk:
@@ -707,6 +895,8 @@ class _Grower:
                 heapq.heappush(self.heap, (math.hypot(self.xy[j][0] - self.origin[0], self.xy[j][1] - self.origin[1]), j))
 
     def in_domain(self, x: float, y: float) -> bool:
+        if self.tile is not None:
+            return True  # the torus has no edge: a seed beyond the tile is made at its wrapped place
         box = self.region_box
         if box is not None:  # a rectangular region: the same test without shapely
             return box[0] < x < box[2] and box[1] < y < box[3]
@@ -732,7 +922,7 @@ class _Grower:
             return False
         xy = self.xy
         for o in self.near(x, y, r, states):
-            if o == s:
+            if self.orig_of[o] == s:
                 continue
             ko = int(self.kind[o])
             if ko < 0:
@@ -772,7 +962,7 @@ class _Grower:
         j = int(bigger[int(np.argmin(dist))])
         kj = int(ring_kind[j])
         reach = 1.25 * float(dist.min())
-        if any(int(self.kind[o]) == kj for o in self.near(x, y, reach) if o != s):
+        if any(int(self.kind[o]) == kj for o in self.near(x, y, reach) if self.orig_of[o] != s):
             return True
         c, sn = math.cos(th), math.sin(th)
         px = x + c * rel[j, 0] - sn * rel[j, 1]
@@ -786,12 +976,12 @@ class _Grower:
 
     def fits_domain(self, g: Any) -> bool:
         """Does element geometry ``g`` lie inside the region and cross no boundary stroke?"""
-        box = self.region_box
+        box = self.region_box if self.tile is None else None
         if box is not None:
             b = shapely.bounds(g)
             if not (b[0] >= box[0] and b[1] >= box[1] and b[2] <= box[2] and b[3] <= box[3]):
                 return False
-        elif self.region is not None and not shapely.contains(self.region.prepared, g):
+        elif self.region is not None and self.tile is None and not shapely.contains(self.region.prepared, g):
             return False
         if self.boundary is not None and shapely.intersects(self.boundary, g):
             return False
@@ -803,7 +993,9 @@ class _Grower:
         arr[:] = gs
         ok = np.ones(len(gs), dtype=bool)
         box = self.region_box
-        if box is not None:
+        if self.tile is not None:
+            pass  # on the torus an element may cross the tile's edge
+        elif box is not None:
             b = shapely.bounds(arr)
             ok &= (b[:, 0] >= box[0]) & (b[:, 1] >= box[1]) & (b[:, 2] <= box[2]) & (b[:, 3] <= box[3])
         elif self.region is not None:
@@ -836,7 +1028,7 @@ class _Grower:
         have = set()
         for o in self.near(x, y, r):
             b = int(self.kind[o])
-            if o != s and b >= 0 and (self.xy[o][0] - x) ** 2 + (self.xy[o][1] - y) ** 2 <= row[b] ** 2:
+            if self.orig_of[o] != s and b >= 0 and (self.xy[o][0] - x) ** 2 + (self.xy[o][1] - y) ** 2 <= row[b] ** 2:
                 have.add(b)
         out = [int(b) for b in want if int(b) not in have]
         out.sort(key=lambda b: -self.size_level[b])
@@ -972,6 +1164,8 @@ class _Grower:
         self.frame[s] = th
         self.geom[s] = g
         self.color[s] = self._color(r) if self.want_color else None
+        if self.tile is not None:
+            self._sync(s)
         self.order.append(s)
         self.dirty.add(s)
 
@@ -997,12 +1191,12 @@ class _Grower:
                 continue
             # (b) merge with an object within l_short
             close = self.near(cx, cy, self.l_short)
-            close = [o for o in close if o != s]
+            close = [o for o in close if self.orig_of[o] != s]
             if not close and self.too_close_in_kind(cx, cy, ring_kind[j], s):
                 continue
             if close:
                 o = min(close, key=lambda o: (self.xy[o][0] - cx) ** 2 + (self.xy[o][1] - cy) ** 2)
-                if o not in self.adj[s]:
+                if not self.has_edge(s, o):
                     po = self.xy[o]
                     if not self.crosses_edges(s, (x, y), o, po) and not self.crosses_boundary((x, y), po):
                         self.add_edge(s, o)
@@ -1093,7 +1287,7 @@ class _Grower:
             gap = (angs[ib] - angs[ia]) % (2 * math.pi)
             if m == 2 and q == 1:
                 break
-            if gap <= 1e-9 or gap >= math.pi - 1e-9 or ob in self.adj[oa]:
+            if gap <= 1e-9 or gap >= math.pi - 1e-9 or self.has_edge(oa, ob):
                 continue
             pa = self.xy[oa]
             pb = self.xy[ob]
@@ -1256,6 +1450,8 @@ class _Grower:
             self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
             if self.state[g] == ELEMENT:
                 self.geom[g] = new_geom[g]
+                if self.tile is not None:
+                    self._sync(g)
         if not self.p.avoid_overlaps:
             return
         # Keep the no-overlap guarantee: elements that now overlap go back to where they
@@ -1266,12 +1462,15 @@ class _Grower:
             back: set[int] = set()
             for g, hits in self.overlapping_many(check).items():
                 back.add(g)
-                back.update(h for h in hits if h in old)
+                back.update(self.orig_of[h] for h in hits if self.orig_of[h] in old)
             back = {g for g in back if self.xy[g] != old[g][:2]}
             for g in back:
                 self._move(g, old[g][0], old[g][1])
                 self.geom[g] = old[g][2]
-            check = [g for g in moved if self.state[g] == ELEMENT and g not in back and any(h in back for h in self.adj[g])] + sorted(back)
+                if self.tile is not None:
+                    self._sync(g)
+            oo = self.orig_of
+            check = [g for g in moved if self.state[g] == ELEMENT and g not in back and any(oo[h] in back for h in self.adj[g])] + sorted(back)
             if not back:
                 break
 
@@ -1287,9 +1486,31 @@ class _Grower:
         p = self.p
         self.max_scale = float(self.ex_scale.max()) * (1.0 + p.jitter_scale)
         self.other_rmax = max(self.other_rmax, float(self.kind_radius.max()) * self.max_scale)
+        if self.tile is not None:
+            self._torus_margin()
         self.origin = start
         self.s0 = self.new_object(start[0], start[1], p.start_kind)
         self.first = True
+
+    def _torus_margin(self) -> None:
+        """How far beyond the tile ghosts are kept: the farthest any lookup of the growth
+        reaches from an object (a ring offset, then an overlap, closeness or larger-kind
+        lookup there), plus a mean edge of drift. A tile narrower than that is refused:
+        its images would have to meet their own copies."""
+        n = self.rings["n"]
+        rel = self.rings["rel"]
+        ring_max = max((float(np.hypot(rel[a, : n[a], 0], rel[a, : n[a], 1]).max()) for a in range(len(n)) if n[a] > 0), default=self.l)
+        finite = self.reach_larger[np.isfinite(self.reach_larger)]
+        reach = max(2 * self.other_rmax, float(self.pair_close_max.max()), float(self.pair_short_max.max()), self.l_short,
+                    float(finite.max()) if len(finite) else 0.0)
+        self.margin = 1.25 * ring_max + reach + self.l
+        _, _, w, h = self.tile  # type: ignore[misc]
+        if min(w, h) < self.margin:
+            raise InputError(
+                f"periodic: the tile {w:g} x {h:g} is too small for this exemplar: its neighbourhoods reach "
+                f"{self.margin:.4g} (about {self.margin / max(self.l, 1e-300):.1f} element spacings); give a tile at least "
+                f"{self.margin:.4g} wide and high"
+            )
 
     def advance(self, rep: Reporter, target: int, pause: int | None = None) -> bool:
         """Growth steps until ``target`` elements or no seed can grow.
@@ -1359,6 +1580,8 @@ class _Grower:
         self.target.append(None)
         self.geom.append(geom)
         self.color.append(None)
+        self.orig_of.append(i)
+        self.off_of.append((0, 0))
         self.grid.setdefault(self._cell(x, y), []).append(i)
         self.other_rmax = max(self.other_rmax, float(radius))
         return i
@@ -1375,6 +1598,8 @@ class _Grower:
             new = np.full(self.n, -1, dtype=np.int64)
             new[idx] = np.arange(len(idx))
             e = np.array(sorted(self.edges), dtype=np.int64).reshape(-1, 2)
+            if len(e):
+                e = np.asarray(self.orig_of, dtype=np.int64)[e]  # an edge to an image joins the originals
             e = new[e] if len(e) else e
             e = e[(e >= 0).all(axis=1)] if len(e) else e
             e = np.sort(e, axis=1)
@@ -1419,7 +1644,7 @@ def grow_reference(
         raise InputError(f"--start {start[0]:g},{start[1]:g}: lies outside the region")
     total = params.count
     rep = Reporter(progress, should_cancel, total=total, message="growing")
-    sat = satellite_structure(ref.exemplar) if params.clusters and params.spray is None else None
+    sat = satellite_structure(ref.exemplar) if params.clusters and params.spray is None and params.tile is None else None
     if sat is not None:
         out = grow_clusters(ref.exemplar, sat, params, g.rng, (float(start[0]), float(start[1])), rep, meta or {})
         rep.done(len(out))

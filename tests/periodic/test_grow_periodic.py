@@ -1,0 +1,91 @@
+"""grow on a periodic tile (issue 18 point 1): growth wraps around the torus (Ijiri §5 on a torus)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import shapely
+
+from strew import _periodic as P
+from strew import load, metrics
+from strew._errors import InputError
+from strew._resources import example_path
+from strew.cli import main
+from strew.grow import grow
+from strew.region import Region
+
+STONES = str(example_path("grow", "stones_irregular.json"))
+HEX = str(example_path("grow", "scales_hex.json"))
+W, H = 200.0, 160.0
+
+
+@pytest.fixture(scope="module")
+def stones():
+    return load(STONES)
+
+
+@pytest.fixture(scope="module")
+def tile(stones):
+    return grow(stones, Region.rectangle(W, H, 5.0, -3.0), periodic=True, rng=2)
+
+
+def test_tile_repeats_without_overlaps_and_keeps_elements_canonical(tile):
+    assert P.frame(tile) == (5.0, -3.0, W, H)
+    assert len(metrics.outside(tile)) == 0
+    assert np.all((tile.x >= 5) & (tile.x < 5 + W) & (tile.y >= -3) & (tile.y < -3 + H))
+    assert len(tile) > 150
+    wo = metrics.wrap_overlaps(tile)
+    assert wo["across"] == 0 and wo["inside"] == 0
+    pairs, _ = metrics.overlaps(P.tiled_copies(tile, 3, 3))
+    assert len(pairs) == 0
+    # growth did go across the edges: some elements reach over them
+    b = shapely.bounds(tile.geometry)
+    assert np.any((b[:, 0] < 5) | (b[:, 2] > 5 + W) | (b[:, 1] < -3) | (b[:, 3] > -3 + H))
+
+
+def test_edge_strips_are_as_dense_as_the_interior(stones, tile):
+    # growth starts at the tile's centre, so its fronts meet at the tile's edges: the
+    # edge strips straddle that seam. Mean over three seeds (one tile's strips hold
+    # about 100 elements, so a single ratio scatters by about 10%)
+    ratios = [metrics.repeat_report(tile)["density"]["ratio"]]
+    for seed in (3, 4):
+        ratios.append(metrics.repeat_report(grow(stones, Region.rectangle(W, H), periodic=True, rng=seed))["density"]["ratio"])
+    assert 0.9 <= float(np.mean(ratios)) <= 1.1, ratios
+    # the same growth in the plane thins out along the region's edge
+    flat = grow(stones, Region.rectangle(W, H), rng=3)
+    assert metrics.repeat_report(flat, tile=[0, 0, W, H])["density"]["ratio"] < min(ratios[1], 0.9)
+
+
+def test_lattice_tile_repeats_without_overlaps(tmp_path):
+    # 10-unit hexagonal rows: 200 is not a multiple of the row spacing, so the rows meet
+    # at the seam with dislocations, never with overlaps
+    arr = grow(load(HEX), Region.rectangle(200, 150), periodic=True, rng=1)
+    assert metrics.wrap_overlaps(arr)["across"] == 0
+    assert len(metrics.outside(arr)) == 0
+    assert metrics.repeat_report(arr)["density"]["ratio"] > 0.8
+
+
+def test_same_seed_same_tile(stones, tile):
+    again = grow(stones, Region.rectangle(W, H, 5.0, -3.0), periodic=True, rng=2)
+    assert np.array_equal(tile.x, again.x) and np.array_equal(tile.y, again.y)
+    assert np.array_equal(tile.rotation, again.rotation) and np.array_equal(tile.kind, again.kind)
+    assert tile.meta == again.meta and tile.meta["params"]["periodic"] is True
+
+
+def test_bad_input_is_refused_naming_the_problem(stones):
+    with pytest.raises(InputError, match="rectangular region"):
+        grow(stones, Region.circle(0, 0, 80), periodic=True, rng=1)
+    with pytest.raises(InputError, match="too small"):
+        grow(stones, Region.rectangle(20, 200), periodic=True, rng=1)
+    with pytest.raises(InputError, match="rectangular region"):
+        grow(stones, count=20, periodic=True, rng=1)
+
+
+def test_cli_periodic_writes_a_tile_and_exits_2_on_bad_input(tmp_path, capsys):
+    out = tmp_path / "t.json"
+    assert main(["grow", STONES, "--size", "150x120", "--periodic", "--seed", "2", "-q", "-o", str(out)]) == 0
+    arr = load(out)
+    assert arr.meta["periodic"] == [0.0, 0.0, 150.0, 120.0]
+    assert metrics.wrap_overlaps(arr)["across"] == 0
+    assert main(["grow", STONES, "--size", "15x120", "--periodic", "-q", "-o", str(tmp_path / "u.json")]) == 2
+    assert "too small" in capsys.readouterr().err
