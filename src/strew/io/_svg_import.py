@@ -123,7 +123,7 @@ _LENGTH = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([a-z]*
 _SIGNATURE_TOLERANCE = 1e-3
 _IDENTITY = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 # Most objects whose signatures are computed in one batch (see _Reader.object_signature);
-# 1 computes them one by one, as the tests compare.
+# 1 computes them one by one and prepares nothing in bulk (_Reader.prepare), as the tests compare.
 _MAX_BATCH = 256
 _MIRROR = np.array([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 # Objects prepared per chunk in _Reader.prepare.
@@ -1716,17 +1716,21 @@ class _Reader:
         known = self.sources.get(source)
         if known is None:
             return False
-        kind, pose, first, frame = known
+        kind, pose, first, frame = known[:4]
         if not kind.matchable or not _has_orientation(kind):
             return False
         if frame is None:  # kind frame -> the first object's own coordinates
             if abs(_det(first)) < 1e-300:
                 return False
             frame = known[3] = _compose(_invert(first), pose)
-        own = _compose(m, self.doc.transform(el))
+            known.append(_invert(first)[:, :2].tolist())
+        t = self.doc.transform(el)
+        own = m if t is _IDENTITY else _compose(m, t)
         # the change from the first copy: lin = L_own L_first^-1 must be a rotation and scale
-        lin = own[:, :2] @ _invert(first)[:, :2]
-        a, b, c, d = float(lin[0, 0]), float(lin[0, 1]), float(lin[1, 0]), float(lin[1, 1])
+        (p00, p01), (p10, p11) = known[4]
+        (o00, o01, _), (o10, o11, _) = own.tolist()
+        a, b = o00 * p00 + o01 * p10, o00 * p01 + o01 * p11
+        c, d = o10 * p00 + o11 * p10, o10 * p01 + o11 * p11
         size = math.hypot(a, c)
         if not (size > 0) or abs(a - d) > 1e-12 * size or abs(b + c) > 1e-12 * size:
             return False
