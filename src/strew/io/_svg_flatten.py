@@ -1,5 +1,6 @@
 """SVG geometry without per-segment objects: path data, basic shapes and transforms parsed
-into arrays, and curves flattened in one batch of numpy per element (issue 17 point 3).
+into arrays, and curves flattened in one batch of numpy per element, or for many elements
+at once (:func:`flatten_many`) (issue 17 point 3).
 
 svgelements made one Python object per path segment and sampled each curve on its own
 (``npoint``), which cost 20-34 s per MB of path-heavy SVG. Here a path becomes a
@@ -30,7 +31,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Segments", "parse_path", "parse_transform", "parse_numbers", "from_svgelements", "flatten", "path_d", "shape_segments", "too_large"]
+__all__ = ["Segments", "parse_path", "parse_transform", "parse_numbers", "from_svgelements", "flatten", "flatten_many", "path_d", "shape_segments", "too_large"]
 
 LINE, QUAD, CUBIC, ARC = 0, 1, 2, 3
 MAX_SEGMENT_POINTS = 20000
