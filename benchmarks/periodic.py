@@ -1,7 +1,8 @@
 """Benchmark of repeat tiles (issue 18 point 5): every method that takes ``periodic``.
 
 For each method whose spec declares a ``periodic`` parameter (read from
-``strew._method.spec(name).names``, so methods join as they gain it), a few tiles are
+``strew._method.spec(name).names``, so methods join as they gain it), or whose
+``--periodic`` runs through :func:`strew.tiles.periodic` (synth), a few tiles are
 made twice with the same seed and size: periodic, and not (the baseline). Each result is
 judged by :func:`strew.metrics.repeat_report` as if laid side by side (the non-periodic
 one with its rectangle as the tile): overlaps across the wrap (must be 0 for the
@@ -34,6 +35,8 @@ import numpy as np  # noqa: E402
 from _runner import Bench, median_time, parse_args  # noqa: E402
 
 from strew import Region, Shape, _method, load, metrics  # noqa: E402
+from strew.cli._spec import TILED_PERIODIC  # noqa: E402
+from strew.tiles import periodic as tiles_periodic  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -88,18 +91,22 @@ def main() -> int:
         if only and name not in only:
             continue
         spec = _method.spec(name)
-        if "periodic" not in spec.names:
+        fn = spec.function()
+        if "periodic" in spec.names:
+            make = lambda data, region, seed, params, fn=fn: fn(data, region, rng=seed, periodic=True, **params)  # noqa: E731
+        elif name in TILED_PERIODIC:  # --periodic through strew.tiles.periodic (a torus of tiles)
+            make = lambda data, region, seed, params, name=name: tiles_periodic(name, data, region, rng=seed, **params)  # noqa: E731
+        else:
             bench.row(name, note="no periodic parameter yet")
             continue
-        fn = spec.function()
         for label, data, params, region, exemplar in cases:
             figs: list[dict[str, Any]] = []
             ratios = []
             note = ""
             for seed in seeds:
                 try:
-                    t_p, tile_arr = median_time(lambda: fn(data, region, rng=seed, periodic=True, **params), repeat=args.repeat, warmup=0 if figs else 1)
-                    t_f, flat = median_time(lambda: fn(data, region, rng=seed, periodic=False, **params), repeat=args.repeat, warmup=0 if figs else 1)
+                    t_p, tile_arr = median_time(lambda: make(data, region, seed, params), repeat=args.repeat, warmup=0 if figs else 1)
+                    t_f, flat = median_time(lambda: fn(data, region, rng=seed, **params), repeat=args.repeat, warmup=0 if figs else 1)
                 except Exception as exc:  # a method mid-change: say so and go on
                     note = f"failed: {type(exc).__name__}: {str(exc)[:80]}"
                     break
