@@ -121,6 +121,8 @@ class GrowParams:
     canopy_quantile: float | None = 1.0
     #: the reach of that try's fitted position, in mean edge lengths
     canopy_reach: float = 1.0
+    #: torus: rounds of :meth:`_Grower.refill` after the growth stops (0: none)
+    refill_rounds: int = 2
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None
@@ -1478,8 +1480,50 @@ class _Grower:
     def run(self, start: tuple[float, float], rep: Reporter) -> None:
         p = self.p
         self.begin(start)
-        self.advance(rep, p.count if p.count is not None else p.max_elements)
+        target = p.count if p.count is not None else p.max_elements
+        self.advance(rep, target)
+        if self.tile is not None:
+            for _ in range(p.refill_rounds):
+                if len(self.order) >= target or not self.refill():
+                    break
+                self.advance(rep, target)
         self.settle()
+
+    def refill(self) -> int:
+        """Torus: seeds again at the empty slots of the placed elements' rings; how many.
+
+        Not in the paper. On a torus the growth front meets itself (at the tile's edges,
+        for a start at its centre); the seeds that the two sides put out there were
+        refused (they overlapped or crowded what the other side had not yet placed, or
+        crossed its edges), and the paper's growth never comes back to a place: a seam of
+        gaps is left. Each ring slot with no object within half its distance from the
+        element is proposed again as a seed, as §5.4 would, and the growth goes on.
+        """
+        made = 0
+        rings = self.rings
+        for s in list(self.order):
+            if self.state[s] != ELEMENT:
+                continue
+            a = int(self.refslot[s])
+            n_ring = int(rings["n"][a])
+            rel = rings["rel"][a, :n_ring]
+            th = float(self.frame[s])
+            c, sn = math.cos(th), math.sin(th)
+            x, y = self.xy[s]
+            for j in range(n_ring):
+                rx, ry = float(rel[j, 0]), float(rel[j, 1])
+                cx, cy = x + c * rx - sn * ry, y + sn * rx + c * ry
+                kind = int(rings["kind"][a, j])
+                if self.near(cx, cy, max(self.l_short, 0.5 * math.hypot(rx, ry))):
+                    continue
+                if self.too_close_in_kind(cx, cy, kind, s) or self.crosses_edges(s, (x, y), None, (cx, cy)):
+                    continue
+                if self.crosses_boundary((x, y), (cx, cy)):
+                    continue
+                t = self.new_object(cx, cy, kind)
+                self.add_edge(s, t)
+                made += 1
+        return made
 
     def begin(self, start: tuple[float, float]) -> None:
         """§5.1: place the single initial seed at ``start``."""
