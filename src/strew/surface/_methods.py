@@ -102,8 +102,9 @@ def on_surface(
         from ._synth import synthesize
 
         _refuse(method, values, _SYNTH)
-        if values.pop("optimize", "none") != "none":
-            raise InputError("optimize: on a surface synthesis does not optimise (§5.2 is not carried over); leave it out or give none")
+        if values.get("optimize", "none") not in ("none", "horizon"):
+            raise InputError("optimize: on a surface give none (the default) or horizon; global is not carried over")
+        values.setdefault("optimize", "none")
         if "brush_radius" in values:
             raise InputError("brush_radius: the brush on a surface is a library tool (strew.surface.SurfaceSynthState.brush)")
         sel = values.pop("selection", None)
