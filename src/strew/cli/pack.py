@@ -24,5 +24,7 @@ command = method_command(SPEC, Hooks(
     description="Pack copies of SHAPE... (SVG or JSON files) densely into a region.\n\n"
     "A file holding several shapes gives several kinds, in equal proportions unless --weight is given "
     "(fill-gap keeps them within 0.05; naive cycles or draws by weight). Elements lie wholly inside the "
-    "region and never overlap, nor overlap the elements of --around.",
+    "region and never overlap, nor overlap the elements of --around. With --periodic the region is a "
+    "repeat tile: elements may cross its edges and wrap in at the opposite side, and the tile's copies "
+    "laid side by side never overlap.",
 ))
