@@ -48,13 +48,63 @@ def _hash_bytes(tag: bytes, data: bytes) -> bytes:
     return hashlib.blake2b(tag + b"\0" + data, digest_size=16).digest()
 
 
+class _Ragged:
+    """A read-only sequence of (n_k, 2) arrays kept as one flat array and offsets.
+
+    Compact storage of the edges' polylines (issue 19.6: a tuple of small arrays cost
+    about 200 bytes of array headers per edge): ``r[k]`` is a view (or, with ``scale``,
+    the grid coordinates times ``scale``), ``len(r)`` the number of items.
+
+    Parameters
+    ----------
+    flat : (N, 2) array
+        Every item's rows, one after the other.
+    offsets : (K + 1,) int64
+        Item ``k`` is ``flat[offsets[k]:offsets[k + 1]]``.
+    scale : float or None
+        Multiplies every item on access (grid coordinates to positions).
+    """
+
+    __slots__ = ("flat", "offsets", "scale")
+
+    def __init__(self, flat: np.ndarray, offsets: np.ndarray, scale: float | None = None) -> None:
+        self.flat = flat
+        self.offsets = offsets
+        self.scale = scale
+
+    def __len__(self) -> int:
+        return len(self.offsets) - 1
+
+    def __getitem__(self, k: int) -> np.ndarray:
+        n = len(self.offsets) - 1
+        k = int(k)
+        if k < 0:
+            k += n
+        if not 0 <= k < n:
+            raise IndexError(k)
+        a = self.flat[self.offsets[k] : self.offsets[k + 1]]
+        return a if self.scale is None else a * self.scale
+
+    def __iter__(self) -> Any:
+        for k in range(len(self)):
+            yield self[k]
+
+    def lengths(self) -> np.ndarray:
+        """(K,) rows per item."""
+        return np.diff(self.offsets)
+
+    def all_rows(self) -> np.ndarray:
+        """(N, 2) every item's rows, concatenated (scaled)."""
+        return self.flat if self.scale is None else self.flat * self.scale
+
+
 @dataclass(frozen=True)
 class _Topology:
     grid: float
     vertex_ij: np.ndarray  # (V, 2) int64 grid coordinates
     vertex_labels: tuple[frozenset[str], ...]
-    edge_points: tuple[np.ndarray, ...]  # each (n, 2) float
-    edge_ij: tuple[np.ndarray, ...]  # each (n, 2) int64
+    edge_points: _Ragged | tuple[np.ndarray, ...]  # each (n, 2) float
+    edge_ij: _Ragged | tuple[np.ndarray, ...]  # each (n, 2) int64
     edge_source: np.ndarray  # (E,) int
     edge_target: np.ndarray  # (E,) int
     edge_left: np.ndarray  # (E,) int face index
@@ -491,32 +541,40 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     cand = np.flatnonzero(~is_break)
     is_break[cand[key_id[in_seg[cand]] != key_id[out_seg[cand]]]] = True
 
-    # 5. chain segments into maximal edges
+    # 5. chain segments into maximal edges: chain k is cseg[coff[k]:coff[k + 1]] (flat
+    # 8-byte arrays, not a list per chain: issue 19.6, memory per segment)
+    from array import array
+
     nxt = np.where(is_break[sv], -1, out_seg[sv])
     visited = np.zeros(n_seg, dtype=bool)
-    chains: list[list[int]] = []
+    cseg_a = array("q")
+    clen_a = array("q")
     nxt_l = nxt.tolist()
-    for s in np.flatnonzero(is_break[su]).tolist():
-        chain = [s]
+    starts_l = np.flatnonzero(is_break[su]).tolist()
+    for s in starts_l:
+        n0 = len(cseg_a)
+        cseg_a.append(s)
         visited[s] = True
         t = nxt_l[s]
         while t >= 0 and not visited[t]:
-            chain.append(t)
+            cseg_a.append(t)
             visited[t] = True
             t = nxt_l[t]
-        chains.append(chain)
+        clen_a.append(len(cseg_a) - n0)
     for s in np.flatnonzero(~visited).tolist():  # closed loops with no vertex yet
         if visited[s]:
             continue
         is_break[su[s]] = True
-        chain = [s]
+        n0 = len(cseg_a)
+        cseg_a.append(s)
         visited[s] = True
         t = nxt_l[s]
         while t >= 0 and not visited[t]:
-            chain.append(t)
+            cseg_a.append(t)
             visited[t] = True
             t = nxt_l[t]
-        chains.append(chain)
+        clen_a.append(len(cseg_a) - n0)
+    del nxt_l, visited
 
     # map vertices: break vertices only, numbered in grid order
     vmap = np.full(n_raw, -1)
@@ -525,6 +583,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     vertex_ij = uniq[vb]
 
     label_cache: dict[int, tuple[frozenset[str], frozenset[str], frozenset[str]]] = {}
+    interned: dict[frozenset[str], frozenset[str]] = {}
 
     def labels_of(kid: int) -> tuple[frozenset[str], frozenset[str], frozenset[str]]:
         got = label_cache.get(kid)
@@ -540,32 +599,40 @@ def _induce(curves: Curves, grid: float) -> _Topology:
                 else:
                     left |= c.right
                     right |= c.left
-            got = (frozenset(labs), frozenset(left), frozenset(right))
+            # equal label sets share one object
+            got = tuple(interned.setdefault(fs, fs) for fs in (frozenset(labs), frozenset(left), frozenset(right)))  # type: ignore[assignment]
             label_cache[kid] = got
         return got
 
     # order edges deterministically by their grid coordinates (independent of input order)
-    n_e = len(chains)
-    clen = np.array([len(c) for c in chains], dtype=np.int64)
-    cseg = np.fromiter((s for c in chains for s in c), dtype=np.int64, count=int(clen.sum()))
+    clen = np.frombuffer(clen_a, dtype=np.int64) if len(clen_a) else np.zeros(0, np.int64)
+    cseg = np.frombuffer(cseg_a, dtype=np.int64) if len(cseg_a) else np.zeros(0, np.int64)
+    n_e = len(clen)
     coff = np.r_[0, np.cumsum(clen)]
     chain_of_seg = np.repeat(np.arange(n_e), clen)
     ev = np.empty(len(cseg) + n_e, dtype=np.int64)
     ev[np.arange(len(cseg)) + chain_of_seg] = su[cseg]
     ev[coff[1:] + np.arange(n_e)] = sv[cseg[coff[1:] - 1]]
+    del chain_of_seg
     voff = coff + np.arange(n_e + 1)
     first_ij, second_ij, last_ij = uniq[ev[voff[:-1]]], uniq[ev[voff[:-1] + 1]], uniq[ev[voff[1:] - 1]]
     eorder = np.lexsort((last_ij[:, 1], last_ij[:, 0], clen, second_ij[:, 1], second_ij[:, 0], first_ij[:, 1], first_ij[:, 0]))
-    chains = [chains[k] for k in eorder.tolist()]
-    ev_split = np.split(ev, voff[1:-1])
-    edge_vs = [ev_split[k] for k in eorder.tolist()]
-    edge_ij = tuple(uniq[v] for v in edge_vs)
-    edge_points = tuple(e * g for e in edge_ij)
-    edge_source = vmap[np.array([v[0] for v in edge_vs], dtype=np.int64)] if n_e else np.zeros(0, np.int64)
-    edge_target = vmap[np.array([v[-1] for v in edge_vs], dtype=np.int64)] if n_e else np.zeros(0, np.int64)
+    del first_ij, second_ij, last_ij
+    # the vertex sequences of the edges in that order, flat, with their offsets
+    ev_len = clen[eorder] + 1
+    eoff = np.r_[0, np.cumsum(ev_len)].astype(np.int64)
+    gather = np.repeat(voff[:-1][eorder] - eoff[:-1], ev_len) + np.arange(int(eoff[-1]))
+    ev_sorted = ev[gather]
+    del gather, ev
+    edge_ij = _Ragged(uniq[ev_sorted], eoff)
+    edge_points = _Ragged(edge_ij.flat, eoff, g)
+    edge_source = vmap[ev_sorted[eoff[:-1]]] if n_e else np.zeros(0, np.int64)
+    edge_target = vmap[ev_sorted[eoff[1:] - 1]] if n_e else np.zeros(0, np.int64)
+    first_seg = cseg[coff[:-1][eorder]].tolist()
+    del ev_sorted
     e_labels, e_left_l, e_right_l = [], [], []
-    for c in chains:
-        labs, left_l, right_l = labels_of(int(key_id[c[0]]))
+    for kid in key_id[first_seg].tolist():
+        labs, left_l, right_l = labels_of(kid)
         e_labels.append(labs)
         e_left_l.append(left_l)
         e_right_l.append(right_l)
@@ -574,9 +641,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     # segment finds its left and right faces (a point in no bounded face is in face 0)
     polys: list[Any] = []
     if n_e:
-        lines = shapely.linestrings(
-            np.concatenate(edge_points), indices=np.repeat(np.arange(n_e), [len(p) for p in edge_points])
-        )
+        lines = shapely.linestrings(edge_points.all_rows(), indices=np.repeat(np.arange(n_e), edge_points.lengths()))
         polys = [p for p in shapely.get_parts(shapely.polygonize(lines)) if p.area > 0]
     left = np.zeros(n_e, dtype=np.int64)
     right = np.zeros(n_e, dtype=np.int64)
@@ -589,8 +654,8 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         parr = parr[porder]
         polys = list(parr)
         areas = areas[porder]
-        p0 = np.array([p[0] for p in edge_points])
-        p1 = np.array([p[1] for p in edge_points])
+        p0 = edge_ij.flat[eoff[:-1]] * g
+        p1 = edge_ij.flat[eoff[:-1] + 1] * g
         d = p1 - p0
         d = d / np.sqrt((d**2).sum(axis=1))[:, None]
         mid = (p0 + p1) / 2
@@ -641,7 +706,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     return _Topology(
         g,
         vertex_ij,
-        tuple(frozenset(s) for s in vlabels),
+        tuple(frozenset(s) if s else EMPTY for s in vlabels),
         edge_points,
         edge_ij,
         edge_source,
