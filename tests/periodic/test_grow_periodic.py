@@ -5,13 +5,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import shapely
+from scipy.spatial import cKDTree
 
 from strew import _periodic as P
 from strew import load, metrics
 from strew._errors import InputError
 from strew._resources import example_path
 from strew.cli import main
-from strew.grow import grow
+from strew._feedback import ResultWarning
+from strew.grow import analyze, grow, lattice_periods
 from strew.region import Region
 
 STONES = str(example_path("grow", "stones_irregular.json"))
@@ -56,13 +58,24 @@ def test_edge_strips_are_as_dense_as_the_interior(stones, tile):
     assert metrics.repeat_report(flat, tile=[0, 0, W, H])["density"]["ratio"] < min(ratios[1], 0.9)
 
 
-def test_lattice_tile_repeats_without_overlaps(tmp_path):
-    # 10-unit hexagonal rows: 200 is not a multiple of the row spacing, so the rows meet
-    # at the seam with dislocations, never with overlaps
-    arr = grow(load(HEX), Region.rectangle(200, 150), periodic=True, rng=1)
+def test_lattice_in_a_multiple_of_its_periods_repeats_exactly(recwarn):
+    # scales_hex: 10-unit rows, periods 10 x 17.32; 20 x 10 rows fill 200 x 173.2 exactly
+    h = 10 * 10 * np.sqrt(3)
+    arr = grow(load(HEX), Region.rectangle(200, h), periodic=True, rng=1)
+    assert len(arr) == 400
+    xy = np.c_[arr.x, arr.y]
+    d = cKDTree(xy, boxsize=[200, h]).query(xy, k=7)[0][:, 1:]  # six neighbours on the torus
+    assert np.allclose(d, 10.0, atol=1e-6)
+    assert not [w for w in recwarn if issubclass(w.category, ResultWarning)]
+
+
+def test_lattice_in_another_tile_meets_at_the_seam_without_overlaps_and_says_so():
+    with pytest.warns(ResultWarning, match=r"lattice with periods 10 x 17.32.*--size 200x155.885"):
+        arr = grow(load(HEX), Region.rectangle(200, 150), periodic=True, rng=1)
     assert metrics.wrap_overlaps(arr)["across"] == 0
     assert len(metrics.outside(arr)) == 0
-    assert metrics.repeat_report(arr)["density"]["ratio"] > 0.8
+    assert metrics.repeat_report(arr)["density"]["ratio"] > 0.8  # dislocations, not a gap
+    assert lattice_periods(analyze(load(STONES))) is None  # an irregular exemplar is not a lattice
 
 
 def test_same_seed_same_tile(stones, tile):

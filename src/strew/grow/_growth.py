@@ -269,15 +269,20 @@ class _Grower:
         self.ring_gap_min = []  # (k,) smallest of the two gaps beside each ring slot
         self.ring_edge_mean = np.zeros(n_ref)
         self.ring_edge_max = np.zeros(n_ref)
+        all_gaps = []
         for a in range(n_ref):
             k = int(self.rings["n"][a])
             rel = self.rings["rel"][a, :k]
             ang = np.arctan2(rel[:, 1], rel[:, 0])
             gaps = np.mod(np.diff(np.r_[ang, ang[0]]), 2 * np.pi)  # gap after slot j
             self.ring_gap_min.append(np.minimum(gaps, np.roll(gaps, 1)).tolist())
+            all_gaps.append(gaps)
             ring_edges = np.linalg.norm(rel - np.roll(rel, -1, axis=0), axis=1)
             self.ring_edge_mean[a] = float(ring_edges.mean())
             self.ring_edge_max[a] = float(ring_edges.max())
+        # torus: an angular gap between placed neighbours wider than this splits them
+        # into arcs (see choose)
+        self.arc_gap = 1.5 * float(np.median(np.concatenate(all_gaps))) if all_gaps else math.pi
         ref_kind = self.ex_kind[self.ref_ids]
         self.kind_candidates = [ref_kind == k for k in range(self.n_kinds)]
         self.kind_has_candidates = [bool(c.any()) for c in self.kind_candidates]
@@ -1047,6 +1052,8 @@ class _Grower:
             order = order_target(rel)
             nb_arr = np.asarray(nb)[order]
             rel = rel[order]
+            if self.tile is not None and len(nb_arr) >= 3:
+                nb_arr, rel = self._one_arc(nb_arr, rel)
         else:
             nb_arr = np.zeros(0, dtype=np.int64)
             rel = np.zeros((0, 2))
@@ -1098,6 +1105,28 @@ class _Grower:
         a = int(ties[0]) if len(ties) == 1 else int(ties[self.rng.integers(len(ties))])
         self._last_nb = nb_arr
         return a, int(shift[a]), float(theta[a])
+
+    def _one_arc(self, nb: np.ndarray, rel: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The longest run of placed neighbours without a gap wider than :attr:`arc_gap`.
+
+        Not in the paper. §5.2 matches the target's neighbours, in angular order, to
+        consecutive ring slots (no skipping). In the plane the placed neighbours of a
+        seed lie on one arc of the front; on the torus, where the front meets itself, a
+        seed has neighbours from both sides with empty slots between them, and matching
+        them to consecutive slots pulls the seed off the lattice (scales_hex in a tile
+        that is a multiple of its periods: 32 of 400 elements off by up to a quarter
+        spacing). The longest arc is matched; the others are met again as the ring's
+        seeds merge with them (Fig. 6b), which pairs them with their own slots.
+        """
+        ang = np.arctan2(rel[:, 1], rel[:, 0])
+        gaps = np.mod(np.diff(ang), 2 * np.pi)
+        cut = np.flatnonzero(gaps > self.arc_gap) + 1
+        if len(cut) == 0:
+            return nb, rel
+        bounds = np.r_[0, cut, len(nb)]
+        q = int(np.argmax(np.diff(bounds)))
+        sel = slice(int(bounds[q]), int(bounds[q + 1]))
+        return nb[sel], rel[sel]
 
     def try_larger(self, s: int) -> bool:
         """Place seed ``s`` as a larger kind it misses (:meth:`missing_larger`); True when placed."""
