@@ -57,6 +57,10 @@ class Prepared:
         lie beyond the exemplar's edge). Generation copies an element only together
         with its parent, or beside the output element that stands for it (see
         ``grow``, ``_kernels.generate_proposals``).
+    follow : (n,) bool
+        Elements whose parent is their only larger Delaunay neighbour (a dot ringing
+        its disc): copied at their offset from the output element paired with the
+        parent.
     factor : float
         The exemplar's closest approach relative to ``r_p + r_q`` (0.95 of it, at most
         1), for reference: two elements intersect when ``|p - q| < rc_p + rc_q`` (or
