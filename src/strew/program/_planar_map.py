@@ -464,10 +464,14 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     last_pt = np.r_[~same_next, True]
     breaks = [allp[first_pt], allp[last_pt]]
     src_lines = shapely.linestrings(allp, indices=np.unique(cid, return_inverse=True)[1].reshape(-1))
+    # (intermediates are dropped as soon as they are used: peak memory per segment, 19.6)
+    del allp, cid, keep, cnt, ok, same_next, first_pt, last_pt
 
     # 2. snap rounding + noding + merging of overlaps (GEOS OverlayNG, fixed precision)
     noded = shapely.union_all(src_lines, grid_size=g)
+    del src_lines
     coords, idx = shapely.get_coordinates(shapely.get_parts(noded), return_index=True)
+    del noded
     if len(coords) == 0:
         return _empty_topology(g)
     ij = np.rint(coords / g).astype(np.int64)
@@ -475,6 +479,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     na_ij, nb_ij = ij[:-1][same], ij[1:][same]
     nz = np.any(na_ij != nb_ij, axis=1)
     na_ij, nb_ij = na_ij[nz], nb_ij[nz]
+    del coords, idx, ij, same, nz
     na, nb = na_ij * g, nb_ij * g
     n_seg = len(na)
     if n_seg == 0:
@@ -498,6 +503,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     sdir = sb[qj] - sa[qj]
     orient = np.where((ndir[qi] * sdir).sum(axis=1) >= 0, 1, -1)
     cur = scurve[qj]
+    del tree, mids, ok, covered, missing, ndir, sdir, sa, sb, scurve, qj, na, nb
     # one (curve, orientation) per noded segment and curve
     order = np.lexsort((orient, cur, qi))
     qi, cur, orient = qi[order], cur[order], orient[order]
@@ -522,11 +528,13 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     # orient every noded segment along its primary curve
     a_ij = np.where(flip[:, None], nb_ij, na_ij)
     b_ij = np.where(flip[:, None], na_ij, nb_ij)
+    del na_ij, nb_ij, flip, qi, cur, orient, order, first, starts, ends, single
 
     # 4. raw vertices (every noded point)
     allij = np.concatenate([a_ij, b_ij])
     uniq, inv = _unique_rows(allij)
     su, sv = inv[:n_seg], inv[n_seg:]
+    del allij, a_ij, b_ij
     n_raw = len(uniq)
     out_cnt = np.bincount(su, minlength=n_raw)
     in_cnt = np.bincount(sv, minlength=n_raw)
@@ -540,6 +548,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     # a pass-through vertex joins two segments of the same attribution
     cand = np.flatnonzero(~is_break)
     is_break[cand[key_id[in_seg[cand]] != key_id[out_seg[cand]]]] = True
+    del out_cnt, in_cnt, bij, breaks, cand, in_seg
 
     # 5. chain segments into maximal edges: chain k is cseg[coff[k]:coff[k + 1]] (flat
     # 8-byte arrays, not a list per chain: issue 19.6, memory per segment)
@@ -550,6 +559,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     cseg_a = array("q")
     clen_a = array("q")
     nxt_l = nxt.tolist()
+    del nxt, out_seg
     starts_l = np.flatnonzero(is_break[su]).tolist()
     for s in starts_l:
         n0 = len(cseg_a)
@@ -629,7 +639,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     edge_source = vmap[ev_sorted[eoff[:-1]]] if n_e else np.zeros(0, np.int64)
     edge_target = vmap[ev_sorted[eoff[1:] - 1]] if n_e else np.zeros(0, np.int64)
     first_seg = cseg[coff[:-1][eorder]].tolist()
-    del ev_sorted
+    del ev_sorted, voff, coff, cseg, cseg_a, clen, clen_a, ev_len, eorder, inv, su, sv, uniq, vmap
     e_labels, e_left_l, e_right_l = [], [], []
     for kid in key_id[first_seg].tolist():
         labs, left_l, right_l = labels_of(kid)
@@ -643,6 +653,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     if n_e:
         lines = shapely.linestrings(edge_points.all_rows(), indices=np.repeat(np.arange(n_e), edge_points.lengths()))
         polys = [p for p in shapely.get_parts(shapely.polygonize(lines)) if p.area > 0]
+        del lines
     left = np.zeros(n_e, dtype=np.int64)
     right = np.zeros(n_e, dtype=np.int64)
     if polys:
@@ -665,6 +676,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         probes = np.concatenate([mid + off * nl, mid - off * nl])
         ptree = shapely.STRtree(parr)
         qi, qf = ptree.query(shapely.points(probes), predicate="within")
+        del ptree, p0, p1, d, mid, nl, b4, cxy, parr
         owner = np.zeros(len(probes), dtype=np.int64)
         # nested faces cannot both contain a probe (holes), but keep the smallest anyway
         order = np.argsort(-areas[qf], kind="stable")
