@@ -10,6 +10,7 @@ least-squares relaxation. :func:`flip_edge` edits the connectivity (Fig. 3) and
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
@@ -43,6 +44,9 @@ __all__ = [
 ]
 
 MODES = ("fixed", "rotate", "flow")
+#: periodic tiles: the most a lattice exemplar's centres are moved (relative) to fit a
+#: tile that its periods do not divide (see ``_grow_snapped``)
+MAX_STRETCH = 0.05
 
 SPEC = MethodSpec(
     name="grow",
@@ -173,9 +177,13 @@ def grow(
         paper): the growth lives on the torus, its seeds wrap around the tile's edges
         and meet the elements grown from the other side there (Fig. 6b merges them), and
         the output keeps each element once at its canonical place with
-        ``meta["periodic"]`` (:mod:`strew._periodic`). A lattice exemplar repeats
-        exactly only when the tile is a multiple of its periods; otherwise its rows
-        meet at the seam with a few dislocations. Not with ``context`` or ``spray``.
+        ``meta["periodic"]`` (:mod:`strew._periodic`). A lattice exemplar
+        (:func:`lattice_periods`) repeats exactly only in a multiple of its periods: in
+        another tile (fixed mode) it is grown in the nearest multiple and its centres
+        are moved by at most :data:`MAX_STRETCH` to fill the tile, where that leaves no
+        overlap; otherwise its rows meet at the tile's edges with a gap or
+        dislocations. Either way a :class:`~strew._feedback.ResultWarning` names the
+        sizes that repeat it unchanged. Not with ``context`` or ``spray``.
     rng : int, Generator or None
         Ties between equally good references and the jitter draw from it. Recorded in
         ``meta`` (``seed`` or ``rng_state``) with every parameter (:data:`SPEC`).
@@ -296,13 +304,81 @@ def lattice_periods(ref: Reference, tol: float = 0.02) -> tuple[float, float] | 
     return float(along_x.min()), float(along_y.min())
 
 
-def _warn_lattice_misfit(ref: Reference, tile: Sequence[float]) -> None:
-    """Say when a lattice exemplar's periods do not divide the repeat tile (issue 18).
+def _lattice_snaps(ref: Reference, tile: Sequence[float]) -> list[tuple[float, float, float, float]]:
+    """Tiles that a lattice exemplar's periods divide, to grow it in instead of ``tile``.
 
-    Growth then closes the torus with a seam of dislocations along the tile's edges
-    (scales_hex in 200 x 150: 86% of the seam's fidelity windows fail, none in
-    200 x 173.2); the warning names the nearest tiles that repeat the lattice exactly.
+    The multiples of the periods just below and just above the tile on each axis, within
+    :data:`MAX_STRETCH`, the least moved first (at most three). Empty when the exemplar
+    is not a lattice (:func:`lattice_periods`) or its periods divide the tile already.
     """
+    per = lattice_periods(ref)
+    if per is None:
+        return []
+    x0, y0, w, h = (float(v) for v in tile)
+    if all(abs(v / q - round(v / q)) <= 0.02 for v, q in zip((w, h), per)):
+        return []
+    # per axis the multiples just below and just above; a stretch of more than
+    # MAX_STRETCH would change the pattern more than a seam does
+    axes = []
+    for v, q in zip((w, h), per):
+        m = {q * max(1, math.floor(v / q + 0.02)), q * math.ceil(v / q - 0.02)}
+        axes.append([c for c in m if abs(v / c - 1) <= MAX_STRETCH])
+    out = [(x0, y0, nw, nh) for nw in axes[0] for nh in axes[1]]
+    # the least moved first; at equal moves, spreading (no new contacts) before squeezing
+    out.sort(key=lambda t: (round(max(abs(w / t[2] - 1), abs(h / t[3] - 1)), 9), t[2] + t[3]))
+    return out[:3]
+
+
+def _grow_snapped(ref: Reference, params: GrowParams, snap: tuple[float, float, float, float], per: tuple[float, float], **kw: Any) -> Arrangement | None:
+    """Grow a lattice in ``snap`` (a multiple of its periods) and stretch the positions
+    to the asked tile; None when that made an overlap (then grow in the tile as asked).
+
+    Not in the paper (issue 18). A lattice repeats exactly only in a multiple of its
+    periods; grown in another tile its rows meet at the tile's edges with a gap or a
+    dislocation (scales_hex in 200 x 150: a visible stripe one third of a row high).
+    The lattice is grown in a multiple of its periods and its centres are moved by the
+    ratio of the sizes (scales_hex in 200 x 150: grown in 200 x 155.9, rows 3.8% closer),
+    if that leaves no overlap, and a ResultWarning says so with the sizes that need no
+    stretch.
+    """
+    import dataclasses
+    import warnings
+
+    from .. import _periodic
+    from .._feedback import ResultWarning
+    from ..metrics import wrap_overlaps
+
+    x0, y0, w, h = params.tile  # type: ignore[misc]
+    _, _, nw, nh = snap
+    if params.start is not None and not (x0 < params.start[0] < x0 + nw and y0 < params.start[1] < y0 + nh):
+        return None
+    sub = dataclasses.replace(params, tile=snap, region=Region.rectangle(nw, nh, x0, y0))
+    try:
+        arr = grow_reference(ref, sub, **kw)
+    except InputError:
+        return None  # the snapped tile is too small for the exemplar's neighbourhoods
+    fx, fy = w / nw, h / nh
+    arr = arr.replace(x=x0 + (arr.x - x0) * fx, y=y0 + (arr.y - y0) * fy, region=params.region)
+    if params.avoid_overlaps:
+        wo = wrap_overlaps(_periodic.mark(arr, params.tile))
+        if wo["inside"] or wo["across"]:
+            return None
+    lo = [max(1, math.floor(v / q + 0.02)) * q for v, q in zip((w, h), per)]
+    up = [math.ceil(v / q - 0.02) * q for v, q in zip((w, h), per)]
+    warnings.warn(
+        f"grow: the exemplar is a lattice with periods {per[0]:.4g} x {per[1]:.4g}, which do not divide a {w:g} x {h:g} "
+        f"tile: grew it in {nw:.6g} x {nh:.6g} and moved its centres by a factor {fx:.4g} x {fy:.4g} to fill the tile; "
+        f"--size {lo[0]:.6g}x{lo[1]:.6g} or {up[0]:.6g}x{up[1]:.6g} would repeat it unstretched",
+        ResultWarning,
+        stacklevel=4,
+    )
+    return arr
+
+
+def _warn_lattice_misfit(ref: Reference, tile: Sequence[float]) -> None:
+    """Say when a lattice exemplar's periods do not divide the repeat tile and it could
+    not be grown in a multiple (:func:`_grow_snapped`): its rows meet at the tile's edges
+    with a gap or dislocations; the warning names the nearest tile that fits."""
     import warnings
 
     from .._feedback import ResultWarning
@@ -311,13 +387,12 @@ def _warn_lattice_misfit(ref: Reference, tile: Sequence[float]) -> None:
     if per is None:
         return
     w, h = float(tile[2]), float(tile[3])
-    fits = [abs(v / p - round(v / p)) <= 0.02 for v, p in zip((w, h), per)]
-    if all(fits):
+    if all(abs(v / p - round(v / p)) <= 0.02 for v, p in zip((w, h), per)):
         return
     near = [max(1, round(v / p)) * p for v, p in zip((w, h), per)]
     warnings.warn(
         f"grow: the exemplar is a lattice with periods {per[0]:.4g} x {per[1]:.4g}; a {w:g} x {h:g} tile is not a "
-        f"multiple of them, so its rows meet at the tile's edges with dislocations; --size {near[0]:.6g}x{near[1]:.6g} "
+        f"multiple of them, so its rows meet at the tile's edges with a gap or dislocations; --size {near[0]:.6g}x{near[1]:.6g} "
         "would repeat it exactly",
         ResultWarning,
         stacklevel=4,
@@ -471,7 +546,15 @@ def _grow(
         clusters=clusters,
         tile=tile,
     )
-    if tile is not None and mode == "fixed":
-        _warn_lattice_misfit(ref, tile)
     meta = {"method": "grow"}
+    if tile is not None and mode == "fixed" and jitter_scale == 0 and jitter_rotation == 0:
+        snaps = _lattice_snaps(ref, tile)
+        state = rng.bit_generator.state
+        for snap in snaps:
+            out = _grow_snapped(ref, params, snap, lattice_periods(ref),  # type: ignore[arg-type]
+                                rng=rng, progress=progress, should_cancel=should_cancel, meta=meta)
+            if out is not None:
+                return out
+            rng.bit_generator.state = state
+        _warn_lattice_misfit(ref, tile)
     return grow_reference(ref, params, rng=rng, progress=progress, should_cancel=should_cancel, meta=meta)
