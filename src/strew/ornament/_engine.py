@@ -152,7 +152,11 @@ class _Placed:
         b = self.bucket
         i0, i1 = int(math.floor((cx - reach) / b)), int(math.floor((cx + reach) / b))
         j0, j1 = int(math.floor((cy - reach) / b)), int(math.floor((cy + reach) / b))
-        if n > 4096 and (i1 - i0 + 1) * (j1 - j0 + 1) <= 36:  # a scan is cheaper below that
+        # the buckets cost about 64 times what one proxy of a vectorised scan costs: use
+        # them when they cover fewer cells than that fraction of the proxies (issue 19.6:
+        # a scan of every proxy made each query linear in the number placed). Both give
+        # the same sorted indices.
+        if (i1 - i0 + 1) * (j1 - j0 + 1) * 64 <= n:
             found: list[int] = []
             get = self.buckets.get
             for bi in range(i0, i1 + 1):
@@ -415,6 +419,8 @@ class _Grower:
             ii, jj = np.nonzero(covered == 0)
             self._tile_rows, self._tile_cols = slice(int(ii.min()), int(ii.max()) + 1), slice(int(jj.min()), int(jj.max()) + 1)
         self._commits = 0
+        self._dmax: float | None = None
+        self._dmax_calls = 0
         self._edge_dist = None
         if periodic is not None:
             # distance in cells from each cell to the tile's cells
@@ -656,7 +662,7 @@ class _Grower:
         self.ex[: self.n_ex] = keep
         # circles that contained a removed point may be eligible again: they lie within
         # the largest circle radius of it
-        reach = float(self.dist_all[np.isfinite(self.dist_all)].max()) * self.h + 2 * self.h
+        reach = self._largest_distance() * self.h + 2 * self.h
         bs = _BLOCK * self.h
         br, bc = self.dirty.shape
         bx0 = self.x0 + np.arange(bc) * bs
@@ -665,6 +671,21 @@ class _Grower:
             dx = np.maximum(0, np.maximum(bx0 - q[0], q[0] - (bx0 + bs)))
             dy = np.maximum(0, np.maximum(by0 - q[1], q[1] - (by0 + bs)))
             self.dirty |= (dy[:, None] ** 2 + dx[None, :] ** 2) <= reach * reach
+
+    def _largest_distance(self) -> float:
+        """The largest finite distance of the raster, in cells, or an upper bound of it.
+
+        In a panel every distance is finite from the start and only falls as elements
+        are placed, so a value measured earlier bounds it; it is measured again every 32
+        calls (a full pass over the raster at each success made growth quadratic; issue
+        19.6). The bound only widens the blocks marked dirty, which are scanned again to
+        the same result. On a torus cells become finite as growth reaches them: measured
+        each time.
+        """
+        self._dmax_calls += 1
+        if self.periodic is not None or self._dmax is None or self._dmax_calls % 32 == 0:
+            self._dmax = float(self.dist_all[np.isfinite(self.dist_all)].max())
+        return self._dmax
 
     def _skip_disc(self, c: np.ndarray, radius: float) -> None:
         """Mark every cell centred within ``radius`` of ``c`` as rejected."""

@@ -146,6 +146,14 @@ def cover_polygon(rows, cols, x0, y0, h, pts):
 
 
 @numba.njit(**_NB)
+def _mark(dirty, bi, bj, brows, bcols):
+    """Mark block ``(bi, bj)`` and its eight neighbours dirty."""
+    for ui in range(max(0, bi - 1), min(brows, bi + 2)):
+        for uj in range(max(0, bj - 1), min(bcols, bj + 2)):
+            dirty[ui, uj] = True
+
+
+@numba.njit(**_NB)
 def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, ring, inq):
     """Lower the distance field from new obstacle cells; mark changed blocks dirty.
 
@@ -186,7 +194,11 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
     rows, cols = dist.shape
     brows, bcols = dirty.shape
     size = ring.shape[0]
-    touched = np.zeros((brows, bcols), np.bool_)
+    # the blocks of changed cells and their neighbours are marked dirty as cells change
+    # (not by a pass over every block at the end: issue 19.6, the cost of a wave is its
+    # own cells, not the raster's size)
+    last_bi = -1
+    last_bj = -1
     head = 0
     count = 0
     n = 0
@@ -197,7 +209,7 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
             dist[si, sj] = 0.0
             near[si, sj] = s
             skip[si, sj] = False
-            touched[si // block, sj // block] = True
+            _mark(dirty, si // block, sj // block, brows, bcols)
             count += 1
             if not inq[s]:
                 inq[s] = True
@@ -233,19 +245,18 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
                     dist[ni, nj] = d
                     near[ni, nj] = q
                     skip[ni, nj] = False
-                    touched[ni // block, nj // block] = True
+                    bi = ni // block
+                    bj = nj // block
+                    if bi != last_bi or bj != last_bj:
+                        _mark(dirty, bi, bj, brows, bcols)
+                        last_bi = bi
+                        last_bj = bj
                     count += 1
                     c = ni * cols + nj
                     if not inq[c]:
                         inq[c] = True
                         ring[(head + n) % size] = c
                         n += 1
-    for bi in range(brows):
-        for bj in range(bcols):
-            if touched[bi, bj]:
-                for ui in range(max(0, bi - 1), min(brows, bi + 2)):
-                    for uj in range(max(0, bj - 1), min(bcols, bj + 2)):
-                        dirty[ui, uj] = True
     return count
 
 
