@@ -226,9 +226,9 @@ def grow(
             arr = arr.replace(region=region)
         _say_if_short(arr, prm)
     if prm["periodic"]:
-        from .. import _periodic
+        from .._periodic import frame_of_region, mark
 
-        arr = _periodic.mark(arr, _periodic.frame_of_region(region))
+        arr = mark(arr, frame_of_region(region))
     src = exemplar.exemplar if isinstance(exemplar, Reference) else exemplar
     return stamp(arr, SPEC, src, prm, seed, region=region, context=ctx)
 
@@ -344,8 +344,8 @@ def _grow_snapped(ref: Reference, params: GrowParams, snap: tuple[float, float, 
     import dataclasses
     import warnings
 
-    from .. import _periodic
     from .._feedback import ResultWarning
+    from .._periodic import mark
     from ..metrics import wrap_overlaps
 
     x0, y0, w, h = params.tile  # type: ignore[misc]
@@ -360,7 +360,7 @@ def _grow_snapped(ref: Reference, params: GrowParams, snap: tuple[float, float, 
     fx, fy = w / nw, h / nh
     arr = arr.replace(x=x0 + (arr.x - x0) * fx, y=y0 + (arr.y - y0) * fy, region=params.region)
     if params.avoid_overlaps:
-        wo = wrap_overlaps(_periodic.mark(arr, params.tile))
+        wo = wrap_overlaps(mark(arr, params.tile))
         if wo["inside"] or wo["across"]:
             return None
     lo = [max(1, math.floor(v / q + 0.02)) * q for v, q in zip((w, h), per)]
