@@ -470,6 +470,9 @@ class _Grower:
         self._copy_state(i, g)
         if self.state[g] != DEAD:
             self.grid.setdefault(self._cell(gx, gy), []).append(g)
+        # a seed of a higher priority holds back the seeds around its images too (§5.1)
+        if self.state[g] == SEED and self.use_prio and self.seed_priority(g) > self.none_prio:
+            self.hgrid.setdefault((math.floor(gx / self.hcell), math.floor(gy / self.hcell)), set()).add(g)
         return g
 
     def _copy_state(self, i: int, g: int) -> None:
@@ -547,6 +550,8 @@ class _Grower:
             cell = self.hgrid.get((math.floor(x / self.hcell), math.floor(y / self.hcell)))
             if cell is not None:
                 cell.discard(i)
+            for g in self.ghosts.get(i, {}).values():
+                self._unhigh(g)
 
     def _move(self, i: int, x: float, y: float) -> None:
         if self.hgrid and self.state[i] == SEED:
@@ -873,8 +878,9 @@ class _Grower:
         state = self.state
         kp = self.kind_prio_list
         none = self.none_prio
+        oo = self.orig_of
         for j in [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in hg.get((cx + dx, cy + dy), ())]:
-            if j == i or state[j] != SEED:
+            if j == i or oo[j] == i or state[j] != SEED:
                 continue
             kj = kind[j]
             if (none if kj < 0 else kp[kj]) <= pi:  # seed_priority(j), inlined
@@ -895,7 +901,13 @@ class _Grower:
         x, y = self.xy[i]
         r2 = (5 * self.l) ** 2
         xy = self.xy
-        near = [j for j in self.deferred if (xy[j][0] - x) ** 2 + (xy[j][1] - y) ** 2 <= r2 and self.state[j] == SEED]
+        if self.tile is not None:  # on the torus: the nearest images
+            _, _, w, h = self.tile
+            near = [j for j in self.deferred if self.state[j] == SEED
+                    and (d := (xy[j][0] - x - w * round((xy[j][0] - x) / w), xy[j][1] - y - h * round((xy[j][1] - y) / h)))
+                    and d[0] ** 2 + d[1] ** 2 <= r2]
+        else:
+            near = [j for j in self.deferred if (xy[j][0] - x) ** 2 + (xy[j][1] - y) ** 2 <= r2 and self.state[j] == SEED]
         for j in sorted(near):
             if j in self.deferred:
                 self.deferred.discard(j)
