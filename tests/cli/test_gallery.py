@@ -37,7 +37,7 @@ NAMES = [
     "program-fig12b-cracks-arrangement",
     *(f"synth-{n}" for n in ("apples", "grid", "rings", "stripes", "two-scales", "palette")),
     *(f"synth-exemplar-{n}" for n in ("apples", "grid", "rings", "stripes")),
-    *(f"repeat-{n}{r}" for n in ("leaves", "dots") for r in ("", "-3x3")),
+    *(f"repeat-{n}{r}" for n in ("leaves", "grow-stones", "synth-grid", "dots") for r in ("", "-3x3")),
 ]
 
 # Repeat tiles: no overlaps anywhere in the infinite repeat (across the wrap too).

@@ -20,7 +20,7 @@ def _describe(arr, text: str) -> str:
 
 
 def items(rng: np.random.Generator) -> list[DemoItem]:
-    """A fill-gap leaf tile and an ornament tile, each drawn once and as a 3 x 3 ``<pattern>``."""
+    """Repeat tiles of pack, grow, synth and ornament, each drawn once and as a 3 x 3 ``<pattern>``."""
     from ..ornament import grow_ornament
     from ..pack import pack
 
@@ -33,6 +33,22 @@ def items(rng: np.random.Generator) -> list[DemoItem]:
         DemoItem("repeat-leaves-3x3", "The leaf tile repeated 3 x 3", arr, "The same tile through an SVG <pattern>: no seam.",
                  svg_options={"repeat": (3, 3)})
     )
+    from ..grow import grow
+    from ..io import load
+    from ..tiles import periodic
+
+    ex = load(example_path("grow", "stones_irregular.json"))
+    arr = grow(ex, (200, 200), periodic=True, rng=rng)
+    text = _describe(arr, "Growth on a torus: seeds wrap, and the two fronts close the 1-rings where they meet;")
+    out.append(DemoItem("repeat-grow-stones", "Repeat tile: grown stones (grow --periodic)", arr, text))
+    out.append(DemoItem("repeat-grow-stones-3x3", "The grown stone tile repeated 3 x 3", arr,
+                        "The same tile through an SVG <pattern>.", svg_options={"repeat": (3, 3)}))
+    ex = load(example_path("synth", "grid.json"))
+    arr = periodic("synth", ex, (160, 120), rng=rng)
+    text = _describe(arr, "synth on a torus of 2 x 2 tiles, each grown around its neighbours across the edges;")
+    out.append(DemoItem("repeat-synth-grid", "Repeat tile: synth grid (synth --periodic)", arr, text))
+    out.append(DemoItem("repeat-synth-grid-3x3", "The synth tile repeated 3 x 3", arr,
+                        "The same tile through an SVG <pattern>.", svg_options={"repeat": (3, 3)}))
     arr = grow_ornament("dots", (90, 60), periodic=True, rng=rng)
     text = _describe(arr, "Wong's largest empty circle searched on a torus;")
     out.append(DemoItem("repeat-dots", "Repeat tile: ornament dots (ornament --periodic)", arr, text))
