@@ -53,36 +53,9 @@ def _empty(shapes: dict[str, Shape]) -> Arrangement:
 
 
 
-# The synthesis state's elements as the studio needs them. _element_keys reads two
-# private arrays of strew.synth's state (_free_base, _born), here and nowhere else: the
-# hooks strew.synth should expose are listed in _state_part's docstring.
-def _element_keys(st: Any, idx: np.ndarray) -> np.ndarray:
-    """(len(idx),) int64 keys naming synthesis elements across removals: each element's
-    free-space block (allocated afresh for every added or re-assigned element) and source."""
-    return (st._free_base[idx].astype(np.int64) << 20) | st.src[idx].astype(np.int64)
-
-
-
-def _born(st: Any, idx: np.ndarray) -> np.ndarray:
-    """(len(idx),) int: the growth iteration in which each synthesis element was added."""
-    return st._born[idx]
-
-
 def _visible(arr: Arrangement) -> np.ndarray:
     from ..metrics import visible
 
     return visible(arr)
 
-
-
-def _state_part(st: Any, idx: np.ndarray) -> Arrangement:
-    """Elements ``idx`` of a synthesis state as an arrangement (no columns).
-
-    Hooks wanted from :mod:`strew.synth` so that the studio reads no private state:
-    ``SynthState.elements(idx) -> Arrangement`` (this function),
-    ``SynthState.element_keys(idx)`` (:func:`_element_keys`), ``SynthState.born`` (the
-    iteration each element was added in) and a public ``overlap_free`` on the state.
-    """
-    prep, src, pos = st.prep, st.src, st.pos
-    return Arrangement(prep.shapes, prep.kind[src[idx]].astype(np.int64), pos[idx, 0], pos[idx, 1], prep.rotation[src[idx]], prep.scale[src[idx]])
 

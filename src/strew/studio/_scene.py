@@ -18,7 +18,7 @@ from .._errors import InputError
 from ..arrangement import Arrangement, concat
 from ..editing import Bounds, wrap_stroke
 from ..region import Region, cut_along
-from ._common import Emit, _born, _element_keys, _empty, _r, _state_part, _visible
+from ._common import Emit, _empty, _r, _visible
 from ._protocol import get_names, get_number, get_points, get_str
 
 __all__ = ["SceneMixin"]
@@ -178,10 +178,10 @@ class SceneMixin:
         never goes back."""
         st = self.state
         idx = np.arange(n0, st.n)
-        hide = self._out_of_bounds(_state_part(st, idx))
+        hide = self._out_of_bounds(st.elements(idx))
         op = self._op
         if thinned and op is not None and (op.get("density", 1.0) < 1.0 or op.get("pen")):
-            hide |= (_born(st, idx) >= op["it0"]) | np.isin(_element_keys(st, idx), op["dropped"])
+            hide |= (st.born[idx] >= op["it0"]) | np.isin(st.element_keys(idx), op["dropped"])
         return hide
 
     def _thin(self) -> None:
@@ -201,9 +201,9 @@ class SceneMixin:
         # a pen's pressure scales the density of what its segment grew
         keep = op["density"] * (self.stroke.get("pressure", 1.0) if self.stroke is not None else 1.0)
         idx = np.arange(op["n0"], st.n)
-        new = idx[_born(st, idx) >= op["it0"]]
+        new = idx[st.born[idx] >= op["it0"]]
         drop = self.rng.random(len(new)) >= keep
-        op["dropped"] = np.union1d(op["dropped"], _element_keys(st, new[drop]))
+        op["dropped"] = np.union1d(op["dropped"], st.element_keys(new[drop]))
         op["it0"] = st.iterations + 1  # growth iterations count up before they add
 
     def _settle(self, n0: int, *, thinned: bool) -> np.ndarray:
@@ -296,7 +296,7 @@ class SceneMixin:
         st = self.state
         if st is None or st.n == 0:
             return out_f, np.zeros(0, bool)
-        part = _state_part(st, np.arange(st.n))
+        part = st.elements()
         out_s = self._out_of_bounds(part) & ~self._locked(part) & ~np.asarray(st.prep.void, bool)[st.src]
         return out_f, out_s
 

@@ -18,7 +18,7 @@ import shapely
 from .._errors import Cancelled, InputError
 from ..arrangement import Arrangement, concat
 from ..editing import near_stroke, overlap_drops, overlapping
-from ._common import Emit, FIRST_SPRAY, TOOLS, _r, _state_part
+from ._common import Emit, FIRST_SPRAY, TOOLS, _r
 from ._protocol import get_number, get_points, get_str
 
 __all__ = ["ToolsMixin"]
@@ -270,8 +270,7 @@ class ToolsMixin:
             return
         pos = st.pos
 
-        def state_part(idx: np.ndarray) -> Arrangement:
-            return _state_part(st, idx)
+        state_part = st.elements
 
         new_idx = np.arange(n0, st.n)
         rmax = float(np.max(state_part(new_idx).radii))
@@ -413,15 +412,9 @@ class ToolsMixin:
         """Eraser (Davison §5.4): elements whose centre lies within ``radius`` of the path."""
         from .. import synth
 
-        if self.state is not None and self.state.n:
-            if self.layers["locked"]:  # the same rule as synth.erase, locked layers kept
-                st = self.state
-                part = _state_part(st, np.arange(st.n))
-                gone = near_stroke(part.xy, pts, radius) & ~self._locked(part)
-                if gone.any():
-                    st.remove(gone)
-            else:
-                synth.erase(self.state, pts, radius)
+        st = self.state
+        if st is not None and st.n:
+            synth.erase(st, pts, radius, keep=self._locked(st.elements()) if self.layers["locked"] else None)
         if len(self.fixed):
             gone = near_stroke(self.fixed.xy, pts, radius) & ~self._locked(self.fixed)
             if gone.any():

@@ -592,7 +592,7 @@ def _drop_spent_brush_points(state: SynthState) -> None:
     state.brush_radii = state.brush_radii[keep]
 
 
-def erase(state: SynthState, points: np.ndarray, radius: float) -> int:
+def erase(state: SynthState, points: np.ndarray, radius: float, *, keep: np.ndarray | None = None) -> int:
     """Eraser (§5.4): remove elements and brush points within ``radius`` of a path.
 
     Free space around the hole comes back to life so that a later fill or brush can
@@ -600,9 +600,16 @@ def erase(state: SynthState, points: np.ndarray, radius: float) -> int:
 
     Parameters
     ----------
+    state : SynthState
+        ``n`` elements; changed in place.
     points : (m, 2) float
         The eraser path (a polyline; one point erases a disc).
     radius : float
+        The bound counts as within.
+    keep : (n,) bool, optional
+        Elements that stay even within reach of the path (a front end's locked layers).
+        Brush points are removed and free space revived all the same. Context elements
+        always stay.
 
     Returns
     -------
@@ -611,6 +618,10 @@ def erase(state: SynthState, points: np.ndarray, radius: float) -> int:
     """
     if not radius > 0:
         raise InputError(f"eraser: radius must be positive, got {radius:g}")
+    if keep is not None:
+        keep = np.asarray(keep, dtype=bool)
+        if keep.shape != (state.n,):
+            raise InputError(f"eraser: keep must be one flag per element ({state.n}), got shape {keep.shape}")
     pts = np.asarray(points, float).reshape(-1, 2)
     if len(pts) == 0:
         return 0
@@ -623,10 +634,12 @@ def erase(state: SynthState, points: np.ndarray, radius: float) -> int:
         return shapely.dwithin(path, shapely.points(p), radius)
 
     if len(state.brush_radii):
-        keep = ~near(state.brush_points)
-        state.brush_points = state.brush_points[keep]
-        state.brush_radii = state.brush_radii[keep]
+        kb = ~near(state.brush_points)
+        state.brush_points = state.brush_points[kb]
+        state.brush_radii = state.brush_radii[kb]
     gone = near(state.pos)
+    if keep is not None:
+        gone &= ~keep
     if not gone.any():
         return 0
     removed = state.remove(gone)

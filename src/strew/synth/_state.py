@@ -136,6 +136,12 @@ class SynthState:
         Exemplar element used for k-coherence search (o_e, §5.1); optimisation
         re-assigns it to the best match.
     horizon : (n,) bool
+    fixed : (n,) bool
+        Context elements.
+    born : (n,) int
+        The iteration each element was added in.
+    iterations : int
+        Growth iterations so far (Algorithm 1's loop, over all calls).
     """
 
     def __init__(self, prep: Prepared, region: Region | None = None, params: SynthParams | None = None, rng: Any = None) -> None:
@@ -183,6 +189,57 @@ class SynthState:
         """(n,) bool: context elements (see ``_context``): seen as neighbours, never
         moved, removed or output."""
         return self._fixed[: self.n]
+
+    @property
+    def born(self) -> np.ndarray:
+        """(n,) int: the growth iteration (:attr:`iterations`) in which each element was
+        added (Algorithm 1's loop counter; context elements: when the context was set)."""
+        return self._born[: self.n]
+
+    def element_keys(self, idx: np.ndarray | None = None) -> np.ndarray:
+        """Keys that name elements across removals and re-assignments.
+
+        An element's index shifts when an earlier element is removed; its key does not.
+        The key combines the element's free-space block (§5.1; allocated afresh for every
+        added or re-assigned element, so never shared by two elements of one state) and its
+        exemplar element.
+
+        Parameters
+        ----------
+        idx : (m,) int, optional
+            Elements (default: all ``n``).
+
+        Returns
+        -------
+        (m,) int64
+            Distinct for distinct live elements; an element keeps its key until it is
+            removed or re-assigned (:meth:`reassign`).
+        """
+        idx = np.arange(self.n) if idx is None else np.asarray(idx, np.int64)
+        return (self._free_base[idx].astype(np.int64) << 20) | self._src[idx].astype(np.int64)
+
+    def elements(self, idx: np.ndarray | None = None) -> Arrangement:
+        """Elements ``idx`` as a bare arrangement: shapes, kinds and poses only.
+
+        Unlike :meth:`to_arrangement` nothing is left out (voids, context elements and
+        overlapping elements included), no columns are built and no region is attached,
+        so indices into the result are indices into the state.
+
+        Parameters
+        ----------
+        idx : (m,) int, optional
+            Elements (default: all ``n``).
+
+        Returns
+        -------
+        Arrangement
+            ``m`` elements, in the order of ``idx``.
+        """
+        prep = self.prep
+        idx = np.arange(self.n) if idx is None else np.asarray(idx, np.int64)
+        src = self._src[idx]
+        pos = self._pos[idx]
+        return Arrangement(prep.shapes, prep.kind[src].astype(np.int64), pos[:, 0], pos[:, 1], prep.rotation[src], prep.scale[src])
 
     @property
     def r(self) -> np.ndarray:
@@ -379,13 +436,10 @@ class SynthState:
             inside = self.region.contains_geometry(arr.geometry, tolerance=1e-9 * max(1.0, *map(abs, self.region.bounds)))
             arr = arr.select(inside)
         if drop_overlaps and self.prep.overlap_free and len(arr) > 1:
+            from ..editing import overlap_drops
             from ..metrics import overlaps
 
             pairs, _ = overlaps(arr)
-            if len(pairs):
-                dropped = np.zeros(len(arr), bool)
-                for i, j in pairs:
-                    if not dropped[i]:
-                        dropped[j] = True
-                arr = arr.select(~dropped)
+            if len(pairs):  # the later of two overlapping elements goes, unless the earlier went
+                arr = arr.select(~overlap_drops(pairs, 0, np.ones(len(arr), bool)))
         return arr
