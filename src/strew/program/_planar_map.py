@@ -468,6 +468,19 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     del allp, cid, keep, cnt, ok, same_next, first_pt, last_pt
 
     # 2. snap rounding + noding + merging of overlaps (GEOS OverlayNG, fixed precision)
+    # GEOS nodes the curves faster when neighbours come together (about 30% at 40k random
+    # segments, issue 19.6): curves in the order of the cells of a coarse grid that their
+    # centres fall in (row by row, snaking). The map does not depend on this order: every
+    # cell is numbered from its grid coordinates below.
+    if len(src_lines) > 256:
+        b = shapely.bounds(src_lines)
+        c = 0.5 * (b[:, :2] + b[:, 2:])
+        k = max(1, int(np.sqrt(len(src_lines) / 64)))
+        lo, span = c.min(axis=0), np.maximum(np.ptp(c, axis=0), 1e-300)
+        cx = np.minimum((k * (c[:, 0] - lo[0]) / span[0]).astype(np.int64), k - 1)
+        cy = np.minimum((k * (c[:, 1] - lo[1]) / span[1]).astype(np.int64), k - 1)
+        src_lines = src_lines[np.lexsort((np.where(cy % 2 == 1, -cx, cx), cy))]
+        del b, c, cx, cy
     noded = shapely.union_all(src_lines, grid_size=g)
     del src_lines
     coords, idx = shapely.get_coordinates(shapely.get_parts(noded), return_index=True)
