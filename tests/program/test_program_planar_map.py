@@ -167,3 +167,48 @@ def test_random_segments_euler_and_cover(segs):
     # faces tile the polygonal area without overlap
     if pm.n_faces > 1:
         assert np.isclose(pm.face_areas().sum(), shapely.union_all([f.polygon for f in pm.bounded_faces]).area)
+
+
+def _cells(pm):
+    t = pm._t
+    return (
+        t.vertex_ij.tolist(),
+        [p.tolist() for p in t.edge_points],
+        t.edge_source.tolist(),
+        t.edge_target.tolist(),
+        t.edge_left.tolist(),
+        t.edge_right.tolist(),
+        [sorted(s) for s in t.edge_labels],
+        [sorted(s) for s in t.face_labels],
+        [None if p is None else p.wkb for p in t.face_polygons],
+    )
+
+
+def test_map_does_not_depend_on_curve_order():
+    # above 256 curves the curves reach GEOS in grid order (issue 19.6): every cell, its
+    # index, orientation and labels must still be a function of the curves alone
+    rng = np.random.default_rng(5)
+    p = rng.uniform(0, 300, (400, 2))
+    q = p + rng.uniform(-25, 25, (400, 2))
+    curves = [Curve(np.stack([a, b]), labels=f"s{k % 3}", left="L" if k % 2 else None) for k, (a, b) in enumerate(zip(p, q))]
+    ref = _cells(induce(Curves(tuple(curves))))
+    perm = rng.permutation(len(curves))
+    assert _cells(induce(Curves(tuple(curves[k] for k in perm)))) == ref
+    assert len(ref[1]) > 400  # crossings split the segments
+
+
+def test_edge_storage_is_a_sequence_of_polylines():
+    pm = induce(Curves((Curve([(0, 0), (10, 10)]), Curve([(0, 10), (10, 0)]), Curve(_square(2, 2, 8, 8), closed=True))))
+    pts = pm._t.edge_points
+    assert len(pts) == pm.n_edges == len(list(pts))
+    for k, e in enumerate(pm.edges):
+        assert np.array_equal(e.points, pts[k]) and e.points.shape[1] == 2
+        assert np.array_equal(np.rint(e.points / pm.grid).astype(np.int64), pm._t.edge_ij[k])
+        assert np.allclose(e.points[0], location(source_vertex(e))) and np.allclose(e.points[-1], location(target_vertex(e)))
+    assert np.array_equal(pts[-1], pts[pm.n_edges - 1])
+    try:
+        pts[pm.n_edges]
+    except IndexError:
+        pass
+    else:
+        raise AssertionError("no IndexError past the last edge")
