@@ -104,6 +104,9 @@ def test_eraser_keep_mask_keeps_those_and_erases_the_rest():
     removed = erase(s, path, 14.0, keep=keep)
     assert removed == int((near & ~keep).sum()) > 0
     assert np.array_equal(s.element_keys(), keys[~(near & ~keep)])
+    # the rim of the hole is back on the horizon (optimised next), the kept elements not
+    held = np.isin(s.element_keys(), keys[keep])
+    assert s.horizon[~held].any() and not s.horizon[held].any()
     # brush points are removed as without a mask (the studio's locked eraser skipped this)
     assert s.brush_points.tolist() == [[5.0, 5.0]]
     # free space around the hole lives again: a fill adds elements in it

@@ -226,6 +226,21 @@ class SprayGrowth:
 
     # ------------------------------------------------------------------ growth
     @property
+    def reach(self) -> float:
+        """Bounding radius of the widest element this growth can place.
+
+        Its widest kind at the exemplar's largest scale, with the scale jitter on top
+        (§3), and never less than the kind's own radius: the bound the growth itself
+        tests overlaps with (obstacles from :meth:`add_obstacles` are not counted). A
+        caller that hands in obstacles near the stroke needs those within ``radius +
+        reach`` of it, plus their own radii.
+        """
+        g = self._g
+        widest = float(g.kind_radius.max()) if len(g.kind_radius) else 0.0
+        top = float(np.max(np.abs(g.ex_scale))) if len(g.ex_scale) else 1.0
+        return widest * max(1.0, top * (1.0 + g.p.jitter_scale))
+
+    @property
     def pending(self) -> bool:
         """True when seeds within the spray area may still grow."""
         return bool(self._g.heap)

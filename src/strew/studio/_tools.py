@@ -331,7 +331,7 @@ class ToolsMixin:
                 rng=int(self.rng.integers(2**31)),
             )
             stroke["spray"] = g
-            stroke["spray_reach"] = self._spray_reach(self._selection()[0])
+            stroke["spray_reach"] = g.reach
             stroke["spray_scene"] = self._spray_scene()
         self._spray_obstacles(g, pts, radius)
         g.add_points(pts)
@@ -353,15 +353,6 @@ class ToolsMixin:
                     emit(m)
                     time.sleep(0)  # let the server's event loop send it (growth holds the GIL)
             chunk = chunk_size
-
-    def _spray_reach(self, name: str) -> float:
-        """Bounding radius of the widest element a spray growth from exemplar ``name`` can
-        place: its widest kind at its largest scale, jittered (Ijiri §3). The growth
-        knows it too; it does not say so publicly."""
-        ex = self.palette[name]
-        widest = max((ex.shapes[k].radius for k in ex.kinds), default=0.0)
-        top = float(np.max(ex.scale)) if len(ex) else 1.0
-        return widest * max(1.0, top * (1.0 + self.jitter_scale))
 
     def _spray_scene(self) -> dict[str, Any] | None:
         """The scene when a spray stroke starts, indexed for :meth:`_spray_obstacles`."""

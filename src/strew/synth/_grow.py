@@ -608,8 +608,9 @@ def erase(state: SynthState, points: np.ndarray, radius: float, *, keep: np.ndar
         The bound counts as within.
     keep : (n,) bool, optional
         Elements that stay even within reach of the path (a front end's locked layers).
-        Brush points are removed and free space revived all the same. Context elements
-        always stay.
+        Brush points are removed and free space revived all the same, but kept elements
+        are not put back on the horizon, so that the next fill or brush does not move
+        them. Context elements always stay.
 
     Returns
     -------
@@ -642,6 +643,8 @@ def erase(state: SynthState, points: np.ndarray, radius: float, *, keep: np.ndar
         gone &= ~keep
     if not gone.any():
         return 0
+    # the kept flags of what remains (context elements stay too: SynthState.remove)
+    kept = None if keep is None else keep[~(gone & ~state.fixed)]
     removed = state.remove(gone)
     # revive free space of elements around the hole
     if state.n:
@@ -653,5 +656,6 @@ def erase(state: SynthState, points: np.ndarray, radius: float, *, keep: np.ndar
             m = state.prep.free_ptr[s + 1] - state.prep.free_ptr[s]
             state._alive[b : b + m] = True
             state._fails[b : b + m] = 0
-        state._horizon[around] = True
+        # back on the horizon (§5.2: optimised by the next fill or brush), kept ones not
+        state._horizon[around if kept is None else around[~kept[around]]] = True
     return removed
