@@ -104,6 +104,13 @@ class GrowParams:
     fit_reach: float = 0.5
     #: flow mode: the largest turn of an element's frame from the flow direction
     flow_max_turn: float = math.pi / 18
+    #: flow mode: each ring offset of a placed element is turned further by this share
+    #: of the field's turn between the element and the offset's end (``_bent_ring``)
+    flow_bend: float = 0.5
+    #: flow mode: carry the fitted frame on by the field's turn from the neighbours
+    flow_carry: bool = True
+    #: an element that would overlap may move up to this share of l_short (``_nudge``)
+    nudge: float = 0.25
     #: clustered exemplars grow their hubs first, then each hub's satellites
     #: (:mod:`strew.grow._clusters`); off with a user's priorities or edge flips
     clusters: bool = False
@@ -353,6 +360,8 @@ class _Grower:
         self.edges: set[tuple[int, int]] = set()
         self.heap: list[tuple[float, int]] = []
         self.deferred: set[int] = set()
+        #: the largest reference ring a seed of each kind (-1: any) can be matched to
+        self._ring_max: dict[int, int] = {}
         self.origin = (0.0, 0.0)
         # tools
         self.region = p.region
@@ -1075,6 +1084,18 @@ class _Grower:
             # §5.2: a seed with a symbol id examines only references of that id. A kind that
             # occurs only on the exemplar's boundary has no reference: any element may go.
             cand = self.kind_candidates[k]
+        n_max = self._ring_max.get(int(k))
+        if n_max is None:
+            n_max = self._ring_max[int(k)] = int(self.rings["n"][cand].max()) if cand.any() else 0
+        if 0 < n_max < len(nb_arr):
+            # Not in the paper: a seed that waited (§5.1 priority) or sits where fronts
+            # meet can be joined to more placed neighbours than any reference ring has,
+            # and then matched none and died, leaving a hole (bricks with a priority: one
+            # brick missing). Its nearest n_max neighbours are matched.
+            near = np.sort(np.argsort(np.hypot(rel[:, 0], rel[:, 1]), kind="stable")[:n_max])
+            nb_arr, rel = nb_arr[near], rel[near]
+            order = order_target(rel)
+            nb_arr, rel = nb_arr[order], rel[order]
         flow_theta = 0.0
         if self.mode_code == 2:
             v = self.p.flow(ps[None, :])[0]
@@ -1094,6 +1115,22 @@ class _Grower:
             # element taking the field's angle and leaving holes and overlaps between
             # neighbours that took different ones.
             frame_theta, frame_w, mode = flow_theta, self.p.frame_weight * self.l, "rotate"
+            if len(nb_arr) and self.p.flow_carry:
+                # Not in the paper: the fit alone keeps the neighbours' frame, so the
+                # lattice lags the field by max_turn, ahead of the field where growth
+                # runs against its turn and behind it where growth runs with it; the
+                # two meet in seams. The fitted frame is carried on by the field's turn
+                # from the neighbours to the seed (the target is turned by it before the
+                # fit): the lattice turns with the field.
+                v = np.asarray(self.p.flow(self.pos[nb_arr]), dtype=float)
+                # a line field: the neighbours' mean direction with the seed's sign
+                va = np.arctan2(v[:, 1], v[:, 0])
+                dd = va - flow_theta
+                dd = dd - np.pi * np.round(dd / np.pi)
+                carry = -float(np.mean(dd))
+                if abs(carry) > 1e-12:
+                    cc, ss = math.cos(carry), math.sin(carry)
+                    rel = np.c_[cc * rel[:, 0] - ss * rel[:, 1], ss * rel[:, 0] + cc * rel[:, 1]]
         err, shift, theta = match_references(
             self.rings,
             rel,
@@ -1196,7 +1233,10 @@ class _Grower:
         # Not in the paper: a placement that would overlap an element is refused (the
         # seed dies), so that an exemplar without overlaps grows a pattern without any.
         if p.avoid_overlaps and self.overlaps_any(g, kind, x, y, scale):
-            return False
+            moved = self._nudge(s, kind, x, y, rot, scale)
+            if moved is None:
+                return False
+            x, y, g = moved
         self._unhigh(s)
         self.state[s] = ELEMENT
         self.kind[s] = kind
@@ -1215,6 +1255,11 @@ class _Grower:
         ring_pos = np.empty((n_ring, 2))
         ring_pos[:, 0] = x + c * rel[:, 0] - sn * rel[:, 1]
         ring_pos[:, 1] = y + sn * rel[:, 0] + c * rel[:, 1]
+        if self.mode_code == 2 and p.flow_bend > 0:
+            rel = self._bent_ring(x, y, rel, ring_pos, c, sn)
+            c, sn = 1.0, 0.0
+            ring_pos[:, 0] = x + rel[:, 0]
+            ring_pos[:, 1] = y + rel[:, 1]
         ring_kind = self.rings["kind"][a, :n_ring].tolist()
         ring_xy = ring_pos.tolist()
         slot_of: dict[int, int] = {}
@@ -1275,6 +1320,61 @@ class _Grower:
         self.target[s] = tgt
         self.ring_n[s] = n_ring
         return True
+
+    def _bent_ring(self, x: float, y: float, rel: np.ndarray, ring_pos: np.ndarray, c: float, sn: float) -> np.ndarray:
+        """The ring offsets turned with the flow field between the element and each slot.
+
+        Not in the paper: §5.3 turns the whole reference neighbourhood by the field at
+        the element being placed, so each of its ring members is predicted in that one
+        frame; where the field turns, the members ahead sit off the lattice that will be
+        grown there (their own neighbourhoods are turned by the field at them) and the
+        mismatch piles up as strain and holes. Each offset is turned further by
+        ``flow_bend`` times the field's turn from the element to the predicted slot (a
+        half: the chord of a curving row follows the field at its midpoint).
+
+        Returns the offsets in the plane's frame, shape (n_ring, 2).
+        """
+        pts = np.vstack([[x, y], ring_pos])
+        v = np.asarray(self.p.flow(pts), dtype=float)
+        a = np.arctan2(v[:, 1], v[:, 0])
+        d = a[1:] - a[0]
+        d = d - np.pi * np.round(d / np.pi)  # a line field: +-pi/2 (direction sign free)
+        t = math.atan2(sn, c) + self.p.flow_bend * d
+        ct, st = np.cos(t), np.sin(t)
+        return np.c_[ct * rel[:, 0] - st * rel[:, 1], st * rel[:, 0] + ct * rel[:, 1]]
+
+    def _nudge(self, s: int, kind: int, x: float, y: float, rot: float, scale: float) -> tuple[float, float, Any] | None:
+        """A place near ``(x, y)`` where the element of seed ``s`` overlaps nothing, or None.
+
+        Not in the paper (which does not test overlaps). In a tight tiling the slot a
+        seed fills is bounded by elements placed around it, each fitted to its own
+        neighbours; where they closed in by a little (a seed that waited for §5.1's
+        priority, or fronts that met), the element overlapped one of them, the seed died
+        and left a hole of a whole element (bricks with a priority). Up to 16 offsets of
+        at most ``nudge * l_short`` are tried, nearest first, with the checks of
+        :meth:`_fit_position`; the first that fits is taken.
+        """
+        reach = self.p.nudge * self.l_short
+        if reach <= 0:
+            return None
+        for f in (0.25, 0.5, 0.75, 1.0):
+            for q in range(4):
+                t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
+                nx, ny = x + f * reach * math.cos(t), y + f * reach * math.sin(t)
+                if not self.in_domain(nx, ny) or self.crosses_boundary((x, y), (nx, ny)):
+                    continue
+                if self.spray_area is not None and not shapely.contains_xy(self.spray_area, nx, ny):
+                    continue
+                if any(self.crosses_edges(s, (nx, ny), o, self.xy[o]) or self.crosses_boundary((nx, ny), self.xy[o]) for o in self.adj[s]):
+                    continue
+                if self.too_close_in_kind(nx, ny, kind, s, (ELEMENT,), placing=True):
+                    continue
+                g = self.element_geometry(kind, nx, ny, rot, scale)
+                if not self.fits_domain(g) or self.overlaps_any(g, kind, nx, ny, scale):
+                    continue
+                self._move(s, nx, ny)
+                return nx, ny, g
+        return None
 
     def _fit_position(self, s: int, nb: np.ndarray, rel: np.ndarray, k: int, c: float, sn: float, reach: float | None = None) -> None:
         """Move seed ``s`` to where the chosen ring fits its placed neighbours best.
