@@ -12,6 +12,11 @@ the local frame (``strew.metrics.fidelity``) and the share of interior tiles wit
 four neighbours at the row spacing.
 
 Run: ``python benchmarks/grow.py`` (``--quick``: 1,000 and 2,000 elements, one run each).
+``--structure`` prints only the structure figures of issue 14 points 2 and 4, no
+timings: a hexagonal lattice in flow mode along fields that turn 60 and 90 degrees across
+30 spacings and along curved strokes (share of interior elements with six neighbours at
+the spacing +-15%, largest gap in spacings, elements across the region's edge), and the
+bricks grown with a priority, either kind first (largest gap against the exemplar's).
 """
 
 from __future__ import annotations
@@ -79,7 +84,7 @@ def four_neighbour_share(xy, spacing: float, inner) -> float:
     return float(((hi == 4) & (lo == 0)).mean()) if len(hi) else float("nan")
 
 
-def _suite_exemplar(name: str):
+def _suite_exemplar(name: str, **kw):
     """An exemplar of the fidelity suite (examples/fidelity/make.py), or None."""
     import importlib.util
 
@@ -89,11 +94,79 @@ def _suite_exemplar(name: str):
     spec = importlib.util.spec_from_file_location("fidelity_make_grow_bench", path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
-    return mod.make_exemplar(name)
+    return mod.make_exemplar(name, **kw)
+
+
+def structure(json_path) -> None:
+    """Issue 14 points 2 and 4: flow mode on bending fields, bricks with a priority."""
+    from scipy.spatial import cKDTree
+
+    from strew import Region
+    from strew.fields import flow_field
+    from strew.grow import grow
+
+    bench = Bench("grow_structure", "strew.grow: lattice kept in flow mode; gaps with a priority", baseline="none (figures only)", json_path=json_path)
+    ex = _suite_exemplar("hex_lattice", nx=8, ny=8)
+    sp = 12.0
+
+    def lattice_row(label, out, region):
+        xy = out.xy
+        inner = region.distance_to_boundary(xy) > 2 * sp
+        x0, y0, x1, y1 = region.bounds
+        g = np.mgrid[x0 + 2 * sp : x1 - 2 * sp : 3.0, y0 + 2 * sp : y1 - 2 * sp : 3.0].reshape(2, -1).T
+        bench.row(label, n=len(out), six_nbr_share=hex_share(xy, sp, inner),
+                  largest_gap_spacings=float(cKDTree(xy).query(g)[0].max() / sp),
+                  across_edge=int((~region.contains_geometry(out.geometry, tolerance=1e-9)).sum()))
+
+    for deg in (60.0, 90.0):
+        w, h = 30 * sp, 20 * sp
+        region = Region.rectangle(w, h)
+
+        def field(p, deg=deg, w=w):
+            a = np.radians(deg) * np.clip(np.asarray(p)[:, 0] / w, 0, 1)
+            return np.c_[np.cos(a), np.sin(a)]
+
+        lattice_row(f"flow turning {deg:.0f} deg over 30 spacings", grow(ex, region=region, mode="flow", flow=field, rng=1), region)
+    w, h = 24 * sp, 16 * sp
+    region = Region.rectangle(w, h)
+    t = np.linspace(0, w, 30)
+    waves = [np.c_[t, h * (0.3 + 0.05 * np.sin(2 * np.pi * t / w))], np.c_[t, h * (0.7 + 0.05 * np.sin(2 * np.pi * t / w + 0.5))]]
+    lattice_row("flow from two wavy strokes", grow(ex, region=region, mode="flow", flow=flow_field(waves), rng=1), region)
+    region = Region.rectangle(30 * sp, 30 * sp)
+    th = np.linspace(0, np.pi / 2, 30)
+    arcs = [np.c_[r * np.cos(th), r * np.sin(th)] for r in (10 * sp, 25 * sp)]
+    lattice_row("flow from two quarter-circle strokes", grow(ex, region=region, mode="flow", flow=flow_field(arcs), rng=1), region)
+    bricks = _suite_exemplar("bricks")
+    x0, y0, x1, y1 = bricks.region.bounds
+    w, h = 2 * (x1 - x0), 2 * (y1 - y0)
+    s = float(np.median(_nn(bricks.xy)))
+    ex_gap = cKDTree(bricks.xy).query(np.mgrid[s : x1 - x0 - s : 2.0, s : y1 - y0 - s : 2.0].reshape(2, -1).T)[0].max()
+    g = np.mgrid[2 * s : w - 2 * s : 2.0, 2 * s : h - 2 * s : 2.0].reshape(2, -1).T
+    for prio in (None, {"brick_red": 1, "brick_ochre": 0}, {"brick_ochre": 1, "brick_red": 0}):
+        for seed in (1, 2, 3):
+            out = grow(bricks, region=Region.rectangle(w, h), rng=seed, priority=prio)
+            d = cKDTree(out.xy).query(g)[0]
+            first = "none" if prio is None else max(prio, key=prio.get)
+            bench.row(f"bricks, priority first: {first}, seed {seed}", n=len(out), gap_over_exemplar=float(d.max() / ex_gap),
+                      points_over_1_3x=int((d > 1.3 * ex_gap).sum()))
+    bench.finish()
+
+
+def hex_share(xy, spacing: float, inner) -> float:
+    """Share of ``inner`` elements with six neighbours within 0.85-1.15 spacing."""
+    from scipy.spatial import cKDTree
+
+    tree = cKDTree(xy)
+    hi = np.array([len(tree.query_ball_point(p, 1.15 * spacing)) - 1 for p in xy[inner]])
+    lo = np.array([len(tree.query_ball_point(p, 0.85 * spacing)) - 1 for p in xy[inner]])
+    return float(((hi == 6) & (lo == 0)).mean()) if len(hi) else float("nan")
 
 
 def main() -> None:
-    args = parse_args(__doc__)
+    args = parse_args(__doc__, lambda p: p.add_argument("--structure", action="store_true", help="only the structure figures of issue 14 points 2 and 4 (no timings)"))
+    if args.structure:
+        structure(args.json)
+        return
     from strew import metrics
     from strew.grow import analyze, grow
     from strew.grow._exemplars import hex_exemplar, stone_exemplar, tile_exemplar
