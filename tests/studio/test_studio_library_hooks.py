@@ -74,3 +74,36 @@ def test_locked_eraser_keeps_the_layer_and_the_hole_fills_again(tmp_path):
     kept = again.select(again.kind_names == kinds[0])
     assert {tuple(p) for p in np.round(locked.xy, 6)} <= {tuple(p) for p in np.round(kept.xy, 6)}
     assert len(metrics.overlaps(again)[0]) == 0
+
+
+def test_saved_palette_keeps_empty_exemplars_selection_and_connectivity(tmp_path):
+    """The studio saves and loads its palette through strew.synth.palette_document and
+    split_palette_document: an exemplar still empty keeps its name and place."""
+    from strew.studio._session import Session
+    from strew.synth import load_palette
+
+    s = Session(tmp_path, seed=3, size=(300.0, 220.0))
+    s.handle({"type": "load_exemplar", "example": "scales.svg"})
+    s.handle({"type": "palette_new", "name": "mine"})
+    s.handle({"type": "select", "names": ["scales"]})
+    from strew import InputError
+    from strew.grow import flip_edge
+
+    ref = s._reference("scales")
+    for i, j in sorted({tuple(e) for e in s.palette_message()["exemplars"][0]["edges"]}):
+        try:
+            flip_edge(ref, i, j)
+        except InputError:
+            continue
+        break
+    s.handle({"type": "palette_flip", "exemplar": "scales", "i": i, "j": j})  # edited connectivity
+    edges = s.palette["scales"].extra["connectivity"]["edges"]
+    assert edges
+    s.handle({"type": "save"})
+    t = Session(tmp_path)
+    t.handle({"type": "load_project"})
+    assert list(t.palette) == ["scales", "mine"]
+    assert len(t.palette["mine"]) == 0 and t.selection == ["scales"]
+    assert np.allclose(t.palette["scales"].xy, s.palette["scales"].xy)
+    assert t.palette["scales"].extra["connectivity"]["edges"] == edges
+    assert load_palette(tmp_path / "palette.json").names == ("scales",)

@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from .._errors import InputError
-from ..arrangement import Arrangement, concat
+from ..arrangement import Arrangement
 from ._common import Emit, GROW_MODES, MAX_HISTORY, PALETTE_FILE, SCENE_FILE
 from ._controls import controls_message, read_setting
 from ._paths import list_project_files, resolve_in_project
@@ -172,27 +172,14 @@ class DispatchMixin:
         return [self.status_message()]
 
     def palette_arrangement(self) -> Arrangement:
-        """The palette as one strew document: exemplars side by side, tagged by name.
+        """The palette as one strew document (:func:`strew.synth.palette_document`):
+        exemplars side by side, tagged by name, with the edited connectivity, the
+        selection and the empty exemplars' names."""
+        from ..synth import palette_document
 
-        The layout is the one :class:`strew.synth.Palette` reads (column ``exemplar``,
-        ``extra["palette"]["offsets"]``), with the edited connectivity and the selection.
-        """
-        parts, offsets, conn = [], {}, {}
-        x = 0.0
-        for name, ex in self.palette.items():
-            if len(ex) == 0:
-                continue
-            b = ex.bounds
-            dx, dy = x - b[0], -b[1]
-            offsets[name] = [dx, dy]
-            if "connectivity" in ex.extra:
-                conn[name] = ex.extra["connectivity"]["edges"]
-            parts.append(ex.replace(x=ex.x + dx, y=ex.y + dy, region=None, meta={}, extra={}).with_columns(exemplar=[name] * len(ex)))
-            x += (b[2] - b[0]) + 0.1 * max(b[2] - b[0], b[3] - b[1], 1e-9)
-        if not parts:
+        if not any(len(ex) for ex in self.palette.values()):
             raise InputError("save: the palette is empty")
-        arr = concat(parts)
-        return arr.replace(meta={"method": "studio.palette"}, extra={"palette": {"offsets": offsets, "connectivity": conn, "selection": list(self.selection)}})
+        return palette_document(self.palette, selection=self.selection, method="studio.palette")
 
     def _meta(self) -> dict[str, Any]:
         from .. import __version__

@@ -180,24 +180,14 @@ class PaletteMixin:
         return name
 
     def _split_palette(self, arr: Arrangement) -> list[str]:
-        tags = np.asarray(arr["exemplar"]).astype(str)
-        info = arr.extra.get("palette", {}) if isinstance(arr.extra.get("palette"), dict) else {}
-        offsets = info.get("offsets", {}) if isinstance(info.get("offsets"), dict) else {}
-        conn = info.get("connectivity", {}) if isinstance(info.get("connectivity"), dict) else {}
-        added = []
-        for tag in dict.fromkeys(tags.tolist()):
-            sub = arr.select(tags == tag).without_columns("exemplar")
-            off = offsets.get(tag, (0.0, 0.0))
-            try:
-                dx, dy = float(off[0]), float(off[1])
-            except (TypeError, ValueError, IndexError):
-                raise InputError(f"palette.offsets.{tag}: must be [dx, dy]") from None
-            extra = {"connectivity": {"edges": conn[tag]}} if tag in conn else {}
-            sub = sub.replace(x=sub.x - dx, y=sub.y - dy, region=None, meta={}, extra=extra)
-            added.append(self._add_exemplar(tag, sub))
-        sel = info.get("selection")
-        if isinstance(sel, list):
-            self.selection = [s for s in sel if isinstance(s, str) and s in self.palette]
+        """Add the exemplars of a palette document (:func:`strew.synth.split_palette_document`);
+        its saved selection, if any, becomes the selection."""
+        from ..synth import split_palette_document
+
+        exemplars, selection = split_palette_document(arr)
+        added = [self._add_exemplar(tag, sub) for tag, sub in exemplars.items()]
+        if selection is not None:
+            self.selection = [s for s in selection if s in self.palette]
         return added
 
     def _exemplar(self, msg: dict) -> str:

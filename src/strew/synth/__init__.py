@@ -12,8 +12,8 @@ synthesize
     Exemplars + region (or a fill point, or a brush stroke) -> Arrangement.
 new_state, fill, brush, erase, set_selection
     The incremental tools, for the studio.
-Palette, load_palette, save_palette
-    Example palettes.
+Palette, load_palette, save_palette, palette_document, split_palette_document
+    Example palettes, and the palette document (exemplars side by side) they are saved as.
 average_neighborhood_distance, energy
     The measures of Eq. 5 and Eq. 2.
 
@@ -61,7 +61,7 @@ from ._api import SPEC, as_selection, new_state, set_selection, synthesize
 from ._grow import brush, erase, fill, grow, seed_patch
 from ._metric import average_neighborhood_distance, energy, neighborhood_distances
 from ._optimize import optimize
-from ._palette import Palette, Selection, element_parameters, load_palette, save_palette
+from ._palette import Palette, Selection, element_parameters, load_palette, palette_document, save_palette, split_palette_document
 from ._patch import patch_initialize
 from ._prepare import Prepared, prepare
 from ._state import SynthParams, SynthState
@@ -83,6 +83,8 @@ __all__ = [
     "Selection",
     "load_palette",
     "save_palette",
+    "palette_document",
+    "split_palette_document",
     "element_parameters",
     "prepare",
     "Prepared",

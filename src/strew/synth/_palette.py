@@ -25,7 +25,7 @@ from .._errors import InputError
 from ..arrangement import Arrangement, concat
 from ..shape import Shape
 
-__all__ = ["Palette", "Selection", "element_parameters", "load_palette", "save_palette", "average_spacing"]
+__all__ = ["Palette", "Selection", "element_parameters", "load_palette", "save_palette", "average_spacing", "palette_document", "split_palette_document"]
 
 RING_FACTOR = 3.0  # r-bar = 3a, a "3-ring" neighbourhood (§6.1)
 LARGE_RING = 1.5  # r-bar of a larger size class: at least this many times its own spacing (see element_parameters)
@@ -159,26 +159,13 @@ class Palette:
             self._ex[str(name)] = arr.with_columns(**cols)
 
     @classmethod
-    def from_arrangements(cls, arrangements: Iterable[Arrangement], names: Iterable[str] | None = None) -> Palette:
-        arrs = list(arrangements)
-        names = list(names) if names is not None else [f"exemplar{i}" for i in range(len(arrs))]
-        if len(set(names)) != len(names):
-            raise InputError(f"palette: duplicate exemplar names {names}")
-        return cls(dict(zip(names, arrs)))
-
-    @classmethod
     def from_arrangement(cls, arr: Arrangement, name: str = "exemplar") -> Palette:
-        """One exemplar, or a saved palette document (split by its ``exemplar`` column)."""
+        """One exemplar, or a saved palette document (:func:`split_palette_document`;
+        its empty exemplars are left out, a palette holds none)."""
         if "exemplar" not in arr:
             return cls({name: arr})
-        tags = np.asarray(arr["exemplar"]).astype(str)
-        layout = arr.extra.get("palette", {}).get("offsets", {})
-        out = {}
-        for tag in dict.fromkeys(tags.tolist()):
-            sub = arr.select(tags == tag).without_columns("exemplar")
-            dx, dy = layout.get(tag, (0.0, 0.0))
-            out[tag] = sub.replace(x=sub.x - dx, y=sub.y - dy, region=None, extra={})
-        return cls(out)
+        exemplars, _ = split_palette_document(arr)
+        return cls({k: v for k, v in exemplars.items() if len(v)})
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -235,20 +222,122 @@ class Palette:
                 raise InputError(f"selection: {what} of {name!r} must be positive, got {w:g}")
         return Selection(self, tuple(items), tuple(items.values()), regions)
 
-    def to_arrangement(self, gap: float | None = None) -> Arrangement:
-        """The palette as one arrangement: exemplars side by side (a palette window)."""
-        parts = []
-        offsets: dict[str, list[float]] = {}
-        x = 0.0
-        for name, arr in self._ex.items():
-            b = arr.bounds
-            g = gap if gap is not None else 0.1 * max(b[2] - b[0], b[3] - b[1], 1e-9)
-            dx, dy = x - b[0], -b[1]
-            offsets[name] = [dx, dy]
-            parts.append(arr.replace(x=arr.x + dx, y=arr.y + dy, region=None, meta={}, extra={}).with_columns(exemplar=[name] * len(arr)))
-            x += (b[2] - b[0]) + g
-        out = concat(_rename_conflicting_kinds(parts))
-        return out.replace(meta={"method": "synth.palette"}, extra={"palette": {"offsets": offsets}})
+    def to_arrangement(self, gap: float | None = None, *, selection: Iterable[str] | None = None) -> Arrangement:
+        """The palette as one arrangement: exemplars side by side (a palette window).
+
+        See :func:`palette_document`; ``selection`` (names) is recorded with the layout.
+        """
+        return palette_document(self._ex, gap=gap, selection=selection)
+
+
+def palette_document(
+    exemplars: Mapping[str, Arrangement], *, gap: float | None = None, selection: Iterable[str] | None = None, method: str = "synth.palette"
+) -> Arrangement:
+    """Exemplars as one strew document, side by side, each element tagged by name.
+
+    The document is what :func:`save_palette` writes and :func:`split_palette_document`
+    (or :meth:`Palette.from_arrangement`) reads back. Unlike a :class:`Palette` the
+    exemplars are not checked, so a front end can save exemplars still being edited:
+    empty ones keep their name (and place in the order) without elements.
+
+    Parameters
+    ----------
+    exemplars : mapping of str to Arrangement
+        In order. An exemplar's ``extra["connectivity"]["edges"]`` (its edited
+        connectivity, :mod:`strew.grow`) is kept.
+    gap : float, optional
+        Space between neighbouring exemplars (default: 0.1 of the larger side of each).
+    selection : iterable of str, optional
+        The names selected (§5: the selection S that drives synthesis), kept as given.
+    method : str
+        ``meta["method"]`` of the document.
+
+    Returns
+    -------
+    Arrangement
+        The elements of every exemplar, shifted to lie side by side, with column
+        ``exemplar`` (str) and ``extra["palette"]``: ``names`` (all, in order),
+        ``offsets`` (name -> [dx, dy], the shift of each non-empty exemplar),
+        ``connectivity`` (name -> (e, 2) edges) and, when given, ``selection``.
+
+    Raises
+    ------
+    InputError
+        When every exemplar is empty.
+    """
+    parts = []
+    offsets: dict[str, list[float]] = {}
+    conn: dict[str, Any] = {}
+    x = 0.0
+    for name, arr in exemplars.items():
+        if len(arr) == 0:
+            continue
+        b = arr.bounds
+        g = gap if gap is not None else 0.1 * max(b[2] - b[0], b[3] - b[1], 1e-9)
+        dx, dy = x - b[0], -b[1]
+        offsets[name] = [dx, dy]
+        c = arr.extra.get("connectivity")
+        if isinstance(c, dict) and "edges" in c:
+            conn[name] = c["edges"]
+        parts.append(arr.replace(x=arr.x + dx, y=arr.y + dy, region=None, meta={}, extra={}).with_columns(exemplar=[name] * len(arr)))
+        x += (b[2] - b[0]) + g
+    if not parts:
+        raise InputError("palette: every exemplar is empty")
+    info: dict[str, Any] = {"names": [str(n) for n in exemplars], "offsets": offsets, "connectivity": conn}
+    if selection is not None:
+        info["selection"] = [str(n) for n in selection]
+    out = concat(_rename_conflicting_kinds(parts))
+    return out.replace(meta={"method": method}, extra={"palette": info})
+
+
+def split_palette_document(arr: Arrangement) -> tuple[dict[str, Arrangement], list[str] | None]:
+    """The exemplars of a palette document (:func:`palette_document`), in place again.
+
+    Parameters
+    ----------
+    arr : Arrangement
+        With column ``exemplar``; ``extra["palette"]`` as :func:`palette_document`
+        writes it (every part optional: an exemplar without an offset is not moved).
+
+    Returns
+    -------
+    exemplars : dict of str to Arrangement
+        In the saved order; empty ones (named in ``names`` without elements) hold no
+        elements and the document's shapes. Edited connectivity comes back as
+        ``extra["connectivity"]["edges"]``; no columns but the exemplar's own.
+    selection : list of str or None
+        The saved selection, if any (names not in the document left out).
+
+    Raises
+    ------
+    InputError
+        No ``exemplar`` column, or an offset that is not ``[dx, dy]``.
+    """
+    if "exemplar" not in arr:
+        raise InputError("palette document: no 'exemplar' column")
+    tags = np.asarray(arr["exemplar"]).astype(str)
+    info = arr.extra.get("palette", {}) if isinstance(arr.extra.get("palette"), dict) else {}
+    offsets = info.get("offsets", {}) if isinstance(info.get("offsets"), dict) else {}
+    conn = info.get("connectivity", {}) if isinstance(info.get("connectivity"), dict) else {}
+    saved = info.get("names")
+    names = [n for n in saved if isinstance(n, str)] if isinstance(saved, list) else []
+    out: dict[str, Arrangement] = {}
+    for tag in dict.fromkeys(names + tags.tolist()):
+        rows = tags == tag
+        if not rows.any():
+            out[tag] = Arrangement(dict(arr.shapes), np.zeros(0, np.int64), [], [])
+            continue
+        sub = arr.select(rows).without_columns("exemplar")
+        off = offsets.get(tag, (0.0, 0.0))
+        try:
+            dx, dy = float(off[0]), float(off[1])
+        except (TypeError, ValueError, IndexError, KeyError):
+            raise InputError(f"palette.offsets.{tag}: must be [dx, dy]") from None
+        extra = {"connectivity": {"edges": conn[tag]}} if tag in conn else {}
+        out[tag] = sub.replace(x=sub.x - dx, y=sub.y - dy, region=None, meta={}, extra=extra)
+    sel = info.get("selection")
+    selection = [n for n in sel if isinstance(n, str) and n in out] if isinstance(sel, list) else None
+    return out, selection
 
 
 def _rename_conflicting_kinds(parts: list[Arrangement]) -> list[Arrangement]:
