@@ -362,6 +362,8 @@ class _Grower:
         self.deferred: set[int] = set()
         #: the largest reference ring a seed of each kind (-1: any) can be matched to
         self._ring_max: dict[int, int] = {}
+        #: flow mode: the field's angle at each element where it was placed
+        self._flow_at: dict[int, float] = {}
         self.origin = (0.0, 0.0)
         # tools
         self.region = p.region
@@ -1122,9 +1124,14 @@ class _Grower:
                 # two meet in seams. The fitted frame is carried on by the field's turn
                 # from the neighbours to the seed (the target is turned by it before the
                 # fit): the lattice turns with the field.
-                v = np.asarray(self.p.flow(self.pos[nb_arr]), dtype=float)
+                # the field at each neighbour where it was placed (``_bent_ring``)
+                fa = self._flow_at
+                va = np.array([fa[j] if j in fa else math.nan for j in nb_arr.tolist()])
+                miss = np.isnan(va)
+                if miss.any():
+                    v = np.asarray(self.p.flow(self.pos[nb_arr[miss]]), dtype=float)
+                    va[miss] = np.arctan2(v[:, 1], v[:, 0])
                 # a line field: the neighbours' mean direction with the seed's sign
-                va = np.arctan2(v[:, 1], v[:, 0])
                 dd = va - flow_theta
                 dd = dd - np.pi * np.round(dd / np.pi)
                 carry = -float(np.mean(dd))
@@ -1256,7 +1263,7 @@ class _Grower:
         ring_pos[:, 0] = x + c * rel[:, 0] - sn * rel[:, 1]
         ring_pos[:, 1] = y + sn * rel[:, 0] + c * rel[:, 1]
         if self.mode_code == 2 and p.flow_bend > 0:
-            rel = self._bent_ring(x, y, rel, ring_pos, c, sn)
+            rel = self._bent_ring(s, x, y, rel, ring_pos, c, sn)
             c, sn = 1.0, 0.0
             ring_pos[:, 0] = x + rel[:, 0]
             ring_pos[:, 1] = y + rel[:, 1]
@@ -1321,7 +1328,7 @@ class _Grower:
         self.ring_n[s] = n_ring
         return True
 
-    def _bent_ring(self, x: float, y: float, rel: np.ndarray, ring_pos: np.ndarray, c: float, sn: float) -> np.ndarray:
+    def _bent_ring(self, s: int, x: float, y: float, rel: np.ndarray, ring_pos: np.ndarray, c: float, sn: float) -> np.ndarray:
         """The ring offsets turned with the flow field between the element and each slot.
 
         Not in the paper: §5.3 turns the whole reference neighbourhood by the field at
@@ -1337,6 +1344,7 @@ class _Grower:
         pts = np.vstack([[x, y], ring_pos])
         v = np.asarray(self.p.flow(pts), dtype=float)
         a = np.arctan2(v[:, 1], v[:, 0])
+        self._flow_at[s] = float(a[0])  # for the frame carried on from s (``choose``)
         d = a[1:] - a[0]
         d = d - np.pi * np.round(d / np.pi)  # a line field: +-pi/2 (direction sign free)
         t = math.atan2(sn, c) + self.p.flow_bend * d
