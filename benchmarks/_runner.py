@@ -34,6 +34,18 @@ __all__ = ["Bench", "median_time", "timed", "parse_args", "SKIPPED"]
 SKIPPED = 3
 
 
+def fidelity_suite() -> Any:
+    """The fidelity suite's exemplar maker, ``examples/fidelity/make.py`` (``NAMES``, ``make_exemplar``)."""
+    import importlib.util
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "fidelity" / "make.py"
+    spec = importlib.util.spec_from_file_location("fidelity_make", path)
+    assert spec is not None and spec.loader is not None
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
 def parse_args(description: str = "", extra: Callable[[argparse.ArgumentParser], None] | None = None) -> argparse.Namespace:
     """Common flags: ``--repeat N``, ``--quick`` (smaller problem), ``--json PATH``."""
     p = argparse.ArgumentParser(description=description)

@@ -35,7 +35,6 @@ skipped).
 
 from __future__ import annotations
 
-import importlib.util
 import math
 import sys
 import time
@@ -57,11 +56,9 @@ FAMILIES = ("fraction", "density", "g", "nn", "regularity", "orientation", "empt
 
 
 def _suite() -> Any:
-    spec = importlib.util.spec_from_file_location("fidelity_make", ROOT / "examples" / "fidelity" / "make.py")
-    mod = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    spec.loader.exec_module(mod)
-    return mod
+    from _runner import fidelity_suite
+
+    return fidelity_suite()
 
 
 def _seeds(text: str) -> list[int]:

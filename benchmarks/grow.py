@@ -86,15 +86,11 @@ def four_neighbour_share(xy, spacing: float, inner) -> float:
 
 def _suite_exemplar(name: str, **kw):
     """An exemplar of the fidelity suite (examples/fidelity/make.py), or None."""
-    import importlib.util
+    from _runner import fidelity_suite
 
-    path = Path(__file__).resolve().parents[1] / "examples" / "fidelity" / "make.py"
-    if not path.exists():
+    if not (Path(__file__).resolve().parents[1] / "examples" / "fidelity" / "make.py").exists():
         return None
-    spec = importlib.util.spec_from_file_location("fidelity_make_grow_bench", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod.make_exemplar(name, **kw)
+    return fidelity_suite().make_exemplar(name, **kw)
 
 
 def structure(json_path) -> None:

@@ -89,14 +89,11 @@ def voronoi_ratio(ex, out, region: Region) -> float:
 
 def seams(args) -> None:
     """Issue 13 point 2: failing windows of the local fidelity map at ``args.scale``."""
-    import importlib.util
-    from pathlib import Path
-
     from strew.metrics import fidelity
 
-    spec = importlib.util.spec_from_file_location("fidelity_make", Path(__file__).resolve().parents[1] / "examples" / "fidelity" / "make.py")
-    mk = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mk)
+    from _runner import fidelity_suite
+
+    mk = fidelity_suite()
     names = [n for n in mk.NAMES if n != "sticks"] if not args.only else args.only.split(",")
     seeds = [int(x) for x in args.seeds.split(",")]
     bench = Bench("synth_seams", f"synth: local fidelity map at {args.scale:g}x the frame's side ({args.scale ** 2:.0f}x the area)",

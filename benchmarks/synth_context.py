@@ -16,7 +16,6 @@ strips 10 wide along tile borders over the rest.
 
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 
 import numpy as np
@@ -31,10 +30,9 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _suite():
-    spec = importlib.util.spec_from_file_location("fidelity_make", ROOT / "examples" / "fidelity" / "make.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    from _runner import fidelity_suite
+
+    return fidelity_suite()
 
 
 def strip(arr, xa, xb, ya, yb):

@@ -16,7 +16,6 @@ compared before/after a change by running this script on both.
 
 from __future__ import annotations
 
-import importlib.util
 import time
 from pathlib import Path
 from typing import Any
@@ -47,11 +46,9 @@ VARIED: dict[str, list[dict[str, Any]]] = {
 
 
 def _suite() -> Any:
-    spec = importlib.util.spec_from_file_location("fidelity_make", ROOT / "examples" / "fidelity" / "make.py")
-    mod = importlib.util.module_from_spec(spec)
-    assert spec.loader is not None
-    spec.loader.exec_module(mod)
-    return mod
+    from _runner import fidelity_suite
+
+    return fidelity_suite()
 
 
 def _ints(text: str) -> list[int]:
