@@ -275,6 +275,7 @@ def grow(
     state.grow_start = state.iterations + 1
     t0 = time.perf_counter()
     skipped = [0.0]
+    state.wrap()  # a periodic state: ghost images across the tile's edges (SynthState.wrap)
     if state.n:
         update_free_space(state, np.flatnonzero(state.horizon))
     _record(state, t0, skipped)
@@ -403,8 +404,10 @@ def grow(
                     hz = hz[K.near_any(np.ascontiguousarray(state.pos[hz]), np.concatenate(new_pos), float(prep.rbar.max()))]
                 optimize(state, hz)
         # -- update free space and prune the horizon (§5.1) ----------------------------------
+        state.wrap()
         update_free_space(state, np.flatnonzero(state.horizon))
         _record(state, t0, skipped)
+    state.unwrap()
     rep.done(state.n - start_n)
     return state.n - start_n
 
@@ -545,6 +548,7 @@ def brush(state: SynthState, points: np.ndarray, radii: np.ndarray | float, *, r
     bad = np.flatnonzero(~(rad > 0))
     if len(bad):
         raise InputError(f"brush: radius must be positive, got {rad[bad[0]]:g}")
+    pts, rad = state.wrap_discs(pts, rad)  # a periodic state: the discs on the torus
     state.brush_points = np.concatenate([state.brush_points, pts])
     state.brush_radii = np.concatenate([state.brush_radii, rad])
     before = state.n
@@ -626,7 +630,7 @@ def erase(state: SynthState, points: np.ndarray, radius: float, *, keep: np.ndar
     pts = np.asarray(points, float).reshape(-1, 2)
     if len(pts) == 0:
         return 0
-    path = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
+    path = state.stroke_path(pts, radius + 2 * float(state.prep.rbar.max()))  # wrapped on a periodic state
     shapely.prepare(path)
 
     def near(p: np.ndarray) -> np.ndarray:

@@ -14,6 +14,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from .._errors import InputError
+from .._periodic import canonical, translations
 from .._rng import as_rng
 from ..arrangement import Arrangement
 from ..region import Region
@@ -21,6 +22,10 @@ from . import _kernels as K
 from ._prepare import Prepared
 
 __all__ = ["SynthParams", "SynthState", "map_offsets"]
+
+#: ``born`` of a ghost image (see :meth:`SynthState.wrap`): older than any growth
+#: iteration, so that a ghost never yields to a new element (it cannot be removed)
+GHOST_BORN = -(1 << 40)
 
 OPTIMIZE = ("horizon", "global", "none")
 
@@ -112,6 +117,9 @@ def _map_offsets(p, off):
     return out
 
 
+_STORAGE = ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born", "_fixed", "_ghost")
+
+
 class SynthState:
     """The output domain during synthesis.
 
@@ -123,6 +131,9 @@ class SynthState:
         New elements keep their centres inside it.
     params : SynthParams
     rng : int or Generator or None
+    tile : (4,) float, optional
+        ``x0, y0, W, H``: synthesize on the torus of this repeat tile (issue 18; see
+        :meth:`set_tile`).
 
     Attributes
     ----------
@@ -142,9 +153,12 @@ class SynthState:
         The iteration each element was added in.
     iterations : int
         Growth iterations so far (Algorithm 1's loop, over all calls).
+    tile : (x0, y0, W, H) or None
+        The repeat tile of a periodic state (:meth:`set_tile`), else None.
     """
 
-    def __init__(self, prep: Prepared, region: Region | None = None, params: SynthParams | None = None, rng: Any = None) -> None:
+    def __init__(self, prep: Prepared, region: Region | None = None, params: SynthParams | None = None, rng: Any = None,
+                 tile: Any = None) -> None:
         self.prep = prep
         self.region = region
         self.params = params or SynthParams()
@@ -158,6 +172,8 @@ class SynthState:
         self._free_base = np.zeros(cap, np.int64)
         self._born = np.zeros(cap, np.int64)  # state.iterations when added
         self._fixed = np.zeros(cap, bool)  # context elements: neighbours that never move nor leave
+        self._ghost = np.zeros(cap, bool)  # periodic: wrapped images of elements near the tile's edges
+        self.tile: tuple[float, float, float, float] | None = None
         self.grow_start = 0  # first iteration of the running grow() call
         self._flags_n = 0
         self._alive = np.zeros(1024, bool)
@@ -166,6 +182,8 @@ class SynthState:
         self.brush_radii = np.zeros(0)
         self.trace: list[tuple[float, int, float]] | None = None
         self.iterations = 0
+        if tile is not None:
+            self.set_tile(tile)
 
     # -- element storage ---------------------------------------------------------------
     @property
@@ -258,7 +276,7 @@ class SynthState:
         if n <= cap:
             return
         new = max(n, 2 * cap)
-        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born", "_fixed"):
+        for name in _STORAGE:
             old = getattr(self, name)
             arr = np.zeros((new, *old.shape[1:]), dtype=old.dtype)
             arr[: self.n] = old[: self.n]
@@ -294,6 +312,7 @@ class SynthState:
         self._free_base[idx] = self._alloc_flags(src)
         self._born[idx] = self.iterations
         self._fixed[idx] = fixed
+        self._ghost[idx] = False
         self.n += m
         return idx
 
@@ -308,13 +327,221 @@ class SynthState:
     def remove(self, mask: np.ndarray) -> int:
         """Delete elements where ``mask`` is True (context elements stay); returns how many."""
         keep = ~(np.asarray(mask, bool) & ~self.fixed)
+        return self._compact(keep)
+
+    def _compact(self, keep: np.ndarray) -> int:
+        """Keep the elements where ``keep`` (n,) is True, in order; returns how many went."""
         k = int(keep.sum())
         removed = self.n - k
-        for name in ("_pos", "_src", "_origin", "_horizon", "_free_base", "_born", "_fixed"):
-            arr = getattr(self, name)
-            arr[:k] = arr[: self.n][keep]
-        self.n = k
+        if removed:
+            for name in _STORAGE:
+                arr = getattr(self, name)
+                arr[:k] = arr[: self.n][keep]
+            self.n = k
         return removed
+
+    # -- periodic output (issue 18; not in the paper) -------------------------------------
+    def set_tile(self, tile: Any) -> None:
+        """Synthesize on the torus of a repeat tile from now on (None: in the plane again).
+
+        Not in the paper (issue 18). The output then fills ``[x0, x0 + W) x [y0, y0 + H)``
+        as a torus: during growth (:meth:`wrap`) every element within :attr:`margin` of
+        the tile's edges has ghost images one tile away, frozen context like
+        ``_context``'s neighbours (§5.2), so that neighbourhood matching, seeding,
+        collisions, free space and optimisation see across the edges; elements keep
+        their centres in the tile (:func:`strew._periodic.canonical`), and
+        :meth:`to_arrangement` marks the output periodic. The tools (``brush``,
+        ``fill``, ``erase``) take strokes anywhere and wrap them.
+
+        Parameters
+        ----------
+        tile : (4,) float or None
+            ``x0, y0, W, H``. The region, when set, must lie in it (it is the tile by
+            default); the tile must be at least :attr:`margin` wide and high.
+        """
+        self.unwrap()
+        if tile is None:
+            self.tile = None
+            return
+        from .._periodic import _as_frame
+
+        x0, y0, w, h = _as_frame(tile, "tile")
+        m = self.margin
+        if min(w, h) < m:
+            raise InputError(
+                f"periodic: the tile {w:g} x {h:g} is too small for this selection: its neighbourhoods reach {m:.4g} "
+                f"(twice the largest neighbourhood and element radius); give a tile at least {m:.4g} wide and high"
+            )
+        self.tile = (x0, y0, w, h)
+        if self.region is None:
+            self.region = Region.rectangle(w, h, x0, y0)
+
+    @property
+    def margin(self) -> float:
+        """How far beyond a periodic tile's edges ghost images are kept: twice the
+        largest neighbourhood radius plus twice the largest element radius of the
+        prepared exemplars (a seed's neighbourhood, its candidates' and their
+        collisions all lie within it)."""
+        prep = self.prep
+        return 2.0 * float(np.max(prep.rbar)) + 2.0 * float(np.max(prep.r)) if len(prep.r) else 0.0
+
+    @property
+    def ghost(self) -> np.ndarray:
+        """(n,) bool: ghost images of a periodic state (only while :meth:`wrap` holds them)."""
+        return self._ghost[: self.n]
+
+    def unwrap(self) -> None:
+        """Drop the ghost images and wrap the elements' centres into the tile (periodic
+        states; nothing in the plane). The state then holds its own elements only, in
+        the order they were made."""
+        if self.tile is None:
+            return
+        if self._ghost[: self.n].any():
+            self._compact(~self._ghost[: self.n])
+        own = np.flatnonzero(~self._fixed[: self.n])
+        if len(own):
+            x, y = canonical(self._pos[own, 0], self._pos[own, 1], self.tile)
+            self._pos[own, 0] = x
+            self._pos[own, 1] = y
+
+    def wrap_discs(self, points: np.ndarray, radii: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Brush discs on the torus of a periodic state (unchanged in the plane).
+
+        Each disc's centre is wrapped into the tile (:func:`strew._periodic.canonical`),
+        and its images one tile away follow wherever the disc, widened by the largest
+        neighbourhood radius (the brush wakes elements that far, §5.4), reaches into
+        the tile: the generative brush then grows on both sides of an edge it crosses.
+
+        Parameters
+        ----------
+        points : (m, 2) float
+        radii : (m,) float
+
+        Returns
+        -------
+        points, radii : (k, 2) float, (k,) float
+            The wrapped discs, in order, then their images.
+        """
+        if self.tile is None or len(points) == 0:
+            return points, radii
+        x0, y0, w, h = self.tile
+        cx, cy = canonical(points[:, 0], points[:, 1], self.tile)
+        c = np.c_[cx, cy]
+        reach = radii + float(np.max(self.prep.rbar))
+        pts, rad = [c], [radii]
+        for i, j in translations(3, 3):
+            if i == 0 and j == 0:
+                continue
+            p = c + (i * w, j * h)
+            hit = (p[:, 0] + reach > x0) & (p[:, 0] - reach < x0 + w) & (p[:, 1] + reach > y0) & (p[:, 1] - reach < y0 + h)
+            pts.append(p[hit])
+            rad.append(radii[hit])
+        return np.concatenate(pts), np.concatenate(rad)
+
+    def stroke_path(self, points: np.ndarray, reach: float = 0.0) -> Any:
+        """A tool's path as a shapely geometry: the polyline (a point for one point) in
+        the plane; on a periodic state the stroke wrapped into the tile, as runs and
+        the copies of runs that come within ``reach`` of it
+        (:func:`strew.editing.wrap_stroke`).
+
+        Parameters
+        ----------
+        points : (m, 2) float
+            At least one point.
+        reach : float
+            How far from the path the tool acts (its radius and what it wakes around).
+        """
+        import shapely
+
+        def line(p: np.ndarray) -> Any:
+            return shapely.LineString(p) if len(p) > 1 else shapely.Point(p[0])
+
+        if self.tile is None:
+            return line(points)
+        from ..editing import wrap_stroke
+
+        return shapely.union_all([line(r) for r in wrap_stroke(points, self.tile, reach) if len(r)])
+
+    def wrap(self) -> int:
+        """Periodic states: renew the ghost images (§5.2's frozen neighbours, one tile away).
+
+        Drops the old ghosts, wraps the centres into the tile, leaves out elements that
+        collide with another across the edges (two elements placed in one iteration on
+        either side of an edge see each other only from the next one: the later goes,
+        or the void of a void and a visible element), and appends a ghost for each
+        image within :attr:`margin` of the tile: same exemplar element, origin and free
+        space (shared flags: an image's free-space point is the same point of the
+        torus), on the horizon (:func:`~strew.synth._grow.update_free_space` then
+        prunes it), frozen (``fixed``) and never yielding. A ghost seeds growth into
+        the tile from across the edge. Context elements (``fixed``) are not wrapped.
+        :func:`~strew.synth.grow` calls this before every update of the free space and
+        :meth:`unwrap` when it returns. Nothing happens in the plane.
+
+        Returns
+        -------
+        int
+            Elements left out for colliding across the edges.
+        """
+        if self.tile is None:
+            return 0
+        self.unwrap()
+        n = self.n
+        own = np.flatnonzero(~self._fixed[:n])
+        if len(own) == 0:
+            return 0
+        prep = self.prep
+        x0, y0, w, h = self.tile
+        m = self.margin
+        pos = self._pos[own]
+        gorig, gpos = [], []
+        for i, j in translations(3, 3):
+            if i == 0 and j == 0:
+                continue
+            p = pos + (i * w, j * h)
+            hit = (p[:, 0] >= x0 - m) & (p[:, 0] <= x0 + w + m) & (p[:, 1] >= y0 - m) & (p[:, 1] <= y0 + h + m)
+            gorig.append(own[hit])
+            gpos.append(p[hit])
+        g_of = np.concatenate(gorig)
+        g_pos = np.concatenate(gpos)
+        dropped = 0
+        if len(g_of):
+            # collisions across the edges: a ghost of a within the collision bound of b
+            # (Prepared.rc and min_dist, as SynthState.conflicts tests them)
+            rc, sk = prep.rc[self._src[:n]], prep.skind[self._src[:n]]
+            reach = max(2.0 * float(rc[own].max()), float(prep.min_dist.max()))
+            lists = cKDTree(pos).query_ball_point(g_pos, r=reach)
+            cnt = np.fromiter((len(v) for v in lists), np.int64, len(lists))
+            if cnt.any():
+                a = np.repeat(g_of, cnt)
+                b = own[np.fromiter((q for v in lists for q in v), np.int64, int(cnt.sum()))]
+                d = np.hypot(*(np.repeat(g_pos, cnt, axis=0) - self._pos[b]).T)
+                hit = (a != b) & (d < np.maximum(rc[a] + rc[b], prep.min_dist[sk[a], sk[b]]))
+                if hit.any():
+                    pairs = np.unique(np.sort(np.c_[a[hit], b[hit]], axis=1), axis=0)
+                    gone = np.zeros(n, bool)
+                    void = prep.void[self._src[:n]]
+                    for i, j in pairs.tolist():  # i < j: j is the later
+                        if gone[i] or gone[j]:
+                            continue
+                        gone[i if void[i] and not void[j] else j] = True
+                    dropped = self._compact(~gone)
+                    new = np.cumsum(~gone) - 1
+                    keep = ~gone[g_of]
+                    g_of, g_pos = new[g_of[keep]], g_pos[keep]
+        k = len(g_of)
+        if k:
+            self._grow_to(self.n + k)
+            idx = np.arange(self.n, self.n + k)
+            self._pos[idx] = g_pos
+            for name in ("_src", "_origin", "_free_base"):
+                arr = getattr(self, name)
+                arr[idx] = arr[g_of]
+            self._horizon[idx] = True
+            self._born[idx] = GHOST_BORN
+            self._fixed[idx] = True
+            self._ghost[idx] = True
+            self.n += k
+        return dropped
 
     # -- free space (§5.1, Eq. 3) ------------------------------------------------------------
     def free_points(self, elems: np.ndarray, alive_only: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -401,7 +628,9 @@ class SynthState:
             Keep void elements (§5.6), flagged in the ``void`` column; by default they
             are hidden (left out).
         clip : bool
-            Leave out elements whose geometry is not wholly inside the region.
+            Leave out elements whose geometry is not wholly inside the region (on a
+            periodic state, see :meth:`set_tile`: whose centre is not in the region;
+            positions are wrapped into the tile and ``meta["periodic"]`` is set).
         drop_overlaps : bool
             When no exemplar has overlapping shapes, leave out the later of any two
             output elements whose shapes overlap (the bounding discs of §4 do not rule
@@ -432,6 +661,23 @@ class SynthState:
             meta=meta or {},
         )
         arr = arr.select(keep)
+        if self.tile is not None:
+            # a repeat tile (see set_tile): centres in the tile, elements may cross its
+            # edges (they wrap in at the opposite ones), overlaps count across the wrap
+            from .._periodic import mark
+
+            arr = mark(arr, self.tile)
+            if clip and self.region is not None and len(arr):
+                arr = arr.select(self.region.contains(arr.xy))
+            if drop_overlaps and self.prep.overlap_free and len(arr) > 1:
+                from ..editing import overlap_drops
+                from ..metrics import wrap_overlaps
+
+                pairs = wrap_overlaps(arr)["pairs"][:, :2]
+                pairs = pairs[pairs[:, 0] != pairs[:, 1]]
+                if len(pairs):
+                    arr = arr.select(~overlap_drops(pairs, 0, np.ones(len(arr), bool)))
+            return arr
         if clip and self.region is not None and len(arr):
             inside = self.region.contains_geometry(arr.geometry, tolerance=1e-9 * max(1.0, *map(abs, self.region.bounds)))
             arr = arr.select(inside)
