@@ -55,6 +55,14 @@ class SprayGrowth:
     rng : int, Generator or None
         Ties and jitter draw from it; the same points in the same calls give the same
         elements.
+    tile : (4,) float, optional
+        ``x0, y0, W, H``: spray on the torus of this repeat tile (issue 18, not in the
+        paper; ``GrowParams.tile``). The growth sees across the tile's edges through
+        ghost images, the stroke and the obstacles wrap (a stroke past an edge
+        continues at the opposite one), and the elements handed out keep their centres
+        in the tile (:func:`strew._periodic.canonical`) with ``meta["periodic"]`` set:
+        copies of them laid side by side neither overlap nor show a seam. The region,
+        if given, is not tested (the tile is the domain); boundary strokes are.
 
     Notes
     -----
@@ -98,7 +106,12 @@ class SprayGrowth:
         relax: bool = True,
         relax_every: int = 16,
         rng: int | np.random.Generator | None = None,
+        tile: Sequence[float] | None = None,
     ) -> None:
+        if tile is not None:
+            from .._periodic import _as_frame
+
+            tile = _as_frame(tile, "tile")
         if isinstance(exemplar, Reference):
             ref = exemplar
         elif isinstance(exemplar, Arrangement):
@@ -138,14 +151,21 @@ class SprayGrowth:
             jitter_color=float(jitter_color),
             relax=bool(relax),
             relax_every=int(relax_every),
+            tile=tile,
         )
         self.radius = float(radius)
+        self.tile = tile
         self._g = _Grower(ref, params, as_rng(rng))
         self._g.waiting = []
         self._g.freeze_relaxed = True
         self._stroke = np.zeros((0, 2))
         self._given = 0  # elements of the growth handed out so far
         self._started = False
+        if tile is not None:  # the ghost margin now, for obstacles handed in before the first point
+            g = self._g
+            g.max_scale = float(g.ex_scale.max()) * (1.0 + g.p.jitter_scale)
+            g.other_rmax = max(g.other_rmax, float(g.kind_radius.max()) * g.max_scale)
+            g._torus_margin()
         self._offsets: list[tuple[int, int]] | None = None
 
     # ------------------------------------------------------------------ input
@@ -163,21 +183,43 @@ class SprayGrowth:
         areal = shapely.area(geoms) > 0
         per_kind = np.array([arr.shapes[k].radius for k in arr.kinds])
         radii = per_kind[arr.kind] * np.abs(arr.scale)
+        if self.tile is not None:
+            # on the torus: each obstacle at its canonical place and its images within the
+            # ghost margin of the tile (the margin is under a tile: one tile away at most)
+            from .._periodic import canonical, translations
+
+            x0, y0, w, h = self.tile
+            cx, cy = canonical(arr.x, arr.y, self.tile)
+            reach = self._g.margin + radii
+            for i, j in translations(3, 3):
+                px, py = cx + i * w, cy + j * h
+                hit = (px + reach > x0) & (px - reach < x0 + w) & (py + reach > y0) & (py - reach < y0 + h)
+                for q in np.flatnonzero(hit):
+                    dx, dy = px[q] - arr.x[q], py[q] - arr.y[q]
+                    gq = shapely.transform(geoms[q], lambda c, dx=dx, dy=dy: c + (dx, dy))
+                    self._g.add_obstacle(float(px[q]), float(py[q]), gq, bool(areal[q]), float(radii[q]))
+            return
         for i in range(len(arr)):
             self._g.add_obstacle(float(arr.x[i]), float(arr.y[i]), geoms[i], bool(areal[i]), float(radii[i]))
 
     def add_points(self, points: np.ndarray | Sequence[Sequence[float]]) -> None:
         """The cursor moved through ``points`` (k, 2): seeds within the radius may grow.
 
-        The first point of a stroke gets the initial seed (§5.1).
+        The first point of a stroke gets the initial seed (§5.1). With a ``tile`` the
+        points may lie anywhere: each continues the stroke by the shortest step on the
+        torus.
         """
         pts = _points(points, "points")
         if len(pts) == 0:
             return
         g = self._g
+        if self.tile is not None:
+            pts = self._unwrapped(pts)
         self._stroke = np.concatenate([self._stroke, pts])
         line = shapely.LineString(self._stroke) if len(self._stroke) >= 2 else shapely.Point(self._stroke[0])
         g.spray_area = line.buffer(self.radius)
+        if self.tile is not None:
+            g.spray_area = self._images(g.spray_area)
         shapely.prepare(g.spray_area)
         if not self._started:
             for p in pts:
@@ -189,6 +231,11 @@ class SprayGrowth:
             # not in the paper: a new initial seed where the growth cannot reach (see Notes)
             for p in pts[::-1]:
                 x, y = float(p[0]), float(p[1])
+                if self.tile is not None:
+                    from .._periodic import canonical
+
+                    cx, cy = canonical(np.array([x]), np.array([y]), self.tile)
+                    x, y = float(cx[0]), float(cy[0])
                 if g.in_domain(x, y) and not self._any_near(x, y):
                     g.new_object(x, y, g.p.start_kind)
                     break
@@ -202,6 +249,35 @@ class SprayGrowth:
                 if ok:
                     g.heap.append((math.hypot(g.pos[s, 0] - ox, g.pos[s, 1] - oy), s))
             heapq.heapify(g.heap)
+
+    def _unwrapped(self, pts: np.ndarray) -> np.ndarray:
+        """Torus: the points as a continuous stroke, each the shortest step from the one
+        before (the first of a stroke wrapped into the tile)."""
+        from .._periodic import canonical, wrap_delta
+
+        _, _, w, h = self.tile  # type: ignore[misc]
+        out = np.empty_like(pts)
+        if len(self._stroke):
+            prev = self._stroke[-1]
+            first = 0
+        else:
+            cx, cy = canonical(pts[:1, 0], pts[:1, 1], self.tile)  # type: ignore[arg-type]
+            prev = out[0] = (cx[0], cy[0])
+            first = 1
+        for k in range(first, len(pts)):
+            prev = out[k] = (prev[0] + wrap_delta(pts[k, 0] - prev[0], w), prev[1] + wrap_delta(pts[k, 1] - prev[1], h))
+        return out
+
+    def _images(self, area: Any) -> Any:
+        """Torus: the spray area with its copies whole tiles away that come within a tile
+        of the tile (where originals and ghosts can be)."""
+        x0, y0, w, h = self.tile  # type: ignore[misc]
+        bx0, by0, bx1, by1 = area.bounds
+        parts = []
+        for i in range(math.ceil((x0 - w - bx1) / w), math.floor((x0 + 2 * w - bx0) / w) + 1):
+            for j in range(math.ceil((y0 - h - by1) / h), math.floor((y0 + 2 * h - by0) / h) + 1):
+                parts.append(shapely.transform(area, lambda c, i=i, j=j: c + (i * w, j * h)))
+        return shapely.union_all(parts) if parts else area
 
     def _any_near(self, x: float, y: float) -> bool:
         """Is a seed or element within the radius of (x, y)? Grid cells nearest first."""
@@ -293,7 +369,12 @@ class SprayGrowth:
         if g.want_color:
             columns["color"] = [g.color[i] for i in idx]
         columns.update(g.copied_columns(g.sub[idx]))
-        return Arrangement(ex.shapes, g.kind[idx], g.pos[idx, 0].copy(), g.pos[idx, 1].copy(), g.rot[idx].copy(), g.scl[idx].copy(), columns=columns, meta={"method": "grow", "tool": "spray"})
+        arr = Arrangement(ex.shapes, g.kind[idx], g.pos[idx, 0].copy(), g.pos[idx, 1].copy(), g.rot[idx].copy(), g.scl[idx].copy(), columns=columns, meta={"method": "grow", "tool": "spray"})
+        if self.tile is not None:
+            from .._periodic import mark
+
+            arr = mark(arr, self.tile)
+        return arr
 
     def arrangement(self) -> Arrangement:
         """All elements handed out so far, in the order :meth:`grow` gave them."""
