@@ -51,6 +51,7 @@ from ..arrangement import Arrangement
 from ..region import Region
 from ._analysis import Reference, size_priority
 from ._clusters import grow_clusters, satellite_structure
+from ._index import GrowIndex
 from ._match import MODES, W1, W2, W3, match_references, order_target
 from ._relax import relax_positions
 
@@ -62,6 +63,8 @@ DEAD, SEED, ELEMENT = 0, 1, 2
 LEAN_SPREAD = 1.15
 #: Elements the growth must not overlap but does not own (a scene the spray paints over).
 OBSTACLE = 3
+#: bit masks of the state tuples :meth:`_Grower.near` is asked for
+_STATE_MASKS: dict[tuple[int, ...], int] = {}
 
 
 @dataclass
@@ -111,6 +114,9 @@ class GrowParams:
     flow_carry: bool = True
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
+    #: ... only when at most this many slots of its ring are left without a placed
+    #: neighbour (an enclosed slot; see ``place``); None: always
+    nudge_open: int | None = None
     #: clustered exemplars grow their hubs first, then each hub's satellites
     #: (:mod:`strew.grow._clusters`); off with a user's priorities or edge flips
     clusters: bool = False
@@ -343,7 +349,6 @@ class _Grower:
         self.off_of: list[tuple[int, int]] = []
         self.ghosts: dict[int, dict[tuple[int, int], int]] = {}
         self.margin = 0.0
-        self.adj: list[set[int]] = []
         self.target: list[dict[int, tuple[float, float]] | None] = []  # ring offsets r_ji
         self.geom: list[Any] = []
         self.color: list[Any] = []
@@ -354,10 +359,11 @@ class _Grower:
         # 10^8 for elements of radius 89 spaced 0.01 apart.)
         self.cell = max(self.l, 0.5 * float(self.kind_radius.max()), 1e-9)
         self.rep: Reporter | None = None  # polled for cancellation in the inner loops
-        self.grid: dict[tuple[int, int], list[int]] = {}
         self.xy: list[tuple[float, float]] = []  # pos as Python floats, for the scalar hot paths
-        self.edge_grid: dict[tuple[int, int], set[tuple[int, int]]] = {}
-        self.edges: set[tuple[int, int]] = set()
+        # the point and edge grids and the connectivity (adj, edges): :mod:`._index`
+        self.index = GrowIndex(self.cell, self.pos, self.state, self.xy)
+        self.adj: list[set[int]] = self.index.adj
+        self.edges: set[tuple[int, int]] = self.index.edges
         self.heap: list[tuple[float, int]] = []
         self.deferred: set[int] = set()
         #: the largest reference ring a seed of each kind (-1: any) can be matched to
@@ -411,9 +417,10 @@ class _Grower:
                 new[:] = 1.0
             new[: len(old)] = old
             setattr(self, name, new)
+        self.index.rebind(self.pos, self.state)
 
     def _cell(self, x: float, y: float) -> tuple[int, int]:
-        return (math.floor(x / self.cell), math.floor(y / self.cell))
+        return self.index.cell_of(x, y)
 
     def new_object(self, x: float, y: float, kind: int) -> int:
         """A new seed at (x, y); on a torus, the image at (x, y) of a seed made at its wrapped place."""
@@ -440,7 +447,7 @@ class _Grower:
         self.color.append(None)
         self.orig_of.append(i)
         self.off_of.append((0, 0))
-        self.grid.setdefault(self._cell(x, y), []).append(i)
+        self.index.insert(i, x, y)
         heapq.heappush(self.heap, (math.hypot(x - self.origin[0], y - self.origin[1]), i))
         self.dirty.add(i)
         if self.use_prio and self.seed_priority(i) > self.none_prio:
@@ -480,7 +487,7 @@ class _Grower:
         own[off] = g
         self._copy_state(i, g)
         if self.state[g] != DEAD:
-            self.grid.setdefault(self._cell(gx, gy), []).append(g)
+            self.index.insert(g, gx, gy)
         # a seed of a higher priority holds back the seeds around its images too (§5.1)
         if self.state[g] == SEED and self.use_prio and self.seed_priority(g) > self.none_prio:
             self.hgrid.setdefault((math.floor(gx / self.hcell), math.floor(gy / self.hcell)), set()).add(g)
@@ -503,9 +510,7 @@ class _Grower:
             was = self.state[g]
             self._copy_state(i, g)
             if self.state[g] == DEAD and was != DEAD:
-                cell = self.grid.get(self._cell(*self.xy[g]))
-                if cell is not None and g in cell:
-                    cell.remove(g)
+                self.index.remove(g)
 
     def _ensure_ghosts(self, i: int) -> None:
         """Ghosts of original ``i`` wherever one lies within the margin of the tile."""
@@ -530,29 +535,11 @@ class _Grower:
         return g is not None and g in self.adj[ia]
 
     def near(self, x: float, y: float, r: float, states: tuple[int, ...] = (SEED, ELEMENT)) -> list[int]:
-        h = self.cell
-        cx0, cy0 = math.floor((x - r) / h), math.floor((y - r) / h)
-        cx1, cy1 = math.floor((x + r) / h), math.floor((y + r) / h)
-        out = []
-        r2 = r * r
-        xy = self.xy
-        st = self.state
-        grid = self.grid
-        if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > len(grid):
-            # a disc wider than the occupied cells: walk those instead of the empty ones
-            lists = [lst for (cx, cy), lst in grid.items() if cx0 <= cx <= cx1 and cy0 <= cy <= cy1]
-        else:
-            lists = [grid.get((cx, cy)) for cx in range(cx0, cx1 + 1) for cy in range(cy0, cy1 + 1)]
-        for lst in lists:
-            if not lst:
-                continue
-            for i in lst:
-                px, py = xy[i]
-                dx = px - x
-                dy = py - y
-                if dx * dx + dy * dy <= r2 and st[i] in states:
-                    out.append(i)
-        return out
+        """Objects within ``r`` of (x, y) in one of ``states`` (:meth:`GrowIndex.near`)."""
+        m = _STATE_MASKS.get(states)
+        if m is None:
+            m = _STATE_MASKS[states] = sum(1 << s for s in set(states))
+        return self.index.near(x, y, r, m)
 
     def _unhigh(self, i: int) -> None:
         """Take seed ``i`` off the priority grid (it was placed, died or moves)."""
@@ -572,16 +559,10 @@ class _Grower:
             if a != b and i in self.hgrid.get(a, ()):
                 self.hgrid[a].discard(i)
                 self.hgrid.setdefault(b, set()).add(i)
-        old = self._cell(*self.xy[i])
-        new = self._cell(x, y)
+        ox, oy = self.xy[i]
         self.pos[i] = (x, y)
         self.xy[i] = (float(x), float(y))
-        if old != new:
-            self.grid[old].remove(i)
-            self.grid.setdefault(new, []).append(i)
-            # edges are indexed by midpoint: reinsert the ones of i
-            for j in self.adj[i]:
-                self._index_edge(i, j)
+        self.index.move(i, ox, oy, x, y)  # a new cell: its edges are listed there too
         if self.tile is not None and self.orig_of[i] == i:
             _, _, w, h = self.tile
             for (ki, kj), g in list(self.ghosts.get(i, {}).items()):
@@ -589,22 +570,6 @@ class _Grower:
             self._ensure_ghosts(i)
 
     # -- edges --------------------------------------------------------------------------
-    def _edge_cells(self, pa: Sequence[float], pb: Sequence[float]) -> list[tuple[int, int]]:
-        h = self.cell
-        x0, x1 = (pa[0], pb[0]) if pa[0] <= pb[0] else (pb[0], pa[0])
-        y0, y1 = (pa[1], pb[1]) if pa[1] <= pb[1] else (pb[1], pa[1])
-        return [
-            (cx, cy)
-            for cx in range(math.floor(x0 / h), math.floor(x1 / h) + 1)
-            for cy in range(math.floor(y0 / h), math.floor(y1 / h) + 1)
-        ]
-
-    def _index_edge(self, a: int, b: int) -> None:
-        """Put edge (a, b) in every grid cell its bounding box covers."""
-        e = (a, b) if a < b else (b, a)
-        for c in self._edge_cells(self.xy[a], self.xy[b]):
-            self.edge_grid.setdefault(c, set()).add(e)
-
     def add_edge(self, a: int, b: int) -> None:
         if self.tile is not None:
             # on the torus an edge is kept at both ends: from each original to the image
@@ -621,12 +586,7 @@ class _Grower:
         self._add_edge(a, b)
 
     def _add_edge(self, a: int, b: int) -> None:
-        if a == b or b in self.adj[a]:
-            return
-        self.adj[a].add(b)
-        self.adj[b].add(a)
-        self.edges.add((a, b) if a < b else (b, a))
-        self._index_edge(a, b)
+        self.index.add_edge(a, b, self.orig_of[a], self.orig_of[b])
 
     def remove_edge(self, a: int, b: int) -> None:
         if self.tile is not None:
@@ -643,92 +603,15 @@ class _Grower:
         self._remove_edge(a, b)
 
     def _remove_edge(self, a: int, b: int) -> None:
-        self.adj[a].discard(b)
-        self.adj[b].discard(a)
-        self.edges.discard((a, b) if a < b else (b, a))
+        self.index.remove_edge(a, b)
 
     def crosses_edges(self, a: int | None, pa: tuple[float, float], b: int | None, pb: tuple[float, float]) -> bool:
-        """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge?"""
-        if self.tile is not None:
-            return self._crosses_edges_torus(a, pa, b, pb)
-        xy = self.xy
-        edges = self.edges
-        edge_grid = self.edge_grid
-        cells = self._edge_cells(pa, pb)
-        px, py = pa
-        qx, qy = pb
-        fx, fy = qx - px, qy - py
-        lists = [cell for cell in map(edge_grid.get, cells) if cell]
-        if not lists:
-            return False
-        # an edge is listed in every cell its box covers: the union (one set operation)
-        # takes each once; edges removed since they were listed are dropped from the cells
-        cand = lists[0] if len(lists) == 1 else set().union(*lists)
-        stale = cand - edges
-        if stale:
-            for cell in lists:
-                cell.difference_update(stale)
-            if len(lists) > 1:
-                cand -= stale
-        for u, v in cand:
-            if u == a or u == b or v == a or v == b:
-                continue
-            # _segments_cross(pa, pb, xy[u], xy[v]), inlined (the hottest test of the growth)
-            ax, ay = xy[u]
-            bx, by = xy[v]
-            ex, ey = bx - ax, by - ay
-            d1 = ex * (py - ay) - ey * (px - ax)
-            d2 = ex * (qy - ay) - ey * (qx - ax)
-            if (d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0):
-                d3 = fx * (ay - py) - fy * (ax - px)
-                d4 = fx * (by - py) - fy * (bx - px)
-                if (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0):
-                    return True
-        return False
+        """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge?
 
-    def _crosses_edges_torus(self, a: int | None, pa: tuple[float, float], b: int | None, pb: tuple[float, float]) -> bool:
-        """:meth:`crosses_edges` on the torus: the segment's images near the tile against
-        the stored edges (each kept at both ends, so one image meets every edge that
-        crosses it); edges at any image of ``a`` or ``b`` do not count."""
-        x0, y0, w, h = self.tile  # type: ignore[misc]
-        m = self.margin
+        Edges at ``a`` or ``b`` (on the torus: at any of their images) do not count.
+        """
         oo = self.orig_of
-        ia = -2 if a is None else oo[a]
-        ib = -2 if b is None else oo[b]
-        lx, hx = min(pa[0], pb[0]), max(pa[0], pb[0])
-        ly, hy = min(pa[1], pb[1]), max(pa[1], pb[1])
-        xy = self.xy
-        edges = self.edges
-        for ki in (-1, 0, 1):
-            dx = ki * w
-            if hx + dx < x0 - m or lx + dx > x0 + w + m:
-                continue
-            for kj in (-1, 0, 1):
-                dy = kj * h
-                if hy + dy < y0 - m or ly + dy > y0 + h + m:
-                    continue
-                px, py = pa[0] + dx, pa[1] + dy
-                qx, qy = pb[0] + dx, pb[1] + dy
-                fx, fy = qx - px, qy - py
-                lists = [cell for cell in map(self.edge_grid.get, self._edge_cells((px, py), (qx, qy))) if cell]
-                if not lists:
-                    continue
-                cand = set().union(*lists) & edges
-                for u, v in cand:
-                    ou, ov = oo[u], oo[v]
-                    if ou == ia or ou == ib or ov == ia or ov == ib:
-                        continue
-                    ax, ay = xy[u]
-                    bx, by = xy[v]
-                    ex, ey = bx - ax, by - ay
-                    d1 = ex * (py - ay) - ey * (px - ax)
-                    d2 = ex * (qy - ay) - ey * (qx - ax)
-                    if (d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0):
-                        d3 = fx * (ay - py) - fy * (ax - px)
-                        d4 = fx * (by - py) - fy * (bx - px)
-                        if (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0):
-                            return True
-        return False
+        return self.index.crosses(-2 if a is None else oo[a], pa, -2 if b is None else oo[b], pb, self.tile, self.margin)
 
     def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
         if self.boundary is None:
@@ -742,9 +625,7 @@ class _Grower:
         self.state[i] = DEAD
         self.deferred.discard(i)
         # the dead take no part in any query: off the grid, so that queries stay short
-        cell = self.grid.get(self._cell(*self.xy[i]))
-        if cell is not None and i in cell:
-            cell.remove(i)
+        self.index.remove(i)
         if self.tile is not None:
             self._sync(i)
 
@@ -1196,15 +1077,19 @@ class _Grower:
                 continue
             self.kind[s] = b
             pick = self.choose(s)
-            if pick is not None and self.place(s, *pick, reach=self.p.canopy_reach * self.l):
+            if pick is not None and self.place(s, *pick, reach=self.p.canopy_reach * self.l, room=True):
                 return True
             self.kind[s] = own
             if self.xy[s] != (ox, oy):
                 self._move(s, ox, oy)
         return False
 
-    def place(self, s: int, a: int, k: int, th: float, reach: float | None = None) -> bool:
-        """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
+    def place(self, s: int, a: int, k: int, th: float, reach: float | None = None, room: bool = False) -> bool:
+        """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds.
+
+        ``room`` (a seed tried as a larger kind it misses, :meth:`try_larger`): where the
+        element would crowd or overlap others, look for room within ``reach`` (``_nudge``).
+        """
         p = self.p
         if self.rep is not None and self.order:
             # throttled poll of should_cancel, before this step changes anything (a seed
@@ -1227,6 +1112,19 @@ class _Grower:
             scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
         # an element as close to one of its own kind (or another) as the reference never
         # has them is refused, like the seeds of too_close_in_kind
+        # Not in the paper: a seed tried as a larger kind it misses (try_larger) was put
+        # out at the smaller kind's spacing, so the larger element crowds or overlaps its
+        # neighbours there nearly always (three sizes: 4 of 201 small seeds with no large
+        # stone within reach became one; small stones then filled the gaps between large
+        # ones, nn[small>large] 0.137-0.143 against 0.127). It looks for room within
+        # ``reach`` instead (``_nudge``), nearest first.
+        if room and (self.too_close_in_kind(x, y, kind, s, (ELEMENT,), placing=True)
+                     or not self.fits_domain(g0 := self.element_geometry(kind, x, y, rot, scale))
+                     or (p.avoid_overlaps and self.overlaps_any(g0, kind, x, y, scale))):
+            moved = self._nudge(s, kind, x, y, rot, scale, reach=reach)
+            if moved is None:
+                return False
+            x, y = moved[0], moved[1]
         if self.too_close_in_kind(x, y, kind, s, (ELEMENT,), placing=True):
             return False
         if self.several_sizes and not self.lean_ok(s, a, k, th, x, y, kind):
@@ -1240,6 +1138,8 @@ class _Grower:
         # Not in the paper: a placement that would overlap an element is refused (the
         # seed dies), so that an exemplar without overlaps grows a pattern without any.
         if p.avoid_overlaps and self.overlaps_any(g, kind, x, y, scale):
+            if p.nudge_open is not None and sum(self.state[o] == ELEMENT for o in self.adj[s]) < n_ring - p.nudge_open:
+                return False
             moved = self._nudge(s, kind, x, y, rot, scale)
             if moved is None:
                 return False
@@ -1351,7 +1251,7 @@ class _Grower:
         ct, st = np.cos(t), np.sin(t)
         return np.c_[ct * rel[:, 0] - st * rel[:, 1], st * rel[:, 0] + ct * rel[:, 1]]
 
-    def _nudge(self, s: int, kind: int, x: float, y: float, rot: float, scale: float) -> tuple[float, float, Any] | None:
+    def _nudge(self, s: int, kind: int, x: float, y: float, rot: float, scale: float, reach: float | None = None) -> tuple[float, float, Any] | None:
         """A place near ``(x, y)`` where the element of seed ``s`` overlaps nothing, or None.
 
         Not in the paper (which does not test overlaps). In a tight tiling the slot a
@@ -1360,14 +1260,17 @@ class _Grower:
         priority, or fronts that met), the element overlapped one of them, the seed died
         and left a hole of a whole element (bricks with a priority). Up to 16 offsets of
         at most ``nudge * l_short`` are tried, nearest first, with the checks of
-        :meth:`_fit_position`; the first that fits is taken.
+        :meth:`_fit_position`; the first that fits is taken. With ``reach`` (room for a
+        larger kind, :meth:`place`), 32 offsets of at most ``reach`` in eight directions.
         """
-        reach = self.p.nudge * self.l_short
+        dirs = 4 if reach is None else 8
+        if reach is None:
+            reach = self.p.nudge * self.l_short
         if reach <= 0:
             return None
         for f in (0.25, 0.5, 0.75, 1.0):
-            for q in range(4):
-                t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
+            for q in range(dirs):
+                t = 2 * math.pi * q / dirs + (math.pi / dirs) * (f * 4 % 2)
                 nx, ny = x + f * reach * math.cos(t), y + f * reach * math.sin(t)
                 if not self.in_domain(nx, ny) or self.crosses_boundary((x, y), (nx, ny)):
                     continue
@@ -1775,7 +1678,7 @@ class _Grower:
         self.color.append(None)
         self.orig_of.append(i)
         self.off_of.append((0, 0))
-        self.grid.setdefault(self._cell(x, y), []).append(i)
+        self.index.insert(i, x, y)
         self.other_rmax = max(self.other_rmax, float(radius))
         return i
 

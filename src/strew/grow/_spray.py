@@ -166,7 +166,6 @@ class SprayGrowth:
             g.max_scale = float(g.ex_scale.max()) * (1.0 + g.p.jitter_scale)
             g.other_rmax = max(g.other_rmax, float(g.kind_radius.max()) * g.max_scale)
             g._torus_margin()
-        self._offsets: list[tuple[int, int]] | None = None
 
     # ------------------------------------------------------------------ input
     def add_obstacles(self, arr: Arrangement) -> None:
@@ -280,25 +279,8 @@ class SprayGrowth:
         return shapely.union_all(parts) if parts else area
 
     def _any_near(self, x: float, y: float) -> bool:
-        """Is a seed or element within the radius of (x, y)? Grid cells nearest first."""
-        g = self._g
-        h = g.cell
-        if (2 * self.radius / h + 3) ** 2 > 4 * max(len(g.grid), 1):
-            # a radius wide against the cells: the grid's own query walks occupied cells
-            return bool(g.near(x, y, self.radius))
-        if self._offsets is None:
-            k = int(math.ceil(self.radius / h)) + 1
-            offs = [(i, j) for i in range(-k, k + 1) for j in range(-k, k + 1) if (max(abs(i), abs(j)) - 1) * h <= self.radius]
-            self._offsets = sorted(offs, key=lambda o: o[0] * o[0] + o[1] * o[1])
-        cx, cy = g._cell(x, y)
-        r2 = self.radius * self.radius
-        grid, st, pos = g.grid, g.state, g.pos
-        for i, j in self._offsets:
-            for q in grid.get((cx + i, cy + j), ()):
-                if st[q] == SEED or st[q] == ELEMENT:
-                    if (pos[q, 0] - x) ** 2 + (pos[q, 1] - y) ** 2 <= r2:
-                        return True
-        return False
+        """Is a seed or element within the radius of (x, y)?"""
+        return bool(self._g.index.near(x, y, self.radius, (1 << SEED) | (1 << ELEMENT), limit=1))
 
     # ------------------------------------------------------------------ growth
     @property

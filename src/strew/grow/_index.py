@@ -1,0 +1,381 @@
+"""The growth's spatial index: point and edge grids and the crossing test (§5.4).
+
+Split from the grower of :mod:`strew.grow._growth` (issue 15 point 7): the grower
+decides what to grow (matching, seeding, the heuristics of Fig. 6, relaxation); this
+class answers where things are:
+
+- which seeds and elements lie within a distance of a point (Fig. 6 (b), the overlap
+  guard, the closeness rules), :meth:`GrowIndex.near`;
+- whether a new edge would cross an existing one (Fig. 6 (d), edge collision),
+  :meth:`GrowIndex.crosses`, on the plane or on the torus of a repeat tile.
+
+It also holds the connectivity graph (``adj``, the set ``edges``), since the edge grid
+follows it.
+
+Both grids are uniform cells of side ``cell`` hashed into one table of chains (flat
+arrays: a chain links the entries of every cell with the same hash, in the order they
+were made). A point has one current entry; moving it to another cell makes a new one and
+leaves the old one stale, and removing it only marks it gone. An edge is listed in every
+cell its bounding box covers; a moved endpoint lists it again (stale entries of its old
+cells stay until the table is rebuilt, and cost only a test). Entries in a cell are met in
+the order they were made, the order the dict-of-lists grid this replaces gave, so the
+growth is unchanged (same bytes for the same seed). Queries run in two compiled kernels
+(numba), one for points and one for edges.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numba
+import numpy as np
+
+__all__ = ["GrowIndex"]
+
+_HX = 73856093
+_HY = 19349663
+
+
+def _hash(cx: int, cy: int, mask: int) -> int:
+    """Chain of cell (cx, cy); Python's integers give the low bits of numba's wrapping int64."""
+    return ((cx * _HX) ^ (cy * _HY)) & mask
+
+
+@numba.njit(cache=True, nogil=True)
+def _near_kernel(x, y, r, states, limit, h, head, ent, n_ent, cur, n_live, pos, state, out):  # pragma: no cover - compiled
+    """Points within ``r`` of (x, y) whose state bit is set in ``states``, in cell order
+    (x-major) and entry order within a cell; at most ``limit``; their count, in ``out``."""
+    mask = head.shape[0] - 1
+    cx0 = math.floor((x - r) / h)
+    cy0 = math.floor((y - r) / h)
+    cx1 = math.floor((x + r) / h)
+    cy1 = math.floor((y + r) / h)
+    r2 = r * r
+    k = 0
+    if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > n_live:
+        # a disc wider than the points: walk the entries instead of the empty cells
+        for e in range(n_ent):
+            i = ent[e, 0]
+            if cur[i] != e or ent[e, 1] < cx0 or ent[e, 1] > cx1 or ent[e, 2] < cy0 or ent[e, 2] > cy1:
+                continue
+            dx = pos[i, 0] - x
+            dy = pos[i, 1] - y
+            if dx * dx + dy * dy <= r2 and ((states >> state[i]) & 1) != 0:
+                out[k] = i
+                k += 1
+                if k >= limit:
+                    return k
+        return k
+    for cx in range(cx0, cx1 + 1):
+        for cy in range(cy0, cy1 + 1):
+            e = head[((cx * _HX) ^ (cy * _HY)) & mask]
+            while e >= 0:
+                if ent[e, 1] == cx and ent[e, 2] == cy:
+                    i = ent[e, 0]
+                    if cur[i] == e:
+                        dx = pos[i, 0] - x
+                        dy = pos[i, 1] - y
+                        if dx * dx + dy * dy <= r2 and ((states >> state[i]) & 1) != 0:
+                            out[k] = i
+                            k += 1
+                            if k >= limit:
+                                return k
+                e = ent[e, 3]
+    return k
+
+
+@numba.njit(cache=True, nogil=True)
+def _cross_kernel(px, py, qx, qy, ia, ib, h, head, ent, ends, alive, pos):  # pragma: no cover - compiled
+    """Does segment pq cross, at a point interior to both, a live edge none of whose
+    ends is an image of ``ia`` or ``ib`` (the originals' ids)?"""
+    mask = head.shape[0] - 1
+    lx, hx = (px, qx) if px <= qx else (qx, px)
+    ly, hy = (py, qy) if py <= qy else (qy, py)
+    fx = qx - px
+    fy = qy - py
+    for cx in range(math.floor(lx / h), math.floor(hx / h) + 1):
+        for cy in range(math.floor(ly / h), math.floor(hy / h) + 1):
+            e = head[((cx * _HX) ^ (cy * _HY)) & mask]
+            while e >= 0:
+                if ent[e, 1] == cx and ent[e, 2] == cy:
+                    d = ent[e, 0]
+                    ou = ends[d, 2]
+                    ov = ends[d, 3]
+                    if alive[d] and ou != ia and ou != ib and ov != ia and ov != ib:
+                        u = ends[d, 0]
+                        v = ends[d, 1]
+                        ax = pos[u, 0]
+                        ay = pos[u, 1]
+                        bx = pos[v, 0]
+                        by = pos[v, 1]
+                        ex = bx - ax
+                        ey = by - ay
+                        d1 = ex * (py - ay) - ey * (px - ax)
+                        d2 = ex * (qy - ay) - ey * (qx - ax)
+                        if (d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0):
+                            d3 = fx * (ay - py) - fy * (ax - px)
+                            d4 = fx * (by - py) - fy * (bx - px)
+                            if (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0):
+                                return True
+                e = ent[e, 3]
+    return False
+
+
+@numba.njit(cache=True, nogil=True)
+def _append_box(item, x0, y0, x1, y1, h, head, tail, ent, n):  # pragma: no cover - compiled
+    """List ``item`` in every cell the box (x0, y0)-(x1, y1) covers, at the ends of the
+    chains; the new entry count, or -1 (nothing written) when ``ent`` is too short."""
+    mask = head.shape[0] - 1
+    cx0 = math.floor(x0 / h)
+    cy0 = math.floor(y0 / h)
+    cx1 = math.floor(x1 / h)
+    cy1 = math.floor(y1 / h)
+    if n + (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > ent.shape[0]:
+        return -1
+    for cx in range(cx0, cx1 + 1):
+        for cy in range(cy0, cy1 + 1):
+            hh = ((cx * _HX) ^ (cy * _HY)) & mask
+            ent[n, 0] = item
+            ent[n, 1] = cx
+            ent[n, 2] = cy
+            ent[n, 3] = -1
+            t = tail[hh]
+            if t >= 0:
+                ent[t, 3] = n
+            else:
+                head[hh] = n
+            tail[hh] = n
+            n += 1
+    return n
+
+
+class _Chains:
+    """Entries (item, cell) in a hash table of chains over grid cells: ``ent`` (cap, 4)
+    holds each entry's item, cell x, cell y and the next entry of its chain (-1: last)."""
+
+    def __init__(self, table: int = 1024) -> None:
+        self.head = np.full(table, -1, dtype=np.int64)
+        self.tail = np.full(table, -1, dtype=np.int64)
+        self.ent = np.full((1024, 4), -1, dtype=np.int64)
+        self.n = 0
+
+    def append_box(self, item: int, x0: float, y0: float, x1: float, y1: float, h: float) -> int:
+        """List ``item`` in the cells of a box (x0 <= x1, y0 <= y1); its first entry."""
+        e = self.n
+        while True:
+            n = _append_box(item, x0, y0, x1, y1, h, self.head, self.tail, self.ent, e)
+            if n >= 0:
+                self.n = n
+                return e
+            grown = np.full((2 * len(self.ent) + int((x1 - x0) / h + 2) * int((y1 - y0) / h + 2), 4), -1, dtype=np.int64)
+            grown[:e] = self.ent[:e]
+            self.ent = grown
+
+    def rebuild(self, keep: np.ndarray, table: int) -> np.ndarray:
+        """Keep the entries ``keep`` (bool, (n,)), in order, in a table of ``table``
+        chains (a power of two); returns the kept entries' old indices."""
+        old = np.flatnonzero(keep)
+        m = len(old)
+        cap = max(1024, 1 << int(2 * m - 1).bit_length()) if m else 1024
+        ent = np.full((cap, 4), -1, dtype=np.int64)
+        ent[:m, :3] = self.ent[old, :3]
+        self.n = m
+        hh = ((ent[:m, 1] * _HX) ^ (ent[:m, 2] * _HY)) & (table - 1)
+        order = np.argsort(hh, kind="stable")
+        hs = hh[order]
+        same = hs[1:] == hs[:-1]
+        ent[order[:-1][same], 3] = order[1:][same]
+        self.ent = ent
+        self.head = np.full(table, -1, dtype=np.int64)
+        self.tail = np.full(table, -1, dtype=np.int64)
+        if m:
+            first = np.r_[True, ~same]
+            last = np.r_[~same, True]
+            self.head[hs[first]] = order[first]
+            self.tail[hs[last]] = order[last]
+        return old
+
+
+class GrowIndex:
+    """Point grid, edge grid and connectivity of a growth.
+
+    Parameters
+    ----------
+    cell : float
+        Side of the grid cells.
+    pos : (cap, 2) float
+        The objects' positions (the grower's array; :meth:`rebind` after it grows).
+    state : (cap,) int8
+        The objects' states (DEAD, SEED, ELEMENT, OBSTACLE: 0-3), likewise.
+    xy : list of (float, float)
+        The same positions as Python floats (the grower's list, kept in step).
+    """
+
+    def __init__(self, cell: float, pos: np.ndarray, state: np.ndarray, xy: list[tuple[float, float]]) -> None:
+        self.cell = float(cell)
+        self.pos = pos
+        self.state = state
+        self.xy = xy
+        self.points = _Chains()
+        self.cur = np.full(len(state), -1, dtype=np.int64)  # each object's current entry
+        self.n_live = 0
+        self.out = np.zeros(len(state), dtype=np.int64)
+        # edges: (end, end, original of the first, original of the second), alive; ids by pair
+        self.edge_cells = _Chains()
+        self.ends = np.zeros((1024, 4), dtype=np.int64)
+        self.alive = np.zeros(1024, dtype=np.bool_)
+        self.n_edges = 0
+        self.edge_id: dict[tuple[int, int], int] = {}
+        self.adj: list[set[int]] = []
+        self.edges: set[tuple[int, int]] = set()
+
+    def rebind(self, pos: np.ndarray, state: np.ndarray) -> None:
+        """The grower's arrays after they grew."""
+        self.pos = pos
+        self.state = state
+        if len(state) > len(self.cur):
+            cur = np.full(len(state), -1, dtype=np.int64)
+            cur[: len(self.cur)] = self.cur
+            self.cur = cur
+            self.out = np.zeros(len(state), dtype=np.int64)
+
+    def cell_of(self, x: float, y: float) -> tuple[int, int]:
+        return (math.floor(x / self.cell), math.floor(y / self.cell))
+
+    # -- points -------------------------------------------------------------------------
+    def insert(self, i: int, x: float, y: float) -> None:
+        """Object ``i`` at (x, y) joins the point grid."""
+        pts = self.points
+        if self.cur[i] < 0:
+            self.n_live += 1
+        if pts.n >= 2 * len(pts.head):
+            self._rebuild_points()
+        x, y = float(x), float(y)
+        self.cur[i] = pts.append_box(i, x, y, x, y, self.cell)
+
+    def remove(self, i: int) -> None:
+        """Object ``i`` leaves the point grid (it died); no-op when not in it."""
+        if self.cur[i] >= 0:
+            self.cur[i] = -1
+            self.n_live -= 1
+
+    def move(self, i: int, ox: float, oy: float, x: float, y: float) -> bool:
+        """Object ``i`` moved from (ox, oy) to (x, y) (``pos`` and ``xy`` already say so);
+        True when it changed cells (its edges are listed again)."""
+        h = self.cell
+        if math.floor(ox / h) == math.floor(x / h) and math.floor(oy / h) == math.floor(y / h):
+            return False
+        if self.cur[i] >= 0:
+            self.remove(i)
+            self.insert(i, x, y)
+        eid = self.edge_id
+        for j in self.adj[i]:
+            self._index_edge(eid[(i, j) if i < j else (j, i)], i, j)
+        return True
+
+    def _rebuild_points(self) -> None:
+        pts = self.points
+        n = pts.n
+        keep = self.cur[pts.ent[:n, 0]] == np.arange(n)
+        table = max(1024, 1 << int(max(int(keep.sum()), 1)).bit_length())
+        old = pts.rebuild(keep, table)
+        self.cur[pts.ent[: len(old), 0]] = np.arange(len(old))
+
+    def near(self, x: float, y: float, r: float, states: int, limit: int = -1) -> list[int]:
+        """Objects within ``r`` of (x, y) whose state ``s`` has bit ``1 << s`` in
+        ``states``, in grid order; at most ``limit`` (-1: all)."""
+        pts = self.points
+        k = _near_kernel(float(x), float(y), float(r), states, limit if limit > 0 else len(self.out), self.cell,
+                         pts.head, pts.ent, pts.n, self.cur, self.n_live, self.pos, self.state, self.out)
+        return self.out[:k].tolist()
+
+    # -- edges --------------------------------------------------------------------------
+    def _index_edge(self, e: int, a: int, b: int) -> None:
+        """List edge ``e`` = (a, b) in every cell its bounding box covers."""
+        xa, ya = self.xy[a]
+        xb, yb = self.xy[b]
+        ec = self.edge_cells
+        if ec.n >= 2 * len(ec.head):
+            self._rebuild_edges()
+        ec.append_box(e, min(xa, xb), min(ya, yb), max(xa, xb), max(ya, yb), self.cell)
+
+    def _rebuild_edges(self) -> None:
+        """Drop the entries of removed edges and of cells an edge no longer covers."""
+        ec = self.edge_cells
+        n = ec.n
+        e = ec.ent[:n, 0]
+        keep = self.alive[e].copy()
+        if keep.any():
+            h = self.cell
+            pu = np.floor(self.pos[self.ends[e, 0]] / h).astype(np.int64)
+            pv = np.floor(self.pos[self.ends[e, 1]] / h).astype(np.int64)
+            lo, hi = np.minimum(pu, pv), np.maximum(pu, pv)
+            cx, cy = ec.ent[:n, 1], ec.ent[:n, 2]
+            keep &= (cx >= lo[:, 0]) & (cx <= hi[:, 0]) & (cy >= lo[:, 1]) & (cy <= hi[:, 1])
+            # one entry per (edge, cell)
+            sel = np.flatnonzero(keep)
+            _, first = np.unique(ec.ent[sel, :3], axis=0, return_index=True)
+            keep[:] = False
+            keep[sel[first]] = True
+        m = int(keep.sum())
+        ec.rebuild(keep, max(1024, 1 << int(max(m, 1)).bit_length()))
+
+    def add_edge(self, a: int, b: int, oa: int, ob: int) -> None:
+        """Edge (a, b), whose ends are images of originals ``oa``, ``ob``."""
+        if a == b or b in self.adj[a]:
+            return
+        self.adj[a].add(b)
+        self.adj[b].add(a)
+        key = (a, b) if a < b else (b, a)
+        self.edges.add(key)
+        e = self.n_edges
+        if e == len(self.alive):
+            ends = np.zeros((2 * e, 4), dtype=np.int64)
+            ends[:e] = self.ends
+            alive = np.zeros(2 * e, dtype=np.bool_)
+            alive[:e] = self.alive
+            self.ends, self.alive = ends, alive
+        self.n_edges = e + 1
+        self.ends[e] = (a, b, oa, ob)
+        self.alive[e] = True
+        self.edge_id[key] = e
+        self._index_edge(e, a, b)
+
+    def remove_edge(self, a: int, b: int) -> None:
+        self.adj[a].discard(b)
+        self.adj[b].discard(a)
+        key = (a, b) if a < b else (b, a)
+        self.edges.discard(key)
+        e = self.edge_id.pop(key, None)
+        if e is not None:
+            self.alive[e] = False
+
+    def crosses(self, ia: int, pa: Sequence[float], ib: int, pb: Sequence[float], tile: tuple[float, float, float, float] | None = None, margin: float = 0.0) -> bool:
+        """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge at a
+        point interior to both? Edges at an image of original ``ia`` or ``ib`` (-2: none)
+        do not count. On the torus of ``tile`` (x0, y0, W, H) the segment's images that
+        reach within ``margin`` of the tile are tested (each edge is kept at both ends,
+        so one image meets every edge that crosses it)."""
+        ec = self.edge_cells
+        if ec.n == 0:
+            return False
+        px, py = float(pa[0]), float(pa[1])
+        qx, qy = float(pb[0]), float(pb[1])
+        if tile is None:
+            return _cross_kernel(px, py, qx, qy, ia, ib, self.cell, ec.head, ec.ent, self.ends, self.alive, self.pos)
+        x0, y0, w, h = tile
+        m = margin
+        lx, hx = min(px, qx), max(px, qx)
+        ly, hy = min(py, qy), max(py, qy)
+        for ki in (-1, 0, 1):
+            dx = ki * w
+            if hx + dx < x0 - m or lx + dx > x0 + w + m:
+                continue
+            for kj in (-1, 0, 1):
+                dy = kj * h
+                if hy + dy < y0 - m or ly + dy > y0 + h + m:
+                    continue
+                if _cross_kernel(px + dx, py + dy, qx + dx, qy + dy, ia, ib, self.cell, ec.head, ec.ent, self.ends, self.alive, self.pos):
+                    return True
+        return False
