@@ -114,9 +114,6 @@ class GrowParams:
     flow_carry: bool = True
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
-    #: ... only when at most this many slots of its ring are left without a placed
-    #: neighbour (an enclosed slot; see ``place``); None: always
-    nudge_open: int | None = None
     #: clustered exemplars grow their hubs first, then each hub's satellites
     #: (:mod:`strew.grow._clusters`); off with a user's priorities or edge flips
     clusters: bool = False
@@ -1077,19 +1074,15 @@ class _Grower:
                 continue
             self.kind[s] = b
             pick = self.choose(s)
-            if pick is not None and self.place(s, *pick, reach=self.p.canopy_reach * self.l, room=True):
+            if pick is not None and self.place(s, *pick, reach=self.p.canopy_reach * self.l):
                 return True
             self.kind[s] = own
             if self.xy[s] != (ox, oy):
                 self._move(s, ox, oy)
         return False
 
-    def place(self, s: int, a: int, k: int, th: float, reach: float | None = None, room: bool = False) -> bool:
-        """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds.
-
-        ``room`` (a seed tried as a larger kind it misses, :meth:`try_larger`): where the
-        element would crowd or overlap others, look for room within ``reach`` (``_nudge``).
-        """
+    def place(self, s: int, a: int, k: int, th: float, reach: float | None = None) -> bool:
+        """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
         p = self.p
         if self.rep is not None and self.order:
             # throttled poll of should_cancel, before this step changes anything (a seed
@@ -1112,19 +1105,6 @@ class _Grower:
             scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
         # an element as close to one of its own kind (or another) as the reference never
         # has them is refused, like the seeds of too_close_in_kind
-        # Not in the paper: a seed tried as a larger kind it misses (try_larger) was put
-        # out at the smaller kind's spacing, so the larger element crowds or overlaps its
-        # neighbours there nearly always (three sizes: 4 of 201 small seeds with no large
-        # stone within reach became one; small stones then filled the gaps between large
-        # ones, nn[small>large] 0.137-0.143 against 0.127). It looks for room within
-        # ``reach`` instead (``_nudge``), nearest first.
-        if room and (self.too_close_in_kind(x, y, kind, s, (ELEMENT,), placing=True)
-                     or not self.fits_domain(g0 := self.element_geometry(kind, x, y, rot, scale))
-                     or (p.avoid_overlaps and self.overlaps_any(g0, kind, x, y, scale))):
-            moved = self._nudge(s, kind, x, y, rot, scale, reach=reach)
-            if moved is None:
-                return False
-            x, y = moved[0], moved[1]
         if self.too_close_in_kind(x, y, kind, s, (ELEMENT,), placing=True):
             return False
         if self.several_sizes and not self.lean_ok(s, a, k, th, x, y, kind):
@@ -1138,8 +1118,6 @@ class _Grower:
         # Not in the paper: a placement that would overlap an element is refused (the
         # seed dies), so that an exemplar without overlaps grows a pattern without any.
         if p.avoid_overlaps and self.overlaps_any(g, kind, x, y, scale):
-            if p.nudge_open is not None and sum(self.state[o] == ELEMENT for o in self.adj[s]) < n_ring - p.nudge_open:
-                return False
             moved = self._nudge(s, kind, x, y, rot, scale)
             if moved is None:
                 return False
@@ -1251,7 +1229,7 @@ class _Grower:
         ct, st = np.cos(t), np.sin(t)
         return np.c_[ct * rel[:, 0] - st * rel[:, 1], st * rel[:, 0] + ct * rel[:, 1]]
 
-    def _nudge(self, s: int, kind: int, x: float, y: float, rot: float, scale: float, reach: float | None = None) -> tuple[float, float, Any] | None:
+    def _nudge(self, s: int, kind: int, x: float, y: float, rot: float, scale: float) -> tuple[float, float, Any] | None:
         """A place near ``(x, y)`` where the element of seed ``s`` overlaps nothing, or None.
 
         Not in the paper (which does not test overlaps). In a tight tiling the slot a
@@ -1260,17 +1238,14 @@ class _Grower:
         priority, or fronts that met), the element overlapped one of them, the seed died
         and left a hole of a whole element (bricks with a priority). Up to 16 offsets of
         at most ``nudge * l_short`` are tried, nearest first, with the checks of
-        :meth:`_fit_position`; the first that fits is taken. With ``reach`` (room for a
-        larger kind, :meth:`place`), 32 offsets of at most ``reach`` in eight directions.
+        :meth:`_fit_position`; the first that fits is taken.
         """
-        dirs = 4 if reach is None else 8
-        if reach is None:
-            reach = self.p.nudge * self.l_short
+        reach = self.p.nudge * self.l_short
         if reach <= 0:
             return None
         for f in (0.25, 0.5, 0.75, 1.0):
-            for q in range(dirs):
-                t = 2 * math.pi * q / dirs + (math.pi / dirs) * (f * 4 % 2)
+            for q in range(4):
+                t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
                 nx, ny = x + f * reach * math.cos(t), y + f * reach * math.sin(t)
                 if not self.in_domain(nx, ny) or self.crosses_boundary((x, y), (nx, ny)):
                     continue
