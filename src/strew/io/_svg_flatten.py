@@ -31,7 +31,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Segments", "parse_path", "parse_transform", "parse_numbers", "from_svgelements", "flatten", "flatten_many", "path_d", "shape_segments", "too_large"]
+__all__ = ["Segments", "parse_path", "parse_transform", "parse_numbers", "points_many", "from_svgelements", "flatten", "flatten_many", "path_d", "shape_segments", "too_large"]
 
 LINE, QUAD, CUBIC, ARC = 0, 1, 2, 3
 MAX_SEGMENT_POINTS = 20000
@@ -321,6 +321,78 @@ def shape_segments(tag: str, num: dict[str, float], points: str | None) -> Segme
     else:
         return EMPTY
     return b.done()
+
+
+_PLAIN_CHARS = re.compile(r"[0-9.eE+\-, \t\n\r\x0c]*")
+_LONE_DOT = re.compile(r"\.(?![0-9])")
+
+
+def points_many(texts: list[str], polygon: list[bool]) -> list[Segments | None] | None:
+    """:func:`shape_segments` of many ``<polygon>`` / ``<polyline>`` ``points`` texts at
+    once (issue 17.3: per element, the regex and numpy calls cost more than their work).
+
+    The texts are checked at once, split at separators and read by ``float``: the same
+    numbers as :func:`parse_numbers`' scan, which costs more per text than the work. The
+    tables' arrays are views of arrays shared by all of them (none is ever written to).
+
+    Parameters
+    ----------
+    texts : list of str
+        The ``points`` attributes (``""`` where there is none).
+    polygon : list of bool
+        Whether each is a polygon (closed) or a polyline.
+
+    Returns
+    -------
+    list of Segments or None, or None
+        Per text what :func:`shape_segments` returns (None: an odd count, left to
+        svgelements); None when some text holds anything but numbers and separators
+        (the caller reads them one by one).
+    """
+    k = len(texts)
+    if k == 0:
+        return []
+    # Only digits, ".", "e", signs and separators, and no "." without a digit after it:
+    # then each piece between separators that float() reads is exactly one number of
+    # parse_numbers' scan (a piece holding two, such as "1-2" or ".5.5", or none, makes
+    # float() fail, and the texts are left to the caller).
+    joined = " ".join(texts)
+    if _PLAIN_CHARS.fullmatch(joined) is None or _LONE_DOT.search(joined) is not None:
+        return None
+    # "nan" (which the texts cannot hold) between texts: its NaNs mark where each ends
+    try:
+        read = np.array(list(map(float, " nan ".join(texts).replace(",", " ").split())))
+    except ValueError:
+        return None
+    ends = np.r_[np.flatnonzero(np.isnan(read)), len(read)]
+    count = ends - np.r_[0, ends[:-1] + 1]
+    vals = read[~np.isnan(read)]
+    npt = count // 2
+    nseg = np.where((count % 2 == 0) & (count >= 4), npt - 1, 0)
+    xy = vals[: 2 * (len(vals) // 2)].reshape(-1, 2) if not (count % 2).any() else None
+    out: list[Segments | None] = [None if c % 2 else EMPTY for c in count.tolist()]
+    if not nseg.any():
+        return out
+    if xy is None:  # some odd counts: the pairs of the others only
+        even = np.repeat(count % 2 == 0, count)
+        xy = vals[even].reshape(-1, 2)
+        npt = np.where(count % 2 == 0, npt, 0)
+    first_pt = np.cumsum(npt) - npt
+    seg_start = np.repeat(first_pt, nseg) + (np.arange(int(nseg.sum())) - np.repeat(np.cumsum(nseg) - nseg, nseg))
+    total = len(seg_start)
+    pts = np.zeros((total, 4, 2))
+    pts[:, 0] = xy[seg_start]
+    pts[:, 3] = xy[seg_start + 1]
+    code = np.zeros(total, np.int8)
+    arc = np.zeros((total, 5))
+    sub = np.zeros(total, np.intp)
+    closed = np.array(polygon, dtype=bool)
+    lo = (np.cumsum(nseg) - nseg).tolist()
+    for i, (a, n) in enumerate(zip(lo, nseg.tolist())):
+        if n:
+            b = a + n
+            out[i] = Segments(code[a:b], pts[a:b], arc[a:b], sub[a:b], closed[i : i + 1])
+    return out
 
 
 def from_svgelements(segments: list[Any]) -> Segments:

@@ -64,6 +64,7 @@ the kind's shape mirrored in its local x axis, so that its geometry stays exact.
 
 from __future__ import annotations
 
+import gc
 import gzip
 import json
 import math
@@ -86,7 +87,7 @@ from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
 from ._svg_flatten import EMPTY as _EMPTY
 from ._svg_flatten import _fmt
-from ._svg_flatten import ARC, Segments, flatten, flatten_many, from_svgelements, parse_path, parse_transform, path_d, shape_segments, too_large
+from ._svg_flatten import ARC, Segments, flatten, flatten_many, from_svgelements, parse_path, parse_transform, path_d, points_many, shape_segments, too_large
 
 __all__ = ["read_svg", "read_svg_shapes", "read_svg_region", "SVGImportWarning", "HIDDEN_CHOICES"]
 
@@ -205,6 +206,9 @@ def _props(el: ET.Element) -> dict[str, str]:
 
 
 def _hidden(el: ET.Element) -> bool:
+    style = el.get("style")
+    if el.get("display") is None and (style is None or "display" not in style):
+        return False  # most objects: no display property at all
     return _props(el).get("display", "").strip() == "none"
 
 
@@ -558,7 +562,7 @@ class _Doc:
                     pt = _apply(m, np.array([[self.length(part.el, "cx"), self.length(part.el, "cy")]]))[0]
                     labels[i][part.label] = (float(pt[0]), float(pt[1]))
                     continue
-                smax = _sigma_max(m)
+                smax = 1.0 if m is _IDENTITY else _sigma_max(m)
                 if smax == 0:
                     continue
                 segs = self.segments(part.el)
@@ -572,7 +576,9 @@ class _Doc:
         for (i, m), flat in zip(where, flatten_many(tables, np.array(tols))):
             for pts, closed, curved in flat:
                 curves[i] |= curved
-                paths[i].append(Path(_apply(m, pts), closed))
+                # the identity (an object drawn in the root's frame) maps each point to
+                # itself + 0.0, bit for bit (-0.0 becomes 0.0, as in the product)
+                paths[i].append(Path(pts + 0.0 if m is _IDENTITY else _apply(m, pts), closed))
         return [_Flat(p, lab, c) for p, lab, c in zip(paths, labels, curves)]
 
     def segments(self, el: ET.Element) -> Segments:
@@ -582,6 +588,21 @@ class _Doc:
         if segs is None:
             segs = self._segments[key] = self._parse_segments(el)
         return segs
+
+    def preparse(self, els: list[ET.Element]) -> None:
+        """Parse the ``points`` of many polygons and polylines at once into the cache of
+        :meth:`segments` (:func:`._svg_flatten.points_many`); what that leaves (unusual
+        text) is parsed one by one when asked for."""
+        els = [el for el in els if id(el) not in self._segments]
+        if not els:
+            return
+        found = points_many([el.get("points") or "" for el in els], [_local(el.tag) == "polygon" for el in els])
+        if found is None:
+            return
+        cache = self._segments
+        for el, segs in zip(els, found):
+            if segs is not None:
+                cache[id(el)] = segs
 
     def _parse_segments(self, el: ET.Element) -> Segments:
         tag = _local(el.tag)
@@ -835,11 +856,20 @@ def _guarded(fn: Any) -> Any:
 
     @functools.wraps(fn)
     def wrapper(source: Any, *args: Any, **kwargs: Any) -> Any:
+        # The reading makes a few small objects per SVG object and frees none of them
+        # until it returns, so the cyclic collector's passes over them find nothing; they
+        # cost 10-15% of a large file's reading (issue 17.3). Collection resumes after.
+        paused = gc.isenabled()
+        if paused:
+            gc.disable()
         try:
             return fn(source, *args, **kwargs)
         except RecursionError:
             name = FsPath(source).name if isinstance(source, os.PathLike) or (isinstance(source, str) and not source.lstrip().startswith("<")) else "<svg text>"
             raise InputError(f"{name}: elements nested too deeply") from None
+        finally:
+            if paused:
+                gc.enable()
 
     return wrapper
 
@@ -1146,6 +1176,29 @@ def _invariants(sig: _Signature | None) -> list[float]:
     return [sig.size, sig.radius, sig.gyration, sig.tolerance, 1.0 if sig.is_area else -1.0, *mags]
 
 
+def _invariants_many(sigs: list[_Signature | None]) -> np.ndarray:
+    """(n, 5 + _KMAX - 1) the rows :func:`_invariants` gives, for many signatures at once
+    (the same arithmetic elementwise, so the same numbers)."""
+    rows = np.empty((len(sigs), 5 + _KMAX - 1))
+    rows[:] = _invariants(None)
+    ok = [i for i, sig in enumerate(sigs) if sig is not None and sig.size > 0]
+    if not ok:
+        return rows
+    have = [sigs[i] for i in ok]
+    size = np.array([sig.size for sig in have])  # type: ignore[union-attr]
+    g = np.maximum(np.array([sig.gyration for sig in have]), 1e-300)  # type: ignore[union-attr]
+    mom = np.array([sig.moments[2:] for sig in have])  # type: ignore[union-attr]
+    # Python's powers and hypot (numpy's array power and complex abs round otherwise)
+    power = np.array([[v**k for k in range(2, _KMAX + 1)] for v in g.tolist()])
+    rows[ok, 0] = size
+    rows[ok, 1] = [sig.radius for sig in have]  # type: ignore[union-attr]
+    rows[ok, 2] = [sig.gyration for sig in have]  # type: ignore[union-attr]
+    rows[ok, 3] = [sig.tolerance for sig in have]  # type: ignore[union-attr]
+    rows[ok, 4] = [1.0 if sig.is_area else -1.0 for sig in have]  # type: ignore[union-attr]
+    rows[ok, 5:] = np.hypot(mom.real, mom.imag) / (size[:, None] * power)
+    return rows
+
+
 def _match(ref: _Signature, other: _Signature) -> tuple[float, float] | None:
     """Similarity ``other = s R(t) (ref - ref.centroid) + other.centroid``, or None.
 
@@ -1270,7 +1323,7 @@ class _Reader:
         self._outline_of: dict[int, tuple[tuple[Any, ...], np.ndarray] | None] = {}
         self._key_source: dict[int, tuple[str | None, tuple[str, ...] | None]] = {}
         self._prep_index: dict[int, int] = {}  # id(el) -> index among the prepared objects
-        self._partners: tuple[np.ndarray, np.ndarray] | None = None  # CSR: earlier prepared objects that may match
+        self._partners: tuple[list[int], np.ndarray] | None = None  # CSR: earlier prepared objects that may match
         self._kind_at: dict[int, int] = {}  # prepared index -> index in kinds of the kind it made
 
     def unique(self, name: str) -> str:
@@ -1391,11 +1444,16 @@ class _Reader:
 
     def place(self, kind: _Kind, g: np.ndarray, void: bool, el: ET.Element, hidden: bool = False) -> None:
         """Element of ``kind`` drawn by ``g`` (reference frame -> world)."""
-        lin = g[:, :2] @ _MIRROR[:, :2] if kind.mirrored else g[:, :2]
-        rot, s = _similarity(lin)
-        if not (s > 0):
-            return
-        x, y = _apply(g, kind.origin[None, :])[0]
+        if g is _IDENTITY and not kind.mirrored:  # an object that drew its own kind: what the lines below give
+            rot, s = 0.0, 1.0
+            x, y = kind.origin.tolist()
+            x, y = x + 0.0, y + 0.0
+        else:
+            lin = g[:, :2] @ _MIRROR[:, :2] if kind.mirrored else g[:, :2]
+            rot, s = _similarity(lin)
+            if not (s > 0):
+                return
+            x, y = _apply(g, kind.origin[None, :])[0]
         kind.max_scale = max(kind.max_scale, s)
         self.elements.append(_Element(kind, float(x), float(y), rot, s, void, _data_attrs(el), hidden))
 
@@ -1458,7 +1516,7 @@ class _Reader:
         self.place(placed[0], placed[1], void, el, hidden)
         if source is not None and len(parts) == 1 and source not in self.sources:
             # for later objects with the same geometry text (see copy_of)
-            self.sources[source] = [placed[0], placed[1], _compose(m, doc.transform(el)), None]
+            self.sources[source] = [placed[0], placed[1], (m, el), None]  # (m, el): the map is composed if a copy comes
         if outline is not None and len(parts) == 1 and outline[0] not in self.outlines:
             self.outlines[outline[0]] = (placed[0], placed[1], outline[1])
 
@@ -1530,6 +1588,7 @@ class _Reader:
         doc = self.doc
         seen_source: set[tuple[str, ...]] = set()
         todo: list[tuple[ET.Element, bool, str | None, Segments, np.ndarray]] = []
+        doc.preparse([el for what, el, _, _ in self._ahead if what in ("object", "void-object") and _local(el.tag) in ("polygon", "polyline")])
         for what, el, m, _ in self._ahead:
             if what not in ("object", "void-object") or _local(el.tag) not in _SHAPE_TAGS:
                 continue
@@ -1568,7 +1627,7 @@ class _Reader:
                 drop = {i for i in over if too_large(todo[i][3], MAX_COORD)}
                 todo = [t for i, t in enumerate(todo) if i not in drop]
         seen_outline: set[tuple[Any, ...]] = set()
-        rows: list[list[float]] = []
+        rows: list[np.ndarray] = []
         valid: list[bool] = []
         # in chunks, so that the arrays of one chunk stay small (fresh large arrays cost
         # more in page faults than in arithmetic: 10 MB in one batch read 1.3x slower per MB)
@@ -1598,12 +1657,13 @@ class _Reader:
             sigs = doc.signatures([(parts, flat) if flat.paths else ([], _Flat([], {}, False)) for (_, parts), flat in zip(items, flats)])
             for (el, parts), flat, sig in zip(items, flats, sigs):
                 self._prepared[id(el)] = (parts, flat, sig)
-                self._prep_index[id(el)] = len(rows)
-                rows.append(_invariants(sig))
+                self._prep_index[id(el)] = len(valid)
                 valid.append(sig is not None)
+            rows.append(_invariants_many(sigs))
         if not rows:
             return
-        self._partners = _candidate_pairs(np.array(rows), np.array(valid))
+        found = _candidate_pairs(np.concatenate(rows), np.array(valid))
+        self._partners = None if found is None else (found[0].tolist(), found[1])
 
     def prepared_candidates(self, el: ET.Element) -> list[int] | None:
         """:meth:`candidate_kinds` of a prepared object from :meth:`prepare`'s pairs, or None.
@@ -1616,7 +1676,7 @@ class _Reader:
         if j is None or self._partners is None or len(self._kind_at) != len(self.kinds):
             return None
         start, earlier = self._partners
-        lo, hi = int(start[j]), int(start[j + 1])
+        lo, hi = start[j], start[j + 1]
         if lo == hi:
             return []
         kind_at = self._kind_at
@@ -1720,6 +1780,7 @@ class _Reader:
         if not kind.matchable or not _has_orientation(kind):
             return False
         if frame is None:  # kind frame -> the first object's own coordinates
+            first = _compose(first[0], self.doc.transform(first[1]))
             if abs(_det(first)) < 1e-300:
                 return False
             frame = known[3] = _compose(_invert(first), pose)
@@ -1813,16 +1874,16 @@ class _Reader:
         """The kind's shape in its local frame (flattened finely enough for its largest copy)."""
         doc = self.doc
         origin = kind.origin
-        frame = _translate(-origin[0], -origin[1])
-        if kind.mirrored:
-            frame = _compose(_MIRROR, frame)
-        tol = doc.tolerance / max(1.0, kind.max_scale)
         known = kind.flat
         if known is not None and known.paths and not known.curves and not known.labels and not kind.mirrored and not centred:
             # straight lines flatten alike at any tolerance: move the kind's own flattening
             # into its frame instead of flattening again (issue 17.3; the same points up to
             # rounding: one translation after the parts' maps instead of one composed map)
             return Shape(tuple(Path(p.points - origin, p.closed) for p in known.paths), None, kind.style, {})
+        frame = _translate(-origin[0], -origin[1])
+        if kind.mirrored:
+            frame = _compose(_MIRROR, frame)
+        tol = doc.tolerance / max(1.0, kind.max_scale)
         flat = doc.flatten(kind.parts, frame, tol)
         if centred:
             b = _bounds(flat.paths)
@@ -1919,15 +1980,26 @@ def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> l
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         canon = rel / rel[far_at][obj]
         q = np.round(canon.view(np.float64) * 100).astype(np.int64)
-    for j, i in enumerate(sel):
-        s0, s1 = int(start[j]), int(end[j])
-        if bad[s1] != bad[s0] or not np.isfinite(top[j]):
+    # the hash's bytes cut from the bytes of all objects at once (the same bytes as each
+    # object's own arrays give)
+    qb = q.tobytes()
+    codeb = code.tobytes()
+    subb = np.concatenate([items[i][1].sub for i in sel]).tobytes()
+    closed = [items[i][1].closed for i in sel]
+    nclosed = np.fromiter(map(len, closed), dtype=np.intp, count=len(sel))
+    closedb = np.concatenate(closed).tobytes()
+    seg0 = (np.cumsum(nseg) - nseg).tolist()
+    cl0 = (np.cumsum(nclosed) - nclosed).tolist()
+    bad_l, top_l, far_l = bad.tolist(), top.tolist(), far.tolist()
+    wq, wcode, wsub, wcl = q.itemsize * 2, code.itemsize, subb and len(subb) // len(code), closedb and len(closedb) // max(1, int(nclosed.sum()))
+    for j, (i, s0, s1, a0, na, c0, nc) in enumerate(zip(sel, start.tolist(), end.tolist(), seg0, nseg.tolist(), cl0, nclosed.tolist())):
+        if bad_l[s1] != bad_l[s0] or not math.isfinite(top_l[j]):
             out[i] = _Reader.control_outline_of(*items[i])
             continue
-        if not top[j] > 0:
+        if not top_l[j] > 0:
             continue
-        segs = items[i][1]
-        out[i] = ((items[i][0] or "", segs.code.tobytes(), segs.sub.tobytes(), segs.closed.tobytes(), int(far[j]), q[2 * s0 : 2 * s1].tobytes()), z[s0:s1])
+        key = (items[i][0] or "", codeb[wcode * a0 : wcode * (a0 + na)], subb[wsub * a0 : wsub * (a0 + na)], closedb[wcl * c0 : wcl * (c0 + nc)], far_l[j], qb[wq * s0 : wq * s1])
+        out[i] = (key, z[s0:s1])
     return out
 
 
