@@ -48,9 +48,11 @@ def _as_points(points: Any, where: str) -> np.ndarray:
         raise InputError(f"{where}: points must be numbers ({exc})") from None
     if arr.ndim != 2 or arr.shape[1] != 2:
         raise InputError(f"{where}: points must have shape (n, 2), got {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        raise InputError(f"{where}: NaN or inf coordinate")
-    if arr.size and np.abs(arr).max() > MAX_COORD:
+    # one pass for both checks (NaN fails the comparison too): shapes are made by the
+    # thousand when an SVG of many kinds is read (issue 17.3)
+    if arr.size and not float(np.abs(arr).max()) <= MAX_COORD:
+        if not np.isfinite(arr).all():
+            raise InputError(f"{where}: NaN or inf coordinate")
         # beyond this, squared distances and areas overflow (issue 17)
         raise InputError(f"{where}: coordinate magnitude over {MAX_COORD:.0e}")
     return arr
@@ -66,7 +68,7 @@ def _normalise_path(p: Any, where: str) -> Path:
     else:
         pts, closed = p, True
     arr = _as_points(pts, f"{where}.points")
-    if closed and len(arr) > 1 and np.array_equal(arr[0], arr[-1]):
+    if closed and len(arr) > 1 and arr[0, 0] == arr[-1, 0] and arr[0, 1] == arr[-1, 1]:
         arr = arr[:-1]
     arr = np.ascontiguousarray(arr)
     arr.setflags(write=False)
