@@ -93,7 +93,7 @@ def test_interior_grid_agrees_with_shapely(geom):
 
 def test_candidate_draw_is_bernoulli_alpha_per_pixel():
     """Block-bounded geometric skips give the same law: pixel i joins Q with (e/emax)**n."""
-    from strew.pack._fit import BLOCK, _block_max, _draw_q
+    from strew.pack._draw import BLOCK, _block_max, _draw_q
 
     power = 16.0
     # levels from the maximum down to just above the cut, spread over blocks of every kind

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from strew import InputError, Region, Shape
 from strew.metrics import outside, overlaps
 from strew.pack import pack
-from strew.pack._fit import _in_region, _polys_hit, ring_layout
+from strew.pack._predicates import _in_region, _polys_hit, ring_layout
 
 HOOK = Shape.polygon([(-15, -15), (15, -15), (15, -7), (-5, -7), (-5, 7), (15, 7), (15, 15), (-15, 15)])
 

@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 from strew import Region, load_shapes
 from strew.metrics import coverage, outside, overlaps
 from strew.pack import pack
-from strew.pack._fit import _kind_order
+from strew.pack._draw import _kind_order
 
 SHAPES = Path(__file__).resolve().parents[2] / "examples" / "shapes"
 L_SHAPE = Region(shapely.Polygon([(0, 0), (400, 0), (400, 200), (200, 200), (200, 400), (0, 400)]))

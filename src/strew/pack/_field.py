@@ -19,7 +19,11 @@ import numba
 import numpy as np
 import shapely
 
-from .._numba_geometry import seg_dist2
+from .._kernels.geometry import seg_dist2
+from .._kernels.geometry import seg_dist2_min as _seg_dist2
+from .._kernels.raster import edt as _edt
+from .._kernels.raster import edt_torus as _edt_torus
+from .._kernels.raster import scan_fill as _scan_fill
 from ..region import Region
 
 __all__ = ["DistanceField"]
@@ -54,7 +58,8 @@ class DistanceField:
         # The same grid as Region.rasterize (pixel centres at x0 + (c + 0.5) * cell), but
         # filled by even-odd scanlines over the domain's rings and then cleared inside
         # the regions placed so far (Step 1), and one exact Euclidean distance transform
-        # (Felzenszwalb & Huttenlocher), all compiled: no per-pixel shapely test.
+        # (Felzenszwalb & Huttenlocher), all compiled: no per-pixel shapely test (the shared
+        # kernels of strew._kernels.raster; why this EDT and not scipy's: see there).
         x0, y0, x1, y1 = region.bounds
         cell = float(cell)
         self.x0, self.y0, self.cell = float(x0), float(y0), cell
@@ -82,7 +87,8 @@ class DistanceField:
         The raster has a whole number of pixels across each side, so that it wraps
         exactly: pixels ``W / cols`` by ``H / rows``, each side at most ``cell``. Placed
         regions are marked with their wrapped images, and the distance transform runs on
-        the mask padded by its own wrapped rows and columns (:func:`_edt_torus`): the
+        the mask padded by its own wrapped rows and columns
+        (:func:`strew._kernels.raster.edt_torus`): the
         wrapped distances to the obstacle pixel centres (at least the true distances,
         as in the plane).
         """
@@ -221,222 +227,6 @@ def _occupy(d, x0, y0, cell, segs, offsets, bounds, grow):  # pragma: no cover -
                     d[r, c] = 0.0
                 elif best < cur * cur:
                     d[r, c] = np.sqrt(best)
-
-
-@numba.njit(cache=True)
-def _scan_fill(mask, x0, y0, cell, segs, offsets, value):  # pragma: no cover - numba
-    """Set ``mask`` to ``value`` at the pixel centres inside each group of ring edges.
-
-    Group ``g`` is the edges ``segs[offsets[g]:offsets[g + 1]]`` of one polygon; a centre
-    is inside by the even-odd rule with the half-open crossing test of :func:`_occupy`
-    (an edge counts when ``(ay > py) != (by > py)`` and the centre lies left of the
-    crossing), evaluated for a whole row at once from the sorted crossings.
-    """
-    rows, cols = mask.shape
-    xs = np.empty(max(len(segs), 1))
-    for g in range(len(offsets) - 1):
-        s0, s1 = offsets[g], offsets[g + 1]
-        if s1 <= s0:
-            continue
-        lo = np.inf
-        hi = -np.inf
-        for s in range(s0, s1):
-            lo = min(lo, segs[s, 1], segs[s, 3])
-            hi = max(hi, segs[s, 1], segs[s, 3])
-        r0 = max(int(np.floor((lo - y0) / cell)) - 1, 0)
-        r1 = min(int(np.ceil((hi - y0) / cell)) + 1, rows)
-        for r in range(r0, r1):
-            py = y0 + (r + 0.5) * cell
-            m = 0
-            for s in range(s0, s1):
-                ay = segs[s, 1]
-                by = segs[s, 3]
-                if (ay > py) != (by > py):
-                    ax = segs[s, 0]
-                    xc = ax + (py - ay) * (segs[s, 2] - ax) / (by - ay)
-                    j = m  # insertion sort: a row crosses few edges
-                    while j > 0 and xs[j - 1] > xc:
-                        xs[j] = xs[j - 1]
-                        j -= 1
-                    xs[j] = xc
-                    m += 1
-            if m < 2:
-                continue
-            # a centre px is inside when an odd number of crossings lie right of it,
-            # i.e. xs[2i] <= px < xs[2i + 1]
-            for i in range(0, m - 1, 2):
-                xa = xs[i]
-                xb = xs[i + 1]
-                c = max(int(np.floor((xa - x0) / cell - 0.5)), 0)
-                while c < cols:
-                    px = x0 + (c + 0.5) * cell
-                    if px >= xb:
-                        break
-                    if px >= xa:
-                        mask[r, c] = value
-                    c += 1
-
-
-@numba.njit(cache=True)
-def _edt(free):  # pragma: no cover - numba
-    """Exact Euclidean distance (in pixels) of each True pixel to the nearest False pixel
-    or to the pixels just outside the array; 0 at False pixels.
-
-    Felzenszwalb & Huttenlocher's two passes of lower envelopes of parabolas, O(pixels),
-    the same values as ``scipy.ndimage.distance_transform_edt`` of the padded mask.
-    """
-    rows, cols = free.shape
-    g = np.empty((rows, cols))
-    # columns: squared distance to the nearest obstacle in the column (the rows -1 and
-    # ``rows`` are obstacles)
-    for c in range(cols):
-        last = -1
-        for r in range(rows):
-            if not free[r, c]:
-                last = r
-                g[r, c] = 0.0
-            else:
-                g[r, c] = float(r - last) * float(r - last)  # not ** 2: see _occupy_posed
-        last = rows
-        for r in range(rows - 1, -1, -1):
-            if not free[r, c]:
-                last = r
-            else:
-                dd = float(last - r) * float(last - r)
-                if dd < g[r, c]:
-                    g[r, c] = dd
-    out = np.zeros((rows, cols))
-    n = cols + 2  # with the obstacle columns -1 and ``cols``
-    f = np.empty(n)
-    v = np.empty(n, dtype=np.int64)
-    z = np.empty(n + 1)
-    for r in range(rows):
-        f[0] = 0.0
-        f[n - 1] = 0.0
-        for c in range(cols):
-            f[c + 1] = g[r, c] if free[r, c] else 0.0
-        # lower envelope of the parabolas (q - i)**2 + f[i]
-        k = 0
-        v[0] = 0
-        z[0] = -np.inf
-        z[1] = np.inf
-        for q in range(1, n):
-            while True:
-                p = v[k]
-                sx = ((f[q] + q * q) - (f[p] + p * p)) / (2.0 * q - 2.0 * p)
-                if sx <= z[k]:
-                    k -= 1
-                else:
-                    break
-            k += 1
-            v[k] = q
-            z[k] = sx
-            z[k + 1] = np.inf
-        k = 0
-        for q in range(1, n - 1):
-            while z[k + 1] < q:
-                k += 1
-            if free[r, q - 1]:
-                p = v[k]
-                out[r, q - 1] = np.sqrt((q - p) * (q - p) + f[p])
-    return out
-
-
-def _edt_torus(free: np.ndarray, sx: float, sy: float) -> np.ndarray:
-    """Distance (document units) of each True pixel of a wrapping raster to the nearest
-    False pixel on the torus, pixels ``sx`` by ``sy``; 0 at False pixels.
-
-    The mask is padded with its own wrapped rows and columns, a margin of 16 pixels
-    first (fill-gap's pixels are a sixth of the smallest element), and the padded
-    array's edge counts as an obstacle (:func:`_edt_aniso`). A value no larger than
-    the margin is then exact: any nearer obstacle would lie in the padded array. While a
-    value exceeds it, the margin doubles (the values are bounded: at most half the
-    tile's diagonal).
-    """
-    rows, cols = free.shape
-    py = px = 16
-    while True:
-        big = np.pad(free, ((py, py), (px, px)), mode="wrap")
-        d = _edt_aniso(big, sx, sy)[py:py + rows, px:px + cols]
-        if d.max() <= min(py * sy, px * sx):
-            return np.ascontiguousarray(d)
-        py, px = 2 * py, 2 * px
-
-
-@numba.njit(cache=True)
-def _edt_aniso(free, sx, sy):  # pragma: no cover - numba
-    """:func:`_edt` for pixels ``sx`` by ``sy`` (document units; repeat tiles, issue 18):
-    the distance of each True pixel centre to the nearest False one or to the pixels
-    just outside the array, by the same two passes of lower envelopes of parabolas."""
-    rows, cols = free.shape
-    g = np.empty((rows, cols))
-    for c in range(cols):
-        last = -1
-        for r in range(rows):
-            if not free[r, c]:
-                last = r
-                g[r, c] = 0.0
-            else:
-                dd = float(r - last) * sy
-                g[r, c] = dd * dd
-        last = rows
-        for r in range(rows - 1, -1, -1):
-            if not free[r, c]:
-                last = r
-            else:
-                dd = float(last - r) * sy
-                if dd * dd < g[r, c]:
-                    g[r, c] = dd * dd
-    out = np.zeros((rows, cols))
-    n = cols + 2
-    f = np.empty(n)
-    v = np.empty(n, dtype=np.int64)
-    z = np.empty(n + 1)
-    s2 = sx * sx
-    for r in range(rows):
-        f[0] = 0.0
-        f[n - 1] = 0.0
-        for c in range(cols):
-            f[c + 1] = g[r, c] if free[r, c] else 0.0
-        # lower envelope of the parabolas sx**2 (q - i)**2 + f[i]
-        k = 0
-        v[0] = 0
-        z[0] = -np.inf
-        z[1] = np.inf
-        for q in range(1, n):
-            while True:
-                p = v[k]
-                sq = ((f[q] + s2 * q * q) - (f[p] + s2 * p * p)) / (2.0 * s2 * (q - p))
-                if sq <= z[k]:
-                    k -= 1
-                else:
-                    break
-            k += 1
-            v[k] = q
-            z[k] = sq
-            z[k + 1] = np.inf
-        k = 0
-        for q in range(1, n - 1):
-            while z[k + 1] < q:
-                k += 1
-            if free[r, q - 1]:
-                p = v[k]
-                out[r, q - 1] = np.sqrt(s2 * (q - p) * (q - p) + f[p])
-    return out
-
-
-@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _seg_dist2(px, py, ax, ay, ex, ey, il2, best):  # pragma: no cover - numba
-    """Smallest squared distance from (px, py) to segments ``a + t e`` (``il2 = 1 / |e|**2``,
-    0 for a point), starting from ``best``; branch-free, so the loop vectorises."""
-    for k in range(len(ax)):
-        dx = px - ax[k]
-        dy = py - ay[k]
-        t = min(max((dx * ex[k] + dy * ey[k]) * il2[k], 0.0), 1.0)
-        qx = dx - t * ex[k]
-        qy = dy - t * ey[k]
-        best = min(best, qx * qx + qy * qy)
-    return best
 
 
 @numba.njit(cache=True)

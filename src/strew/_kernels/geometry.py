@@ -1,0 +1,131 @@
+"""Segment and polygon predicates shared by the compiled loops (issue 15 point 5).
+
+Coordinates are plain floats; polygons are *flat ring layouts*: vertices ``v`` (n, 2),
+each ring closed (its last vertex repeats its first), ring ``r`` spanning
+``v[rings[r]:rings[r + 1]]`` (``rings`` (r + 1,) int64).
+
+The predicates are robust in one direction: an orientation or a crossing within the
+relative tolerance :data:`TOL` is *too close to call* and reported as touching, so a
+caller that treats touching as a collision never accepts a doubtful case (see
+``strew.pack._fit``).
+"""
+
+from __future__ import annotations
+
+import numba
+
+__all__ = ["TOL", "seg_dist2", "seg_dist2_min", "orient", "seg_hit", "inside", "where"]
+
+# Relative tolerance of the exact tests: an orientation whose value is within TOL of the
+# magnitude of its two products, or a crossing within TOL of the point it is compared
+# with, counts as touching (far above the rounding of these few operations, about
+# 3.3e-16, so the sign of every other decision is certain).
+TOL = 1e-12
+
+_SMALL = dict(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def seg_dist2(px: float, py: float, ax: float, ay: float, bx: float, by: float) -> float:  # pragma: no cover - numba
+    """Squared distance from the point ``(px, py)`` to the segment ``(ax, ay)-(bx, by)``."""
+    dx = bx - ax
+    dy = by - ay
+    ll = dx * dx + dy * dy
+    t = 0.0
+    if ll > 0.0:
+        t = ((px - ax) * dx + (py - ay) * dy) / ll
+        if t < 0.0:
+            t = 0.0
+        elif t > 1.0:
+            t = 1.0
+    qx = ax + t * dx - px
+    qy = ay + t * dy - py
+    return qx * qx + qy * qy
+
+
+@numba.njit(**_SMALL)
+def seg_dist2_min(px, py, ax, ay, ex, ey, il2, best):  # pragma: no cover - numba
+    """Smallest squared distance from ``(px, py)`` to the segments ``a + t e``, starting
+    from ``best``.
+
+    ``ax, ay, ex, ey, il2`` are (s,) float: start points, direction vectors and
+    ``1 / |e|**2`` (0 for a point). Branch-free, so the loop vectorises; the values
+    equal :func:`seg_dist2`'s up to rounding.
+    """
+    for k in range(len(ax)):
+        dx = px - ax[k]
+        dy = py - ay[k]
+        t = min(max((dx * ex[k] + dy * ey[k]) * il2[k], 0.0), 1.0)
+        qx = dx - t * ex[k]
+        qy = dy - t * ey[k]
+        best = min(best, qx * qx + qy * qy)
+    return best
+
+
+@numba.njit(**_SMALL)
+def orient(ax, ay, bx, by, cx, cy):  # pragma: no cover - numba
+    """Orientation of c about ab: +1, -1, or 0 when too close to call (within TOL)."""
+    u = (bx - ax) * (cy - ay)
+    v = (by - ay) * (cx - ax)
+    det = u - v
+    if abs(det) <= TOL * (abs(u) + abs(v)):
+        return 0
+    return 1 if det > 0 else -1
+
+
+@numba.njit(**_SMALL)
+def seg_hit(ax, ay, bx, by, cx, cy, dx, dy):  # pragma: no cover - numba
+    """Closed segments ab and cd meet, or come too close to call (touching counts;
+    collinear overlap counts)."""
+    if max(ax, bx) < min(cx, dx) or max(cx, dx) < min(ax, bx):
+        return False
+    if max(ay, by) < min(cy, dy) or max(cy, dy) < min(ay, by):
+        return False
+    d1 = orient(cx, cy, dx, dy, ax, ay)
+    d2 = orient(cx, cy, dx, dy, bx, by)
+    if d1 * d2 > 0:
+        return False  # ab lies strictly on one side of the line cd
+    d3 = orient(ax, ay, bx, by, cx, cy)
+    d4 = orient(ax, ay, bx, by, dx, dy)
+    # a proper crossing, or a zero orientation with overlapping boxes (touching,
+    # collinear, or too close to call): reject (a cancellation only makes it stricter)
+    return d3 * d4 <= 0
+
+
+@numba.njit(**_SMALL)
+def inside(px, py, v, rings, r0, r1):  # pragma: no cover - numba
+    """Even-odd point in the rings ``r0:r1`` of a flat ring layout (half-open in y: an
+    edge counts when ``(ay > py) != (by > py)`` and the point lies left of the crossing,
+    the rule of :mod:`strew._kernels.raster`)."""
+    ins = False
+    for r in range(r0, r1):
+        for i in range(rings[r], rings[r + 1] - 1):
+            ay = v[i, 1]
+            by = v[i + 1, 1]
+            if (ay > py) != (by > py):
+                ax = v[i, 0]
+                xc = ax + (py - ay) * (v[i + 1, 0] - ax) / (by - ay)
+                if px < xc:
+                    ins = not ins
+    return ins
+
+
+@numba.njit(**_SMALL)
+def where(px, py, v, rings, r0, r1):  # pragma: no cover - numba
+    """Even-odd point in the rings ``r0:r1``: 1 inside, 0 outside, -1 when a crossing
+    lies within TOL of the point (too close to call)."""
+    ins = False
+    for r in range(r0, r1):
+        for i in range(rings[r], rings[r + 1] - 1):
+            ay = v[i, 1]
+            by = v[i + 1, 1]
+            if (ay > py) != (by > py):
+                ax = v[i, 0]
+                bx = v[i + 1, 0]
+                xc = ax + (py - ay) * (bx - ax) / (by - ay)
+                if abs(px - xc) <= TOL * (abs(px) + abs(ax) + abs(bx)):
+                    return -1
+                if px < xc:
+                    ins = not ins
+    return 1 if ins else 0
+
