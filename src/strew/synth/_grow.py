@@ -14,6 +14,7 @@ from .._progress import Reporter
 from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
+from ._prepare import anchor_mask
 from ._shapes import shape_clashes, shape_test_needed
 from ._state import SynthState, map_offsets
 
@@ -132,14 +133,9 @@ def owed_classes(state: SynthState) -> np.ndarray:
     return out / out.sum() < share + SHARE_MARGIN * se
 
 
-ANCHOR_RATIO = 3.0
-"""A kind is an anchor when the most numerous kind of its size class (in its exemplar)
-has at least this many times its count (see :func:`anchors`)."""
-
-
 def anchors(prep) -> np.ndarray:
-    """(n,) int: 1 for exemplar elements of an anchor kind, else 0. Computed once per
-    ``prep``.
+    """(n,) int: 1 for exemplar elements of an anchor kind, else 0
+    (``_prepare.anchor_mask``). Computed once per ``prep``.
 
     Extension of §5.1 (§7's "structured" exemplars): within one size class, the
     copies of a kind that is rare beside the others (a ring's hub among its ten tiles:
@@ -149,20 +145,13 @@ def anchors(prep) -> np.ndarray:
     exemplar's 15.0), and the ring stays hubless: rings at seeds 1-5 were 3-4/5
     faithful (hub density 0.87x), 5/5 with anchors first. Kinds of about equal counts
     (stripes' dots and bars, 66 and 68) keep seed order: putting the rarer first
-    over-produced it (dot density failing on 2/2 seeds).
+    over-produced it (dot density failing on 2/2 seeds). The other kinds of the class
+    lean on the anchors as on a parent (``_prepare.parents``).
     """
     got = getattr(prep, "_anchors", None)
     if got is not None and len(got) == len(prep.kind):
         return got
-    out = np.zeros(len(prep.kind), np.int64)
-    vis = ~prep.void
-    for s_ in np.unique(prep.source):
-        ids = np.flatnonzero((prep.source == s_) & vis)
-        for c in np.unique(prep.size_class[ids]):
-            sub = ids[prep.size_class[ids] == c]
-            kinds, cnt = np.unique(prep.skind[sub], return_counts=True)
-            rare = kinds[cnt * ANCHOR_RATIO <= cnt.max()]
-            out[sub[np.isin(prep.skind[sub], rare)]] = 1
+    out = anchor_mask(prep.skind, prep.source, prep.size_class, prep.void)
     prep._anchors = out
     return out
 
