@@ -104,7 +104,7 @@ class SceneMixin:
         cached = self.__dict__.get("_arrays_cache")
         if cached is not None and cached[0] == key and all(a is b for a, b in zip(cached[2], refs)):
             return cached[1]
-        show = ~np.asarray(prep.void, bool)[src]  # void elements are hidden (§5.6)
+        show = ~np.asarray(prep.void, bool)[src] & ~st.ghost  # void elements are hidden (§5.6), ghost images (repeat view) too
         if self._op is not None and st.n > self._op["n0"]:
             show[self._op["n0"]:] &= ~self._live_hidden(self._op["n0"], thinned=True)
         src = src[show]
@@ -157,8 +157,24 @@ class SceneMixin:
 
     def _out_of_bounds(self, arr: Arrangement) -> np.ndarray:
         """(n,) bool: elements not wholly inside the region, or crossing a boundary stroke
-        (:meth:`strew.editing.Bounds.outside`)."""
-        return self._bounds().outside(arr)
+        (:meth:`strew.editing.Bounds.outside`). In the repeat view the region is a torus:
+        an element may cross the tile's edges (it wraps in at the opposite ones), only
+        its centre must be in the tile (:func:`strew._periodic.canonical`)."""
+        tile = self._repeat_tile()
+        if tile is None:
+            return self._bounds().outside(arr)
+        x0, y0, w, h = tile
+        out = ~((arr.x >= x0) & (arr.x < x0 + w) & (arr.y >= y0) & (arr.y < y0 + h))
+        if self.boundary_strokes and len(arr) and not out.all():
+            # the strokes' test only: a region wide enough that nothing overhangs it
+            pad = 2.0 * float(arr.radii.max()) + 1.0
+            key = (tuple(tile), pad, len(self.boundary_strokes), self.boundary_strokes[-1] if self.boundary_strokes else None)
+            old = self.__dict__.get("_torus_bounds_cache")
+            if old is None or old[0][:3] != key[:3] or old[0][3] is not key[3]:
+                old = (key, Bounds(Region.rectangle(w + 2 * pad, h + 2 * pad, x0 - pad, y0 - pad), self.boundary_strokes))
+                self._torus_bounds_cache = old
+            out |= old[1].outside(arr)
+        return out
 
     def _bounds(self) -> Bounds:
         """The region and boundary strokes as a :class:`strew.editing.Bounds` (cached

@@ -58,6 +58,23 @@ class ToolsMixin:
             self._abandon()
             raise
 
+    def _torus(self, st: Any) -> None:
+        """Put the synthesis state on the torus of the repeat tile, or back in the plane
+        (:meth:`strew.synth.SynthState.set_tile`), as the repeat view says."""
+        tile = self._repeat_tile()
+        if st.tile != (None if tile is None else tuple(tile)):
+            st.set_tile(tile)
+
+    def _canonical(self, xy: np.ndarray) -> np.ndarray:
+        """(m, 2) points wrapped into the repeat tile (unchanged with the view off)."""
+        tile = self._repeat_tile()
+        xy = np.asarray(xy, float).reshape(-1, 2)
+        if tile is None:
+            return xy
+        from .._periodic import canonical
+
+        return np.c_[canonical(xy[:, 0], xy[:, 1], tile)]
+
     def _note_compiling(self, method: str, emit: Emit) -> None:
         """Say in the status bar, once per method and session, that the first stroke or
         fill compiles the method's kernels (numba's cache is empty: a fresh install),
@@ -163,13 +180,15 @@ class ToolsMixin:
         before = self._scene_count()
         if self._scene_count() >= self._max_scene and tool != "erase":
             raise InputError(f"scene: over {self._max_scene} elements; erase some first")
-        for run in self._wrap_runs(seg, st["radius"]):  # one run unless the repeat view wraps the stroke
-            if tool == "brush":
-                self._brush(run, st["radius"], self._emit)
-            elif tool == "spray":
-                self._spray(run, st["radius"], self._emit)
-            else:
-                self._erase(run, st["radius"])
+        # in the repeat view the tools work on the torus of the tile: the library wraps
+        # the segment (SynthState.set_tile, SprayGrowth(tile=...)); the eraser wraps it
+        # for the fixed part of the scene (_erase)
+        if tool == "brush":
+            self._brush(seg, st["radius"], self._emit)
+        elif tool == "spray":
+            self._spray(seg, st["radius"], self._emit)
+        else:
+            self._erase(seg, st["radius"])
         st["compute"] += time.perf_counter() - t
         st["added"] += max(0, self._scene_count() - before)
         st["removed"] = st.get("removed", 0) + max(0, before - self._scene_count())
@@ -190,29 +209,33 @@ class ToolsMixin:
         from scipy.spatial import cKDTree
 
         st = self._ensure_state()
+        self._torus(st)
         stroke = self.stroke
         assert stroke is not None
         if "face" not in stroke:
-            stroke["face"] = self._face(pts[0])
+            stroke["face"] = self._face(self._canonical(pts[:1])[0])
         st.region = stroke["face"]
+        # the brush discs as the state sees them (in the repeat view: wrapped, with images)
+        discs, _ = st.wrap_discs(pts, np.full(len(pts), float(radius)))
         try:
             if "n_before" not in stroke:
                 stroke["n_before"] = st.n
                 self._op = {"n0": st.n, "density": self.brush_density, "pen": "pressure" in stroke, "it0": st.iterations, "dropped": np.zeros(0, np.int64)}
-                near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(pts[0], r=radius)) > 0
+                near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(discs[0], r=radius)) > 0
                 if not near:
                     # §5.4: "If there are no elements near the first brush-point, a random patch
                     # from the example-palette selection is copied to the output domain".
-                    st.brush_points = np.concatenate([st.brush_points, pts[:1]])
-                    st.brush_radii = np.concatenate([st.brush_radii, [radius]])
-                    synth.seed_patch(st, (float(pts[0, 0]), float(pts[0, 1])), random=True)
+                    first, first_r = st.wrap_discs(pts[:1], np.array([float(radius)]))
+                    st.brush_points = np.concatenate([st.brush_points, first])
+                    st.brush_radii = np.concatenate([st.brush_radii, first_r])
+                    synth.seed_patch(st, (float(discs[0, 0]), float(discs[0, 1])), random=True)
                     self._drop_state_overlaps(stroke["n_before"])
                     m = self.scene_message()
                     if m is not None:
                         emit(m)
             n0 = st.n
             old = stroke["n_before"]
-            reopt = bool(old) and len(cKDTree(st.pos[:old]).query_ball_point(pts, r=radius, return_length=True).nonzero()[0]) > 0
+            reopt = bool(old) and len(cKDTree(st.pos[:old]).query_ball_point(discs, r=radius, return_length=True).nonzero()[0]) > 0
 
             def progress(done: int, total: int | None, message: str) -> None:
                 m = self.scene_message()
@@ -221,9 +244,10 @@ class ToolsMixin:
 
             synth.brush(st, pts, radius, reoptimize=reopt, progress=progress, max_iterations=self._brush_iterations)
         finally:
+            st.unwrap()  # no ghost images left (a growth that stopped on an error)
             st.region = self.region
         n0 -= int(self._settle(stroke["n_before"], thinned=False)[:n0].sum())
-        self._drop_state_overlaps(n0, around=pts, reach=radius + 2.0 * float(np.max(st.prep.rbar)))
+        self._drop_state_overlaps(n0, around=discs, reach=radius + 2.0 * float(np.max(st.prep.rbar)))
         self._thin()
 
     def _finish_brush(self) -> None:
@@ -235,12 +259,14 @@ class ToolsMixin:
         assert st is not None and stroke is not None
         n0 = st.n
         if len(st.brush_points):
+            self._torus(st)
             st.region = stroke.get("face", self.region)
             try:
                 synth.grow(st, should_cancel=self.cancel.is_set)
             except Cancelled:  # "stop": keep what has grown
                 pass
             finally:
+                st.unwrap()
                 st.region = self.region
             self._drop_state_overlaps(n0, around=st.brush_points, reach=float(st.brush_radii.max()) + 2.0 * float(np.max(st.prep.rbar)))
         st.brush_points = np.zeros((0, 2))
@@ -272,25 +298,46 @@ class ToolsMixin:
 
         state_part = st.elements
 
+        tile = self._repeat_tile()
+        if tile is not None:  # the repeat view: distances and overlaps on the torus of the tile
+            x0, y0, w, h = tile
+
+            def tree_of(xy: np.ndarray) -> Any:
+                return cKDTree(np.asarray(self._canonical(xy)) - (x0, y0), boxsize=(w, h))
+
+            def rel(xy: np.ndarray) -> np.ndarray:
+                return np.asarray(self._canonical(xy)) - (x0, y0)
+        else:
+            def tree_of(xy: np.ndarray) -> Any:
+                return cKDTree(xy)
+
+            def rel(xy: np.ndarray) -> np.ndarray:
+                return np.asarray(xy, float)
         new_idx = np.arange(n0, st.n)
         rmax = float(np.max(state_part(new_idx).radii))
         cand = new_idx
         if overlap_free and n0:
-            old_xy = pos[:n0]
+            old_xy = rel(pos[:n0])
             r_old = state_part(np.arange(n0)).radii
-            hits = cKDTree(pos[new_idx]).query_ball_point(old_xy, r=r_old + rmax, return_length=True) > 0
+            hits = tree_of(pos[new_idx]).query_ball_point(old_xy, r=r_old + rmax, return_length=True) > 0
             if around is not None and len(around):
-                hits |= cKDTree(np.asarray(around, float)).query_ball_point(old_xy, r=reach, return_length=True) > 0
+                hits |= tree_of(np.asarray(around, float)).query_ball_point(old_xy, r=reach, return_length=True) > 0
             cand = np.concatenate([np.flatnonzero(hits), new_idx])
         local = state_part(cand)
         fixed = self.fixed.replace(columns={}, meta={}, extra={}, region=None)
         if len(fixed):
-            tree = cKDTree(local.xy)
-            near = tree.query_ball_point(fixed.xy, r=fixed.radii + float(np.max(local.radii)), return_length=True) > 0
+            tree = tree_of(local.xy)
+            near = tree.query_ball_point(rel(fixed.xy), r=fixed.radii + float(np.max(local.radii)), return_length=True) > 0
             fixed = fixed.select(near)
         combined = concat([fixed, local]) if len(fixed) else local
         nf = len(fixed)
-        pairs, _ = overlaps(combined)
+        if tile is not None:
+            from ..metrics import wrap_overlaps
+
+            pairs = wrap_overlaps(combined, tile=tile)["pairs"][:, :2]
+            pairs = pairs[pairs[:, 0] != pairs[:, 1]]
+        else:
+            pairs, _ = overlaps(combined)
         dropped = overlap_drops(pairs, nf, cand >= n0, later=overlap_free)
         if dropped.any():
             mask = np.zeros(st.n, bool)
@@ -314,8 +361,9 @@ class ToolsMixin:
         assert stroke is not None
         g = stroke.get("spray")
         first = g is None
+        tile = self._repeat_tile()
         if g is None:
-            if not self.region.contains(pts).any():
+            if tile is None and not self.region.contains(pts).any():
                 return
             from ..grow import SprayGrowth
 
@@ -329,6 +377,7 @@ class ToolsMixin:
                 jitter_scale=self.jitter_scale,
                 jitter_rotation=self.jitter_rotation,
                 rng=int(self.rng.integers(2**31)),
+                tile=tile,  # the repeat view: on the torus of the tile
             )
             stroke["spray"] = g
             stroke["spray_reach"] = g.reach
@@ -366,7 +415,13 @@ class ToolsMixin:
         scene = concat(parts) if len(parts) > 1 else self.fixed
         if len(scene) == 0:
             return None
-        return {"scene": scene, "tree": cKDTree(scene.xy), "reach": float(scene.radii.max()), "added": np.zeros(len(scene), bool)}
+        tile = self._repeat_tile()
+        if tile is not None:  # the repeat view: a tree on the torus (scene centres are in the tile)
+            x0, y0, w, h = tile
+            tree = cKDTree(np.asarray(self._canonical(scene.xy)) - (x0, y0), boxsize=(w, h))
+        else:
+            tree = cKDTree(scene.xy)
+        return {"scene": scene, "tree": tree, "tile": tile, "reach": float(scene.radii.max()), "added": np.zeros(len(scene), bool)}
 
     def _spray_obstacles(self, g: Any, pts: np.ndarray, radius: float) -> None:
         """Hand the growth the scene elements it can reach from the segment (once each)."""
@@ -376,7 +431,11 @@ class ToolsMixin:
         # a seed within the spray radius can hold an element as wide as the widest
         # exemplar element; the margin covers both that element and the scene's widest
         margin = radius + 2.0 * sc["reach"] + 4.0 * self.stroke["spray_reach"]
-        hits = sc["tree"].query_ball_point(np.asarray(pts, float), r=margin)
+        pts = np.asarray(pts, float)
+        if sc.get("tile") is not None:  # the repeat view: the segment's points on the torus
+            x0, y0, _, _ = sc["tile"]
+            pts = np.asarray(self._canonical(pts)) - (x0, y0)
+        hits = sc["tree"].query_ball_point(pts, r=margin)
         idx = np.unique(np.concatenate([np.asarray(h, dtype=np.intp) for h in hits])) if len(hits) else np.zeros(0, np.intp)
         idx = idx[~sc["added"][idx]]
         if len(idx):
@@ -405,9 +464,13 @@ class ToolsMixin:
 
         st = self.state
         if st is not None and st.n:
+            self._torus(st)  # in the repeat view the eraser's path wraps (SynthState.stroke_path)
             synth.erase(st, pts, radius, keep=self._locked(st.elements()) if self.layers["locked"] else None)
         if len(self.fixed):
-            gone = near_stroke(self.fixed.xy, pts, radius) & ~self._locked(self.fixed)
+            gone = np.zeros(len(self.fixed), bool)
+            for run in self._wrap_runs(pts, radius):  # one run unless the repeat view wraps the path
+                gone |= near_stroke(self.fixed.xy, run, radius)
+            gone &= ~self._locked(self.fixed)
             if gone.any():
                 self.fixed = self.fixed.select(~gone)
 
@@ -450,6 +513,8 @@ class ToolsMixin:
         from .. import synth
 
         p = get_points(msg, "point")[0]
+        if self.repeat:  # a click on a copy of the repeat view fills the tile there
+            p = self._canonical(p[None])[0]
         if not self.region.contains(p[None])[0]:
             raise InputError(f"fill: point {p[0]:g},{p[1]:g} is outside the region")
         self._selection()
@@ -459,6 +524,7 @@ class ToolsMixin:
         self._push_history()
         self._note_compiling("synth", emit)
         st = self._ensure_state()
+        self._torus(st)
         self.cancel.clear()
         n0 = st.n
         count0 = self._scene_count()
@@ -484,6 +550,7 @@ class ToolsMixin:
             self._abandon()
             raise
         finally:
+            st.unwrap()  # no ghost images left (a stopped fill)
             st.region = self.region
             if self.state is st:  # not abandoned
                 self._settle(n0, thinned=False)
