@@ -134,12 +134,23 @@ _CHUNK = 4096
 # -- small helpers --------------------------------------------------------------------
 def _local(tag: Any) -> str | None:
     """Local name of an SVG-namespace (or un-namespaced) tag; None for other namespaces."""
+    try:
+        return _LOCAL[tag]  # asked for every object several times (issue 17.3)
+    except (KeyError, TypeError):
+        pass
     if not isinstance(tag, str):  # comments, processing instructions
         return None
     if tag.startswith("{"):
         ns, _, name = tag[1:].partition("}")
-        return name if ns == SVG_NS else None
-    return tag
+        local = name if ns == SVG_NS else None
+    else:
+        local = tag
+    if len(_LOCAL) < 4096:
+        _LOCAL[tag] = local
+    return local
+
+
+_LOCAL: dict[str, str | None] = {}  # tag -> _local(tag), for the tags seen so far (a few dozen)
 
 
 def _compose(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -912,13 +923,15 @@ def _connected(geoms: list[shapely.Geometry]) -> bool:
     return len({find(a) for a in range(n)}) == 1
 
 
-_GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
+# Five Gauss-Legendre points integrate polynomials of degree 9 exactly: the integrands
+# below, conj(z) z^k dz and z^k ds along a straight edge, have degree k + 1 <= _KMAX + 1.
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(5)
 _GL_T = (_GL_X + 1) / 2
 _GL_W = _GL_W / 2
 _KMAX = 8
 
 
-@dataclass
+@dataclass(slots=True)
 class _Signature:
     """Similarity invariants of a flattened geometry (complex moments about its centroid)."""
 
@@ -1142,27 +1155,16 @@ def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
     mom *= turn[:, None]
     polar = (np.add.reduceat((zq * np.conj(zq)).real * w, starts) / 2 / 2j).real * turn
     outlines = shapely.boundary(polys)
-    pts_all = np.concatenate([pts_list[k] for k in sel.tolist()])
+    pts_all = coords if len(sel) == len(one) else np.concatenate([pts_list[k] for k in sel.tolist()])
     cnt = lens[sel]
     first = np.cumsum(cnt) - cnt
     cen_all = np.c_[centroid.real, centroid.imag]
     radius = np.maximum.reduceat(np.sqrt(((pts_all - np.repeat(cen_all, cnt, axis=0)) ** 2).sum(axis=1)), first)
-    for j, k in enumerate(sel.tolist()):
-        i = one[k]
-        pts = batch[i][0].points
-        if not size[j] > 0:
+    for k, outline, cen, mom_j, size_j, polar_j, radius_j in zip(sel.tolist(), outlines.tolist(), cen_all, mom, size.tolist(), polar.tolist(), radius.tolist()):
+        if not size_j > 0:
             continue
-        cen = cen_all[j]
-        out[i] = _Signature(
-            points=pts,
-            outline=outlines[j],
-            size=float(size[j]),
-            is_area=True,
-            centroid=cen,
-            moments=mom[j],
-            gyration=math.sqrt(max(float(polar[j]), 0.0) / float(size[j])),
-            radius=float(radius[j]),
-        )
+        i = one[k]
+        out[i] = _Signature(batch[i][0].points, outline, size_j, True, cen, mom_j, math.sqrt(max(polar_j, 0.0) / size_j), radius_j)
     return out
 
 
