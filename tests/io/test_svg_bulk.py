@@ -226,6 +226,81 @@ def test_many_elements_flatten_as_each_alone(ds, seed):
                 assert (c, cv) == (d, dv) and np.array_equal(p, q)
 
 
+_POINTS_TEXT = st.one_of(
+    st.lists(st.floats(-1e3, 1e3, allow_nan=False).map(lambda v: f"{v:.4g}"), max_size=12).map(" ".join),
+    st.lists(st.sampled_from(["1", "-2", "3.5", ".5", "-.25", "1e3", "1E-2", "+4", "0", "-0", "007", "1.", "1.e5", ".5.5", "1-2", "e", "1e", "+", "1e5.5",
+                              "1e999", "x", " ", ",", "\n", ",,"]), max_size=12).map(" ".join),
+    _NUMBER_TEXT,
+)
+
+
+@settings(max_examples=150, deadline=None)
+@given(texts=st.lists(_POINTS_TEXT, min_size=1, max_size=8), polygon=st.lists(st.booleans(), min_size=8, max_size=8))
+def test_many_points_lists_read_as_each_alone(texts, polygon):
+    """points_many gives each text shape_segments' table, bit for bit (signs of zero too),
+    or leaves all of them to it."""
+    got = fl.points_many(texts, polygon[: len(texts)])
+    if got is None:  # left to the one-by-one reading: only when some text is not a plain list
+        assert any(fl.parse_numbers(t) is None or len(fl.parse_numbers(t)) != len(t.replace(",", " ").split()) for t in texts)
+        return
+    for text, closed, segs in zip(texts, polygon, got):
+        want = fl.shape_segments("polygon" if closed else "polyline", {}, text)
+        assert _same_segments(segs, want)
+        if segs is not None and want is not None:
+            assert np.array_equal(np.signbit(segs.pts), np.signbit(want.pts))
+
+
+def test_plain_points_lists_are_read_in_bulk():
+    texts = ["0,0 4,0 4,3", "1 2 3 4", "", "-0,-1.5e2 7,8 9,10 11", "5,5"]
+    got = fl.points_many(texts, [True, False, True, True, False])
+    assert got is not None
+    assert got[0].closed.tolist() == [True] and got[0].pts[:, 3].tolist() == [[4.0, 0.0], [4.0, 3.0]]
+    assert got[1].closed.tolist() == [False] and len(got[1].code) == 1
+    assert len(got[2].code) == 0 and len(got[4].code) == 0  # no segment
+    assert got[3] is None  # an odd count: svgelements' reading
+    assert fl.points_many(["1,2 3,4", "1 inf 2 3"], [True, True]) is None
+
+
+@settings(max_examples=40, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), n=st.integers(1, 12))
+def test_control_outlines_in_bulk_are_each_alone(seed, n):
+    """The bulk control-outline hashes and points equal the one-object ones (they are
+    looked up in one dictionary)."""
+    rng = np.random.default_rng(seed)
+    ds = ["M0,0 L5,1 L3,4 Z", "M0,0 C2,3 5,3 6,0 Q3,-2 0,0 Z", "M1,1 L4,1 M5,5 L6,7 L8,8 Z", "M0,0 A2,2 0 0 1 4,0 Z", "M0,0 L0,0 Z", "M0,0 Q1,1 2,0 T4,0 L4,4"]
+    items = []
+    for _ in range(n):
+        r = rng.random()
+        if r < 0.5:
+            segs = fl.parse_path(ds[int(rng.integers(0, len(ds)))])
+        else:
+            segs = fl.shape_segments("polygon" if r < 0.75 else "polyline", {}, " ".join(f"{v:.2f}" for v in rng.uniform(-5, 5, 2 * int(rng.integers(1, 8)))))
+        own = rng.uniform(-2, 2, (2, 3)) if rng.random() < 0.7 else np.array([[1.0, 0.0, 3.0], [0.0, 1.0, 4.0]])
+        items.append(([None, "leaf", ""][int(rng.integers(0, 3))], segs, own))
+    for item, got in zip(items, imp._control_outlines(items)):
+        want = imp._Reader.control_outline_of(*item)
+        assert (got is None) == (want is None)
+        if got is not None:
+            assert got[0] == want[0] and np.array_equal(got[1], want[1])
+
+
+def test_invariant_rows_in_bulk_are_each_alone():
+    rng = np.random.default_rng(4)
+    batch = []
+    for _ in range(300):
+        k = int(rng.integers(3, 9))
+        t = np.sort(rng.uniform(0, 2 * np.pi, k))
+        r = rng.uniform(0.01, 600, k) * 10.0 ** int(rng.integers(-3, 4))
+        batch.append([imp.Path(np.c_[r * np.cos(t), r * np.sin(t)], bool(rng.random() < 0.8))])
+    sigs = [*imp._signatures(batch), None]
+    for sig in sigs:
+        if sig is not None:
+            sig.tolerance = float(rng.uniform(0, 1))
+    assert sum(s is not None for s in sigs) > 250
+    want = np.array([imp._invariants(s) for s in sigs])
+    assert np.array_equal(imp._invariants_many(sigs), want, equal_nan=True)
+
+
 # -- whole files: kinds and poses of known drawings ----------------------------------------
 def _poly(rng: np.random.Generator) -> np.ndarray:
     """A star-shaped polygon (simple) with no rotational symmetry, about its centroid."""
