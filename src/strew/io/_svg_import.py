@@ -2044,6 +2044,11 @@ def _candidate_pairs(rows: np.ndarray, valid: np.ndarray) -> tuple[np.ndarray, n
     key = ((cell[:, 0] + 1) * span[1] + (cell[:, 1] + 1)) * span[2] + (cell[:, 2] + 1)
     order = np.argsort(key, kind="stable")
     sorted_key = key[order]
+    # the occupied cells, each with its first position in sorted_key and its count: one
+    # search per neighbouring cell instead of two (issue 17.3)
+    cells, cell_lo = np.unique(sorted_key, return_index=True)
+    cell_cnt = np.diff(np.r_[cell_lo, len(sorted_key)])
+    last_cell = len(cells) - 1
     qs, ks = [], []
     m = len(idx)
     # Queries in blocks, each block's pairs tested before the next block's are made, so
@@ -2055,8 +2060,10 @@ def _candidate_pairs(rows: np.ndarray, valid: np.ndarray) -> tuple[np.ndarray, n
             for dy in (-1, 0, 1):
                 for dz in (-1, 0, 1):
                     target = qkey + (dx * span[1] + dy) * span[2] + dz
-                    lo = np.searchsorted(sorted_key, target, "left")
-                    cnt = np.searchsorted(sorted_key, target, "right") - lo
+                    at = np.minimum(np.searchsorted(cells, target), last_cell)
+                    hit = cells[at] == target
+                    lo = cell_lo[at]
+                    cnt = np.where(hit, cell_cnt[at], 0)
                     total = int(cnt.sum())
                     if not total:
                         continue
