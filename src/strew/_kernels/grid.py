@@ -45,11 +45,13 @@ __all__ = ["cell_span", "insert_box", "grid_segments", "query_box", "bucket_grid
 
 @numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def cell_span(gx0, gy0, gc, cols, rows, xmin, ymin, xmax, ymax):  # pragma: no cover - numba
-    """Grid cells ``(c0, c1, q0, q1)`` (inclusive, clamped) that a box touches."""
-    c0 = max(int((xmin - gx0) / gc), 0)
-    c1 = min(int((xmax - gx0) / gc), cols - 1)
-    q0 = max(int((ymin - gy0) / gc), 0)
-    q1 = min(int((ymax - gy0) / gc), rows - 1)
+    """Grid cells ``(c0, c1, q0, q1)`` (inclusive) that a box touches, each end clamped
+    to the grid: a box beyond the grid's extent maps to its border cells, so a box and
+    a query that meet always share a cell."""
+    c0 = min(max(int((xmin - gx0) / gc), 0), cols - 1)
+    c1 = max(min(int((xmax - gx0) / gc), cols - 1), 0)
+    q0 = min(max(int((ymin - gy0) / gc), 0), rows - 1)
+    q1 = max(min(int((ymax - gy0) / gc), rows - 1), 0)
     return c0, c1, q0, q1
 
 

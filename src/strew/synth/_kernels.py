@@ -11,6 +11,9 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+# the uniform bucket grid over points is the shared one (issue 15 point 5)
+from .._kernels.grid import bucket_grid as _bucket_grid
+
 __all__ = [
     "map_offset",
     "pair_cost",
@@ -192,39 +195,6 @@ def _col_range(pts, c):
         if v > hi:
             hi = v
     return lo, hi
-
-
-@numba.njit(cache=True, nogil=True)
-def _bucket_grid(pts, cell, queries, reverse):
-    """Uniform grid over ``pts`` with linked buckets: ``(x0, y0, cell, nx, ny, head, nxt)``.
-
-    ``cell`` grows when the grid would hold far more cells than points and ``queries``
-    (computed in floats, so a tiny cell over a wide spread cannot overflow). Each bucket
-    lists its points in decreasing index order, or increasing with ``reverse``.
-
-    Compiled callers pass ``np.int64(0)`` and ``np.bool_(...)``, never literal constants:
-    numba compiles one specialisation per literal value (issue 16: a cold synth run
-    compiled this kernel three times, :func:`_disc_hits` twice, and :func:`pair_cost`
-    twice, with and without ``bound``; the callers here now always pass it).
-    """
-    n = pts.shape[0]
-    x0, x1 = _col_range(pts, 0)
-    y0, y1 = _col_range(pts, 1)
-    w = x1 - x0
-    h = y1 - y0
-    cell = max(cell, 1e-12)
-    if (w / cell + 1.0) * (h / cell + 1.0) > 4.0 * (n + queries) + 1024.0:
-        cell = max(w, h) / np.sqrt(4.0 * (n + queries)) + cell
-    nx = int(w / cell) + 1
-    ny = int(h / cell) + 1
-    head = np.full(nx * ny, -1, np.int64)
-    nxt = np.full(n, -1, np.int64)
-    for t in range(n):
-        j = n - 1 - t if reverse else t
-        g = int((pts[j, 0] - x0) / cell) * ny + int((pts[j, 1] - y0) / cell)
-        nxt[j] = head[g]
-        head[g] = j
-    return x0, y0, cell, nx, ny, head, nxt
 
 
 @numba.njit(cache=True, nogil=True)
