@@ -148,7 +148,7 @@ def test_pack_on_surface_follows_the_field_unless_rotated(mesh_file, tmp_path):
         (["synth", "{ex}", "--surface", "{mesh}", "--size", "10x10"], "leave out --region"),
         (["synth", "{ex}", "--surface", "{mesh}", "--optimize", "global"], "--optimize"),
         (["synth", "{ex}", "--surface", "{mesh}", "--fill", "1,2"], "--fill"),
-        (["grow", "{ex}", "--surface", "{mesh}"], "grow does not run on surfaces"),
+        (["grow", "{ex}", "--surface", "{mesh}", "--mode", "rotate"], "--mode"),
         (["pack", "{shape}", "--surface", "{mesh}", "--method", "naive"], "--method"),
         (["pack", "{shape}", "--surface", "{mesh}", "--rotate", "0:90"], "--rotate"),
         (["synth", "{ex}", "--surface", "{bad}"], "--surface"),

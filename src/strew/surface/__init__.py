@@ -22,6 +22,8 @@ Public entry points:
 :func:`local_map`
     Davison's m_p (§5.1, §5.7): exemplar offsets to surface points by a geodesic walk
     in the field's frame.
+:func:`grow`
+    Ijiri et al.'s growth from one seed on the surface, in the field's frame (§5).
 :func:`synthesize` / :func:`new_synth_state`
     Davison et al.'s region growing on the surface (§5.7) with the brush, filler and
     eraser (§5.4) on a :class:`SurfaceSynthState`, and view priority (§5.8) with a
@@ -36,6 +38,7 @@ from __future__ import annotations
 
 from ._field import OrientationField, load_field, orientation_field
 from ._frames import SURFACE_COLUMNS, element_frames, element_matrices, is_surface, lift
+from ._grow import grow
 from ._gltf import save_glb, shape_mesh, to_glb, to_scene
 from ._mesh import MESH_FORMATS, load_mesh
 from ._preview import render_preview, save_preview
@@ -49,6 +52,7 @@ __all__ = [
     "SurfaceSynthState",
     "new_synth_state",
     "synthesize",
+    "grow",
     "chart",
     "MESH_FORMATS",
     "OrientationField",

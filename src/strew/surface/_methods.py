@@ -18,11 +18,16 @@ from ..arrangement import Arrangement
 
 __all__ = ["on_surface", "SURFACE_METHODS"]
 
-SURFACE_METHODS = ("pack", "synth")
+SURFACE_METHODS = ("pack", "synth", "grow")
 
 # parameters of each method's spec that carry over (others are refused)
 _PACK = {"max_failures", "rotation", "scale", "margin", "weights"}
 _SYNTH = {"selection", "k", "c", "kind_cost", "keep_voids", "optimize", "brush_radius"}
+_GROW = {"count", "start_kind", "jitter_scale", "jitter_rotation", "flips"}
+# grow parameters whose default means "as on the plane" and that a surface accepts only so
+# (the windowed relaxation is replaced on surfaces: strew.surface._grow notes)
+_GROW_DEFAULTS = {"mode": "flow", "relax": True, "jitter_color": 0.0, "connectivity": False, "periodic": False,
+                  "relax_every": 16, "avoid_overlaps": True}
 
 
 def _refuse(method: str, values: dict[str, Any], allowed: set[str]) -> None:
@@ -54,8 +59,7 @@ def on_surface(
 
     Parameters
     ----------
-    method : {"pack", "synth"}
-        (``grow`` is refused with a message: not carried to surfaces yet.)
+    method : {"pack", "synth", "grow"}
     input : Any
         The method's input: shapes (pack), exemplars (synth), an exemplar arrangement (grow).
     mesh : trimesh.Trimesh or path
@@ -113,5 +117,18 @@ def on_surface(
         return synthesize(input, mesh, field=field, selection=sel, scale=unit, rng=rng, progress=progress,
                           should_cancel=should_cancel, **values)
     if method == "grow":
-        raise InputError("--surface: grow does not run on surfaces yet (pack and synth do)")
+        from ._grow import grow
+
+        if values.get("mode") in ("fixed", "flow"):
+            # the orientation field is the flow: growth follows it in either mode (§5.3)
+            values.pop("mode")
+        if values.get("flips") == ():
+            values.pop("flips")
+        for name, default in _GROW_DEFAULTS.items():
+            if name in values and values[name] == default:
+                values.pop(name)
+        if "relax" in values:  # --no-relax: there is no windowed relaxation on a surface
+            values.pop("relax")
+        _refuse(method, values, _GROW)
+        return grow(input, mesh, field=field, scale=unit, rng=rng, progress=progress, should_cancel=should_cancel, **values)
     raise InputError(f"--surface: {method} does not run on surfaces (only {', '.join(SURFACE_METHODS)})")
