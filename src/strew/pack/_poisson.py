@@ -7,7 +7,8 @@ The sampler is Bridson's "fast Poisson disk sampling in arbitrary dimensions" (2
 a background grid of cell ``r / sqrt(2)`` holds at most one sample, an active list
 grows from a seed, and each active sample spawns up to ``candidates`` trial points in
 the annulus ``[r, 2r]``. Random numbers come from a SplitMix64 stream seeded from the
-caller's ``numpy.random.Generator``, so no global random state is touched.
+caller's ``numpy.random.Generator`` (:mod:`strew._kernels.prng`: why not yet the shared
+xoshiro256+ stream), so no global random state is touched.
 """
 
 from __future__ import annotations
@@ -20,30 +21,11 @@ import numpy as np
 import shapely
 
 from .._errors import InputError
+from .._kernels.prng import splitmix_seed
+from .._kernels.prng import splitmix_uniform as _next
 from .._rng import as_rng
 
 __all__ = ["poisson_disk"]
-
-_GOLDEN = np.uint64(0x9E3779B97F4A7C15)
-_M1 = np.uint64(0xBF58476D1CE4E5B9)
-_M2 = np.uint64(0x94D049BB133111EB)
-_S30 = np.uint64(30)
-_S27 = np.uint64(27)
-_S31 = np.uint64(31)
-_S11 = np.uint64(11)
-_INV53 = 1.0 / 9007199254740992.0
-
-
-@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _next(state: np.ndarray) -> float:
-    """Uniform float in [0, 1) from a SplitMix64 state held in ``state[0]``."""
-    state[0] = state[0] + _GOLDEN
-    z = state[0]
-    z = (z ^ (z >> _S30)) * _M1
-    z = (z ^ (z >> _S27)) * _M2
-    z = z ^ (z >> _S31)
-    return float(z >> _S11) * _INV53
-
 
 @numba.njit(cache=True)
 def _bridson(width: float, height: float, r: float, k: int, seed: np.uint64, max_points: int) -> np.ndarray:
@@ -511,7 +493,7 @@ def poisson_disk(
         x0, y0, w, h = (0.0, 0.0, geom[2], geom[3]) if isinstance(geom, tuple) else frame_of_region(geom)
         if w * h / (radius * radius) > 4 * max_points:
             raise InputError(f"radius: {radius} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
-        seed = np.uint64(gen.integers(0, 2**63, dtype=np.int64))
+        seed = splitmix_seed(gen)
         pts = _bridson_torus(float(w), float(h), radius, int(candidates), seed, int(max_points))
         pts[:, 0] += x0
         pts[:, 1] += y0
@@ -542,7 +524,7 @@ def poisson_disk(
     cells = (w / rmin * np.sqrt(2) + 1) * (h / rmin * np.sqrt(2) + 1)
     if cells > 4 * max_points:
         raise InputError(f"radius: {rmin} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
-    seed = np.uint64(gen.integers(0, 2**63, dtype=np.int64))
+    seed = splitmix_seed(gen)
     if rmap is None:
         pts = _bridson(float(w), float(h), radius, int(candidates), seed, int(max_points))
     else:
