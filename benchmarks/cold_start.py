@@ -1,6 +1,7 @@
 """Cold start: the first run of each method on a fresh install against the second run.
 
     python benchmarks/cold_start.py [--quick] [--case NAME ...] [--top N] [--json PATH]
+                                    [--prefill none|warmup|installed] [--python PY]
 
 A fresh install has an empty numba cache, so the first command of each method compiles
 its kernels. For every case this script starts a new Python process with an empty
@@ -9,6 +10,14 @@ command), then starts a second process on the now filled cache and times the sam
 again. Both runs go through the library's CLI entry point in-process (``strew.cli.main``),
 or, for the studio, through a studio session handling a stroke's messages, so process
 start-up is the same for both and cancels out of the ratio.
+
+``--prefill warmup`` starts every case's cache as a copy of what ``python -m
+strew._warmup`` compiles (the caches a wheel built by ``hatch_build.py`` ships, without
+building one); ``--prefill installed`` copies the cache files an installed strew holds
+in its ``__pycache__`` folders (``--python`` names that environment's interpreter), laid
+out where ``NUMBA_CACHE_DIR`` makes numba look, so each case starts from the state of a
+fresh ``pip install .``. The default, ``none``, is a fresh install without shipped
+caches.
 
 Printed per case: the first and second times, their ratio, whether the first run meets
 the target of issue 16 (first <= 2 x second + 1 s), and the kernels whose compilation
@@ -52,12 +61,15 @@ ornament dots 16.7 vs 2.86 (44 vs 4.3 before its LAPACK calls), studio brush 82.
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
 import textwrap
+import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -136,23 +148,63 @@ DRIVER = textwrap.dedent(
 )
 
 
-def run_once(case: dict, cache: str) -> dict:
+def run_once(case: dict, cache: str, python: str = sys.executable) -> dict:
     env = dict(os.environ, NUMBA_CACHE_DIR=cache)
-    proc = subprocess.run([sys.executable, "-c", DRIVER, json.dumps(case)], env=env, capture_output=True, text=True, timeout=900)
+    proc = subprocess.run([python, "-c", DRIVER, json.dumps(case)], env=env, capture_output=True, text=True, timeout=900)
     if proc.returncode != 0:
         raise RuntimeError(f"{case}: {proc.stderr[-2000:]}")
     return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+INSTALLED = "import pathlib, strew; print(pathlib.Path(strew.__file__).resolve().parent)"
+
+
+def prefill_warmup(template: Path, python: str) -> dict:
+    """Compile into ``template`` what ``python -m strew._warmup`` does (the build's
+    warm-up); returns its wall and CPU seconds (children included)."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(template))
+    before = os.times()
+    t0 = time.perf_counter()
+    proc = subprocess.run([python, "-m", "strew._warmup"], env=env, capture_output=True, text=True, timeout=3600)
+    wall = time.perf_counter() - t0
+    after = os.times()
+    if proc.returncode != 0:
+        raise RuntimeError(f"warm-up failed: {proc.stdout[-2000:]}{proc.stderr[-2000:]}")
+    cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
+    return {"wall_s": wall, "cpu_s": cpu}
+
+
+def prefill_installed(template: Path, python: str) -> int:
+    """Copy the numba cache files an installed strew ships in its ``__pycache__`` folders
+    into ``template``, where ``NUMBA_CACHE_DIR=template`` makes numba look for them
+    (``<folder name>_<sha1 of the folder's path>``, numba's user-provided locator);
+    returns the number of files copied."""
+    pkg = Path(subprocess.run([python, "-c", INSTALLED], capture_output=True, text=True, check=True).stdout.strip())
+    n = 0
+    for d in sorted(pkg.rglob("__pycache__")):
+        files = [f for f in d.iterdir() if f.suffix in (".nbi", ".nbc")]
+        if not files:
+            continue
+        src = str(d.parent)
+        dest = template / f"{d.parent.name}_{hashlib.sha1(src.encode()).hexdigest()}"
+        dest.mkdir(parents=True, exist_ok=True)
+        for f in files:
+            shutil.copy2(f, dest / f.name)
+            n += 1
+    return n
 
 
 def main() -> None:
     def extra(p):
         p.add_argument("--case", action="append", default=None, help="run only this case (repeatable), e.g. --case 'pack fill-gap'")
         p.add_argument("--top", type=int, default=10, help="print the N slowest kernel compiles (self time) per case")
+        p.add_argument("--prefill", choices=("none", "warmup", "installed"), default="none", help="what each case's cache starts with (see the module's docstring)")
+        p.add_argument("--python", default=sys.executable, help="interpreter that runs the cases (e.g. a fresh venv's, with --prefill installed)")
 
     args = parse_args(__doc__.splitlines()[0], extra)
     bench = Bench(
         "cold_start",
-        "first run on an empty numba cache vs the second run (new process, filled cache)",
+        f"first run on a fresh install (numba cache prefilled: {args.prefill}) vs the second run (new process, filled cache)",
         baseline="second run; target first <= 2 x second + 1 s",
         json_path=args.json,
     )
@@ -166,7 +218,17 @@ def main() -> None:
         names = [n for n in names if n in QUICK]
     per_kernel: list[str] = []
     compiles: dict[str, dict[str, list[float]]] = {}
+    prefill: dict = {"mode": args.prefill, "python": args.python}
     with tempfile.TemporaryDirectory() as tmp:
+        template = Path(tmp) / "template-cache"
+        template.mkdir()
+        if args.prefill == "warmup":
+            prefill.update(prefill_warmup(template, args.python))
+            print(f"warm-up (what the wheel build runs): {prefill['wall_s']:.1f} s wall, {prefill['cpu_s']:.1f} s CPU")
+        elif args.prefill == "installed":
+            prefill["files"] = prefill_installed(template, args.python)
+            print(f"{prefill['files']} cache files shipped in the installed strew")
+        prefill["files"] = sum(1 for f in template.rglob("*") if f.is_file())
         for name in names:
             out = Path(tmp) / name.replace(" ", "_")
             out.mkdir()
@@ -176,8 +238,9 @@ def main() -> None:
                 (out / "project").mkdir()
                 case = {"kind": "studio", "project": str(out / "project"), "tool": STUDIO_CASES[name], "code": STUDIO}
             cache = str(out / "numba-cache")
-            first = run_once(case, cache)
-            second = run_once(case, cache)
+            shutil.copytree(template, cache)
+            first = run_once(case, cache, args.python)
+            second = run_once(case, cache, args.python)
             top = sorted(first["kernels"].items(), key=lambda kv: -kv[1])[:3]
             bench.row(
                 name,
@@ -203,6 +266,7 @@ def main() -> None:
     # the JSON also keeps every kernel's compile seconds of the first run: [self, inclusive]
     payload = json.loads(bench.json_path.read_text())
     payload["compile_s_self_inclusive"] = compiles
+    payload["prefill"] = prefill
     bench.json_path.write_text(json.dumps(payload, indent=2) + "\n")
 
 
