@@ -9,10 +9,10 @@ growth with n shows how far from linear the import is.
 
     python benchmarks/svg_import.py [--quick] [--repeat N]
 
-With ``--against FILE`` (an older ``_svg_import.py``, e.g. from
+With ``--against FILE`` (an older single-file ``_svg_import.py``, e.g. from
 ``git show COMMIT:src/strew/io/_svg_import.py > /tmp/old_import.py``, read with today's
 ``_svg_flatten``) or ``--against COMMIT`` (the reader as it was at that commit: its
-``_svg_import.py`` and its ``_svg_flatten.py``) it instead times
+``_svg_flatten``, ``_svg_match``, ``_svg_tree`` and ``_svg_import`` modules, those it had) it instead times
 that importer and today's on the same files in one run: n distinct polygons, n copies of
 one curved path under transforms, and n ``<use>`` clones of three symbols (as strew's own
 exports look). Both must give the same kinds, counts and poses (to 1e-3, see ``_same``).
@@ -157,8 +157,9 @@ def _load_module(name: str, path: str) -> Any:
 
 def _load_old(path: str) -> Any:
     """An older importer: a file (read with today's ``_svg_flatten``), or a git revision,
-    whose ``_svg_import.py`` and ``_svg_flatten.py`` are both loaded (the whole reader as
-    it was at that commit)."""
+    whose reader modules are all loaded, lowest first (the whole reader as it was at that
+    commit: ``_svg_flatten`` and ``_svg_import``, and since the split of issue 15.7
+    ``_svg_match`` and ``_svg_tree``)."""
     import os
     import re
     import subprocess
@@ -169,14 +170,19 @@ def _load_old(path: str) -> Any:
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     tag = re.sub(r"\W", "_", path)
     folder = tempfile.mkdtemp(prefix="strew_svg_baseline_")
-    files = {}
-    for name in ("_svg_flatten", "_svg_import"):
+    listed = subprocess.run(["git", "ls-tree", "--name-only", path, "src/strew/io/"], cwd=root, capture_output=True, text=True, check=True).stdout.split()
+    # the reader's modules, lowest first (before the split of issue 15.7 only the first and last)
+    names = [n for n in ("_svg_flatten", "_svg_match", "_svg_tree", "_svg_import") if f"src/strew/io/{n}.py" in listed]
+    mod = None
+    for name in names:
         text = subprocess.run(["git", "show", f"{path}:src/strew/io/{name}.py"], cwd=root, capture_output=True, text=True, check=True).stdout
-        files[name] = os.path.join(folder, f"{name}_{tag}.py")
-        with open(files[name], "w") as f:
-            f.write(text.replace("from ._svg_flatten import", f"from ._svg_flatten_{tag} import"))
-    _load_module(f"strew.io._svg_flatten_{tag}", files["_svg_flatten"])
-    return _load_module(f"strew.io._svg_import_{tag}", files["_svg_import"])
+        for other in names:
+            text = text.replace(f"from .{other} import", f"from .{other}_{tag} import")
+        file = os.path.join(folder, f"{name}_{tag}.py")
+        with open(file, "w") as f:
+            f.write(text)
+        mod = _load_module(f"strew.io.{name}_{tag}", file)
+    return mod
 
 
 def against(opts: Any) -> None:

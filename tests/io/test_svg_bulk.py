@@ -12,13 +12,15 @@ from hypothesis import strategies as st
 
 from strew.io import _svg_flatten as fl
 from strew.io import _svg_import as imp
+from strew.io import _svg_match as match
+from strew.shape import Path
 
 
 def _rows(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndarray]:
     """Invariant rows of ``n`` objects in a few families of near-copies (so that many pairs
     lie near the tests' thresholds), some lines, some without a signature."""
     fam = rng.integers(0, max(1, n // 4), n)
-    base = rng.uniform(0, 1.5, (n + 1, imp._KMAX - 1))[fam]
+    base = rng.uniform(0, 1.5, (n + 1, match._KMAX - 1))[fam]
     mags = base * rng.uniform(0.97, 1.03, base.shape) + rng.uniform(-0.012, 0.012, base.shape)
     mags = np.abs(mags)
     size = rng.uniform(1, 10, n)
@@ -29,7 +31,7 @@ def _rows(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndarray]:
     area = np.where(rng.random(n) < 0.8, 1.0, -1.0)
     rows = np.c_[size * scale**2, radius, gyration, tol, area, mags]
     valid = rng.random(n) < 0.95
-    rows[~valid] = imp._invariants(None)
+    rows[~valid] = match._invariants(None)
     return rows, valid
 
 
@@ -45,7 +47,7 @@ class _Sig:
 @given(seed=st.integers(0, 2**32 - 1), n=st.integers(0, 120))
 def test_candidate_pairs_are_the_one_by_one_candidates(seed, n):
     rows, valid = _rows(np.random.default_rng(seed), n)
-    found = imp._candidate_pairs(rows, valid)
+    found = match._candidate_pairs(rows, valid)
     assert found is not None
     start, earlier = found
     assert len(start) == n + 1 and start[0] == 0 and start[-1] == len(earlier)
@@ -56,7 +58,7 @@ def test_candidate_pairs_are_the_one_by_one_candidates(seed, n):
             continue
         kinds = [i for i in range(j) if valid[i]]  # the earlier objects, as kinds
         sig = _Sig(rows[j])
-        want = [kinds[k] for k in imp._candidates(rows[kinds].reshape(len(kinds), rows.shape[1]), sig, rows[j].tolist())]
+        want = [kinds[k] for k in match._candidates(rows[kinds].reshape(len(kinds), rows.shape[1]), sig, rows[j].tolist())]
         assert got == want, j
 
 
@@ -64,7 +66,7 @@ def test_candidate_pairs_leave_non_finite_invariants_to_the_one_by_one_test():
     rows, valid = _rows(np.random.default_rng(1), 10)
     valid[:] = True
     rows[3, 7] = np.inf
-    assert imp._candidate_pairs(rows, valid) is None
+    assert match._candidate_pairs(rows, valid) is None
 
 
 # -- parsing: the split reading gives what the token-by-token scan gave --------------------
@@ -277,8 +279,8 @@ def test_control_outlines_in_bulk_are_each_alone(seed, n):
             segs = fl.shape_segments("polygon" if r < 0.75 else "polyline", {}, " ".join(f"{v:.2f}" for v in rng.uniform(-5, 5, 2 * int(rng.integers(1, 8)))))
         own = rng.uniform(-2, 2, (2, 3)) if rng.random() < 0.7 else np.array([[1.0, 0.0, 3.0], [0.0, 1.0, 4.0]])
         items.append(([None, "leaf", ""][int(rng.integers(0, 3))], segs, own))
-    for item, got in zip(items, imp._control_outlines(items)):
-        want = imp._Reader.control_outline_of(*item)
+    for item, got in zip(items, match._control_outlines(items)):
+        want = match.control_outline_of(*item)
         assert (got is None) == (want is None)
         if got is not None:
             assert got[0] == want[0] and np.array_equal(got[1], want[1])
@@ -291,14 +293,14 @@ def test_invariant_rows_in_bulk_are_each_alone():
         k = int(rng.integers(3, 9))
         t = np.sort(rng.uniform(0, 2 * np.pi, k))
         r = rng.uniform(0.01, 600, k) * 10.0 ** int(rng.integers(-3, 4))
-        batch.append([imp.Path(np.c_[r * np.cos(t), r * np.sin(t)], bool(rng.random() < 0.8))])
-    sigs = [*imp._signatures(batch), None]
+        batch.append([Path(np.c_[r * np.cos(t), r * np.sin(t)], bool(rng.random() < 0.8))])
+    sigs = [*match._signatures(batch), None]
     for sig in sigs:
         if sig is not None:
             sig.tolerance = float(rng.uniform(0, 1))
     assert sum(s is not None for s in sigs) > 250
-    want = np.array([imp._invariants(s) for s in sigs])
-    assert np.array_equal(imp._invariants_many(sigs), want, equal_nan=True)
+    want = np.array([match._invariants(s) for s in sigs])
+    assert np.array_equal(match._invariants_many(sigs), want, equal_nan=True)
 
 
 # -- whole files: kinds and poses of known drawings ----------------------------------------
