@@ -661,7 +661,24 @@ class _Grower:
 
     def overlaps_any(self, g: Any, kind: int, x: float, y: float, scale: float, skip: set[int] | None = None) -> bool:
         r = self.kind_radius[kind] * scale + self.other_rmax
-        others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if not skip or j not in skip]
+        # bounding discs: an element farther than the sum of the two radii cannot touch
+        # (obstacles have no kind of ours), so it skips the shapely test
+        kr = self.kind_radius
+        nk = len(kr)
+        rg = float(kr[kind]) * abs(scale)
+        xy, kinds, state, scl = self.xy, self.kind, self.state, self.scl
+        others = []
+        for j in self.near(x, y, r, (ELEMENT, OBSTACLE)):
+            if skip and j in skip:
+                continue
+            if state[j] == ELEMENT:
+                kj = kinds[j]
+                if kj < nk:
+                    reach = (rg + float(kr[kj]) * abs(float(scl[j]))) * (1.0 + 1e-9)
+                    px, py = xy[j]
+                    if (px - x) ** 2 + (py - y) ** 2 > reach * reach:
+                        continue
+            others.append(j)
         if not others:
             return False
         gs = np.array([self.geom[j] for j in others], dtype=object)
