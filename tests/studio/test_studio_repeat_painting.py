@@ -75,3 +75,13 @@ def test_a_fill_clicked_on_a_copy_fills_the_tile_and_the_eraser_wraps(tmp_path):
     sc = s.scene()
     d = np.hypot(P.wrap_delta(sc.x + 10.0, W), np.clip(sc.y, 40.0, 100.0) - sc.y)
     assert np.all(d > 15.0) and np.sum(sc.x > W - 30) > 0
+
+
+def test_a_tile_too_small_for_the_texture_is_refused(tmp_path):
+    shutil.copy(EXEMPLAR, tmp_path / "pebbles.json")
+    s = Session(tmp_path, seed=1, size=(35.0, 35.0))
+    s.handle({"type": "load_exemplar", "path": "pebbles.json"})
+    s.handle({"type": "fill", "point": [[17.0, 17.0]]})
+    with pytest.raises(strew.InputError, match="too small"):
+        s.handle({"type": "settings", "repeat": True})
+    assert s.status_message()["repeat"] is None and s.state.tile is None

@@ -168,7 +168,14 @@ class DispatchMixin:
                 raise InputError(f"repeat: expected true or false, got {str(msg['repeat'])[:40]!r}")
             if msg["repeat"]:
                 self._tile()  # refuses a region that is not a rectangle
+            was = self.repeat
             self.repeat = msg["repeat"]
+            if self.state is not None:
+                try:  # the synthesis state follows the view: on the torus of the tile or not
+                    self._torus(self.state)
+                except InputError:  # a tile too small for the selection's neighbourhoods
+                    self.repeat = was
+                    raise
         return [self.status_message()]
 
     def palette_arrangement(self) -> Arrangement:
