@@ -157,6 +157,20 @@ class Shape:
 
     # -- constructors -----------------------------------------------------------------
     @classmethod
+    def _checked(cls, paths: tuple[Path, ...], d: str | None, style: Mapping[str, Any], labels: dict[str, tuple[float, float]]) -> Shape:
+        """A shape whose caller has checked what ``__post_init__`` checks and makes: every
+        path's points a read-only, C-contiguous float (n, 2) array, finite and within
+        ``MAX_COORD``, a closed path not repeating its first point at the end, labels
+        ``(float, float)``. Nothing is copied or checked again (a reader that makes
+        thousands of shapes checks them all at once, issue 17.3)."""
+        shape = object.__new__(cls)
+        object.__setattr__(shape, "paths", paths)
+        object.__setattr__(shape, "d", d)
+        object.__setattr__(shape, "style", dict(style))
+        object.__setattr__(shape, "labels", labels)
+        return shape
+
+    @classmethod
     def from_geometry(cls, geom: shapely.Geometry, **kwargs: Any) -> Shape:
         """Shape from a shapely geometry (polygons with holes, lines, or collections)."""
         paths: list[Path] = []
