@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 from strew.io import _svg_flatten as fl
 from strew.io import _svg_import as imp
 from strew.io import _svg_match as match
+from strew._errors import InputError
 from strew.shape import Path
 
 
@@ -376,3 +377,33 @@ def test_copies_are_found_with_their_poses(seed, kinds, n):
         c, sn = np.cos(a), np.sin(a)
         want = s * np.array([[c, -sn], [sn, c]]) @ local + (x, y)
         assert np.allclose([arr.x[i], arr.y[i]], want, rtol=0, atol=1e-6 * 500)
+
+
+def test_straight_shapes_made_at_once_are_what_shape_makes():
+    """read_svg makes the shapes of straight kinds in one pass (Shape._checked): the same
+    points as Shape's own checks give, read-only and contiguous; points beyond the
+    coordinate limit are still refused by Shape's message."""
+    from strew.io.svg import read_svg
+    from strew.shape import Shape
+
+    rng = np.random.default_rng(7)
+    polys = []
+    for i in range(40):
+        k = int(rng.integers(3, 8))
+        t = np.sort(rng.uniform(0, 2 * np.pi, k))
+        pts = np.c_[np.cos(t), np.sin(t)] * rng.uniform(1, 5, k)[:, None] + rng.uniform(0, 500, 2)
+        if i % 5 == 0:  # the first point written again at the end
+            pts = np.r_[pts, pts[:1]]
+        tag = "polyline" if i % 7 == 0 else "polygon"
+        polys.append(f'<{tag} points="{" ".join(f"{a:.3f},{b:.3f}" for a, b in pts)}"/>')
+    arr = read_svg('<svg xmlns="http://www.w3.org/2000/svg">' + "".join(polys) + "</svg>")
+    assert len(arr.kinds) >= 30
+    for shape in arr.shapes.values():
+        ref = Shape(shape.paths, shape.d, shape.style, shape.labels)
+        assert len(ref.paths) == len(shape.paths)
+        for p, q in zip(shape.paths, ref.paths):
+            assert p.closed == q.closed and np.array_equal(p.points, q.points)
+            assert not p.points.flags.writeable and p.points.flags.c_contiguous and p.points.dtype == np.float64
+    huge = '<svg xmlns="http://www.w3.org/2000/svg"><polygon points="0,0 1000,0 1000,1000" transform="scale(1e10)"/></svg>'
+    with pytest.raises(InputError, match="coordinate magnitude over"):
+        read_svg(huge)

@@ -694,12 +694,55 @@ class _Reader:
             else:
                 self.add_object(el, m, what == "void-object", hidden)
 
+    def shapes(self, kinds: list[_Kind]) -> list[Shape]:
+        """``[self.shape(k, centred=False) for k in kinds]``, the kinds drawn by straight
+        lines made at once (issue 17.3: one Shape's own checks cost more than its making).
+
+        Their points are moved into the kinds' frames in one subtraction (the same as each
+        alone) and checked in one pass as :class:`~strew.shape.Shape` checks them (finite,
+        within ``MAX_COORD``, a closed path not repeating its first point); a kind that
+        fails goes through :meth:`shape`, which raises or repairs as before.
+        """
+        out: list[Shape | None] = [None] * len(kinds)
+        fast = [i for i, k in enumerate(kinds) if self._straight(k, centred=False)]
+        if fast:
+            paths = [p for i in fast for p in kinds[i].flat.paths]  # type: ignore[union-attr]
+            counts = np.fromiter((len(p.points) for p in paths), dtype=np.intp, count=len(paths))
+            per_kind = np.fromiter((len(kinds[i].flat.paths) for i in fast), dtype=np.intp, count=len(fast))  # type: ignore[union-attr]
+            origins = np.array([kinds[i].origin for i in fast]).reshape(len(fast), 2)
+            moved = np.concatenate([p.points for p in paths]) - np.repeat(np.repeat(origins, per_kind, axis=0), counts, axis=0)
+            moved.setflags(write=False)
+            end = np.cumsum(counts)
+            start = end - counts
+            with np.errstate(invalid="ignore"):
+                fine = np.abs(moved) <= MAX_COORD
+                row_ok = fine[:, 0] & fine[:, 1]
+            bad_rows = np.r_[0, np.cumsum(~row_ok)]
+            closed = np.fromiter((p.closed for p in paths), dtype=bool, count=len(paths))
+            last = np.maximum(end - 1, 0)
+            repeats = closed & (counts > 1) & (moved[np.minimum(start, last)] == moved[last]).all(axis=1)
+            path_ok = (bad_rows[end] == bad_rows[start]) & (counts > 0) & ~repeats
+            kind_end = np.cumsum(per_kind)
+            kind_ok = np.logical_and.reduceat(path_ok, kind_end - per_kind) if len(path_ok) else np.zeros(0, bool)
+            pieces = [moved[a:b] for a, b in zip(start.tolist(), end.tolist())]
+            for j, (i, ok, hi, n) in enumerate(zip(fast, kind_ok.tolist(), kind_end.tolist(), per_kind.tolist())):
+                if ok:
+                    kind = kinds[i]
+                    out[i] = Shape._checked(tuple(Path(pieces[q], paths[q].closed) for q in range(hi - n, hi)), None, kind.style, {})
+        return [s if s is not None else self.shape(k, centred=False) for s, k in zip(out, kinds)]
+
+    @staticmethod
+    def _straight(kind: _Kind, *, centred: bool) -> bool:
+        """Whether :meth:`shape` moves the kind's own flattening into its frame (straight lines)."""
+        known = kind.flat
+        return known is not None and bool(known.paths) and not known.curves and not known.labels and not kind.mirrored and not centred
+
     def shape(self, kind: _Kind, *, centred: bool) -> Shape:
         """The kind's shape in its local frame (flattened finely enough for its largest copy)."""
         doc = self.doc
         origin = kind.origin
         known = kind.flat
-        if known is not None and known.paths and not known.curves and not known.labels and not kind.mirrored and not centred:
+        if known is not None and self._straight(kind, centred=centred):
             # straight lines flatten alike at any tolerance: move the kind's own flattening
             # into its frame instead of flattening again (issue 17.3; the same points up to
             # rounding: one translation after the parts' maps instead of one composed map)
@@ -840,7 +883,7 @@ def read_svg(
     doc.warn_dangling()
     used = {id(e.kind) for e in elements}
     kinds = [k for k in reader.kinds if id(k) in used or k.strew_symbol]
-    shapes = {k.name: reader.shape(k, centred=False) for k in kinds}
+    shapes = {k.name: shape for k, shape in zip(kinds, reader.shapes(kinds))}
     order = np.arange(len(elements))
     index = [e.attrs.get("index") for e in elements]
     if elements and all(i is not None for i in index):
