@@ -280,11 +280,18 @@ def test_control_outlines_in_bulk_are_each_alone(seed, n):
             segs = fl.shape_segments("polygon" if r < 0.75 else "polyline", {}, " ".join(f"{v:.2f}" for v in rng.uniform(-5, 5, 2 * int(rng.integers(1, 8)))))
         own = rng.uniform(-2, 2, (2, 3)) if rng.random() < 0.7 else np.array([[1.0, 0.0, 3.0], [0.0, 1.0, 4.0]])
         items.append(([None, "leaf", ""][int(rng.integers(0, 3))], segs, own))
-    for item, got in zip(items, match._control_outlines(items)):
+    state, digest = match._outline_digests(items)
+    for item, got, st_, dg in zip(items, match._control_outlines(items), state.tolist(), digest.tolist()):
         want = match.control_outline_of(*item)
-        assert (got is None) == (want is None)
+        assert (got is None) == (want is None) == (st_ == 0)
         if got is not None:
             assert got[0] == want[0] and np.array_equal(got[1], want[1])
+    # equal hashes, equal digests (objects whose digest is unique need no hash)
+    keyed = [(o[0][1:], dg) for o, dg in zip(match._control_outlines(items), digest.tolist()) if o is not None]
+    for a, da in keyed:
+        for b, db in keyed:
+            if a == b:
+                assert da == db
 
 
 def test_invariant_rows_in_bulk_are_each_alone():

@@ -94,7 +94,7 @@ from ..arrangement import Arrangement
 from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
 from ._svg_flatten import Segments, too_large
-from ._svg_match import _KMAX, _Signature, _candidate_pairs, _candidates, _candidates_few, _cell, _cells_near, _control_outlines, _invariants, _invariants_many, _match, control_outline_of
+from ._svg_match import _KMAX, _Signature, _candidate_pairs, _candidates, _candidates_few, _cell, _cells_near, _control_outlines, _invariants, _invariants_many, _match, _outline_digests, control_outline_of
 from ._svg_tree import HIDDEN_CHOICES, SVGImportWarning, _Doc, _Flat, _IDENTITY, _Part, _SHAPE_TAGS, _apply, _bounds, _compose, _data_attrs, _det, _guarded, _invert, _key_of, _local, _name_of_target, _props, _props_no_display, _similarity, _style, _translate, _visible_parts
 
 __all__ = ["read_svg", "read_svg_shapes", "read_svg_region", "SVGImportWarning", "HIDDEN_CHOICES"]
@@ -475,6 +475,17 @@ class _Reader:
             if over:
                 drop = {i for i in over if too_large(todo[i][3], MAX_COORD)}
                 todo = [t for i, t in enumerate(todo) if i not in drop]
+        # An object whose outline digest no other prepared object shares is a moved copy
+        # of none of them: its hash is not made (None: moved_copy neither looks it up
+        # nor lists it). Objects read later that are not prepared repeat a prepared
+        # object's geometry text (copy_of places them) or fail.
+        state, digest = _outline_digests([(t[2], t[3], t[4]) for t in todo])
+        shared = state == 2
+        digested = np.flatnonzero(state == 1)
+        if len(digested):
+            _, inverse, count = np.unique(digest[digested], return_inverse=True, return_counts=True)
+            shared[digested] = count[inverse] > 1
+        want = shared.tolist()
         seen_outline: set[tuple[Any, ...]] = set()
         rows: list[np.ndarray] = []
         valid: list[bool] = []
@@ -483,7 +494,10 @@ class _Reader:
         for lo in range(0, len(todo), _CHUNK):
             chunk = todo[lo : lo + _CHUNK]
             items: list[tuple[ET.Element, list[_Part]]] = []
-            for (el, void, key, segs, own), outline in zip(chunk, _control_outlines([(t[2], t[3], t[4]) for t in chunk])):
+            wanted = want[lo : lo + _CHUNK]
+            made = iter(_control_outlines([(t[2], t[3], t[4]) for t, w in zip(chunk, wanted) if w]))
+            for (el, void, key, segs, own), w in zip(chunk, wanted):
+                outline = next(made) if w else None
                 self._outline_of[id(el)] = outline
                 if outline is not None:
                     if outline[0] in seen_outline:

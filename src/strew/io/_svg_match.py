@@ -483,13 +483,13 @@ def control_outline_of(key: str | None, segs: Segments, own: np.ndarray) -> tupl
     return (key or "", segs.code.tobytes(), segs.sub.tobytes(), segs.closed.tobytes(), far, q.tobytes()), z
 
 
-def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> list[tuple[tuple[Any, ...], np.ndarray] | None]:
-    """:func:`control_outline_of` of many objects, ``(key, segments, own map)`` each,
-    in one batch of numpy (issue 17.3): the same hashes and points, elementwise the same
-    arithmetic. Objects with a point that is not finite are left to the method."""
-    out: list[tuple[tuple[Any, ...], np.ndarray] | None] = [None] * len(items)
+def _outline_table(items: list[tuple[str | None, Segments, np.ndarray]]) -> dict[str, Any] | None:
+    """The arrays :func:`_control_outlines` and :func:`_outline_digests` cut per object:
+    ``sel`` (the objects that may have an outline), their control points ``z`` and
+    rounded canonical points ``q``, per object ``start``, ``end``, ``far``, ``top`` and
+    the running count ``bad`` of non-finite points; None when no object may have one."""
     if not items:
-        return out
+        return None
     counts = np.array([len(segs.code) for _, segs, _ in items])
     maps = np.array([own for _, _, own in items]).reshape(len(items), 2, 3)
     det = maps[:, 0, 0] * maps[:, 1, 1] - maps[:, 0, 1] * maps[:, 1, 0]
@@ -501,7 +501,7 @@ def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> l
     # no arcs, at most 512 segments; a mirror image (det <= 0) is another kind: left to the matcher
     sel = np.flatnonzero((counts > 0) & (counts <= 512) & ~arcs & (det > 0)).tolist()
     if not sel:
-        return out
+        return None
     code = np.concatenate([items[i][1].code for i in sel])
     pts = np.concatenate([items[i][1].pts for i in sel])
     nseg = np.array([len(items[i][1].code) for i in sel])
@@ -527,6 +527,18 @@ def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> l
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         canon = rel / rel[far_at][obj]
         q = np.round(canon.view(np.float64) * 100).astype(np.int64)
+    return {"sel": sel, "code": code, "nseg": nseg, "z": z, "q": q, "start": start, "end": end, "far": far, "top": top, "bad": bad}
+
+
+def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> list[tuple[tuple[Any, ...], np.ndarray] | None]:
+    """:func:`control_outline_of` of many objects, ``(key, segments, own map)`` each,
+    in one batch of numpy (issue 17.3): the same hashes and points, elementwise the same
+    arithmetic. Objects with a point that is not finite are left to the function."""
+    out: list[tuple[tuple[Any, ...], np.ndarray] | None] = [None] * len(items)
+    t = _outline_table(items)
+    if t is None:
+        return out
+    sel, code, nseg, z, q, start, end, far, top, bad = (t[k] for k in ("sel", "code", "nseg", "z", "q", "start", "end", "far", "top", "bad"))
     # the hash's bytes cut from the bytes of all objects at once (the same bytes as each
     # object's own arrays give)
     qb = q.tobytes()
@@ -548,6 +560,64 @@ def _control_outlines(items: list[tuple[str | None, Segments, np.ndarray]]) -> l
         key = (items[i][0] or "", codeb[wcode * a0 : wcode * (a0 + na)], subb[wsub * a0 : wsub * (a0 + na)], closedb[wcl * c0 : wcl * (c0 + nc)], far_l[j], qb[wq * s0 : wq * s1])
         out[i] = (key, z[s0:s1])
     return out
+
+
+def _outline_digests(items: list[tuple[str | None, Segments, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+    """A 64-bit digest of each object's :func:`control_outline_of` hash, all at once.
+
+    Objects whose hashes are equal have equal digests (the digest is a sum of the hash's
+    numbers times fixed random weights, wrapping), so an object whose digest no other
+    object shares is a moved copy of none of them, and its hash need not be made
+    (issue 17.3: on a drawing of distinct shapes, making every hash cost 10% of the
+    reading). ``key`` is left out (equal shapes under other names share a digest).
+
+    Returns
+    -------
+    state : (n,) int8
+        0: no outline (``control_outline_of`` gives None); 1: digested; 2: not digested
+        (a point that is not finite: left to ``control_outline_of``).
+    digest : (n,) uint64
+        The digest where ``state`` is 1.
+    """
+    n = len(items)
+    state = np.zeros(n, np.int8)
+    digest = np.zeros(n, np.uint64)
+    t = _outline_table(items)
+    if t is None:
+        return state, digest
+    sel = np.asarray(t["sel"], dtype=np.intp)
+    start, end, far, top, bad, q, code, nseg = (t[k] for k in ("start", "end", "far", "top", "bad", "q", "code", "nseg"))
+    with np.errstate(invalid="ignore"):
+        finite = (bad[end] == bad[start]) & np.isfinite(top)
+        has = finite & (top > 0)
+    state[sel[~finite]] = 2
+    state[sel[has]] = 1
+    m = len(sel)
+    npts = end - start
+    # weights by position within an object (up to 4 points per segment, 512 segments)
+    weights = _DIGEST_WEIGHTS
+    pos = np.arange(len(q) // 2) - np.repeat(start, npts)
+    qq = q.reshape(-1, 2).astype(np.uint64)
+    per_point = qq[:, 0] * weights[2 * pos] + qq[:, 1] * weights[2 * pos + 1]
+    h = np.add.reduceat(per_point, start) if len(per_point) else np.zeros(m, np.uint64)
+    seg0 = np.cumsum(nseg) - nseg
+    spos = np.arange(len(code)) - np.repeat(seg0, nseg)
+    subs = np.concatenate([items[i][1].sub for i in t["sel"]]).astype(np.uint64)
+    per_seg = code.astype(np.uint64) * weights[4096 + spos] + subs * weights[4608 + spos]
+    h = h + np.add.reduceat(per_seg, seg0) * weights[5120]
+    closed = [items[i][1].closed for i in t["sel"]]
+    ncl = np.fromiter(map(len, closed), dtype=np.intp, count=m)
+    cpos = np.arange(int(ncl.sum())) - np.repeat(np.cumsum(ncl) - ncl, ncl)
+    per_cl = np.concatenate(closed).astype(np.uint64) * weights[5121 + np.minimum(cpos, 511)] + weights[5633]
+    hc = np.zeros(m, np.uint64)
+    np.add.at(hc, np.repeat(np.arange(m), ncl), per_cl)
+    h = h + hc * weights[5634] + far.astype(np.uint64) * weights[5635] + npts.astype(np.uint64) * weights[5636] + nseg.astype(np.uint64) * weights[5637]
+    digest[sel] = h
+    return state, digest
+
+
+# fixed random odd weights for _outline_digests (any fixed values keep equal hashes' digests equal)
+_DIGEST_WEIGHTS = np.random.default_rng(20261123).integers(0, 2**63, 5640, dtype=np.uint64) * np.uint64(2) + np.uint64(1)
 
 
 def _candidate_pairs(rows: np.ndarray, valid: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
