@@ -130,3 +130,20 @@ def test_bad_designs(fine_sphere, kwargs, message):
     with pytest.raises(InputError) as info:
         surface.orientation_field(fine_sphere, **kwargs)
     assert message in str(info.value)
+
+
+def test_coarse_smoothest_field_of_a_large_mesh():
+    # above 2 * coarse vertices the automatic field is computed on a subset and carried
+    # to every vertex (issue 20 point 2: its cost no longer grows faster than the mesh)
+    mesh = trimesh.creation.icosphere(subdivisions=5)  # 10,242 vertices
+    f = surface.orientation_field(mesh, coarse=2000)
+    assert f.design == {"method": "smoothest", "iterations": 2, "coarse": 2000}
+    assert_tangent_unit(mesh, f.directions)
+    dots, _ = edge_alignment(mesh, f.directions)
+    # as smooth as the direct field: only the sphere's singularities turn (direct: same)
+    direct, _ = edge_alignment(mesh, surface.orientation_field(mesh, coarse=None).directions)
+    assert np.mean(dots < 0.9) < max(2 * np.mean(direct < 0.9), 0.002)
+    assert np.median(dots) > 0.999
+    assert np.array_equal(f.directions, surface.orientation_field(mesh, coarse=2000).directions)
+    with pytest.raises(InputError, match="coarse"):
+        surface.orientation_field(mesh, coarse=5)

@@ -33,7 +33,11 @@ import numpy as np
 from .._errors import InputError
 from ._deps import require
 
-__all__ = ["OrientationField", "orientation_field", "load_field"]
+__all__ = ["OrientationField", "orientation_field", "load_field", "COARSE_VERTICES"]
+
+#: the automatic field of a mesh with more than twice as many vertices is computed on
+#: this many of them
+COARSE_VERTICES = 8000
 
 
 @dataclass(frozen=True, eq=False)
@@ -155,6 +159,53 @@ def _smoothest(s: _Solvers, iterations: int) -> np.ndarray:
     return _unit(_to_world(solver, np.asarray(coords)))
 
 
+def _smoothest_coarse(mesh: Any, n0: int, iterations: int, smooth: int = 40) -> np.ndarray:
+    """The smoothest field of a large mesh from ``n0`` of its vertices.
+
+    potpourri3d's first vector heat solve factors the mesh's connection Laplacian, and
+    its cost grows faster than the mesh (icosphere: 0.3 s at 20k faces, 2.6 s at 82k).
+    Departure (issue 20 point 2, "well under a second at 50k faces"): above ``n0``
+    vertices the same inverse iteration runs on a fixed pseudo-random subset of ``n0``
+    vertices with potpourri3d's point-cloud vector heat solver; each vertex then takes
+    the inverse-distance mean of its 4 nearest subset directions, and ``smooth`` rounds
+    of neighbour averaging in the tangent planes (one sparse product each) take out the
+    interpolation's kinks. Cost: about constant for the subset plus linear in the mesh.
+    The field is as smooth as the direct one on spheres and bumpy spheres (share of
+    edges turning over 25 degrees 0.05-0.06% both) but may keep a pair of extra
+    singularities where the direct one has none (torus: 0.12% of edges rough against 0).
+    """
+    import scipy.sparse as sp
+    from scipy.spatial import cKDTree
+
+    pp3d = require("potpourri3d")
+    V = np.asarray(mesh.vertices, dtype=np.float64)
+    n = len(V)
+    VN = np.asarray(mesh.vertex_normals, dtype=np.float64)
+    g = np.random.default_rng(20)  # fixed: the field must not depend on a run's seed
+    sub = np.sort(g.choice(n, size=n0, replace=False))
+    P = np.ascontiguousarray(V[sub])
+    solver = pp3d.PointCloudHeatSolver(P, t_coef=1e4)
+    idx = np.arange(n0, dtype=np.int64)
+    angle = g.uniform(0.0, 2.0 * np.pi, n0)
+    coords = solver.transport_tangent_vectors(idx, np.column_stack([np.cos(angle), np.sin(angle)]))
+    for _ in range(iterations):
+        norm = np.linalg.norm(coords, axis=1, keepdims=True)
+        coords = solver.transport_tangent_vectors(idx, np.divide(coords, norm, out=np.zeros_like(coords), where=norm > 1e-12))
+    bx, by, _ = solver.get_tangent_frames()
+    coarse = _unit(np.asarray(coords)[:, :1] * bx + np.asarray(coords)[:, 1:2] * by)
+    d, j = cKDTree(P).query(V, k=4)
+    eps = 1e-9 * float(np.linalg.norm(np.ptp(V, axis=0)))  # a subset vertex takes its own direction
+    x = np.einsum("ik,ikj->ij", 1.0 / (d + eps), coarse[j])
+    e = np.asarray(mesh.edges_unique, dtype=np.int64)
+    adj = sp.coo_matrix((np.ones(2 * len(e)), (np.r_[e[:, 0], e[:, 1]], np.r_[e[:, 1], e[:, 0]])), shape=(n, n)).tocsr()
+    adj = adj + sp.identity(n, format="csr")
+    for _ in range(smooth):
+        x -= np.einsum("ij,ij->i", x, VN)[:, None] * VN
+        x = adj @ _unit(x)
+    x -= np.einsum("ij,ij->i", x, VN)[:, None] * VN
+    return _unit(x)
+
+
 def _nearest_vertices(mesh: Any, pts: np.ndarray) -> np.ndarray:
     from scipy.spatial import cKDTree
 
@@ -222,6 +273,7 @@ def orientation_field(
     sources: Any = None,
     sinks: Any = None,
     iterations: int = 2,
+    coarse: int | None = COARSE_VERTICES,
 ) -> OrientationField:
     """A smooth unit tangent field over a mesh (Davison et al. §5.7).
 
@@ -236,6 +288,11 @@ def orientation_field(
         Singularities: points the field flows away from / towards.
     iterations : int
         Inverse-iteration steps of the automatic (smoothest) field.
+    coarse : int or None
+        The automatic field of a mesh with more than twice this many vertices is
+        computed on this many of them and carried to the rest (``_smoothest_coarse``: about 0.5 s at any
+        size instead of a direct solve that grows faster than the mesh); ``None``: always
+        the direct solve.
 
     Returns
     -------
@@ -256,6 +313,8 @@ def orientation_field(
     """
     if isinstance(iterations, bool) or not isinstance(iterations, (int, np.integer)) or iterations < 1:
         raise InputError(f"iterations: must be a positive integer, got {iterations!r}")
+    if coarse is not None and (isinstance(coarse, bool) or not isinstance(coarse, (int, np.integer)) or coarse < 100):
+        raise InputError(f"coarse: must be an integer of at least 100 or None, got {coarse!r}")
     src = _points(sources, "sources") if sources is not None and len(sources) else np.zeros((0, 3))
     snk = _points(sinks, "sinks") if sinks is not None and len(sinks) else np.zeros((0, 3))
     if strokes is not None and not isinstance(strokes, (list, tuple, np.ndarray)):
@@ -271,8 +330,12 @@ def orientation_field(
         dirs = _from_singularities(s, mesh, src, snk)
         design = {"method": "singularities", "sources": src.tolist(), "sinks": snk.tolist()}
     else:
-        dirs = _smoothest(s, int(iterations))
-        design = {"method": "smoothest", "iterations": int(iterations)}
+        if coarse is not None and len(mesh.vertices) > 2 * int(coarse):
+            dirs = _smoothest_coarse(mesh, int(coarse), int(iterations))
+            design = {"method": "smoothest", "iterations": int(iterations), "coarse": int(coarse)}
+        else:
+            dirs = _smoothest(s, int(iterations))
+            design = {"method": "smoothest", "iterations": int(iterations)}
     dirs.setflags(write=False)
     return OrientationField(mesh, dirs, design)
 
