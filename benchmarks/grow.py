@@ -12,6 +12,11 @@ the local frame (``strew.metrics.fidelity``) and the share of interior tiles wit
 four neighbours at the row spacing.
 
 Run: ``python benchmarks/grow.py`` (``--quick``: 1,000 and 2,000 elements, one run each).
+``--against REV`` times only the growth of 2,000 elements (``--quick``: 1,000), with and
+without relaxation, of this tree and of the tree at git revision ``REV`` (extracted with
+``git archive``), each in fresh processes taken in turn, and prints elements per CPU
+second and the CPU ratio this/REV (the best of ``--repeat`` runs each; the machine may be
+shared, so only the ratios of one run compare).
 ``--structure`` prints only the structure figures of issue 14 points 2 and 4, no
 timings: a hexagonal lattice in flow mode along fields that turn 60 and 90 degrees across
 30 spacings and along curved strokes (share of interior elements with six neighbours at
@@ -158,10 +163,58 @@ def hex_share(xy, spacing: float, inner) -> float:
     return float(((hi == 6) & (lo == 0)).mean()) if len(hi) else float("nan")
 
 
+_AGAINST_CODE = r"""
+import sys, time
+from strew.grow import analyze, grow
+from strew.grow._exemplars import hex_exemplar, stone_exemplar, tile_exemplar
+ex = {"stones": stone_exemplar, "tiles": tile_exemplar, "hex": hex_exemplar}[sys.argv[1]]()
+ref = analyze(ex)
+grow(ref, count=50, rng=1)  # kernels compiled or loaded outside the timing
+c = time.process_time()
+out = grow(ref, count=int(sys.argv[2]), rng=1, relax=sys.argv[3] == "1")
+print(time.process_time() - c, len(out))
+"""
+
+
+def against(rev: str, n: int, repeat: int, json_path, src: str | None = None) -> None:
+    """CPU elements per second of this tree and of git revision ``rev``, in turns."""
+    import os
+    import subprocess
+    import tempfile
+
+    root = Path(__file__).resolve().parents[1]
+    sha = subprocess.run(["git", "rev-parse", "--short", rev], cwd=root, capture_output=True, text=True, check=True).stdout.strip()
+    bench = Bench("grow_against", f"strew.grow: CPU elements per second, this tree against {sha}", baseline=f"git {sha}", json_path=json_path)
+    with tempfile.TemporaryDirectory() as tmp:
+        archive = subprocess.run(["git", "archive", sha, "src"], cwd=root, capture_output=True, check=True).stdout
+        subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
+        trees = {"this": str(Path(src).resolve() if src else root / "src"), "base": str(Path(tmp) / "src")}
+        for name in ("stones", "tiles", "hex"):
+            for relax in ("1", "0"):
+                cpu: dict[str, list[float]] = {k: [] for k in trees}
+                for _ in range(max(1, repeat)):
+                    for k, path in trees.items():
+                        env = dict(os.environ, PYTHONPATH=path)
+                        out = subprocess.run([sys.executable, "-c", _AGAINST_CODE, name, str(n), relax], env=env, capture_output=True, text=True, check=True)
+                        c, m = out.stdout.split()[-2:]
+                        cpu[k].append(float(c) / int(m))
+                this, base = min(cpu["this"]), min(cpu["base"])
+                bench.row(f"{name} {n} relax {'on' if relax == '1' else 'off'}", el_per_cpu_s=1.0 / this, base_el_per_cpu_s=1.0 / base, cpu_ratio=this / base)
+    bench.finish()
+
+
 def main() -> None:
-    args = parse_args(__doc__, lambda p: p.add_argument("--structure", action="store_true", help="only the structure figures of issue 14 points 2 and 4 (no timings)"))
+    def extra(p):
+        p.add_argument("--structure", action="store_true", help="only the structure figures of issue 14 points 2 and 4 (no timings)")
+        p.add_argument("--against", metavar="REV", default=None, help="CPU el/s of this tree against git revision REV (see the docstring)")
+        p.add_argument("--src", default=None, help="with --against: the src folder timed as this tree (default: this checkout's)")
+
+    args = parse_args(__doc__, extra)
     if args.structure:
         structure(args.json)
+        return
+    if args.against:
+        against(args.against, 1000 if args.quick else 2000, min(args.repeat, 3), args.json, args.src)
         return
     from strew import metrics
     from strew.grow import analyze, grow
