@@ -227,6 +227,10 @@ def test_many_elements_flatten_as_each_alone(ds, seed):
             assert len(got) == len(want)
             for (p, c, cv), (q, d, dv) in zip(got, want):
                 assert (c, cv) == (d, dv) and np.array_equal(p, q)
+    for got, want in zip(fl.flatten_many(tables, tols, plus_zero=True), fl.flatten_many(tables, tols)):
+        assert len(got) == len(want)
+        for (p, c, cv), (q, d, dv) in zip(got, want):  # what the identity map gives: -0.0 becomes 0.0
+            assert (c, cv) == (d, dv) and np.array_equal(p, q + 0.0) and not np.signbit(p[p == 0]).any()
 
 
 _POINTS_TEXT = st.one_of(

@@ -722,7 +722,7 @@ def path_d(segs: Segments, m: np.ndarray, rot: float, s: float) -> str:
 
 
 # -- many elements at once ---------------------------------------------------------------
-def flatten_many(tables: list[Segments], tols: np.ndarray) -> list[list[tuple[np.ndarray, bool, bool]]]:
+def flatten_many(tables: list[Segments], tols: np.ndarray, *, plus_zero: bool = False) -> list[list[tuple[np.ndarray, bool, bool]]]:
     """:func:`flatten` of many elements in one batch of numpy (issue 17.3).
 
     Parameters
@@ -731,6 +731,9 @@ def flatten_many(tables: list[Segments], tols: np.ndarray) -> list[list[tuple[np
         One table per element.
     tols : (k,) float
         The tolerance of each element.
+    plus_zero : bool
+        Add 0.0 to every point (what the identity map gives: -0.0 becomes 0.0), in one
+        operation for all, for callers that draw the elements in their own frame.
 
     Returns
     -------
@@ -826,6 +829,9 @@ def flatten_many(tables: list[Segments], tols: np.ndarray) -> list[list[tuple[np
     curved_sub = np.zeros(len(closed_flag), dtype=bool)
     np.logical_or.at(curved_sub, sub, is_curve)
     elem_of_sub = np.repeat(np.arange(k), nsub)
-    for g, s0, s1, cl in zip(gid[ok].tolist(), gstart[ok].tolist(), gend[ok].tolist(), closed[ok].tolist()):
-        out[elem_of_sub[g]].append((samples[s0:s1], cl, bool(curved_sub[g])))
+    if plus_zero:
+        samples = samples + 0.0
+    g_ok = gid[ok]
+    for e, s0, s1, cl, cv in zip(elem_of_sub[g_ok].tolist(), gstart[ok].tolist(), gend[ok].tolist(), closed[ok].tolist(), curved_sub[g_ok].tolist()):
+        out[e].append((samples[s0:s1], cl, cv))
     return out

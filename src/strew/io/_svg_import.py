@@ -503,7 +503,10 @@ class _Reader:
                     if outline[0] in seen_outline:
                         continue  # a moved copy: moved_copy places it
                     seen_outline.add(outline[0])
-                props = {**doc.inherited_props(el), **{k: v for k, v in _props(el).items() if k != "display"}}
+                props = doc.inherited_props(el)
+                mine = _props(el)
+                if mine:
+                    props.update((k, v) for k, v in mine.items() if k != "display")
                 items.append((el, [_Part(el, own, props)]))
             if not items:
                 continue

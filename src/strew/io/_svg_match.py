@@ -610,7 +610,9 @@ def _outline_digests(items: list[tuple[str | None, Segments, np.ndarray]]) -> tu
     cpos = np.arange(int(ncl.sum())) - np.repeat(np.cumsum(ncl) - ncl, ncl)
     per_cl = np.concatenate(closed).astype(np.uint64) * weights[5121 + np.minimum(cpos, 511)] + weights[5633]
     hc = np.zeros(m, np.uint64)
-    np.add.at(hc, np.repeat(np.arange(m), ncl), per_cl)
+    some = ncl > 0
+    if some.any():
+        hc[some] = np.add.reduceat(per_cl, (np.cumsum(ncl) - ncl)[some])
     h = h + hc * weights[5634] + far.astype(np.uint64) * weights[5635] + npts.astype(np.uint64) * weights[5636] + nseg.astype(np.uint64) * weights[5637]
     digest[sel] = h
     return state, digest

@@ -148,7 +148,9 @@ def _parse_style(text: str | None) -> dict[str, str]:
 def _props(el: ET.Element) -> dict[str, str]:
     """Presentation properties of an element: attributes, overridden by ``style``."""
     props = {k: v for k in ("fill", "stroke", "stroke-width", "display", "fill-rule") if (v := el.get(k)) is not None}
-    props.update({k: v for k, v in _parse_style(el.get("style")).items() if k in ("fill", "stroke", "stroke-width", "display", "fill-rule")})
+    style = el.get("style")
+    if style:
+        props.update({k: v for k, v in _parse_style(style).items() if k in ("fill", "stroke", "stroke-width", "display", "fill-rule")})
     return props
 
 
@@ -520,12 +522,13 @@ class _Doc:
                 where.append((i, m))
         paths: list[list[Path]] = [[] for _ in jobs]
         curves = [False] * len(jobs)
-        for (i, m), flat in zip(where, flatten_many(tables, np.array(tols))):
+        # the identity (objects drawn in the root's frame) maps each point to itself + 0.0,
+        # bit for bit (-0.0 becomes 0.0, as in the product): added to all points at once
+        ident = all(m is _IDENTITY for _, m in where)
+        for (i, m), flat in zip(where, flatten_many(tables, np.array(tols), plus_zero=ident)):
             for pts, closed, curved in flat:
                 curves[i] |= curved
-                # the identity (an object drawn in the root's frame) maps each point to
-                # itself + 0.0, bit for bit (-0.0 becomes 0.0, as in the product)
-                paths[i].append(Path(pts + 0.0 if m is _IDENTITY else _apply(m, pts), closed))
+                paths[i].append(Path(pts if ident else pts + 0.0 if m is _IDENTITY else _apply(m, pts), closed))
         return [_Flat(p, lab, c) for p, lab, c in zip(paths, labels, curves)]
 
     def segments(self, el: ET.Element) -> Segments:
