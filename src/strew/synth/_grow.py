@@ -156,6 +156,68 @@ def anchors(prep) -> np.ndarray:
     return out
 
 
+def anchor_children(prep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The elements that lean on each anchor of their own size class (a ring's tiles on
+    its hub, see ``_prepare.parents``), as CSR: ``(is_child, ptr, idx)`` with
+    ``is_child`` (n,) bool and the children of exemplar element ``a`` at
+    ``idx[ptr[a]:ptr[a + 1]]``. Computed once per ``prep``.
+    """
+    got = getattr(prep, "_anchor_children", None)
+    if got is not None and len(got[0]) == len(prep.kind):
+        return got
+    par = prep.parent
+    has = par >= 0
+    child = np.zeros(len(par), bool)
+    child[has] = (prep.size_class[par[has]] == prep.size_class[has]) & (anchors(prep)[par[has]] > 0)
+    idx = np.flatnonzero(child)
+    idx = idx[np.argsort(par[idx], kind="stable")]
+    ptr = np.zeros(len(par) + 1, np.int64)
+    np.cumsum(np.bincount(par[idx], minlength=len(par)), out=ptr[1:])
+    prep._anchor_children = (child, ptr, idx)
+    return prep._anchor_children
+
+
+def _snap_to_anchor_rings(state: SynthState, ex: np.ndarray, ppos: np.ndarray, valid: np.ndarray, pslot: np.ndarray) -> None:
+    """Place copies of an anchor's children that come without their anchor at the slots
+    of the ring the output's anchor was copied with (in place on ``ex`` and ``ppos``).
+
+    Extension of §5.1 for structured exemplars (§7): a ring's tiles reach the output
+    from several copies, matched to exemplar rings of different phases, while its hub
+    came with one of them. Tiles placed at another ring's phase stood a few degrees off
+    the first ones and collided: at 50x the exemplar's area 144 of 615 interior rings had
+    9 tiles instead of 10, and their gaps failed the local map's largest empty circle. A
+    child proposed beside an output anchor of its parent's kind (within 1.5 times the
+    exemplar's child-anchor distance) takes the nearest child slot of the exemplar
+    anchor that output anchor stands for (``origin``), when that slot lies within the
+    child's collision radius of the proposal: the ring keeps one phase.
+    """
+    prep = state.prep
+    child, cptr, cidx = anchor_children(prep)
+    if len(cidx) == 0 or state.n == 0:
+        return
+    t = np.flatnonzero(valid & (pslot < 0) & (pslot != -2) & child[np.maximum(ex, 0)])
+    if len(t) == 0:
+        return
+    out_anchor = np.flatnonzero(anchors(prep)[state.src] > 0)
+    if len(out_anchor) == 0:
+        return
+    par = prep.parent[ex[t]]
+    reach = 1.5 * np.hypot(*(prep.pos[ex[t]] - prep.pos[par]).T)
+    d, j = cKDTree(state.pos[out_anchor]).query(ppos[t])
+    h = out_anchor[j]
+    o = state.src[h]  # the exemplar anchor it was copied as: its ring's phase
+    ok = (d <= reach) & (prep.skind[state.src[h]] == prep.skind[par]) & (cptr[o + 1] > cptr[o])
+    for u in np.flatnonzero(ok):
+        kids = cidx[cptr[o[u]] : cptr[o[u] + 1]]
+        hp = state.pos[h[u]]
+        slots = hp + map_offsets(np.broadcast_to(hp, (len(kids), 2)), prep.pos[kids] - prep.pos[o[u]])
+        dd = np.hypot(*(slots - ppos[t[u]]).T)
+        b = int(np.argmin(dd))
+        if dd[b] <= prep.rc[kids[b]]:
+            ex[t[u]] = kids[b]
+            ppos[t[u]] = slots[b]
+
+
 def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visible_only: bool) -> np.ndarray:
     """(m,) bool: copies of ``src`` at ``pts`` that intersect an element of O that does
     not yield to them.
@@ -304,6 +366,7 @@ def grow(
         np.cumsum(sizes, out=out_ptr[1:])
         count, ex, ppos, pslot = K.generate_proposals(pos[seeds], q_ptr, q_off, q_kind, q_d, rbar[seeds], cands, prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind_cost, out_ptr, prep.parent, prep.follow)
         valid = ex >= 0
+        _snap_to_anchor_rings(state, ex, ppos, valid, pslot)
         exv = np.maximum(ex, 0)
         pr = prep.rc[exv]  # collision radii (see Prepared.rc)
         ok = valid.copy()
