@@ -121,10 +121,21 @@ def test_flow_mode_keeps_the_lattice_on_a_curved_field_and_stays_inside():
     assert np.degrees(d).max() <= 12.0
 
 
-@pytest.mark.parametrize("name", ["stones", "hex_lattice"])
+def _centre_fill(xy, pts, spacing):
+    """Share of points ``pts`` with an element centre of ``xy`` within ``spacing``."""
+    return float((cKDTree(xy).query(pts)[0] < spacing).mean())
+
+
+@pytest.mark.parametrize("name", ["stones", "hex_lattice", "two_sizes"])
 def test_a_closed_boundary_fills_its_inside(name):
     ex = make_exemplar(name)
     spacing = float(np.median(cKDTree(ex.xy).query(ex.xy, 2)[0][:, 1]))
+    # the same measure on the exemplar's own inside: stones of radius 12 at a median
+    # spacing of 10.5 (two sizes) leave points more than a spacing from any centre
+    # in the exemplar itself (0.88 of them within one); lattices and stones: 1.0
+    x0, y0, x1, y1 = ex.region.bounds
+    ex_pts = np.mgrid[x0 + spacing : x1 - spacing : 80j, y0 + spacing : y1 - spacing : 80j].reshape(2, -1).T
+    ex_fill = _centre_fill(ex.xy, ex_pts, spacing)
     a, b = 10 * spacing, 7 * spacing
     cx, cy = 15 * spacing, 10 * spacing
     t = np.linspace(0, 2 * np.pi, 60)
@@ -135,11 +146,10 @@ def test_a_closed_boundary_fills_its_inside(name):
     assert shapely.contains_xy(poly, out.x, out.y).all()
     assert not shapely.intersects(out.geometry, shapely.LineString(oval)).any()
     # at least 95% of the inside (less a band of half a spacing) has an element
-    # centre within one spacing
+    # centre within one spacing, or 95% of the exemplar's own share where that is less
     g = np.mgrid[cx - a : cx + a : 80j, cy - b : cy + b : 60j].reshape(2, -1).T
     g = g[shapely.contains_xy(poly.buffer(-0.5 * spacing), g[:, 0], g[:, 1])]
-    d, _ = cKDTree(out.xy).query(g)
-    assert (d < spacing).mean() >= 0.95
+    assert _centre_fill(out.xy, g, spacing) >= 0.95 * min(1.0, ex_fill)
 
 
 def test_ambiguous_diagonals_of_a_jittered_square_grid_are_flipped_one_way():
@@ -407,3 +417,21 @@ def test_priority_on_bricks_leaves_no_gap(first, then):
         pairs = a < b
         areas = shapely.area(shapely.intersection(geoms[a[pairs]], geoms[b[pairs]]))
         assert np.all(areas <= 1e-6 * shapely.area(geoms).min())
+
+
+@pytest.mark.slow
+def test_fixed_mode_bricks_stay_on_one_lattice():
+    # issue 14 point 1: an element nudged off its slot in the open front (fixed mode)
+    # was followed by the seeds fitted to it, and two fronts met half a course out of
+    # step (seed 5: 5.9% of the bricks more than a quarter course off the first
+    # brick's lattice, regularity failed). Only enclosed slots nudge now.
+    ex = make_exemplar("bricks")
+    q, hh = 22.0 + 1.6, 9.0 + 1.6  # make.py's bricks: length + mortar, height + mortar
+    basis = np.array([[q, 0.0], [0.5 * q, hh]]).T  # running bond
+    x0, y0, x1, y1 = ex.region.bounds
+    region = Region.rectangle(3.5 * (x1 - x0), 3.5 * (y1 - y0))
+    for seed in (4, 5):
+        out = grow(ex, region=region, rng=seed)
+        c = np.linalg.solve(basis, (out.xy - out.xy[0]).T).T
+        off = np.abs((c - np.round(c)) @ basis.T)
+        assert (off[:, 1] > 0.25 * hh).mean() <= 0.02

@@ -114,6 +114,9 @@ class GrowParams:
     flow_carry: bool = True
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
+    #: fixed mode: ... only when at most this many slots of its ring are left without a
+    #: placed neighbour (an enclosed slot; see ``place``); None: always
+    nudge_open: int | None = 1
     #: clustered exemplars grow their hubs first, then each hub's satellites
     #: (:mod:`strew.grow._clusters`); off with a user's priorities or edge flips
     clusters: bool = False
@@ -363,6 +366,7 @@ class _Grower:
         self.edges: set[tuple[int, int]] = self.index.edges
         self.heap: list[tuple[float, int]] = []
         self.deferred: set[int] = set()
+        self._out_of_domain = False  # the last place() refused an element across the domain's edge
         #: the largest reference ring a seed of each kind (-1: any) can be matched to
         self._ring_max: dict[int, int] = {}
         #: flow mode: the field's angle at each element where it was placed
@@ -1098,6 +1102,33 @@ class _Grower:
                 self._move(s, ox, oy)
         return False
 
+    def try_smaller(self, s: int) -> bool:
+        """Place seed ``s``, whose element did not fit the domain, as a smaller kind; True when placed.
+
+        Not in the paper, whose boundary tool only stops growth. A seed of a large kind
+        by the region's edge or a boundary stroke, where its element would reach across,
+        died and left a gap the size of that element, which nothing filled: a closed
+        stroke around stones with pebbles was filled to 0.83-0.87 of its inside (the
+        inside away from the stroke at the exemplar's density). The seed is tried as
+        each smaller kind, largest first, as :meth:`try_larger` tries larger ones.
+        """
+        own = int(self.kind[s])
+        if own < 0:
+            return False
+        lv = self.size_level
+        smaller = [b for b in range(self.n_kinds) if lv[b] < lv[own] and self.kind_has_candidates[b]]
+        smaller.sort(key=lambda b: -lv[b])
+        ox, oy = self.xy[s]
+        for b in smaller:
+            self.kind[s] = b
+            pick = self.choose(s)
+            if pick is not None and self.place(s, *pick):
+                return True
+            self.kind[s] = own
+            if self.xy[s] != (ox, oy):
+                self._move(s, ox, oy)
+        return False
+
     def place(self, s: int, a: int, k: int, th: float, reach: float | None = None) -> bool:
         """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
         p = self.p
@@ -1131,10 +1162,24 @@ class _Grower:
         # boundary strokes (the paper stops growth at them; an element whose centre is
         # inside could still reach across).
         if not self.fits_domain(g):
+            self._out_of_domain = True
             return False
         # Not in the paper: a placement that would overlap an element is refused (the
         # seed dies), so that an exemplar without overlaps grows a pattern without any.
         if p.avoid_overlaps and self.overlaps_any(g, kind, x, y, scale):
+            # Fixed mode without priorities: only where the slot is enclosed (at most
+            # ``nudge_open`` of its ring's slots unplaced). The nudge is for slots that
+            # closed in (fronts that met; with §5.1's priorities, low-priority seeds
+            # among placed ones). In the open front a nudged element is off the lattice,
+            # later seeds fit their positions to it (_fit_position) and the offset
+            # spreads until two fronts meet out of step: bricks seed 5 grew a seam half
+            # a course out of step (regularity 0.060 against 0.05) from 4 nudges with
+            # 2-4 of 6 slots placed. In rotation mode each element's turn moves its
+            # ring a little and the nudge keeps those overlaps from leaving holes
+            # (without it bricks rotate seeds 1, 2, 4 failed).
+            if (p.nudge_open is not None and self.mode_code == 0 and not self.use_prio
+                    and sum(self.state[o] == ELEMENT for o in self.adj[s]) < n_ring - p.nudge_open):
+                return False
             moved = self._nudge(s, kind, x, y, rot, scale)
             if moved is None:
                 return False
@@ -1526,7 +1571,7 @@ class _Grower:
         self.begin(start)
         target = p.count if p.count is not None else p.max_elements
         self.advance(rep, target)
-        if self.tile is not None:
+        if self.tile is not None or self.boundary is not None:
             for _ in range(p.refill_rounds):
                 if len(self.order) >= target or not self.refill():
                     break
@@ -1628,7 +1673,8 @@ class _Grower:
                 continue
             if not (self.canopy and self.try_larger(s)):
                 pick = self.choose(s)
-                if pick is None or not self.place(s, *pick):
+                self._out_of_domain = False
+                if (pick is None or not self.place(s, *pick)) and not (self._out_of_domain and self.try_smaller(s)):
                     self.kill(s)
                     self.release_deferred(s)
                     continue
