@@ -106,3 +106,54 @@ def test_bad_profiles(kwargs, message):
     with pytest.raises(InputError) as info:
         to_height_png(a, **kwargs)
     assert message in str(info.value)
+
+
+def _tile(kind_profile=None):
+    # a 60 x 40 repeat tile with elements across the right, the bottom and both edges
+    return Arrangement(
+        {"dot": Shape.circle(4.0), "ring": Shape.circle(6.0)},
+        ["dot", "dot", "dot", "ring"], [58.0, 20.0, 1.0, 35.0], [20.0, 38.5, 1.5, 15.0],
+        meta={"periodic": [0.0, 0.0, 60.0, 40.0], **({"height_profiles": kind_profile} if kind_profile else {})},
+    )
+
+
+@pytest.mark.parametrize("profiles", [None, {"ring": "groove", "dot": "plateau"}])
+def test_periodic_tile_height_map_is_seamless(profiles):
+    tile = _tile(profiles)
+    h, frame = height_map(tile, width=120)
+    assert h.shape == (80, 120) and frame == (0.0, 0.0, 0.5)
+    # the 3x3 copies laid side by side, rendered as one flat picture, hold the tile in
+    # their middle pixel for pixel: the tile's edges continue each other
+    xs = np.concatenate([tile.x + 60 * i for j in range(3) for i in range(3)])
+    ys = np.concatenate([tile.y + 40 * j for j in range(3) for i in range(3)])
+    big = Arrangement(tile.shapes, np.tile(tile.kind_names, 9), xs, ys, region=strew.Region.from_size("180x120"),
+                      meta={"height_profiles": profiles} if profiles else {})
+    hb, _ = height_map(big, width=360)
+    assert hb.shape == (240, 360)
+    assert np.abs(hb[80:160, 120:240] - h).max() < 1e-9
+    # the dot across the right edge (x 58, r 4) wraps in on the left: raised at x = 1
+    assert h[40, 2] > 0.2
+
+
+def test_cli_height_profile_flag(tmp_path, capsys):
+    from strew.cli import main
+
+    ex = tmp_path / "tile.json"
+    strew.save(_tile(), ex)
+    out, doc = tmp_path / "r.height.png", tmp_path / "r.json"
+    assert main(["render", str(ex), "--out", str(out), "--out", str(doc), "--height-profile", "dot=plateau:0.6",
+                 "--height-profile", "*=groove"]) == 0
+    img = read16(out.read_bytes())
+    # the plateaus' tops at 0.6, the ring a groove (below ground), nothing above 0.6
+    assert img.max() == round(1.6 / 2 * 65535)
+    assert img.min() < GROUND
+    assert strew.load(doc).meta["height_profiles"] == {"dot": {"profile": "plateau", "height": 0.6}, "*": "groove"}
+    # the document remembers them: rendered again without the flag, the same pixels
+    again = tmp_path / "again.height.png"
+    assert main(["render", str(doc), "--out", str(again)]) == 0
+    assert np.array_equal(read16(again.read_bytes()), img)
+    capsys.readouterr()
+    assert main(["render", str(ex), "--out", str(out), "--height-profile", "leaf=dome"]) == 2
+    err = capsys.readouterr().err
+    assert "--height-profile" in err and "leaf" in err
+    assert main(["render", str(ex), "--out", str(out), "--height-profile", "dot=bump"]) == 2

@@ -243,6 +243,31 @@ def _remember_repeat(ctx: click.Context, param: click.Parameter, value: str | No
     return counts
 
 
+def _remember_height_profiles(ctx: click.Context, param: click.Parameter, value: tuple[str, ...]) -> dict | None:
+    """``--height-profile KIND=PROFILE[:HEIGHT]`` (repeatable) -> ``meta["height_profiles"]`` (issue 20.6)."""
+    out: dict[str, object] = {}
+    for text in value or ():
+        kind, sep, rest = text.partition("=")
+        name, _, amp = rest.partition(":")
+        if not sep or not kind or not name:
+            raise click.BadParameter(f"expected KIND=PROFILE[:HEIGHT], got {text!r}", ctx=ctx, param=param)
+        try:
+            out[kind] = {"profile": name, "height": float(amp)} if amp else name
+        except ValueError:
+            raise click.BadParameter(f"{text!r}: HEIGHT must be a number in (0, 1]", ctx=ctx, param=param) from None
+    ctx.meta["strew.height_profiles"] = out or None
+    return out or None
+
+
+def _out_height_profiles() -> dict | None:
+    ctx = click.get_current_context(silent=True)
+    while ctx is not None:
+        if "strew.height_profiles" in ctx.meta:
+            return ctx.meta["strew.height_profiles"]
+        ctx = ctx.parent
+    return None
+
+
 def _out_repeat() -> tuple[int, int] | None:
     ctx = click.get_current_context(silent=True)
     while ctx is not None:
@@ -283,7 +308,17 @@ def out_option(required: bool = True) -> Callable[[Callable[..., Any]], Callable
         callback=_remember_repeat,
         help="SVG and PNG outputs of a periodic tile repeat it N across and M down (SVG through a <pattern>); .json keeps the tile.",
     )
-    return lambda f: out(fmt(repeat(f)))
+    heights = click.option(
+        "--height-profile",
+        "out_height_profiles",
+        multiple=True,
+        metavar="KIND=PROFILE[:H]",
+        expose_value=False,
+        callback=_remember_height_profiles,
+        help="Height profile of a kind in .height.png outputs: dome, plateau or groove, optionally with a height "
+             "in (0, 1] (repeatable; * for the other kinds; default dome).",
+    )
+    return lambda f: out(fmt(repeat(heights(f))))
 
 
 def seed_option(f: Callable[..., Any]) -> Callable[..., Any]:
@@ -530,6 +565,15 @@ def save_outputs(arr: Arrangement, outs: Sequence[str], **png_kwargs: Any) -> li
     from ..io import atomic_write_many, encode, save_many
 
     files = [o for o in outs if o != "-"]
+    heights = _out_height_profiles()
+    if heights:  # recorded in the document too, so that strew render draws the same relief
+        from ..io._height import _profiles
+
+        try:  # unknown kinds or profiles: exit 2 before anything is written
+            _profiles(arr, heights)
+        except InputError as exc:
+            raise InputError(f"--height-profile: {str(exc).removeprefix('profiles')}".replace(": .", ": ").replace(": :", ":")) from None
+        arr = arr.with_meta(height_profiles=heights)
     repeat = _out_repeat()
     if repeat is not None:
         from .._periodic import frame

@@ -18,6 +18,11 @@ height is their sum clipped to [-1, 1]; pixel = round((h + 1) / 2 * 65535), so f
 ground is 32768, the top of a full-height element 65535 and the bottom of a full-depth
 groove 0. The picture covers the region's bounds, or without a region the elements'
 bounds with a 2% margin (as the SVG and PNG outputs); row 0 is the top (smallest y).
+A repeat tile (``meta["periodic"]``, issue 18) covers exactly its tile, and elements that
+cross its edges are drawn again at the opposite edges: the map tiles without a seam.
+
+On the command line, ``--height-profile KIND=PROFILE[:HEIGHT]`` (repeatable; ``*`` for
+the kinds not named) sets ``meta["height_profiles"]``, which this writer reads.
 """
 
 from __future__ import annotations
@@ -89,7 +94,16 @@ def height_map(
     if isinstance(width, bool) or not isinstance(width, (int, np.integer)) or not 1 <= width <= 16384:
         raise InputError(f"width: expected an integer in 1..16384, got {width!r}")
     prof = _profiles(arr, profiles)
-    if arr.region is not None:
+    from .._periodic import frame as periodic_frame
+
+    tile = periodic_frame(arr)
+    if tile is not None:
+        # a repeat tile (issue 18): the picture is the tile, mapped to whole pixels, and
+        # elements crossing its edges are drawn again on the opposite side, so the map's
+        # left/right and top/bottom edges continue each other (seamless displacement)
+        x0, y0, w_world, h_world = (float(v) for v in tile)
+        x1, y1 = x0 + w_world, y0 + h_world
+    elif arr.region is not None:
         x0, y0, x1, y1 = arr.region.bounds
     else:
         x0, y0, x1, y1 = arr.bounds
@@ -99,10 +113,15 @@ def height_map(
     if w_world <= 0 or h_world <= 0:
         s = max(w_world, h_world, 1.0)
         x0, y0, w_world, h_world = (x0 + x1 - s) / 2, (y0 + y1 - s) / 2, s, s
-    px = w_world / int(width)
+    width = int(width)
+    px = w_world / width
     hpx = max(1, int(round(h_world / px)))
-    raised = np.zeros((hpx, int(width)))
-    grooves = np.zeros((hpx, int(width)))
+    # rows are exactly the tile's height for a repeat tile (pixels a hair off square)
+    py = h_world / hpx if tile is not None else px
+    sampling = (py / px, 1.0)  # distances in x-pixels
+    shifts = [(0, 0)] if tile is None else [(i, j) for j in (-1, 0, 1) for i in (-1, 0, 1)]
+    raised = np.zeros((hpx, width))
+    grooves = np.zeros((hpx, width))
     geoms = arr.geometry_of("geometry") if len(arr) else np.zeros(0, dtype=object)
     names = arr.kind_names
     for i in range(len(arr)):
@@ -116,36 +135,43 @@ def height_map(
         size = max(gx1 - gx0, gy1 - gy0)
         w_groove = max(1.5, 0.2 * 0.5 * size / px)  # pixels, refined below from the real inside distance
         padp = int(np.ceil(w_groove)) + 2 if name == "groove" else 1
-        c0 = max(0, int(np.floor((gx0 - x0) / px)) - padp)
-        c1 = min(int(width), int(np.ceil((gx1 - x0) / px)) + padp)
-        r0 = max(0, int(np.floor((gy0 - y0) / px)) - padp)
-        r1 = min(hpx, int(np.ceil((gy1 - y0) / px)) + padp)
-        if c1 <= c0 or r1 <= r0:
+        # the element's whole window (not cut at the picture's edge, so that its inside
+        # distances, and a tile's copies across the edges, are those of the whole element)
+        c0 = int(np.floor((gx0 - x0) / px)) - padp
+        c1 = int(np.ceil((gx1 - x0) / px)) + padp
+        r0 = int(np.floor((gy0 - y0) / py)) - padp
+        r1 = int(np.ceil((gy1 - y0) / py)) + padp
+        places = [(r0 + j * hpx, c0 + k * width) for k, j in shifts
+                  if c0 + k * width < width and c1 + k * width > 0 and r0 + j * hpx < hpx and r1 + j * hpx > 0]
+        if not places:
             continue
         xs = x0 + (np.arange(c0, c1) + 0.5) * px
-        ys = y0 + (np.arange(r0, r1) + 0.5) * px
+        ys = y0 + (np.arange(r0, r1) + 0.5) * py
         X, Y = np.meshgrid(xs, ys)
         inside = shapely.contains_xy(g, X, Y)
         if not inside.any() and name != "groove":
             continue
-        d_in = distance_transform_edt(np.pad(inside, 1))[1:-1, 1:-1]
+        d_in = distance_transform_edt(np.pad(inside, 1), sampling=sampling)[1:-1, 1:-1]
         dmax = float(d_in.max())
         if name == "groove":
-            d_out = distance_transform_edt(np.pad(~inside, 1, constant_values=True))[1:-1, 1:-1]
+            d_out = distance_transform_edt(np.pad(~inside, 1, constant_values=True), sampling=sampling)[1:-1, 1:-1]
             half = max(1.5, 0.2 * dmax)
             signed = np.where(inside, d_in - 0.5, d_out - 0.5)  # pixel-centre distance to the outline
             h = -amp * np.clip(1.0 - np.abs(signed) / half, 0.0, 1.0)
-            view = grooves[r0:r1, c0:c1]
-            np.minimum(view, h, out=view)
-            continue
-        t = np.clip(d_in / max(dmax, 1e-12), 0.0, 1.0)
-        if name == "dome":
-            h = amp * np.sqrt(np.clip(1.0 - (1.0 - t) ** 2, 0.0, 1.0))
-        else:  # plateau
-            h = amp * np.clip(t / 0.3, 0.0, 1.0)
-        h = np.where(inside, h, 0.0)
-        view = raised[r0:r1, c0:c1]
-        np.maximum(view, h, out=view)
+            target, op = grooves, np.minimum
+        else:
+            t = np.clip(d_in / max(dmax, 1e-12), 0.0, 1.0)
+            if name == "dome":
+                h = amp * np.sqrt(np.clip(1.0 - (1.0 - t) ** 2, 0.0, 1.0))
+            else:  # plateau
+                h = amp * np.clip(t / 0.3, 0.0, 1.0)
+            h = np.where(inside, h, 0.0)
+            target, op = raised, np.maximum
+        for pr, pc in places:
+            a0, a1 = max(pr, 0), min(pr + h.shape[0], hpx)
+            b0, b1 = max(pc, 0), min(pc + h.shape[1], width)
+            view = target[a0:a1, b0:b1]
+            op(view, h[a0 - pr:a1 - pr, b0 - pc:b1 - pc], out=view)
     return np.clip(raised + grooves, -1.0, 1.0), (float(x0), float(y0), float(px))
 
 
