@@ -164,10 +164,7 @@ class Shape:
         ``(float, float)``. Nothing is copied or checked again (a reader that makes
         thousands of shapes checks them all at once, issue 17.3)."""
         shape = object.__new__(cls)
-        object.__setattr__(shape, "paths", paths)
-        object.__setattr__(shape, "d", d)
-        object.__setattr__(shape, "style", dict(style))
-        object.__setattr__(shape, "labels", labels)
+        shape.__dict__.update(paths=paths, d=d, style=dict(style), labels=labels)  # frozen: no __setattr__
         return shape
 
     @classmethod
