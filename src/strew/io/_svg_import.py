@@ -742,10 +742,11 @@ class _Reader:
             kind_end = np.cumsum(per_kind)
             kind_ok = np.logical_and.reduceat(path_ok, kind_end - per_kind) if len(path_ok) else np.zeros(0, bool)
             pieces = [moved[a:b] for a, b in zip(start.tolist(), end.tolist())]
-            for j, (i, ok, hi, n) in enumerate(zip(fast, kind_ok.tolist(), kind_end.tolist(), per_kind.tolist())):
+            checked = Shape._checked
+            for i, ok, hi, n in zip(fast, kind_ok.tolist(), kind_end.tolist(), per_kind.tolist()):
                 if ok:
-                    kind = kinds[i]
-                    out[i] = Shape._checked(tuple(Path(pieces[q], paths[q].closed) for q in range(hi - n, hi)), None, kind.style, {})
+                    own = (Path(pieces[hi - 1], paths[hi - 1].closed),) if n == 1 else tuple([Path(pieces[q], paths[q].closed) for q in range(hi - n, hi)])
+                    out[i] = checked(own, None, kinds[i].style, {})
         return [s if s is not None else self.shape(k, centred=False) for s, k in zip(out, kinds)]
 
     @staticmethod
