@@ -30,7 +30,52 @@ a torus (65,536 faces) and a bumpy sphere (81,920 faces, radial bumps of +-12%).
   count in the same run, nearest-neighbour distance median / 10th percentile against
   the exemplar's, kind shares, sphere overlaps.
 
-Run: ``python benchmarks/surfaces.py`` (``--quick``: 20k-face meshes, one repeat).
+* growth on the meshes (Ijiri et al. §5, :func:`strew.surface.grow`) from a hexagonal
+  lattice exemplar at the default scale (about 2,000 elements): CPU el/s, elements
+  against the hexagonal count, nearest-neighbour median against the exemplar's, share
+  of elements with six neighbours within 1.2 spacings (all, and the first 200 placed);
+* the automatic field's CPU time at 20k, 50k and 100k faces (spheres and tori), the
+  coarse path (above 16k vertices) against the direct solve in the same run.
+
+Run: ``python benchmarks/surfaces.py`` (``--quick``: 20k-face meshes, one repeat;
+``--only pack|synth|grow|field``, repeatable, runs those parts).
+
+``python benchmarks/surfaces.py --quick --only grow --only field`` (load average about
+10, wall 3-6x CPU; ``benchmarks/results/surfaces-grow-field.json``):
+
+==================  =====  ========  =====  ======  ========  =======  =====  ===========  ========
+grow, hex lattice   faces  elements  CPU s  el/s    fraction  nn med   six    six, first   overlaps
+                                            (CPU)   of hex    out/ex   nbrs   200 placed
+==================  =====  ========  =====  ======  ========  =======  =====  ===========  ========
+icosphere           20480  1,765     2.81   627     0.883     0.971    0.488  0.98         0
+torus               16384  1,602     1.88   850     0.801     0.985    0.328  0.855        0
+bumpy               20480  1,787     2.67   669     0.893     0.972    0.523  0.99         0
+==================  =====  ========  =====  ======  ========  =======  =====  ===========  ========
+
+Growth keeps the lattice exact near its start and loses it where fronts meet (a
+hexagonal lattice cannot close around a sphere or along a torus's two loops): no
+windowed relaxation (§5.5) is carried over. 630-850 el/s of CPU, about 0.6-0.8x surface
+synthesis.
+
+===========  ======  ========  =========  ==========  =========  ==========
+field        faces   vertices  auto       direct      auto /     rough edges
+                               CPU s      CPU s       direct     auto/direct
+===========  ======  ========  =========  ==========  =========  ==========
+sphere 20k   20,480  10,242    0.25       0.20        (direct)   0.18%/0.18%
+sphere 50k   49,280  24,642    0.51       0.45        1.13       0.08%/0.09%
+sphere 100k  98,592  49,298    0.60       1.91        0.31       0.04%/0.04%
+torus 20k    20,480  10,240    0.12       0.12        (direct)   0/0
+torus 50k    51,200  25,600    0.48       0.51        0.94       0.15%/0
+torus 100k   102,400 51,200    0.70       1.26        0.55       0.07%/0
+===========  ======  ========  =========  ==========  =========  ==========
+
+The automatic field is under 0.6 s of CPU at 50k faces and grows about linearly past it
+(0.25 -> 0.60 s from 20k to 100k faces on spheres; icosphere 82k: 0.65 s against 2.23 s
+direct, bumpy sphere 82k 0.65 against 2.64, in a side run). The price: on a torus the
+coarse field keeps a pair of extra singularities (0.07-0.15% of edges turn by more than
+25 degrees, none in the direct field); ``orientation_field(mesh, coarse=None)`` keeps
+the direct solve. The pack table below was measured before the coarse path (its field
+column is the direct solve).
 
 Surface synthesis on the 16k-20k-face meshes (``synth_rows`` with one repeat, load
 average about 13 on the 2-core machine, so wall times are 4-8x the CPU times):
@@ -227,8 +272,77 @@ def synth_rows(surface, meshes_, quick: bool, repeat: int):
     return rows
 
 
+def field_meshes():
+    """Meshes of about 20k, 50k and 100k faces: spheres (icosphere, UV spheres) and tori."""
+    import trimesh
+
+    return {
+        "sphere 20k": trimesh.creation.icosphere(subdivisions=5),
+        "sphere 50k": trimesh.creation.uv_sphere(count=[112, 112]),
+        "sphere 100k": trimesh.creation.uv_sphere(count=[158, 158]),
+        "torus 20k": trimesh.creation.torus(1.0, 0.35, major_sections=160, minor_sections=64),
+        "torus 50k": trimesh.creation.torus(1.0, 0.35, major_sections=200, minor_sections=128),
+        "torus 100k": trimesh.creation.torus(1.0, 0.35, major_sections=400, minor_sections=128),
+    }
+
+
+def field_rows(surface, repeat: int):
+    """The automatic field's CPU seconds (median of ``repeat``; the coarse path above
+    16k vertices) against the direct solve (``coarse=None``) in the same run, and the
+    share of edges turning by more than 25 degrees for each."""
+    import statistics
+
+    rows = []
+    for name, mesh in field_meshes().items():
+        auto = [cpu(lambda: surface.orientation_field(mesh)) for _ in range(repeat)]
+        direct = [cpu(lambda: surface.orientation_field(mesh, coarse=None)) for _ in range(repeat)]
+        fa = surface.orientation_field(mesh)
+        fd = surface.orientation_field(mesh, coarse=None)
+        rows.append((f"field {name}", dict(
+            faces=len(mesh.faces), vertices=len(mesh.vertices), field_cpu_s=statistics.median(auto),
+            direct_cpu_s=statistics.median(direct), ratio=statistics.median(auto) / statistics.median(direct),
+            coarse="coarse" in fa.design, rough=rough_edges(mesh, fa.directions), direct_rough=rough_edges(mesh, fd.directions),
+        )))
+    return rows
+
+
+def grow_rows(surface, meshes_, repeat: int):
+    """Growth on the meshes (Ijiri et al. §5, :func:`strew.surface.grow`) from a hexagonal
+    lattice exemplar at the default scale (about 2,000 elements): el/s (CPU of one run),
+    elements against the hexagonal count, nearest-neighbour median against the
+    exemplar's, share with six neighbours within 1.2 spacings (all; the first 200
+    placed), sphere overlaps."""
+    import numpy as np
+    from scipy.spatial import cKDTree
+
+    from strew.grow._exemplars import hex_exemplar
+
+    ex = hex_exemplar(8, 8)
+    surface.grow(ex, meshes_["icosphere"], scale=0.05, count=20, rng=0)  # warm-up (numba)
+    rows = []
+    for mname, mesh in meshes_.items():
+        field = surface.orientation_field(mesh)
+        t, arr = median_time(lambda: surface.grow(ex, mesh, field=field, rng=1), repeat=repeat, warmup=0)
+        c = cpu(lambda: surface.grow(ex, mesh, field=field, rng=1))
+        sc = arr.meta["params"]["scale"]
+        p = np.column_stack([arr.x, arr.y, arr["z"]])
+        d, _ = cKDTree(p).query(p, k=2)
+        six = cKDTree(p).query_ball_point(p, r=1.2 * 10 * sc, return_length=True) - 1 == 6
+        hexagonal = mesh.area / ((10 * sc) ** 2 * np.sqrt(3) / 2)
+        rows.append((f"grow hex {mname}", dict(
+            faces=len(mesh.faces), elements=len(arr), grow_s=t, grow_cpu_s=c, el_per_s_cpu=len(arr) / c,
+            fraction=len(arr) / hexagonal, nn_median_ratio=float(np.median(d[:, 1]) / sc / 10.0),
+            six_share=float(np.mean(six)), six_share_first200=float(np.mean(six[:200])),
+            overlaps=overlap_count(p, np.asarray(arr["radius"])),
+        )))
+    return rows
+
+
 def main() -> None:
-    args = parse_args(__doc__.splitlines()[0])
+    args = parse_args(__doc__.splitlines()[0], extra=lambda p: p.add_argument(
+        "--only", choices=("pack", "synth", "grow", "field"), action="append", default=None,
+        help="run only these parts (repeatable) [default: all]"))
+    only = set(args.only or ("pack", "synth", "grow", "field"))
     try:
         import numpy as np
         import trimesh
@@ -253,7 +367,7 @@ def main() -> None:
 
     bench = Bench("surfaces", "strew.surface.pack on meshes vs trimesh sample_surface_even",
                   baseline="trimesh.sample.sample_surface_even", json_path=args.json)
-    for name, raw in meshes(args.quick).items():
+    for name, raw in (meshes(args.quick).items() if "pack" in only else ()):
         t_load, mesh = timed(lambda: surface.load_mesh(raw))
         t_field, field = median_time(lambda: surface.orientation_field(mesh), repeat=min(repeat, 3), warmup=0)
         t_pack, arr = median_time(lambda: surface.pack(r, mesh, field=field, rng=1), repeat=repeat, warmup=0)
@@ -297,9 +411,18 @@ def main() -> None:
             row["base_patch_cv"] = sphere_patch_cv(np.asarray(bp))
         bench.row(name, **row)
         assert row["overlaps"] == 0
-    for name, row in synth_rows(surface, {k: surface.load_mesh(v) for k, v in meshes(args.quick).items()}, args.quick, repeat):
-        bench.row(name, **row)
-        assert row["overlaps"] == 0
+    loaded = {k: surface.load_mesh(v) for k, v in meshes(args.quick).items()}
+    if "synth" in only:
+        for name, row in synth_rows(surface, loaded, args.quick, repeat):
+            bench.row(name, **row)
+            assert row["overlaps"] == 0
+    if "grow" in only:
+        for name, row in grow_rows(surface, loaded, repeat):
+            bench.row(name, **row)
+            assert row["overlaps"] == 0
+    if "field" in only:
+        for name, row in field_rows(surface, min(repeat, 3)):
+            bench.row(name, **row)
     bench.finish()
 
 
