@@ -364,7 +364,7 @@ def grow(
         sizes = np.where(cands >= 0, np.diff(prep.nb_ptr)[np.maximum(cands, 0)], 0).ravel()
         out_ptr = np.zeros(len(sizes) + 1, np.int64)
         np.cumsum(sizes, out=out_ptr[1:])
-        count, ex, ppos, pslot = K.generate_proposals(pos[seeds], q_ptr, q_off, q_kind, q_d, rbar[seeds], cands, prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind_cost, out_ptr, prep.parent, prep.follow)
+        count, ex, ppos, pslot = K.generate_proposals(pos[seeds], q_ptr, q_off, q_kind, q_d, rbar[seeds], cands, prep.nb_ptr, prep.nb_idx, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind_cost, out_ptr, prep.parent, prep.follow, anchor_children(prep)[0])
         valid = ex >= 0
         _snap_to_anchor_rings(state, ex, ppos, valid, pslot)
         exv = np.maximum(ex, 0)

@@ -287,7 +287,7 @@ def candidate_costs(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, q_center_d
 
 
 @numba.njit(cache=True, nogil=True)
-def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr, parent, follow):
+def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr, e_idx, e_off, e_kind, e_d, kind_cost, out_ptr, parent, follow, anchored):
     """Right-partial pairs of each (seed, candidate), mapped to output space (§5.1).
 
     The new position of a copied element is ``p_s + m_{p_s}(p_{e'} - p_c)``.
@@ -308,6 +308,10 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
     follow : (n_ex,) bool
         Elements whose only larger Delaunay neighbour is their parent (a dot ringing
         its disc): placed from the output element paired with the parent.
+    anchored : (n_ex,) bool
+        Elements whose parent is an anchor of their own size class (a ring's tile on its
+        hub, see ``_prepare.parents``): not copied when the output element paired with
+        the parent is of another kind.
 
     Returns
     -------
@@ -379,7 +383,7 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
                         if used[u]:
                             if partner_d[u] * SIZE_STEP < e_d[ea + u] * (1.0 - 1e-9):
                                 ps = -2
-                            elif partner_kind[u] != e_kind[ea + u] and partner_d[u] < e_d[ea + u] * SIZE_STEP * (1.0 - 1e-9):
+                            elif anchored[e_idx[ea + t]] and partner_kind[u] != e_kind[ea + u]:
                                 # Likewise a parent of its own size class (an anchor: a
                                 # ring's hub, see _prepare.parents) paired with an output
                                 # element of another kind (a tile where the hub belongs):

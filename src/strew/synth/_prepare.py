@@ -721,7 +721,15 @@ def parents(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, void: np.ndarr
     for s in np.unique(source):
         ids = np.flatnonzero((source == s) & ~void)
         cc = cls[ids]
-        an = np.zeros(len(ids), np.int64) if anchor is None else anchor[ids]
+        an = np.zeros(len(ids), np.int64) if anchor is None else anchor[ids].copy()
+        if an.any() and kind is not None:
+            # only kinds wholly within one size class: a stone of a larger kind whose
+            # scale puts it in the smaller class (three sizes 1:2:4 with +-10 % scales)
+            # is rare there but anchors nothing
+            kk = kind[ids]
+            for k_ in np.unique(kk[an > 0]):
+                if len(np.unique(cc[kk == k_])) > 1:
+                    an[kk == k_] = 0
         if len(ids) < 3 or (cc.min() == cc.max() and not an.any()):
             continue
         try:
