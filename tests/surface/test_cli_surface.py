@@ -162,3 +162,11 @@ def test_surface_option_refuses_what_has_no_meaning(mesh_file, grid_file, tmp_pa
     assert main(argv) == 2
     assert message in capsys.readouterr().err
     assert not (tmp_path / "x.glb").exists()
+
+
+def test_height_profile_is_refused_for_surface_scenes(tmp_path, capsys):
+    mesh = tmp_path / "ball.ply"
+    trimesh.creation.icosphere(subdivisions=2).export(mesh)
+    assert main(["surface", "--surface", str(mesh), "--radius", "0.2", "--out", str(tmp_path / "s.glb"),
+                 "--height-profile", "*=dome"]) == 2
+    assert "--height-profile" in capsys.readouterr().err

@@ -20,6 +20,10 @@ _OUTS = (".glb", ".json", ".png", ".svg")
 
 def _check_outs(outs: tuple[str, ...]) -> None:
     from ..io._atomic import probe_writable
+    from ._common import _out_height_profiles
+
+    if _out_height_profiles():
+        raise InputError("--height-profile: a surface scene has no height map (.height.png is written for flat outputs)")
 
     for o in outs:
         suffix = Path(o).suffix.lower()
