@@ -221,11 +221,11 @@ class ToolsMixin:
             if "n_before" not in stroke:
                 stroke["n_before"] = st.n
                 self._op = {"n0": st.n, "density": self.brush_density, "pen": "pressure" in stroke, "it0": st.iterations, "dropped": np.zeros(0, np.int64)}
-                near = st.n > 0 and len(cKDTree(st.pos).query_ball_point(discs[0], r=radius)) > 0
+                first, first_r = st.wrap_discs(pts[:1], np.array([float(radius)]))  # in the repeat view: with its images
+                near = st.n > 0 and cKDTree(st.pos).query_ball_point(first, r=radius, return_length=True).any()
                 if not near:
                     # §5.4: "If there are no elements near the first brush-point, a random patch
                     # from the example-palette selection is copied to the output domain".
-                    first, first_r = st.wrap_discs(pts[:1], np.array([float(radius)]))
                     st.brush_points = np.concatenate([st.brush_points, first])
                     st.brush_radii = np.concatenate([st.brush_radii, first_r])
                     synth.seed_patch(st, (float(discs[0, 0]), float(discs[0, 1])), random=True)
