@@ -20,8 +20,10 @@ shared, so only the ratios of one run compare).
 ``--structure`` prints only the structure figures of issue 14 points 2 and 4, no
 timings: a hexagonal lattice in flow mode along fields that turn 60 and 90 degrees across
 30 spacings and along curved strokes (share of interior elements with six neighbours at
-the spacing +-15%, largest gap in spacings, elements across the region's edge), and the
-bricks grown with a priority, either kind first (largest gap against the exemplar's).
+the spacing +-15%, largest gap in spacings, elements across the region's edge), a closed
+oval boundary stroke around stones, the hexagonal lattice, two and three sizes (share of
+its inside filled, against the exemplar's own share), and the bricks grown with a
+priority, either kind first (largest gap against the exemplar's).
 """
 
 from __future__ import annotations
@@ -137,6 +139,9 @@ def structure(json_path) -> None:
     th = np.linspace(0, np.pi / 2, 30)
     arcs = [np.c_[r * np.cos(th), r * np.sin(th)] for r in (10 * sp, 25 * sp)]
     lattice_row("flow from two quarter-circle strokes", grow(ex, region=region, mode="flow", flow=flow_field(arcs), rng=1), region)
+    for name in ("stones", "hex_lattice", "two_sizes", "three_sizes"):
+        for seed in (1, 2, 3):
+            bench.row(f"closed oval boundary, {name}, seed {seed}", **boundary_fill(_suite_exemplar(name), seed))
     bricks = _suite_exemplar("bricks")
     x0, y0, x1, y1 = bricks.region.bounds
     w, h = 2 * (x1 - x0), 2 * (y1 - y0)
@@ -151,6 +156,37 @@ def structure(json_path) -> None:
             bench.row(f"bricks, priority first: {first}, seed {seed}", n=len(out), gap_over_exemplar=float(d.max() / ex_gap),
                       points_over_1_3x=int((d > 1.3 * ex_gap).sum()))
     bench.finish()
+
+
+def boundary_fill(ex, seed: int) -> dict:
+    """Issue 14 point 4: grow inside a closed oval stroke (20 x 14 median spacings).
+
+    ``fill``: share of the oval's inside (less half a spacing) with an element centre
+    within one spacing; ``exemplar_fill``: the same share over the exemplar's own frame
+    (less a spacing), which is below 1 where elements are wider than the spacing (two
+    sizes); ``fill_over_exemplar``: their ratio (target >= 0.95); ``across``: elements
+    crossing the stroke.
+    """
+    import shapely
+    from scipy.spatial import cKDTree
+
+    from strew import Region
+    from strew.grow import grow
+
+    sp = float(np.median(_nn(ex.xy)))
+    a, b, cx, cy = 10 * sp, 7 * sp, 15 * sp, 10 * sp
+    t = np.linspace(0, 2 * np.pi, 60)
+    oval = np.c_[cx + a * np.cos(t), cy + b * np.sin(t)]
+    out = grow(ex, region=Region.rectangle(30 * sp, 20 * sp), boundary=[oval], start=(cx, cy), rng=seed)
+    poly = shapely.Polygon(oval)
+    g = np.mgrid[cx - a : cx + a : 80j, cy - b : cy + b : 60j].reshape(2, -1).T
+    g = g[shapely.contains_xy(poly.buffer(-0.5 * sp), g[:, 0], g[:, 1])]
+    fill = float((cKDTree(out.xy).query(g)[0] < sp).mean())
+    x0, y0, x1, y1 = ex.region.bounds
+    ge = np.mgrid[x0 + sp : x1 - sp : 80j, y0 + sp : y1 - sp : 80j].reshape(2, -1).T
+    ex_fill = float((cKDTree(ex.xy).query(ge)[0] < sp).mean())
+    return {"n": len(out), "fill": fill, "exemplar_fill": ex_fill, "fill_over_exemplar": fill / ex_fill,
+            "across": int(shapely.intersects(out.geometry, shapely.LineString(oval)).sum())}
 
 
 def hex_share(xy, spacing: float, inner) -> float:
