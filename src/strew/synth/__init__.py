@@ -42,6 +42,12 @@ child whose parent is paired with an output element is placed from that element,
 not at all when that element is of a smaller class; elements whose parent the frame
 may have cut off are never copied beside a candidate; a larger class whose spacing
 lies beyond the default r-bar's reach sees 1.5 times its spacing (``_palette``).
+Within a size class, a kind at least 3x rarer than the most common (a ring's hub) is an
+anchor: its copies are placed first, the other kinds lean on it as on a parent (a ring
+is copied only with its hub, never around an output element of another kind), a child
+proposed beside an output anchor takes the slot of the exemplar ring that anchor was
+copied as (one phase per ring), and anchors whose children the frame cut off are not
+copied beside a candidate (``_grow.anchors``, ``_prepare.parents``).
 ``context`` elements are frozen, already-synthesized neighbours (``_context``). The bounding radius of §4.1 is the collision bound wherever the
 exemplar gives it; default radii shrink per kind to the exemplar's spacing, and where
 they shrink below 0.9 of the bounding radius (elongated shapes) the shapes themselves
