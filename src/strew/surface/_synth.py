@@ -947,6 +947,11 @@ def _follow(K: Any, prep: Any) -> tuple:
     """The extra argument of ``generate_proposals`` where the synth kernels take one
     (``Prepared.follow``: children placed from their parent's stand-in)."""
     argc = getattr(getattr(K.generate_proposals, "py_func", None), "__code__", None)
+    if argc is not None and argc.co_argcount >= 17 and hasattr(prep, "follow"):
+        # and the children that lean on an anchor of their size class (a ring's tiles)
+        from ..synth._grow import anchor_children
+
+        return (prep.follow, anchor_children(prep)[0])
     if argc is not None and argc.co_argcount >= 16 and hasattr(prep, "follow"):
         return (prep.follow,)
     return ()
