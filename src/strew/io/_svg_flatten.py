@@ -197,13 +197,25 @@ def parse_path(d: str) -> Segments | None:
     pieces = _COMMAND.split(d)
     if _SEPARATORS.fullmatch(pieces[0]) is None:
         return None  # numbers (or anything else) before the first command
+    # Plain data (digits, ".", "e", signs, separators and commands, no "." without a
+    # digit after it): each piece between separators that float() reads is one number of
+    # the scan below (see points_many), so a command's numbers are its text split.
+    plain = _PLAIN_PATH.fullmatch(d) is not None and _LONE_DOT.search(d) is None
     b = _Builder()
     started = False
     for i in range(1, len(pieces), 2):
         cmd, text = pieces[i], pieces[i + 1]
-        if _SEPARATORS.fullmatch(_FLOAT_RE.sub("", text)) is None:
-            return None
-        vals = _FLOAT_RE.findall(text)
+        vals = text.replace(",", " ").split() if plain else None
+        if vals is not None:
+            try:
+                f = [float(v) for v in vals]
+            except ValueError:
+                vals = None
+        if vals is None:
+            if _SEPARATORS.fullmatch(_FLOAT_RE.sub("", text)) is None:
+                return None
+            vals = _FLOAT_RE.findall(text)
+            f = [float(v) for v in vals]
         low = cmd.lower()
         rel = cmd != cmd.upper()
         if low == "z":
@@ -221,7 +233,6 @@ def parse_path(d: str) -> Segments | None:
             for j in range(0, len(vals), 7):
                 if vals[j + 3] not in ("0", "1") or vals[j + 4] not in ("0", "1"):
                     return None
-        f = [float(v) for v in vals]
         for j in range(0, len(f), k):
             ox, oy = (b.cx, b.cy) if rel else (0.0, 0.0)
             if low == "m":
@@ -324,6 +335,7 @@ def shape_segments(tag: str, num: dict[str, float], points: str | None) -> Segme
 
 
 _PLAIN_CHARS = re.compile(r"[0-9.eE+\-, \t\n\r\x0c]*")
+_PLAIN_PATH = re.compile(r"[0-9.eE+\-, \t\n\r\x0cMmZzLlHhVvCcSsQqTtAa]*")
 _LONE_DOT = re.compile(r"\.(?![0-9])")
 
 
