@@ -8,7 +8,10 @@ the rectangle), same seed and size. Tools: the generative brush (synth, Davison 
 Each scene is judged by :func:`strew.metrics.repeat_report` as a tile laid side by side:
 ``wrap_ov`` / ``in_ov`` overlaps across the wrap / inside the tile (repeat: must be 0),
 ``edge_dens`` / ``edge_cov`` the density / coverage of the strips along the tile's edges
-over the interior's (1 is seamless; a tile painted without wrapping thins out there).
+over the interior's (1 is seamless; a tile painted without wrapping thins out there),
+``seam_fid`` the median local fidelity score (against the exemplar) of windows
+straddling the seams over the interior windows', ``seam_fail`` / ``int_fail`` the share
+of seam / interior windows that fail.
 Columns ``r_`` repeat view, ``p_`` plain; figures are means over ``--seeds`` seeds
 (overlaps: the worst seed); ``time_ratio`` is the median over seeds of repeat / plain
 wall time of the painting, from the same run.
@@ -31,7 +34,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 from _runner import Bench, parse_args  # noqa: E402
 
-from strew import metrics  # noqa: E402
+from strew import load, metrics  # noqa: E402
 from strew.studio._session import Session  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -70,14 +73,17 @@ def _paint(tool: str, exemplar: Path, w: float, h: float, radius: float, seed: i
         return dt, s.scene()
 
 
-def _figures(prefix: str, arr: Any, tile: Any) -> dict[str, Any]:
-    r = metrics.repeat_report(arr, tile=tile)
+def _figures(prefix: str, arr: Any, tile: Any, exemplar: Any) -> dict[str, Any]:
+    r = metrics.repeat_report(arr, exemplar, tile=tile)
     return {
         f"{prefix}n": r["count"],
         f"{prefix}wrap_ov": r["overlaps"]["across"],
         f"{prefix}in_ov": r["overlaps"]["inside"],
         f"{prefix}edge_dens": r["density"]["ratio"],
         f"{prefix}edge_cov": r["coverage"]["ratio"],
+        f"{prefix}seam_fid": r["fidelity"]["ratio"],
+        f"{prefix}seam_fail": r["fidelity"]["seam_failing"],
+        f"{prefix}int_fail": r["fidelity"]["interior_failing"],
     }
 
 
@@ -100,7 +106,8 @@ def main() -> int:
                 t_r, tile = _paint(tool, exemplar, w, h, radius, seed, True)
                 t_p, flat = _paint(tool, exemplar, w, h, radius, seed, False)
                 ratios.append(t_r / t_p if t_p > 0 else float("nan"))
-                figs.append({**_figures("r_", tile, (0.0, 0.0, w, h)), **_figures("p_", flat, (0.0, 0.0, w, h))})
+                ex = load(exemplar)
+                figs.append({**_figures("r_", tile, (0.0, 0.0, w, h), ex), **_figures("p_", flat, (0.0, 0.0, w, h), ex)})
             row: dict[str, Any] = {"size": f"{w:g}x{h:g}", "seeds": len(figs), "time_ratio": statistics.median(ratios)}
             for key in figs[0]:
                 vals = [f[key] for f in figs]
