@@ -74,7 +74,8 @@ def validate_mesh(mesh: Any, name: str = "mesh") -> Any:
     ------
     InputError
         Empty, non-finite, degenerate (zero-area faces), non-manifold (an edge on three
-        or more faces) or inconsistently wound meshes; the message names ``name``.
+        or more faces, or a vertex where the boundary touches itself) or inconsistently
+        wound meshes; the message names ``name``.
     """
     v = np.asarray(mesh.vertices, dtype=float)
     f = np.asarray(mesh.faces)
@@ -91,10 +92,17 @@ def validate_mesh(mesh: Any, name: str = "mesh") -> Any:
     if len(bad):
         raise InputError(f"{name}: degenerate: {len(bad)} of {len(f)} faces have zero area (e.g. face {int(bad[0])})")
     edges = np.sort(np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]]), axis=1)
-    _, counts = np.unique(edges, axis=0, return_counts=True)
+    uniq, counts = np.unique(edges, axis=0, return_counts=True)
     nonmanifold = int(np.count_nonzero(counts > 2))
     if nonmanifold:
         raise InputError(f"{name}: non-manifold: {nonmanifold} edges are shared by three or more faces")
+    # a vertex where the boundary touches itself (on more than two boundary edges) is
+    # not manifold either: potpourri3d stops there with an internal assertion
+    per_vertex = np.bincount(uniq[counts == 1].ravel(), minlength=len(v))
+    pinched = np.flatnonzero(per_vertex > 2)
+    if len(pinched):
+        raise InputError(f"{name}: non-manifold: the boundary touches itself at {len(pinched)} vertices "
+                         f"(e.g. vertex {int(pinched[0])}, on {int(per_vertex[pinched[0]])} boundary edges)")
     if not mesh.is_winding_consistent:
         raise InputError(f"{name}: non-manifold or inconsistent winding (neighbouring faces are oriented oppositely)")
     return mesh
