@@ -66,6 +66,10 @@ def test_near_matches_a_scan_after_moves_and_removals(pts, moves, dead, q, state
             and (pos[i, 0] - x) ** 2 + (pos[i, 1] - y) ** 2 <= r * r]
     assert sorted(got) == want
     assert len(set(got)) == len(got)
+    # several queries at once: the same objects in the same order, query by query
+    qs = [(x, y, r), (y, x, 0.5 * r), (x + 1.0, y - 2.0, 2.0 * r)]
+    qi, js = idx.near_many(np.array([a for a, _, _ in qs]), np.array([b for _, b, _ in qs]), np.array([c for _, _, c in qs]), states)
+    assert list(zip(qi.tolist(), js.tolist())) == [(k, j) for k, (a, b, c) in enumerate(qs) for j in idx.near(a, b, c, states)]
     if got:
         assert idx.near(x, y, r, states, limit=1) == got[:1]
         # grid order: by cell column, then row (the order the growth's ties depend on)

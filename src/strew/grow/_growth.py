@@ -65,6 +65,7 @@ LEAN_SPREAD = 1.15
 OBSTACLE = 3
 #: bit masks of the state tuples :meth:`_Grower.near` is asked for
 _STATE_MASKS: dict[tuple[int, ...], int] = {}
+_ELEMENT_OR_OBSTACLE = (1 << ELEMENT) | (1 << OBSTACLE)
 
 
 @dataclass
@@ -720,32 +721,30 @@ class _Grower:
 
     def overlapping_many(self, check: Sequence[int]) -> dict[int, list[int]]:
         """:meth:`overlapping` for several elements, with one vectorised shapely call."""
-        ga: list[int] = []
-        gb: list[int] = []
-        xy = self.xy
-        kinds = self.kind
-        state = self.state
+        out: dict[int, list[int]] = {}
+        ca = np.asarray(check, dtype=np.int64)
+        if len(ca) == 0:
+            return out
+        # the candidates of every element in one query of the index
+        kr = self.kind_radius
+        nk = len(kr)
+        rg = kr[self.kind[ca]] * self.scl[ca]
+        pos = self.pos
+        qi, js = self.index.near_many(pos[ca, 0], pos[ca, 1], rg + self.other_rmax, _ELEMENT_OR_OBSTACLE)
+        gs = ca[qi]
+        keep = js != gs
+        if self.tile is not None:  # not an image of the element itself
+            oo = self.orig_of
+            keep &= np.fromiter((oo[j] != g for j, g in zip(js.tolist(), gs.tolist())), dtype=bool, count=len(js))
         # bounding radius of each element: pairs farther apart than the sum of theirs
         # cannot touch, and skip the shapely test (obstacles have no kind of ours)
-        kr = self.kind_radius.tolist()
-        nk = len(kr)
-        scl = self.scl
-        for g in check:
-            kind = int(kinds[g])
-            x, y = xy[g]
-            rg = kr[kind] * float(scl[g])
-            for j in self.near(x, y, rg + self.other_rmax, (ELEMENT, OBSTACLE)):
-                if j == g or self.orig_of[j] == g:
-                    continue
-                kj = int(kinds[j])
-                if state[j] == ELEMENT and kj < nk:
-                    reach = (rg + kr[kj] * float(scl[j])) * (1.0 + 1e-9)
-                    px, py = xy[j]
-                    if (px - x) ** 2 + (py - y) ** 2 > reach * reach:
-                        continue
-                ga.append(g)
-                gb.append(j)
-        out: dict[int, list[int]] = {}
+        kj = self.kind[js]
+        el = (self.state[js] == ELEMENT) & (kj < nk)
+        reach = (rg[qi] + kr[np.where(el, kj, 0)] * self.scl[js]) * (1.0 + 1e-9)
+        d2 = (pos[js, 0] - pos[gs, 0]) ** 2 + (pos[js, 1] - pos[gs, 1]) ** 2
+        keep &= ~(el & (d2 > reach * reach))
+        ga: list[int] = gs[keep].tolist()
+        gb: list[int] = js[keep].tolist()
         if not ga:
             return out
         geoms = self.geom

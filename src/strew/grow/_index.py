@@ -86,6 +86,56 @@ def _near_kernel(x, y, r, states, limit, h, head, ent, n_ent, cur, n_live, pos, 
 
 
 @numba.njit(cache=True, nogil=True)
+def _near_many_kernel(xs, ys, rs, states, h, head, ent, n_ent, cur, n_live, pos, state, out_q, out_i):  # pragma: no cover - compiled
+    """:func:`_near_kernel` for the queries ``xs, ys, rs`` (m,) in turn, each in its
+    order: the pairs (query, point) in ``out_q, out_i``; their count, or -1 when those
+    are too short (the caller grows them and asks again)."""
+    mask = head.shape[0] - 1
+    k = 0
+    cap = out_q.shape[0]
+    for q in range(xs.shape[0]):
+        x = xs[q]
+        y = ys[q]
+        r = rs[q]
+        r2 = r * r
+        cx0 = math.floor((x - r) / h)
+        cy0 = math.floor((y - r) / h)
+        cx1 = math.floor((x + r) / h)
+        cy1 = math.floor((y + r) / h)
+        if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > n_live:
+            for e in range(n_ent):
+                i = ent[e, 0]
+                if cur[i] != e or ent[e, 1] < cx0 or ent[e, 1] > cx1 or ent[e, 2] < cy0 or ent[e, 2] > cy1:
+                    continue
+                dx = pos[i, 0] - x
+                dy = pos[i, 1] - y
+                if dx * dx + dy * dy <= r2 and ((states >> state[i]) & 1) != 0:
+                    if k >= cap:
+                        return -1
+                    out_q[k] = q
+                    out_i[k] = i
+                    k += 1
+            continue
+        for cx in range(cx0, cx1 + 1):
+            for cy in range(cy0, cy1 + 1):
+                e = head[((cx * _HX) ^ (cy * _HY)) & mask]
+                while e >= 0:
+                    if ent[e, 1] == cx and ent[e, 2] == cy:
+                        i = ent[e, 0]
+                        if cur[i] == e:
+                            dx = pos[i, 0] - x
+                            dy = pos[i, 1] - y
+                            if dx * dx + dy * dy <= r2 and ((states >> state[i]) & 1) != 0:
+                                if k >= cap:
+                                    return -1
+                                out_q[k] = q
+                                out_i[k] = i
+                                k += 1
+                    e = ent[e, 3]
+    return k
+
+
+@numba.njit(cache=True, nogil=True)
 def _cross_kernel(px, py, qx, qy, ia, ib, h, head, ent, ends, alive, pos):  # pragma: no cover - compiled
     """Does segment pq cross, at a point interior to both, a live edge none of whose
     ends is an image of ``ia`` or ``ib`` (the originals' ids)?"""
@@ -289,6 +339,22 @@ class GrowIndex:
         k = _near_kernel(float(x), float(y), float(r), states, limit if limit > 0 else len(self.out), self.cell,
                          pts.head, pts.ent, pts.n, self.cur, self.n_live, self.pos, self.state, self.out)
         return self.out[:k].tolist()
+
+    def near_many(self, xs: np.ndarray, ys: np.ndarray, rs: np.ndarray, states: int) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`near` for queries (m,) at once: the pairs (query index, object), (k,)
+        each, ordered by query and, within one, as :meth:`near` gives them."""
+        pts = self.points
+        xs = np.ascontiguousarray(xs, dtype=np.float64)
+        ys = np.ascontiguousarray(ys, dtype=np.float64)
+        rs = np.ascontiguousarray(rs, dtype=np.float64)
+        cap = max(64, 16 * len(xs))
+        while True:
+            oq = np.empty(cap, dtype=np.int64)
+            oi = np.empty(cap, dtype=np.int64)
+            k = _near_many_kernel(xs, ys, rs, states, self.cell, pts.head, pts.ent, pts.n, self.cur, self.n_live, self.pos, self.state, oq, oi)
+            if k >= 0:
+                return oq[:k], oi[:k]
+            cap *= 4
 
     # -- edges --------------------------------------------------------------------------
     def _index_edge(self, e: int, a: int, b: int) -> None:
