@@ -16,7 +16,8 @@ from pathlib import Path
 import strew
 
 SRC = Path(strew.__file__).resolve().parent
-APP = {"cli", "studio", "demo", "_demos", "tiles", "__main__", ""}
+# _warmup runs every command once to compile the kernels at build time (hatch_build.py): an entry point
+APP = {"cli", "studio", "demo", "_demos", "tiles", "_warmup", "__main__", ""}
 METHODS = {"pack", "grow", "synth", "ornament", "program", "_method", "surface", "_fidelity", "metrics"}
 KERNELS = {"_kernels", "_numba_geometry", "_kernel_cache"}
 
