@@ -93,3 +93,20 @@ def test_cli_grow_on_surface(tmp_path, hexes, capsys):
     assert len(arr) == 80 and surface.is_surface(arr)
     assert main(["grow", str(ex), "--surface", str(mesh), "--spray-radius", "2", "--out", str(out)]) == 2
     assert "--spray-radius" in capsys.readouterr().err
+
+
+def test_open_surface_is_covered(sphere, hexes):
+    # the upper half of the sphere: walks that stop at the boundary are dropped, others
+    # kept (the tracer walks up to 0.08% short of |v| on this mesh; a strict test of
+    # the walked length had dropped every walk, leaving one or two elements)
+    from strew.synth._exemplars import grid
+
+    half = sphere.submesh([np.flatnonzero(sphere.triangles_center[:, 2] > 0)], append=True)
+    hexagonal = 2 * np.pi / ((10 * SCALE) ** 2 * np.sqrt(3) / 2)
+    a = grow(hexes, half, scale=SCALE, rng=1)
+    assert len(a) > 0.7 * hexagonal
+    s = surface.synthesize(grid(n=10), half, scale=0.02, rng=1)
+    assert len(s) > 0.7 * 2 * np.pi / 0.04
+    for arr in (a, s):
+        assert_on_surface(arr, half)
+        assert_no_overlaps(arr)

@@ -127,7 +127,10 @@ class _Surface:
             ends[i] = path[-1]
             if self.has_boundary:
                 walked = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
-                complete[i] = walked >= (1.0 - 1e-6) * float(np.linalg.norm(d))
+                # the tracer walks d projected on the start face's plane (d is tangent to
+                # the interpolated normal), up to 0.08% shorter on a 5k-face sphere: a
+                # walk counts as cut by the boundary when it fell short by over 1%
+                complete[i] = walked >= (1.0 - 1e-2) * float(np.linalg.norm(d))
         f, b, p = self.locate(ends)
         return f, b, p, complete
 
