@@ -207,15 +207,9 @@ def _snap_to_anchor_rings(state: SynthState, ex: np.ndarray, ppos: np.ndarray, v
     h = out_anchor[j]
     o = state.src[h]  # the exemplar anchor it was copied as: its ring's phase
     ok = (d <= reach) & (prep.skind[state.src[h]] == prep.skind[par]) & (cptr[o + 1] > cptr[o])
-    for u in np.flatnonzero(ok):
-        kids = cidx[cptr[o[u]] : cptr[o[u] + 1]]
-        hp = state.pos[h[u]]
-        slots = hp + map_offsets(np.broadcast_to(hp, (len(kids), 2)), prep.pos[kids] - prep.pos[o[u]])
-        dd = np.hypot(*(slots - ppos[t[u]]).T)
-        b = int(np.argmin(dd))
-        if dd[b] <= prep.rc[kids[b]]:
-            ex[t[u]] = kids[b]
-            ppos[t[u]] = slots[b]
+    t, h, o = t[ok], h[ok], o[ok]
+    if len(t):
+        K.snap_to_slots(t, np.ascontiguousarray(state.pos[h]), o, cptr, cidx, prep.pos, prep.rc, ex, ppos)
 
 
 def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visible_only: bool) -> np.ndarray:

@@ -412,6 +412,46 @@ def generate_proposals(seed_pos, q_ptr, q_off, q_kind, q_d, q_rbar, cands, e_ptr
 
 
 @numba.njit(cache=True, nogil=True)
+def snap_to_slots(targets, anchor_pos, anchor_src, cptr, cidx, e_pos, rc, ex, pos):
+    """Move each target proposal to the nearest child slot of its output anchor (in
+    place on ``ex`` and ``pos``), where that slot lies within the child's radius ``rc``.
+
+    Parameters
+    ----------
+    targets : (m,) int
+        Proposals to snap.
+    anchor_pos : (m, 2) float
+        Position of the output anchor each target stands beside.
+    anchor_src : (m,) int
+        The exemplar anchor that output anchor was copied as.
+    cptr, cidx : CSR children of each exemplar element.
+    e_pos : (n_ex, 2) float
+    rc : (n_ex,) float
+    ex : (P,) int
+    pos : (P, 2) float
+    """
+    for u in range(targets.shape[0]):
+        t = targets[u]
+        a = anchor_src[u]
+        best = INF
+        bk = -1
+        bx = 0.0
+        by = 0.0
+        for q in range(cptr[a], cptr[a + 1]):
+            kid = cidx[q]
+            mx, my = map_offset(anchor_pos[u, 0], anchor_pos[u, 1], e_pos[kid, 0] - e_pos[a, 0], e_pos[kid, 1] - e_pos[a, 1])
+            sx = anchor_pos[u, 0] + mx
+            sy = anchor_pos[u, 1] + my
+            d = (sx - pos[t, 0]) ** 2 + (sy - pos[t, 1]) ** 2
+            if d < best:
+                best, bk, bx, by = d, kid, sx, sy
+        if bk >= 0 and best <= rc[bk] * rc[bk]:
+            ex[t] = bk
+            pos[t, 0] = bx
+            pos[t, 1] = by
+
+
+@numba.njit(cache=True, nogil=True)
 def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell, pslot, parent_free, prop_cls):
     """Generation over seeds (Algorithm 1, §5.1), larger elements first.
 
