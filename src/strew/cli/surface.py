@@ -148,7 +148,7 @@ def surface_options() -> list:
                      help="With --surface: orientation field, per-vertex directions (.npy) or a design (.json) "
                           "[default: the smoothest field, Davison §5.7]."),
         click.option("--mesh-scale", "surface_unit", type=float, default=None,
-                     help="With --surface: mesh units per document unit [default: pack 1; synth about 2,000 elements]."),
+                     help="With --surface: mesh units per document unit [default: pack 1; synth and grow about 2,000 elements]."),
         click.option("--element", "surface_elements", multiple=True, metavar="KIND=MESH",
                      help="With --surface: a 3D mesh for a kind in the .glb (repeatable)."),
         click.option("--style", "surface_style", type=click.Choice(["extrude", "decal"]), default="extrude", show_default=True,

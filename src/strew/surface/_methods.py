@@ -66,7 +66,7 @@ def on_surface(
     field : OrientationField or "smoothest"
     unit : float, optional
         Mesh units per document unit: pack scales its shapes by it (default 1); synth
-        scales the exemplar by it (default: about 2,000 elements on the mesh).
+        and grow scale the exemplar by it (default: about 2,000 elements on the mesh).
     values
         The method's parameters (names of its SPEC).
 
