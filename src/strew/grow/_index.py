@@ -19,8 +19,12 @@ leaves the old one stale, and removing it only marks it gone. An edge is listed 
 cell its bounding box covers; a moved endpoint lists it again (stale entries of its old
 cells stay until the table is rebuilt, and cost only a test). Entries in a cell are met in
 the order they were made, the order the dict-of-lists grid this replaces gave, so the
-growth is unchanged (same bytes for the same seed). Queries run in two compiled kernels
-(numba), one for points and one for edges.
+growth is unchanged (same bytes for the same seed). A query walks only the cells any
+entry was made in, so a disc far wider than the pattern costs no more than the pattern.
+
+Three compiled kernels (numba, cached): point queries (one or many), the crossing test,
+and listing an item in the cells of a box. Each first run on a fresh install compiles
+them (issue 16): few and small.
 """
 
 from __future__ import annotations
@@ -43,53 +47,12 @@ def _hash(cx: int, cy: int, mask: int) -> int:
 
 
 @numba.njit(cache=True, nogil=True)
-def _near_kernel(x, y, r, states, limit, h, head, ent, n_ent, cur, n_live, pos, state, out):  # pragma: no cover - compiled
-    """Points within ``r`` of (x, y) whose state bit is set in ``states``, in cell order
-    (x-major) and entry order within a cell; at most ``limit``; their count, in ``out``."""
-    mask = head.shape[0] - 1
-    cx0 = math.floor((x - r) / h)
-    cy0 = math.floor((y - r) / h)
-    cx1 = math.floor((x + r) / h)
-    cy1 = math.floor((y + r) / h)
-    r2 = r * r
-    k = 0
-    if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > n_live:
-        # a disc wider than the points: walk the entries instead of the empty cells
-        for e in range(n_ent):
-            i = ent[e, 0]
-            if cur[i] != e or ent[e, 1] < cx0 or ent[e, 1] > cx1 or ent[e, 2] < cy0 or ent[e, 2] > cy1:
-                continue
-            dx = pos[i, 0] - x
-            dy = pos[i, 1] - y
-            if dx * dx + dy * dy <= r2 and ((states >> state[i]) & 1) != 0:
-                out[k] = i
-                k += 1
-                if k >= limit:
-                    return k
-        return k
-    for cx in range(cx0, cx1 + 1):
-        for cy in range(cy0, cy1 + 1):
-            e = head[((cx * _HX) ^ (cy * _HY)) & mask]
-            while e >= 0:
-                if ent[e, 1] == cx and ent[e, 2] == cy:
-                    i = ent[e, 0]
-                    if cur[i] == e:
-                        dx = pos[i, 0] - x
-                        dy = pos[i, 1] - y
-                        if dx * dx + dy * dy <= r2 and ((states >> state[i]) & 1) != 0:
-                            out[k] = i
-                            k += 1
-                            if k >= limit:
-                                return k
-                e = ent[e, 3]
-    return k
-
-
-@numba.njit(cache=True, nogil=True)
-def _near_many_kernel(xs, ys, rs, states, h, head, ent, n_ent, cur, n_live, pos, state, out_q, out_i):  # pragma: no cover - compiled
-    """:func:`_near_kernel` for the queries ``xs, ys, rs`` (m,) in turn, each in its
-    order: the pairs (query, point) in ``out_q, out_i``; their count, or -1 when those
-    are too short (the caller grows them and asks again)."""
+def _near_kernel(xs, ys, rs, states, limit, h, head, ent, cur, ext, pos, state, out_q, out_i):  # pragma: no cover - compiled
+    """Points within ``rs[q]`` of ``(xs[q], ys[q])`` whose state bit is set in ``states``,
+    for each query q in turn, at most ``limit`` each, in cell order (x-major) and entry
+    order within a cell: the pairs (q, point) in ``out_q, out_i``; their count, or -1
+    when those are too short (the caller grows them and asks again). The cells walked
+    are clipped to ``ext`` (x0, y0, x1, y1), the cells any entry was ever made in."""
     mask = head.shape[0] - 1
     k = 0
     cap = out_q.shape[0]
@@ -98,28 +61,24 @@ def _near_many_kernel(xs, ys, rs, states, h, head, ent, n_ent, cur, n_live, pos,
         y = ys[q]
         r = rs[q]
         r2 = r * r
+        found = 0
+        # (comparisons, not min/max: each builtin is one more function to compile)
         cx0 = math.floor((x - r) / h)
         cy0 = math.floor((y - r) / h)
         cx1 = math.floor((x + r) / h)
         cy1 = math.floor((y + r) / h)
-        if (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > n_live:
-            for e in range(n_ent):
-                i = ent[e, 0]
-                if cur[i] != e or ent[e, 1] < cx0 or ent[e, 1] > cx1 or ent[e, 2] < cy0 or ent[e, 2] > cy1:
-                    continue
-                dx = pos[i, 0] - x
-                dy = pos[i, 1] - y
-                if dx * dx + dy * dy <= r2 and ((states >> state[i]) & 1) != 0:
-                    if k >= cap:
-                        return -1
-                    out_q[k] = q
-                    out_i[k] = i
-                    k += 1
-            continue
+        if cx0 < ext[0]:
+            cx0 = ext[0]
+        if cy0 < ext[1]:
+            cy0 = ext[1]
+        if cx1 > ext[2]:
+            cx1 = ext[2]
+        if cy1 > ext[3]:
+            cy1 = ext[3]
         for cx in range(cx0, cx1 + 1):
             for cy in range(cy0, cy1 + 1):
                 e = head[((cx * _HX) ^ (cy * _HY)) & mask]
-                while e >= 0:
+                while e >= 0 and found < limit:
                     if ent[e, 1] == cx and ent[e, 2] == cy:
                         i = ent[e, 0]
                         if cur[i] == e:
@@ -131,6 +90,7 @@ def _near_many_kernel(xs, ys, rs, states, h, head, ent, n_ent, cur, n_live, pos,
                                 out_q[k] = q
                                 out_i[k] = i
                                 k += 1
+                                found += 1
                     e = ent[e, 3]
     return k
 
@@ -270,6 +230,12 @@ class GrowIndex:
         self.points = _Chains()
         self.cur = np.full(len(state), -1, dtype=np.int64)  # each object's current entry
         self.n_live = 0
+        # the cells any entry was made in (x0, y0, x1, y1): queries walk no cell outside
+        self.ext = np.array([0, 0, -1, -1], dtype=np.int64)
+        self._ext: list[int] | None = None
+        # buffers of single queries: the query, the pairs found
+        self.qx, self.qy, self.qr = np.zeros(1), np.zeros(1), np.zeros(1)
+        self.out_q = np.zeros(len(state), dtype=np.int64)
         self.out = np.zeros(len(state), dtype=np.int64)
         # edges: (end, end, original of the first, original of the second), alive; ids by pair
         self.edge_cells = _Chains()
@@ -288,6 +254,7 @@ class GrowIndex:
             cur = np.full(len(state), -1, dtype=np.int64)
             cur[: len(self.cur)] = self.cur
             self.cur = cur
+            self.out_q = np.zeros(len(state), dtype=np.int64)
             self.out = np.zeros(len(state), dtype=np.int64)
 
     def cell_of(self, x: float, y: float) -> tuple[int, int]:
@@ -302,7 +269,16 @@ class GrowIndex:
         if pts.n >= 2 * len(pts.head):
             self._rebuild_points()
         x, y = float(x), float(y)
-        self.cur[i] = pts.append_box(i, x, y, x, y, self.cell)
+        h = self.cell
+        cx, cy = math.floor(x / h), math.floor(y / h)
+        ext = self._ext
+        if ext is None:
+            self._ext = ext = [cx, cy, cx, cy]
+            self.ext[:] = ext
+        elif cx < ext[0] or cy < ext[1] or cx > ext[2] or cy > ext[3]:
+            ext[:] = [min(cx, ext[0]), min(cy, ext[1]), max(cx, ext[2]), max(cy, ext[3])]
+            self.ext[:] = ext
+        self.cur[i] = pts.append_box(i, x, y, x, y, h)
 
     def remove(self, i: int) -> None:
         """Object ``i`` leaves the point grid (it died); no-op when not in it."""
@@ -336,8 +312,11 @@ class GrowIndex:
         """Objects within ``r`` of (x, y) whose state ``s`` has bit ``1 << s`` in
         ``states``, in grid order; at most ``limit`` (-1: all)."""
         pts = self.points
-        k = _near_kernel(float(x), float(y), float(r), states, limit if limit > 0 else len(self.out), self.cell,
-                         pts.head, pts.ent, pts.n, self.cur, self.n_live, self.pos, self.state, self.out)
+        self.qx[0] = x
+        self.qy[0] = y
+        self.qr[0] = r
+        k = _near_kernel(self.qx, self.qy, self.qr, states, limit if limit > 0 else len(self.out), self.cell,
+                         pts.head, pts.ent, self.cur, self.ext, self.pos, self.state, self.out_q, self.out)
         return self.out[:k].tolist()
 
     def near_many(self, xs: np.ndarray, ys: np.ndarray, rs: np.ndarray, states: int) -> tuple[np.ndarray, np.ndarray]:
@@ -351,7 +330,7 @@ class GrowIndex:
         while True:
             oq = np.empty(cap, dtype=np.int64)
             oi = np.empty(cap, dtype=np.int64)
-            k = _near_many_kernel(xs, ys, rs, states, self.cell, pts.head, pts.ent, pts.n, self.cur, self.n_live, self.pos, self.state, oq, oi)
+            k = _near_kernel(xs, ys, rs, states, len(self.out), self.cell, pts.head, pts.ent, self.cur, self.ext, self.pos, self.state, oq, oi)
             if k >= 0:
                 return oq[:k], oi[:k]
             cap *= 4
