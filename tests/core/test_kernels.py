@@ -233,3 +233,16 @@ def test_poisson_stream_is_determined_by_the_generator_and_in_range(seed):
     a, b = _splitmix(s1, 500), _splitmix(prng.splitmix_seed(np.random.default_rng(seed)), 500)
     assert np.array_equal(a, b)
     assert a.min() >= 0.0 and a.max() < 1.0
+
+
+@given(boxes, st.lists(st.tuples(coord, coord, st.floats(0, 20), st.floats(0, 20)), min_size=1, max_size=5), st.floats(0.5, 30.0))
+def test_box_grid_for_python_callers_matches_brute_force(items, queries, cell):
+    bg = grid.BoxGrid((-10.0, -10.0, 10.0, 10.0), cell)  # boxes reach past it on every side
+    b = np.array([(x, y, x + w, y + h) for x, y, w, h in items], dtype=float).reshape(-1, 4)
+    for i, box in enumerate(b):
+        bg.insert(i, *box)
+    for qx, qy, qw, qh in queries:
+        found = bg.query(qx, qy, qx + qw, qy + qh).tolist()
+        assert len(set(found)) == len(found)
+        meets = (b[:, 0] <= qx + qw) & (b[:, 2] >= qx) & (b[:, 1] <= qy + qh) & (b[:, 3] >= qy)
+        assert set(np.flatnonzero(meets).tolist()) <= set(found)

@@ -40,7 +40,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-__all__ = ["cell_span", "insert_box", "grid_segments", "query_box", "bucket_grid"]
+__all__ = ["cell_span", "insert_box", "grid_segments", "query_box", "bucket_grid", "BoxGrid"]
 
 
 @numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
@@ -185,3 +185,81 @@ def bucket_grid(pts, cell, queries, reverse):  # pragma: no cover - numba
         nxt[j] = head[g]
         head[g] = j
     return x0, y0, cell, nx, ny, head, nxt
+
+
+class BoxGrid:
+    """The incremental grid for Python callers: boxes inserted one at a time, queries
+    answered by the compiled :func:`query_box`.
+
+    Parameters
+    ----------
+    bounds : (x0, y0, x1, y1)
+        The extent the grid covers; boxes beyond it land in its border cells (still
+        found, at the cost of a longer walk there).
+    cell : float
+        The wished cell side; it grows until the grid holds at most ``max_cells`` cells.
+
+    Attributes
+    ----------
+    g : (5,) float
+        ``(x0, y0, cell, cols, rows)``, as the compiled kernels take it.
+    head : (cols * rows,) int64
+    enext, eitem : (capacity,) int64
+        The entries (the first ``ne`` are in use).
+    """
+
+    def __init__(self, bounds: tuple[float, float, float, float], cell: float, max_cells: int = 1 << 20) -> None:
+        x0, y0, x1, y1 = (float(v) for v in bounds)
+        cell = float(cell)
+        w, h = max(x1 - x0, cell), max(y1 - y0, cell)
+        if (w / cell + 1) * (h / cell + 1) > max_cells:
+            cell = max(cell, float(np.sqrt(w * h / max_cells)) * 1.01)
+        self.cols = int(w / cell) + 1
+        self.rows = int(h / cell) + 1
+        self.x0, self.y0, self.cell = x0, y0, cell
+        self.g = np.array([x0, y0, cell, self.cols, self.rows], dtype=float)
+        self.head = np.full(self.cols * self.rows, -1, dtype=np.int64)
+        self.enext = np.empty(1024, dtype=np.int64)
+        self.eitem = np.empty(1024, dtype=np.int64)
+        self.ne = 0
+        self.stamp = np.full(256, -1, dtype=np.int64)
+        self.out = np.empty(256, dtype=np.int64)
+        self.qid = 0
+
+    def span(self, xmin: float, ymin: float, xmax: float, ymax: float) -> tuple[int, int, int, int]:
+        """:func:`cell_span` in Python: cells ``(c0, c1, q0, q1)``, inclusive, clamped."""
+        x0, y0, c, cols, rows = self.x0, self.y0, self.cell, self.cols, self.rows
+        return (min(max(int((xmin - x0) / c), 0), cols - 1), max(min(int((xmax - x0) / c), cols - 1), 0),
+                min(max(int((ymin - y0) / c), 0), rows - 1), max(min(int((ymax - y0) / c), rows - 1), 0))
+
+    def insert(self, item: int, xmin: float, ymin: float, xmax: float, ymax: float) -> None:
+        """List ``item`` (an int >= 0) in the cells its box touches (:func:`insert_box`)."""
+        c0, c1, q0, q1 = self.span(xmin, ymin, xmax, ymax)
+        need = self.ne + (c1 - c0 + 1) * (q1 - q0 + 1)
+        if need > len(self.enext):
+            size = max(2 * len(self.enext), need)
+            for name in ("enext", "eitem"):
+                a = getattr(self, name)
+                b = np.empty(size, dtype=np.int64)
+                b[: self.ne] = a[: self.ne]
+                setattr(self, name, b)
+        if item >= len(self.stamp):
+            size = max(2 * len(self.stamp), item + 1)
+            self.stamp = np.concatenate([self.stamp, np.full(size - len(self.stamp), -1, dtype=np.int64)])
+            self.out = np.empty(size, dtype=np.int64)
+        head, enext, eitem, ne, cols = self.head, self.enext, self.eitem, self.ne, self.cols
+        for q in range(q0, q1 + 1):
+            for c in range(c0, c1 + 1):
+                cell = q * cols + c
+                enext[ne] = head[cell]
+                eitem[ne] = item
+                head[cell] = ne
+                ne += 1
+        self.ne = ne
+
+    def query(self, xmin: float, ymin: float, xmax: float, ymax: float) -> np.ndarray:
+        """Items listed in the cells a box touches, each once, in no particular order
+        (a view, valid until the next call): a superset of the items whose boxes meet it."""
+        self.qid += 1
+        m = query_box(self.g, self.head, self.enext, self.eitem, self.stamp, self.qid, xmin, ymin, xmax, ymax, self.out)
+        return self.out[:m]

@@ -36,6 +36,7 @@ import shapely
 from scipy import ndimage
 
 from .._errors import InputError
+from .._kernels.grid import BoxGrid
 from .._progress import Reporter
 from .._rng import as_rng
 from ..region import Region
@@ -98,11 +99,15 @@ class _Image:
 class _Placed:
     """Placed proxies: bounding circles in growable arrays, exact geometry on demand."""
 
-    def __init__(self, bucket: float = 8.0) -> None:
+    def __init__(self, bucket: float = 8.0, bounds: tuple[float, float, float, float] | None = None) -> None:
         self.n = 0
-        # a uniform bucket grid over bounding boxes answers small queries without a scan
+        # a uniform grid over bounding boxes answers small queries without a scan: the
+        # shared incremental grid (strew._kernels.grid, issue 15 point 5) over ``bounds``
+        # (proxies beyond them, such as wrapped images, land in its border cells)
         self.bucket = float(bucket)
-        self.buckets: dict[tuple[int, int], list[int]] = {}
+        if bounds is None:
+            bounds = (0.0, 0.0, 64.0 * self.bucket, 64.0 * self.bucket)
+        self.grid = BoxGrid(bounds, self.bucket)
         cap = 256
         self.bx = np.empty(cap)
         self.by = np.empty(cap)
@@ -131,10 +136,7 @@ class _Placed:
         self.ox[i], self.oy[i] = dx, dy
         self.proxies.append(proxy)
         self.n += 1
-        b = self.bucket
-        for bi in range(int(math.floor((cx - r) / b)), int(math.floor((cx + r) / b)) + 1):
-            for bj in range(int(math.floor((cy - r) / b)), int(math.floor((cy + r) / b)) + 1):
-                self.buckets.setdefault((bi, bj), []).append(i)
+        self.grid.insert(i, cx - r, cy - r, cx + r, cy + r)
 
     def segments(self, i: int) -> np.ndarray:
         """(m, 4) outline segments of proxy ``i`` (closed outlines include the closing edge)."""
@@ -157,16 +159,10 @@ class _Placed:
         # a scan of every proxy made each query linear in the number placed). Both give
         # the same sorted indices.
         if (i1 - i0 + 1) * (j1 - j0 + 1) * 64 <= n:
-            found: list[int] = []
-            get = self.buckets.get
-            for bi in range(i0, i1 + 1):
-                for bj in range(j0, j1 + 1):
-                    lst = get((bi, bj))
-                    if lst:
-                        found.extend(lst)
-            if not found:
+            found = self.grid.query(cx - reach, cy - reach, cx + reach, cy + reach)
+            if not len(found):
                 return np.zeros(0, np.int64)
-            idx = np.unique(np.asarray(found, dtype=np.int64))
+            idx = np.sort(found)
             dx = self.bx[idx] - cx
             dy = self.by[idx] - cy
             lim = self.br[idx] + reach
@@ -351,7 +347,7 @@ class _Grower:
         self.max_elements = max_elements
         self.rep = reporter
         self.elements: list[Element] = []
-        self.placed = _Placed(bucket=max(4.0 * min_radius, 1e-3))
+        self.placed = _Placed(bucket=max(4.0 * min_radius, 1e-3), bounds=region.bounds)
         self.rules_by_parent: dict[str, list] = {}
         for r in pattern.rules:
             self.rules_by_parent.setdefault(r.parent, []).append(r)
