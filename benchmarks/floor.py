@@ -9,7 +9,22 @@ compiles (or loads) its kernels on a small warm-up first, then times the case wi
 not wall time). Printed: the median over workers of those CPU seconds for both, their ratio (new / base; target <= 1.10) and the element
 counts (equal when the outputs are identical).
 
-    python benchmarks/floor.py --base /tmp/base/src [--repeat 3] [--only pack:hook,ornament:dots]
+    python benchmarks/floor.py --base /tmp/base/src [--repeat 3] [--inner 5] [--only pack:hook,ornament:dots]
+
+Figures against 26be9c7 (the session start, before strew._kernels), load average about 9,
+CPU ratio new / base (benchmarks/results/floor.json); every count equal:
+
+================  =====  ================  =====
+case              ratio  case              ratio
+================  =====  ================  =====
+pack:leaf         0.99   pack:periodic     1.07
+pack:hook         0.97   poisson           1.01
+pack:concave3     0.90   ornament:dots     0.91
+pack:stones-fit   1.02   ornament:flowers  0.95
+================  =====  ================  =====
+
+(pack and poisson ``--repeat 3 --inner 5``; ornament ``--repeat 4 --inner 1``, after it
+moved to the shared incremental grid.)
 """
 
 from __future__ import annotations
