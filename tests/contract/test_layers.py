@@ -19,7 +19,7 @@ SRC = Path(strew.__file__).resolve().parent
 # _warmup runs every command once to compile the kernels at build time (hatch_build.py): an entry point
 APP = {"cli", "studio", "demo", "_demos", "tiles", "_warmup", "__main__", ""}
 METHODS = {"pack", "grow", "synth", "ornament", "program", "_method", "surface", "_fidelity", "metrics"}
-KERNELS = {"_kernels", "_numba_geometry", "_kernel_cache"}
+KERNELS = {"_kernels", "_kernel_cache"}
 
 # Known upward imports, each deferred into a function (no import-time circle; see
 # test_importing_the_core_type_loads_no_io): Arrangement's display conveniences
