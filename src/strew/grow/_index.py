@@ -22,9 +22,10 @@ the order they were made, the order the dict-of-lists grid this replaces gave, s
 growth is unchanged (same bytes for the same seed). A query walks only the cells any
 entry was made in, so a disc far wider than the pattern costs no more than the pattern.
 
-Three compiled kernels (numba, cached): point queries (one or many), the crossing test,
-and listing an item in the cells of a box. Each first run on a fresh install compiles
-them (issue 16): few and small.
+Two compiled kernels (numba, cached): point queries (one or many) and the crossing test.
+Each first run on a fresh install compiles them (issue 16), so they are few and small;
+listing an item in the cells of its box stays in Python (a kernel for it cost 0.46 s of
+CPU on a cold ``strew grow`` and gained nothing measurable).
 """
 
 from __future__ import annotations
@@ -132,34 +133,6 @@ def _cross_kernel(px, py, qx, qy, ia, ib, h, head, ent, ends, alive, pos):  # pr
     return False
 
 
-@numba.njit(cache=True, nogil=True)
-def _append_box(item, x0, y0, x1, y1, h, head, tail, ent, n):  # pragma: no cover - compiled
-    """List ``item`` in every cell the box (x0, y0)-(x1, y1) covers, at the ends of the
-    chains; the new entry count, or -1 (nothing written) when ``ent`` is too short."""
-    mask = head.shape[0] - 1
-    cx0 = math.floor(x0 / h)
-    cy0 = math.floor(y0 / h)
-    cx1 = math.floor(x1 / h)
-    cy1 = math.floor(y1 / h)
-    if n + (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > ent.shape[0]:
-        return -1
-    for cx in range(cx0, cx1 + 1):
-        for cy in range(cy0, cy1 + 1):
-            hh = ((cx * _HX) ^ (cy * _HY)) & mask
-            ent[n, 0] = item
-            ent[n, 1] = cx
-            ent[n, 2] = cy
-            ent[n, 3] = -1
-            t = tail[hh]
-            if t >= 0:
-                ent[t, 3] = n
-            else:
-                head[hh] = n
-            tail[hh] = n
-            n += 1
-    return n
-
-
 class _Chains:
     """Entries (item, cell) in a hash table of chains over grid cells: ``ent`` (cap, 4)
     holds each entry's item, cell x, cell y and the next entry of its chain (-1: last)."""
@@ -171,16 +144,34 @@ class _Chains:
         self.n = 0
 
     def append_box(self, item: int, x0: float, y0: float, x1: float, y1: float, h: float) -> int:
-        """List ``item`` in the cells of a box (x0 <= x1, y0 <= y1); its first entry."""
-        e = self.n
-        while True:
-            n = _append_box(item, x0, y0, x1, y1, h, self.head, self.tail, self.ent, e)
-            if n >= 0:
-                self.n = n
-                return e
-            grown = np.full((2 * len(self.ent) + int((x1 - x0) / h + 2) * int((y1 - y0) / h + 2), 4), -1, dtype=np.int64)
-            grown[:e] = self.ent[:e]
-            self.ent = grown
+        """List ``item`` in the cells of a box (x0 <= x1, y0 <= y1); its first entry.
+
+        In Python, not compiled: a box covers one to four cells, and a kernel would cost
+        its compilation on every fresh install (issue 16) for about the same speed."""
+        first = e = self.n
+        cx0, cx1 = math.floor(x0 / h), math.floor(x1 / h)
+        cy0, cy1 = math.floor(y0 / h), math.floor(y1 / h)
+        need = e + (cx1 - cx0 + 1) * (cy1 - cy0 + 1)
+        ent = self.ent
+        if need > len(ent):
+            ent = np.full((2 * need, 4), -1, dtype=np.int64)
+            ent[:e] = self.ent[:e]
+            self.ent = ent
+        head, tail = self.head, self.tail
+        mask = len(head) - 1
+        for cx in range(cx0, cx1 + 1):
+            for cy in range(cy0, cy1 + 1):
+                hh = ((cx * _HX) ^ (cy * _HY)) & mask
+                ent[e] = (item, cx, cy, -1)
+                t = tail[hh]
+                if t >= 0:
+                    ent[t, 3] = e
+                else:
+                    head[hh] = e
+                tail[hh] = e
+                e += 1
+        self.n = e
+        return first
 
     def rebuild(self, keep: np.ndarray, table: int) -> np.ndarray:
         """Keep the entries ``keep`` (bool, (n,)), in order, in a table of ``table``
