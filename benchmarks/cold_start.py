@@ -13,8 +13,8 @@ start-up is the same for both and cancels out of the ratio.
 
 ``--prefill warmup`` starts every case's cache as a copy of what ``python -m
 strew._warmup`` compiles (the caches a wheel built by ``hatch_build.py`` ships, without
-building one); ``--prefill installed`` copies the cache files an installed strew holds
-in its ``__pycache__`` folders (``--python`` names that environment's interpreter), laid
+building one); ``--prefill installed`` copies the cache files an installed strew's wheel
+shipped in its ``__pycache__`` folders (those its RECORD lists) (``--python`` names that environment's interpreter), laid
 out where ``NUMBA_CACHE_DIR`` makes numba look, so each case starts from the state of a
 fresh ``pip install .``. The default, ``none``, is a fresh install without shipped
 caches.
@@ -156,7 +156,14 @@ def run_once(case: dict, cache: str, python: str = sys.executable) -> dict:
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
-INSTALLED = "import pathlib, strew; print(pathlib.Path(strew.__file__).resolve().parent)"
+# the numba cache files an installed strew's wheel shipped (its RECORD: not those that
+# later runs compiled into the same __pycache__ folders)
+INSTALLED = (
+    "import importlib.metadata as m\n"
+    "for f in m.files('strew'):\n"
+    "    if f.suffix in ('.nbi', '.nbc'):\n"
+    "        print(f.locate().resolve())\n"
+)
 
 
 def prefill_warmup(template: Path, python: str) -> dict:
@@ -179,18 +186,14 @@ def prefill_installed(template: Path, python: str) -> int:
     into ``template``, where ``NUMBA_CACHE_DIR=template`` makes numba look for them
     (``<folder name>_<sha1 of the folder's path>``, numba's user-provided locator);
     returns the number of files copied."""
-    pkg = Path(subprocess.run([python, "-c", INSTALLED], capture_output=True, text=True, check=True).stdout.strip())
+    listed = subprocess.run([python, "-c", INSTALLED], capture_output=True, text=True, check=True).stdout.split("\n")
     n = 0
-    for d in sorted(pkg.rglob("__pycache__")):
-        files = [f for f in d.iterdir() if f.suffix in (".nbi", ".nbc")]
-        if not files:
-            continue
-        src = str(d.parent)
-        dest = template / f"{d.parent.name}_{hashlib.sha1(src.encode()).hexdigest()}"
+    for f in sorted(Path(p) for p in listed if p.strip()):
+        src = str(f.parent.parent)  # <package folder>/__pycache__/<file>
+        dest = template / f"{f.parent.parent.name}_{hashlib.sha1(src.encode()).hexdigest()}"
         dest.mkdir(parents=True, exist_ok=True)
-        for f in files:
-            shutil.copy2(f, dest / f.name)
-            n += 1
+        shutil.copy2(f, dest / f.name)
+        n += 1
     return n
 
 
