@@ -25,6 +25,33 @@ took longest (numba's ``numba:compile`` events, inclusive of the kernels they ca
 
 The first run is never hidden behind a warm-up: it is the figure this script exists for.
 
+Figures with the kernels compiled at build time (issue 16, ``hatch_build.py``): a fresh
+venv, ``pip install .`` of 35beb59, every case run with ``--python VENV/bin/python``,
+``--prefill none`` (no shipped caches: before) and ``--prefill installed`` (the wheel's
+caches: after), load 10-13 on the shared 2-core machine; CPU seconds of the process:
+
+==================  =====================  ==================  ============  ==================
+case                first CPU s            second CPU s        kernels       target (CPU) met
+                    before -> after        before -> after     compiled      before -> after
+==================  =====================  ==================  ============  ==================
+pack fill-gap       23.4 -> 1.17           1.07 -> 1.18        37 -> 0       no -> yes
+pack naive          0.57 -> 0.67           0.58 -> 0.68        0 -> 0        yes -> yes
+synth fill          19.9 -> 1.33           1.42 -> 1.47        35 -> 0       no -> yes
+grow                4.25 -> 1.35           1.39 -> 1.37        6 -> 0        no -> yes
+ornament dots       8.85 -> 1.66           1.72 -> 1.57        18 -> 0       no -> yes
+ornament flowers    9.42 -> 2.15           2.22 -> 2.08        19 -> 0       no -> yes
+ornament spirals    10.5 -> 3.38           3.55 -> 3.46        19 -> 0       no -> yes
+ornament hierarchy  11.7 -> 3.19           3.31 -> 3.27        21 -> 0       no -> yes
+run                 3.30 -> 1.42           1.51 -> 1.17        7 -> 0        yes -> yes
+studio brush        20.3 -> 1.70           1.86 -> 1.79        35 -> 0       no -> yes
+studio spray        9.37 -> 1.61           1.51 -> 1.63        21 -> 0       no -> yes
+==================  =====================  ==================  ============  ==================
+
+After, every first run is within 0.90-1.21x its second run in CPU (wall 0.87-1.43x,
+except pack naive 2.8x: 22.5 vs 8.0 s wall for 0.67 s of CPU, the load). ``strew demo``
+compiles nothing either (70.7 s CPU first, 70.9 s second). The build's warm-up (``python
+-m strew._warmup``, 25 cases) costs about 85 s of CPU once, at ``pip install .``.
+
 Figures of ``python benchmarks/cold_start.py --case 'pack fill-gap' --case 'synth fill'
 --case grow --case run --case 'studio brush'``, at 574794a (before) and with the issue 16
 compile-time rewrites of this session (after), each tree run on its own in a git worktree
