@@ -152,11 +152,19 @@ def _positive_int(value: Any, name: str) -> int:
     return v
 
 
+# pixels of a distance field that runs Step 2's rounds as the paper's (see _fill_gap)
+REF_PIXELS = 400_000
+# the default field is coarsened above this many pixels (issue 19.6: was REF_PIXELS; a
+# coarser field prunes fewer poses, so the cost per element grew with the region:
+# exponent 1.24-1.39 from 10^4 to 10^5 elements, benchmarks/pack_scaling.py)
+MAX_PIXELS = 4_000_000
+
+
 def _default_cell(kinds: list[ExclusiveRegion], region: Region) -> float:
     """Pixel side of the distance field: a sixth of the smallest kind's size at its mean
-    scale, coarsened so that the raster stays under about 400,000 pixels."""
+    scale, coarsened so that the raster stays under about MAX_PIXELS pixels."""
     size = min(np.sqrt(k.area) * 0.5 * (k.scale[0] + k.scale[1]) for k in kinds)
-    return float(max(size / 6.0, np.sqrt(region.area / 400_000.0)))
+    return float(max(size / 6.0, np.sqrt(region.area / MAX_PIXELS)))
 
 
 def pack(
@@ -533,9 +541,20 @@ def _fill_gap(
     # gap-fitting kind choice: no share may run ahead of its target by more than
     # tolerance / (K - 1), so that none falls behind by more than the tolerance
     k_tol = tolerance / max(int(np.count_nonzero(target)) - 1, 1) if target is not None else 0.0
+    # Departure from §4.2 (issue 19.6): every round draws Q from the whole field, a cost
+    # that grows with its area, while it tries P candidates; with a fixed P the number
+    # of rounds grows with the area too, so the cost went as area**2. A field of k x
+    # REF_PIXELS pixels tries k P candidates per round, as k fields of REF_PIXELS side by
+    # side would, so that the rounds follow n / area and the cost n (10^4 to 10^5
+    # elements: exponent 0.99 at a fixed cell). The stop stays at max_failures
+    # consecutive cancellations (scaled by k, the trials per element doubled at 3x the
+    # area; unscaled, the density stays within 1% of a small field's). Fields up to
+    # REF_PIXELS are unchanged bit for bit.
+    k_area = max(1.0, field.d.size / REF_PIXELS)
+    p_round = int(round(p_count * k_area))
     status = RUNNING
     while status == RUNNING:
-        status = engine.run(gen, field, _ROUNDS_PER_TICK, placer.max_failures, p_count, power, fits, suppress, sup_r,
+        status = engine.run(gen, field, _ROUNDS_PER_TICK, placer.max_failures, p_round, power, fits, suppress, sup_r,
                             target, k_tol, scale_fit)
         rep.tick(len(engine), message=f"{len(engine)} placed, {engine.consecutive} consecutive cancellations")
     placer.trials += engine.trials
