@@ -115,6 +115,9 @@ MESSAGE_TYPES = (
     "settings",
     "clip",
     "layers",
+    "load_mesh",  # the 3D view (studio/_surface3d.py)
+    "brush3d",
+    "clear3d",
 )
 
 

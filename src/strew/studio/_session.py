@@ -52,6 +52,7 @@ from ._common import (
 from ._dispatch import DispatchMixin
 from ._palette import PaletteMixin
 from ._scene import SceneMixin
+from ._surface3d import Surface3DMixin
 from ._tools import ToolsMixin
 
 __all__ = ["Session", "PALETTE_FILE", "SCENE_FILE", "TOOLS", "PRELOAD_EXAMPLE", "GROW_MODES", "MAX_HISTORY", "MAX_SCENE",
@@ -71,7 +72,7 @@ STUDIO_MAX_PATHS = 5_000
 BRUSH_ITERATIONS = 2
 
 
-class Session(DispatchMixin, ToolsMixin, PaletteMixin, SceneMixin):
+class Session(DispatchMixin, ToolsMixin, PaletteMixin, SceneMixin, Surface3DMixin):
     """State of one studio: palette, selection, scene, strokes, region and history.
 
     Its parts live in one module each: messages, history and files
