@@ -36,7 +36,7 @@ def test_load_mesh_sends_vertices_and_faces(painted):
     assert len(V) == len(s.mesh3d.vertices) and len(F) == len(s.mesh3d.faces)
     assert F.min() == 0 and F.max() == len(V) - 1
     assert mesh["radius"] == pytest.approx(np.linalg.norm(V - V.mean(axis=0), axis=1).max(), rel=1e-6)
-    assert replies[1] == {"type": "elements3d", "count": 0, "positions": [], "normals": [], "tangents": [], "scales": [], "kinds": [], "names": []}
+    assert replies[1] == {"type": "elements3d", "count": 0, "positions": [], "normals": [], "tangents": [], "scales": [], "radii": [], "kinds": [], "names": []}
 
 
 def test_brush_paints_on_the_surface_without_overlaps(painted):
@@ -62,7 +62,7 @@ def test_brush_paints_on_the_surface_without_overlaps(painted):
 
     arr = st.to_arrangement()
     R = np.asarray(arr["radius"])
-    assert len(R) == el["count"] and (R > 0).all()
+    assert len(R) == el["count"] and (R > 0).all() and np.allclose(el["radii"], R, atol=1e-5)
     D = squareform(pdist(P))
     np.fill_diagonal(D, np.inf)
     assert (D - (R[:, None] + R[None, :]) > -1e-9).all()

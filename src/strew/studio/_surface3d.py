@@ -12,7 +12,8 @@ Messages
     (V, 3), faces (F, 3), radius) and ``elements3d``.
 ``brush3d`` ``{points: [[x, y, z], ...], radius}``
     Paint along the points (on or near the surface); replies ``elements3d``: positions,
-    normals, tangents (m, 3), scales (m,), kinds (m,) indices into ``names``.
+    normals, tangents (m, 3), scales, bounding-sphere radii (m,), kinds (m,) indices
+    into ``names``.
 ``clear3d``
     Remove every element on the surface.
 """
@@ -100,7 +101,7 @@ class Surface3DMixin:
     def elements3d_message(self) -> dict[str, Any]:
         """The elements on the surface as flat arrays for instanced drawing."""
         empty: dict[str, Any] = {"type": "elements3d", "count": 0, "positions": [], "normals": [], "tangents": [],
-                                 "scales": [], "kinds": [], "names": []}
+                                 "scales": [], "radii": [], "kinds": [], "names": []}
         st = self.surf3d
         if st is None or st.n == 0:
             return empty
@@ -109,7 +110,8 @@ class Surface3DMixin:
         arr = st.to_arrangement()
         p, n, t, _, s = element_frames(arr)
         return {"type": "elements3d", "count": len(arr), "positions": np.round(p, 6).ravel(), "normals": np.round(n, 5).ravel(),
-                "tangents": np.round(t, 5).ravel(), "scales": np.round(s, 6), "kinds": np.asarray(arr.kind, np.int64),
+                "tangents": np.round(t, 5).ravel(), "scales": np.round(s, 6),
+                "radii": np.round(np.asarray(arr["radius"], float), 6), "kinds": np.asarray(arr.kind, np.int64),
                 "names": list(arr.kinds)}
 
 

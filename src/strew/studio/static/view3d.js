@@ -1,7 +1,7 @@
 // The studio's 3D view (issue 20.7): a mesh with orbit, pan and zoom; the brush picks
 // points on it by raycasting and sends them; the server paints (strew.surface). This
 // file only draws and sends JSON: elements arrive as positions, normals, tangents,
-// scales and kinds, drawn as instanced discs in their tangent frames.
+// scales, bounding radii and kinds, drawn as instanced discs in their tangent frames.
 import * as THREE from "three";
 import { OrbitControls } from "/static/vendor/three/OrbitControls.js";
 
@@ -77,7 +77,7 @@ const handlers = {
     const M = new THREE.Matrix4(), t = new THREE.Vector3(), n = new THREE.Vector3(), b = new THREE.Vector3();
     const col = new THREE.Color();
     for (let i = 0; i < m.count; i++) {
-      const s = m.scales[i], j = 3 * i;
+      const s = m.radii[i], j = 3 * i; // a disc of the element's bounding radius
       t.fromArray(m.tangents, j); n.fromArray(m.normals, j); b.crossVectors(n, t);
       M.makeBasis(t.multiplyScalar(s), b.multiplyScalar(s), n.multiplyScalar(s));
       M.setPosition(m.positions[j], m.positions[j + 1], m.positions[j + 2]);
