@@ -85,3 +85,30 @@ def test_clear_and_bad_messages(tmp_path):
         s.handle({"type": "brush3d", "points": [[60, 0, 0]], "radius": -1})
     assert s.handle({"type": "brush3d", "points": [[60, 0, 0]], "radius": 10})[0]["count"] > 0
     assert s.handle({"type": "clear3d"})[0]["count"] == 0
+
+
+def test_cli_surface_opens_the_3d_view(tmp_path, monkeypatch, capsys):
+    """``strew studio --surface MESH`` opens the 3D view on a mesh of the project (or an
+    example mesh); a mesh that is missing or outside the project is an exit 2."""
+    import shutil
+
+    import strew.studio
+    from strew._resources import examples_dir
+    from strew.cli import main
+
+    pytest.importorskip("fastapi")
+    seen = {}
+    monkeypatch.setattr(strew.studio, "serve", lambda root, **kw: seen.update(kw))
+    shutil.copy(examples_dir() / "meshes" / "sphere.ply", tmp_path / "ball.ply")
+    def run(mesh):
+        return main(["studio", str(tmp_path), "--no-browser", "--port", "0", "--surface", mesh])
+
+    assert run("ball.ply") == 0
+    assert seen["page"] == "static/view3d.html?mesh=ball.ply"
+    assert run("examples/meshes/sphere.ply") == 0
+    assert seen["page"] == "static/view3d.html?mesh=examples/meshes/sphere.ply"
+    capsys.readouterr()
+    for bad in ("missing.ply", "../outside.ply", str(examples_dir() / "meshes" / "sphere.ply")):
+        seen.clear()
+        assert run(bad) == 2, bad
+        assert "--surface" in capsys.readouterr().err and not seen

@@ -57,6 +57,7 @@ def serve(
     open_browser: bool = True,
     seed: int = 0,
     on_ready: Any = None,
+    page: str = "",
 ) -> None:
     """Run the studio until interrupted.
 
@@ -75,6 +76,9 @@ def serve(
         Seed of the session's random generator.
     on_ready : callable, optional
         Called with the URL once the server listens.
+    page : str
+        Path and query appended to the URL that is shown and opened, e.g. the 3D view's
+        ``static/view3d.html?mesh=...``.
     """
     require_studio()
     import threading
@@ -100,7 +104,7 @@ def serve(
             threading.Event().wait(0.05)
         bound = server.servers[0].sockets[0].getsockname()[1] if server.servers else port
         shown = f"[{host}]" if ":" in host else host
-        url = f"http://{shown}:{bound}/"
+        url = f"http://{shown}:{bound}/{page}"
         print(f"strew studio on {url} (project {Path(project_dir).resolve()}); Ctrl-C stops it", flush=True)
         if on_ready is not None:
             on_ready(url)
