@@ -55,12 +55,24 @@ def test_paint_a_stroke_on_the_sphere(tmp_path):
             pg.mouse.move(260 + 10 * i, 250 + 3 * i)
         pg.mouse.up()
         pg.keyboard.up("Shift")
-        pg.wait_for_function("window.strew3d.count > 0", timeout=10_000)
+        # every brush3d segment sent is answered (elements3d replies after the mesh's one)
+        pg.wait_for_function("window.strew3d.sent > 0 && window.strew3d.replies === window.strew3d.sent + 1", timeout=10_000)
         count = pg.evaluate("window.strew3d.count")
         instances = pg.evaluate("window.strew3d.discs ? window.strew3d.discs.count : 0")
         pg.wait_for_timeout(300)
         shot = _png(pg.screenshot())
+        # a plain drag orbits the camera (about the mesh's centre) and paints nothing
+        before = pg.evaluate("window.strew3d.camera.position.toArray()")
+        pg.mouse.move(320, 400)
+        pg.mouse.down()
+        pg.mouse.move(420, 380, steps=5)
+        pg.mouse.up()
+        pg.wait_for_timeout(200)
+        after = pg.evaluate("window.strew3d.camera.position.toArray()")
+        still = pg.evaluate("window.strew3d.count")
         b.close()
+    assert np.linalg.norm(np.subtract(after, before)) > 1 and still == count
+    assert abs(np.linalg.norm(after) - np.linalg.norm(before)) < 1e-3 * np.linalg.norm(before)  # an orbit keeps the distance
     assert not errors, errors
     assert count >= 5 and instances == count
     # elements drawn: pixels changed near the stroke, none far from it

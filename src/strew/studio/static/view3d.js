@@ -20,7 +20,7 @@ camera.add(sun);
 scene.add(camera);
 
 const PALETTE = [0xe07a5f, 0x81b29a, 0xf2cc8f, 0x3d85c6, 0xc27ba0, 0x9fc5e8, 0xb6d7a8, 0xffd966];
-const state = { mesh: null, discs: null, radius: 1, count: 0, painting: false, stroke: [] };
+const state = { camera, sent: 0, replies: 0, mesh: null, discs: null, radius: 1, count: 0, painting: false, stroke: [] };
 window.strew3d = state; // read by the browser tests
 
 function resize() {
@@ -69,6 +69,7 @@ const handlers = {
   elements3d(m) {
     if (state.discs) { scene.remove(state.discs); state.discs.geometry.dispose(); state.discs = null; }
     state.count = m.count;
+    state.replies += 1;
     if (!m.count) return;
     // a unit disc in the xy plane, drawn a little above the surface along its normal
     const geo = new THREE.CylinderGeometry(1, 1, 0.15, 16).rotateX(Math.PI / 2).translate(0, 0, 0.1);
@@ -103,7 +104,7 @@ function pick(ev) {
 }
 function brushRadius() { return Number(document.getElementById("radius").value) * state.radius; }
 function flush() {
-  if (state.stroke.length) send({ type: "brush3d", points: state.stroke, radius: brushRadius() });
+  if (state.stroke.length) { send({ type: "brush3d", points: state.stroke, radius: brushRadius() }); state.sent += 1; }
   state.stroke = state.stroke.slice(-1);
 }
 canvas.addEventListener("pointerdown", (ev) => {
