@@ -288,7 +288,7 @@ def out_option(required: bool = True) -> Callable[[Callable[..., Any]], Callable
         multiple=True,
         required=required,
         type=click.Path(dir_okay=False, allow_dash=True),
-        help="Output file; .json, .svg or .png (repeatable); - writes standard output (with --format).",
+        help="Output file; .json, .svg, .png or .glb (3D scene: the elements on the plane z = 0) (repeatable); - writes standard output (with --format).",
     )
     fmt = click.option(
         "--format",
@@ -473,6 +473,51 @@ def progress_bar(description: str, *, quiet: bool = False) -> Iterator[tuple[Cal
 
 
 # -- outputs ------------------------------------------------------------------------------
+def _check_glb_output(path: str) -> None:
+    """A ``.glb`` output of a flat result (issue 20.4, Sakurai Fig. 15): its folder, that it
+    can be written, and the ``surface`` extra (trimesh) that writes it, before any work."""
+    from ..io import probe_writable
+
+    parent = Path(path).parent
+    if not parent.exists():
+        raise InputError(f"--out {path!r}: folder {str(parent)!r} does not exist")
+    probe_writable(path, "--out")
+    try:
+        from ..surface._deps import require
+
+        require("trimesh")
+    except ImportError as exc:  # a missing extra is a usage problem: exit 2, one line
+        raise InputError(f"--out {path!r}: {exc}") from None
+
+
+def remember_glb_options(element_meshes: dict[str, str], style: str = "extrude", instancing: bool = False) -> None:
+    """How this command's ``.glb`` outputs of a flat result draw the kinds (``--element
+    KIND=MESH``, ``--style``, ``--instancing`` without ``--surface``)."""
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None:
+        ctx.meta["strew.glb"] = {"element_meshes": dict(element_meshes), "style": style, "instancing": bool(instancing)}
+
+
+def _glb_options() -> dict[str, Any]:
+    ctx = click.get_current_context(silent=True)
+    while ctx is not None:
+        if "strew.glb" in ctx.meta:
+            return ctx.meta["strew.glb"]
+        ctx = ctx.parent
+    return {}
+
+
+def _encode_glb(arr: Arrangement) -> bytes:
+    """The ``.glb`` of ``arr``: a surface arrangement as it is, a flat one lifted onto the
+    plane z = 0 (:func:`strew.surface.lift`; kinds with ``--element`` carry their mesh)."""
+    from .. import surface
+
+    opts = _glb_options()
+    scene = arr if surface.is_surface(arr) else surface.lift(arr)
+    return surface.to_glb(scene, element_meshes=opts.get("element_meshes") or None,
+                          style=opts.get("style", "extrude"), instancing=opts.get("instancing", False))
+
+
 def check_outputs(outs: Sequence[str]) -> None:
     """Validate every ``--out`` before doing work: extension, folder, and that it can be written."""
     from ..io import check_output_path
@@ -488,7 +533,11 @@ def check_outputs(outs: Sequence[str]) -> None:
     if fmt is not None and not piped:
         raise InputError(f"--format: only for --out - (a file's extension gives its format), got --format {fmt}")
     for o in outs:
-        if o != "-":
+        if o == "-":
+            continue
+        if Path(o).suffix.lower() == ".glb":
+            _check_glb_output(o)
+        else:
             check_output_path(o)
     ctx = click.get_current_context(silent=True)
     if _out_repeat() is not None and ctx is not None and "periodic" in ctx.params and not ctx.params["periodic"]:
@@ -562,7 +611,7 @@ def save_outputs(arr: Arrangement, outs: Sequence[str], **png_kwargs: Any) -> li
 
     Checked first by :func:`check_outputs`. Returns the files written (not ``-``).
     """
-    from ..io import atomic_write_many, encode, save_many
+    from ..io import atomic_write_many, check_output_path, encode, save_many
 
     files = [o for o in outs if o != "-"]
     heights = _out_height_profiles()
@@ -591,8 +640,14 @@ def save_outputs(arr: Arrangement, outs: Sequence[str], **png_kwargs: Any) -> li
     if "-" in outs:  # encoded before any file is written: all or none
         fmt = _STDOUT[0] if _STDOUT else _out_format()
         piped = encode(arr, f"stdout.{fmt}", **kwargs(f"stdout.{fmt}"))
-    if files and repeat is not None:
-        atomic_write_many([(p, encode(arr, p, **kwargs(p))) for p in files])
+    glb = [p for p in files if Path(p).suffix.lower() == ".glb"]
+    if files and (repeat is not None or glb):
+        for p in files:
+            if p in glb:
+                _check_glb_output(p)
+            else:
+                check_output_path(p)
+        atomic_write_many([(p, _encode_glb(arr) if p in glb else encode(arr, p, **kwargs(p))) for p in files])
     elif files:
         save_many(arr, files, **png_kwargs)
     if piped is not None:

@@ -325,6 +325,8 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
             raise InputError("--periodic makes a flat repeat tile: it does not apply with --surface")
         if surf.get("surface_mesh") is not None:  # --surface MESH: strew.surface does the work (issue 20)
             return _surface.run_on_surface(spec, options, raw_input, outs, surf, seed=seed, quiet=quiet, region=(region_file, size), around=around)
+        if surf:  # flat: --element / --style / --instancing shape the .glb outputs (Sakurai Fig. 15)
+            _surface.remember_flat_glb(surf, outs)
         check_outputs(outs)
         run = Run(spec, options, {}, seed=seed, quiet=quiet)
         if hooks.check is not None:

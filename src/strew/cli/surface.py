@@ -150,11 +150,11 @@ def surface_options() -> list:
         click.option("--mesh-scale", "surface_unit", type=float, default=None,
                      help="With --surface: mesh units per document unit [default: pack 1; synth and grow about 2,000 elements]."),
         click.option("--element", "surface_elements", multiple=True, metavar="KIND=MESH",
-                     help="With --surface: a 3D mesh for a kind in the .glb (repeatable)."),
+                     help="A 3D mesh for a kind in the .glb (repeatable; with --surface, or a flat run's .glb output)."),
         click.option("--style", "surface_style", type=click.Choice(["extrude", "decal"]), default="extrude", show_default=True,
-                     help="With --surface: how 2D shapes are drawn in the .glb."),
+                     help="How 2D shapes are drawn in the .glb (with --surface, or a flat run's .glb output)."),
         click.option("--instancing", "surface_instancing", is_flag=True,
-                     help="With --surface: one .glb node per kind with EXT_mesh_gpu_instancing."),
+                     help="One .glb node per kind with EXT_mesh_gpu_instancing (with --surface, or a flat run's .glb output)."),
     ]
 
 
@@ -164,6 +164,22 @@ _SURFACE_KEYS = ("surface_mesh", "surface_field", "surface_unit", "surface_eleme
 def pop_surface_options(options: dict) -> dict:
     """Remove the surface options from a command's options; returns them."""
     return {k: options.pop(k) for k in _SURFACE_KEYS if k in options}
+
+
+def remember_flat_glb(surf: dict, outs: tuple[str, ...]) -> None:
+    """A flat run's ``--element KIND=MESH``, ``--style`` and ``--instancing``: they shape
+    its ``.glb`` outputs (the elements on the plane z = 0, Sakurai & Miyata Fig. 15);
+    without a ``.glb`` output they are refused, as they would do nothing."""
+    from ._common import remember_glb_options
+
+    elements = surf.get("surface_elements") or ()
+    glb = any(str(o).lower().endswith(".glb") for o in outs)
+    if not glb:
+        for key, flag in (("surface_elements", "--element"), ("surface_instancing", "--instancing")):
+            if surf.get(key):
+                raise InputError(f"{flag}: only for --surface runs or .glb outputs")
+        return
+    remember_glb_options(_element_meshes(elements), surf.get("surface_style") or "extrude", bool(surf.get("surface_instancing")))
 
 
 def run_on_surface(spec, options: dict, raw_input, outs: tuple[str, ...], surf: dict, *, seed: int, quiet: bool,
