@@ -89,7 +89,14 @@ The local map evaluates the same metrics (all but ``eq5``) in square windows of 
 exemplar's area, stepped by half a side, over the result's interior. A window carries
 its own noise as the whole result does, so its noise term is
 ``MULTIPLE * sigma * sqrt(1 + A_exemplar / A_window)`` (about sqrt(2) sigma for a whole
-window; floors as above). Each window's score is its worst discrepancy / tolerance
+window; floors as above), or, where larger, the window-to-window noise measured in the
+exemplar itself: square sub-windows of half its side at 5 x 5 offsets, each compared with
+the whole exemplar, their mean square scaled by the Poisson law (variance x area constant)
+to ``MULTIPLE * sqrt(c / A_window + c / A_exemplar)``. Half-splits alone miss the noise of a
+window's phase: the halves of an exemplar framed on whole periods of a lattice (rings)
+agree almost exactly, while a window anywhere on a larger draw holds 3 to 5 columns of
+hubs; fresh larger draws of rings failed about half their windows on density[hub].
+Each window's score is its worst discrepancy / tolerance
 (above 1: it fails); the worst window is reported.
 
 Known limits: a result smaller than the exemplar (after the margin) is compared on a
@@ -1213,7 +1220,11 @@ def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None =
     g_ex = {f"{kinds[i]},{kinds[j]}": ex_stats.g[i, j] for i in range(K) for j in range(i, K)}
     g_res = {f"{kinds[i]},{kinds[j]}": res_stats.g[i, j] for i in range(K) for j in range(i, K)}
 
-    local_map = _local_map(res, res_raw, ex_stats, metrics, kinds, s, ex_win, res_win, flags) if local else _empty_local()
+    if local:
+        noise = _window_noise(ex, ex_raw, ex_stats, kinds, s, ex_win, flags)
+        local_map = _local_map(res, res_raw, ex_stats, metrics, kinds, s, ex_win, res_win, flags, noise)
+    else:
+        local_map = _empty_local()
     return FidelityReport(not failures, failures, metrics, kinds, s, r, g_ex, g_res, local_map, info)
 
 
@@ -1276,18 +1287,89 @@ def _halves(win: shapely.Geometry) -> list[tuple[shapely.Geometry, shapely.Geome
     ]
 
 
-def _window_tolerance(m: MetricResult, area: float, ex_area: float) -> float:
+def _window_tolerance(m: MetricResult, area: float, ex_area: float, noise: float | None = None) -> float:
+    """A local window's tolerance for metric ``m``.
+
+    The global rule's noise term scaled to the window, ``sigma sqrt(1 + A_ex / A_w)``, or,
+    when larger, the window-to-window noise measured in the exemplar itself (``noise``:
+    variance x area of :func:`_window_noise`), ``sqrt(c / A_w + c / A_ex)``.
+    """
     fam = _family(m.name)
     if fam == "eq5" or m.spread is None or not math.isfinite(m.spread):
         return m.tolerance
-    return max(FLOORS[fam], MULTIPLE * m.spread / 2.0 * math.sqrt(1.0 + ex_area / max(area, 1e-300)))
+    area = max(area, 1e-300)
+    tol = max(FLOORS[fam], MULTIPLE * m.spread / 2.0 * math.sqrt(1.0 + ex_area / area))
+    if noise is not None and math.isfinite(noise) and noise > 0:
+        tol = max(tol, MULTIPLE * math.sqrt(noise / area + noise / ex_area))
+    return tol
+
+
+def _window_discrepancies(st: _Stats, ex_stats: _Stats, kinds: list[str], s: float, flags: dict[str, bool]) -> dict[str, float]:
+    """A window's discrepancies against the exemplar; ``empty_circle`` also compares the
+    window's largest empty circle with the exemplar's largest."""
+    d = _discrepancies(st, ex_stats, kinds, s, **flags)
+    if math.isfinite(ex_stats.lec) and ex_stats.lec > 0 and math.isfinite(st.lec):
+        d["empty_circle"] = max(d.get("empty_circle", 0.0) if math.isfinite(d.get("empty_circle", np.nan)) else 0.0, st.lec / ex_stats.lec - 1.0)
+    return d
+
+
+WINDOW_SUB = 0.5  # the exemplar's sub-windows for window noise: squares of this x its side
+WINDOW_PHASES = 5  # ... at this many offsets along each axis
+WINDOW_MIN = 6  # a metric needs this many sub-windows that measure it
+
+
+def _window_noise(ex: _Sample, raw: _Raw, ex_stats: _Stats, kinds: list[str], s: float, ex_win: shapely.Geometry, flags: dict[str, bool]) -> dict[str, float]:
+    """Window-to-window noise of each metric, measured in the exemplar itself.
+
+    The half-splits of the global rule have equal areas but fixed places: the halves of an
+    exemplar framed on whole periods of a lattice (one hub lattice of rings) agree almost
+    exactly, while a window of the same area laid anywhere on a larger draw holds 3 to 5
+    columns of hubs depending on its phase. So square sub-windows of side ``WINDOW_SUB``
+    x the exemplar window's are laid at ``WINDOW_PHASES`` x ``WINDOW_PHASES`` offsets
+    (every phase of the frame's content), and each one's discrepancy from the whole
+    exemplar is measured as a result window's would be. With the conservative Poisson law
+    (variance ∝ 1 / area, which a lattice's phase noise, ∝ perimeter / area, also follows)
+    the mean square ``rms^2`` of nested sub-windows of area ``a`` in a window of area ``A``
+    is ``c (1 / a - 1 / A)``; the constant ``c`` (variance x area) is returned per metric.
+
+    Returns
+    -------
+    dict of str to float
+        ``c`` per metric name; metrics that fewer than :data:`WINDOW_MIN` sub-windows
+        measure are left out (the global rule's scaling applies to them alone).
+    """
+    x0, y0, x1, y1 = ex_win.bounds
+    A = float(ex_win.area)
+    side = WINDOW_SUB * math.sqrt(A)
+    if A <= 0 or side <= 0 or x1 - x0 < side or y1 - y0 < side:
+        return {}
+    a = side * side
+    cov = _set_covariance(shapely.box(0, 0, side, side), s / 6.0, R_MAX * s)
+    shapely.prepare(ex_win)
+    sq: dict[str, list[float]] = {}
+    for j in range(WINDOW_PHASES):
+        for i in range(WINDOW_PHASES):
+            bx0 = x0 + (x1 - x0 - side) * i / max(WINDOW_PHASES - 1, 1)
+            by0 = y0 + (y1 - y0 - side) * j / max(WINDOW_PHASES - 1, 1)
+            bx = shapely.box(bx0, by0, bx0 + side, by0 + side)
+            if not shapely.contains(ex_win, bx):
+                continue
+            st = _stats(ex, raw, len(kinds), s, bx, cov=cov)
+            for name, v in _window_discrepancies(st, ex_stats, kinds, s, flags).items():
+                if math.isfinite(v):
+                    sq.setdefault(name, []).append(v * v)
+    out: dict[str, float] = {}
+    for name, vals in sq.items():
+        if len(vals) >= WINDOW_MIN and A > a:
+            out[name] = float(np.mean(vals)) / (1.0 / a - 1.0 / A)
+    return out
 
 
 def _empty_local() -> dict[str, Any]:
     return {"x0": None, "y0": None, "step": None, "window": None, "score": np.zeros((0, 0)), "worst_metric": np.zeros((0, 0), dtype=object), "worst": None}
 
 
-def _local_map(res: _Sample, raw: _Raw, ex_stats: _Stats, metrics: dict[str, MetricResult], kinds: list[str], s: float, ex_win: shapely.Geometry, res_win: shapely.Geometry, flags: dict[str, bool]) -> dict[str, Any]:
+def _local_map(res: _Sample, raw: _Raw, ex_stats: _Stats, metrics: dict[str, MetricResult], kinds: list[str], s: float, ex_win: shapely.Geometry, res_win: shapely.Geometry, flags: dict[str, bool], noise: dict[str, float] | None = None) -> dict[str, Any]:
     side = math.sqrt(ex_win.area)
     step = 0.5 * side
     x0, y0, x1, y1 = res_win.bounds
@@ -1340,9 +1422,7 @@ def _local_map(res: _Sample, raw: _Raw, ex_stats: _Stats, metrics: dict[str, Met
             ridx = np.concatenate([rb[k] for k in cells])
             cidx = np.concatenate([cb[k] for k in cells])
             st = _stats(res, raw, len(kinds), s, w, cov=square_cov if whole else None, members=(np.sort(idx), pidx, ridx, cidx))
-            d = _discrepancies(st, ex_stats, kinds, s, **flags)
-            if math.isfinite(ex_stats.lec) and ex_stats.lec > 0 and math.isfinite(st.lec):
-                d["empty_circle"] = max(d.get("empty_circle", 0.0) if math.isfinite(d.get("empty_circle", np.nan)) else 0.0, st.lec / ex_stats.lec - 1.0)
+            d = _window_discrepancies(st, ex_stats, kinds, s, flags)
             best, which = 0.0, ""
             for name, v in d.items():
                 m = metrics.get(name)
@@ -1350,7 +1430,7 @@ def _local_map(res: _Sample, raw: _Raw, ex_stats: _Stats, metrics: dict[str, Met
                     continue
                 # the window's own noise: scale the global tolerance's noise term to
                 # sigma sqrt(1 + A_ex / A_window); floors stay as they are
-                ratio = v / _window_tolerance(m, w.area, ex_win.area)
+                ratio = v / _window_tolerance(m, w.area, ex_win.area, (noise or {}).get(name))
                 if ratio > best:
                     best, which = ratio, name
             score[r, c] = best
