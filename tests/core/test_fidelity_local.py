@@ -1,7 +1,7 @@
 """The local fidelity map is calibrated on the exemplar's own generator (issue 13 point 2).
 
 A fresh, larger draw of a suite class is "more of the exemplar" by definition: it passes,
-globally and in every window. A seam (two independently drawn halves whose lattices are
+globally and in every window (rings; three_sizes, with counts scaled as its generator needs). A seam (two independently drawn halves whose lattices are
 out of phase) still fails windows along the cut.
 """
 
@@ -73,3 +73,19 @@ def test_the_window_noise_is_measured_in_the_exemplar():
     assert _window_tolerance(m, area, area, 0.0) == old
     assert _window_tolerance(m, area, area, 1e-9 * area) == old
     assert _window_tolerance(m, area, area, 0.05 * area) == pytest.approx(4.0 * np.sqrt(0.1))
+
+
+@pytest.mark.slow
+def test_a_fresh_larger_draw_of_three_sizes_passes_every_window():
+    # the generator throws each size inside the frame less that size's radius and stops at
+    # its count: a fair larger draw scales the counts by that inner box's area (by the
+    # frame's, it holds 18 % fewer large stones per area at 12 x, and fails nn[small>large])
+    ex = exemplar("three_sizes")
+    f = 2.0  # 4 x the area
+    counts = tuple(int(round(c * ((210.0 * f - 2.2 * ex.shapes[n].radius) / (210.0 - 2.2 * ex.shapes[n].radius)) ** 2)) for c, n in zip((170, 65, 26), ("small", "medium", "large")))
+    big = suite.make_exemplar("three_sizes", rng=0, size=210.0 * f, counts=counts)
+    rep = fidelity(ex, big, eq5=False)
+    assert rep.faithful, rep.failures
+    score = np.asarray(rep.local["score"], float)
+    assert np.isfinite(score).sum() >= 4
+    assert rep.local["worst"]["score"] <= 1.0, rep.local["worst"]
