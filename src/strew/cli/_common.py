@@ -220,13 +220,18 @@ def _remember_format(ctx: click.Context, param: click.Parameter, value: str | No
     return value
 
 
-def _out_format() -> str | None:
+def _ctx_meta(key: str, default: Any = None) -> Any:
+    """``key`` in the meta of the current click context or of the nearest parent that has it."""
     ctx = click.get_current_context(silent=True)
     while ctx is not None:
-        if "strew.out_format" in ctx.meta:
-            return ctx.meta["strew.out_format"]
+        if key in ctx.meta:
+            return ctx.meta[key]
         ctx = ctx.parent
-    return None
+    return default
+
+
+def _out_format() -> str | None:
+    return _ctx_meta("strew.out_format")
 
 
 # -- option decorators ------------------------------------------------------------------
@@ -260,21 +265,11 @@ def _remember_height_profiles(ctx: click.Context, param: click.Parameter, value:
 
 
 def _out_height_profiles() -> dict | None:
-    ctx = click.get_current_context(silent=True)
-    while ctx is not None:
-        if "strew.height_profiles" in ctx.meta:
-            return ctx.meta["strew.height_profiles"]
-        ctx = ctx.parent
-    return None
+    return _ctx_meta("strew.height_profiles")
 
 
 def _out_repeat() -> tuple[int, int] | None:
-    ctx = click.get_current_context(silent=True)
-    while ctx is not None:
-        if "strew.out_repeat" in ctx.meta:
-            return ctx.meta["strew.out_repeat"]
-        ctx = ctx.parent
-    return None
+    return _ctx_meta("strew.out_repeat")
 
 
 def out_option(required: bool = True) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
@@ -499,12 +494,7 @@ def remember_glb_options(element_meshes: dict[str, str], style: str = "extrude",
 
 
 def _glb_options() -> dict[str, Any]:
-    ctx = click.get_current_context(silent=True)
-    while ctx is not None:
-        if "strew.glb" in ctx.meta:
-            return ctx.meta["strew.glb"]
-        ctx = ctx.parent
-    return {}
+    return _ctx_meta("strew.glb", {})
 
 
 def _encode_glb(arr: Arrangement) -> bytes:

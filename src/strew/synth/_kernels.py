@@ -181,23 +181,6 @@ def _vmax(a):
 
 
 @numba.njit(cache=True, nogil=True)
-def _col_range(pts, c):
-    """``pts[:, c].min(), pts[:, c].max()`` of a non-empty (n, k) array, as one loop (NaN
-    if the column holds one, as numpy; see :func:`_vmax`)."""
-    lo = pts[0, c]
-    hi = lo
-    for i in range(pts.shape[0]):
-        v = pts[i, c]
-        if np.isnan(v):
-            return v, v
-        if v < lo:
-            lo = v
-        if v > hi:
-            hi = v
-    return lo, hi
-
-
-@numba.njit(cache=True, nogil=True)
 def _pairing_scratch(q_ptr, e_ptr):
     """Scratch arrays for :func:`pair_cost` over CSR neighbourhoods: pair, used, elen."""
     maxq = 1
