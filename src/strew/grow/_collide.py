@@ -1,0 +1,268 @@
+"""The grower's predicates: overlap with placed elements, the region and boundary
+strokes, and the closeness rules of Fig. 6 (b) and ``lean_ok`` (Ijiri et al. 2008, §5.4).
+
+Split out of :mod:`strew.grow._growth` (issue 15).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import shapely
+
+from ._objects import (
+    _ELEMENT_OR_OBSTACLE,
+    ELEMENT,
+    OBSTACLE,
+    SEED,
+)
+
+
+class _Collide:
+    """Overlap, domain and closeness tests on candidate elements."""
+
+    def element_geometry(self, kind: int, x: float, y: float, rot: float, scale: float) -> Any:
+        local = self.local_geom[kind]
+        m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
+        t = np.array([x, y])
+        ring = self.local_ring[kind]
+        if ring is not None:  # a simple polygon: the same coordinates, built directly
+            return shapely.polygons(ring @ m.T + t)
+        return shapely.transform(local, lambda q: q @ m.T + t)
+
+    def element_geometries(self, idx: Sequence[int], xy: np.ndarray) -> list[Any]:
+        """Outlines of elements ``idx`` moved to ``xy`` (m, 2), batched by kind."""
+        out: list[Any] = [None] * len(idx)
+        idx_a = np.asarray(idx, dtype=np.intp)
+        kinds = self.kind[idx_a]
+        for kind in np.unique(kinds).tolist():
+            sel = np.flatnonzero(kinds == kind)
+            ring = self.local_ring[kind]
+            if ring is None:
+                for q in sel.tolist():
+                    g = int(idx_a[q])
+                    out[q] = self.element_geometry(kind, float(xy[q, 0]), float(xy[q, 1]), self.rot[g], self.scl[g])
+                continue
+            gi = idx_a[sel]
+            c = np.cos(self.rot[gi]) * self.scl[gi]
+            s = np.sin(self.rot[gi]) * self.scl[gi]
+            px = c[:, None] * ring[None, :, 0] - s[:, None] * ring[None, :, 1] + xy[sel, 0][:, None]
+            py = s[:, None] * ring[None, :, 0] + c[:, None] * ring[None, :, 1] + xy[sel, 1][:, None]
+            polys = shapely.polygons(np.stack([px, py], axis=-1))
+            for q, g in zip(sel.tolist(), polys):
+                out[q] = g
+        return out
+
+    def overlaps_any(self, g: Any, kind: int, x: float, y: float, scale: float, skip: set[int] | None = None) -> bool:
+        r = self.kind_radius[kind] * scale + self.other_rmax
+        # bounding discs: an element farther than the sum of the two radii cannot touch
+        # (obstacles have no kind of ours), so it skips the shapely test
+        kr = self.kind_radius
+        nk = len(kr)
+        rg = float(kr[kind]) * abs(scale)
+        xy, kinds, state, scl = self.xy, self.kind, self.state, self.scl
+        others = []
+        for j in self.near(x, y, r, (ELEMENT, OBSTACLE)):
+            if skip and j in skip:
+                continue
+            if state[j] == ELEMENT:
+                kj = kinds[j]
+                if kj < nk:
+                    reach = (rg + float(kr[kj]) * abs(float(scl[j]))) * (1.0 + 1e-9)
+                    px, py = xy[j]
+                    if (px - x) ** 2 + (py - y) ** 2 > reach * reach:
+                        continue
+            others.append(j)
+        if not others:
+            return False
+        gs = np.array([self.geom[j] for j in others], dtype=object)
+        hit = shapely.intersects(g, gs)
+        if not hit.any():
+            return False
+        if not self.areal[kind]:
+            return True
+        for j in np.flatnonzero(hit):
+            if not self.areal[self.kind[others[j]]]:
+                return True
+            if shapely.intersection(g, gs[j]).area > 1e-9 * max(g.area, 1e-300):
+                return True
+        return False
+
+    def overlapping(self, g: int) -> list[int]:
+        """Elements whose geometry overlaps element ``g`` (area overlap, or any contact of strokes)."""
+        kind = int(self.kind[g])
+        x, y = self.xy[g]
+        r = self.kind_radius[kind] * self.scl[g] + self.other_rmax
+        others = [j for j in self.near(x, y, r, (ELEMENT, OBSTACLE)) if self.orig_of[j] != g]
+        if not others:
+            return []
+        geom = self.geom[g]
+        gs = np.array([self.geom[j] for j in others], dtype=object)
+        hit = np.flatnonzero(shapely.intersects(geom, gs))
+        out = []
+        for q in hit:
+            j = others[q]
+            if not (self.areal[kind] and self.areal[self.kind[j]]):
+                out.append(j)
+            elif shapely.intersection(geom, gs[q]).area > 1e-9 * max(geom.area, 1e-300):
+                out.append(j)
+        return out
+
+    def overlapping_many(self, check: Sequence[int]) -> dict[int, list[int]]:
+        """:meth:`overlapping` for several elements, with one vectorised shapely call."""
+        out: dict[int, list[int]] = {}
+        ca = np.asarray(check, dtype=np.int64)
+        if len(ca) == 0:
+            return out
+        # the candidates of every element in one query of the index
+        kr = self.kind_radius
+        nk = len(kr)
+        rg = kr[self.kind[ca]] * self.scl[ca]
+        pos = self.pos
+        qi, js = self.index.near_many(pos[ca, 0], pos[ca, 1], rg + self.other_rmax, _ELEMENT_OR_OBSTACLE)
+        gs = ca[qi]
+        keep = js != gs
+        if self.tile is not None:  # not an image of the element itself
+            oo = self.orig_of
+            keep &= np.fromiter((oo[j] != g for j, g in zip(js.tolist(), gs.tolist())), dtype=bool, count=len(js))
+        # bounding radius of each element: pairs farther apart than the sum of theirs
+        # cannot touch, and skip the shapely test (obstacles have no kind of ours)
+        kj = self.kind[js]
+        el = (self.state[js] == ELEMENT) & (kj < nk)
+        reach = (rg[qi] + kr[np.where(el, kj, 0)] * self.scl[js]) * (1.0 + 1e-9)
+        d2 = (pos[js, 0] - pos[gs, 0]) ** 2 + (pos[js, 1] - pos[gs, 1]) ** 2
+        keep &= ~(el & (d2 > reach * reach))
+        ga: list[int] = gs[keep].tolist()
+        gb: list[int] = js[keep].tolist()
+        if not ga:
+            return out
+        geoms = self.geom
+        A = np.array([geoms[g] for g in ga], dtype=object)
+        B = np.array([geoms[j] for j in gb], dtype=object)
+        hit = np.flatnonzero(shapely.intersects(A, B))
+        if len(hit) == 0:
+            return out
+        areal = self.areal
+        both = np.array([areal[self.kind[ga[q]]] and areal[self.kind[gb[q]]] for q in hit], dtype=bool)
+        keep = ~both
+        if both.any():
+            hb = hit[both]
+            area = shapely.area(shapely.intersection(A[hb], B[hb]))
+            keep[both] = area > 1e-9 * np.maximum(shapely.area(A[hb]), 1e-300)
+        for q in hit[keep].tolist():
+            out.setdefault(ga[q], []).append(gb[q])
+        return out
+
+    # -- growth -------------------------------------------------------------------------
+    def in_domain(self, x: float, y: float) -> bool:
+        if self.tile is not None:
+            return True  # the torus has no edge: a seed beyond the tile is made at its wrapped place
+        box = self.region_box
+        if box is not None:  # a rectangular region: the same test without shapely
+            return box[0] < x < box[2] and box[1] < y < box[3]
+        if self.region is not None and not shapely.contains_xy(self.region.prepared, x, y):
+            return False
+        return True
+
+    def too_close_in_kind(self, x: float, y: float, kind: int, s: int, states: tuple[int, ...] = (SEED, ELEMENT), placing: bool = False) -> bool:
+        """Is an object within ``l_short(kind, kind')`` of a new seed of ``kind`` at (x, y)?
+
+        §5.4 (b) takes one ``l_short`` for all kinds: half the shortest reference edge.
+        With kinds far apart in the reference (cluster hubs, large stones) a seed that
+        lands at twice that from an element of its own kind, where the reference never
+        has one, survives, and hubs double up. We also drop a new seed that lies within
+        half the reference's smallest distance between its kind and the object's kind
+        (:attr:`pair_short`); objects within the global ``l_short`` are merged as before.
+        """
+        if kind < 0:
+            return False
+        ps = self.pair_close if placing else self.pair_short
+        r = float((self.pair_close_max if placing else self.pair_short_max)[kind])
+        if r <= self.l_short:
+            return False
+        xy = self.xy
+        for o in self.near(x, y, r, states):
+            if self.orig_of[o] == s:
+                continue
+            ko = int(self.kind[o])
+            if ko < 0:
+                continue
+            d = ps[kind, ko]
+            px, py = xy[o]
+            if (px - x) ** 2 + (py - y) ** 2 < d * d:
+                return True
+        return False
+
+    def lean_ok(self, s: int, a: int, k: int, th: float, x: float, y: float, kind: int) -> bool:
+        """Will the element have the larger neighbour its reference ring has beside it?
+
+        Not in the paper. With kinds of several sizes a smaller element may sit where the
+        reference has it because of a larger one next to it (dots ringed around a hub:
+        a kind that :attr:`leans`). §5.4 places the small element first and the larger
+        one as a seed afterwards; where that seed cannot grow the small element is left
+        alone, and clusters dissolve into scattered dots. The placement is refused when
+        the nearest larger neighbour of reference ``a``'s ring (at distance ``d``) has no
+        counterpart: no element or seed of its kind within ``1.25 d`` of the seed, and
+        its own place is outside the region, overlaps an element or is too close to one
+        (:meth:`too_close_in_kind`).
+        """
+        if not self.leans[kind]:
+            return True
+        lv = self.size_level
+        n_ring = int(self.rings["n"][a])
+        ring_kind = self.rings["kind"][a, :n_ring]
+        bigger = np.flatnonzero((ring_kind >= 0) & (lv[np.maximum(ring_kind, 0)] > lv[kind]))
+        if len(bigger) == 0:
+            return True
+        big_slots = set(bigger.tolist())
+        if any((k + i) % n_ring in big_slots for i in range(len(self._last_nb))):
+            return True  # a target neighbour stands for it
+        rel = self.rings["rel"][a]
+        dist = np.hypot(rel[bigger, 0], rel[bigger, 1])
+        j = int(bigger[int(np.argmin(dist))])
+        kj = int(ring_kind[j])
+        reach = 1.25 * float(dist.min())
+        if any(int(self.kind[o]) == kj for o in self.near(x, y, reach) if self.orig_of[o] != s):
+            return True
+        c, sn = math.cos(th), math.sin(th)
+        px = x + c * rel[j, 0] - sn * rel[j, 1]
+        py = y + sn * rel[j, 0] + c * rel[j, 1]
+        if not self.in_domain(px, py) or self.too_close_in_kind(px, py, kj, s):
+            return False
+        r = int(self.rings["sub"][a, j])
+        sc = float(self.ex_scale[r])
+        g = self.element_geometry(kj, px, py, float(self.ex_rot[r]) + th, sc)
+        return self.fits_domain(g) and not (self.p.avoid_overlaps and self.overlaps_any(g, kj, px, py, sc))
+
+    def fits_domain(self, g: Any) -> bool:
+        """Does element geometry ``g`` lie inside the region and cross no boundary stroke?"""
+        box = self.region_box if self.tile is None else None
+        if box is not None:
+            b = shapely.bounds(g)
+            if not (b[0] >= box[0] and b[1] >= box[1] and b[2] <= box[2] and b[3] <= box[3]):
+                return False
+        elif self.region is not None and self.tile is None and not shapely.contains(self.region.prepared, g):
+            return False
+        if self.boundary is not None and shapely.intersects(self.boundary, g):
+            return False
+        return True
+
+    def fits_domain_many(self, gs: Sequence[Any]) -> np.ndarray:
+        """:meth:`fits_domain` of several geometries (m,), with one shapely call each; (m,) bool."""
+        arr = np.empty(len(gs), dtype=object)
+        arr[:] = gs
+        ok = np.ones(len(gs), dtype=bool)
+        box = self.region_box
+        if self.tile is not None:
+            pass  # on the torus an element may cross the tile's edge
+        elif box is not None:
+            b = shapely.bounds(arr)
+            ok &= (b[:, 0] >= box[0]) & (b[:, 1] >= box[1]) & (b[:, 2] <= box[2]) & (b[:, 3] <= box[3])
+        elif self.region is not None:
+            ok &= shapely.contains(self.region.prepared, arr)
+        if self.boundary is not None:
+            ok &= ~shapely.intersects(self.boundary, arr)
+        return ok

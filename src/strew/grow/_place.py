@@ -1,0 +1,583 @@
+"""Choosing and placing (Ijiri et al. 2008, §5.2–5.4): the best matching reference
+element for a seed, fitting its position, and its 1-ring's unpaired elements as new seeds.
+
+Split out of :mod:`strew.grow._growth` (issue 15).
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import shapely
+
+from ._match import match_references, order_target
+from ._objects import (
+    ELEMENT,
+    SEED,
+)
+
+
+def _skewed(p: Sequence[float], q: Sequence[float], r: Sequence[float]) -> bool:
+    """True when triangle pqr has an angle of 2π/3 or more (§4's skewed triangles)."""
+    a2 = (q[0] - r[0]) ** 2 + (q[1] - r[1]) ** 2
+    b2 = (p[0] - r[0]) ** 2 + (p[1] - r[1]) ** 2
+    c2 = (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2
+    a, b, c = math.sqrt(a2), math.sqrt(b2), math.sqrt(c2)
+    # cos(angle) <= -1/2 at any vertex
+    return b2 + c2 - a2 <= -b * c + 1e-12 or a2 + c2 - b2 <= -a * c + 1e-12 or a2 + b2 - c2 <= -a * b + 1e-12
+
+
+
+class _Place:
+    """The seed priority (§5.1), matching (§5.2, §5.3) and placement (§5.4)."""
+
+    def seed_priority(self, i: int) -> float:
+        # Extra seeds (no symbol id, §5.4e) take the lowest priority: they fill gaps.
+        k = self.kind[i]
+        return self.none_prio if k < 0 else float(self.kind_prio[k])
+
+    def outranked(self, i: int) -> bool:
+        """§5.1: grow only seeds of the highest priority within 5 * l."""
+        if not self.use_prio:
+            return False
+        pi = self.seed_priority(i)
+        x, y = self.xy[i]
+        r2 = (5 * self.l) ** 2
+        xy = self.xy
+        # the live seeds above the lowest priority, on a grid of cells 5 l wide: nine
+        # cells to look at instead of the hundred of the fine grid
+        h = self.hcell
+        cx, cy = math.floor(x / h), math.floor(y / h)
+        hg = self.hgrid
+        kind = self.kind
+        state = self.state
+        kp = self.kind_prio_list
+        none = self.none_prio
+        oo = self.orig_of
+        for j in [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in hg.get((cx + dx, cy + dy), ())]:
+            if j == i or oo[j] == i or state[j] != SEED:
+                continue
+            kj = kind[j]
+            if (none if kj < 0 else kp[kj]) <= pi:  # seed_priority(j), inlined
+                continue
+            px, py = xy[j]
+            if (px - x) ** 2 + (py - y) ** 2 > r2:
+                continue
+            # a seed outside the spray area cannot grow now: it does not hold others
+            # back (they would wait for it, and the spray would stall)
+            if self.spray_area is not None and not shapely.contains_xy(self.spray_area, px, py):
+                continue
+            return True
+        return False
+
+    def release_deferred(self, i: int) -> None:
+        if not self.deferred:
+            return
+        x, y = self.xy[i]
+        r2 = (5 * self.l) ** 2
+        xy = self.xy
+        if self.tile is not None:  # on the torus: the nearest images
+            _, _, w, h = self.tile
+            near = [j for j in self.deferred if self.state[j] == SEED
+                    and (d := (xy[j][0] - x - w * round((xy[j][0] - x) / w), xy[j][1] - y - h * round((xy[j][1] - y) / h)))
+                    and d[0] ** 2 + d[1] ** 2 <= r2]
+        else:
+            near = [j for j in self.deferred if (xy[j][0] - x) ** 2 + (xy[j][1] - y) ** 2 <= r2 and self.state[j] == SEED]
+        for j in sorted(near):
+            if j in self.deferred:
+                self.deferred.discard(j)
+                heapq.heappush(self.heap, (math.hypot(self.xy[j][0] - self.origin[0], self.xy[j][1] - self.origin[1]), j))
+
+    def missing_larger(self, s: int) -> list[int]:
+        """Larger kinds with no element or seed where the reference always has one.
+
+        Not in the paper. With kinds of several sizes (stones ringed by pebbles) the
+        larger ones come only from the rings of placed elements (§5.4); where their seeds
+        die (overlaps, the priority wait of §5.1) no ring proposes another, and the small
+        ones fill a gap in the larger kind that the reference never has: three sizes grew
+        small stones up to 30 units from the nearest large one where the reference has at
+        most 23. A seed of kind ``a`` that has no element or seed of a larger kind ``b``
+        within :attr:`reach_larger` ``[a, b]`` (a quantile of the reference's distances
+        from ``a`` to its nearest ``b``) is first tried as a ``b`` (largest kind first).
+        """
+        k = int(self.kind[s])
+        if k < 0:
+            return []  # an extra seed of Fig. 6e fills a gap; it has no kind to miss a larger one
+        row = self.reach_larger[k]
+        want = np.flatnonzero(np.isfinite(row))
+        if len(want) == 0:
+            return []
+        x, y = self.xy[s]
+        r = float(row[want].max())
+        have = set()
+        for o in self.near(x, y, r):
+            b = int(self.kind[o])
+            if self.orig_of[o] != s and b >= 0 and (self.xy[o][0] - x) ** 2 + (self.xy[o][1] - y) ** 2 <= row[b] ** 2:
+                have.add(b)
+        out = [int(b) for b in want if int(b) not in have]
+        out.sort(key=lambda b: -self.size_level[b])
+        return out
+
+    def choose(self, s: int) -> tuple[int, int, float] | None:
+        """§5.2: the reference element minimising Eq. 3 for seed ``s``."""
+        # §5.2: w(e_tar) are the seed's immediate neighbours. We take the placed elements
+        # among them only: seeds have no sub-id yet and their positions are guesses.
+        nb = [j for j in self.adj[s] if self.state[j] == ELEMENT]
+        ps = self.pos[s]
+        if nb:
+            rel = self.pos[nb] - ps
+            order = order_target(rel)
+            nb_arr = np.asarray(nb)[order]
+            rel = rel[order]
+            if self.tile is not None and len(nb_arr) >= 3:
+                nb_arr, rel = self._one_arc(nb_arr, rel)
+        else:
+            nb_arr = np.zeros(0, dtype=np.int64)
+            rel = np.zeros((0, 2))
+        k = self.kind[s]
+        cand = self.all_candidates
+        if k >= 0 and self.kind_has_candidates[k]:
+            # §5.2: a seed with a symbol id examines only references of that id. A kind that
+            # occurs only on the exemplar's boundary has no reference: any element may go.
+            cand = self.kind_candidates[k]
+        n_max = self._ring_max.get(int(k))
+        if n_max is None:
+            n_max = self._ring_max[int(k)] = int(self.rings["n"][cand].max()) if cand.any() else 0
+        if 0 < n_max < len(nb_arr):
+            # Not in the paper: a seed that waited (§5.1 priority) or sits where fronts
+            # meet can be joined to more placed neighbours than any reference ring has,
+            # and then matched none and died, leaving a hole (bricks with a priority: one
+            # brick missing). Its nearest n_max neighbours are matched.
+            near = np.sort(np.argsort(np.hypot(rel[:, 0], rel[:, 1]), kind="stable")[:n_max])
+            nb_arr, rel = nb_arr[near], rel[near]
+            order = order_target(rel)
+            nb_arr, rel = nb_arr[order], rel[order]
+        flow_theta = 0.0
+        if self.mode_code == 2:
+            v = self.p.flow(ps[None, :])[0]
+            flow_theta = math.atan2(v[1], v[0])
+        frame_theta, frame_w = 0.0, 0.0
+        mode = self.p.mode
+        if self.mode_code == 1 and len(nb_arr):
+            # the neighbours' reference frames (their Eq. 4 rotations), circular mean
+            f = self.frame[nb_arr]
+            frame_theta = math.atan2(float(np.sin(f).sum()), float(np.cos(f).sum()))
+            frame_w = self.p.frame_weight * self.l
+        elif self.mode_code == 2 and self.p.flow_fit:
+            # §5.3 turns the reference to the flow direction exactly. We fit the rotation
+            # to the placed neighbours as in rotation mode, held within max_turn of the
+            # flow direction and charged for the turn away from it: where the field bends
+            # the neighbours' lattice then bends with it gradually, instead of each
+            # element taking the field's angle and leaving holes and overlaps between
+            # neighbours that took different ones.
+            frame_theta, frame_w, mode = flow_theta, self.p.frame_weight * self.l, "rotate"
+            if len(nb_arr) and self.p.flow_carry:
+                # Not in the paper: the fit alone keeps the neighbours' frame, so the
+                # lattice lags the field by max_turn, ahead of the field where growth
+                # runs against its turn and behind it where growth runs with it; the
+                # two meet in seams. The fitted frame is carried on by the field's turn
+                # from the neighbours to the seed (the target is turned by it before the
+                # fit): the lattice turns with the field.
+                # the field at each neighbour where it was placed (``_bent_ring``)
+                fa = self._flow_at
+                va = np.array([fa[j] if j in fa else math.nan for j in nb_arr.tolist()])
+                miss = np.isnan(va)
+                if miss.any():
+                    v = np.asarray(self.p.flow(self.pos[nb_arr[miss]]), dtype=float)
+                    va[miss] = np.arctan2(v[:, 1], v[:, 0])
+                # a line field: the neighbours' mean direction with the seed's sign
+                dd = va - flow_theta
+                dd = dd - np.pi * np.round(dd / np.pi)
+                carry = -float(np.mean(dd))
+                if abs(carry) > 1e-12:
+                    cc, ss = math.cos(carry), math.sin(carry)
+                    rel = np.c_[cc * rel[:, 0] - ss * rel[:, 1], ss * rel[:, 0] + cc * rel[:, 1]]
+        err, shift, theta = match_references(
+            self.rings,
+            rel,
+            self.kind[nb_arr],
+            self.sub[nb_arr],
+            mode=mode,
+            flow_theta=flow_theta,
+            candidates=cand,
+            weights=self.p.weights,
+            frame_theta=frame_theta,
+            frame_weight=frame_w,
+            max_turn=self.p.flow_max_turn if self.mode_code == 2 else self.p.max_turn,
+            keep_frame=self.p.keep_frame if self.mode_code == 1 else 0,
+        )
+        best = float(err.min()) if len(err) else math.inf
+        if not math.isfinite(best):
+            return None
+        # Equally good references (e.g. every one for the very first seed) are chosen at
+        # random from ``rng``; the paper does not say how it breaks ties.
+        ties = np.flatnonzero(err <= best + 1e-9 * (1.0 + best))
+        a = int(ties[0]) if len(ties) == 1 else int(ties[self.rng.integers(len(ties))])
+        self._last_nb = nb_arr
+        return a, int(shift[a]), float(theta[a])
+
+    def _one_arc(self, nb: np.ndarray, rel: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The longest run of placed neighbours without a gap wider than :attr:`arc_gap`.
+
+        Not in the paper. §5.2 matches the target's neighbours, in angular order, to
+        consecutive ring slots (no skipping). In the plane the placed neighbours of a
+        seed lie on one arc of the front; on the torus, where the front meets itself, a
+        seed has neighbours from both sides with empty slots between them, and matching
+        them to consecutive slots pulls the seed off the lattice (scales_hex in a tile
+        that is a multiple of its periods: 32 of 400 elements off by up to a quarter
+        spacing). The longest arc is matched; the others are met again as the ring's
+        seeds merge with them (Fig. 6b), which pairs them with their own slots.
+        """
+        ang = np.arctan2(rel[:, 1], rel[:, 0])
+        gaps = np.mod(np.diff(ang), 2 * np.pi)
+        cut = np.flatnonzero(gaps > self.arc_gap) + 1
+        if len(cut) == 0:
+            return nb, rel
+        bounds = np.r_[0, cut, len(nb)]
+        q = int(np.argmax(np.diff(bounds)))
+        sel = slice(int(bounds[q]), int(bounds[q + 1]))
+        return nb[sel], rel[sel]
+
+    def try_larger(self, s: int) -> bool:
+        """Place seed ``s`` as a larger kind it misses (:meth:`missing_larger`); True when placed."""
+        kinds = self.missing_larger(s)
+        if not kinds:
+            return False
+        own = int(self.kind[s])
+        ox, oy = self.xy[s]
+        for b in kinds:
+            if not self.kind_has_candidates[b]:
+                continue
+            self.kind[s] = b
+            pick = self.choose(s)
+            if pick is not None and self.place(s, *pick, reach=self.p.canopy_reach * self.l):
+                return True
+            self.kind[s] = own
+            if self.xy[s] != (ox, oy):
+                self._move(s, ox, oy)
+        return False
+
+    def try_smaller(self, s: int) -> bool:
+        """Place seed ``s``, whose element crossed a boundary stroke, as a smaller kind; True when placed.
+
+        Not in the paper, whose boundary tool only stops growth. A seed of a large kind
+        by the region's edge or a boundary stroke, where its element would reach across,
+        died and left a gap the size of that element, which nothing filled: a closed
+        stroke around stones with pebbles was filled to 0.83-0.87 of its inside (the
+        inside away from the stroke at the exemplar's density). The seed is tried as
+        each smaller kind, largest first, as :meth:`try_larger` tries larger ones.
+        Only at strokes: at the region's edge, which crops the pattern as the
+        exemplar's frame does, the fidelity suite's three sizes lost a seed's worth
+        (nn[small>large] failed on seed 3 too).
+        """
+        own = int(self.kind[s])
+        if own < 0:
+            return False
+        lv = self.size_level
+        smaller = [b for b in range(self.n_kinds) if lv[b] < lv[own] and self.kind_has_candidates[b]]
+        smaller.sort(key=lambda b: -lv[b])
+        ox, oy = self.xy[s]
+        for b in smaller:
+            self.kind[s] = b
+            pick = self.choose(s)
+            if pick is not None and self.place(s, *pick):
+                return True
+            self.kind[s] = own
+            if self.xy[s] != (ox, oy):
+                self._move(s, ox, oy)
+        return False
+
+    def place(self, s: int, a: int, k: int, th: float, reach: float | None = None) -> bool:
+        """§5.4: replace seed ``s`` by reference ``a`` and put its unpaired ring out as seeds."""
+        p = self.p
+        if self.rep is not None and self.order:
+            # throttled poll of should_cancel, before this step changes anything (a seed
+            # that refuses its placements costs lookups but no growth step)
+            self.rep.tick(len(self.order))
+        r = int(self.ref_ids[a])
+        kind = int(self.ex_kind[r])
+        n_ring = int(self.rings["n"][a])
+        c, sn = math.cos(th), math.sin(th)
+        rel = self.rings["rel"][a, :n_ring]
+        nb = self._last_nb
+        if len(nb) >= 2 or (reach is not None and len(nb) >= 1):
+            self._fit_position(s, nb, rel, k, c, sn, reach)
+        x, y = self.xy[s]
+        rot = float(self.ex_rot[r]) + th
+        scale = float(self.ex_scale[r])
+        if p.jitter_rotation > 0:
+            rot += float(self.rng.uniform(-p.jitter_rotation, p.jitter_rotation))
+        if p.jitter_scale > 0:
+            scale *= float(1.0 + self.rng.uniform(-p.jitter_scale, p.jitter_scale))
+        # an element as close to one of its own kind (or another) as the reference never
+        # has them is refused, like the seeds of too_close_in_kind
+        if self.too_close_in_kind(x, y, kind, s, (ELEMENT,), placing=True):
+            return False
+        if self.several_sizes and not self.lean_ok(s, a, k, th, x, y, kind):
+            return False
+        g = self.element_geometry(kind, x, y, rot, scale)
+        # Not in the paper: an element must lie wholly inside the region and off the
+        # boundary strokes (the paper stops growth at them; an element whose centre is
+        # inside could still reach across).
+        if not self.fits_domain(g):
+            # (a boundary stroke, not the region's edge: see try_smaller)
+            self._out_of_domain = self.boundary is not None and bool(shapely.intersects(self.boundary, g))
+            return False
+        # Not in the paper: a placement that would overlap an element is refused (the
+        # seed dies), so that an exemplar without overlaps grows a pattern without any.
+        if p.avoid_overlaps and self.overlaps_any(g, kind, x, y, scale):
+            # Fixed mode without priorities: only where the slot is enclosed (at most
+            # ``nudge_open`` of its ring's slots unplaced). The nudge is for slots that
+            # closed in (fronts that met; with §5.1's priorities, low-priority seeds
+            # among placed ones). In the open front a nudged element is off the lattice,
+            # later seeds fit their positions to it (_fit_position) and the offset
+            # spreads until two fronts meet out of step: bricks seed 5 grew a seam half
+            # a course out of step (regularity 0.060 against 0.05) from 4 nudges with
+            # 2-4 of 6 slots placed. In rotation mode each element's turn moves its
+            # ring a little and the nudge keeps those overlaps from leaving holes
+            # (without it bricks rotate seeds 1, 2, 4 failed).
+            if (p.nudge_open is not None and self.mode_code == 0 and not self.use_prio
+                    and sum(self.state[o] == ELEMENT for o in self.adj[s]) < n_ring - p.nudge_open):
+                return False
+            moved = self._nudge(s, kind, x, y, rot, scale)
+            if moved is None:
+                return False
+            x, y, g = moved
+        self._unhigh(s)
+        self.state[s] = ELEMENT
+        self.kind[s] = kind
+        self.sub[s] = r
+        self.rot[s] = rot
+        self.scl[s] = scale
+        self.refslot[s] = a
+        self.frame[s] = th
+        self.geom[s] = g
+        self.color[s] = self._color(r) if self.want_color else None
+        if self.tile is not None:
+            self._sync(s)
+        self.order.append(s)
+        self.dirty.add(s)
+
+        ring_pos = np.empty((n_ring, 2))
+        ring_pos[:, 0] = x + c * rel[:, 0] - sn * rel[:, 1]
+        ring_pos[:, 1] = y + sn * rel[:, 0] + c * rel[:, 1]
+        if self.mode_code == 2 and p.flow_bend > 0:
+            rel = self._bent_ring(s, x, y, rel, ring_pos, c, sn)
+            c, sn = 1.0, 0.0
+            ring_pos[:, 0] = x + rel[:, 0]
+            ring_pos[:, 1] = y + rel[:, 1]
+        ring_kind = self.rings["kind"][a, :n_ring].tolist()
+        ring_xy = ring_pos.tolist()
+        slot_of: dict[int, int] = {}
+        for i, j in enumerate(nb.tolist()):
+            slot_of[j] = (k + i) % n_ring
+        paired = set(slot_of.values())
+        gap_min = self.ring_gap_min[a]
+        # New seeds (Fig. 2g) with the heuristics of Fig. 6 (b)-(d).
+        for j in range(n_ring):
+            if j in paired:
+                continue
+            cx, cy = ring_xy[j]
+            if not self.in_domain(cx, cy):
+                continue
+            if self.crosses_boundary((x, y), (cx, cy)):
+                self.fixed[s] = True  # Eq. 6: elements at user boundaries are constrained
+                continue
+            # (b) merge with an object within l_short
+            close = self.near(cx, cy, self.l_short)
+            close = [o for o in close if self.orig_of[o] != s]
+            if not close and self.too_close_in_kind(cx, cy, ring_kind[j], s):
+                continue
+            if close:
+                o = min(close, key=lambda o: (self.xy[o][0] - cx) ** 2 + (self.xy[o][1] - cy) ** 2)
+                if not self.has_edge(s, o):
+                    po = self.xy[o]
+                    if not self.crosses_edges(s, (x, y), o, po) and not self.crosses_boundary((x, y), po):
+                        self.add_edge(s, o)
+                        slot_of.setdefault(o, j)
+                continue
+            # (c) angle check against the neighbours already around s. The "original
+            # angle" is taken as the smaller of the two reference ring angles beside slot j.
+            ang = math.atan2(cy - y, cx - x)
+            too_close = False
+            for o in self.adj[s]:
+                d = abs(math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) - ang)
+                d = min(d, 2 * math.pi - d)
+                if d < 0.5 * gap_min[j]:
+                    too_close = True
+                    break
+            if too_close:
+                continue
+            # (d) edge collision
+            if self.crosses_edges(s, (x, y), None, (cx, cy)):
+                continue
+            t = self.new_object(cx, cy, ring_kind[j])
+            self.add_edge(s, t)
+            slot_of[t] = j
+        # (h) edges between consecutive ring members, and (e) extra seeds on long ones
+        self._ring_edges(s, a, slot_of, rel, c, sn)
+        # ring targets r_ji for the relaxation (§5.5)
+        tgt = {}
+        rel_l = rel.tolist()
+        for o, j in slot_of.items():
+            if o in self.adj[s]:
+                rx, ry = rel_l[j]
+                tgt[o] = (c * rx - sn * ry, sn * rx + c * ry)
+        self.target[s] = tgt
+        self.ring_n[s] = n_ring
+        return True
+
+    def _bent_ring(self, s: int, x: float, y: float, rel: np.ndarray, ring_pos: np.ndarray, c: float, sn: float) -> np.ndarray:
+        """The ring offsets turned with the flow field between the element and each slot.
+
+        Not in the paper: §5.3 turns the whole reference neighbourhood by the field at
+        the element being placed, so each of its ring members is predicted in that one
+        frame; where the field turns, the members ahead sit off the lattice that will be
+        grown there (their own neighbourhoods are turned by the field at them) and the
+        mismatch piles up as strain and holes. Each offset is turned further by
+        ``flow_bend`` times the field's turn from the element to the predicted slot (a
+        half: the chord of a curving row follows the field at its midpoint).
+
+        Returns the offsets in the plane's frame, shape (n_ring, 2).
+        """
+        pts = np.vstack([[x, y], ring_pos])
+        v = np.asarray(self.p.flow(pts), dtype=float)
+        a = np.arctan2(v[:, 1], v[:, 0])
+        self._flow_at[s] = float(a[0])  # for the frame carried on from s (``choose``)
+        d = a[1:] - a[0]
+        d = d - np.pi * np.round(d / np.pi)  # a line field: +-pi/2 (direction sign free)
+        t = math.atan2(sn, c) + self.p.flow_bend * d
+        ct, st = np.cos(t), np.sin(t)
+        return np.c_[ct * rel[:, 0] - st * rel[:, 1], st * rel[:, 0] + ct * rel[:, 1]]
+
+    def _nudge(self, s: int, kind: int, x: float, y: float, rot: float, scale: float) -> tuple[float, float, Any] | None:
+        """A place near ``(x, y)`` where the element of seed ``s`` overlaps nothing, or None.
+
+        Not in the paper (which does not test overlaps). In a tight tiling the slot a
+        seed fills is bounded by elements placed around it, each fitted to its own
+        neighbours; where they closed in by a little (a seed that waited for §5.1's
+        priority, or fronts that met), the element overlapped one of them, the seed died
+        and left a hole of a whole element (bricks with a priority). Up to 16 offsets of
+        at most ``nudge * l_short`` are tried, nearest first, with the checks of
+        :meth:`_fit_position`; the first that fits is taken.
+        """
+        reach = self.p.nudge * self.l_short
+        if reach <= 0:
+            return None
+        for f in (0.25, 0.5, 0.75, 1.0):
+            for q in range(4):
+                t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
+                nx, ny = x + f * reach * math.cos(t), y + f * reach * math.sin(t)
+                if not self.in_domain(nx, ny) or self.crosses_boundary((x, y), (nx, ny)):
+                    continue
+                if self.spray_area is not None and not shapely.contains_xy(self.spray_area, nx, ny):
+                    continue
+                if any(self.crosses_edges(s, (nx, ny), o, self.xy[o]) or self.crosses_boundary((nx, ny), self.xy[o]) for o in self.adj[s]):
+                    continue
+                if self.too_close_in_kind(nx, ny, kind, s, (ELEMENT,), placing=True):
+                    continue
+                g = self.element_geometry(kind, nx, ny, rot, scale)
+                if not self.fits_domain(g) or self.overlaps_any(g, kind, nx, ny, scale):
+                    continue
+                self._move(s, nx, ny)
+                return nx, ny, g
+        return None
+
+    def _fit_position(self, s: int, nb: np.ndarray, rel: np.ndarray, k: int, c: float, sn: float, reach: float | None = None) -> None:
+        """Move seed ``s`` to where the chosen ring fits its placed neighbours best.
+
+        Not in the paper, which keeps the seed where the element that made it put it:
+        the seed's position is then one neighbour's noisy ring offset, and the noise of
+        near-regular references adds up from element to element along the growth, so
+        rows wander and close up (§5.5 relaxes it only afterwards). The least-squares
+        position for the chosen ring, ``mean_i (x_i - R r_{f(i)})``, is the minimiser of
+        Eq. 5 for the new element alone with its neighbours held (Eq. 6). The move is
+        kept within ``fit_reach * l_short`` and within the region, boundaries and
+        connectivity.
+        """
+        n_ring = len(rel)
+        rel_l = rel.tolist()
+        xy = self.xy
+        fx = fy = 0.0
+        for i, o in enumerate(nb.tolist()):
+            rx, ry = rel_l[(k + i) % n_ring]
+            px, py = xy[o]
+            fx += px - (c * rx - sn * ry)
+            fy += py - (sn * rx + c * ry)
+        fx /= len(nb)
+        fy /= len(nb)
+        ox, oy = self.xy[s]
+        d2 = (fx - ox) ** 2 + (fy - oy) ** 2
+        if d2 <= (1e-9 * self.l) ** 2:
+            return  # already there (a perfect lattice): nothing to check
+        if reach is None:
+            reach = self.p.fit_reach * self.l_short
+        if d2 > reach**2 or not self.in_domain(fx, fy):
+            return
+        if self.crosses_boundary((ox, oy), (fx, fy)):
+            return
+        if self.spray_area is not None and not shapely.contains_xy(self.spray_area, fx, fy):
+            return
+        for o in self.adj[s]:
+            if self.crosses_edges(s, (fx, fy), o, self.xy[o]) or self.crosses_boundary((fx, fy), self.xy[o]):
+                return
+        self._move(s, fx, fy)
+
+    def _ring_edges(self, s: int, a: int, slot_of: dict[int, int], rel: np.ndarray, c: float, sn: float) -> None:
+        x, y = self.xy[s]
+        nbrs = list(self.adj[s])
+        if len(nbrs) < 2:
+            return
+        angs = [math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) for o in nbrs]
+        order = sorted(range(len(nbrs)), key=lambda q: angs[q])
+        m = len(order)
+        for q in range(m):
+            ia, ib = order[q], order[(q + 1) % m]
+            oa, ob = nbrs[ia], nbrs[ib]
+            gap = (angs[ib] - angs[ia]) % (2 * math.pi)
+            if m == 2 and q == 1:
+                break
+            if gap <= 1e-9 or gap >= math.pi - 1e-9 or self.has_edge(oa, ob):
+                continue
+            pa = self.xy[oa]
+            pb = self.xy[ob]
+            ja, jb = slot_of.get(oa), slot_of.get(ob)
+            if ja is not None and jb is not None:
+                orig = float(np.hypot(*(rel[ja] - rel[jb])))
+            else:
+                # Fig. 6e compares with the corresponding edge of the reference ring; a
+                # pair that does not come from this ring has none: take the ring's
+                # longest edge (its mean made extra seeds in every gap a reference with
+                # long and short edges has, e.g. between clusters)
+                orig = float(self.ring_edge_max[a])
+            L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+            if L > 1.5 * orig:
+                # (e) l_long = 1.5 * original length: an extra seed on the bisector, at the
+                # average length of the two adjacent edges, without a symbol id
+                mid = angs[ia] + 0.5 * gap
+                la = math.hypot(pa[0] - x, pa[1] - y)
+                lb = math.hypot(pb[0] - x, pb[1] - y)
+                d = 0.5 * (la + lb)
+                ex, ey = float(x + d * math.cos(mid)), float(y + d * math.sin(mid))
+                if not self.in_domain(ex, ey) or self.crosses_boundary((x, y), (ex, ey)):
+                    continue
+                if self.near(ex, ey, self.l_short):
+                    continue
+                if self.crosses_edges(s, (x, y), None, (ex, ey)):
+                    continue
+                t = self.new_object(ex, ey, -1)
+                self.add_edge(s, t)
+                for o, po in ((oa, pa), (ob, pb)):
+                    # (f) edges that would collide are left out; the paper instead joins
+                    # the objects found inside triangle (e_tar, s0, s1), which Fig. 6f
+                    # shows but the text does not specify.
+                    if not self.crosses_edges(o, po, t, (ex, ey)) and not self.crosses_boundary(po, (ex, ey)):
+                        self.add_edge(o, t)
+            elif not _skewed((x, y), pa, pb):
+                # the new edge closes triangle (s, a, b); like §4 we keep no skewed triangle
+                if not self.crosses_edges(oa, pa, ob, pb) and not self.crosses_boundary(pa, pb):
+                    self.add_edge(oa, ob)

@@ -1,0 +1,145 @@
+"""The windowed least-squares relaxation of Eq. 5 (Ijiri et al. 2008, §5.5) as the
+grower runs it; the solver is :func:`strew.grow._relax.relax_positions`.
+
+Split out of :mod:`strew.grow._growth` (issue 15).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import shapely
+
+from ._objects import (
+    DEAD,
+    ELEMENT,
+)
+from ._relax import relax_positions
+
+
+class _RelaxWindow:
+    """Relaxation of the elements placed since the last window (§5.5)."""
+
+    def ring_target(self, i: int, j: int) -> tuple[float, float]:
+        t = self.target[i]
+        if t is not None and j in t:
+            return t[j]
+        # §5.5: seeds, and elements that lost or gained an edge, use their current shape.
+        # We apply that per edge: an element keeps the reference offsets of the edges it
+        # has from its ring and takes the current offset for the others only. (Applied
+        # per element, hardly any element qualifies: one ring slot merged or dropped by
+        # the heuristics of Fig. 6, or one edge added later by a neighbour, and Eq. 5
+        # had no effect at all.)
+        xj, xi = self.xy[j], self.xy[i]
+        return (xj[0] - xi[0], xj[1] - xi[1])
+
+    def relax_window(self) -> None:
+        if self.rep is not None:
+            self.rep.tick(len(self.order))
+        win = {i for i in self.dirty if self.state[i] != DEAD}
+        self.dirty = set()
+        for _ in range(self.p.relax_hops):
+            win |= {j for i in win for j in self.adj[i]}
+        win = [i for i in win if not self.fixed[i]]
+        if not win:
+            return
+        wset = set(win)
+        # the terms of Eq. 5 over the window, as local indices (ring_target inlined: this
+        # loop runs for every edge of every window)
+        nodes = sorted(wset | {j for i in win for j in self.adj[i]})
+        local = {g: q for q, g in enumerate(nodes)}
+        xy = self.xy
+        targets = self.target
+        adj = self.adj
+        src: list[int] = []
+        dst: list[int] = []
+        off: list[float] = []
+        for i in win:
+            ti = targets[i]
+            xi, yi = xy[i]
+            li = local[i]
+            for j in adj[i]:
+                lj = local[j]
+                src.append(li)
+                dst.append(lj)
+                t = ti.get(j) if ti is not None else None
+                if t is None:
+                    xj, yj = xy[j]
+                    off += (xj - xi, yj - yi)
+                else:
+                    off += t
+                if j not in wset:
+                    src.append(lj)
+                    dst.append(li)
+                    tj = targets[j]
+                    t = tj.get(i) if tj is not None else None
+                    if t is None:
+                        xj, yj = xy[j]
+                        off += (xi - xj, yi - yj)
+                    else:
+                        off += t
+        if not src:
+            return
+        pos = self.pos[nodes]
+        free = np.fromiter((g in wset for g in nodes), dtype=bool, count=len(nodes))
+        new = relax_positions(pos, np.array(src, dtype=np.intp), np.array(dst, dtype=np.intp), np.array(off).reshape(-1, 2), free)
+        if self.freeze_relaxed:
+            for g in win:
+                if self.state[g] == ELEMENT:
+                    self.fixed[g] = True
+        tiny = 1e-9 * self.l
+        moved = []
+        new_geom: dict[int, Any] = {}
+        for g in win:
+            nx, ny = float(new[local[g], 0]), float(new[local[g], 1])
+            ox, oy = self.xy[g]
+            if abs(nx - ox) + abs(ny - oy) <= tiny:
+                continue
+            # relaxation never takes a centre out of the region or across a boundary stroke
+            if not self.in_domain(nx, ny) or self.crosses_boundary((ox, oy), (nx, ny)):
+                continue
+            # nor an element's centre out of the spray area (§5.1: elements grow within it)
+            if self.spray_area is not None and self.state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
+                continue
+            moved.append(g)
+        # the moved elements' new outlines, in one shapely call per kind
+        els = [g for g in moved if self.state[g] == ELEMENT]
+        if els:
+            for g, ng in zip(els, self.element_geometries(els, new[[local[g] for g in els]])):
+                new_geom[g] = ng
+            # nor an element across the region's edge or a boundary stroke
+            fits = self.fits_domain_many([new_geom[g] for g in els])
+            bad = {g for g, ok in zip(els, fits.tolist()) if not ok}
+            if bad:
+                moved = [g for g in moved if g not in bad]
+        old = {g: (*self.xy[g], self.geom[g]) for g in moved}
+        for g in moved:
+            self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
+            if self.state[g] == ELEMENT:
+                self.geom[g] = new_geom[g]
+                if self.tile is not None:
+                    self._sync(g)
+        if not self.p.avoid_overlaps:
+            return
+        # Keep the no-overlap guarantee: elements that now overlap go back to where they
+        # were, with those they overlap, until no overlap is left (the positions before
+        # the relaxation had none, so this ends).
+        check = [g for g in moved if self.state[g] == ELEMENT]
+        while check:
+            back: set[int] = set()
+            for g, hits in self.overlapping_many(check).items():
+                back.add(g)
+                back.update(self.orig_of[h] for h in hits if self.orig_of[h] in old)
+            back = {g for g in back if self.xy[g] != old[g][:2]}
+            for g in back:
+                self._move(g, old[g][0], old[g][1])
+                self.geom[g] = old[g][2]
+                if self.tile is not None:
+                    self._sync(g)
+            oo = self.orig_of
+            check = [g for g in moved if self.state[g] == ELEMENT and g not in back and any(oo[h] in back for h in self.adj[g])] + sorted(back)
+            if not back:
+                break
+
+    # -- main loop --------------------------------------------------------------------------
