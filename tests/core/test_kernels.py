@@ -44,6 +44,11 @@ def _seg_hit(s, t):  # pragma: no cover - numba
 
 
 @numba.njit
+def _seg_cross(s, t):  # pragma: no cover - numba
+    return geometry.seg_cross(s[0], s[1], s[2], s[3], t[0], t[1], t[2], t[3])
+
+
+@numba.njit
 def _where(p, v, rings):  # pragma: no cover - numba
     return geometry.where(p[0], p[1], v, rings, 0, len(rings) - 1), geometry.inside(p[0], p[1], v, rings, 0, len(rings) - 1)
 
@@ -79,6 +84,44 @@ def test_segment_intersection_never_misses_a_contact(a, b, c, d):
         assert hit  # touching and crossing count: a contact is never missed
     elif gap > 1e-6 * (1 + max(map(abs, (*a, *b, *c, *d)))):
         assert not hit  # clearly apart: no false alarm beyond the tolerance
+
+
+small = st.tuples(st.integers(-4, 4), st.integers(-4, 4)).map(lambda p: (float(p[0]), float(p[1])))
+
+
+@given(small, small, small, small)
+def test_strict_crossing_is_shapely_crosses_on_exact_coordinates(a, b, c, d):
+    """On small integers every orientation is exact: the strict rule (Ijiri et al.
+    Fig. 6 (d)) says yes exactly when the segments cross at one point interior to both;
+    touching, an end on the other segment and collinear overlap are no."""
+    if a == b or c == d:
+        return
+    ab, cd = shapely.LineString([a, b]), shapely.LineString([c, d])
+    one_point = ab.intersection(cd).geom_type == "Point"
+    interior = one_point and all(shapely.Point(p) != ab.intersection(cd) for p in (a, b, c, d))
+    assert _seg_cross(np.array([*a, *b]), np.array([*c, *d])) == interior
+    assert _seg_cross(np.array([*c, *d]), np.array([*a, *b])) == interior
+
+
+@given(point, point, point, point)
+def test_strict_crossing_matches_the_growth_rule_and_never_touches(a, b, c, d):
+    from strew.grow._growth import _segments_cross
+
+    s, t = np.array([*a, *b]), np.array([*c, *d])
+    cross = _seg_cross(s, t)
+    assert cross == _segments_cross(a, b, c, d)  # the same arithmetic as the grower's oracle
+    if cross:
+        assert _seg_hit(s, t)  # a crossing is a contact for the lenient rule too
+    if a != b and c != d:
+        ab, cd = shapely.LineString([a, b]), shapely.LineString([c, d])
+        scale = 1 + max(map(abs, (*a, *b, *c, *d)))
+        if cross:  # never a false alarm beyond rounding
+            assert shapely.distance(ab, cd) <= 1e-9 * scale
+        # clearly crossing, away from every end: found
+        if ab.crosses(cd) and ab.intersection(cd).geom_type == "Point":
+            x = ab.intersection(cd)
+            if min(x.distance(shapely.Point(p)) for p in (a, b, c, d)) > 1e-6 * scale:
+                assert cross
 
 
 polygons = st.lists(point, min_size=3, max_size=9).map(lambda pts: shapely.Polygon(pts).buffer(0)).filter(

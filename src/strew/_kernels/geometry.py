@@ -7,14 +7,15 @@ each ring closed (its last vertex repeats its first), ring ``r`` spanning
 The predicates are robust in one direction: an orientation or a crossing within the
 relative tolerance :data:`TOL` is *too close to call* and reported as touching, so a
 caller that treats touching as a collision never accepts a doubtful case (see
-``strew.pack._fit``).
+``strew.pack._fit``). :func:`seg_cross` is the strict opposite (only crossings interior
+to both segments count), for the edge collision of ``strew.grow``.
 """
 
 from __future__ import annotations
 
 import numba
 
-__all__ = ["TOL", "seg_dist2", "seg_dist2_min", "orient", "seg_hit", "inside", "where"]
+__all__ = ["TOL", "seg_dist2", "seg_dist2_min", "orient", "seg_hit", "seg_cross", "inside", "where"]
 
 # Relative tolerance of the exact tests: an orientation whose value is within TOL of the
 # magnitude of its two products, or a crossing within TOL of the point it is compared
@@ -90,6 +91,30 @@ def seg_hit(ax, ay, bx, by, cx, cy, dx, dy):  # pragma: no cover - numba
     # a proper crossing, or a zero orientation with overlapping boxes (touching,
     # collinear, or too close to call): reject (a cancellation only makes it stricter)
     return d3 * d4 <= 0
+
+
+@numba.njit(**_SMALL)
+def seg_cross(px, py, qx, qy, ax, ay, bx, by):  # pragma: no cover - numba
+    """Segments pq and ab cross at a point interior to both (strict: touching, an end on
+    the other segment and collinear overlap do not count).
+
+    The opposite rule to :func:`seg_hit`: it serves the edge collision of a growth
+    (Ijiri et al. 2008, Fig. 6 (d)), where edges that share an end or meet at one must
+    both stay. Exact sign tests of four orientations, no tolerance: a case too close to
+    call goes to whichever side its rounding gives (``strew.grow`` needs the same bytes
+    for the same seed, not robustness here).
+    """
+    ex = bx - ax
+    ey = by - ay
+    d1 = ex * (py - ay) - ey * (px - ax)
+    d2 = ex * (qy - ay) - ey * (qx - ax)
+    if not ((d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0)):
+        return False
+    fx = qx - px
+    fy = qy - py
+    d3 = fx * (ay - py) - fy * (ax - px)
+    d4 = fx * (by - py) - fy * (bx - px)
+    return (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0)
 
 
 @numba.njit(**_SMALL)

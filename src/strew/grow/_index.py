@@ -36,6 +36,8 @@ from collections.abc import Sequence
 import numba
 import numpy as np
 
+from .._kernels.geometry import seg_cross
+
 __all__ = ["GrowIndex"]
 
 _HX = 73856093
@@ -103,8 +105,6 @@ def _cross_kernel(px, py, qx, qy, ia, ib, h, head, ent, ends, alive, pos):  # pr
     mask = head.shape[0] - 1
     lx, hx = (px, qx) if px <= qx else (qx, px)
     ly, hy = (py, qy) if py <= qy else (qy, py)
-    fx = qx - px
-    fy = qy - py
     for cx in range(math.floor(lx / h), math.floor(hx / h) + 1):
         for cy in range(math.floor(ly / h), math.floor(hy / h) + 1):
             e = head[((cx * _HX) ^ (cy * _HY)) & mask]
@@ -116,19 +116,8 @@ def _cross_kernel(px, py, qx, qy, ia, ib, h, head, ent, ends, alive, pos):  # pr
                     if alive[d] and ou != ia and ou != ib and ov != ia and ov != ib:
                         u = ends[d, 0]
                         v = ends[d, 1]
-                        ax = pos[u, 0]
-                        ay = pos[u, 1]
-                        bx = pos[v, 0]
-                        by = pos[v, 1]
-                        ex = bx - ax
-                        ey = by - ay
-                        d1 = ex * (py - ay) - ey * (px - ax)
-                        d2 = ex * (qy - ay) - ey * (qx - ax)
-                        if (d1 > 0 and d2 < 0) or (d1 < 0 and d2 > 0):
-                            d3 = fx * (ay - py) - fy * (ax - px)
-                            d4 = fx * (by - py) - fy * (bx - px)
-                            if (d3 > 0 and d4 < 0) or (d3 < 0 and d4 > 0):
-                                return True
+                        if seg_cross(px, py, qx, qy, pos[u, 0], pos[u, 1], pos[v, 0], pos[v, 1]):
+                            return True
                 e = ent[e, 3]
     return False
 
