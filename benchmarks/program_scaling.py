@@ -2,18 +2,30 @@
 
 Induces the planar map of n random segments of fixed length in a square whose area grows
 with n (the density of crossings stays the same), for n over a 10x range; prints n, CPU
-seconds, the number of cells, the peak memory traced by ``tracemalloc`` per segment (the
-Python heap: numpy arrays and Python objects; GEOS' own C allocations are not traced)
-and the exponent fitted to log time against log n. Targets: exponent at most 1.15, under
-2 KB per segment.
+seconds, the number of cells, and the peak memory per segment two ways:
 
-Run: ``python benchmarks/program_scaling.py [--quick]``.
+- ``rss``: the peak resident set (``resource.getrusage(...).ru_maxrss``) of a fresh
+  subprocess that builds the curves and induces the map, minus that of the same subprocess
+  that builds the curves only (the baseline: imports, warm-up, the input). This counts
+  GEOS' own C allocations, which ``tracemalloc`` does not see;
+- ``traced``: the peak traced by ``tracemalloc`` (the Python heap only), as before.
+
+and the exponent fitted to log time against log n. Targets: exponent at most 1.15, under
+2 KB per segment (rss).
+
+``--against REV`` also runs the planar map of git revision REV (its
+``src/strew/program/_planar_map.py``, loaded beside the installed strew) in the same run,
+for before/after figures.
+
+Run: ``python benchmarks/program_scaling.py [--quick] [--against REV]``.
 """
 
 from __future__ import annotations
 
+import json
+import subprocess
 import sys
-import time
+import tempfile
 import tracemalloc
 from pathlib import Path
 
@@ -23,6 +35,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 from _runner import Bench, parse_args  # noqa: E402
 
 from strew.program import Curve, Curves, induce  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def random_segments(n: int, seed: int = 0) -> Curves:
@@ -34,30 +48,81 @@ def random_segments(n: int, seed: int = 0) -> Curves:
     return Curves(tuple(Curve(np.stack([a, b])) for a, b in zip(p, q)))
 
 
+_CHILD = r"""
+import json, resource, sys, time
+sys.path.insert(0, {bench!r})
+from program_scaling import random_segments
+mod = {module!r}
+if mod:
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("pm_against", mod)
+    pm_mod = importlib.util.module_from_spec(spec)
+    sys.modules["pm_against"] = pm_mod
+    spec.loader.exec_module(pm_mod)
+    induce = pm_mod.induce
+else:
+    from strew.program import induce
+induce(random_segments(200))
+curves = random_segments({n})
+out = {{}}
+if {run}:
+    t0 = time.process_time()
+    pm = induce(curves)
+    out = dict(cpu=time.process_time() - t0, v=pm.n_vertices, e=pm.n_edges, f=pm.n_faces)
+out["maxrss_kb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+print(json.dumps(out))
+"""
+
+
+def child(n: int, run: bool, module: str = "") -> dict:
+    code = _CHILD.format(bench=str(Path(__file__).parent), module=module, n=n, run=run)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def against_module(rev: str, tmp: Path) -> str:
+    """REV's _planar_map.py, made importable beside the installed strew (absolute imports)."""
+    src = subprocess.run(["git", "-C", str(ROOT), "show", f"{rev}:src/strew/program/_planar_map.py"],
+                         capture_output=True, text=True, check=True).stdout
+    src = src.replace("from .._errors", "from strew._errors").replace("from ._curves", "from strew.program._curves")
+    src = src.replace("from ._context", "from strew.program._context")
+    path = tmp / f"planar_map_{rev}.py"
+    path.write_text(src)
+    return str(path)
+
+
 def main() -> None:
-    args = parse_args(__doc__.splitlines()[0])
-    ns = [2000, 6000, 20000] if args.quick else [4000, 12000, 40000]
+    args = parse_args(__doc__.splitlines()[0], extra=lambda p: p.add_argument("--against", default=None,
+                      help="git revision whose planar map is measured in the same run"))
+    ns = [2000, 6000, 20000] if args.quick else [10000, 30000, 100000]
     induce(random_segments(200))
-    bench = Bench("program_scaling", "planar map of n random segments: time and memory vs n", baseline="targets: exponent 1.15, 2 KB/segment", json_path=args.json)
-    ts = []
-    for n in ns:
-        curves = random_segments(n)
-        t0 = time.process_time()
-        pm = induce(curves)
-        t = time.process_time() - t0
-        ts.append(t)
-        del pm
-        tracemalloc.start()
-        pm = induce(curves)
-        _, peak = tracemalloc.get_traced_memory()
-        tracemalloc.stop()
-        kb = peak / n / 1024
-        bench.row(f"n {n}", cpu_s=t, vertices=pm.n_vertices, edges=pm.n_edges, faces=pm.n_faces, peak_kb_per_segment=kb)
-        print(f"n {n:7d}  cpu {t:7.2f} s  V {pm.n_vertices}  E {pm.n_edges}  F {pm.n_faces}  peak {kb:.2f} KB/segment", flush=True)
-        del pm
-    k = np.polyfit(np.log(ns), np.log(ts), 1)[0]
-    print(f"fitted exponent (log cpu time vs log n, n {ns[0]}..{ns[-1]}): {k:.3f}  (target <= 1.15)")
-    bench.row("fit", exponent=float(k))
+    bench = Bench("program_scaling", "planar map of n random segments: time and memory vs n",
+                  baseline=f"targets: exponent 1.15, 2 KB/segment (rss); against {args.against or 'nothing'}",
+                  json_path=args.json)
+    tmp = Path(tempfile.mkdtemp())
+    codes = [("now", "")] + ([(args.against, against_module(args.against, tmp))] if args.against else [])
+    for name, module in codes:
+        ts = []
+        for n in ns:
+            base = child(n, False, module)["maxrss_kb"]
+            got = child(n, True, module)
+            rss = (got["maxrss_kb"] - base) / n
+            ts.append(got["cpu"])
+            traced = float("nan")
+            if not module:
+                curves = random_segments(n)
+                tracemalloc.start()
+                pm = induce(curves)
+                traced = tracemalloc.get_traced_memory()[1] / n / 1024
+                tracemalloc.stop()
+                del pm, curves
+            bench.row(f"{name} n {n}", cpu_s=got["cpu"], vertices=got["v"], edges=got["e"], faces=got["f"],
+                      rss_kb_per_segment=rss, traced_kb_per_segment=traced)
+            print(f"{name:>8s} n {n:7d}  cpu {got['cpu']:7.2f} s  V {got['v']}  E {got['e']}  F {got['f']}  "
+                  f"peak rss {rss:.2f} KB/segment  traced {traced:.2f}", flush=True)
+        k = np.polyfit(np.log(ns), np.log(ts), 1)[0]
+        print(f"{name:>8s} fitted exponent (log cpu time vs log n, n {ns[0]}..{ns[-1]}): {k:.3f}  (target <= 1.15)")
+        bench.row(f"{name} fit", exponent=float(k))
     bench.finish()
 
 

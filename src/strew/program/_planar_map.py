@@ -435,6 +435,124 @@ def _empty_topology(grid: float) -> _Topology:
     )
 
 
+#: Above this many source segments the curves are noded strip by strip (issue 19.6): GEOS'
+#: overlay holds about 3 KB per segment while it nodes, the planar map's memory peak.
+CHUNK_SEGMENTS = 8192
+
+
+def _noded_segments(noded: Any, g: float) -> tuple[np.ndarray, np.ndarray]:
+    """The non-degenerate segments ``(a_ij, b_ij)``, each (m, 2) int64 grid coordinates,
+    of GEOS' noded linework ``noded``."""
+    coords, idx = shapely.get_coordinates(shapely.get_parts(noded), return_index=True)
+    ij = np.rint(coords / g).astype(np.int64)
+    same = idx[1:] == idx[:-1]
+    a, b = ij[:-1][same], ij[1:][same]
+    nz = np.any(a != b, axis=1)
+    return a[nz], b[nz]
+
+
+def _node_in_strips(a: np.ndarray, b: np.ndarray, g: float) -> tuple[np.ndarray, np.ndarray]:
+    """Snap-round and node segments strip by strip (issue 19.6: memory).
+
+    GEOS' overlay nodes the whole linework at once and holds about 3 KB per segment while it
+    does so (4.4 KB per segment of peak RSS in all at 40k random segments). Here each
+    segment is *owned* by the vertical strip its midpoint falls in (strips of about
+    ``CHUNK_SEGMENTS / 2`` segments), and each strip is noded on its own with every segment
+    whose x-range comes within 2 grid pixels of its owned segments' x-range. Every segment
+    that crosses an owned segment, and every vertex or crossing whose hot pixel an owned
+    segment passes through, is then in the strip's input, so GEOS' snap rounding (hot
+    pixels, a local rule) nodes an owned segment exactly as one global run would; a strip
+    keeps the noded pieces lying along an owned segment. A piece shared by two strips (two
+    overlapping segments of two owners) is kept once. Segments are never cut, so the result
+    is the global noding, not an approximation of it.
+
+    Parameters
+    ----------
+    a, b : (n, 2) int64
+        Source segments in grid coordinates.
+    g : float
+        The grid.
+
+    Returns
+    -------
+    na, nb : (s, 2) int64
+        Noded segments, each once (``na`` <= ``nb`` lexicographically).
+    """
+    n = len(a)
+    k = max(2, int(np.ceil(n / (CHUNK_SEGMENTS / 2))))
+    xlo, xhi = np.minimum(a[:, 0], b[:, 0]), np.maximum(a[:, 0], b[:, 0])
+    mid2 = a[:, 0] + b[:, 0]  # twice the midpoint's x
+    order = np.argsort(mid2, kind="stable")
+    cuts = np.arange(k + 1) * n // k  # strip s owns the segments of ranks cuts[s]:cuts[s + 1]
+    owner = np.empty(n, dtype=np.int64)
+    owner[order] = np.repeat(np.arange(k), np.diff(cuts))
+    # segments sorted by left end, to find each strip's context by x-range overlap
+    by_lo = np.argsort(xlo, kind="stable")
+    lo_sorted = xlo[by_lo]
+    tol = 4.0 * g
+    outs: list[np.ndarray] = []
+    for s in range(k):
+        own = order[cuts[s] : cuts[s + 1]]
+        if not len(own):
+            continue
+        x0, x1 = int(xlo[own].min()) - 2, int(xhi[own].max()) + 2
+        cand = by_lo[: np.searchsorted(lo_sorted, x1, side="right")]
+        sel = np.sort(cand[xhi[cand] >= x0])
+        sa, sb = a[sel] * g, b[sel] * g
+        noded = shapely.union_all(shapely.linestrings(np.stack([sa, sb], axis=1)), grid_size=g)
+        na, nb = _noded_segments(noded, g)
+        del noded
+        if not len(na):
+            continue
+        # the pieces along an owned segment (as in _induce's attribution, step 3)
+        pa, pb = na * g, nb * g
+        tree = shapely.STRtree(shapely.linestrings(np.stack([sa, sb], axis=1)))
+        mids = shapely.points((pa + pb) / 2)
+        qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
+        ok = (_point_segment_distance(pa[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(pb[qi], sa[qj], sb[qj]) <= tol)
+        qi, qj = qi[ok], qj[ok]
+        hit = np.zeros(len(na), dtype=bool)
+        hit[qi] = True
+        keep = np.zeros(len(na), dtype=bool)
+        keep[qi[owner[sel[qj]] == s]] = True
+        miss = np.flatnonzero(~hit)
+        if len(miss):
+            mi, mj = tree.query_nearest(mids[miss], return_distance=False)
+            keep[miss[mi[owner[sel[mj]] == s]]] = True
+        del tree, mids, qi, qj, ok, hit, pa, pb, sa, sb
+        seg = np.c_[na[keep], nb[keep]]
+        swap = (seg[:, 0] > seg[:, 2]) | ((seg[:, 0] == seg[:, 2]) & (seg[:, 1] > seg[:, 3]))
+        seg[swap] = seg[swap][:, [2, 3, 0, 1]]
+        outs.append(seg)
+    seg = np.unique(np.concatenate(outs), axis=0) if outs else np.zeros((0, 4), np.int64)
+    return np.ascontiguousarray(seg[:, :2]), np.ascontiguousarray(seg[:, 2:])
+
+
+def _ring_edges(source: np.ndarray, target: np.ndarray, n_v: int) -> np.ndarray:
+    """Indices of the edges left after pruning dangles again and again (an edge with an end
+    of degree one cannot bound a face), in increasing order."""
+    deg = np.bincount(source, minlength=n_v) + np.bincount(target, minlength=n_v)
+    alive = np.ones(len(source), dtype=bool)
+    inc_off = np.r_[0, np.cumsum(deg)]
+    inc = np.argsort(np.concatenate([source, target]), kind="stable") % max(len(source), 1)
+    stack = np.flatnonzero(deg == 1).tolist()
+    deg_l = deg.tolist()
+    src_l, tgt_l = source.tolist(), target.tolist()
+    while stack:
+        v = stack.pop()
+        if deg_l[v] != 1:
+            continue
+        for e in inc[inc_off[v] : inc_off[v + 1]].tolist():
+            if alive[e]:
+                alive[e] = False
+                for w in (src_l[e], tgt_l[e]):
+                    deg_l[w] -= 1
+                    if deg_l[w] == 1:
+                        stack.append(w)
+                break
+    return np.flatnonzero(alive)
+
+
 def _induce(curves: Curves, grid: float) -> _Topology:
     g = grid
     # 1. source segments, one row per segment of every curve
@@ -481,18 +599,16 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         cy = np.minimum((k * (c[:, 1] - lo[1]) / span[1]).astype(np.int64), k - 1)
         src_lines = src_lines[np.lexsort((np.where(cy % 2 == 1, -cx, cx), cy))]
         del b, c, cx, cy
-    noded = shapely.union_all(src_lines, grid_size=g)
-    del src_lines
-    coords, idx = shapely.get_coordinates(shapely.get_parts(noded), return_index=True)
-    del noded
-    if len(coords) == 0:
+    if len(sa) > CHUNK_SEGMENTS:
+        del src_lines
+        na_ij, nb_ij = _node_in_strips(np.rint(sa / g).astype(np.int64), np.rint(sb / g).astype(np.int64), g)
+    else:
+        noded = shapely.union_all(src_lines, grid_size=g)
+        del src_lines
+        na_ij, nb_ij = _noded_segments(noded, g)
+        del noded
+    if len(na_ij) == 0:
         return _empty_topology(g)
-    ij = np.rint(coords / g).astype(np.int64)
-    same = idx[1:] == idx[:-1]
-    na_ij, nb_ij = ij[:-1][same], ij[1:][same]
-    nz = np.any(na_ij != nb_ij, axis=1)
-    na_ij, nb_ij = na_ij[nz], nb_ij[nz]
-    del coords, idx, ij, same, nz
     na, nb = na_ij * g, nb_ij * g
     n_seg = len(na)
     if n_seg == 0:
@@ -664,7 +780,14 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     # segment finds its left and right faces (a point in no bounded face is in face 0)
     polys: list[Any] = []
     if n_e:
-        lines = shapely.linestrings(edge_points.all_rows(), indices=np.repeat(np.arange(n_e), edge_points.lengths()))
+        # GEOS' polygonizer holds about 800 bytes per edge it is given, and drops the
+        # dangles (edges with an end of degree one) itself: they are pruned here first, so
+        # that it gets only the edges that bound faces (the same polygons; issue 19.6)
+        ring = _ring_edges(edge_source, edge_target, len(vertex_ij))
+        rows = edge_points.lengths()[ring]
+        sel = np.repeat(eoff[:-1][ring], rows) + (np.arange(int(rows.sum())) - np.repeat(np.cumsum(rows) - rows, rows))
+        lines = shapely.linestrings(edge_points.flat[sel] * g, indices=np.repeat(np.arange(len(ring)), rows))
+        del rows, sel, ring
         polys = [p for p in shapely.get_parts(shapely.polygonize(lines)) if p.area > 0]
         del lines
     left = np.zeros(n_e, dtype=np.int64)
@@ -688,12 +811,15 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         nl = np.c_[d[:, 1], -d[:, 0]]
         probes = np.concatenate([mid + off * nl, mid - off * nl])
         ptree = shapely.STRtree(parr)
-        qi, qf = ptree.query(shapely.points(probes), predicate="within")
-        del ptree, p0, p1, d, mid, nl, b4, cxy, parr
+        del p0, p1, d, mid, nl, b4, cxy, parr
         owner = np.zeros(len(probes), dtype=np.int64)
-        # nested faces cannot both contain a probe (holes), but keep the smallest anyway
-        order = np.argsort(-areas[qf], kind="stable")
-        owner[qi[order]] = qf[order] + 1
+        # probes in batches: a shapely point costs about 100 bytes (issue 19.6, memory)
+        for c0 in range(0, len(probes), CHUNK_SEGMENTS):
+            qi, qf = ptree.query(shapely.points(probes[c0 : c0 + CHUNK_SEGMENTS]), predicate="within")
+            # nested faces cannot both contain a probe (holes), but keep the smallest anyway
+            order = np.argsort(-areas[qf], kind="stable")
+            owner[c0 + qi[order]] = qf[order] + 1
+        del ptree
         left, right = owner[:n_e], owner[n_e:]
 
     # 7. face labels from side labels; transparent edges join faces (union-find)
@@ -720,18 +846,19 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     face_labels = [EMPTY] + [frozenset(comp_labels.get(find(f), ())) for f in range(1, n_f)]
 
     # 8. vertex labels: marks and named points lying on a vertex
-    vlabels: list[set[str]] = [set() for _ in range(len(vertex_ij))]
+    # only the labelled vertices get a set (an empty set per vertex cost 216 bytes, 19.6)
+    vlabels: dict[int, set[str]] = {}
     named = [(x, y, frozenset([name])) for name, (x, y) in curves.points.items()] + list(curves.marks)
     if named and len(vertex_ij):
         mij = np.rint(np.array([(x, y) for x, y, _ in named]) / g).astype(np.int64)
         vk, mk = _match_rows(vertex_ij, mij)
         for k, m in zip(vk.tolist(), mk.tolist()):
-            vlabels[k].update(named[m][2])
+            vlabels.setdefault(k, set()).update(named[m][2])
 
     return _Topology(
         g,
         vertex_ij,
-        tuple(frozenset(s) if s else EMPTY for s in vlabels),
+        tuple(frozenset(vlabels[k]) if k in vlabels else EMPTY for k in range(len(vertex_ij))),
         edge_points,
         edge_ij,
         edge_source,
