@@ -47,7 +47,9 @@ anchor: its copies are placed first, the other kinds lean on it as on a parent (
 is copied only with its hub, never around an output element of another kind), a child
 proposed beside an output anchor takes the slot of the exemplar ring that anchor was
 copied as (one phase per ring), and anchors whose children the frame cut off are not
-copied beside a candidate (``_grow.anchors``, ``_prepare.parents``).
+copied beside a candidate (``_grow.anchors``, ``_prepare.parents``); at the end of a
+growth each new anchor's children are put back on its exemplar ring's slots and its
+empty slots filled where nothing is in the way (``_grow._complete_anchor_rings``).
 ``context`` elements are frozen, already-synthesized neighbours (``_context``). The bounding radius of §4.1 is the collision bound wherever the
 exemplar gives it; default radii shrink per kind to the exemplar's spacing, and where
 they shrink below 0.9 of the bounding radius (elongated shapes) the shapes themselves
