@@ -20,18 +20,57 @@ from ._objects import (
     SEED,
 )
 
+_SEED_OR_ELEMENT = (1 << SEED) | (1 << ELEMENT)
+_STATE_BITS: dict[tuple[int, ...], int] = {}
+
+
+def _state_bits(states: tuple[int, ...]) -> int:
+    m = _STATE_BITS.get(states)
+    if m is None:
+        m = _STATE_BITS[states] = sum(1 << s for s in set(states))
+    return m
+
+
+def _fast_polygon() -> Any:
+    """A polygon from one closed ring of coordinates (k, 2), as ``shapely.polygons``
+    makes it, through shapely's compiled constructors directly: the public function's
+    argument handling costs as much as building the polygon, and the grower builds one
+    per candidate placement. Falls back to ``shapely.polygons`` where the compiled
+    layer differs (another shapely version)."""
+    try:
+        from shapely import lib
+
+        allow = np.intc(0)  # shapely.creation.HandleNaN.allow, the default
+        no_holes = np.empty((0,), dtype=object)
+
+        def polygon(coords: np.ndarray) -> Any:
+            return lib.polygons(lib.linearrings(coords, allow), no_holes)
+
+        probe = np.array([[0.0, 0.0], [1.5, 0.0], [1.0, 2.0], [0.0, 0.0]])
+        if polygon(probe) == shapely.polygons(probe):
+            return polygon
+    except Exception:  # pragma: no cover - other shapely versions
+        pass
+    return shapely.polygons  # pragma: no cover
+
+
+_polygon = _fast_polygon()
+try:
+    from shapely.lib import intersects as _intersects  # the ufunc, without the Python wrapper
+except ImportError:  # pragma: no cover
+    _intersects = shapely.intersects
+
 
 class _Collide:
     """Overlap, domain and closeness tests on candidate elements."""
 
     def element_geometry(self, kind: int, x: float, y: float, rot: float, scale: float) -> Any:
-        local = self.local_geom[kind]
         m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
         t = np.array([x, y])
         ring = self.local_ring[kind]
         if ring is not None:  # a simple polygon: the same coordinates, built directly
-            return shapely.polygons(ring @ m.T + t)
-        return shapely.transform(local, lambda q: q @ m.T + t)
+            return _polygon(ring @ m.T + t)
+        return shapely.transform(self.local_geom[kind], lambda q: q @ m.T + t)
 
     def element_geometries(self, idx: Sequence[int], xy: np.ndarray) -> list[Any]:
         """Outlines of elements ``idx`` moved to ``xy`` (m, 2), batched by kind."""
@@ -65,7 +104,7 @@ class _Collide:
         rg = float(kr[kind]) * abs(scale)
         xy, kinds, state, scl = self.xy, self.kind, self.state, self.scl
         others = []
-        for j in self.near(x, y, r, (ELEMENT, OBSTACLE)):
+        for j in self.index.near(x, y, r, _ELEMENT_OR_OBSTACLE):
             if skip and j in skip:
                 continue
             if state[j] == ELEMENT:
@@ -78,8 +117,9 @@ class _Collide:
             others.append(j)
         if not others:
             return False
-        gs = np.array([self.geom[j] for j in others], dtype=object)
-        hit = shapely.intersects(g, gs)
+        geom = self.geom
+        gs = np.array([geom[j] for j in others], dtype=object)
+        hit = _intersects(g, gs)
         if not hit.any():
             return False
         if not self.areal[kind]:
@@ -183,11 +223,11 @@ class _Collide:
         r = float((self.pair_close_max if placing else self.pair_short_max)[kind])
         if r <= self.l_short:
             return False
-        xy = self.xy
-        for o in self.near(x, y, r, states):
-            if self.orig_of[o] == s:
+        xy, orig_of, kinds = self.xy, self.orig_of, self.kind
+        for o in self.index.near(x, y, r, _SEED_OR_ELEMENT if states == (SEED, ELEMENT) else _state_bits(states)):
+            if orig_of[o] == s:
                 continue
-            ko = int(self.kind[o])
+            ko = int(kinds[o])
             if ko < 0:
                 continue
             d = ps[kind, ko]

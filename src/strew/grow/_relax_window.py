@@ -55,35 +55,38 @@ class _RelaxWindow:
         src: list[int] = []
         dst: list[int] = []
         off: list[float] = []
+        src_add, dst_add, off_add = src.append, dst.append, off.extend
         for i in win:
             ti = targets[i]
+            tget = ti.get if ti is not None else None
             xi, yi = xy[i]
             li = local[i]
             for j in adj[i]:
                 lj = local[j]
-                src.append(li)
-                dst.append(lj)
-                t = ti.get(j) if ti is not None else None
+                src_add(li)
+                dst_add(lj)
+                t = tget(j) if tget is not None else None
                 if t is None:
                     xj, yj = xy[j]
-                    off += (xj - xi, yj - yi)
+                    off_add((xj - xi, yj - yi))
                 else:
-                    off += t
+                    off_add(t)
                 if j not in wset:
-                    src.append(lj)
-                    dst.append(li)
+                    src_add(lj)
+                    dst_add(li)
                     tj = targets[j]
                     t = tj.get(i) if tj is not None else None
                     if t is None:
                         xj, yj = xy[j]
-                        off += (xi - xj, yi - yj)
+                        off_add((xi - xj, yi - yj))
                     else:
-                        off += t
+                        off_add(t)
         if not src:
             return
         pos = self.pos[nodes]
         free = np.fromiter((g in wset for g in nodes), dtype=bool, count=len(nodes))
         new = relax_positions(pos, np.array(src, dtype=np.intp), np.array(dst, dtype=np.intp), np.array(off).reshape(-1, 2), free)
+        new_l = new.tolist()  # Python floats, equal to float(new[q, c])
         if self.freeze_relaxed:
             for g in win:
                 if self.state[g] == ELEMENT:
@@ -91,20 +94,23 @@ class _RelaxWindow:
         tiny = 1e-9 * self.l
         moved = []
         new_geom: dict[int, Any] = {}
+        in_domain = self.in_domain
+        check_boundary = self.boundary is not None
+        state = self.state
         for g in win:
-            nx, ny = float(new[local[g], 0]), float(new[local[g], 1])
-            ox, oy = self.xy[g]
+            nx, ny = new_l[local[g]]
+            ox, oy = xy[g]
             if abs(nx - ox) + abs(ny - oy) <= tiny:
                 continue
             # relaxation never takes a centre out of the region or across a boundary stroke
-            if not self.in_domain(nx, ny) or self.crosses_boundary((ox, oy), (nx, ny)):
+            if not in_domain(nx, ny) or (check_boundary and self.crosses_boundary((ox, oy), (nx, ny))):
                 continue
             # nor an element's centre out of the spray area (§5.1: elements grow within it)
-            if self.spray_area is not None and self.state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
+            if self.spray_area is not None and state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
                 continue
             moved.append(g)
         # the moved elements' new outlines, in one shapely call per kind
-        els = [g for g in moved if self.state[g] == ELEMENT]
+        els = [g for g in moved if state[g] == ELEMENT]
         if els:
             for g, ng in zip(els, self.element_geometries(els, new[[local[g] for g in els]])):
                 new_geom[g] = ng
@@ -113,12 +119,16 @@ class _RelaxWindow:
             bad = {g for g, ok in zip(els, fits.tolist()) if not ok}
             if bad:
                 moved = [g for g in moved if g not in bad]
-        old = {g: (*self.xy[g], self.geom[g]) for g in moved}
+        geom = self.geom
+        old = {g: (*xy[g], geom[g]) for g in moved}
+        move = self._move
+        torus = self.tile is not None
         for g in moved:
-            self._move(g, float(new[local[g], 0]), float(new[local[g], 1]))
-            if self.state[g] == ELEMENT:
-                self.geom[g] = new_geom[g]
-                if self.tile is not None:
+            nx, ny = new_l[local[g]]
+            move(g, nx, ny)
+            if state[g] == ELEMENT:
+                geom[g] = new_geom[g]
+                if torus:
                     self._sync(g)
         if not self.p.avoid_overlaps:
             return
