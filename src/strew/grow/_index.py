@@ -376,6 +376,14 @@ class GrowIndex:
         if e is not None:
             self.alive[e] = False
 
+    def crosses_plane(self, ia: int, pa: Sequence[float], ib: int, pb: Sequence[float]) -> bool:
+        """:meth:`crosses` on the plane (no tile), with the least Python around the kernel:
+        the growth asks it for every new seed and edge."""
+        ec = self.edge_cells
+        if ec.n == 0:
+            return False
+        return _cross_kernel(float(pa[0]), float(pa[1]), float(pb[0]), float(pb[1]), ia, ib, self.cell, ec.head, ec.ent, self.ends, self.alive, self.pos)
+
     def crosses(self, ia: int, pa: Sequence[float], ib: int, pb: Sequence[float], tile: tuple[float, float, float, float] | None = None, margin: float = 0.0) -> bool:
         """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge at a
         point interior to both? Edges at an image of original ``ia`` or ``ib`` (-2: none)

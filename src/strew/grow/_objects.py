@@ -179,19 +179,20 @@ class _Objects:
 
     # -- edges --------------------------------------------------------------------------
     def add_edge(self, a: int, b: int) -> None:
-        if self.tile is not None:
-            # on the torus an edge is kept at both ends: from each original to the image
-            # of the other
-            ia, ib = self.orig_of[a], self.orig_of[b]
-            if ia == ib:
-                return
-            oa, ob = self.off_of[a], self.off_of[b]
-            rel = (ob[0] - oa[0], ob[1] - oa[1])
-            self._add_edge(ia, self.image(ib, rel))
-            if rel != (0, 0):
-                self._add_edge(self.image(ia, (-rel[0], -rel[1])), ib)
+        if self.tile is None:  # (the plane: straight to the index, the common case)
+            oo = self.orig_of
+            self.index.add_edge(a, b, oo[a], oo[b])
             return
-        self._add_edge(a, b)
+        # on the torus an edge is kept at both ends: from each original to the image
+        # of the other
+        ia, ib = self.orig_of[a], self.orig_of[b]
+        if ia == ib:
+            return
+        oa, ob = self.off_of[a], self.off_of[b]
+        rel = (ob[0] - oa[0], ob[1] - oa[1])
+        self._add_edge(ia, self.image(ib, rel))
+        if rel != (0, 0):
+            self._add_edge(self.image(ia, (-rel[0], -rel[1])), ib)
 
     def _add_edge(self, a: int, b: int) -> None:
         self.index.add_edge(a, b, self.orig_of[a], self.orig_of[b])
@@ -219,6 +220,8 @@ class _Objects:
         Edges at ``a`` or ``b`` (on the torus: at any of their images) do not count.
         """
         oo = self.orig_of
+        if self.tile is None:
+            return self.index.crosses_plane(-2 if a is None else oo[a], pa, -2 if b is None else oo[b], pb)
         return self.index.crosses(-2 if a is None else oo[a], pa, -2 if b is None else oo[b], pb, self.tile, self.margin)
 
     def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
