@@ -116,6 +116,7 @@ def test_crosses_matches_a_scan_of_the_live_edges(pts, pairs, drop, moves, seg, 
     for ia, ib in ((-2, -2), (0, -2), (0, 1)):
         want = any(_crosses(p, q, xy[u], xy[v]) for u, v in idx.edges if u not in (ia, ib) and v not in (ia, ib))
         assert idx.crosses(ia, p, ib, q) == want
+        assert idx.crosses_plane(ia, p, ib, q) == want  # the plane's short path
 
 
 def test_crosses_on_a_torus_sees_an_edge_across_the_tile_edge():
