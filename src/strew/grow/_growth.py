@@ -250,6 +250,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 # must not decide it)
                 self.leans[k1] = bool(np.percentile(d, 90) <= LEAN_SPREAD * np.median(d))
         self.several_sizes = bool(self.leans.any())
+        # kinds of several sizes: a ring slot of the largest is not lost to seeds of
+        # smaller kinds (see _Place._over_smaller_seeds; not on the torus)
+        self.top_level = float(self.size_level.max()) if self.n_kinds else 0.0
+        self.over_smaller = bool(p.tile is None and self.n_kinds and self.top_level > float(self.size_level.min()))
         # the farthest an element of one kind lies from its nearest element of a larger
         # kind in the reference (Hanisch border correction: only elements nearer to that
         # one than to the frame), per pair of kinds; inf where the reference does not say
