@@ -87,3 +87,23 @@ def test_rings_without_seams_at_12x():
     count = np.array([len(v) for v in cKDTree(out.xy[~hub]).query_ball_point(out.xy[hub & inner], 18.0)])
     assert np.mean(count == 10) >= 0.97, np.bincount(count)
     assert np.all(count <= 10)
+
+
+@pytest.mark.parametrize("cap", [40, 157])
+def test_completed_rings_keep_max_elements(cap):
+    """Completing rings at the end of a growth (``_grow._complete_anchor_rings``) adds
+    no element beyond ``grow``'s ``max_elements``, and no two elements closer than
+    their collision bound."""
+    from strew.synth import grow, new_state, seed_patch
+
+    ex = fidelity_suite().make_exemplar("rings")
+    st = new_state(ex, Region.rectangle(300, 260), rng=4)
+    seed_patch(st, (150.0, 130.0))
+    grow(st, max_elements=cap)
+    assert st.n <= cap
+    prep = st.prep
+    src = st.src
+    d = np.hypot(*(st.pos[:, None, :] - st.pos[None, :, :]).transpose(2, 0, 1))
+    lim = np.maximum(prep.rc[src][:, None] + prep.rc[src][None, :], prep.min_dist[prep.skind[src]][:, prep.skind[src]])
+    np.fill_diagonal(d, np.inf)
+    assert np.all(d >= lim - 1e-6)

@@ -212,7 +212,7 @@ def _snap_to_anchor_rings(state: SynthState, ex: np.ndarray, ppos: np.ndarray, v
         K.snap_to_slots(t, np.ascontiguousarray(state.pos[h]), o, cptr, cidx, prep.pos, prep.rc, ex, ppos)
 
 
-def _complete_anchor_rings(state: SynthState) -> int:
+def _complete_anchor_rings(state: SynthState, room: int | None = None) -> int:
     """Put the children of each output anchor grown in this :func:`grow` call back on the
     slots of the exemplar ring that anchor was copied as, and fill its empty slots
     where nothing stands in the way (in place). Returns the number of children added.
@@ -232,6 +232,7 @@ def _complete_anchor_rings(state: SynthState) -> int:
     it (and takes that slot's
     exemplar element), and an empty slot takes its exemplar child, each only where it
     clears every other element by ``max(rc_p + rc_q, min_dist)`` and lies in the domain.
+    At most ``room`` children are added (``grow``'s ``max_elements``).
     """
     prep = state.prep
     child, cptr, cidx = anchor_children(prep)
@@ -313,7 +314,10 @@ def _complete_anchor_rings(state: SynthState) -> int:
         kept = np.flatnonzero(keep[:i])
         lim = np.maximum(prep.rc[ids[i]] + prep.rc[ids[kept]], prep.min_dist[prep.skind[ids[i]], prep.skind[ids[kept]]])
         keep[i] = not np.any(np.hypot(*(pts[kept] - pts[i]).T) < lim)
-    return len(state.add(ids[keep], pts[keep], horizon=False))
+    add = np.flatnonzero(keep)
+    if room is not None:
+        add = add[:room]
+    return len(state.add(ids[add], pts[add], horizon=False))
 
 
 def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visible_only: bool) -> np.ndarray:
@@ -558,7 +562,7 @@ def grow(
         update_free_space(state, np.flatnonzero(state.horizon))
         _record(state, t0, skipped)
     state.unwrap()
-    _complete_anchor_rings(state)
+    _complete_anchor_rings(state, None if max_elements is None else max(0, max_elements - state.n))
     rep.done(state.n - start_n)
     return state.n - start_n
 
