@@ -4,7 +4,7 @@ Induces the planar map of n random segments of fixed length in a square whose ar
 with n (the density of crossings stays the same), for n over a 10x range; prints n, CPU
 seconds, the number of cells, and the peak memory per segment two ways:
 
-- ``rss``: the peak resident set (``resource.getrusage(...).ru_maxrss``) of a fresh
+- ``rss``: the peak resident set (``VmHWM`` of ``/proc/self/status``) of a fresh
   subprocess that builds the curves and induces the map, minus that of the same subprocess
   that builds the curves only (the baseline: imports, warm-up, the input). This counts
   GEOS' own C allocations, which ``tracemalloc`` does not see;
@@ -49,7 +49,7 @@ def random_segments(n: int, seed: int = 0) -> Curves:
 
 
 _CHILD = r"""
-import json, resource, sys, time
+import json, sys, time
 sys.path.insert(0, {bench!r})
 from program_scaling import random_segments
 mod = {module!r}
@@ -69,7 +69,9 @@ if {run}:
     t0 = time.process_time()
     pm = induce(curves)
     out = dict(cpu=time.process_time() - t0, v=pm.n_vertices, e=pm.n_edges, f=pm.n_faces)
-out["maxrss_kb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+# VmHWM: the peak RSS of this process's own memory since exec (ru_maxrss would also keep
+# the parent's size at the fork, which hides everything below it)
+out["maxrss_kb"] = max(int(line.split()[1]) for line in open("/proc/self/status") if line.startswith("VmHWM:"))
 print(json.dumps(out))
 """
 

@@ -437,7 +437,7 @@ def _empty_topology(grid: float) -> _Topology:
 
 #: Above this many source segments the curves are noded strip by strip (issue 19.6): GEOS'
 #: overlay holds about 3 KB per segment while it nodes, the planar map's memory peak.
-CHUNK_SEGMENTS = 8192
+CHUNK_SEGMENTS = 4096
 
 
 def _noded_segments(noded: Any, g: float) -> tuple[np.ndarray, np.ndarray]:
@@ -617,17 +617,25 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     # 3. attribute each noded segment to the source segments it lies along
     tol = 4.0 * g
     tree = shapely.STRtree(shapely.linestrings(np.stack([sa, sb], axis=1)))
-    mids = shapely.points((na + nb) / 2)
-    qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
-    ok = (_point_segment_distance(na[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(nb[qi], sa[qj], sb[qj]) <= tol)
-    qi, qj = qi[ok], qj[ok]
-    covered = np.zeros(n_seg, dtype=bool)
-    covered[qi] = True
-    missing = np.flatnonzero(~covered)
-    if len(missing):
-        mi, mj = tree.query_nearest(mids[missing], return_distance=False)
-        qi = np.r_[qi, missing[mi]]
-        qj = np.r_[qj, mj]
+    # in batches of midpoints: a shapely point costs about 100 bytes (issue 19.6, memory)
+    qis, qjs = [], []
+    for c0 in range(0, n_seg, CHUNK_SEGMENTS):
+        ca, cb = na[c0 : c0 + CHUNK_SEGMENTS], nb[c0 : c0 + CHUNK_SEGMENTS]
+        mids = shapely.points((ca + cb) / 2)
+        qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
+        ok = (_point_segment_distance(ca[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(cb[qi], sa[qj], sb[qj]) <= tol)
+        qi, qj = qi[ok], qj[ok]
+        covered = np.zeros(len(ca), dtype=bool)
+        covered[qi] = True
+        missing = np.flatnonzero(~covered)
+        if len(missing):
+            mi, mj = tree.query_nearest(mids[missing], return_distance=False)
+            qi = np.r_[qi, missing[mi]]
+            qj = np.r_[qj, mj]
+        qis.append(qi + c0)
+        qjs.append(qj)
+    qi, qj = np.concatenate(qis), np.concatenate(qjs)
+    del qis, qjs, ca, cb
     ndir = nb - na
     sdir = sb[qj] - sa[qj]
     orient = np.where((ndir[qi] * sdir).sum(axis=1) >= 0, 1, -1)
