@@ -217,6 +217,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         # as cluster hubs then came to half the distance the reference ever has them,
         # and stones and stripes crowded their own kind: nn failed by a few percent.)
         self.pair_close = self.pair_short.copy()
+        #: per kind: the smallest distance between two elements of it in the reference over
+        #: the sum of their scaled radii (see _Place.crowds_own_kind); 0: not checked
+        #: (exemplars of one kind where the own-kind distance rule below applies)
+        self.gap_ratio = np.zeros(self.n_kinds)
         for k1, k2 in np.ndindex(self.n_kinds, self.n_kinds):
             if (k1 != k2 and self.size_level[k1] == self.size_level[k2]) or not dist_to[k2]:
                 continue
@@ -229,6 +233,11 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 own = p.own_kind_close if p.own_kind_close is not None else (p.mode == "fixed" and (med - lo >= 0.05 * med or lo >= 1.2 * self.l))
                 if k1 == k2 and not own:
                     continue
+                if k1 == k2 and self.n_kinds == 1:
+                    sel = np.flatnonzero(self.ex_kind == k1)
+                    dd, qq = cKDTree(ex.xy[sel]).query(ex.xy[sel], k=2)
+                    rk = max(float(ex.shapes[ex.kinds[k1]].radius), 1e-300)
+                    self.gap_ratio[k1] = float(np.min(dd[:, 1] / (rk * (ex.scale[sel] + ex.scale[sel[qq[:, 1]]]))))
                 spread = med - lo
                 if k1 != k2:
                     spread *= p.close_spread
