@@ -17,7 +17,11 @@ and the exponent fitted to log time against log n. Targets: exponent at most 1.1
 ``src/strew/program/_planar_map.py``, loaded beside the installed strew) in the same run,
 for before/after figures.
 
-Run: ``python benchmarks/program_scaling.py [--quick] [--against REV]``.
+A program script (``--script``, default Fig. 11(d)'s mosaic) is also run whole by
+``strew.program.run_script`` at ``--script-sizes``: its peak RSS above the same script at
+size 200 (every planar map it induces, and the arrangement).
+
+Run: ``python benchmarks/program_scaling.py [--quick] [--against REV] [--script F --script-sizes S,S]``.
 """
 
 from __future__ import annotations
@@ -28,6 +32,7 @@ import sys
 import tempfile
 import tracemalloc
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -62,13 +67,26 @@ if mod:
     induce = pm_mod.induce
 else:
     from strew.program import induce
-induce(random_segments(200))
-curves = random_segments({n})
+script = {script!r}
 out = {{}}
-if {run}:
-    t0 = time.process_time()
-    pm = induce(curves)
-    out = dict(cpu=time.process_time() - t0, v=pm.n_vertices, e=pm.n_edges, f=pm.n_faces)
+if script:
+    # a whole `strew run` (every planar map it induces), with REV's induction swapped in
+    import strew.program._planar_map as cur
+    from strew.program import run_script
+    if mod:
+        cur._induce = pm_mod._induce
+    run_script(script, size=200.0, seed=1)
+    if {run}:
+        t0 = time.process_time()
+        pm, arr = run_script(script, size={n}, seed=1)
+        out = dict(cpu=time.process_time() - t0, v=pm.n_vertices, e=pm.n_edges, f=pm.n_faces, elements=len(arr))
+else:
+    induce(random_segments(200))
+    curves = random_segments({n})
+    if {run}:
+        t0 = time.process_time()
+        pm = induce(curves)
+        out = dict(cpu=time.process_time() - t0, v=pm.n_vertices, e=pm.n_edges, f=pm.n_faces)
 # VmHWM: the peak RSS of this process's own memory since exec (ru_maxrss would also keep
 # the parent's size at the fork, which hides everything below it)
 out["maxrss_kb"] = max(int(line.split()[1]) for line in open("/proc/self/status") if line.startswith("VmHWM:"))
@@ -76,8 +94,8 @@ print(json.dumps(out))
 """
 
 
-def child(n: int, run: bool, module: str = "") -> dict:
-    code = _CHILD.format(bench=str(Path(__file__).parent), module=module, n=n, run=run)
+def child(n: float, run: bool, module: str = "", script: str = "") -> dict:
+    code = _CHILD.format(bench=str(Path(__file__).parent), module=module, n=n, run=run, script=script)
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
@@ -94,8 +112,13 @@ def against_module(rev: str, tmp: Path) -> str:
 
 
 def main() -> None:
-    args = parse_args(__doc__.splitlines()[0], extra=lambda p: p.add_argument("--against", default=None,
-                      help="git revision whose planar map is measured in the same run"))
+    def extra(p: Any) -> None:
+        p.add_argument("--against", default=None, help="git revision whose planar map is measured in the same run")
+        p.add_argument("--script", default=str(ROOT / "examples" / "program" / "fig11d_mosaic.py"),
+                       help="a program script also run whole at --script-sizes (peak RSS in MB)")
+        p.add_argument("--script-sizes", default="3000,6000", help="comma-separated sizes for --script ('' skips it)")
+
+    args = parse_args(__doc__.splitlines()[0], extra=extra)
     ns = [2000, 6000, 20000] if args.quick else [10000, 30000, 100000]
     induce(random_segments(200))
     bench = Bench("program_scaling", "planar map of n random segments: time and memory vs n",
@@ -125,6 +148,16 @@ def main() -> None:
         k = np.polyfit(np.log(ns), np.log(ts), 1)[0]
         print(f"{name:>8s} fitted exponent (log cpu time vs log n, n {ns[0]}..{ns[-1]}): {k:.3f}  (target <= 1.15)")
         bench.row(f"{name} fit", exponent=float(k))
+    script_sizes = [float(v) for v in args.script_sizes.split(",") if v.strip()]
+    for name, module in codes:
+        for size in script_sizes:
+            base = child(size, False, module, args.script)["maxrss_kb"]
+            got = child(size, True, module, args.script)
+            mb = (got["maxrss_kb"] - base) / 1024
+            bench.row(f"{name} {Path(args.script).name} size {size:g}", cpu_s=got["cpu"], vertices=got["v"], edges=got["e"],
+                      faces=got["f"], elements=got["elements"], rss_mb=mb)
+            print(f"{name:>8s} {Path(args.script).name} size {size:g}  cpu {got['cpu']:7.2f} s  V {got['v']}  E {got['e']}  "
+                  f"F {got['f']}  elements {got['elements']}  peak rss above the script at size 200: {mb:.1f} MB", flush=True)
     bench.finish()
 
 

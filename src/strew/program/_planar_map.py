@@ -451,14 +451,14 @@ def _noded_segments(noded: Any, g: float) -> tuple[np.ndarray, np.ndarray]:
     return a[nz], b[nz]
 
 
-def _node_in_strips(a: np.ndarray, b: np.ndarray, g: float) -> tuple[np.ndarray, np.ndarray]:
+def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -> tuple[np.ndarray, np.ndarray]:
     """Snap-round and node segments strip by strip (issue 19.6: memory).
 
     GEOS' overlay nodes the whole linework at once and holds about 3 KB per segment while it
     does so (4.4 KB per segment of peak RSS in all at 40k random segments). Here each
     segment is *owned* by the vertical strip its midpoint falls in (strips of about
     ``CHUNK_SEGMENTS / 2`` segments), and each strip is noded on its own with every segment
-    whose x-range comes within 2 grid pixels of its owned segments' x-range. Every segment
+    whose box comes within 6 grid pixels of the box of a segment it owns. Every segment
     that crosses an owned segment, and every vertex or crossing whose hot pixel an owned
     segment passes through, is then in the strip's input, so GEOS' snap rounding (hot
     pixels, a local rule) nodes an owned segment exactly as one global run would; a strip
@@ -469,7 +469,9 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, g: float) -> tuple[np.ndarray,
     Parameters
     ----------
     a, b : (n, 2) int64
-        Source segments in grid coordinates.
+        Source segments in grid coordinates, curve by curve, in order along each curve.
+    curve : (n,) int
+        The curve of each segment.
     g : float
         The grid.
 
@@ -480,26 +482,37 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, g: float) -> tuple[np.ndarray,
     """
     n = len(a)
     k = max(2, int(np.ceil(n / (CHUNK_SEGMENTS / 2))))
-    xlo, xhi = np.minimum(a[:, 0], b[:, 0]), np.maximum(a[:, 0], b[:, 0])
     mid2 = a[:, 0] + b[:, 0]  # twice the midpoint's x
     order = np.argsort(mid2, kind="stable")
     cuts = np.arange(k + 1) * n // k  # strip s owns the segments of ranks cuts[s]:cuts[s + 1]
     owner = np.empty(n, dtype=np.int64)
     owner[order] = np.repeat(np.arange(k), np.diff(cuts))
-    # segments sorted by left end, to find each strip's context by x-range overlap
-    by_lo = np.argsort(xlo, kind="stable")
-    lo_sorted = xlo[by_lo]
+    # a strip's input: the segments whose boxes come within 6 grid pixels of the box of one
+    # it owns (a superset of those within 6 pixels of it; not an x-range:
+    # a long line owned by a strip would bring in everything). 6 > the attribution
+    # tolerance (4) + a hot pixel's reach (0.71): a piece kept as lying along an owned
+    # segment lies within 4 pixels of it, so every crossing or vertex that can node or
+    # snap that piece comes from segments in the input
+    lines = shapely.linestrings(np.stack([a, b], axis=1) * g)
+    index = shapely.STRtree(lines)
     tol = 4.0 * g
     outs: list[np.ndarray] = []
     for s in range(k):
         own = order[cuts[s] : cuts[s + 1]]
         if not len(own):
             continue
-        x0, x1 = int(xlo[own].min()) - 2, int(xhi[own].max()) + 2
-        cand = by_lo[: np.searchsorted(lo_sorted, x1, side="right")]
-        sel = np.sort(cand[xhi[cand] >= x0])
+        lo_, hi_ = np.minimum(a[own], b[own]) * g - 6.0 * g, np.maximum(a[own], b[own]) * g + 6.0 * g
+        sel = np.unique(np.r_[own, index.query(shapely.box(lo_[:, 0], lo_[:, 1], hi_[:, 0], hi_[:, 1]))[1]])
+        del lo_, hi_
         sa, sb = a[sel] * g, b[sel] * g
-        noded = shapely.union_all(shapely.linestrings(np.stack([sa, sb], axis=1)), grid_size=g)
+        # consecutive segments of one curve go to GEOS as one polyline (as in the global
+        # noding: the same vertices, and GEOS nodes polylines much faster than their segments)
+        brk = np.r_[True, (np.diff(sel) != 1) | (curve[sel][1:] != curve[sel][:-1])]
+        gid = np.cumsum(brk) - 1
+        ends = np.flatnonzero(np.r_[brk[1:], True])
+        pts = np.insert(sa, ends + 1, sb[ends], axis=0)
+        noded = shapely.union_all(shapely.linestrings(pts, indices=np.insert(gid, ends + 1, gid[ends])), grid_size=g)
+        del brk, gid, ends, pts
         na, nb = _noded_segments(noded, g)
         del noded
         if not len(na):
@@ -524,6 +537,7 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, g: float) -> tuple[np.ndarray,
         swap = (seg[:, 0] > seg[:, 2]) | ((seg[:, 0] == seg[:, 2]) & (seg[:, 1] > seg[:, 3]))
         seg[swap] = seg[swap][:, [2, 3, 0, 1]]
         outs.append(seg)
+    del index, lines
     seg = np.unique(np.concatenate(outs), axis=0) if outs else np.zeros((0, 4), np.int64)
     return np.ascontiguousarray(seg[:, :2]), np.ascontiguousarray(seg[:, 2:])
 
@@ -601,7 +615,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         del b, c, cx, cy
     if len(sa) > CHUNK_SEGMENTS:
         del src_lines
-        na_ij, nb_ij = _node_in_strips(np.rint(sa / g).astype(np.int64), np.rint(sb / g).astype(np.int64), g)
+        na_ij, nb_ij = _node_in_strips(np.rint(sa / g).astype(np.int64), np.rint(sb / g).astype(np.int64), scurve, g)
     else:
         noded = shapely.union_all(src_lines, grid_size=g)
         del src_lines
