@@ -498,7 +498,10 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     # Guards: keep centres in the region (and brush) and do not make elements intersect.
     # An element whose brush disc was already dropped (spent) stays where it is: a move
     # from outside the remaining discs could otherwise carry it past the stroke's edge.
-    out = ~state.in_domain(new) | fixed[hbar]
+    # Elements of exemplars outside the selection (a palette filled texture by texture,
+    # each in its own part of the region) stay where they are: the region in force is
+    # the texture being grown, and a move there could carry them out of their own part.
+    out = ~state.in_domain(new) | fixed[hbar] | ~state.prep.selected_elements[state.src[hbar]]
     new[out] = old[out]
     state._pos[moved] = new
     _undo_intersections(state, moved, old)
