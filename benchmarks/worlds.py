@@ -16,7 +16,17 @@ machine is shared: the ratios are from the same run.
 Run: ``python benchmarks/worlds.py`` (``--quick``: 2e4 and 1e5 only; ``--repeat N``
 repeats of the speed-up pair, default 3; ``--sizes 1e5,1e6,1e7`` the sizes of (a)).
 Writes ``benchmarks/results/worlds.json``. ``--seams`` prints only the border-strip
-statistics of tiled and periodic worlds (``benchmarks/results/worlds_seams.json``).
+statistics of tiled and periodic worlds (``benchmarks/results/worlds_seams.json``);
+``--synth-seams [--seeds 3,4,5] [--before]`` synth's, tiled against untiled
+(``worlds_synth_seams.json``).
+
+Point 5 one measurement a command (``--only``, ``--method pack|synth``; writes
+``worlds_<only>_<method>.json``):
+
+- ``--only scaling --sizes 1e5,1e6,1e7``: time and CPU per element, worker peak RSS;
+- ``--only scaling --method synth --sizes 1e5,1e6``: the same for synth (stones.svg);
+- ``--only speedup --sizes 1e5 --repeat 3``: 2 workers against 1 on the same world;
+- ``--only memory --sizes 1e6 --tile-sizes 50,100,200``: worker peak RSS per tile size.
 """
 
 from __future__ import annotations
@@ -42,7 +52,12 @@ from strew.tiles import world
 from strew.io._parquet import ParquetWriter
 
 side, workers, tile = float(sys.argv[1]), int(sys.argv[2]), float(sys.argv[3])
-shapes = {"bar": strew.Shape.rectangle(3, 1.5), "disc": strew.Shape.circle(1.0, 16)}
+method = sys.argv[4] if len(sys.argv) > 4 else "pack"
+if method == "synth":
+    from strew.io import load
+    shapes = load(sys.argv[5])
+else:
+    shapes = {"bar": strew.Shape.rectangle(3, 1.5), "disc": strew.Shape.circle(1.0, 16)}
 out = {}
 client = cluster = None
 kw = {}
@@ -57,9 +72,9 @@ if workers > 1:
 # is not enough: its 4 tiles depend on each other and may all run on one worker, and
 # the other then loads its kernels inside the timed run (measured: 216 CPU us/el on 2
 # workers against 146 with this warm-up, 101 in-process, 500 x 500 world)
-world("pack", shapes, (2 * tile, 2 * tile), tile_size=tile, seed=99, workers=workers, **kw)
+world(method, shapes, (2 * tile, 2 * tile), tile_size=tile, seed=99, workers=workers, **kw)
 if client is not None:
-    client.run(lambda: world("pack", shapes, (2 * tile, 2 * tile), tile_size=tile, seed=98))
+    client.run(lambda: world(method, shapes, (2 * tile, 2 * tile), tile_size=tile, seed=98))
 def cpu():
     import os
     t = os.times()
@@ -70,7 +85,7 @@ with tempfile.TemporaryDirectory() as tmp:
     w = ParquetWriter(tmp + "/w.parquet")
     c0 = cpu_all()
     t0 = time.perf_counter()
-    info = world("pack", shapes, (side, side), tile_size=tile, seed=1, workers=workers, sink=w.write, **kw)
+    info = world(method, shapes, (side, side), tile_size=tile, seed=1, workers=workers, sink=w.write, **kw)
     w.close(info.shapes, info.meta)
     out["seconds"] = time.perf_counter() - t0
     out["cpu_seconds"] = cpu_all() - c0
@@ -87,17 +102,24 @@ print("RESULT " + json.dumps(out))
 """
 
 
-def run(n: float, workers: int) -> dict:
-    side = math.sqrt(n / DENSITY)
-    p = subprocess.run([sys.executable, "-c", _CHILD, f"{side:.3f}", str(workers), str(TILE)],
+# synth's world: examples/exemplars/stones.svg (3 kinds of stone), tiles of 400 (halo 100, about 300 elements a tile; tiles of 200 spent 1.8-2.2 ms CPU per element, 2e3-6e3 elements)
+SYNTH_EXEMPLAR = Path(__file__).parents[1] / "examples" / "exemplars" / "stones.svg"
+SYNTH_DENSITY = 0.00191  # elements per unit area (measured: 1,222-1,232 in 800 x 800, seeds 1-2)
+SYNTH_TILE = 400.0
+
+
+def run(n: float, workers: int, method: str = "pack", tile: float | None = None) -> dict:
+    density, tile = (SYNTH_DENSITY, tile or SYNTH_TILE) if method == "synth" else (DENSITY, tile or TILE)
+    side = math.sqrt(n / density)
+    p = subprocess.run([sys.executable, "-c", _CHILD, f"{side:.3f}", str(workers), f"{tile:g}", method, str(SYNTH_EXEMPLAR)],
                        capture_output=True, text=True, check=False)
     line = [x for x in p.stdout.splitlines() if x.startswith("RESULT ")]
     if p.returncode or not line:
         raise SystemExit(f"child failed ({p.returncode}):\n{p.stderr[-3000:]}")
     r = json.loads(line[0][7:])
-    r.update(target=n, workers=workers, side=side, us_per_element=1e6 * r["seconds"] / max(r["elements"], 1),
+    r.update(method=method, tile_size=tile, target=n, workers=workers, side=side, us_per_element=1e6 * r["seconds"] / max(r["elements"], 1),
              cpu_us_per_element=1e6 * r["cpu_seconds"] / max(r["elements"], 1))
-    print(f"  n~{n:.0e} workers={workers}: {r['elements']:,} el, {r['tiles']} tiles, {r['seconds']:.1f} s, "
+    print(f"  {method} n~{n:.0e} workers={workers} tile {tile:g}: {r['elements']:,} el, {r['tiles']} tiles, {r['seconds']:.1f} s, "
           f"{r['us_per_element']:.0f} us/el ({r['cpu_us_per_element']:.0f} CPU us/el, all processes), worker peak RSS {max(r['worker_maxrss_mb']):.0f} MB, "
           f"client {r['client_maxrss_mb']:.0f} MB", flush=True)
     return r
@@ -157,7 +179,124 @@ def seams(seeds: tuple[int, ...] = (3, 4, 5, 6)) -> dict:
             out[name].append(r)
             print(f"  {name:14s} seed {seed}: {len(a):,} el, edge strips (width {width:.2f}) {r['edge_density_ratio']:.3f}x "
                   f"the interior's density, overlaps in 3x3 copies {r['overlaps_3x3']}", flush=True)
+    out.update(synth_seams(seeds[:3]))
     return out
+
+
+def synth_seams(seeds: tuple[int, ...] = (3, 4, 5), classes: tuple[str, ...] = ("stones", "two_sizes"), frames: float = 4.0,
+                before: bool = False) -> dict:
+    """Border strips of tiled synth (issue 19 point 4) against an untiled synth of the same world.
+
+    Each fidelity-suite exemplar (stones: one kind, a scatter; two_sizes: stones and
+    pebbles) fills a square of ``frames`` x its frame, cut into 4 x 4 tiles (halo a
+    quarter tile); strips of half-width 0.05 and 0.1 tile about the inner borders
+    against the rest, leaving out the world's edge band of one halo: density ratio and
+    each kind's density ratio; overlaps of the tiled world. ``before``: also tiled with
+    each tile's region its whole grown rectangle (the code before the finished
+    neighbours' interiors were left out, strew.tiles._outside_finished), same run.
+    """
+    import numpy as np
+
+    import strew
+    from strew.synth import synthesize
+    from strew import tiles as tiles_mod
+    from strew.tiles import tiled
+
+    modes = ("tiled", "before", "untiled") if before else ("tiled", "untiled")
+    here = Path(__file__).parents[1]
+    sys.path.insert(0, str(here / "tests" / "worlds"))
+    sys.path.insert(0, str(here / "tests"))
+    from strew_testing import fidelity_suite
+    from world_stats import border_strips, overlapping_pairs
+
+    suite = fidelity_suite()
+    out: dict = {}
+    for cls in classes:
+        ex = suite.make_exemplar(cls)
+        x0, y0, x1, y1 = ex.region.bounds
+        side = frames * (x1 - x0)
+        size, tile = (side, side), side / 4
+        for mode in modes:
+            key = f"synth_{cls}_{mode}"
+            out[key] = []
+            for seed in seeds:
+                t0 = time.process_time()
+                if mode == "untiled":
+                    arr = synthesize(ex, strew.Region.rectangle(*size), rng=seed, measure=False)
+                else:  # "before": the tile's region is its whole grown rectangle (as at 845a513)
+                    grows, tiles_mod._GROWS_INTO_BAND = tiles_mod._GROWS_INTO_BAND, (() if mode == "before" else tiles_mod._GROWS_INTO_BAND)
+                    try:
+                        arr = tiled("synth", ex, size, tile_size=tile, seed=seed)
+                    finally:
+                        tiles_mod._GROWS_INTO_BAND = grows
+                cpu = time.process_time() - t0
+                row = {"seed": seed, "elements": len(arr), "cpu_s": cpu, "kinds": list(arr.kinds)}
+                for width in (0.05 * tile, 0.1 * tile):
+                    st, inn, sa, ia = border_strips(arr, size, tile, width, tile / 4)
+                    kind = np.asarray(arr.kind)
+                    row[f"w{width:g}"] = {
+                        "strip_elements": int(st.sum()),
+                        "density_ratio": float((st.sum() / sa) / (inn.sum() / ia)),
+                        "kind_density_ratio": [float(((kind[st] == k).sum() / sa) / max((kind[inn] == k).sum() / ia, 1e-12))
+                                               for k in range(len(arr.kinds))]}
+                row["overlaps"] = overlapping_pairs(arr) if mode != "untiled" else None
+                out[key].append(row)
+                ws = "; ".join(f"strips +-{w[1:]}: {v['density_ratio']:.3f}x ({v['strip_elements']} el), by kind "
+                               + "/".join(f"{r:.2f}" for r in v["kind_density_ratio"])
+                               for w, v in row.items() if w.startswith("w"))
+                print(f"  synth {cls:9s} {mode:7s} seed {seed}: {len(arr):,} el ({'/'.join(arr.kinds)}), {ws}"
+                      + (f", overlaps {row['overlaps']}" if mode != "untiled" else "") + f" [{cpu:.0f} CPU s]", flush=True)
+        for mode in modes:
+            rows = out[f"synth_{cls}_{mode}"]
+            for w in [k for k in rows[0] if k.startswith("w")]:
+                d = [r[w]["density_ratio"] for r in rows]
+                print(f"  synth {cls:9s} {mode:7s} strips +-{w[1:]}: density ratio mean {np.mean(d):.3f} "
+                      f"(range {min(d):.3f}-{max(d):.3f}) over seeds {','.join(map(str, seeds))}", flush=True)
+    return out
+
+
+def only(args: argparse.Namespace, sizes: list[float]) -> None:
+    """One measurement of point 5 per command (``--only``), for ``--method pack|synth``.
+
+    scaling: time per element at ``--sizes`` on ``--workers`` workers (ratio to the
+    smallest); speedup: ``--sizes``' smallest world on 1 worker and on 2, ``--repeat``
+    times each; memory: peak RSS per worker on the ``--sizes``' smallest world for each
+    of ``--tile-sizes``. Writes ``benchmarks/results/worlds_<only>_<method>.json``.
+    """
+    t0 = time.perf_counter()
+    load0 = os.getloadavg()
+    print(f"machine: {os.cpu_count()} cores, load average {load0[0]:.1f}; {args.only}, {args.method}")
+    res: dict = {"benchmark": f"worlds --only {args.only}", "method": args.method, "cores": os.cpu_count(),
+                 "load_average_start": load0[0],
+                 "command": " ".join(["python benchmarks/worlds.py", *sys.argv[1:]])}
+    if args.only == "scaling":
+        runs = [run(n, args.workers, args.method) for n in sizes]
+        base, cbase = runs[0]["us_per_element"], runs[0]["cpu_us_per_element"]
+        for r in runs:
+            print(f"  {r['elements']:>11,} el  {r['us_per_element']:8.1f} us/el  ratio {r['us_per_element'] / base:.2f} (target within 1.2)"
+                  f"  CPU {r['cpu_us_per_element']:8.1f} us/el  ratio {r['cpu_us_per_element'] / cbase:.2f}  worker peak RSS {max(r['worker_maxrss_mb']):.0f} MB",
+                  flush=True)
+        res.update(runs=runs, per_element_ratio_max=max(r["us_per_element"] for r in runs) / min(r["us_per_element"] for r in runs),
+                   cpu_per_element_ratio_max=max(r["cpu_us_per_element"] for r in runs) / min(r["cpu_us_per_element"] for r in runs))
+    elif args.only == "speedup":
+        n = sizes[0]
+        one = [run(n, 1, args.method) for _ in range(args.repeat)]
+        two = [run(n, 2, args.method) for _ in range(args.repeat)]
+        s1, s2 = statistics.median(r["seconds"] for r in one), statistics.median(r["seconds"] for r in two)
+        print(f"  {n:.0e} elements: 1 worker {s1:.1f} s, 2 workers {s2:.1f} s (medians of {args.repeat}): speed-up {s1 / s2:.2f}x (target 1.7x)")
+        res.update(elements=n, one_worker_s=s1, two_workers_s=s2, ratio=s1 / s2, runs_one=one, runs_two=two)
+    else:  # memory
+        n = sizes[0]
+        runs = [run(n, args.workers, args.method, tile=float(t)) for t in args.tile_sizes.split(",")]
+        for r in runs:
+            print(f"  tile {r['tile_size']:g}: {r['elements']:,} el, worker peak RSS {max(r['worker_maxrss_mb']):.0f} MB "
+                  f"({r['elements'] / max(r['tiles'], 1):,.0f} el a tile)", flush=True)
+        res.update(elements=n, runs=runs)
+    res.update(load_average_end=os.getloadavg()[0], total_s=time.perf_counter() - t0)
+    out = Path(__file__).parent / "results" / f"worlds_{args.only}_{args.method}.json"
+    out.parent.mkdir(exist_ok=True)
+    out.write_text(json.dumps(res, indent=1) + "\n")
+    print(f"wrote {out} ({res['total_s']:.0f} s)")
 
 
 def main() -> None:
@@ -166,7 +305,26 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--sizes", default=None, help="comma-separated element counts of (a), e.g. 1e5,1e6,1e7")
     ap.add_argument("--seams", action="store_true", help="only the border-strip statistics (writes worlds_seams.json)")
+    ap.add_argument("--synth-seams", action="store_true", help="only synth's border strips, tiled against untiled (writes worlds_synth_seams.json)")
+    ap.add_argument("--seeds", default="3,4,5", help="seeds of --synth-seams")
+    ap.add_argument("--only", choices=("scaling", "speedup", "memory"), help="one measurement of point 5 (see only())")
+    ap.add_argument("--method", choices=("pack", "synth"), default="pack", help="--only: the world's method")
+    ap.add_argument("--workers", type=int, default=2, help="--only scaling|memory: Dask workers (1: in-process)")
+    ap.add_argument("--tile-sizes", default="50,100,200", help="--only memory: tile sides (pack; synth e.g. 100,200,400)")
+    ap.add_argument("--classes", default="stones,two_sizes", help="--synth-seams: fidelity-suite classes")
+    ap.add_argument("--before", action="store_true", help="--synth-seams: also the tiles' whole grown rectangles (the old region)")
     args = ap.parse_args()
+    if args.synth_seams:
+        t0 = time.perf_counter()
+        seeds = tuple(int(v) for v in args.seeds.split(","))
+        print("synth border strips (issue 19 point 4), tiled against untiled:")
+        res = {"benchmark": "worlds --synth-seams", "command": " ".join(["python benchmarks/worlds.py", *sys.argv[1:]]),
+               **synth_seams(seeds, tuple(args.classes.split(",")), before=args.before)}
+        out = Path(__file__).parent / "results" / "worlds_synth_seams.json"
+        out.parent.mkdir(exist_ok=True)
+        out.write_text(json.dumps(res, indent=1) + "\n")
+        print(f"wrote {out} ({time.perf_counter() - t0:.0f} s)")
+        return
     if args.seams:
         t0 = time.perf_counter()
         print("border strips (issue 19 point 4; issue 18 through strew.tiles.periodic):")
@@ -179,6 +337,9 @@ def main() -> None:
     sizes = [2e4, 1e5] if args.quick else [1e5, 3e5, 1e6]
     if args.sizes:
         sizes = sorted(float(v) for v in args.sizes.split(","))
+    if args.only:
+        only(args, sizes)
+        return
     small = sizes[0] if args.quick else 1e5
     t0 = time.perf_counter()
     load0 = os.getloadavg()
