@@ -27,7 +27,11 @@ the part within r-bar of the iteration's new elements (§5.2, "recently synthesi
 in near-regular exemplars each optimisation move is shortened by the spread of the
 element's own predictions (at most 0.1 of its radius and 0.3 of the exemplar's spacing
 slack), so that the least-squares blend does not average the exemplar's jitter away
-(§5.2-5.3, ``noise_floor``).
+(§5.2-5.3, ``noise_floor``); in jittered lattices (noisy rows, bricks, scales) each
+prediction vector instead carries the jitter of the output elements it relates, read
+from the exemplar's bond modes, so that predictions agree and the blend keeps the
+jitter (§5.2-5.3, ``_optimize._own_jitter``); elements of exemplars outside the
+selection do not move.
 
 Extensions for exemplars with elements of several sizes, which §7 names a limitation
 (each is commented where it is made; see ``_grow`` and ``_prepare``): radii at least 2x
