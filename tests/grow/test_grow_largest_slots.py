@@ -6,11 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.grow import grow
-
-from strew_testing import fidelity_suite
 
 
 @pytest.mark.slow
@@ -20,7 +19,7 @@ def test_large_stones_come_as_densely_as_in_the_reference_interior():
     # density kept away from the region's edge was 0.83-0.91 (mean 0.867, seeds 1-3)
     # while large slots were merged into small seeds, and is 0.86-0.97 (mean 0.917) now
     ex = fidelity_suite().make_exemplar("three_sizes")
-    x0, y0, x1, y1 = ex.region.bounds
+    x0, _, x1, _ = ex.region.bounds
     w = x1 - x0
     big = ex.kinds.index("large")
     m = 1.1 * ex.shapes["large"].radius

@@ -6,12 +6,11 @@ from __future__ import annotations
 
 import numpy as np
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.grow import grow
 from strew.metrics import fidelity
-
-from strew_testing import fidelity_suite
 
 
 def test_stones_of_a_variant_nobody_tuned_on_keep_their_gap():
