@@ -223,12 +223,12 @@ def synth_seams(seeds: tuple[int, ...] = (3, 4, 5), classes: tuple[str, ...] = (
                 t0 = time.process_time()
                 if mode == "untiled":
                     arr = synthesize(ex, strew.Region.rectangle(*size), rng=seed, measure=False)
-                else:  # "before": the tile's region is its whole grown rectangle (as at 845a513)
-                    grows, tiles_mod._GROWS_INTO_BAND = tiles_mod._GROWS_INTO_BAND, (() if mode == "before" else tiles_mod._GROWS_INTO_BAND)
+                else:  # "before": the region of a tile is its whole grown rectangle (as at 845a513)
+                    grows, tiles_mod._GROWS_FROM_CONTEXT = tiles_mod._GROWS_FROM_CONTEXT, (() if mode == "before" else tiles_mod._GROWS_FROM_CONTEXT)
                     try:
                         arr = tiled("synth", ex, size, tile_size=tile, seed=seed)
                     finally:
-                        tiles_mod._GROWS_INTO_BAND = grows
+                        tiles_mod._GROWS_FROM_CONTEXT = grows
                 cpu = time.process_time() - t0
                 row = {"seed": seed, "elements": len(arr), "cpu_s": cpu, "kinds": list(arr.kinds)}
                 for width in (0.05 * tile, 0.1 * tile):
