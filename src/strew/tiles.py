@@ -277,14 +277,17 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
     if job.method in _GROWS_FROM_CONTEXT and len(arr):
-        keep |= _within(arr, t.rect, _extent(arr))
+        # one element diameter: two_sizes strips +-0.05 tile 1.075x with one extent
+        # (radius), 1.020x with a diameter (seeds 3-5, 880 x 880); an element kept there
+        # touches only tiles within two diameters of t, which see it in t's border band
+        keep |= _within(arr, t.rect, 2.0 * _extent(arr))
     arr = _own_parts(arr.select(keep))
     return arr.replace(meta={"tile": t.index}, region=None)
 
 
 # methods that grow the texture on from the context (synth: region growing, §5.4): a
 # tile's region leaves out its finished neighbours (_outside_finished), and a tile keeps
-# also its elements centred within one element extent of its rectangle on an unfinished
+# also its elements centred within one element diameter of its rectangle on an unfinished
 # neighbour's side, so that the elements crossing a border stay (its neighbour sees them
 # as context); pack fills gaps by design and keeps its neighbours' strip instead
 _GROWS_FROM_CONTEXT = ("synth",)
