@@ -228,10 +228,9 @@ def test_cli_info_summarises_a_dataset_without_loading_it(worlds, capsys):
 
 
 def test_synth_tiles_never_overlap_across_borders():
-    # synth runs through the tiler without overlaps; its context is now a neighbourhood
-    # (frozen neighbours, synth/_context.py), but it is not seamless yet: border strips of
-    # half-width 15 hold 0.74-1.00x the interior's density (stones.svg, 300x200 and 400x300
-    # in tiles of 100, seeds 1-3; was 0.45-0.69x with context as an obstacle only)
+    # synth runs through the tiler without overlaps, with its finished neighbours as a
+    # frozen neighbourhood (synth/_context.py); border-strip densities are measured by
+    # `benchmarks/worlds.py --synth-seams` and asserted in tests/worlds/test_synth_tiles.py
     from strew.io import load
 
     ex = load(Path(__file__).parents[2] / "examples" / "exemplars" / "stones.svg")

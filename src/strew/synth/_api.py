@@ -67,7 +67,7 @@ SPEC = MethodSpec(
         Param("yield_window", "int", None, low=0, help="Iterations whose horizon elements yield to a larger size class.", cli=False,
               section="extension of §7"),
         Param("noise_floor", "float", None, low=0, help="Optimisation moves shortened by the element's prediction spread, by at most "
-              "this fraction of its radius (keeps the exemplar's jitter).", cli=False, section="extension of §5.2-5.3"),
+              "this fraction of its radius (keeps the exemplar's jitter; near-regular exemplars that are not jittered lattices).", cli=False, section="extension of §5.2-5.3"),
     ),
 )
 

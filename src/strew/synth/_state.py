@@ -67,7 +67,8 @@ class SynthParams:
         Optimisation moves are shortened by the spread of the element's predictions,
         by at most this fraction of its collision radius (0.1; 0 turns it off): the
         texture's own jitter is kept, not averaged away (an extension of §5.2-5.3, see
-        ``_optimize._soft_threshold``).
+        ``_optimize._soft_threshold``). It applies to near-regular exemplars that are
+        not jittered lattices; those keep their jitter through ``_optimize._own_jitter``.
     """
 
     k: int = 5
