@@ -440,6 +440,28 @@ def _empty_topology(grid: float) -> _Topology:
 CHUNK_SEGMENTS = 4096
 
 
+def _pieces_along(ca: np.ndarray, cb: np.ndarray, tree: Any, sa: np.ndarray, sb: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs (noded piece, source segment) with the piece lying along the segment.
+
+    ``ca``, ``cb``: (m, 2) piece ends; ``tree``: an STRtree of the source segments
+    ``sa``-``sb`` ((n, 2) each). A piece lies along a segment when both its ends are
+    within ``tol`` of it; a piece along none takes its nearest segment. Returns
+    (piece indices, segment indices), (k,) each.
+    """
+    mids = shapely.points((ca + cb) / 2)
+    qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
+    ok = (_point_segment_distance(ca[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(cb[qi], sa[qj], sb[qj]) <= tol)
+    qi, qj = qi[ok], qj[ok]
+    covered = np.zeros(len(ca), dtype=bool)
+    covered[qi] = True
+    missing = np.flatnonzero(~covered)
+    if len(missing):
+        mi, mj = tree.query_nearest(mids[missing], return_distance=False)
+        qi = np.r_[qi, missing[mi]]
+        qj = np.r_[qj, mj]
+    return qi, qj
+
+
 def _noded_segments(noded: Any, g: float) -> tuple[np.ndarray, np.ndarray]:
     """The non-degenerate segments ``(a_ij, b_ij)``, each (m, 2) int64 grid coordinates,
     of GEOS' noded linework ``noded``."""
@@ -520,19 +542,10 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -
         # the pieces along an owned segment (as in _induce's attribution, step 3)
         pa, pb = na * g, nb * g
         tree = shapely.STRtree(shapely.linestrings(np.stack([sa, sb], axis=1)))
-        mids = shapely.points((pa + pb) / 2)
-        qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
-        ok = (_point_segment_distance(pa[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(pb[qi], sa[qj], sb[qj]) <= tol)
-        qi, qj = qi[ok], qj[ok]
-        hit = np.zeros(len(na), dtype=bool)
-        hit[qi] = True
+        qi, qj = _pieces_along(pa, pb, tree, sa, sb, tol)
         keep = np.zeros(len(na), dtype=bool)
         keep[qi[owner[sel[qj]] == s]] = True
-        miss = np.flatnonzero(~hit)
-        if len(miss):
-            mi, mj = tree.query_nearest(mids[miss], return_distance=False)
-            keep[miss[mi[owner[sel[mj]] == s]]] = True
-        del tree, mids, qi, qj, ok, hit, pa, pb, sa, sb
+        del tree, qi, qj, pa, pb, sa, sb
         seg = np.c_[na[keep], nb[keep]]
         swap = (seg[:, 0] > seg[:, 2]) | ((seg[:, 0] == seg[:, 2]) & (seg[:, 1] > seg[:, 3]))
         seg[swap] = seg[swap][:, [2, 3, 0, 1]]
@@ -635,17 +648,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     qis, qjs = [], []
     for c0 in range(0, n_seg, CHUNK_SEGMENTS):
         ca, cb = na[c0 : c0 + CHUNK_SEGMENTS], nb[c0 : c0 + CHUNK_SEGMENTS]
-        mids = shapely.points((ca + cb) / 2)
-        qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
-        ok = (_point_segment_distance(ca[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(cb[qi], sa[qj], sb[qj]) <= tol)
-        qi, qj = qi[ok], qj[ok]
-        covered = np.zeros(len(ca), dtype=bool)
-        covered[qi] = True
-        missing = np.flatnonzero(~covered)
-        if len(missing):
-            mi, mj = tree.query_nearest(mids[missing], return_distance=False)
-            qi = np.r_[qi, missing[mi]]
-            qj = np.r_[qj, mj]
+        qi, qj = _pieces_along(ca, cb, tree, sa, sb, tol)
         qis.append(qi + c0)
         qjs.append(qj)
     qi, qj = np.concatenate(qis), np.concatenate(qjs)
@@ -654,7 +657,7 @@ def _induce(curves: Curves, grid: float) -> _Topology:
     sdir = sb[qj] - sa[qj]
     orient = np.where((ndir[qi] * sdir).sum(axis=1) >= 0, 1, -1)
     cur = scurve[qj]
-    del tree, mids, ok, covered, missing, ndir, sdir, sa, sb, scurve, qj, na, nb
+    del tree, ndir, sdir, sa, sb, scurve, qj, na, nb
     # one (curve, orientation) per noded segment and curve
     order = np.lexsort((orient, cur, qi))
     qi, cur, orient = qi[order], cur[order], orient[order]
