@@ -546,13 +546,16 @@ class _Doc:
         els = [el for el in els if id(el) not in self._segments]
         if not els:
             return
-        found = points_many([el.get("points") or "" for el in els], [_local(el.tag) == "polygon" for el in els])
-        if found is None:
-            return
         cache = self._segments
-        for el, segs in zip(els, found):
-            if segs is not None:
-                cache[id(el)] = segs
+        # in blocks of 4096 (each text's reading is its own; one block's arrays stay small)
+        for lo in range(0, len(els), 4096):
+            block = els[lo : lo + 4096]
+            found = points_many([el.get("points") or "" for el in block], [_local(el.tag) == "polygon" for el in block])
+            if found is None:
+                continue
+            for el, segs in zip(block, found):
+                if segs is not None:
+                    cache[id(el)] = segs
 
     def _parse_segments(self, el: ET.Element) -> Segments:
         tag = _local(el.tag)
