@@ -61,7 +61,7 @@ else:
 out = {}
 client = cluster = None
 kw = {}
-if workers > 1:
+if workers > 1 or (len(sys.argv) > 6 and sys.argv[6] == "dask"):  # "dask": 1 worker on a cluster too
     from dask.distributed import Client, LocalCluster
     t0 = time.perf_counter()
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=40)
@@ -108,18 +108,19 @@ SYNTH_DENSITY = 0.00191  # elements per unit area (measured: 1,222-1,232 in 800 
 SYNTH_TILE = 400.0
 
 
-def run(n: float, workers: int, method: str = "pack", tile: float | None = None) -> dict:
+def run(n: float, workers: int, method: str = "pack", tile: float | None = None, dask: bool = False) -> dict:
+    """One world in a fresh subprocess; ``dask``: on a LocalCluster even for 1 worker."""
     density, tile = (SYNTH_DENSITY, tile or SYNTH_TILE) if method == "synth" else (DENSITY, tile or TILE)
     side = math.sqrt(n / density)
-    p = subprocess.run([sys.executable, "-c", _CHILD, f"{side:.3f}", str(workers), f"{tile:g}", method, str(SYNTH_EXEMPLAR)],
+    p = subprocess.run([sys.executable, "-c", _CHILD, f"{side:.3f}", str(workers), f"{tile:g}", method, str(SYNTH_EXEMPLAR), "dask" if dask else ""],
                        capture_output=True, text=True, check=False)
     line = [x for x in p.stdout.splitlines() if x.startswith("RESULT ")]
     if p.returncode or not line:
         raise SystemExit(f"child failed ({p.returncode}):\n{p.stderr[-3000:]}")
     r = json.loads(line[0][7:])
-    r.update(method=method, tile_size=tile, target=n, workers=workers, side=side, us_per_element=1e6 * r["seconds"] / max(r["elements"], 1),
+    r.update(method=method, tile_size=tile, target=n, workers=workers, on_dask=bool(dask or workers > 1), side=side, us_per_element=1e6 * r["seconds"] / max(r["elements"], 1),
              cpu_us_per_element=1e6 * r["cpu_seconds"] / max(r["elements"], 1))
-    print(f"  {method} n~{n:.0e} workers={workers} tile {tile:g}: {r['elements']:,} el, {r['tiles']} tiles, {r['seconds']:.1f} s, "
+    print(f"  {method} n~{n:.0e} workers={workers}{' (Dask)' if r['on_dask'] else ''} tile {tile:g}: {r['elements']:,} el, {r['tiles']} tiles, {r['seconds']:.1f} s, "
           f"{r['us_per_element']:.0f} us/el ({r['cpu_us_per_element']:.0f} CPU us/el, all processes), worker peak RSS {max(r['worker_maxrss_mb']):.0f} MB, "
           f"client {r['client_maxrss_mb']:.0f} MB", flush=True)
     return r
@@ -281,10 +282,16 @@ def only(args: argparse.Namespace, sizes: list[float]) -> None:
     elif args.only == "speedup":
         n = sizes[0]
         one = [run(n, 1, args.method) for _ in range(args.repeat)]
+        # two baselines: the in-process runner (no Dask at all), and 1 worker on a
+        # LocalCluster, whose scheduler and client share the 2 cores just as they do with 2
+        one_dask = [run(n, 1, args.method, dask=True) for _ in range(args.repeat)]
         two = [run(n, 2, args.method) for _ in range(args.repeat)]
         s1, s2 = statistics.median(r["seconds"] for r in one), statistics.median(r["seconds"] for r in two)
-        print(f"  {n:.0e} elements: 1 worker {s1:.1f} s, 2 workers {s2:.1f} s (medians of {args.repeat}): speed-up {s1 / s2:.2f}x (target 1.7x)")
-        res.update(elements=n, one_worker_s=s1, two_workers_s=s2, ratio=s1 / s2, runs_one=one, runs_two=two)
+        s1d = statistics.median(r["seconds"] for r in one_dask)
+        print(f"  {n:.0e} elements: 1 worker in-process {s1:.1f} s, 1 Dask worker {s1d:.1f} s, 2 Dask workers {s2:.1f} s "
+              f"(medians of {args.repeat}): speed-up {s1 / s2:.2f}x over in-process, {s1d / s2:.2f}x over 1 Dask worker (target 1.7x)")
+        res.update(elements=n, one_worker_s=s1, one_dask_worker_s=s1d, two_workers_s=s2, ratio=s1 / s2,
+                   ratio_over_one_dask_worker=s1d / s2, runs_one=one, runs_one_dask=one_dask, runs_two=two)
     else:  # memory
         n = sizes[0]
         runs = [run(n, args.workers, args.method, tile=float(t)) for t in args.tile_sizes.split(",")]
