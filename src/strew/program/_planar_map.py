@@ -473,8 +473,9 @@ def _noded_segments(noded: Any, g: float) -> tuple[np.ndarray, np.ndarray]:
     return a[nz], b[nz]
 
 
-def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -> tuple[np.ndarray, np.ndarray]:
-    """Snap-round and node segments strip by strip (issue 19.6: memory).
+def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Snap-round and node segments strip by strip (issue 19.6: memory), and attribute the
+    noded pieces to the source segments they lie along.
 
     GEOS' overlay nodes the whole linework at once and holds about 3 KB per segment while it
     does so (4.4 KB per segment of peak RSS in all at 40k random segments). Here each
@@ -487,6 +488,12 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -
     keeps the noded pieces lying along an owned segment. A piece shared by two strips (two
     overlapping segments of two owners) is kept once. Segments are never cut, so the result
     is the global noding, not an approximation of it.
+
+    Which pieces a strip keeps is decided by one attribution of every strip's pieces to all
+    source segments (:func:`_pieces_along`), the same that ``_induce`` needs for the kept
+    pieces: attributing in every strip and again globally cost the Fig. 11(d) mosaic 1.25-1.45x
+    the CPU of one global noding (issue 19.6). A piece lying along a segment lies along it
+    wherever it is tested, so the kept pieces are those of a per-strip test.
 
     Parameters
     ----------
@@ -501,6 +508,8 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -
     -------
     na, nb : (s, 2) int64
         Noded segments, each once (``na`` <= ``nb`` lexicographically).
+    qi, qj : (k,) int64
+        The pairs (noded segment, source segment) of :func:`_pieces_along` for them.
     """
     n = len(a)
     k = max(2, int(np.ceil(n / (CHUNK_SEGMENTS / 2))))
@@ -517,7 +526,6 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -
     # snap that piece comes from segments in the input
     lines = shapely.linestrings(np.stack([a, b], axis=1) * g)
     index = shapely.STRtree(lines)
-    tol = 4.0 * g
     outs: list[np.ndarray] = []
     for s in range(k):
         own = order[cuts[s] : cuts[s + 1]]
@@ -526,33 +534,54 @@ def _node_in_strips(a: np.ndarray, b: np.ndarray, curve: np.ndarray, g: float) -
         lo_, hi_ = np.minimum(a[own], b[own]) * g - 6.0 * g, np.maximum(a[own], b[own]) * g + 6.0 * g
         sel = np.unique(np.r_[own, index.query(shapely.box(lo_[:, 0], lo_[:, 1], hi_[:, 0], hi_[:, 1]))[1]])
         del lo_, hi_
-        sa, sb = a[sel] * g, b[sel] * g
+        sa = a[sel] * g
         # consecutive segments of one curve go to GEOS as one polyline (as in the global
         # noding: the same vertices, and GEOS nodes polylines much faster than their segments)
         brk = np.r_[True, (np.diff(sel) != 1) | (curve[sel][1:] != curve[sel][:-1])]
         gid = np.cumsum(brk) - 1
         ends = np.flatnonzero(np.r_[brk[1:], True])
-        pts = np.insert(sa, ends + 1, sb[ends], axis=0)
+        pts = np.insert(sa, ends + 1, b[sel[ends]] * g, axis=0)
         noded = shapely.union_all(shapely.linestrings(pts, indices=np.insert(gid, ends + 1, gid[ends])), grid_size=g)
-        del brk, gid, ends, pts
+        del brk, gid, ends, pts, sa, sel
         na, nb = _noded_segments(noded, g)
         del noded
-        if not len(na):
-            continue
-        # the pieces along an owned segment (as in _induce's attribution, step 3)
-        pa, pb = na * g, nb * g
-        tree = shapely.STRtree(shapely.linestrings(np.stack([sa, sb], axis=1)))
-        qi, qj = _pieces_along(pa, pb, tree, sa, sb, tol)
-        keep = np.zeros(len(na), dtype=bool)
-        keep[qi[owner[sel[qj]] == s]] = True
-        del tree, qi, qj, pa, pb, sa, sb
-        seg = np.c_[na[keep], nb[keep]]
-        swap = (seg[:, 0] > seg[:, 2]) | ((seg[:, 0] == seg[:, 2]) & (seg[:, 1] > seg[:, 3]))
-        seg[swap] = seg[swap][:, [2, 3, 0, 1]]
-        outs.append(seg)
-    del index, lines
-    seg = np.unique(np.concatenate(outs), axis=0) if outs else np.zeros((0, 4), np.int64)
-    return np.ascontiguousarray(seg[:, :2]), np.ascontiguousarray(seg[:, 2:])
+        if len(na):
+            seg = np.c_[na, nb, np.full(len(na), s, dtype=np.int64)]
+            swap = (seg[:, 0] > seg[:, 2]) | ((seg[:, 0] == seg[:, 2]) & (seg[:, 1] > seg[:, 3]))
+            seg[swap, :4] = seg[swap][:, [2, 3, 0, 1]]
+            outs.append(seg)
+    if not outs:
+        del index, lines
+        z = np.zeros((0, 2), np.int64)
+        return z, z, np.zeros(0, np.int64), np.zeros(0, np.int64)
+    rows = np.concatenate(outs)
+    del outs
+    # every strip's pieces against every source segment, in batches (memory); a strip keeps
+    # a piece lying along one of its own segments (or nearest one, when it lies along none)
+    sa, sb = a * g, b * g
+    tol = 4.0 * g
+    tree = index  # the tree of every source segment
+    keep = np.zeros(len(rows), dtype=bool)
+    qis, qjs = [], []
+    for c0 in range(0, len(rows), CHUNK_SEGMENTS):
+        c = rows[c0 : c0 + CHUNK_SEGMENTS]
+        qi, qj = _pieces_along(c[:, :2] * g, c[:, 2:4] * g, tree, sa, sb, tol)
+        keep[c0 + qi[owner[qj] == c[qi, 4]]] = True
+        qis.append(qi + c0)
+        qjs.append(qj)
+    del tree, index, lines, sa, sb
+    qi, qj = np.concatenate(qis), np.concatenate(qjs)
+    del qis, qjs
+    # the kept pieces, each once; a piece's pairs depend on its geometry only, so those of
+    # its first kept row stand for it
+    kept = np.flatnonzero(keep)
+    seg, first, inv = np.unique(rows[kept, :4], axis=0, return_index=True, return_inverse=True)
+    uid = np.full(len(rows), -1, dtype=np.int64)
+    uid[kept[first]] = np.arange(len(seg))
+    del rows, keep, kept, first, inv
+    ok = uid[qi] >= 0
+    qi, qj = uid[qi[ok]], qj[ok]
+    return np.ascontiguousarray(seg[:, :2]), np.ascontiguousarray(seg[:, 2:]), qi, qj
 
 
 def _ring_edges(source: np.ndarray, target: np.ndarray, n_v: int) -> np.ndarray:
@@ -628,12 +657,14 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         del b, c, cx, cy
     if len(sa) > CHUNK_SEGMENTS:
         del src_lines
-        na_ij, nb_ij = _node_in_strips(np.rint(sa / g).astype(np.int64), np.rint(sb / g).astype(np.int64), scurve, g)
+        # the strips also attribute the pieces (step 3)
+        na_ij, nb_ij, qi, qj = _node_in_strips(np.rint(sa / g).astype(np.int64), np.rint(sb / g).astype(np.int64), scurve, g)
     else:
         noded = shapely.union_all(src_lines, grid_size=g)
         del src_lines
         na_ij, nb_ij = _noded_segments(noded, g)
         del noded
+        qi = None
     if len(na_ij) == 0:
         return _empty_topology(g)
     na, nb = na_ij * g, nb_ij * g
@@ -642,22 +673,23 @@ def _induce(curves: Curves, grid: float) -> _Topology:
         return _empty_topology(g)
 
     # 3. attribute each noded segment to the source segments it lies along
-    tol = 4.0 * g
-    tree = shapely.STRtree(shapely.linestrings(np.stack([sa, sb], axis=1)))
-    # in batches of midpoints: a shapely point costs about 100 bytes (issue 19.6, memory)
-    qis, qjs = [], []
-    for c0 in range(0, n_seg, CHUNK_SEGMENTS):
-        ca, cb = na[c0 : c0 + CHUNK_SEGMENTS], nb[c0 : c0 + CHUNK_SEGMENTS]
-        qi, qj = _pieces_along(ca, cb, tree, sa, sb, tol)
-        qis.append(qi + c0)
-        qjs.append(qj)
-    qi, qj = np.concatenate(qis), np.concatenate(qjs)
-    del qis, qjs, ca, cb
+    if qi is None:
+        tol = 4.0 * g
+        tree = shapely.STRtree(shapely.linestrings(np.stack([sa, sb], axis=1)))
+        # in batches of midpoints: a shapely point costs about 100 bytes (issue 19.6, memory)
+        qis, qjs = [], []
+        for c0 in range(0, n_seg, CHUNK_SEGMENTS):
+            ca, cb = na[c0 : c0 + CHUNK_SEGMENTS], nb[c0 : c0 + CHUNK_SEGMENTS]
+            qi, qj = _pieces_along(ca, cb, tree, sa, sb, tol)
+            qis.append(qi + c0)
+            qjs.append(qj)
+        qi, qj = np.concatenate(qis), np.concatenate(qjs)
+        del qis, qjs, ca, cb, tree
     ndir = nb - na
     sdir = sb[qj] - sa[qj]
     orient = np.where((ndir[qi] * sdir).sum(axis=1) >= 0, 1, -1)
     cur = scurve[qj]
-    del tree, ndir, sdir, sa, sb, scurve, qj, na, nb
+    del ndir, sdir, sa, sb, scurve, qj, na, nb
     # one (curve, orientation) per noded segment and curve
     order = np.lexsort((orient, cur, qi))
     qi, cur, orient = qi[order], cur[order], orient[order]
