@@ -418,3 +418,50 @@ def test_straight_shapes_made_at_once_are_what_shape_makes():
     huge = '<svg xmlns="http://www.w3.org/2000/svg"><polygon points="0,0 1000,0 1000,1000" transform="scale(1e10)"/></svg>'
     with pytest.raises(InputError, match="coordinate magnitude over"):
         read_svg(huge)
+
+
+@settings(max_examples=60, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), grid=st.sampled_from([3, 5, 50]), shift=st.sampled_from([0.0, 1e6, 3e7]))
+def test_rings_found_simple_are_valid_polygons(seed, grid, shift):
+    """A ring _surely_simple calls simple is a valid polygon of positive area (GEOS's own
+    verdict); on rings of points on a small integer grid (repeated points, spikes, straight
+    vertices, touching edges) and far from the origin (rounding)."""
+    import shapely
+
+    rng = np.random.default_rng(seed)
+    lens = rng.integers(3, match._SIMPLE_MAX + 3, 200)
+    coords = rng.integers(0, grid, (int(lens.sum()), 2)) * rng.uniform(0.01, 10) + shift
+    sure = match._surely_simple(coords, lens)
+    polys = shapely.polygons(shapely.linearrings(coords, indices=np.repeat(np.arange(len(lens)), lens)))
+    truth = shapely.is_valid(polys) & (shapely.area(polys) > 0)
+    assert not (sure & ~truth).any()
+    assert not sure[lens > match._SIMPLE_MAX].any()
+
+
+def test_signatures_of_rings_found_simple_are_shapelys():
+    """Signatures made without shapely for rings found simple (their outlines made when
+    asked) equal those made through shapely's validity test, field for field."""
+    import shapely
+
+    rng = np.random.default_rng(11)
+    batch = []
+    for i in range(300):
+        k = int(rng.integers(3, 20))
+        if i % 3:  # star-shaped, rounded (now and then self-intersecting)
+            t = np.sort(rng.uniform(0, 2 * np.pi, k))
+            pts = np.round(rng.uniform(2, 6, (k, 1)) * np.c_[np.cos(t), np.sin(t)] + rng.uniform(0, 1000, 2), 2)
+        else:  # degenerate
+            pts = rng.integers(0, 4, (k, 2)).astype(float)
+        batch.append([Path(pts, True)])
+    new = match._signatures(batch)
+    with pytest.MonkeyPatch.context() as m:
+        m.setattr(match, "_SIMPLE_MAX", 0)
+        old = match._signatures(batch)
+    assert sum(s is not None and s.outline is None for s in new) > 100  # the shortcut was taken
+    for a, b in zip(new, old):
+        assert (a is None) == (b is None)
+        if a is None:
+            continue
+        assert (a.size, a.is_area, a.gyration, a.radius) == (b.size, b.is_area, b.gyration, b.radius)
+        assert np.array_equal(a.centroid, b.centroid) and np.array_equal(a.moments, b.moments) and np.array_equal(a.points, b.points)
+        assert shapely.equals_exact(match._outline(a), b.outline, tolerance=0)

@@ -84,7 +84,7 @@ class _Signature:
     """Similarity invariants of a flattened geometry (complex moments about its centroid)."""
 
     points: np.ndarray  # (n, 2) all vertices
-    outline: shapely.Geometry  # boundary lines, for distance checks
+    outline: shapely.Geometry | None  # boundary lines, for distance checks (None: made when asked, see _outline)
     size: float  # area, or length for line-only geometry
     is_area: bool
     centroid: np.ndarray  # (2,)
@@ -92,6 +92,15 @@ class _Signature:
     gyration: float  # radius of gyration
     radius: float  # largest vertex distance from the centroid
     tolerance: float = 0.0  # the flattening tolerance it was computed at
+
+
+def _outline(sig: _Signature) -> shapely.Geometry:
+    """The signature's outline; :func:`_signatures` leaves it to be made here for a ring it
+    knows to be simple (the boundary of the polygon of its points, as it would have made
+    it; most objects' outlines are never used: issue 17.3)."""
+    if sig.outline is None:
+        sig.outline = shapely.boundary(shapely.polygons(shapely.linearrings(sig.points)))
+    return sig.outline
 
 
 def _edges(geom: shapely.Geometry, is_area: bool) -> tuple[np.ndarray, np.ndarray]:
@@ -196,6 +205,59 @@ def _signature(paths: list[Path]) -> _Signature | None:
     )
 
 
+_SIMPLE_MAX = 16  # most vertices of a ring that _surely_simple tests (pairs of edges grow as k^2)
+# Shewchuk's error bound for the orientation's sign in floating point, (3 + 16 eps) eps,
+# times 4 to spare
+_ORIENT_BOUND = 4 * (3 + 16 * 2.0**-53) * 2.0**-53
+
+
+def _surely_simple(coords: np.ndarray, lens: np.ndarray) -> np.ndarray:
+    """(n,) bool: whether each ring (``coords`` (m, 2) cut into rings of ``lens`` points,
+    each closed back to its first) is certainly simple, so that its polygon is valid and
+    of positive area; False where that is not certain (shapely then decides).
+
+    A ring of at most ``_SIMPLE_MAX`` points is certainly simple when every three
+    consecutive vertices turn (no repeated point, no spike, no straight vertex) and every
+    two edges that share no vertex lie apart: the ends of one on one side of the other's
+    line. Each side is decided by the sign of an orientation determinant only where it
+    exceeds its rounding error bound (Shewchuk's filter, the test shapely's GEOS makes
+    exactly), so what is found simple is (issue 17.3: GEOS's validity test of every
+    object cost more than the moments).
+    """
+    n = len(lens)
+    out = np.zeros(n, dtype=bool)
+    first = np.cumsum(lens) - lens
+    for k in range(3, _SIMPLE_MAX + 1):
+        objs = np.flatnonzero(lens == k)
+        if not len(objs):
+            continue
+        p = coords[first[objs][:, None] + np.arange(k)]  # (n_k, k, 2)
+        x, y = p[..., 0], p[..., 1]
+
+        def turns(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+            """The sign (+1, -1, or 0 where unsure) of the turn a -> b -> c, per pair of columns."""
+            left = (x[:, a] - x[:, c]) * (y[:, b] - y[:, c])
+            right = (y[:, a] - y[:, c]) * (x[:, b] - x[:, c])
+            det = left - right
+            sure = np.abs(det) > _ORIENT_BOUND * (np.abs(left) + np.abs(right))
+            return np.where(sure, np.sign(det), 0.0)
+
+        with np.errstate(invalid="ignore", over="ignore"):
+            i = np.arange(k)
+            ok = (turns(i, (i + 1) % k, (i + 2) % k) != 0).all(axis=1)
+            # edges (i, i + 1) and (j, j + 1) that share no vertex
+            ii, jj = np.triu_indices(k, 2)
+            apart = ~((ii == 0) & (jj == k - 1))
+            ii, jj = ii[apart], jj[apart]
+            if len(ii):
+                i1, j1 = (ii + 1) % k, (jj + 1) % k
+                s1, s2 = turns(ii, i1, jj), turns(ii, i1, j1)
+                s3, s4 = turns(jj, j1, ii), turns(jj, j1, i1)
+                ok &= (((s1 * s2) > 0) | ((s3 * s4) > 0)).all(axis=1)
+        out[objs] = ok
+    return out
+
+
 def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
     """:func:`_signature` of many objects at once (issue 17.3).
 
@@ -222,9 +284,19 @@ def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
             lens = lens[open_ring]
             coords = np.concatenate(pts_list) if pts_list else np.zeros((0, 2))
     if one:
-        polys = shapely.polygons(shapely.linearrings(coords, indices=np.repeat(np.arange(len(one)), lens)))
-        valid = shapely.is_valid(polys)
-        good = valid & (shapely.area(polys) > 0)
+        # rings certainly simple need no polygon (their outlines are made when asked, see
+        # _outline); shapely decides the others
+        valid = _surely_simple(coords, lens)
+        good = valid.copy()
+        polys = np.full(len(one), None, dtype=object)
+        unsure = np.flatnonzero(~valid)
+        if len(unsure):
+            cnt = lens[unsure]
+            at = np.repeat(np.arange(len(unsure)), cnt)
+            pick = np.repeat((np.cumsum(lens) - lens)[unsure], cnt) + (np.arange(len(at)) - np.repeat(np.cumsum(cnt) - cnt, cnt))
+            polys[unsure] = shapely.polygons(shapely.linearrings(coords[pick], indices=at))
+            valid[unsure] = shapely.is_valid(polys[unsure])
+            good[unsure] = valid[unsure] & (shapely.area(polys[unsure]) > 0)
     # Self-intersecting rings: repaired as paths_to_polygon repairs them (make_valid, its
     # polygons of positive area), all at once; where that gives anything but polygons,
     # or nothing, the object goes through _signature.
@@ -302,7 +374,9 @@ def _signatures(batch: list[list[Path]]) -> list[_Signature | None]:
     mom /= 2j
     mom *= turn[:, None]
     polar = (np.add.reduceat((zq * np.conj(zq)).real * w, starts) / 2 / 2j).real * turn
-    outlines = shapely.boundary(polys)
+    outlines = np.full(n, None, dtype=object)
+    made = np.array([g is not None for g in polys.tolist()], dtype=bool)
+    outlines[made] = shapely.boundary(polys[made])
     pts_all = coords if len(sel) == len(one) else np.concatenate([pts_list[k] for k in sel.tolist()])
     cnt = lens[sel]
     first = np.cumsum(cnt) - cnt
@@ -396,10 +470,10 @@ def _match(ref: _Signature, other: _Signature) -> tuple[float, float] | None:
         c, sn = math.cos(t), math.sin(t)
         rot = s * np.array([[c, -sn], [sn, c]])
         moved = (ref.points - ref.centroid) @ rot.T + other.centroid
-        err = float(shapely.distance(other.outline, shapely.points(moved)).max())
+        err = float(shapely.distance(_outline(other), shapely.points(moved)).max())
         if err > limit:
             continue
-        outline = shapely.transform(ref.outline, lambda p, rot=rot: (p - ref.centroid) @ rot.T + other.centroid)
+        outline = shapely.transform(_outline(ref), lambda p, rot=rot: (p - ref.centroid) @ rot.T + other.centroid)
         err = max(err, float(shapely.distance(outline, shapely.points(other.points)).max()))
         if err <= limit and err < best_err:
             best, best_err = (float(math.atan2(sn, c)), s), err
