@@ -260,24 +260,6 @@ def test_stream_is_uniform():
     assert abs(np.corrcoef(u[:-1], u[1:])[0, 1]) < 0.01
 
 
-@numba.njit
-def _splitmix(seed, n):  # pragma: no cover - numba
-    state = np.empty(1, dtype=np.uint64)
-    state[0] = seed
-    out = np.empty(n)
-    for i in range(n):
-        out[i] = prng.splitmix_uniform(state)
-    return out
-
-
-@given(st.integers(0, 2**63 - 1))
-def test_poisson_stream_is_determined_by_the_generator_and_in_range(seed):
-    s1 = prng.splitmix_seed(np.random.default_rng(seed))
-    a, b = _splitmix(s1, 500), _splitmix(prng.splitmix_seed(np.random.default_rng(seed)), 500)
-    assert np.array_equal(a, b)
-    assert a.min() >= 0.0 and a.max() < 1.0
-
-
 @given(boxes, st.lists(st.tuples(coord, coord, st.floats(0, 20), st.floats(0, 20)), min_size=1, max_size=5), st.floats(0.5, 30.0))
 def test_box_grid_for_python_callers_matches_brute_force(items, queries, cell):
     bg = grid.BoxGrid((-10.0, -10.0, 10.0, 10.0), cell)  # boxes reach past it on every side

@@ -41,14 +41,26 @@ def _shares(arr, kinds) -> np.ndarray:
     return np.array([counts.get(k, 0) for k in kinds]) / len(arr)
 
 
-@pytest.mark.parametrize("seed", [1])
-def test_fill_gap_places_at_least_naives_count_in_the_l_shape(concave3, seed):
+# Two random processes compared over paired seeds, not one: their counts spread about
+# +-8 elements from seed to seed, so a single seed's order is luck (seed 17 placed 208
+# against naive's 214 on both Poisson-disk streams, seed 1 does since issue 15 point 5).
+# The mean must lead by 5 elements, which the paper's cycle (194 on average, issue 21)
+# misses by 13 and the current fill-gap (about 215 against 202 over seeds 1-20) meets.
+SEEDS_VS_NAIVE = range(1, 9)
+
+
+@pytest.mark.slow
+def test_fill_gap_places_more_than_naive_on_average_in_the_l_shape(concave3):
     # issue 21: with the paper's cycle, fill-gap placed fewer than naive dart throwing here
-    fg = pack(concave3, L_SHAPE, scale=(0.25, 0.25), rng=seed)
-    nv = pack(concave3, L_SHAPE, scale=(0.25, 0.25), method="naive", rng=seed)
-    _valid(fg, L_SHAPE)
-    assert len(fg) >= len(nv)
-    assert fg.meta["pack"]["trials"] < nv.meta["pack"]["trials"] / 10
+    fg, nv = [], []
+    for seed in SEEDS_VS_NAIVE:
+        a = pack(concave3, L_SHAPE, scale=(0.25, 0.25), rng=seed)
+        b = pack(concave3, L_SHAPE, scale=(0.25, 0.25), method="naive", rng=seed)
+        _valid(a, L_SHAPE)
+        assert a.meta["pack"]["trials"] < b.meta["pack"]["trials"] / 10
+        fg.append(len(a))
+        nv.append(len(b))
+    assert np.mean(fg) >= np.mean(nv) + 5, (fg, nv)
 
 
 @pytest.mark.parametrize("weights", [None, {"concave": 2.0, "tree": 1.0, "elongated": 1.0}])

@@ -27,6 +27,9 @@ def _min_distance(pts: np.ndarray) -> float:
 )
 # a strip narrower than 2r: Bridson's front died out at y = 11 of 27 (found by hypothesis)
 @example(w=5.0, h=27.0, r=3.25, seed=117986734)
+# the same strip on the shared xoshiro256+ stream (issue 15 point 5): seed 22's front dies
+# at its first sample (y < 0.3; the only seed of 0-199 whose front dies here)
+@example(w=5.0, h=27.0, r=3.25, seed=22)
 def test_points_are_separated_inside_and_cover_the_rectangle(w, h, r, seed):
     pts = poisson_disk((w, h), r, rng=seed)
     assert len(pts) >= 1

@@ -6,9 +6,9 @@ Poisson-disk points whose circles circumscribe them; :func:`poisson_disk` is als
 The sampler is Bridson's "fast Poisson disk sampling in arbitrary dimensions" (2007):
 a background grid of cell ``r / sqrt(2)`` holds at most one sample, an active list
 grows from a seed, and each active sample spawns up to ``candidates`` trial points in
-the annulus ``[r, 2r]``. Random numbers come from a SplitMix64 stream seeded from the
-caller's ``numpy.random.Generator`` (:mod:`strew._kernels.prng`: why not yet the shared
-xoshiro256+ stream), so no global random state is touched.
+the annulus ``[r, 2r]``. Random numbers come from the shared compiled stream
+(:mod:`strew._kernels.prng`, xoshiro256+) seeded from the caller's
+``numpy.random.Generator``, so no global random state is touched.
 """
 
 from __future__ import annotations
@@ -21,17 +21,15 @@ import numpy as np
 import shapely
 
 from .._errors import InputError
-from .._kernels.prng import splitmix_seed
-from .._kernels.prng import splitmix_uniform as _next
+from .._kernels.prng import seed_state
+from .._kernels.prng import uniform as _next
 from .._rng import as_rng
 
 __all__ = ["poisson_disk"]
 
 @numba.njit(cache=True)
-def _bridson(width: float, height: float, r: float, k: int, seed: np.uint64, max_points: int) -> np.ndarray:
+def _bridson(width: float, height: float, r: float, k: int, state: np.ndarray, max_points: int) -> np.ndarray:
     """Bridson sampling of the rectangle [0, width) x [0, height); (n, 2) points."""
-    state = np.empty(1, dtype=np.uint64)
-    state[0] = seed
     cell = r / np.sqrt(2.0)
     gw = max(1, int(np.ceil(width / cell)))
     gh = max(1, int(np.ceil(height / cell)))
@@ -182,7 +180,7 @@ def _wrap_i(i: int, n: int) -> int:
 
 
 @numba.njit(cache=True)
-def _bridson_torus(width: float, height: float, r: float, k: int, seed: np.uint64, max_points: int) -> np.ndarray:
+def _bridson_torus(width: float, height: float, r: float, k: int, state: np.ndarray, max_points: int) -> np.ndarray:
     """Bridson sampling of the torus [0, width) x [0, height) (issue 18): distances and
     the background grid wrap around, so the points tile without a seam; (n, 2) points.
 
@@ -190,8 +188,6 @@ def _bridson_torus(width: float, height: float, r: float, k: int, seed: np.uint6
     ``height / gh``, each at most ``r / sqrt(2)``, so a cell holds at most one sample),
     and a candidate looks at the cells within ``r`` of it, wrapped.
     """
-    state = np.empty(1, dtype=np.uint64)
-    state[0] = seed
     cell0 = r / np.sqrt(2.0)
     gw = max(1, int(np.ceil(width / cell0)))
     gh = max(1, int(np.ceil(height / cell0)))
@@ -327,11 +323,9 @@ def _bridson_torus(width: float, height: float, r: float, k: int, seed: np.uint6
 
 @numba.njit(cache=True)
 def _bridson_variable(
-    width: float, height: float, rmap: np.ndarray, mcell: float, rmin: float, rmax: float, k: int, seed: np.uint64, max_points: int
+    width: float, height: float, rmap: np.ndarray, mcell: float, rmin: float, rmax: float, k: int, state: np.ndarray, max_points: int
 ) -> np.ndarray:
     """Bridson sampling with a radius map: points p, q keep ``|p - q| >= max(r(p), r(q))``."""
-    state = np.empty(1, dtype=np.uint64)
-    state[0] = seed
     mh, mw = rmap.shape
     cell = rmin / np.sqrt(2.0)  # every pair is at least rmin apart: one point per cell
     gw = max(1, int(np.ceil(width / cell)))
@@ -493,8 +487,8 @@ def poisson_disk(
         x0, y0, w, h = (0.0, 0.0, geom[2], geom[3]) if isinstance(geom, tuple) else frame_of_region(geom)
         if w * h / (radius * radius) > 4 * max_points:
             raise InputError(f"radius: {radius} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
-        seed = splitmix_seed(gen)
-        pts = _bridson_torus(float(w), float(h), radius, int(candidates), seed, int(max_points))
+        state = seed_state(gen)
+        pts = _bridson_torus(float(w), float(h), radius, int(candidates), state, int(max_points))
         pts[:, 0] += x0
         pts[:, 1] += y0
         return pts
@@ -524,11 +518,11 @@ def poisson_disk(
     cells = (w / rmin * np.sqrt(2) + 1) * (h / rmin * np.sqrt(2) + 1)
     if cells > 4 * max_points:
         raise InputError(f"radius: {rmin} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
-    seed = splitmix_seed(gen)
+    state = seed_state(gen)
     if rmap is None:
-        pts = _bridson(float(w), float(h), radius, int(candidates), seed, int(max_points))
+        pts = _bridson(float(w), float(h), radius, int(candidates), state, int(max_points))
     else:
-        pts = _bridson_variable(float(w), float(h), rmap, float(mcell), rmin, float(rmap.max()), int(candidates), seed, int(max_points))
+        pts = _bridson_variable(float(w), float(h), rmap, float(mcell), rmin, float(rmap.max()), int(candidates), state, int(max_points))
     pts[:, 0] += x0
     pts[:, 1] += y0
     if poly is not None:
