@@ -13,8 +13,15 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+from . import _display
 from ._errors import Cancelled, InputError
 from ._version import __version__
+
+# The core type's writers (Arrangement.to_svg, its notebook pictures, to_pandas) are
+# io's: the core only declares their hooks (strew._display), and this facade, which sits
+# above every layer, has io fill them on first use, so that imports point down and
+# ``import strew`` stays as light as before (issue 15 point 7).
+_display.set_provider(lambda: importlib.import_module("strew.io"))
 
 __all__ = [
     "__version__",

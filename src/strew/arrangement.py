@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 import shapely
 
+from ._display import hook
 from ._errors import InputError
 from ._limits import check_coordinates
 from .region import Region
@@ -496,11 +497,11 @@ class Arrangement:
         return concat([self, *others])
 
     # -- display ----------------------------------------------------------------------
+    # The writers live in strew.io, a layer above: they reach this type through the
+    # hooks of strew._display, which io fills when it is imported (issue 15 point 7).
     def to_svg(self, **kwargs: Any) -> str:
         """SVG text; see :func:`strew.io.svg.to_svg`."""
-        from .io.svg import to_svg
-
-        return to_svg(self, **kwargs)
+        return hook("svg")(self, **kwargs)
 
     # Notebooks show small arrangements as SVG; above this many elements the SVG would be
     # megabytes (about 165 bytes per element), so they show a PNG with a note instead.
@@ -514,9 +515,7 @@ class Arrangement:
     def _repr_png_(self) -> bytes | None:
         if len(self) <= self.REPR_SVG_MAX_ELEMENTS:
             return None
-        from .io.png import to_png
-
-        return to_png(self, width=720)
+        return hook("png")(self, width=720)
 
     def _repr_html_(self) -> str | None:
         png = self._repr_png_()
@@ -531,22 +530,16 @@ class Arrangement:
     # -- data frames ------------------------------------------------------------------
     def to_pandas(self) -> Any:
         """A pandas DataFrame, one row per element; see :func:`strew.io.to_pandas`."""
-        from .io._pandas import to_pandas
-
-        return to_pandas(self)
+        return hook("to_pandas")(self)
 
     def to_geopandas(self) -> Any:
         """A GeoDataFrame with each element's world geometry; see :func:`strew.io.to_geopandas`."""
-        from .io._pandas import to_geopandas
-
-        return to_geopandas(self)
+        return hook("to_geopandas")(self)
 
     @classmethod
     def from_pandas(cls, df: Any, shapes: Mapping[str, Shape] | None = None, **kwargs: Any) -> Arrangement:
         """An arrangement from a data frame; see :func:`strew.io.from_pandas`."""
-        from .io._pandas import from_pandas
-
-        return from_pandas(df, shapes, **kwargs)
+        return hook("from_pandas")(df, shapes, **kwargs)
 
     def __repr__(self) -> str:
         counts = ", ".join(f"{k}: {v}" for k, v in self.counts().items())

@@ -18,6 +18,7 @@ from ..shape import Shape
 from .._limits import check_file
 from ._atomic import atomic_write, atomic_write_many, probe_writable
 from ._pandas import from_pandas, to_geopandas, to_pandas
+from .._display import register as _register_hook
 
 __all__ = ["to_pandas", "from_pandas", "to_geopandas", "load", "save", "save_many", "encode", "load_shapes", "load_region", "atomic_write", "OUTPUT_FORMATS", "check_output_path"]
 
@@ -167,3 +168,25 @@ def load_region(path: str | os.PathLike[str], **kwargs: Any) -> Region:
     from .svg import read_svg_region
 
     return read_svg_region(path, **kwargs)
+
+
+def _to_svg(arr: Arrangement, **kwargs: Any) -> str:
+    from .svg import to_svg
+
+    return to_svg(arr, **kwargs)
+
+
+def _to_png(arr: Arrangement, **kwargs: Any) -> bytes:
+    from .png import to_png
+
+    return to_png(arr, **kwargs)
+
+
+# The core type's display and data-frame conveniences (Arrangement.to_svg, _repr_svg_,
+# _repr_png_, to_pandas ...) call these through strew._display: the core declares the
+# hooks, io fills them, and imports keep pointing down (issue 15 point 7). svg and png
+# load on first use, as before.
+for _name, _func in (("svg", _to_svg), ("png", _to_png), ("to_pandas", to_pandas),
+                     ("to_geopandas", to_geopandas), ("from_pandas", from_pandas)):
+    _register_hook(_name, _func)
+del _name, _func
