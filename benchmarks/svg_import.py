@@ -22,7 +22,8 @@ of four kinds: distinct polygons (every object a kind of its own: the worst case
 of one path text under transforms, copies with their coordinates baked into the path data
 (as Inkscape stores moved copies: one kind found by geometry) and clones of three
 symbols. It prints seconds per MB (CPU time of this process, so that other load on the
-machine counts less) and, with ``--against``, the older importer's seconds per MB on the
+machine counts less; the median of ``--repeat`` reads, the two importers' reads
+interleaved) and, with ``--against``, the older importer's seconds per MB on the
 files up to ``--old-max-mb`` (default 1) and the ratio, and the exponent ``e`` of
 cost ~ size^e between consecutive sizes (1 is linear). ``--max-mb 50`` adds 50 MB files
 (the size of issue 17's 687k-path file); ``--only distinct,clones`` picks kinds of file. The path-count limit is raised
@@ -118,6 +119,7 @@ def scaling(opts: Any, old: Any) -> None:
     from strew.io.svg import read_svg
 
     sizes = [mb for mb in (0.1, 1.0, 10.0, 50.0) if mb <= opts.max_mb]
+    repeat = max(1, opts.repeat)  # medians of this many reads of each file (--repeat)
     bench = Bench("svg_import_scaling", "SVG import: seconds per MB from 0.1 to 10 MB (CPU time)",
                   baseline=f"importer in {opts.against}" if old is not None else "none", json_path=opts.json)
     read_svg(drawing(20)), read_svg(copies(20)), read_svg(baked(20))  # warm-up
@@ -132,10 +134,18 @@ def scaling(opts: Any, old: Any) -> None:
             for mb in sizes:
                 n = max(10, int(mb * 1e6 / per_object))
                 text = make(n)
-                t_new, arr = _cpu(lambda: read_svg(text))
+                with_old = old is not None and mb <= opts.old_max_mb
+                runs_new, runs_old = [], []
+                for _ in range(repeat):  # interleaved, so that load on the machine hits both alike
+                    t, arr = _cpu(lambda: read_svg(text))
+                    runs_new.append(t)
+                    if with_old:
+                        t, arr_old = _cpu(lambda: old.read_svg(text))
+                        runs_old.append(t)
+                t_new = float(np.median(runs_new))
                 row: dict[str, Any] = {"MB": round(len(text) / 1e6, 3), "objects": len(arr), "kinds": len(arr.kinds), "cpu_s": t_new, "s_per_MB": t_new / (len(text) / 1e6)}
-                if old is not None and mb <= opts.old_max_mb:
-                    t_old, arr_old = _cpu(lambda: old.read_svg(text))
+                if with_old:
+                    t_old = float(np.median(runs_old))
                     row.update(old_s_per_MB=t_old / (len(text) / 1e6), ratio=t_new / t_old, same=_same(arr, arr_old))
                 if seen:  # cost ~ size^exponent between this file and the previous one (1: linear)
                     row["exponent"] = math.log(t_new / seen[-1][1]) / math.log(len(text) / seen[-1][0])

@@ -95,7 +95,7 @@ from ..region import Region
 from ..shape import Path, Shape, paths_to_polygon
 from ._svg_flatten import Segments, too_large
 from ._svg_match import _KMAX, _Signature, _candidate_pairs, _candidates, _candidates_few, _cell, _cells_near, _control_outlines, _invariants, _invariants_many, _match, _outline_digests, control_outline_of
-from ._svg_tree import HIDDEN_CHOICES, SVGImportWarning, _Doc, _Flat, _IDENTITY, _Part, _SHAPE_TAGS, _apply, _bounds, _compose, _data_attrs, _det, _guarded, _invert, _key_of, _local, _name_of_target, _props, _props_no_display, _similarity, _style, _translate, _visible_parts
+from ._svg_tree import HIDDEN_CHOICES, SVGImportWarning, _Doc, _Flat, _GEOMETRY_ATTRS, _IDENTITY, _Part, _SHAPE_TAGS, _apply, _bounds, _compose, _data_attrs, _det, _guarded, _invert, _key_of, _local, _name_of_target, _props, _props_no_display, _similarity, _style, _translate, _visible_parts
 
 __all__ = ["read_svg", "read_svg_shapes", "read_svg_region", "SVGImportWarning", "HIDDEN_CHOICES"]
 
@@ -439,13 +439,22 @@ class _Reader:
         todo: list[tuple[ET.Element, bool, str | None, Segments, np.ndarray]] = []
         doc.preparse([el for what, el, _, _ in self._ahead if what in ("object", "void-object") and _local(el.tag) in ("polygon", "polyline")])
         for what, el, m, _ in self._ahead:
-            if what not in ("object", "void-object") or _local(el.tag) not in _SHAPE_TAGS:
+            tag = _local(el.tag)
+            if what not in ("object", "void-object") or tag not in _SHAPE_TAGS:
                 continue
-            ident = el.get("id")
-            if ident is not None and ident in doc.referenced:
-                continue
-            key = _key_of(el) or doc.group_key(el)
-            source = _source_key(el, key)
+            attrib = el.attrib
+            plain = attrib.keys() <= _SOURCE_SETS[tag]  # type: ignore[index]
+            if plain:
+                # geometry attributes only (most objects of a large file): no id, name,
+                # transform or style to look up; the same key and source as below
+                key = doc.group_key(el)
+                source = (tag, key or "", *(attrib.get(a) or "" for a in _SOURCE_ATTRS[tag]))  # type: ignore[index]
+            else:
+                ident = el.get("id")
+                if ident is not None and ident in doc.referenced:
+                    continue
+                key = _key_of(el) or doc.group_key(el)
+                source = _source_key(el, key)
             self._key_source[id(el)] = (key, source)
             if source is None or source in seen_source:
                 continue
@@ -454,7 +463,7 @@ class _Reader:
                 doc.poll()
             try:
                 segs = doc.segments(el)
-                t = doc.transform(el)
+                t = _IDENTITY if plain else doc.transform(el)
                 own = m if t is _IDENTITY else _compose(m, t)
             except Cancelled:
                 raise
@@ -504,7 +513,7 @@ class _Reader:
                         continue  # a moved copy: moved_copy places it
                     seen_outline.add(outline[0])
                 props = doc.inherited_props(el)
-                mine = _props(el)
+                mine = None if el.attrib.keys() <= _SOURCE_SETS[_local(el.tag)] else _props(el)  # type: ignore[index]
                 if mine:
                     props.update((k, v) for k, v in mine.items() if k != "display")
                 items.append((el, [_Part(el, own, props)]))
@@ -789,6 +798,9 @@ _SOURCE_ATTRS = {
     "polyline": ("points",),
     "polygon": ("points",),
 }
+
+
+_SOURCE_SETS = _GEOMETRY_ATTRS  # the same attributes as _SOURCE_ATTRS, as sets
 
 
 def _source_key(el: ET.Element, key: str | None) -> tuple[str, ...] | None:

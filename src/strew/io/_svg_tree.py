@@ -51,6 +51,17 @@ STREW_NS = "urn:strew:document"
 
 _SHAPE_TAGS = {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}
 _GROUP_TAGS = {"g", "a", "switch", "svg"}
+# The attributes that give a basic shape's or path's geometry: an object that carries no
+# other (no id, name, transform, style or data) needs none of their lookups (issue 17.3)
+_GEOMETRY_ATTRS = {
+    "path": frozenset({"d"}),
+    "rect": frozenset({"x", "y", "width", "height", "rx", "ry"}),
+    "circle": frozenset({"cx", "cy", "r"}),
+    "ellipse": frozenset({"cx", "cy", "rx", "ry"}),
+    "line": frozenset({"x1", "y1", "x2", "y2"}),
+    "polyline": frozenset({"points"}),
+    "polygon": frozenset({"points"}),
+}
 # Not rendered in place (or not geometry strew can use).
 _SKIP_TAGS = {
     "defs", "symbol", "metadata", "title", "desc", "style", "script", "clipPath", "mask",
@@ -703,6 +714,10 @@ class _Doc:
             if tag is None or tag in _SKIP_TAGS:
                 continue
             if tag not in _SHAPE_TAGS and tag not in _GROUP_TAGS and tag != "use":
+                continue
+            if tag in _GEOMETRY_ATTRS and not self.is_strew and child.attrib.keys() <= _GEOMETRY_ATTRS[tag]:
+                # geometry only: not the region (no id or label), not hidden, no data-label
+                yield ("object", child, m, in_hidden)
                 continue
             if _is_region_el(child, self.is_strew):
                 yield ("region", child, m, in_hidden)
