@@ -179,6 +179,14 @@ class Region:
     def rasterize(self, resolution: float) -> tuple[np.ndarray, tuple[float, float, float]]:
         """Inside mask on a grid of square cells of side ``resolution``.
 
+        The reference raster of a region, for callers and tests in Python: one exact
+        point-in-polygon test (shapely's ``contains_xy``) per cell centre. No method
+        calls it: their compiled loops fill masks with the one scanline rasteriser,
+        :mod:`strew._kernels.raster`, on the same pixel centres (issue 15 point 5). The
+        core may not import the kernel layer, so this stays a separate, plain
+        implementation; both agree on every centre off the boundary (a centre on an edge
+        is outside here and follows the scanline's half-open rule there).
+
         Returns
         -------
         mask : (rows, cols) bool

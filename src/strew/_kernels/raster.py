@@ -6,8 +6,16 @@ inside a polygon by the even-odd rule, half-open in y: an edge ``a-b`` crosses t
 through ``py`` when ``(ay > py) != (by > py)``, at ``xc = ax + (py - ay) (bx - ax) / (by
 - ay)``, and a centre ``px`` is inside when an odd number of crossings lie right of it
 (``px < xc``) -- the rule of :func:`strew._kernels.geometry.inside`, so a pixel test
-and a point test agree. Each row's crossings are found once and sorted, and the pixels
-between pairs filled: O(rows x edges + pixels), not a test per pixel.
+and a point test agree. Each row's crossings are found once and sorted
+(:func:`row_crossings`), and the pixels between pairs filled: O(rows x edges + pixels),
+not a test per pixel.
+
+This is strew's one scanline rasteriser (issue 15 point 5): pack's free-space mask
+(:func:`scan_fill`), ornament's polygon cover (:func:`scan_cells`) and pack's occupancy
+of a posed element (``strew.pack._field._occupy_posed``, :func:`row_crossings`) share it.
+:meth:`strew.Region.rasterize` is the documented reference in the core layer, which may
+not import kernels: a shapely point test per cell centre on the same pixel grid, used by
+no method (tests compare against it).
 
 EDT decision (issue 15 point 5)
 -------------------------------
@@ -26,11 +34,11 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-__all__ = ["scan_fill", "scan_cells", "edt", "edt_aniso", "edt_torus"]
+__all__ = ["row_crossings", "scan_fill", "scan_cells", "edt", "edt_aniso", "edt_torus"]
 
 
 @numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _crossings(segs, s0, s1, py, xs):  # pragma: no cover - numba
+def row_crossings(segs, s0, s1, py, xs):  # pragma: no cover - numba
     """Sorted x of the crossings of edges ``segs[s0:s1]`` ((s, 4) ``ax, ay, bx, by``)
     with the row ``y = py`` (half-open rule), written to ``xs``; returns their number."""
     m = 0
@@ -80,7 +88,7 @@ def scan_fill(mask, x0, y0, cell, segs, offsets, value):  # pragma: no cover - n
         r0 = max(int(np.floor((lo - y0) / cell)) - 1, 0)
         r1 = min(int(np.ceil((hi - y0) / cell)) + 1, rows)
         for r in range(r0, r1):
-            m = _crossings(segs, s0, s1, y0 + (r + 0.5) * cell, xs)
+            m = row_crossings(segs, s0, s1, y0 + (r + 0.5) * cell, xs)
             # a centre px is inside when an odd number of crossings lie right of it,
             # i.e. xs[2i] <= px < xs[2i + 1]
             for i in range(0, m - 1, 2):
@@ -123,7 +131,7 @@ def scan_cells(rows, cols, x0, y0, h, pts):  # pragma: no cover - numba
     xs = np.empty(max(n, 1))
     k = 0
     for i in range(i0, i1 + 1):
-        m = _crossings(segs, 0, n, y0 + (i + 0.5) * h, xs)
+        m = row_crossings(segs, 0, n, y0 + (i + 0.5) * h, xs)
         for t in range(0, m - 1, 2):
             xa = xs[t]
             xb = xs[t + 1]

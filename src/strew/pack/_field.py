@@ -23,6 +23,7 @@ from .._kernels.geometry import seg_dist2
 from .._kernels.geometry import seg_dist2_min as _seg_dist2
 from .._kernels.raster import edt as _edt
 from .._kernels.raster import edt_torus as _edt_torus
+from .._kernels.raster import row_crossings as _row_crossings
 from .._kernels.raster import scan_fill as _scan_fill
 from ..region import Region
 
@@ -268,13 +269,7 @@ def _occupy_posed(d, x0, y0, cell, cell_y, segs, bounds, grow, tx, ty, c, sn, lb
     r1 = min(int(np.ceil((bounds[3] + grow - y0) / cell_y)) + 1, rows)
     for r in range(r0, r1):
         py = y0 + (r + 0.5) * cell_y
-        m = 0  # this row's crossings (as in _occupy: half-open in y)
-        for k in range(ns):
-            ay_ = segs[k, 1]
-            by_ = segs[k, 3]
-            if (ay_ > py) != (by_ > py):
-                xs[m] = segs[k, 0] + (py - ay_) * (segs[k, 2] - segs[k, 0]) / (by_ - ay_)
-                m += 1
+        m = _row_crossings(segs, 0, ns, py, xs)  # the shared scanline's (half-open in y)
         for cc in range(c0, c1):
             cur = d[r, cc]
             if cur <= 0.0:
