@@ -115,6 +115,38 @@ class _Collide:
                     if (px - x) ** 2 + (py - y) ** 2 > reach * reach:
                         continue
             others.append(j)
+        return self._hits_any(g, kind, others)
+
+    def overlap_pool(self, kind: int, x: float, y: float, scale: float, reach: float) -> list[int]:
+        """The objects :meth:`overlaps_any` can test for an element of ``kind`` and
+        ``scale`` centred within ``reach`` of (x, y) (for :meth:`overlaps_pool`)."""
+        r = self.kind_radius[kind] * scale + self.other_rmax
+        return self.index.near(x, y, r + reach, _ELEMENT_OR_OBSTACLE)
+
+    def overlaps_pool(self, g: Any, kind: int, x: float, y: float, scale: float, pool: list[int]) -> bool:
+        """:meth:`overlaps_any` with the candidates from :meth:`overlap_pool`: the same
+        answer (an object beyond the bounding radii cannot touch ``g``)."""
+        kr = self.kind_radius
+        nk = len(kr)
+        rg = float(kr[kind]) * abs(scale)
+        r2 = (self.kind_radius[kind] * scale + self.other_rmax) ** 2
+        xy, kinds, state, scl = self.xy, self.kind, self.state, self.scl
+        others = []
+        for j in pool:
+            px, py = xy[j]
+            d2 = (px - x) ** 2 + (py - y) ** 2
+            if d2 > r2:
+                continue
+            if state[j] == ELEMENT:
+                kj = kinds[j]
+                if kj < nk:
+                    reach = (rg + float(kr[kj]) * abs(float(scl[j]))) * (1.0 + 1e-9)
+                    if d2 > reach * reach:
+                        continue
+            others.append(j)
+        return self._hits_any(g, kind, others)
+
+    def _hits_any(self, g: Any, kind: int, others: list[int]) -> bool:
         if not others:
             return False
         geom = self.geom

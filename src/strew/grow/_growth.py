@@ -314,6 +314,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.hcell = max(5 * self.l, 1e-9)
         self.hgrid: dict[tuple[int, int], set[int]] = {}
         self.none_prio = float(prio.min())
+        self.top_prio = float(prio.max())
         self.kind_prio_list = [float(v) for v in prio]
         # geometry for the overlap guard
         self.local_geom = [ex.shapes[k].geometry for k in ex.kinds]
@@ -369,6 +370,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.edges: set[tuple[int, int]] = self.index.edges
         self.heap: list[tuple[float, int]] = []
         self.deferred: set[int] = set()
+        #: the deferred seeds on the grid of cells ``hcell`` wide (see release_deferred)
+        self.dgrid: dict[tuple[int, int], set[int]] = {}
         self._out_of_domain = False  # the last place() refused an element across the domain's edge
         #: the largest reference ring a seed of each kind (-1: any) can be matched to
         self._ring_max: dict[int, int] = {}
@@ -551,7 +554,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 self.kill(s)
                 continue
             if self.outranked(s):
-                self.deferred.add(s)
+                self._defer(s)
                 continue
             if not (self.canopy and self.try_larger(s)):
                 pick = self.choose(s)

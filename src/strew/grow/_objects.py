@@ -159,14 +159,30 @@ class _Objects:
             for g in self.ghosts.get(i, {}).values():
                 self._unhigh(g)
 
+    def _defer(self, i: int) -> None:
+        """Seed ``i`` waits for a seed of a higher priority (§5.1; see ``release_deferred``)."""
+        self.deferred.add(i)
+        x, y = self.xy[i]
+        self.dgrid.setdefault((math.floor(x / self.hcell), math.floor(y / self.hcell)), set()).add(i)
+
+    def _undefer(self, i: int) -> None:
+        if i in self.deferred:
+            self.deferred.discard(i)
+            x, y = self.xy[i]
+            self.dgrid[(math.floor(x / self.hcell), math.floor(y / self.hcell))].discard(i)
+
     def _move(self, i: int, x: float, y: float) -> None:
-        if self.hgrid and self.state[i] == SEED:
+        if (self.hgrid or self.deferred) and self.state[i] == SEED:
             h = self.hcell
             ox, oy = self.xy[i]
             a, b = (math.floor(ox / h), math.floor(oy / h)), (math.floor(x / h), math.floor(y / h))
-            if a != b and i in self.hgrid.get(a, ()):
-                self.hgrid[a].discard(i)
-                self.hgrid.setdefault(b, set()).add(i)
+            if a != b:
+                if i in self.hgrid.get(a, ()):
+                    self.hgrid[a].discard(i)
+                    self.hgrid.setdefault(b, set()).add(i)
+                if i in self.deferred:
+                    self.dgrid[a].discard(i)
+                    self.dgrid.setdefault(b, set()).add(i)
         ox, oy = self.xy[i]
         self.pos[i] = (x, y)
         self.xy[i] = (float(x), float(y))
@@ -234,7 +250,7 @@ class _Objects:
         for j in list(self.adj[i]):
             self.remove_edge(i, j)
         self.state[i] = DEAD
-        self.deferred.discard(i)
+        self._undefer(i)
         # the dead take no part in any query: off the grid, so that queries stay short
         self.index.remove(i)
         if self.tile is not None:

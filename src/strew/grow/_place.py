@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 import shapely
 
+from ._collide import _polygon
 from ._match import match_references, order_target
 from ._objects import (
     ELEMENT,
@@ -44,7 +45,10 @@ class _Place:
         """§5.1: grow only seeds of the highest priority within 5 * l."""
         if not self.use_prio:
             return False
-        pi = self.seed_priority(i)
+        k = self.kind[i]
+        pi = self.none_prio if k < 0 else self.kind_prio_list[k]  # seed_priority(i), inlined
+        if pi >= self.top_prio:
+            return False  # nothing ranks above the highest priority
         x, y = self.xy[i]
         r2 = (5 * self.l) ** 2
         xy = self.xy
@@ -58,20 +62,26 @@ class _Place:
         kp = self.kind_prio_list
         none = self.none_prio
         oo = self.orig_of
-        for j in [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in hg.get((cx + dx, cy + dy), ())]:
-            if j == i or oo[j] == i or state[j] != SEED:
-                continue
-            kj = kind[j]
-            if (none if kj < 0 else kp[kj]) <= pi:  # seed_priority(j), inlined
-                continue
-            px, py = xy[j]
-            if (px - x) ** 2 + (py - y) ** 2 > r2:
-                continue
-            # a seed outside the spray area cannot grow now: it does not hold others
-            # back (they would wait for it, and the spray would stall)
-            if self.spray_area is not None and not shapely.contains_xy(self.spray_area, px, py):
-                continue
-            return True
+        spray = self.spray_area
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                cell = hg.get((cx + dx, cy + dy))
+                if not cell:
+                    continue
+                for j in cell:
+                    if j == i or state[j] != SEED or oo[j] == i:
+                        continue
+                    kj = kind[j]
+                    if (none if kj < 0 else kp[kj]) <= pi:  # seed_priority(j), inlined
+                        continue
+                    px, py = xy[j]
+                    if (px - x) ** 2 + (py - y) ** 2 > r2:
+                        continue
+                    # a seed outside the spray area cannot grow now: it does not hold
+                    # others back (they would wait for it, and the spray would stall)
+                    if spray is not None and not shapely.contains_xy(spray, px, py):
+                        continue
+                    return True
         return False
 
     def release_deferred(self, i: int) -> None:
@@ -86,10 +96,16 @@ class _Place:
                     and (d := (xy[j][0] - x - w * round((xy[j][0] - x) / w), xy[j][1] - y - h * round((xy[j][1] - y) / h)))
                     and d[0] ** 2 + d[1] ** 2 <= r2]
         else:
-            near = [j for j in self.deferred if (xy[j][0] - x) ** 2 + (xy[j][1] - y) ** 2 <= r2 and self.state[j] == SEED]
+            # the deferred seeds in the nine cells (5 l wide) around i
+            h = self.hcell
+            cx, cy = math.floor(x / h), math.floor(y / h)
+            dg = self.dgrid
+            state = self.state
+            near = [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in dg.get((cx + dx, cy + dy), ())
+                    if (xy[j][0] - x) ** 2 + (xy[j][1] - y) ** 2 <= r2 and state[j] == SEED]
         for j in sorted(near):
             if j in self.deferred:
-                self.deferred.discard(j)
+                self._undefer(j)
                 heapq.heappush(self.heap, (math.hypot(self.xy[j][0] - self.origin[0], self.xy[j][1] - self.origin[1]), j))
 
     def missing_larger(self, s: int) -> list[int]:
@@ -535,6 +551,16 @@ class _Place:
         reach = self.p.nudge * self.l_short
         if reach <= 0:
             return None
+        # (the outline's coordinates about its centre once, as element_geometry computes
+        # them, and the objects any of the offsets can touch once: the same tests, fewer
+        # lookups)
+        ring = self.local_ring[kind]
+        base = None
+        if ring is not None:
+            m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
+            base = ring @ m.T
+        pool = self.overlap_pool(kind, x, y, scale, reach)
+        nbrs = [(o, self.xy[o]) for o in self.adj[s]]
         for f in (0.25, 0.5, 0.75, 1.0):
             for q in range(4):
                 t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
@@ -543,12 +569,12 @@ class _Place:
                     continue
                 if self.spray_area is not None and not shapely.contains_xy(self.spray_area, nx, ny):
                     continue
-                if any(self.crosses_edges(s, (nx, ny), o, self.xy[o]) or self.crosses_boundary((nx, ny), self.xy[o]) for o in self.adj[s]):
+                if any(self.crosses_edges(s, (nx, ny), o, po) or self.crosses_boundary((nx, ny), po) for o, po in nbrs):
                     continue
                 if self.too_close_in_kind(nx, ny, kind, s, (ELEMENT,), placing=True):
                     continue
-                g = self.element_geometry(kind, nx, ny, rot, scale)
-                if not self.fits_domain(g) or self.overlaps_any(g, kind, nx, ny, scale):
+                g = _polygon(base + np.array([nx, ny])) if base is not None else self.element_geometry(kind, nx, ny, rot, scale)
+                if not self.fits_domain(g) or self.overlaps_pool(g, kind, nx, ny, scale, pool):
                     continue
                 self._move(s, nx, ny)
                 return nx, ny, g
