@@ -474,16 +474,20 @@ class _Reader:
             return
         # coordinates too large: read (and refused) in their turn; the largest magnitude
         # of each element at once, too_large itself only where it is over the limit
-        counts = np.array([len(t[3].code) for t in todo])
-        if counts.any():
+        # (in chunks: one chunk's arrays stay small)
+        drop: set[int] = set()
+        for lo in range(0, len(todo), _CHUNK):
+            chunk = todo[lo : lo + _CHUNK]
+            counts = np.array([len(t[3].code) for t in chunk])
+            if not counts.any():
+                continue
             has = counts > 0
-            top = np.zeros(len(todo))
-            mags = np.abs(np.concatenate([t[3].pts for t in todo])).reshape(-1, 8).max(axis=1)
+            top = np.zeros(len(chunk))
+            mags = np.abs(np.concatenate([t[3].pts for t in chunk])).reshape(-1, 8).max(axis=1)
             top[has] = np.maximum.reduceat(mags, (np.cumsum(counts) - counts)[has])
-            over = np.flatnonzero(~(top <= MAX_COORD)).tolist()
-            if over:
-                drop = {i for i in over if too_large(todo[i][3], MAX_COORD)}
-                todo = [t for i, t in enumerate(todo) if i not in drop]
+            drop.update(lo + i for i in np.flatnonzero(~(top <= MAX_COORD)).tolist() if too_large(chunk[i][3], MAX_COORD))
+        if drop:
+            todo = [t for i, t in enumerate(todo) if i not in drop]
         # An object whose outline digest no other prepared object shares is a moved copy
         # of none of them: its hash is not made (None: moved_copy neither looks it up
         # nor lists it). Objects read later that are not prepared repeat a prepared
