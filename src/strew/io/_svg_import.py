@@ -108,7 +108,8 @@ _CHUNK = 4096
 
 
 # -- kinds and elements -----------------------------------------------------------------
-@dataclass
+# (slots: a large file makes one of each per object; issue 17.3)
+@dataclass(slots=True)
 class _Kind:
     name: str
     key: str | None  # the name it was asked for (None: geometry only)
@@ -121,9 +122,10 @@ class _Kind:
     matchable: bool = True
     strew_symbol: bool = False  # one of a strew export's kind symbols (kept even when unused)
     flat: _Flat | None = None  # its parts flattened in the reference frame, where new_kind had them
+    oriented: bool | None = None  # whether _match finds its rotation from its moments (None: not asked yet)
 
 
-@dataclass
+@dataclass(slots=True)
 class _Element:
     kind: _Kind
     x: float
@@ -818,14 +820,14 @@ def _source_key(el: ET.Element, key: str | None) -> tuple[str, ...] | None:
 
 def _has_orientation(kind: _Kind) -> bool:
     """Whether :func:`_match` finds ``kind``'s rotation from its moments (it is not nearly round)."""
-    cached = getattr(kind, "_oriented", None)
+    cached = kind.oriented
     if cached is None:
         sig = kind.signature
         cached = False
         if sig is not None and sig.size > 0 and sig.gyration > 0:
             norm = sig.size * sig.gyration
             cached = any(abs(sig.moments[k]) / (norm * sig.gyration ** (k - 1)) > 0.02 for k in range(2, _KMAX + 1))
-        kind._oriented = cached  # type: ignore[attr-defined]
+        kind.oriented = cached
     return bool(cached)
 
 
@@ -918,7 +920,6 @@ def read_svg(
     used = {id(e.kind) for e in elements}
     kinds = [k for k in reader.kinds if id(k) in used or k.strew_symbol]
     shapes = {k.name: shape for k, shape in zip(kinds, reader.shapes(kinds))}
-    order = np.arange(len(elements))
     index = [e.attrs.get("index") for e in elements]
     if elements and all(i is not None for i in index):
         try:
@@ -926,8 +927,7 @@ def read_svg(
         except ValueError:
             idx = None
         if idx is not None and np.array_equal(np.sort(idx), np.arange(len(idx))):
-            order = np.argsort(idx, kind="stable")
-    elements = [elements[i] for i in order]
+            elements = [elements[i] for i in np.argsort(idx, kind="stable").tolist()]
     columns: dict[str, list[Any]] = {}
     names = [n for n in dict.fromkeys(k for e in elements for k in e.attrs) if n != "index" and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_.-]*", n)]
     for n in names:
