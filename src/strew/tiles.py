@@ -54,7 +54,9 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # elements carry their geometry in ``parts``, so the tiles' libraries are made to agree
 # (_harmonize).
 # On a torus (periodic=True) any method with context tiles.
-TILED_METHODS = ("pack", "synth", "ornament")
+# program (issue 19.1): the tiles of a script need nothing from each other, their
+# partitions being fixed in the plane (strew.program._world)
+TILED_METHODS = ("pack", "synth", "ornament", "program")
 
 
 @dataclass(frozen=True)
@@ -137,6 +139,12 @@ def _neighbours(t: Tile, nx: int, ny: int, periodic: bool = False) -> list[int]:
     """Indices of the lower-phase tiles among the 8 around ``t`` (its dependencies);
     on a torus (``periodic``) the grid wraps."""
     return sorted(_links(t, nx, ny, (float(nx), float(ny)) if periodic else None))
+
+
+def _deps(job: _Job, t: Tile, nx: int, ny: int) -> list[int]:
+    """The tiles ``t`` waits for: its lower-phase neighbours, none for program (its
+    partitions' phases run inside each tile, strew.program._world)."""
+    return [] if job.method == "program" else _neighbours(t, nx, ny, job.periodic)
 
 
 def _links(t: Tile, nx: int, ny: int, torus: tuple[float, float] | None) -> dict[int, list[tuple[float, float]]]:
@@ -249,6 +257,10 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     from .arrangement import concat
     from .region import Region
 
+    if job.method == "program":
+        from .program._world import run_tile as program_tile
+
+        return program_tile(job, t)
     fn = spec(job.method).function()
     torus = job.torus
     grown = _grow(t.rect, job.halo, None if torus else job.size)
@@ -604,7 +616,7 @@ def _check_cancel(should_cancel: Callable[[], bool] | None) -> None:
 def _run_serial(job: _Job, tiles: list[Tile], nx: int, ny: int, done: Callable[..., None],
                 should_cancel: Callable[[], bool] | None) -> None:
     """Phase by phase in this process; a tile's result is kept until its last dependent ran."""
-    deps = {t.index: _neighbours(t, nx, ny, job.periodic) for t in tiles}
+    deps = {t.index: _deps(job, t, nx, ny) for t in tiles}
     waiting = {t.index: 0 for t in tiles}
     for t in tiles:
         for d in deps[t.index]:
@@ -636,7 +648,7 @@ def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done:
     futures: dict[int, Any] = {}
     bands: dict[int, Any] = {}
     run_id = uuid.uuid4().hex[:12]  # keys unique on a shared cluster
-    deps = {t.index: _neighbours(t, nx, ny, job.periodic) for t in tiles}
+    deps = {t.index: _deps(job, t, nx, ny) for t in tiles}
     needed = {d for ds in deps.values() for d in ds}
     for phase in range(4):  # submit in phase order so that dependencies exist
         for t in tiles:

@@ -36,6 +36,9 @@ __all__ = [
     "Periodic",
     "periodic",
     "periodic_evaluation",
+    "Field",
+    "field",
+    "field_evaluation",
 ]
 
 
@@ -170,3 +173,40 @@ def periodic_evaluation(p: Periodic | None) -> Iterator[Periodic | None]:
         yield p
     finally:
         _PERIODIC.reset(token)
+
+
+# -- tiled worlds (issue 19.1) -----------------------------------------------------------------
+@dataclass(frozen=True)
+class Field:
+    """A world evaluation: the top-level partitions do not depend on the region.
+
+    Tiles of a world evaluate the script on overlapping regions; for the cells they share
+    to be the same to the bit, the top-level irregular partitions draw their sites from a
+    field of cells fixed in the plane (:mod:`strew.program._world`), label them by the
+    sites (not by their order), and stripes are polylines with vertices fixed in the plane.
+
+    Attributes
+    ----------
+    domain : shapely geometry
+        The region the top-level arrangement is evaluated on (one tile's, grown).
+    """
+
+    domain: object
+
+
+_FIELD: ContextVar[Field | None] = ContextVar("strew_program_field", default=None)
+
+
+def field() -> Field | None:
+    """The world evaluation in progress, if any."""
+    return _FIELD.get()
+
+
+@contextmanager
+def field_evaluation(f: Field | None) -> Iterator[Field | None]:
+    """Make ``f`` the world evaluation (None: a plain one)."""
+    token = _FIELD.set(f)
+    try:
+        yield f
+    finally:
+        _FIELD.reset(token)

@@ -18,7 +18,7 @@ import shapely
 
 from .._errors import InputError
 from ..region import Region
-from ._context import Context, Periodic, current, evaluation, periodic, top
+from ._context import Context, Field, Periodic, current, derive_seed, evaluation, field, periodic, top, unit_random
 from ._curves import EMPTY, Curve, Curves, concat_curves
 from ._planar_map import DEFAULT_GRID, Face, PlanarMap, Vertex, Edge, _Cell
 from ._sampling import periodic_poisson, periodic_poisson_disk, poisson, poisson_disk
@@ -441,12 +441,17 @@ def _snap_stripes(p: StripesProperties, tile: tuple[float, float, float, float])
     return replace(p, angle=angle, widths=tuple(x * f for x in p.widths))
 
 
-def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float]) -> list[Curve]:
+def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float], fixed: bool = False) -> list[Curve]:
     """Lines of a stripes set covering ``bounds``; line 0 passes through the origin.
 
     The phase is fixed in the plane (not by the region), so a stripes set is the same
-    wherever it is evaluated.
+    wherever it is evaluated. With ``fixed`` (a world's tiles, issue 19.1) each line is a
+    polyline whose vertices are fixed in the plane too (every ``period`` along it, from
+    its foot on the normal through the origin), so that two tiles crop it to pieces that
+    share their inner segments and node them to the same bits.
     """
+    if fixed:
+        return _fixed_stripe_lines(p, bounds)
     x0, y0, x1, y1 = bounds
     d = np.array([math.cos(p.angle), math.sin(p.angle)])
     nrm = np.array([-d[1], d[0]])
@@ -477,6 +482,47 @@ def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float
     return lines
 
 
+def _fixed_stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float]) -> list[Curve]:
+    """:func:`_stripe_lines` with vertices fixed in the plane (issue 19.1; not in the paper,
+    whose partitions are evaluated once): line ``k``'s vertices are ``t_k n + (m + 1/pi) P d``
+    for integers ``m`` (``n`` the normal, ``d`` the direction, ``P`` the widths' period)."""
+    x0, y0, x1, y1 = bounds
+    d = np.array([math.cos(p.angle), math.sin(p.angle)])
+    nrm = np.array([-d[1], d[0]])
+    corners = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+    proj = corners @ nrm
+    along = corners @ d
+    tmin, tmax = float(proj.min()), float(proj.max())
+    m = len(p.widths)
+    cum = np.r_[0.0, np.cumsum(p.widths)]
+    period = float(cum[-1])
+    s0, s1 = math.floor(float(along.min()) / period) - 1, math.ceil(float(along.max()) / period) + 1
+    # offset by an odd fraction of the period: at whole periods the vertices would sit on
+    # the crossings of a grid's other set (widths in proportion), where a piece shorter
+    # than the attribution tolerance would carry both lines' face labels
+    steps = (np.arange(s0, s1 + 1, dtype=float) + _ODD) * period
+    q0, q1 = math.floor(tmin / period) - 1, math.ceil(tmax / period) + 1
+    lines = []
+    for q in range(q0, q1 + 1):
+        for r in range(m):
+            tk = q * period + cum[r]
+            if tk < tmin - period or tk > tmax + period:
+                continue
+            k = q * m + r
+            labs = frozenset(g[k % len(g)] for g in p.edge_labels)
+            right = frozenset(g[k % len(g)] for g in p.face_labels)
+            left = frozenset(g[(k - 1) % len(g)] for g in p.face_labels)
+            pts = np.round(tk * nrm[None, :] + steps[:, None] * d[None, :], 9)
+            lines.append(Curve(pts, False, labs, left, right))
+    return lines
+
+
+def _field_top(geom: shapely.Geometry) -> Field | None:
+    """The world evaluation when ``geom`` is its top-level domain, else None."""
+    f = field()
+    return f if f is not None and geom is f.domain else None
+
+
 def stripes_partition(p: StripesProperties, *, border: Border | None = None) -> ArrangementFunction:
     """StripesPartition(Properties p): creates a stripes partition.
 
@@ -501,7 +547,7 @@ def stripes_partition(p: StripesProperties, *, border: Border | None = None) -> 
     def fn(geom: shapely.Geometry, ctx: Context) -> Curves:
         per = _periodic_top(geom)
         q = p if per is None else _snap_stripes(p, per.tile)
-        lines = _stripe_lines(q, _padded_bounds(geom, 1.0))
+        lines = _stripe_lines(q, _padded_bounds(geom, 1.0), _field_top(geom) is not None)
         return _apply_border(Curves(tuple(lines)), geom, b)
 
     return ArrangementFunction(_equivariant(fn), "stripes_partition")
@@ -527,7 +573,8 @@ def grid_partition(s1: StripesProperties, s2: StripesProperties, b: Border) -> A
             raise InputError("grid_partition: on this periodic tile the two stripes sets snap to one direction; use a larger --size")
         pad = 2.0 * max(max(t1.widths), max(t2.widths)) / max(abs(math.sin(t1.angle - t2.angle)), 0.05) + 1.0
         bounds = _padded_bounds(geom, pad)
-        lines = _stripe_lines(t1, bounds) + _stripe_lines(t2, bounds)
+        fixed = _field_top(geom) is not None
+        lines = _stripe_lines(t1, bounds, fixed) + _stripe_lines(t2, bounds, fixed)
         return _apply_border(Curves(tuple(lines)), geom, border)
 
     return ArrangementFunction(_equivariant(fn), "grid_partition")
@@ -598,6 +645,47 @@ def _canonical_ids(keys: np.ndarray) -> np.ndarray:
     return inv.reshape(-1).astype(np.int64)
 
 
+def _keyed_labels(groups: tuple[tuple[tuple[str, float], ...], ...], keys: list[bytes], seed: int, kind: str) -> list[frozenset[str]]:
+    """:func:`_draw_labels` with each cell's draw a function of (``seed``, its key): the
+    same cell gets the same labels in every tile of a world (issue 19.1)."""
+    out: list[set[str]] = [set() for _ in keys]
+    for gi, group in enumerate(groups):
+        labs = [g[0] for g in group]
+        w = np.array([g[1] for g in group], dtype=float)
+        cum = np.cumsum(w) / max(1.0, float(w.sum()))
+        u = np.array([unit_random(seed, kind, gi, k) for k in keys], dtype=float)
+        idx = np.searchsorted(cum, u, side="right")
+        for i, k in enumerate(idx.tolist()):
+            if k < len(labs):
+                out[i].add(labs[k])
+    return [frozenset(s) for s in out]
+
+
+def _canonical_vertices(points: np.ndarray, rp: np.ndarray, rv: np.ndarray, qhull: np.ndarray) -> np.ndarray:
+    """The Voronoi vertices ``qhull`` recomputed as the circumcentres of their sites, taken
+    in lexicographic order (the three smallest when more are cocircular): a function of
+    those sites alone, not of the rest of the diagram (qhull's own vertices are not)."""
+    n_v = len(qhull)
+    V = np.array(qhull, dtype=float, copy=True)
+    sites: list[list[int]] = [[] for _ in range(n_v)]
+    for (a, b), (va, vb) in zip(rp.tolist(), rv.tolist()):
+        for v in (va, vb):
+            if v >= 0:
+                sites[v] += [a, b]
+    for v, lst in enumerate(sites):
+        ids = sorted(set(lst), key=lambda k: (points[k, 0], points[k, 1]))
+        if len(ids) < 3:
+            continue
+        (ax, ay), (bx, by), (cx, cy) = (points[k].tolist() for k in ids[:3])
+        bx, by, cx, cy = bx - ax, by - ay, cx - ax, cy - ay
+        dd = 2.0 * (bx * cy - by * cx)
+        if dd == 0.0:
+            continue
+        b2, c2 = bx * bx + by * by, cx * cx + cy * cy
+        V[v] = (ax + (cy * b2 - by * c2) / dd, ay + (bx * c2 - cx * b2) / dd)
+    return V
+
+
 def _voronoi_curves(
     sites: np.ndarray,
     p: IrregularProperties,
@@ -606,6 +694,7 @@ def _voronoi_curves(
     *,
     periodic_tile: tuple[float, float, float, float] | None = None,
     site_ids: np.ndarray | None = None,
+    keyed: int | None = None,
 ) -> Curves:
     """Voronoi edges of ``sites`` as labelled curves (face labels on their sides).
 
@@ -628,7 +717,17 @@ def _voronoi_curves(
     rv = np.array(vor.ridge_vertices, dtype=np.int64)
     keep = (rp.min(axis=1) < n) & (rv.min(axis=1) >= 0)
     rp, rv = rp[keep], rv[keep]
-    if periodic_tile is None or site_ids is None:
+    V = vor.vertices
+    if keyed is not None:
+        # a world's tile (issue 19.1): every vertex is the circumcentre of its three sites
+        # and every label a function of the sites (not of the order of cells), so that the
+        # tiles that share a cell compute it to the same bits
+        V = _canonical_vertices(vor.points, rp, rv, V)
+        face_labs = _keyed_labels(p.face_labels, [vor.points[k].tobytes() for k in range(n)], keyed, "face")
+        ekeys = [min(vor.points[a].tobytes(), vor.points[b].tobytes()) + max(vor.points[a].tobytes(), vor.points[b].tobytes())
+                 for a, b in rp.tolist()]
+        edge_labs = _keyed_labels(p.edge_labels, ekeys, keyed, "edge")
+    elif periodic_tile is None or site_ids is None:
         face_labs = _draw_labels(p.face_labels, n, rng)
         edge_labs = _draw_labels(p.edge_labels, len(rp), rng)
     else:
@@ -648,7 +747,6 @@ def _voronoi_curves(
         canon_e = _draw_labels(p.edge_labels, int(eid.max()) + 1 if len(eid) else 0, rng)
         edge_labs = [canon_e[int(k)] for k in eid]
     curves = []
-    V = vor.vertices
     for (a, b), (va, vb), elab in zip(rp.tolist(), rv.tolist(), edge_labs):
         pa, pb = V[va], V[vb]
         d = pb - pa
@@ -664,7 +762,9 @@ def _voronoi_curves(
     marks: tuple[tuple[float, float, frozenset[str]], ...] = ()
     if p.vertex_labels:
         used = np.unique(rv)
-        if periodic_tile is None:
+        if keyed is not None:
+            vlabs = _keyed_labels(p.vertex_labels, [V[k].tobytes() for k in used.tolist()], keyed, "vertex")
+        elif periodic_tile is None:
             vlabs = _draw_labels(p.vertex_labels, len(used), rng)
         else:
             x0, y0, w, h = periodic_tile
@@ -691,6 +791,14 @@ def _irregular_partition(p: IrregularProperties, b: Border, name: str, sampler: 
         per = _periodic_top(geom)
         if per is not None:
             return _periodic_irregular(p, border, name, geom, per, rng, spacing)
+        if _field_top(geom) is not None:
+            # a world's tile (issue 19.1): the sites of a field fixed in the plane
+            from ._world import field_sites
+
+            bounds = _padded_bounds(geom, 4 * spacing)
+            key = derive_seed(ctx.seed, name, p)
+            sites = field_sites(name, p.density, key, bounds)
+            return _apply_border(_voronoi_curves(sites, p, bounds, rng, keyed=key), geom, border)
         x0, y0, x1, y1 = geom.bounds
         expected = p.density * (x1 - x0 + 8 * spacing) * (y1 - y0 + 8 * spacing)
         if expected > 5e6:

@@ -342,14 +342,16 @@ def run_script(script: str | os.PathLike[str], *, size: float = 2000, seed: int 
 
 
 def _run_on(
-    path: Path, name: str, region: Region, seed: int, n: float, tile: tuple[float, float, float, float] | None = None
-) -> tuple[PlanarMap, Arrangement]:
+    path: Path, name: str, region: Region, seed: int, n: float, tile: tuple[float, float, float, float] | None = None,
+    convert: bool = True, seam: Curve | None = None,
+) -> tuple[PlanarMap, Any]:
     """Run the script at ``path`` with ``run_size() == n`` and evaluate ``name`` on ``region``
-    (on the torus ``tile`` when given: see :func:`_periodic_map`)."""
+    (on the torus ``tile`` when given: see :func:`_periodic_map`); without ``convert`` the
+    planar map only (a world's tile clips it itself)."""
     size_token = _RUN_SIZE.set(n)
     try:
         with script_context(seed), _script_environment(path):
-            return _run(path, name, region, seed, tile)
+            return _run(path, name, region, seed, tile, convert, seam)
     finally:
         _RUN_SIZE.reset(size_token)
 
@@ -527,7 +529,8 @@ def _drop_seam(arr: Arrangement, drawn: Any, tol: float) -> Arrangement:
     return out.select(np.flatnonzero(~seam_only))
 
 
-def _run(path: Path, name: str, region: Region, seed: int, tile: tuple[float, float, float, float] | None = None) -> tuple[PlanarMap, Arrangement]:
+def _run(path: Path, name: str, region: Region, seed: int, tile: tuple[float, float, float, float] | None = None,
+         convert: bool = True, seam: Curve | None = None) -> tuple[PlanarMap, Any]:
     """Body of :func:`run_script`, inside the script's context and environment."""
     try:
         glb = runpy.run_path(str(path), run_name="__main__")
@@ -550,7 +553,11 @@ def _run(path: Path, name: str, region: Region, seed: int, tile: tuple[float, fl
     if not isinstance(value, (ArrangementFunction, Curves)):
         raise ScriptError(f"{path.name}: {name!r} is {type(value).__name__}, expected an arrangement (the result of a partition, mapping or merging operator)")
     try:
-        if tile is None:
+        if tile is None and seam is not None:
+            # a world's tile (strew.program._world): the curves closed by the region's outline
+            cs = as_arrangement(value, name).curves(region, seed=seed)
+            pm = PlanarMap(Curves(cs.curves + (seam,), cs.points, cs.marks))
+        elif tile is None:
             pm = as_arrangement(value, name)(region, seed=seed)
         else:
             pm, drawn = _periodic_map(value, name, tile, seed)
@@ -562,7 +569,7 @@ def _run(path: Path, name: str, region: Region, seed: int, tile: tuple[float, fl
         where = f"{path.name} line {line}" if line else path.name
         raise ScriptError(f"{where}: {exc}") from exc
     if tile is None:
-        return pm, to_strew(pm, region)
+        return pm, to_strew(pm, region) if convert else None
     from .._periodic import mark
 
     arr = _drop_seam(to_strew(pm, region), drawn, 1e-7 * max(tile[2], tile[3]))

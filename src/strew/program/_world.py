@@ -1,0 +1,256 @@
+"""Program scripts over worlds too large for one evaluation: tiles (issue 19.1).
+
+A world ``[0, W] x [0, H]`` is cut into the tiles of :mod:`strew.tiles`. Each tile runs
+the script on its rectangle grown by ``halo`` (clipped to the world) and keeps the pieces
+of the resulting planar map's cells that lie in its own rectangle: every bounded face
+clipped to the rectangle, every edge clipped to it (a piece along a tile border goes to
+the tile whose half-open rectangle holds its midpoint). The pieces of a cell from all the
+tiles it crosses make up the cell of one evaluation on the whole world, because every
+tile computes the cells it shares with its neighbours to the same bits:
+
+- stripes and grids (§5.1, regular) are fixed in the plane; in a world their lines are
+  polylines whose vertices are fixed in the plane too, so that crops by different tiles
+  keep the same inner segments (:func:`strew.program._operators._fixed_stripe_lines`);
+- the uniform and random partitions (§5.1, non-regular) take their sites from a *field*
+  of square cells fixed in the plane, ``FIELD_CELL`` mean spacings wide. A cell's sites
+  are drawn from a generator seeded by (the partition's seed, the cell), the Poisson-disk
+  ones with the sites of its lower-phase neighbour cells as obstacles (Wei 2008's 2 x 2
+  phase groups: cells of one phase are a cell apart): the field's sets together are one
+  Poisson-disk (or Poisson) set of the plane, whatever the tiles. Voronoi vertices are
+  the circumcentres of their sites and labels are drawn per site (faces), site pair
+  (edges) and vertex, so a cell is the same in every tile that holds it;
+- mappers (§6.1) already draw every random value from the cell's own geometry
+  (:meth:`PlanarMap.cell_key`), so a face gets the same curves in every tile that holds it
+  whole.
+
+So the world depends on the seed and the script only, not on ``tile_size`` nor on the
+number of workers, as long as ``halo`` holds every cell (and every neighbourhood a mapper
+queries, §6.1's bounded neighbourhood) that reaches into a tile. The tiles need nothing
+from each other: the field's phases are computed where they are needed (each process
+keeps the cells it drew), so all tiles can run at once.
+
+Departures (issue 19.1; the paper evaluates a script once, on one region): the field's
+sites are a Poisson-disk set drawn cell by cell (Wei's phases) rather than one Bridson
+run, and face, edge and vertex labels of the non-regular partitions are drawn per cell
+from hashes instead of from one stream in the order of the cells (§5.1 asks only for
+the given apparition probabilities).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from .._errors import InputError
+from ._curves import Curve
+
+__all__ = ["field_sites", "run_tile", "evaluate_world", "FIELD_CELL"]
+
+#: Side of a field cell in mean site spacings (1 / sqrt(density)): about 64 sites a cell.
+FIELD_CELL = 8.0
+
+_CACHE: dict[tuple[Any, ...], np.ndarray] = {}
+
+#: Label of a tile's grown outline (see :func:`evaluate_tile`).
+SEAM = "__strew_world_seam__"
+_CACHE_LIMIT = 50_000
+
+
+def _cell_sites(name: str, density: float, key: int, i: int, j: int) -> np.ndarray:
+    """The sites of field cell ``(i, j)`` (drawn once per process, then kept)."""
+    from ._context import derive_seed
+    from ._sampling import tile_poisson, tile_poisson_disk
+
+    ck = (name, density, key, i, j)
+    got = _CACHE.get(ck)
+    if got is not None:
+        return got
+    c = FIELD_CELL / math.sqrt(density)
+    rect = (i * c, j * c, (i + 1) * c, (j + 1) * c)
+    rng = np.random.default_rng(derive_seed(key, "field", i, j))
+    if name == "random_partition":
+        pts = tile_poisson(rect, density, rng)
+    else:
+        phase = (j % 2) * 2 + i % 2
+        ctx = [
+            _cell_sites(name, density, key, i + di, j + dj)
+            for dj in (-1, 0, 1)
+            for di in (-1, 0, 1)
+            if (di or dj) and ((j + dj) % 2) * 2 + (i + di) % 2 < phase
+        ]
+        context = np.concatenate(ctx) if ctx else np.zeros((0, 2))
+        pts = tile_poisson_disk(rect, density, context, rng)
+    if len(_CACHE) >= _CACHE_LIMIT:
+        _CACHE.clear()
+    _CACHE[ck] = pts
+    return pts
+
+
+def field_sites(name: str, density: float, key: int, bounds: tuple[float, float, float, float]) -> np.ndarray:
+    """(n, 2) the field's sites in ``bounds`` for the partition ``name`` seeded ``key``."""
+    c = FIELD_CELL / math.sqrt(density)
+    x0, y0, x1, y1 = bounds
+    i0, i1 = math.floor(x0 / c), math.floor(x1 / c)
+    j0, j1 = math.floor(y0 / c), math.floor(y1 / c)
+    if (i1 - i0 + 1) * (j1 - j0 + 1) > 4 * _CACHE_LIMIT // 5:
+        raise InputError(f"{name}: density {density:g} asks for too many sites on one tile; lower it or the tile size")
+    parts = [_cell_sites(name, density, key, i, j) for j in range(j0, j1 + 1) for i in range(i0, i1 + 1)]
+    pts = np.concatenate(parts) if parts else np.zeros((0, 2))
+    inside = (pts[:, 0] >= x0) & (pts[:, 0] <= x1) & (pts[:, 1] >= y0) & (pts[:, 1] <= y1)
+    return pts[inside]
+
+
+def _placeholder() -> dict[str, Any]:
+    """The world's two kinds: every element draws its own geometry (``parts``), so that
+    the tiles' libraries agree (a Parquet dataset has one library)."""
+    from ..shape import Path as ShapePath
+    from ..shape import Shape
+
+    sq = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]])
+    return {
+        "face": Shape((ShapePath(sq, True),), style={"fill": "none", "stroke": "none"}),
+        "edge": Shape((ShapePath(sq[:2], False),), style={"fill": "none", "stroke": "#1d1f24"}),
+    }
+
+
+def _owned(x: float, y: float, rect: tuple[float, float, float, float], size: tuple[float, float]) -> bool:
+    """Whether ``(x, y)`` is in the half-open ``rect`` (the world's far edges closed)."""
+    x0, y0, x1, y1 = rect
+    okx = x0 <= x < x1 or (x == x1 and x1 >= size[0])
+    oky = y0 <= y < y1 or (y == y1 and y1 >= size[1])
+    return okx and oky
+
+
+def clip_cells(pm: Any, rect: tuple[float, float, float, float], size: tuple[float, float], stroke_width: float) -> Any:
+    """The pieces of ``pm``'s cells in the tile ``rect`` as an Arrangement (faces, then edges).
+
+    Kinds ``face`` and ``edge``; each element's geometry is in ``parts`` (as in
+    :func:`strew.program.to_strew`: faces filled by their labels' colour, edges stroked),
+    its position the centre of its piece's box; columns ``cell`` and ``labels``.
+    """
+    import shapely
+
+    from ..arrangement import PARTS_COLUMN, Arrangement
+    from ..shape import Path as ShapePath
+    from ..shape import Shape
+    from ._script import _PALETTE, _STROKE_PALETTE, _label_color
+
+    t = pm._t
+    box = shapely.box(*rect)
+    kinds, xs, ys, cells, labels, parts = [], [], [], [], [], []
+    polys = np.array(t.face_polygons[1:], dtype=object)
+    if len(polys):
+        b = shapely.bounds(polys)
+        near = np.flatnonzero((b[:, 2] >= rect[0]) & (b[:, 0] <= rect[2]) & (b[:, 3] >= rect[1]) & (b[:, 1] <= rect[3]))
+        for f, piece in zip(near.tolist(), shapely.intersection(polys[near], box).tolist()):
+            labs = t.face_labels[f + 1]
+            style = {"fill": _label_color(labs, _PALETTE), "fill_opacity": 0.45, "stroke": "none"} if labs else {"fill": "none", "stroke": "none"}
+            for poly in shapely.get_parts(piece):
+                if not isinstance(poly, shapely.Polygon) or not (poly.area > 0):
+                    continue
+                x0, y0, x1, y1 = poly.bounds
+                c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+                paths = tuple(ShapePath(np.asarray(r.coords)[:-1] - c, True) for r in [poly.exterior, *poly.interiors])
+                kinds.append(0)
+                xs.append(c[0])
+                ys.append(c[1])
+                cells.append("face")
+                labels.append(" ".join(sorted(labs)))
+                parts.append([Shape(paths, style=style)])
+    if pm.n_edges:
+        pts = [t.edge_points[e] for e in range(pm.n_edges)]
+        lines = np.array([shapely.LineString(p) for p in pts], dtype=object)
+        b = shapely.bounds(lines)
+        near = np.flatnonzero((b[:, 2] >= rect[0]) & (b[:, 0] <= rect[2]) & (b[:, 3] >= rect[1]) & (b[:, 1] <= rect[3]))
+        drawn = None
+        for e, piece in zip(near.tolist(), shapely.intersection(lines[near], box).tolist()):
+            labs = t.edge_labels[e]
+            if SEAM in labs:
+                if labs == frozenset([SEAM]):
+                    # only the seam (along the world's edge): drawn if a curve runs along it
+                    if drawn is None:
+                        drawn = _drawn_near(pm.curves, box)
+                    if drawn.is_empty or not shapely.covered_by(piece, shapely.buffer(drawn, 1e-7 * max(size))):
+                        continue
+                labs = labs - {SEAM}
+            style = {"fill": "none", "stroke": _label_color(labs, _STROKE_PALETTE) if labs else "#1d1f24", "stroke_width": stroke_width}
+            for ln in shapely.get_parts(shapely.line_merge(piece) if piece.geom_type == "MultiLineString" else piece):
+                if not isinstance(ln, shapely.LineString) or not (ln.length > 0):
+                    continue
+                m = ln.interpolate(0.5, normalized=True)
+                if not _owned(m.x, m.y, rect, size):
+                    continue
+                xy = np.asarray(ln.coords)
+                c = (xy.min(axis=0) + xy.max(axis=0)) / 2
+                kinds.append(1)
+                xs.append(c[0])
+                ys.append(c[1])
+                cells.append("edge")
+                labels.append(" ".join(sorted(labs)))
+                parts.append([Shape((ShapePath(xy - c, False),), style=style)])
+    return Arrangement(_placeholder(), np.asarray(kinds, np.int64), xs, ys,
+                       columns={"cell": np.asarray(cells, dtype=object), "labels": np.asarray(labels, dtype=object),
+                                PARTS_COLUMN: parts},
+                       meta={"method": "program"})
+
+
+def _drawn_near(curves: Any, box: Any) -> Any:
+    """The lines of ``curves`` (but the seam) that meet ``box``'s outline."""
+    import shapely
+
+    ring = box.exterior
+    lines = [shapely.LineString(c.polyline) for c in curves.curves if SEAM not in c.labels and len(c.polyline) >= 2]
+    arr = np.array(lines, dtype=object)
+    if not len(arr):
+        return shapely.LineString()
+    hit = shapely.intersects(arr, shapely.buffer(ring, 1e-6))
+    return shapely.union_all(arr[hit]) if hit.any() else shapely.LineString()
+
+
+def evaluate_tile(script: Any, name: str, size: tuple[float, float], rect: tuple[float, float, float, float], halo: float,
+                  seed: int) -> Any:
+    """The cells of the world's planar map in tile ``rect`` (see the module docstring).
+
+    The script runs on ``rect`` grown by ``halo`` (clipped to the world) with
+    ``run_size() == max(W, H)``, as if it ran on the whole world.
+    """
+    from pathlib import Path
+
+    import shapely
+
+    from ..region import Region
+    from ._context import Field, field_evaluation
+    from ._script import ScriptError, _run_on
+
+    path = Path(script)
+    if not path.is_file():
+        raise ScriptError(f"{str(script)!r}: no such script")
+    w, h = size
+    x0, y0, x1, y1 = rect
+    grown = (max(0.0, x0 - halo), max(0.0, y0 - halo), min(w, x1 + halo), min(h, y1 + halo))
+    region = Region(shapely.box(*grown))
+    # the grown rectangle's outline closes the faces that reach beyond it (a face larger
+    # than the halo, e.g. the gap left by deleted cells): their pieces in the tile are
+    # still the world's faces there; it is a seam, not a line of the arrangement
+    gx0, gy0, gx1, gy1 = grown
+    seam = Curve(np.array([[gx0, gy0], [gx1, gy0], [gx1, gy1], [gx0, gy1]]), True, frozenset([SEAM]))
+    with field_evaluation(Field(region.geometry)):
+        pm, _ = _run_on(path, name, region, int(seed), float(max(w, h)), convert=False, seam=seam)
+    return clip_cells(pm, rect, size, max(w, h) / 1000.0)
+
+
+def run_tile(job: Any, t: Any) -> Any:
+    """:func:`strew.tiles.run_tile` for program: one tile, independent of the others."""
+    if job.periodic:
+        raise InputError("periodic: a program world is not periodic; use strew run --periodic for a repeat tile")
+    arr = evaluate_tile(job.input, job.params.get("name", "arrangement"), job.size, t.rect, job.halo, job.seed)
+    return arr.replace(meta={"tile": t.index}, region=None)
+
+
+def evaluate_world(script: Any, size: tuple[float, float], *, seed: int = 0, name: str = "arrangement") -> Any:
+    """The whole world in one evaluation, as the tiles see it (the reference a tiled world
+    is made of: the same sites, the same cells)."""
+    w, h = float(size[0]), float(size[1])
+    return evaluate_tile(script, name, (w, h), (0.0, 0.0, w, h), 0.0, seed)
