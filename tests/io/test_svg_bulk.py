@@ -465,3 +465,64 @@ def test_signatures_of_rings_found_simple_are_shapelys():
         assert (a.size, a.is_area, a.gyration, a.radius) == (b.size, b.is_area, b.gyration, b.radius)
         assert np.array_equal(a.centroid, b.centroid) and np.array_equal(a.moments, b.moments) and np.array_equal(a.points, b.points)
         assert shapely.equals_exact(match._outline(a), b.outline, tolerance=0)
+
+
+@st.composite
+def _plain_objects(draw):
+    """SVG objects that carry geometry attributes only (some repeated, some moved copies
+    written into their numbers, some self-intersecting, a few in a group)."""
+    rng = np.random.default_rng(draw(st.integers(0, 2**32 - 1)))
+    protos = [rng.uniform(-5, 5, (int(rng.integers(3, 7)), 2)) for _ in range(3)]
+    out = []
+    for _ in range(draw(st.integers(1, 30))):
+        r = rng.random()
+        pts = protos[int(rng.integers(3))]
+        if r < 0.3:  # a moved, turned, scaled copy of a prototype
+            a, s = rng.uniform(-3, 3), rng.uniform(0.5, 2)
+            pts = s * pts @ np.array([[np.cos(a), np.sin(a)], [-np.sin(a), np.cos(a)]]) + rng.uniform(0, 300, 2)
+        elif r < 0.5:  # a shape of its own
+            pts = rng.uniform(0, 300, (int(rng.integers(3, 9)), 2))
+        text = " ".join(f"{x:.3f},{y:.3f}" for x, y in pts)
+        tag = rng.choice(["polygon", "polyline", "path", "rect", "circle"])
+        if tag == "path":
+            out.append(f'<path d="M{text.replace(" ", " L")} Z"/>')
+        elif tag == "rect":
+            out.append(f'<rect x="{pts[0, 0]:.3f}" y="{pts[0, 1]:.3f}" width="{abs(pts[1, 0]) + 1:.3f}" height="{abs(pts[1, 1]) + 0.5:.3f}"/>')
+        elif tag == "circle":
+            out.append(f'<circle cx="{pts[0, 0]:.3f}" cy="{pts[0, 1]:.3f}" r="{abs(pts[1, 0]) + 1:.3f}"/>')
+        else:
+            out.append(f'<{tag} points="{text}"/>')
+    if len(out) > 3 and draw(st.booleans()):  # some in a group with a transform
+        out = out[:-3] + ['<g transform="translate(5 7) rotate(30)">'] + out[-3:] + ["</g>"]
+    return out
+
+
+@settings(max_examples=40, deadline=None)
+@given(objects=_plain_objects())
+def test_objects_of_geometry_only_read_as_the_general_path_reads_them(objects):
+    """Objects with geometry attributes only skip the walk's and prepare's lookups of names,
+    transforms and styles (issue 17.3): the same arrangement, bit for bit, as the same
+    objects each given an attribute that means nothing to the reader (``class``), which
+    sends them through every lookup."""
+    from strew.io.svg import read_svg
+
+    def doc(objs):
+        return '<svg xmlns="http://www.w3.org/2000/svg">' + "".join(objs) + "</svg>"
+
+    marked = [o.replace("/>", ' class="c"/>', 1) if not o.startswith(("<g", "</g")) else o for o in objects]
+    try:
+        fast = read_svg(doc(objects))
+    except InputError as exc:
+        with pytest.raises(InputError, match=re.escape(str(exc).split(":", 1)[1].strip())):
+            read_svg(doc(marked))
+        return
+    slow = read_svg(doc(marked))
+    assert fast.kinds == slow.kinds and np.array_equal(fast.kind, slow.kind)
+    for f in ("x", "y", "rotation", "scale"):
+        assert np.array_equal(getattr(fast, f), getattr(slow, f))
+    assert fast.columns.keys() == slow.columns.keys()
+    assert all(np.array_equal(fast.columns[c], slow.columns[c]) for c in fast.columns)
+    for name in fast.kinds:
+        a, b = fast.shapes[name], slow.shapes[name]
+        assert a.d == b.d and len(a.paths) == len(b.paths)
+        assert all(p.closed == q.closed and np.array_equal(p.points, q.points) for p, q in zip(a.paths, b.paths))
