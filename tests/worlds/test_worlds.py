@@ -148,7 +148,7 @@ def test_bad_input_names_the_field():
     with pytest.raises(InputError, match="^tile_size"):
         world("pack", SHAPES, (60, 60), tile_size=-1)
     with pytest.raises(InputError, match="^method"):
-        world("program", "x", (60, 60), tile_size=30)
+        world("grow", "x", (60, 60), tile_size=30)
     with pytest.raises(InputError, match="^workers"):
         world("pack", SHAPES, (60, 60), tile_size=30, workers=0)
     with pytest.raises(InputError, match="^max_failures"):
