@@ -9,6 +9,7 @@ lower one. The graph is read from the source (every ``import``, also inside func
 from __future__ import annotations
 
 import ast
+import functools
 import subprocess
 import sys
 from pathlib import Path
@@ -37,6 +38,7 @@ def _layer(m: str) -> int:
     return 1 if top == "io" else 0
 
 
+@functools.cache
 def _graph() -> dict[str, set[str]]:
     # strew/_examples (the examples folder, shipped in the wheel) holds user scripts: they
     # use the public API from above, like any script, and are no layer of the library

@@ -324,7 +324,8 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
         if periodic and surf.get("surface_mesh") is not None:
             raise InputError("--periodic makes a flat repeat tile: it does not apply with --surface")
         if surf.get("surface_mesh") is not None:  # --surface MESH: strew.surface does the work (issue 20)
-            return _surface.run_on_surface(spec, options, raw_input, outs, surf, seed=seed, quiet=quiet, region=(region_file, size), around=around)
+            return _surface.run_on_surface(spec, options, raw_input, outs, surf, seed=seed, quiet=quiet, region=(region_file, size), around=around,
+                                           convert=_convert, read_input=INPUTS[spec.input.parse or "text"])
         if surf:  # flat: --element / --style / --instancing shape the .glb outputs (Sakurai Fig. 15)
             _surface.remember_flat_glb(surf, outs)
         check_outputs(outs)

@@ -8,7 +8,9 @@ preview rendered without a GPU) and ``.svg`` (the top view). Needs
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import click
 
@@ -183,15 +185,16 @@ def remember_flat_glb(surf: dict, outs: tuple[str, ...]) -> None:
 
 
 def run_on_surface(spec, options: dict, raw_input, outs: tuple[str, ...], surf: dict, *, seed: int, quiet: bool,
-                   region: tuple, around) -> None:
+                   region: tuple, around, convert: Callable[[Any, Any], Any], read_input: Callable[[Any], Any]) -> None:
     """``strew METHOD ... --surface MESH``: convert the options as the generated command
-    does, run :func:`strew.surface.on_surface`, write the scene."""
+    does (``convert(param, raw)`` and ``read_input(raw_input)`` are the command's own, handed
+    down by cli/_spec.py so that this module does not import it back), run
+    :func:`strew.surface.on_surface`, write the scene."""
     import time
 
     from .. import surface
     from .._method import names_to_flags
     from ..surface._methods import on_surface
-    from ._spec import INPUTS, _convert
 
     _require()
     _check_outs(outs)
@@ -200,11 +203,11 @@ def run_on_surface(spec, options: dict, raw_input, outs: tuple[str, ...], surf: 
     values = {}
     for p in spec.params:
         if p.cli:
-            v = _convert(p, options.get(p.name))
+            v = convert(p, options.get(p.name))
             if v is not None:
                 values[p.name] = v
     element_meshes = _element_meshes(surf.get("surface_elements") or ())
-    data = INPUTS[spec.input.parse or "text"](raw_input)
+    data = read_input(raw_input)
     m = surface.load_mesh(surf["surface_mesh"], name="--surface")
     field = surface.load_field(surf["surface_field"], m) if surf.get("surface_field") else "smoothest"
     t0 = time.perf_counter()
