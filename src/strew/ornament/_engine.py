@@ -42,11 +42,22 @@ from .._rng import as_rng
 from ..region import Region
 from ._pattern import Element, Pattern, load_pattern
 from ._proxies import Circle, Point, Polygon, Proxy, vec
-from ._raster import climb, cover_disc, cover_polygon, cover_polyline, lower_wave, scan_blocks, segments_distance
+from ._raster import (
+    BLOCK as _BLOCK,
+    climb,
+    cover_disc,
+    cover_polygon,
+    cover_polyline,
+    lower_wave,
+    mark_excluded,
+    mark_near,
+    mark_rect,
+    scan_blocks,
+    segments_distance,
+    tree_build,
+)
 
 __all__ = ["Goal", "RuleContext", "Ornament", "grow_elements", "default_seed"]
-
-_BLOCK = 16
 
 
 @dataclass(frozen=True)
@@ -415,8 +426,6 @@ class _Grower:
             ii, jj = np.nonzero(covered == 0)
             self._tile_rows, self._tile_cols = slice(int(ii.min()), int(ii.max()) + 1), slice(int(jj.min()), int(jj.max()) + 1)
         self._commits = 0
-        self._dmax: float | None = None
-        self._dmax_calls = 0
         self._edge_dist = None
         if periodic is not None:
             # distance in cells from each cell to the tile's cells
@@ -430,9 +439,17 @@ class _Grower:
         self._ring = np.empty(rows * cols, np.int64)
         self._inq = np.zeros(rows * cols, bool)
         br, bc = -(-rows // _BLOCK), -(-cols // _BLOCK)
-        self.dirty = np.ones((br, bc), bool)
+        # the blocks' best candidates, their dirty flags and list, their largest
+        # distances and the tournament tree over the best (see ._raster; issue 19.6)
+        self.dirty = np.zeros((br, bc), bool)
+        self.dlist = np.empty(br * bc, np.int64)
+        self.dcount = np.zeros(1, np.int64)
         self.best_val = np.full((br, bc), -1.0)
         self.best_idx = np.full((br, bc), -1, np.int64)
+        self.bmax = np.zeros((br, bc))
+        self.tree = np.empty(2 << max(0, int(br * bc - 1).bit_length()), np.int64)
+        tree_build(self.tree, self.best_val)
+        self._mark_all()
         self.ex = np.empty((64, 2))
         self.n_ex = 0
         self.adj_tol = 2.0  # cells: raster pre-filter of "stopped by an element"
@@ -574,13 +591,14 @@ class _Grower:
             changed |= d < self.dist_el
             self.dist_el, self.near_el = d, ii.astype(np.int64) * self.cols + jj
             self.skip &= ~changed
-            self.dirty[:] = True
+            self._mark_all()
             return
         w = (self._ring, self._inq)
+        d = (self.dirty, self.dlist, self.dcount)
         if self._cap_all is None:
-            lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self.dist_all, 0.0, False, *w)
+            lower_wave(self.dist_all, self.near_all, self.skip, c, *d, True, self.dist_all, 0.0, False, *w)
         else:
-            lower_wave(self.dist_all, self.near_all, self.skip, c, self.dirty, _BLOCK, self._cap_all, 0.0, True, *w)
+            lower_wave(self.dist_all, self.near_all, self.skip, c, *d, True, self._cap_all, 0.0, True, *w)
             self._commits += 1
             if self._commits % 8 == 1:
                 r = float(self.dist_all[self._tile_rows, self._tile_cols].max()) + 4.0
@@ -589,7 +607,7 @@ class _Grower:
                     # minus their distance to the tile from its obstacle
                     self._cap_cells = r
                     np.subtract(r, self._edge_dist, out=self._cap_all)
-        lower_wave(self.dist_el, self.near_el, self.skip, c, self.dirty, _BLOCK, self.dist_all, self.adj_tol + 1.0, True, *w)
+        lower_wave(self.dist_el, self.near_el, self.skip, c, *d, False, self.dist_all, self.adj_tol + 1.0, True, *w)
 
     def _offsets(self, el: Element) -> list[tuple[float, float]]:
         """Translations at which element ``el`` is placed: itself only, or on a torus the
@@ -625,11 +643,8 @@ class _Grower:
         return q[keep]
 
     # -- exclude list ---------------------------------------------------------------------
-    def _block_centres(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        idx = self.best_idx
-        valid = idx >= 0
-        i, j = np.divmod(np.where(valid, idx, 0), self.cols)
-        return valid, self.x0 + (j + 0.5) * self.h, self.y0 + (i + 0.5) * self.h
+    def _mark_all(self) -> None:
+        mark_rect(self.dirty, self.dlist, self.dcount, 0, self.dirty.shape[0], 0, self.dirty.shape[1])
 
     def add_exclude(self, p0: np.ndarray) -> None:
         for p in self._wrap_points(p0):  # on a torus: the point and its translates
@@ -637,9 +652,10 @@ class _Grower:
                 self.ex = np.vstack([self.ex, np.empty_like(self.ex)])
             self.ex[self.n_ex] = p
             self.n_ex += 1
-            valid, cx, cy = self._block_centres()
-            r = self.best_val * self.h
-            self.dirty |= valid & ((cx - p[0]) ** 2 + (cy - p[1]) ** 2 < r * r)
+            # the blocks whose best circle contains the point: within the largest best
+            # radius of it (the tree's root), not a pass over every block (issue 19.6)
+            rmax = float(self.best_val.flat[self.tree[1]]) * self.h
+            mark_excluded(self.dirty, self.dlist, self.dcount, self.best_val, self.best_idx, self.cols, self.x0, self.y0, self.h, float(p[0]), float(p[1]), rmax)
 
     def clear_exclude_near(self, p: np.ndarray, eps: float) -> None:
         if self.n_ex == 0:
@@ -656,32 +672,13 @@ class _Grower:
         keep = pts[~gone].copy()
         self.n_ex = len(keep)
         self.ex[: self.n_ex] = keep
-        # circles that contained a removed point may be eligible again: they lie within
-        # the largest circle radius of it
-        reach = self._largest_distance() * self.h + 2 * self.h
-        bs = _BLOCK * self.h
-        br, bc = self.dirty.shape
-        bx0 = self.x0 + np.arange(bc) * bs
-        by0 = self.y0 + np.arange(br) * bs
+        # circles that contained a removed point may be eligible again: the cells within
+        # their own radius of it, so the blocks within their largest distance of it (each
+        # block keeps its own; once a global bound, and a pass over the raster every 32
+        # successes kept it: issue 19.6)
+        gmax = float(self.bmax.max())
         for q in removed:
-            dx = np.maximum(0, np.maximum(bx0 - q[0], q[0] - (bx0 + bs)))
-            dy = np.maximum(0, np.maximum(by0 - q[1], q[1] - (by0 + bs)))
-            self.dirty |= (dy[:, None] ** 2 + dx[None, :] ** 2) <= reach * reach
-
-    def _largest_distance(self) -> float:
-        """The largest finite distance of the raster, in cells, or an upper bound of it.
-
-        In a panel every distance is finite from the start and only falls as elements
-        are placed, so a value measured earlier bounds it; it is measured again every 32
-        calls (a full pass over the raster at each success made growth quadratic; issue
-        19.6). The bound only widens the blocks marked dirty, which are scanned again to
-        the same result. On a torus cells become finite as growth reaches them: measured
-        each time.
-        """
-        self._dmax_calls += 1
-        if self.periodic is not None or self._dmax is None or self._dmax_calls % 32 == 0:
-            self._dmax = float(self.dist_all[np.isfinite(self.dist_all)].max())
-        return self._dmax
+            mark_near(self.dirty, self.dlist, self.dcount, self.bmax, self.x0, self.y0, self.h, float(q[0]), float(q[1]), 2 * self.h, gmax)
 
     def _skip_disc(self, c: np.ndarray, radius: float) -> None:
         """Mark every cell centred within ``radius`` of ``c`` as rejected."""
@@ -698,12 +695,12 @@ class _Grower:
         ys = self.y0 + (np.arange(i0, i1) + 0.5) * h - c[1]
         inside = xs[None, :] ** 2 + ys[:, None] ** 2 < radius * radius
         self.skip[i0:i1, j0:j1] |= inside
-        self.dirty[i0 // _BLOCK : (i1 - 1) // _BLOCK + 1, j0 // _BLOCK : (j1 - 1) // _BLOCK + 1] = True
+        mark_rect(self.dirty, self.dlist, self.dcount, i0 // _BLOCK, (i1 - 1) // _BLOCK + 1, j0 // _BLOCK, (j1 - 1) // _BLOCK + 1)
 
     def clear_exclude_all(self) -> None:
         self.n_ex = 0
         self.skip[:] = False
-        self.dirty[:] = True
+        self._mark_all()
 
     def _measure(self, c: np.ndarray, reach: float) -> tuple[float, float, float, np.ndarray, np.ndarray]:
         """Exact radius of the empty circle at ``c``: (rho, d_boundary, d_element, idx, dists)."""
@@ -757,11 +754,10 @@ class _Grower:
                 break
             grown = len(self.elements) - self.n_seeds  # the seeds are not drawn; not counted (issue 23)
             self.rep.tick(grown, message=f"{grown} grown")
-            scan_blocks(
-                self.dist_all, self.dist_el, self.covered, self.skip, self.dirty, self.best_val, self.best_idx,
-                _BLOCK, self.adj_tol, self.ex[:, 0].copy(), self.ex[:, 1].copy(), self.n_ex, self.x0, self.y0, h,
+            k = scan_blocks(
+                self.dist_all, self.dist_el, self.covered, self.skip, self.dirty, self.dlist, self.dcount,
+                self.best_val, self.best_idx, self.bmax, self.tree, self.adj_tol, self.ex, self.n_ex, self.x0, self.y0, h,
             )  # fmt: skip
-            k = int(np.argmax(self.best_val))
             v = float(self.best_val.flat[k])
             if v < 0 or v * h + slack + (self.pad if self.has_lines else 0.0) < threshold:
                 if self.pattern.phases and phase_k < len(self.pattern.phases) - 1:
@@ -793,7 +789,7 @@ class _Grower:
                 # up to that far), and every centre within (d_e - d_b - h) / 2 is stopped
                 # by the boundary too: skip those cells at once.
                 self.skip[i, j] = True
-                self.dirty[i // _BLOCK, j // _BLOCK] = True
+                mark_rect(self.dirty, self.dlist, self.dcount, i // _BLOCK, i // _BLOCK + 1, j // _BLOCK, j // _BLOCK + 1)
                 self._skip_disc(c, max(threshold - rho - slack, (d_e - d_b - h) / 2))
                 self.stats["rejected"] += 1
                 continue

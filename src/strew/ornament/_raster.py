@@ -37,11 +37,16 @@ from .._kernels.geometry import seg_dist2
 from .._kernels.raster import scan_cells as cover_polygon
 
 __all__ = [
+    "BLOCK",
     "cover_disc",
     "cover_polyline",
     "cover_polygon",
     "lower_wave",
+    "mark_excluded",
+    "mark_near",
+    "mark_rect",
     "scan_blocks",
+    "tree_build",
 ]
 
 _NB = dict(cache=True, nogil=True)
@@ -112,17 +117,108 @@ def cover_polyline(rows, cols, x0, y0, h, pts, pad):
     return out[:total]
 
 
-@numba.njit(**_NB)
-def _mark(dirty, bi, bj, brows, bcols):
-    """Mark block ``(bi, bj)`` and its eight neighbours dirty."""
-    for ui in range(max(0, bi - 1), min(brows, bi + 2)):
-        for uj in range(max(0, bj - 1), min(bcols, bj + 2)):
-            dirty[ui, uj] = True
+# -- dirty blocks -------------------------------------------------------------------------
+# The raster is cut into square blocks of 2**BLOCK_SHIFT cells. Each block keeps its best
+# candidate circle (``best_val``, ``best_idx``) and the largest finite distance among its
+# cells (``bmax``); a block is recomputed only when something it depends on changed. The
+# dirty blocks are flagged in ``dirty`` (brows, bcols) and listed, once each, in
+# ``dlist[:dcount[0]]``, so that a scan costs the dirty blocks, not the raster (issue
+# 19.6); the largest ``best_val`` is kept at the root of a tournament tree ``tree``
+# (2 P,) over the blocks, so finding the largest empty circle costs O(log blocks).
+BLOCK_SHIFT = 4
+BLOCK = 1 << BLOCK_SHIFT
 
 
 @numba.njit(**_NB)
-def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, ring, inq):
-    """Lower the distance field from new obstacle cells; mark changed blocks dirty.
+def _mark(dirty, dlist, dcount, bi, bj):
+    """Flag block ``(bi, bj)`` dirty and list it, unless it already is."""
+    if not dirty[bi, bj]:
+        dirty[bi, bj] = True
+        dlist[dcount[0]] = bi * dirty.shape[1] + bj
+        dcount[0] += 1
+
+
+@numba.njit(**_NB)
+def _mark_cell(dirty, dlist, dcount, i, j, rows, cols):
+    """Flag the blocks of cells ``(i +- 1, j +- 1)``: a change of cell ``(i, j)`` alters
+    its own candidacy and its neighbours' medial-axis test, nothing else (the blocks of
+    a cell inside its block are its own only)."""
+    bi0 = max(i - 1, 0) >> BLOCK_SHIFT
+    bi1 = min(i + 1, rows - 1) >> BLOCK_SHIFT
+    bj0 = max(j - 1, 0) >> BLOCK_SHIFT
+    bj1 = min(j + 1, cols - 1) >> BLOCK_SHIFT
+    _mark(dirty, dlist, dcount, bi0, bj0)
+    if bj1 != bj0:
+        _mark(dirty, dlist, dcount, bi0, bj1)
+    if bi1 != bi0:
+        _mark(dirty, dlist, dcount, bi1, bj0)
+        if bj1 != bj0:
+            _mark(dirty, dlist, dcount, bi1, bj1)
+
+
+@numba.njit(**_NB)
+def mark_rect(dirty, dlist, dcount, bi0, bi1, bj0, bj1):
+    """Flag blocks ``bi0 <= bi < bi1``, ``bj0 <= bj < bj1`` (clamped to the grid)."""
+    for bi in range(max(bi0, 0), min(bi1, dirty.shape[0])):
+        for bj in range(max(bj0, 0), min(bj1, dirty.shape[1])):
+            _mark(dirty, dlist, dcount, bi, bj)
+
+
+@numba.njit(**_NB)
+def mark_excluded(dirty, dlist, dcount, best_val, best_idx, cols, x0, y0, h, px, py, rmax):
+    """Flag the blocks whose best circle contains ``(px, py)`` (a new exclude point).
+
+    Only blocks whose cells lie within ``rmax`` (the largest best radius, world units)
+    of the point are visited; the test is the one the scan applies, widened by a
+    relative 1e-9 (a block flagged needlessly is scanned again to the same result).
+    """
+    brows, bcols = dirty.shape
+    i0 = int(np.floor((py - rmax - y0) / h)) - 1
+    i1 = int(np.ceil((py + rmax - y0) / h)) + 1
+    j0 = int(np.floor((px - rmax - x0) / h)) - 1
+    j1 = int(np.ceil((px + rmax - x0) / h)) + 1
+    for bi in range(max(i0, 0) >> BLOCK_SHIFT, min(max(i1, 0) >> BLOCK_SHIFT, brows - 1) + 1):
+        for bj in range(max(j0, 0) >> BLOCK_SHIFT, min(max(j1, 0) >> BLOCK_SHIFT, bcols - 1) + 1):
+            k = best_idx[bi, bj]
+            if k < 0 or dirty[bi, bj]:
+                continue
+            i = k // cols
+            j = k - i * cols
+            dx = x0 + (j + 0.5) * h - px
+            dy = y0 + (i + 0.5) * h - py
+            r = best_val[bi, bj] * h
+            if dx * dx + dy * dy < r * r * (1.0 + 1e-9):
+                _mark(dirty, dlist, dcount, bi, bj)
+
+
+@numba.njit(**_NB)
+def mark_near(dirty, dlist, dcount, bmax, x0, y0, h, px, py, pad, gmax):
+    """Flag the blocks holding a cell whose circle may contain ``(px, py)`` (an exclude
+    point just removed): those whose box comes within ``bmax * h + pad`` of it (``bmax``:
+    the block's largest finite distance, in cells; ``gmax`` bounds every ``bmax``)."""
+    brows, bcols = dirty.shape
+    bs = BLOCK * h
+    reach = gmax * h + pad
+    bi0 = max(0, int(np.floor((py - reach - y0) / bs)) - 1)
+    bi1 = min(brows - 1, int(np.floor((py + reach - y0) / bs)) + 1)
+    bj0 = max(0, int(np.floor((px - reach - x0) / bs)) - 1)
+    bj1 = min(bcols - 1, int(np.floor((px + reach - x0) / bs)) + 1)
+    for bi in range(bi0, bi1 + 1):
+        by0 = y0 + bi * bs
+        dy = max(0.0, max(by0 - py, py - (by0 + bs)))
+        for bj in range(bj0, bj1 + 1):
+            if dirty[bi, bj]:
+                continue
+            bx0 = x0 + bj * bs
+            dx = max(0.0, max(bx0 - px, px - (bx0 + bs)))
+            r = max(bmax[bi, bj], 0.0) * h + pad
+            if dy * dy + dx * dx <= r * r:
+                _mark(dirty, dlist, dcount, bi, bj)
+
+
+@numba.njit(**_NB)
+def lower_wave(dist, near, skip, sources, dirty, dlist, dcount, nbr, cap, cap_tol, use_cap, ring, inq):
+    """Lower the distance field from new obstacle cells; flag changed blocks dirty.
 
     Parameters
     ----------
@@ -134,12 +230,10 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
         Cells rejected as candidates; cleared in place where the distance changes.
     sources : (k,) int64
         Flat indices of the newly covered cells.
-    dirty : (brows, bcols) bool
-        Blocks whose candidate circle must be recomputed; set in place (the blocks of
-        changed cells and their neighbours, since a change alters the neighbours'
-        local-maximum status).
-    block : int
-        Block side in cells.
+    dirty, dlist, dcount
+        The dirty blocks (see above); the blocks of changed cells are flagged, and with
+        ``nbr`` those of their eight neighbours too (a change of ``dist_all`` alters the
+        neighbours' medial-axis test; one of ``dist_el`` only the cell's own candidacy).
     cap : (rows, cols) float64
         With ``use_cap``, the wave does not enter cells where the new distance exceeds
         ``cap + cap_tol``. The element-distance field is capped by the all-obstacle field:
@@ -159,28 +253,35 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
         Number of cell updates.
     """
     rows, cols = dist.shape
-    brows, bcols = dirty.shape
     size = ring.shape[0]
-    # the blocks of changed cells and their neighbours are marked dirty as cells change
-    # (not by a pass over every block at the end: issue 19.6, the cost of a wave is its
-    # own cells, not the raster's size)
-    last_bi = -1
-    last_bj = -1
+    df = dist.ravel()
+    nf = near.ravel()
+    sf = skip.ravel()
+    cf = cap.ravel()
+    # blocks are flagged as cells change (not by a pass over every block at the end:
+    # issue 19.6, the cost of a wave is its own cells, not the raster's size)
     head = 0
+    tail = 0
     count = 0
     n = 0
     for s in sources:
-        si = s // cols
-        sj = s - si * cols
-        if dist[si, sj] > 0.0:
-            dist[si, sj] = 0.0
-            near[si, sj] = s
-            skip[si, sj] = False
-            _mark(dirty, si // block, sj // block, brows, bcols)
+        if df[s] > 0.0:
+            df[s] = 0.0
+            nf[s] = s
+            sf[s] = False
+            si = s // cols
+            sj = s - si * cols
+            if nbr:
+                _mark_cell(dirty, dlist, dcount, si, sj, rows, cols)
+            else:
+                _mark(dirty, dlist, dcount, si >> BLOCK_SHIFT, sj >> BLOCK_SHIFT)
             count += 1
             if not inq[s]:
                 inq[s] = True
-                ring[(head + n) % size] = s
+                ring[tail] = s
+                tail += 1
+                if tail == size:
+                    tail = 0
                 n += 1
     # A cell is (re)queued only when its distance strictly drops.
     while n > 0:
@@ -192,7 +293,7 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
         inq[p] = False
         pi = p // cols
         pj = p - pi * cols
-        q = near[pi, pj]
+        q = nf[p]
         qi = q // cols
         qj = q - qi * cols
         for di in range(-1, 2):
@@ -200,35 +301,65 @@ def lower_wave(dist, near, skip, sources, dirty, block, cap, cap_tol, use_cap, r
             if ni < 0 or ni >= rows:
                 continue
             a = ni - qi
+            a2 = a * a
+            row = ni * cols
             for dj in range(-1, 2):
                 nj = pj + dj
                 if nj < 0 or nj >= cols:
                     continue
+                c = row + nj
+                dc = df[c]
                 b = nj - qj
-                d = np.sqrt(a * a + b * b)
-                if d < dist[ni, nj] - 1e-9:
-                    if use_cap and d > cap[ni, nj] + cap_tol:
+                d2 = float(a2 + b * b)
+                # a pre-test that spares the square root: d2 >= dc^2 (1 + 1e-12) (with
+                # rounding, still above dc^2) means sqrt(d2) >= dc, no drop
+                if d2 >= dc * dc * (1.0 + 1e-12):
+                    continue
+                d = np.sqrt(d2)
+                if d < dc - 1e-9:
+                    if use_cap and d > cf[c] + cap_tol:
                         continue
-                    dist[ni, nj] = d
-                    near[ni, nj] = q
-                    skip[ni, nj] = False
-                    bi = ni // block
-                    bj = nj // block
-                    if bi != last_bi or bj != last_bj:
-                        _mark(dirty, bi, bj, brows, bcols)
-                        last_bi = bi
-                        last_bj = bj
+                    df[c] = d
+                    nf[c] = q
+                    sf[c] = False
+                    if nbr:
+                        _mark_cell(dirty, dlist, dcount, ni, nj, rows, cols)
+                    else:
+                        _mark(dirty, dlist, dcount, ni >> BLOCK_SHIFT, nj >> BLOCK_SHIFT)
                     count += 1
-                    c = ni * cols + nj
                     if not inq[c]:
                         inq[c] = True
-                        ring[(head + n) % size] = c
+                        ring[tail] = c
+                        tail += 1
+                        if tail == size:
+                            tail = 0
                         n += 1
     return count
 
 
 @numba.njit(**_NB)
-def scan_blocks(dist_all, dist_el, covered, skip, dirty, best_val, best_idx, block, adj_tol, ex_x, ex_y, n_ex, x0, y0, h):
+def _tree_val(bf, k):
+    return bf[k] if k >= 0 else -np.inf
+
+
+@numba.njit(**_NB)
+def tree_build(tree, best_val):
+    """The tournament tree over ``best_val`` (flattened): ``tree[P + b] = b`` for the
+    blocks (-1 past them), each inner node the winner of its children, the larger
+    value or on a tie the left one, so ``tree[1]`` is ``np.argmax(best_val)``."""
+    bf = best_val.ravel()
+    nb = bf.shape[0]
+    p = tree.shape[0] // 2
+    for b in range(p):
+        tree[p + b] = b if b < nb else -1
+    for k in range(p - 1, 0, -1):
+        left = tree[2 * k]
+        right = tree[2 * k + 1]
+        tree[k] = left if _tree_val(bf, left) >= _tree_val(bf, right) else right
+
+
+@numba.njit(**_NB)
+def scan_blocks(dist_all, dist_el, covered, skip, dirty, dlist, dcount, best_val, best_idx, bmax, tree, adj_tol, ex, n_ex, x0, y0, h):
     """Recompute the best candidate circle of every dirty block (§4.1 FindEmptyCircle).
 
     A candidate centre is a free cell on the medial axis of the distance transform (its
@@ -238,64 +369,89 @@ def scan_blocks(dist_all, dist_el, covered, skip, dirty, best_val, best_idx, blo
     where the largest circle adjacent to the ornament often lies), whose inflation stopped
     at an element rather than at the boundary (``dist_el - dist_all <= adj_tol``), that
     is not marked ``skip`` and whose circle contains no point of the exclude list
-    (``ex_x[:n_ex], ex_y[:n_ex]``, world coordinates). Each block keeps its largest one in
-    ``best_val`` (radius in cells, -1 when none) and ``best_idx`` (flat cell index).
+    (``ex[:n_ex]``, world coordinates). Each block keeps its largest one in ``best_val``
+    (radius in cells, -1 when none) and ``best_idx`` (flat cell index), and its largest
+    finite distance in ``bmax``; the tournament tree ``tree`` is brought up to date.
+
+    Returns
+    -------
+    int
+        The block of the largest ``best_val`` (the first of equal ones).
     """
     rows, cols = dist_all.shape
-    brows, bcols = dirty.shape
-    for bi in range(brows):
-        for bj in range(bcols):
-            if not dirty[bi, bj]:
-                continue
-            dirty[bi, bj] = False
-            bv = -1.0
-            bidx = -1
-            for i in range(bi * block, min(rows, (bi + 1) * block)):
-                for j in range(bj * block, min(cols, (bj + 1) * block)):
-                    v = dist_all[i, j]
-                    if v <= bv or covered[i, j] != 0 or skip[i, j]:
-                        continue
-                    if dist_el[i, j] - v > adj_tol:
-                        continue
-                    ismax = True
-                    for di in range(-1, 2):
-                        ni = i + di
-                        if ni < 0 or ni >= rows:
+    bcols = dirty.shape[1]
+    block = BLOCK
+    m = dcount[0]
+    p = tree.shape[0] // 2
+    bf = best_val.ravel()
+    for t in range(m):
+        bb = dlist[t]
+        bi = bb // bcols
+        bj = bb - bi * bcols
+        dirty[bi, bj] = False
+        bv = -1.0
+        bidx = -1
+        bm = 0.0
+        for i in range(bi * block, min(rows, (bi + 1) * block)):
+            for j in range(bj * block, min(cols, (bj + 1) * block)):
+                v = dist_all[i, j]
+                if v > bm and v < np.inf:
+                    bm = v
+                if v <= bv or covered[i, j] != 0 or skip[i, j]:
+                    continue
+                if dist_el[i, j] - v > adj_tol:
+                    continue
+                ismax = True
+                for di in range(-1, 2):
+                    ni = i + di
+                    if ni < 0 or ni >= rows:
+                        ismax = False
+                        break
+                    for dj in range(-1, 2):
+                        nj = j + dj
+                        if nj < 0 or nj >= cols:
                             ismax = False
                             break
-                        for dj in range(-1, 2):
-                            nj = j + dj
-                            if nj < 0 or nj >= cols:
-                                ismax = False
-                                break
-                            # medial-axis test: the circle at (i, j) is not inside a
-                            # neighbour's circle, i.e. the field rises slower than
-                            # its unit slope off the skeleton (0.85 < cos 22.5 deg)
-                            step = 1.0 if (di == 0 or dj == 0) else 1.4142135623730951
-                            if dist_all[ni, nj] - v > 0.85 * step:
-                                ismax = False
-                                break
-                        if not ismax:
+                        # medial-axis test: the circle at (i, j) is not inside a
+                        # neighbour's circle, i.e. the field rises slower than
+                        # its unit slope off the skeleton (0.85 < cos 22.5 deg)
+                        step = 1.0 if (di == 0 or dj == 0) else 1.4142135623730951
+                        if dist_all[ni, nj] - v > 0.85 * step:
+                            ismax = False
                             break
                     if not ismax:
-                        continue
-                    cx = x0 + (j + 0.5) * h
-                    cy = y0 + (i + 0.5) * h
-                    rw = v * h
-                    r2 = rw * rw
-                    excluded = False
-                    for e in range(n_ex):
-                        dx = ex_x[e] - cx
-                        dy = ex_y[e] - cy
-                        if dx * dx + dy * dy < r2:
-                            excluded = True
-                            break
-                    if excluded:
-                        continue
-                    bv = v
-                    bidx = i * cols + j
-            best_val[bi, bj] = bv
-            best_idx[bi, bj] = bidx
+                        break
+                if not ismax:
+                    continue
+                cx = x0 + (j + 0.5) * h
+                cy = y0 + (i + 0.5) * h
+                rw = v * h
+                r2 = rw * rw
+                excluded = False
+                for e in range(n_ex):
+                    dx = ex[e, 0] - cx
+                    dy = ex[e, 1] - cy
+                    if dx * dx + dy * dy < r2:
+                        excluded = True
+                        break
+                if excluded:
+                    continue
+                bv = v
+                bidx = i * cols + j
+        best_val[bi, bj] = bv
+        best_idx[bi, bj] = bidx
+        bmax[bi, bj] = bm
+        if m * 16 < p:  # few blocks: walk each one's path up the tree
+            k = (p + bb) >> 1
+            while k >= 1:
+                left = tree[2 * k]
+                right = tree[2 * k + 1]
+                tree[k] = left if _tree_val(bf, left) >= _tree_val(bf, right) else right
+                k >>= 1
+    dcount[0] = 0
+    if m * 16 >= p:
+        tree_build(tree, best_val)
+    return tree[1]
 
 
 @numba.njit(**_NB)
