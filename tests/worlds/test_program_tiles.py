@@ -36,6 +36,11 @@ def age(face):
 arrangement = union(map_to_faces(age, tiles), map_to_faces(lambda f: scale(contour(f), 0.5), tiles))
 """
 
+STRIPES = """
+from strew.program import *
+arrangement = stripes_partition(set_edge_labels(stripes_properties(0.5, 30, 10), "a", "b"))
+"""
+
 RANDOM = """
 from strew.program import *
 arrangement = random_partition(set_weighted_edge_labels(irregular_properties(0.002), "x", 0.5), CROP_ADD_BOUNDARY)
@@ -50,7 +55,7 @@ def _script(tmp_path: Path, text: str, name: str) -> str:
     return str(p)
 
 
-def _compare(ref, arr, tile: float, halo: float) -> None:
+def _compare(ref, arr, tile: float, halo: float, labelled_share: float = 0.8) -> None:
     """Every untiled face is the union of its pieces, the pieces do not overlap and lie in
     their tiles, and the edges are the same lines. A face within the halo of every tile it
     meets has its labels (a larger one, e.g. the gap of several deleted cells, gets labels
@@ -59,7 +64,7 @@ def _compare(ref, arr, tile: float, halo: float) -> None:
     rc, tc = np.asarray(ref["cell"]), np.asarray(arr["cell"])
     rl, tl = np.asarray(ref["labels"]), np.asarray(arr["labels"])
     rf, tf = np.flatnonzero(rc == "face"), np.flatnonzero(tc == "face")
-    assert len(rf) > 20 and len(tf) > len(rf)  # some faces cross borders
+    assert len(rf) > 10 and len(tf) > len(rf)  # some faces cross borders
     qi, qj = shapely.STRtree(rg[rf]).query(shapely.point_on_surface(tg[tf]), predicate="within")
     assert sorted(qi.tolist()) == list(range(len(tf)))  # every piece in exactly one face
     groups: dict[int, list[int]] = {}
@@ -77,7 +82,7 @@ def _compare(ref, arr, tile: float, halo: float) -> None:
                for t in (plan_tiles[k] for k in set(tiles_of[lst].tolist()))):
             assert {tl[k] for k in lst} == {rl[rf[j]]}
             labelled += 1
-    assert labelled > 0.8 * len(rf)
+    assert labelled >= labelled_share * len(rf)
     areas = shapely.area(tg[tf])
     assert areas.sum() == pytest.approx(shapely.union_all(tg[tf]).area, rel=1e-12)  # no overlaps
     assert areas.sum() == pytest.approx(SIZE[0] * SIZE[1], rel=1e-12)  # the world, covered
@@ -94,18 +99,19 @@ def _compare(ref, arr, tile: float, halo: float) -> None:
         assert shapely.length(tg[te][tl[te] == lab]).sum() == pytest.approx(shapely.length(rg[re_][rl[re_] == lab]).sum(), rel=1e-9)
 
 
-@pytest.mark.parametrize(("text", "tile", "halo"), [
-    (VORONOI, 80.0, 30.0),
-    pytest.param(VORONOI, 120.0, 30.0, marks=pytest.mark.slow),  # another tile size: the same world
-    (GRID, 80.0, 40.0),
-    (RANDOM, 80.0, 40.0),
-], ids=["uniform-80", "uniform-120", "grid", "random"])
-def test_pieces_of_every_cell_make_the_untiled_cell(tmp_path, text, tile, halo):
+@pytest.mark.parametrize(("text", "tile", "halo", "labelled"), [
+    (VORONOI, 80.0, 30.0, 0.8),
+    pytest.param(VORONOI, 120.0, 30.0, 0.8, marks=pytest.mark.slow),  # another tile size: the same world
+    (GRID, 80.0, 40.0, 0.8),
+    (RANDOM, 80.0, 40.0, 0.8),
+    (STRIPES, 80.0, 30.0, 0.0),  # open lines: faces closed by the world's outline, across tiles
+], ids=["uniform-80", "uniform-120", "grid", "random", "stripes"])
+def test_pieces_of_every_cell_make_the_untiled_cell(tmp_path, text, tile, halo, labelled):
     script = _script(tmp_path, text, "world")
     ref = evaluate_world(script, SIZE, seed=5)
     arr = tiled("program", script, SIZE, tile_size=tile, halo=halo, seed=5)
     assert arr.meta["world"]["tiles"] == len(plan(SIZE, tile)[0])
-    _compare(ref, arr, tile, halo)
+    _compare(ref, arr, tile, halo, labelled)
 
 
 @pytest.mark.slow

@@ -446,9 +446,9 @@ def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float
 
     The phase is fixed in the plane (not by the region), so a stripes set is the same
     wherever it is evaluated. With ``fixed`` (a world's tiles, issue 19.1) each line is a
-    polyline whose vertices are fixed in the plane too (every ``period`` along it, from
-    its foot on the normal through the origin), so that two tiles crop it to pieces that
-    share their inner segments and node them to the same bits.
+    polyline whose vertices are fixed in the plane too (every narrowest width along it,
+    from its foot on the normal through the origin), so that two tiles crop it to pieces
+    that share their inner segments and node them to the same bits.
     """
     if fixed:
         return _fixed_stripe_lines(p, bounds)
@@ -484,8 +484,8 @@ def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float
 
 def _fixed_stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float]) -> list[Curve]:
     """:func:`_stripe_lines` with vertices fixed in the plane (issue 19.1; not in the paper,
-    whose partitions are evaluated once): line ``k``'s vertices are ``t_k n + (m + 1/pi) P d``
-    for integers ``m`` (``n`` the normal, ``d`` the direction, ``P`` the widths' period)."""
+    whose partitions are evaluated once): line ``k``'s vertices are ``t_k n + (m + 1/pi) w d``
+    for integers ``m`` (``n`` the normal, ``d`` the direction, ``w`` the narrowest width)."""
     x0, y0, x1, y1 = bounds
     d = np.array([math.cos(p.angle), math.sin(p.angle)])
     nrm = np.array([-d[1], d[0]])
@@ -496,11 +496,13 @@ def _fixed_stripe_lines(p: StripesProperties, bounds: tuple[float, float, float,
     m = len(p.widths)
     cum = np.r_[0.0, np.cumsum(p.widths)]
     period = float(cum[-1])
-    s0, s1 = math.floor(float(along.min()) / period) - 1, math.ceil(float(along.max()) / period) + 1
-    # offset by an odd fraction of the period: at whole periods the vertices would sit on
-    # the crossings of a grid's other set (widths in proportion), where a piece shorter
-    # than the attribution tolerance would carry both lines' face labels
-    steps = (np.arange(s0, s1 + 1, dtype=float) + _ODD) * period
+    # a vertex every narrowest width (a tile whose halo is at least that keeps whole the
+    # segments that cross it), offset by an odd fraction of it: at whole widths the
+    # vertices would sit on the crossings of a grid's other set (widths in proportion),
+    # where a piece shorter than the attribution tolerance would carry both lines' labels
+    step = float(min(p.widths))
+    s0, s1 = math.floor(float(along.min()) / step) - 1, math.ceil(float(along.max()) / step) + 1
+    steps = (np.arange(s0, s1 + 1, dtype=float) + _ODD) * step
     q0, q1 = math.floor(tmin / period) - 1, math.ceil(tmax / period) + 1
     lines = []
     for q in range(q0, q1 + 1):

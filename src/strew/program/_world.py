@@ -39,6 +39,7 @@ the given apparition probabilities).
 from __future__ import annotations
 
 import math
+import threading
 from typing import Any
 
 import numpy as np
@@ -52,6 +53,8 @@ __all__ = ["field_sites", "run_tile", "evaluate_world", "FIELD_CELL"]
 FIELD_CELL = 8.0
 
 _CACHE: dict[tuple[Any, ...], np.ndarray] = {}
+
+_RUN_LOCK = threading.Lock()
 
 #: Label of a tile's grown outline (see :func:`evaluate_tile`).
 SEAM = "__strew_world_seam__"
@@ -236,7 +239,9 @@ def evaluate_tile(script: Any, name: str, size: tuple[float, float], rect: tuple
     # still the world's faces there; it is a seam, not a line of the arrangement
     gx0, gy0, gx1, gy1 = grown
     seam = Curve(np.array([[gx0, gy0], [gx1, gy0], [gx1, gy1], [gx0, gy1]]), True, frozenset([SEAM]))
-    with field_evaluation(Field(region.geometry)):
+    # one script at a time per process: running a script swaps sys.argv, sys.path and
+    # sys.modules["__main__"] (runpy), which threads of one Dask worker would share
+    with _RUN_LOCK, field_evaluation(Field(region.geometry)):
         pm, _ = _run_on(path, name, region, int(seed), float(max(w, h)), convert=False, seam=seam)
     return clip_cells(pm, rect, size, max(w, h) / 1000.0)
 
