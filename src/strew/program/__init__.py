@@ -29,6 +29,13 @@ constants), this module offers :class:`PlanarMap`, :class:`Curves`, :func:`evalu
 :func:`run` (the method contract: script and region in, Arrangement out, provenance in
 ``meta``), :func:`run_script` (the planar map too) and :func:`to_strew` for use from Python, and :func:`run_size` (the
 ``--size`` a script is run at) for scripts that scale with it.
+
+Worlds too large for one evaluation (issue 19.1): ``strew world program SCRIPT --size WxH
+--tile-size T [--halo H] [--workers N] --out world.parquet`` (or
+``strew.tiles.world("program", SCRIPT, (W, H), tile_size=T)``) evaluates the script tile
+by tile; the partitions are fixed in the plane and every random value is keyed by what it
+draws, so the tiles' pieces make the map of one evaluation whatever ``T`` and ``N``, as
+long as the halo holds every cell that reaches into a tile (see ``strew.program._world``).
 """
 
 from __future__ import annotations
