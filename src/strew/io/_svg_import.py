@@ -530,7 +530,7 @@ class _Reader:
             have = [f for f in flats if f.paths]
             if have:  # bounds for new_kind, all at once (min and max are exact)
                 pts = np.concatenate([p.points for f in have for p in f.paths])
-                count = np.array([sum(len(p.points) for p in f.paths) for f in have])
+                count = np.array([len(f.paths[0].points) if len(f.paths) == 1 else sum(len(p.points) for p in f.paths) for f in have])
                 start = np.cumsum(count) - count
                 low, high = np.minimum.reduceat(pts, start, axis=0).tolist(), np.maximum.reduceat(pts, start, axis=0).tolist()
                 for f, (x0, y0), (x1, y1) in zip(have, low, high):

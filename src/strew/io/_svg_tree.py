@@ -649,7 +649,8 @@ class _Doc:
         # every object's largest distance from its mean vertex, for all at once: the
         # same sums (numpy adds the rows of an (n, 2) array one after another) and roots
         pts = np.concatenate([p.points for i in have for p in batch[i][1].paths])
-        count = np.array([sum(len(p.points) for p in batch[i][1].paths) for i in have])
+        # (one path per object, mostly: its length without a generator)
+        count = np.array([len(ps[0].points) if len(ps) == 1 else sum(len(p.points) for p in ps) for ps in (batch[i][1].paths for i in have)])
         start = np.cumsum(count) - count
         mean = np.add.reduceat(pts, start, axis=0) / count[:, None]
         dist = np.sqrt(((pts - np.repeat(mean, count, axis=0)) ** 2).sum(axis=1))
