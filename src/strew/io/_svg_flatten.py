@@ -395,16 +395,27 @@ def points_many(texts: list[str], polygon: list[bool]) -> list[Segments | None] 
     pts = np.zeros((total, 4, 2))
     pts[:, 0] = xy[seg_start]
     pts[:, 3] = xy[seg_start + 1]
-    code = np.zeros(total, np.int8)
-    arc = np.zeros((total, 5))
-    sub = np.zeros(total, np.intp)
-    closed = np.array(polygon, dtype=bool)
+    pts.setflags(write=False)
+    # every table's codes (lines), arc parameters and subpath ids are zeros: shared,
+    # read-only, by all tables of one length (one slice per table instead of four)
+    top = int(nseg.max())
+    code, arc, sub = np.zeros(top, np.int8), np.zeros((top, 5)), np.zeros(top, np.intp)
+    for a in (code, arc, sub):
+        a.setflags(write=False)
+    zeros = {n: (code[:n], arc[:n], sub[:n]) for n in set(nseg.tolist())}
+    shut = [_OPEN, _SHUT]
     lo = (np.cumsum(nseg) - nseg).tolist()
-    for i, (a, n) in enumerate(zip(lo, nseg.tolist())):
+    for i, (a, n, closed) in enumerate(zip(lo, nseg.tolist(), polygon)):
         if n:
-            b = a + n
-            out[i] = Segments(code[a:b], pts[a:b], arc[a:b], sub[a:b], closed[i : i + 1])
+            c, r, u = zeros[n]
+            out[i] = Segments(c, pts[a : a + n], r, u, shut[closed])
     return out
+
+
+# the closed flags of one subpath that points_many's tables share (read-only)
+_OPEN, _SHUT = np.array([False]), np.array([True])
+_OPEN.setflags(write=False)
+_SHUT.setflags(write=False)
 
 
 def from_svgelements(segments: list[Any]) -> Segments:

@@ -400,6 +400,9 @@ def _invariants(sig: _Signature | None) -> list[float]:
     return [sig.size, sig.radius, sig.gyration, sig.tolerance, 1.0 if sig.is_area else -1.0, *mags]
 
 
+_POWERS = [float(k) for k in range(2, _KMAX + 1)]
+
+
 def _invariants_many(sigs: list[_Signature | None]) -> np.ndarray:
     """(n, 5 + _KMAX - 1) the rows :func:`_invariants` gives, for many signatures at once
     (the same arithmetic elementwise, so the same numbers)."""
@@ -413,7 +416,9 @@ def _invariants_many(sigs: list[_Signature | None]) -> np.ndarray:
     g = np.maximum(np.array([sig.gyration for sig in have]), 1e-300)  # type: ignore[union-attr]
     mom = np.array([sig.moments[2:] for sig in have])  # type: ignore[union-attr]
     # Python's powers and hypot (numpy's array power and complex abs round otherwise)
-    power = np.array([[v**k for k in range(2, _KMAX + 1)] for v in g.tolist()])
+    # (math.pow(v, float(k)) is v**k: both C's pow of the same doubles; mapped at once,
+    # at a third of a list comprehension's cost)
+    power = np.fromiter(map(math.pow, np.repeat(g, _KMAX - 1).tolist(), _POWERS * len(g)), float, (_KMAX - 1) * len(g)).reshape(-1, _KMAX - 1)
     rows[ok, 0] = size
     rows[ok, 1] = [sig.radius for sig in have]  # type: ignore[union-attr]
     rows[ok, 2] = [sig.gyration for sig in have]  # type: ignore[union-attr]
