@@ -422,12 +422,27 @@ class _Place:
                 continue
             # (c) angle check against the neighbours already around s. The "original
             # angle" is taken as the smaller of the two reference ring angles beside slot j.
+            # A neighbour that no slot of this ring pairs with has no corresponding angle
+            # in the ring (the paper's Fig. 6c compares edges of the ring shape): it
+            # refuses the slot only where the triangle (s, slot, neighbour) is skewed in
+            # the sense of §4. Not in the paper. The bricks' centres are nearly
+            # cocircular in fours, so the reference's Delaunay rings (§4) mix horizontal
+            # and vertical edges; a ring without the horizontal edges has 82-96 degree
+            # gaps, and a horizontal neighbour 40 degrees from a diagonal slot refused
+            # that slot although slot and neighbour lie a lattice spacing apart: the
+            # Fig. 6e extra seed then filled the gap off the lattice, and a seam of
+            # courses out of step grew from it (bricks rotate seed 4: Eq. 5 179 against
+            # a tolerance of 45.9). Only in the rotating modes: in fixed mode the rule
+            # changed irregular exemplars (three sizes seed 2: nn[small>large] 0.130 against a
+            # tolerance of 0.127), and fixed bricks passed without it.
             ang = math.atan2(cy - y, cx - x)
             too_close = False
+            fixed = self.mode_code == 0
             for o in self.adj[s]:
-                d = abs(math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) - ang)
+                po = self.xy[o]
+                d = abs(math.atan2(po[1] - y, po[0] - x) - ang)
                 d = min(d, 2 * math.pi - d)
-                if d < 0.5 * gap_min[j]:
+                if d < 0.5 * gap_min[j] and (fixed or o in slot_of or _skewed((x, y), (cx, cy), po)):
                     too_close = True
                     break
             if too_close:
