@@ -55,7 +55,7 @@ def _script(tmp_path: Path, text: str, name: str) -> str:
     return str(p)
 
 
-def _compare(ref, arr, tile: float, halo: float, labelled_share: float = 0.8) -> None:
+def _compare(ref, arr, tile: float, halo: float, labelled_share: float = 0.8, size: tuple[float, float] = SIZE) -> None:
     """Every untiled face is the union of its pieces, the pieces do not overlap and lie in
     their tiles, and the edges are the same lines. A face within the halo of every tile it
     meets has its labels (a larger one, e.g. the gap of several deleted cells, gets labels
@@ -72,7 +72,7 @@ def _compare(ref, arr, tile: float, halo: float, labelled_share: float = 0.8) ->
         groups.setdefault(j, []).append(int(tf[i]))
     assert len(groups) == len(rf)
     tiles_of = np.asarray(arr["tile"])
-    plan_tiles = plan(SIZE, tile)[0]
+    plan_tiles = plan(size, tile)[0]
     labelled = 0
     for j, lst in groups.items():
         whole = rg[rf[j]]
@@ -85,7 +85,7 @@ def _compare(ref, arr, tile: float, halo: float, labelled_share: float = 0.8) ->
     assert labelled >= labelled_share * len(rf)
     areas = shapely.area(tg[tf])
     assert areas.sum() == pytest.approx(shapely.union_all(tg[tf]).area, rel=1e-12)  # no overlaps
-    assert areas.sum() == pytest.approx(SIZE[0] * SIZE[1], rel=1e-12)  # the world, covered
+    assert areas.sum() == pytest.approx(size[0] * size[1], rel=1e-12)  # the world, covered
     b = shapely.bounds(tg)
     for t in plan_tiles:
         sel = tiles_of == t.index
@@ -112,6 +112,16 @@ def test_pieces_of_every_cell_make_the_untiled_cell(tmp_path, text, tile, halo, 
     arr = tiled("program", script, SIZE, tile_size=tile, halo=halo, seed=5)
     assert arr.meta["world"]["tiles"] == len(plan(SIZE, tile)[0])
     _compare(ref, arr, tile, halo, labelled)
+
+
+def test_edges_along_tile_borders_are_drawn_once():
+    """Fig. 7's puzzle at 800: its bricks' lines run along the borders of tiles of 400, and
+    a tab leaves such a line into one tile and comes back: each segment is one tile's."""
+    script = str(Path(__file__).parents[2] / "examples" / "program" / "fig07_mappers.py")
+    size = (800.0, 800.0)
+    ref = evaluate_world(script, size, seed=1)
+    arr = tiled("program", script, size, tile_size=400.0, halo=200.0, seed=1)
+    _compare(ref, arr, 400.0, 200.0, 0.0, size)
 
 
 @pytest.mark.slow

@@ -118,12 +118,27 @@ def _placeholder() -> dict[str, Any]:
     }
 
 
-def _owned(x: float, y: float, rect: tuple[float, float, float, float], size: tuple[float, float]) -> bool:
-    """Whether ``(x, y)`` is in the half-open ``rect`` (the world's far edges closed)."""
+def _owned(x: np.ndarray, y: np.ndarray, rect: tuple[float, float, float, float], size: tuple[float, float]) -> np.ndarray:
+    """Whether each ``(x, y)`` is in the half-open ``rect`` (the world's far edges closed)."""
     x0, y0, x1, y1 = rect
-    okx = x0 <= x < x1 or (x == x1 and x1 >= size[0])
-    oky = y0 <= y < y1 or (y == y1 and y1 >= size[1])
-    return okx and oky
+    okx = (x >= x0) & ((x < x1) | ((x == x1) & (x1 >= size[0])))
+    oky = (y >= y0) & ((y < y1) | ((y == y1) & (y1 >= size[1])))
+    return okx & oky
+
+
+def _owned_runs(xy: np.ndarray, rect: tuple[float, float, float, float], size: tuple[float, float]) -> list[np.ndarray]:
+    """The runs of consecutive segments of the polyline ``xy`` (a piece of an edge clipped
+    to the closed ``rect``) whose midpoints the tile owns: a segment along a tile border
+    goes to one tile only, also when the rest of its edge lies in the other."""
+    mid = 0.5 * (xy[1:] + xy[:-1])
+    own = _owned(mid[:, 0], mid[:, 1], rect, size)
+    if own.all():
+        return [xy]
+    runs = []
+    k = np.flatnonzero(np.diff(np.r_[0, own.astype(np.int8), 0]))
+    for a, b in zip(k[::2].tolist(), k[1::2].tolist()):
+        runs.append(xy[a : b + 1])
+    return runs
 
 
 def clip_cells(pm: Any, rect: tuple[float, float, float, float], size: tuple[float, float], stroke_width: float) -> Any:
@@ -182,17 +197,14 @@ def clip_cells(pm: Any, rect: tuple[float, float, float, float], size: tuple[flo
             for ln in shapely.get_parts(shapely.line_merge(piece) if piece.geom_type == "MultiLineString" else piece):
                 if not isinstance(ln, shapely.LineString) or not (ln.length > 0):
                     continue
-                m = ln.interpolate(0.5, normalized=True)
-                if not _owned(m.x, m.y, rect, size):
-                    continue
-                xy = np.asarray(ln.coords)
-                c = (xy.min(axis=0) + xy.max(axis=0)) / 2
-                kinds.append(1)
-                xs.append(c[0])
-                ys.append(c[1])
-                cells.append("edge")
-                labels.append(" ".join(sorted(labs)))
-                parts.append([Shape((ShapePath(xy - c, False),), style=style)])
+                for xy in _owned_runs(np.asarray(ln.coords), rect, size):
+                    c = (xy.min(axis=0) + xy.max(axis=0)) / 2
+                    kinds.append(1)
+                    xs.append(c[0])
+                    ys.append(c[1])
+                    cells.append("edge")
+                    labels.append(" ".join(sorted(labs)))
+                    parts.append([Shape((ShapePath(xy - c, False),), style=style)])
     return Arrangement(_placeholder(), np.asarray(kinds, np.int64), xs, ys,
                        columns={"cell": np.asarray(cells, dtype=object), "labels": np.asarray(labels, dtype=object),
                                 PARTS_COLUMN: parts},
