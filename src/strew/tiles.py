@@ -603,6 +603,9 @@ def world(
                   "tiles": len(tiles), "elements": int(counts.sum()), "phases": "2x2 (Wei 2008)",
                   "rng": "SeedSequence(seed, spawn_key=(tile,))"},
     }
+    if method == "program":  # tiles independent (strew.program._world)
+        meta["world"].update(phases="none: the partitions' field cells run in 2x2 phases inside each tile",
+                             rng="field cells from (seed, partition, cell); per-cell values from the cell's geometry")
     return WorldInfo(meta, shapes, counts, time.perf_counter() - t0, nworkers, dashboard, kinds)
 
 
