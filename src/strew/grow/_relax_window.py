@@ -121,12 +121,24 @@ class _RelaxWindow:
                 moved = [g for g in moved if g not in bad]
         geom = self.geom
         old = {g: (*xy[g], geom[g]) for g in moved}
-        move = self._move
         torus = self.tile is not None
+        move = self._move
+        # _move inlined for elements in the plane, and for seeds when no seed waits on
+        # the priority grids (this loop runs for every element of every window)
+        grids = bool(self.hgrid or self.deferred)
+        pos = self.pos
+        index_move = self.index.move
         for g in moved:
             nx, ny = new_l[local[g]]
-            move(g, nx, ny)
-            if state[g] == ELEMENT:
+            el = state[g] == ELEMENT
+            if torus or (grids and not el):
+                move(g, nx, ny)
+            else:
+                ox, oy = xy[g]
+                pos[g] = (nx, ny)
+                xy[g] = (nx, ny)
+                index_move(g, ox, oy, nx, ny)
+            if el:
                 geom[g] = new_geom[g]
                 if torus:
                     self._sync(g)
