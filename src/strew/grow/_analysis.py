@@ -434,12 +434,12 @@ def flip_edge(ref: Reference, i: int, j: int) -> Reference:
     n = len(xy)
     for v in (i, j):
         if not 0 <= v < n:
-            raise InputError(f"--flip {i},{j}: element {v} out of range (the exemplar has {n} elements)")
+            raise InputError(f"flips {i},{j}: element {v} out of range (the exemplar has {n} elements)")
     a_, b_ = min(i, j), max(i, j)
     edges = ref.edges
     hit = np.flatnonzero((edges[:, 0] == a_) & (edges[:, 1] == b_))
     if len(hit) == 0:
-        raise InputError(f"--flip {i},{j}: elements {i} and {j} are not joined by an edge")
+        raise InputError(f"flips {i},{j}: elements {i} and {j} are not joined by an edge")
     adj = _adjacency(n, edges)
     common = sorted(adj[i] & adj[j])
     d = xy[j] - xy[i]
@@ -452,7 +452,7 @@ def flip_edge(ref: Reference, i: int, j: int) -> Reference:
             ang = abs(np.arctan2(cr, d @ v))
             side[1 if cr > 0 else -1].append((ang, c))
     if not side[1] or not side[-1]:
-        raise InputError(f"--flip {i},{j}: edge ({i}, {j}) lies on the boundary (a triangle on one side only)")
+        raise InputError(f"flips {i},{j}: edge ({i}, {j}) lies on the boundary (a triangle on one side only)")
     a = min(side[1])[1]
     b = min(side[-1])[1]
     # Convexity: i and j must lie on opposite sides of the new edge (a, b).
@@ -463,7 +463,7 @@ def flip_edge(ref: Reference, i: int, j: int) -> Reference:
         return float(e[0] * v[1] - e[1] * v[0])
 
     if cross(xy[i]) * cross(xy[j]) >= 0 or b in adj[a]:
-        raise InputError(f"--flip {i},{j}: cannot flip: quadrilateral {i}, {a}, {j}, {b} is not convex")
+        raise InputError(f"flips {i},{j}: cannot flip: quadrilateral {i}, {a}, {j}, {b} is not convex")
     new = np.delete(edges, hit[0], axis=0)
     new = np.vstack([new, [sorted((a, b))]])
     return _build(ref.exemplar, new)

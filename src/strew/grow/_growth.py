@@ -660,7 +660,7 @@ def grow_reference(
         else:
             start = (0.0, 0.0)
     if params.region is not None and not params.region.contains([start])[0]:
-        raise InputError(f"--start {start[0]:g},{start[1]:g}: lies outside the region")
+        raise InputError(f"start {start[0]:g},{start[1]:g}: lies outside the region")
     total = params.count
     rep = Reporter(progress, should_cancel, total=total, message="growing")
     sat = satellite_structure(ref.exemplar) if params.clusters and params.spray is None and params.tile is None else None

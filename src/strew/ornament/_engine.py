@@ -897,7 +897,7 @@ def grow_elements(
         outside = ~region.contains(pts)
         if outside.any():
             x, y = pts[np.flatnonzero(outside)[0]]
-            raise InputError(f"--seed-point {x:g},{y:g} lies outside the region")
+            raise InputError(f"seeds {x:g},{y:g} lies outside the region")
     mr = pat.min_radius if min_radius is None else float(min_radius)
     if not (math.isfinite(mr) and mr > 0):
         raise InputError(f"min_radius: must be positive, got {min_radius!r}")

@@ -399,7 +399,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     pat = ornament.pattern
     styles = available_styles(pat)
     if style not in styles:
-        raise InputError(f"--style: unknown style {style!r} for pattern {pat.name!r} (have: {', '.join(styles)})")
+        raise InputError(f"style: unknown style {style!r} for pattern {pat.name!r} (have: {', '.join(styles)})")
     lw = float(line_width) if line_width is not None else 0.2 * float(ornament.params.get("min_radius", pat.min_radius))
     rc = RenderContext(ornament, style, lw)
     shapes: dict[str, Shape] = {}
