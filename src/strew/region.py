@@ -34,11 +34,11 @@ def parse_size(text: str) -> tuple[float, float]:
             raise ValueError
         w, h = float(parts[0]), float(parts[1])
     except ValueError:
-        raise InputError(f"--size: expected WxH such as 600x520, got {text!r}") from None
+        raise InputError(f"size: expected WxH such as 600x520, got {text!r}") from None
     if not (np.isfinite(w) and np.isfinite(h)) or w <= 0 or h <= 0:
-        raise InputError(f"--size: width and height must be positive and finite, got {text!r}")
+        raise InputError(f"size: width and height must be positive and finite, got {text!r}")
     if max(w, h) > MAX_COORD:
-        raise InputError(f"--size: width and height must be at most {MAX_COORD:.0e}, got {text!r}")
+        raise InputError(f"size: width and height must be at most {MAX_COORD:.0e}, got {text!r}")
     return w, h
 
 

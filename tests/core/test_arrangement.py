@@ -128,7 +128,7 @@ def test_region_holes_and_queries():
 def test_region_rejects_degenerate_input():
     with pytest.raises(InputError, match="no area"):
         Region(shapely.Polygon([(0, 0), (1, 1), (2, 2)]))
-    with pytest.raises(InputError, match="--size"):
+    with pytest.raises(InputError, match="^size: expected WxH"):
         Region.from_size("10by3")
     with pytest.raises(InputError, match="positive"):
         Region.from_size("0x3")

@@ -106,7 +106,7 @@ def test_field_files(tmp_path, fine_sphere):
     h = surface.load_field(tmp_path / "design.json", fine_sphere)
     assert np.allclose(h.directions, f.directions)
     np.save(tmp_path / "short.npy", np.zeros((3, 3)))
-    with pytest.raises(InputError, match=r"--field 'short.npy': expected finite directions of shape \(2562, 3\)"):
+    with pytest.raises(InputError, match=r"^field 'short.npy': expected finite directions of shape \(2562, 3\)"):
         surface.load_field(tmp_path / "short.npy", fine_sphere)
     (tmp_path / "bad.json").write_text(json.dumps({"swirls": []}))
     with pytest.raises(InputError, match="expected an object with strokes, sources or sinks"):

@@ -243,7 +243,7 @@ def _remember_repeat(ctx: click.Context, param: click.Parameter, value: str | No
         try:
             counts = _repeat_counts(value)
         except InputError as exc:
-            raise click.BadParameter(str(exc).removeprefix("--repeat: "), ctx=ctx, param=param) from None
+            raise click.BadParameter(str(exc).removeprefix("repeat: "), ctx=ctx, param=param) from None
     ctx.meta["strew.out_repeat"] = counts
     return counts
 
@@ -354,8 +354,22 @@ def resolve_domain(region: str | None, size: str | None) -> Region | None:
     if region is not None:
         return load_region(region)
     if size is not None:
-        return Region.from_size(size)
+        with flag_for("size", "--size"):
+            return Region.from_size(size)
     return None
+
+
+@contextlib.contextmanager
+def flag_for(name: str, flag: str) -> Iterator[None]:
+    """Re-raise a library :class:`InputError` that starts with the Python parameter
+    ``name`` (``"size: ..."``) with the CLI ``flag`` in its place (``"--size: ..."``)."""
+    try:
+        yield
+    except InputError as exc:
+        msg = str(exc)
+        if msg.startswith((name + ":", name + " ")):
+            raise InputError(flag + msg[len(name):]) from exc
+        raise
 
 
 def parse_range(text: str | None, name: str, *, default: tuple[float, float] | None = None) -> tuple[float, float] | None:

@@ -15,7 +15,7 @@ from typing import Any
 import click
 
 from .._errors import InputError
-from ._common import command_line, echo, out_option, parse_range, progress_bar, quiet_option
+from ._common import command_line, echo, flag_for, out_option, parse_range, progress_bar, quiet_option
 
 _OUTS = (".glb", ".json", ".png", ".svg")
 
@@ -83,7 +83,8 @@ def command(shapes: tuple[str, ...], mesh: str, radius: float | None, scale: str
     else:
         source = radius
     m = surface.load_mesh(mesh, name="--surface")
-    field = surface.load_field(field_file, m) if field_file else "smoothest"
+    with flag_for("field", "--field"):
+        field = surface.load_field(field_file, m) if field_file else "smoothest"
     t0 = time.perf_counter()
     with progress_bar("surface", quiet=quiet) as (prog, cancel):
         arr = surface.pack(source, m, field=field, rotation=rotation, scale=parse_range(scale, "--scale", default=(1.0, 1.0)),
@@ -209,7 +210,8 @@ def run_on_surface(spec, options: dict, raw_input, outs: tuple[str, ...], surf: 
     element_meshes = _element_meshes(surf.get("surface_elements") or ())
     data = read_input(raw_input)
     m = surface.load_mesh(surf["surface_mesh"], name="--surface")
-    field = surface.load_field(surf["surface_field"], m) if surf.get("surface_field") else "smoothest"
+    with flag_for("field", "--field"):
+        field = surface.load_field(surf["surface_field"], m) if surf.get("surface_field") else "smoothest"
     t0 = time.perf_counter()
     try:
         with progress_bar(spec.progress_message or spec.name, quiet=quiet) as (prog, cancel):

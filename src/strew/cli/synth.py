@@ -10,6 +10,7 @@ import click
 
 from .._errors import InputError
 from ..synth._api import SPEC
+from ._common import flag_for
 from ._spec import Hooks, method_command
 
 
@@ -45,7 +46,8 @@ def _prepare(run) -> None:
     if run.options["brush_path"] is not None:
         from ..synth._stroke import brush_points, read_stroke
 
-        v["brush_points"], v["brush_radius"] = brush_points(read_stroke(run.options["brush_path"]), v["brush_radius"])
+        with flag_for("brush_radius", "--brush-radius"), flag_for("brush", "--brush"):
+            v["brush_points"], v["brush_radius"] = brush_points(read_stroke(run.options["brush_path"], "brush"), v["brush_radius"])
     if v.get("init") == "patch":
         v.setdefault("patch_rounds", 5)
     if run.region is None and "brush_points" not in v:

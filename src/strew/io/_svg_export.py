@@ -111,16 +111,16 @@ def _repeat_counts(repeat: Any) -> tuple[int, int]:
                 raise ValueError
             n, m = int(parts[0]), int(parts[1])
         except ValueError:
-            raise InputError(f"--repeat: expected NxM (copies across x down, e.g. 3x3), got {repeat!r}") from None
+            raise InputError(f"repeat: expected NxM (copies across x down, e.g. 3x3), got {repeat!r}") from None
     else:
         try:
             n, m = (int(v) for v in repeat)
         except (TypeError, ValueError):
             raise InputError(f"repeat: expected (n, m), got {repeat!r}") from None
     if n < 1 or m < 1:
-        raise InputError(f"--repeat: needs at least 1x1 copies, got {n}x{m}")
+        raise InputError(f"repeat: needs at least 1x1 copies, got {n}x{m}")
     if n * m > 10_000:
-        raise InputError(f"--repeat: at most 10000 copies, got {n}x{m}")
+        raise InputError(f"repeat: at most 10000 copies, got {n}x{m}")
     return n, m
 
 
@@ -190,7 +190,7 @@ def to_svg(
     if repeat is not None:
         counts = _repeat_counts(repeat)
         if tile is None:
-            raise InputError("--repeat: the arrangement is not periodic (no meta.periodic); make it with --periodic")
+            raise InputError("repeat: the arrangement is not periodic (no meta.periodic); make it with periodic=True")
     if tile_pixels is not None:
         if tile is None:
             raise InputError("tile_pixels: the arrangement is not periodic (no meta.periodic)")

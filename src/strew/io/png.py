@@ -80,7 +80,7 @@ def to_png(arr: Arrangement, *, width: int = 1024, background: str | None = "#ff
     counts = None if repeat is None else _repeat_counts(repeat)
     if tile is None:
         if counts is not None:
-            raise InputError("--repeat: the arrangement is not periodic (no meta.periodic); make it with --periodic")
+            raise InputError("repeat: the arrangement is not periodic (no meta.periodic); make it with periodic=True")
         return svg_to_png(to_svg(arr), width=width, background=background)
     counts = counts or (1, 1)
     px = tile_pixels(tile, width, counts)

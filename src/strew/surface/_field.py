@@ -341,21 +341,21 @@ def orientation_field(
 
 
 def load_field(path: str | os.PathLike[str], mesh: Any) -> OrientationField:
-    """Read ``--field FILE``: per-vertex directions (.npy) or a design (.json).
+    """Read a field file (``--field FILE`` on the CLI): per-vertex directions (.npy) or a design (.json).
 
     A design is ``{"strokes": [[[x, y, z], ...], ...]}`` or
     ``{"sources": [[x, y, z], ...], "sinks": [...]}``, passed to :func:`orientation_field`.
     """
     p = Path(path)
     if not p.is_file():
-        raise InputError(f"--field {str(path)!r}: no such file")
+        raise InputError(f"field {str(path)!r}: no such file")
     if p.suffix.lower() == ".npy":
         try:
             d = np.load(p, allow_pickle=False)
         except (ValueError, OSError) as exc:
-            raise InputError(f"--field {p.name!r}: cannot read ({exc})") from None
+            raise InputError(f"field {p.name!r}: cannot read ({exc})") from None
         if d.shape != (len(mesh.vertices), 3) or not np.all(np.isfinite(d)):
-            raise InputError(f"--field {p.name!r}: expected finite directions of shape ({len(mesh.vertices)}, 3), got {d.shape}")
+            raise InputError(f"field {p.name!r}: expected finite directions of shape ({len(mesh.vertices)}, 3), got {d.shape}")
         normals = np.asarray(mesh.vertex_normals)
         d = d - np.einsum("ij,ij->i", d, normals)[:, None] * normals
         return OrientationField(mesh, _unit(d), {"method": "file", "file": p.name})
@@ -363,8 +363,8 @@ def load_field(path: str | os.PathLike[str], mesh: Any) -> OrientationField:
         try:
             doc = json.loads(p.read_text(encoding="utf-8"))
         except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-            raise InputError(f"--field {p.name!r}: malformed JSON ({exc})") from None
+            raise InputError(f"field {p.name!r}: malformed JSON ({exc})") from None
         if not isinstance(doc, dict) or not set(doc) <= {"strokes", "sources", "sinks"}:
-            raise InputError(f"--field {p.name!r}: expected an object with strokes, sources or sinks")
+            raise InputError(f"field {p.name!r}: expected an object with strokes, sources or sinks")
         return orientation_field(mesh, **doc)
-    raise InputError(f"--field {str(path)!r}: unsupported extension {p.suffix!r}; use .npy or .json")
+    raise InputError(f"field {str(path)!r}: unsupported extension {p.suffix!r}; use .npy or .json")

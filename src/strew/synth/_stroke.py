@@ -27,7 +27,7 @@ def brush_points(polylines: list[np.ndarray], radius: float) -> tuple[np.ndarray
     radii : (p,) float
     """
     if not radius > 0:
-        raise InputError(f"--brush-radius: must be positive, got {radius:g}")
+        raise InputError(f"brush_radius: must be positive, got {radius:g}")
     out = []
     for line in polylines:
         line = np.asarray(line, float).reshape(-1, 2)
