@@ -14,8 +14,9 @@ to both segments count), for the edge collision of ``strew.grow``.
 from __future__ import annotations
 
 import numba
+import numpy as np
 
-__all__ = ["TOL", "seg_dist2", "seg_dist2_min", "orient", "seg_hit", "seg_cross", "inside", "where"]
+__all__ = ["TOL", "point_segment_distance", "seg_dist2", "seg_dist2_min", "orient", "seg_hit", "seg_cross", "inside", "where"]
 
 # Relative tolerance of the exact tests: an orientation whose value is within TOL of the
 # magnitude of its two products, or a crossing within TOL of the point it is compared
@@ -42,6 +43,31 @@ def seg_dist2(px: float, py: float, ax: float, ay: float, bx: float, by: float) 
     qx = ax + t * dx - px
     qy = ay + t * dy - py
     return qx * qx + qy * qy
+
+
+def point_segment_distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Distances from points to segments, row by row: :func:`seg_dist2`'s rule in numpy.
+
+    Parameters
+    ----------
+    p, a, b : (n, 2) float
+        The points and the segments' ends (a degenerate segment is its point ``a``).
+
+    Returns
+    -------
+    (n,) float
+
+    Examples
+    --------
+    >>> point_segment_distance(np.array([[0.0, 1.0], [3.0, 0.0]]), np.zeros((2, 2)), np.array([[2.0, 0.0], [2.0, 0.0]]))
+    array([1., 1.])
+    """
+    ab = b - a
+    L2 = (ab**2).sum(axis=1)
+    t = np.where(L2 > 0, ((p - a) * ab).sum(axis=1) / np.where(L2 > 0, L2, 1.0), 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    q = a + t[:, None] * ab
+    return np.sqrt(((p - q) ** 2).sum(axis=1))
 
 
 @numba.njit(**_SMALL)

@@ -382,15 +382,6 @@ def induce(curves: Curves, grid: float = DEFAULT_GRID) -> PlanarMap:
 
 
 # -- construction -------------------------------------------------------------------------
-def _point_segment_distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    ab = b - a
-    L2 = (ab**2).sum(axis=1)
-    t = np.where(L2 > 0, ((p - a) * ab).sum(axis=1) / np.where(L2 > 0, L2, 1.0), 0.0)
-    t = np.clip(t, 0.0, 1.0)
-    q = a + t[:, None] * ab
-    return np.sqrt(((p - q) ** 2).sum(axis=1))
-
-
 def _unique_rows(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``np.unique(a, axis=0, return_inverse=True)`` for (n, 2) int rows, by lexsort."""
     if len(a) == 0:
@@ -450,7 +441,8 @@ def _pieces_along(ca: np.ndarray, cb: np.ndarray, tree: Any, sa: np.ndarray, sb:
     """
     mids = shapely.points((ca + cb) / 2)
     qi, qj = tree.query(mids, predicate="dwithin", distance=tol)
-    ok = (_point_segment_distance(ca[qi], sa[qj], sb[qj]) <= tol) & (_point_segment_distance(cb[qi], sa[qj], sb[qj]) <= tol)
+    from .._kernels.geometry import point_segment_distance  # the shared rule (issue 15.5); numba loads here, not on import
+    ok = (point_segment_distance(ca[qi], sa[qj], sb[qj]) <= tol) & (point_segment_distance(cb[qi], sa[qj], sb[qj]) <= tol)
     qi, qj = qi[ok], qj[ok]
     covered = np.zeros(len(ca), dtype=bool)
     covered[qi] = True
