@@ -4,7 +4,7 @@ Each tool drives a method of the library on one stroke segment at a time and str
 the change: the generative brush, filler and eraser are :mod:`strew.synth`'s (Davison
 et al. 2018, §5.4); the spray is :class:`strew.grow.SprayGrowth` (Ijiri et al. 2008, §3,
 §5.1). Which new elements go for overlapping is :func:`strew.editing.overlapping` and
-:func:`strew.editing.overlap_drops` (synth's rule, applied as elements arrive).
+:func:`strew.synth.drop_new_overlaps` (synth's rule, applied as elements arrive).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import shapely
 
 from .._errors import Cancelled, InputError
 from ..arrangement import Arrangement, concat
-from ..editing import near_stroke, overlap_drops, overlapping
+from ..editing import near_stroke, overlapping
 from ._common import Emit, FIRST_SPRAY, TOOLS, _r
 from ._protocol import get_number, get_points, get_str
 
@@ -273,76 +273,12 @@ class ToolsMixin:
         st.brush_radii = np.zeros(0)
 
     def _drop_state_overlaps(self, n0: int, around: np.ndarray | None = None, reach: float = 0.0) -> None:
-        """Remove synthesis elements that overlap others, near the latest change.
+        """Remove synthesis elements that overlap others, near the latest change: the
+        library's rule, :func:`strew.synth.drop_new_overlaps`, with the scene's fixed
+        elements and the repeat view's tile."""
+        from ..synth import drop_new_overlaps
 
-        A new element (index >= n0) goes when it overlaps a fixed scene element. When no
-        exemplar of the selection has overlapping shapes (``prep.overlap_free``), the
-        later of any two overlapping synthesis elements goes too: the rule by which
-        :meth:`strew.synth.SynthState.to_arrangement` leaves them out of the output,
-        applied here as elements arrive, so that what the browser shows is what is saved
-        and exported. Older elements are checked near the new ones and, when ``around``
-        (m, 2) is given, within ``reach`` of those points (optimisation moves them).
-        """
-        from scipy.spatial import cKDTree
-
-        from ..metrics import overlaps
-
-        st = self.state
-        if st is None or st.n <= n0:
-            return
-        prep = st.prep
-        overlap_free = bool(getattr(prep, "overlap_free", False))
-        if not overlap_free and len(self.fixed) == 0:
-            return
-        pos = st.pos
-
-        state_part = st.elements
-
-        tile = self._repeat_tile()
-        if tile is not None:  # the repeat view: distances and overlaps on the torus of the tile
-            x0, y0, w, h = tile
-
-            def tree_of(xy: np.ndarray) -> Any:
-                return cKDTree(np.asarray(self._canonical(xy)) - (x0, y0), boxsize=(w, h))
-
-            def rel(xy: np.ndarray) -> np.ndarray:
-                return np.asarray(self._canonical(xy)) - (x0, y0)
-        else:
-            def tree_of(xy: np.ndarray) -> Any:
-                return cKDTree(xy)
-
-            def rel(xy: np.ndarray) -> np.ndarray:
-                return np.asarray(xy, float)
-        new_idx = np.arange(n0, st.n)
-        rmax = float(np.max(state_part(new_idx).radii))
-        cand = new_idx
-        if overlap_free and n0:
-            old_xy = rel(pos[:n0])
-            r_old = state_part(np.arange(n0)).radii
-            hits = tree_of(pos[new_idx]).query_ball_point(old_xy, r=r_old + rmax, return_length=True) > 0
-            if around is not None and len(around):
-                hits |= tree_of(np.asarray(around, float)).query_ball_point(old_xy, r=reach, return_length=True) > 0
-            cand = np.concatenate([np.flatnonzero(hits), new_idx])
-        local = state_part(cand)
-        fixed = self.fixed.replace(columns={}, meta={}, extra={}, region=None)
-        if len(fixed):
-            tree = tree_of(local.xy)
-            near = tree.query_ball_point(rel(fixed.xy), r=fixed.radii + float(np.max(local.radii)), return_length=True) > 0
-            fixed = fixed.select(near)
-        combined = concat([fixed, local]) if len(fixed) else local
-        nf = len(fixed)
-        if tile is not None:
-            from ..metrics import wrap_overlaps
-
-            pairs = wrap_overlaps(combined, tile=tile)["pairs"][:, :2]
-            pairs = pairs[pairs[:, 0] != pairs[:, 1]]
-        else:
-            pairs, _ = overlaps(combined)
-        dropped = overlap_drops(pairs, nf, cand >= n0, later=overlap_free)
-        if dropped.any():
-            mask = np.zeros(st.n, bool)
-            mask[cand[dropped]] = True
-            st.remove(mask)
+        drop_new_overlaps(self.state, n0, self.fixed, around=around, reach=reach, tile=self._repeat_tile())
 
     def _spray(self, pts: np.ndarray, radius: float, emit: Emit) -> None:
         """Spray (Ijiri §3, §5.1): one growth that follows the stroke, only within ``radius``.

@@ -69,6 +69,7 @@ from __future__ import annotations
 
 from ._compare import compare_methods, plot_traces
 from ._stroke import brush_points, read_stroke
+from ._overlap import drop_new_overlaps
 from ._api import SPEC, as_selection, new_state, set_selection, synthesize
 from ._grow import brush, erase, fill, grow, seed_patch
 from ._metric import average_neighborhood_distance, energy, neighborhood_distances
@@ -109,4 +110,5 @@ __all__ = [
     "plot_traces",
     "read_stroke",
     "brush_points",
+    "drop_new_overlaps",
 ]
