@@ -258,10 +258,9 @@ def lower_wave(dist, near, skip, sources, dirty, dlist, dcount, nbr, cap, cap_to
     nf = near.ravel()
     sf = skip.ravel()
     cf = cap.ravel()
-    # blocks are flagged as cells change (not by a pass over every block at the end:
-    # issue 19.6, the cost of a wave is its own cells, not the raster's size)
     head = 0
     tail = 0
+    pushes = 0
     count = 0
     n = 0
     for s in sources:
@@ -269,16 +268,11 @@ def lower_wave(dist, near, skip, sources, dirty, dlist, dcount, nbr, cap, cap_to
             df[s] = 0.0
             nf[s] = s
             sf[s] = False
-            si = s // cols
-            sj = s - si * cols
-            if nbr:
-                _mark_cell(dirty, dlist, dcount, si, sj, rows, cols)
-            else:
-                _mark(dirty, dlist, dcount, si >> BLOCK_SHIFT, sj >> BLOCK_SHIFT)
             count += 1
             if not inq[s]:
                 inq[s] = True
                 ring[tail] = s
+                pushes += 1
                 tail += 1
                 if tail == size:
                     tail = 0
@@ -322,18 +316,42 @@ def lower_wave(dist, near, skip, sources, dirty, dlist, dcount, nbr, cap, cap_to
                     df[c] = d
                     nf[c] = q
                     sf[c] = False
-                    if nbr:
-                        _mark_cell(dirty, dlist, dcount, ni, nj, rows, cols)
-                    else:
-                        _mark(dirty, dlist, dcount, ni >> BLOCK_SHIFT, nj >> BLOCK_SHIFT)
                     count += 1
                     if not inq[c]:
                         inq[c] = True
                         ring[tail] = c
+                        pushes += 1
                         tail += 1
                         if tail == size:
                             tail = 0
                         n += 1
+    # Every changed cell was queued, so ring[:pushes] lists them all (with repeats)
+    # unless the ring wrapped round: flag their blocks now, in one pass (flagging as
+    # cells changed cost a third of the wave; the cost of a wave is its own cells, not
+    # the raster's size: issue 19.6). A wrapped ring (more pushes than cells) flags all.
+    if pushes > size:
+        for bi in range(dirty.shape[0]):
+            for bj in range(dirty.shape[1]):
+                _mark(dirty, dlist, dcount, bi, bj)
+        return count
+    last = -1
+    bcols = dirty.shape[1]
+    edge = BLOCK - 1
+    for k in range(pushes):
+        c = ring[k]
+        ci = c // cols
+        cj = c - ci * cols
+        ri = ci & edge
+        rj = cj & edge
+        if not nbr or (ri != 0 and ri != edge and rj != 0 and rj != edge):
+            # the cell's 3 x 3 neighbourhood lies in its own block
+            bk = (ci >> BLOCK_SHIFT) * bcols + (cj >> BLOCK_SHIFT)
+            if bk != last:
+                _mark(dirty, dlist, dcount, ci >> BLOCK_SHIFT, cj >> BLOCK_SHIFT)
+                last = bk
+        else:
+            _mark_cell(dirty, dlist, dcount, ci, cj, rows, cols)
+            last = -1
     return count
 
 
