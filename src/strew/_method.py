@@ -283,6 +283,9 @@ class MethodSpec:
     region_required: bool = True
     progress_message: str = ""
     extras: dict[str, Any] = field(default_factory=dict)
+    # old parameter names -> current ones, still accepted for one release with a
+    # DeprecationWarning naming the new one (Python keyword and CLI flag alike)
+    renamed: dict[str, str] = field(default_factory=dict)
 
     def param(self, name: str) -> Param:
         """The parameter called ``name``."""
@@ -307,7 +310,13 @@ class MethodSpec:
         name); ``aliases`` maps old keyword names to current ones.
         """
         given = dict(params)
-        for old, new in (aliases or {}).items():
+        for old, new in self.renamed.items():
+            if old in given:
+                import warnings
+
+                warnings.warn(f"{self.name}: parameter {old} is renamed {new}; {old} goes in the next release",
+                              DeprecationWarning, stacklevel=3)
+        for old, new in {**self.renamed, **(aliases or {})}.items():
             if old in given:
                 if new in given:
                     raise InputError(f"{old}: give {new} or its old name {old}, not both")

@@ -177,7 +177,7 @@ def test_cli_bad_input_exit_2(tmp_path, capsys):
     for args, word in (
         (["--size", "20x20", "--seed-point", "30,5"], "outside"),
         (["--size", "20x20", "--seed-point", "3;5"], "--seed-point"),
-        (["--size", "20x20", "--resolution", "2"], "resolution"),
+        (["--size", "20x20", "--cells", "2"], "--cells"),
         ([], "--size"),
     ):
         code, _, err = run_cli(capsys, ["ornament", "dots", *args, "-o", str(out)])

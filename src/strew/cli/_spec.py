@@ -269,6 +269,17 @@ def _param_option(spec: MethodSpec, p: Param) -> Callable[[Callable[..., Any]], 
     return click.option(p.cli_flag, p.name, **kw)
 
 
+def _renamed_option(spec: MethodSpec, old: str, new: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """The hidden option of a renamed parameter's old flag (``MethodSpec.renamed``)."""
+    p = spec.param(new)
+    kw: dict[str, Any] = {"default": None, "hidden": True, "type": _click_type(p)}
+    if p.cli in ("flag", "no-flag"):
+        kw = {"default": None, "hidden": True, "is_flag": True}
+    elif p.cli == "multiple":
+        kw.update(multiple=True, default=())
+    return click.option("--" + old.replace("_", "-"), "renamed_" + old, **kw)
+
+
 def _convert(p: Param, raw: Any) -> Any:
     """The Python value of an option (None: not given, the library's default)."""
     if raw is None or (p.cli == "multiple" and not raw):
@@ -306,6 +317,7 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
     """The click command of a method, generated from its spec."""
     hooks = hooks or Hooks()
     cli_params = [p for p in spec.params if p.cli]
+    renamed = {old: new for old, new in spec.renamed.items() if new in spec.names and spec.param(new).cli}
     on_surfaces = spec.name in ("pack", "synth", "grow")
     # --periodic for methods without a torus of their own (synth): strew.tiles
     # grows the tile as a torus of 2 x 2 tiles, each around its finished neighbours (issue 18)
@@ -313,6 +325,15 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
     from . import surface as _surface
 
     def callback(**options: Any) -> None:
+        for old, new in renamed.items():  # a renamed option: accepted for one release, with a warning
+            raw = options.pop("renamed_" + old)
+            if raw is None or raw == ():
+                continue
+            flag_new = spec.param(new).cli_flag
+            if options.get(new) not in (None, ()):
+                raise InputError(f"--{old.replace('_', '-')}: give {flag_new} or its old name, not both")
+            click.echo(f"strew: warning: --{old.replace('_', '-')} is renamed {flag_new}; the old name goes in the next release", err=True)
+            options[new] = raw
         outs = options.pop("outs")
         quiet = options.pop("quiet")
         seed = options.pop("seed")
@@ -391,6 +412,7 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
             ),
             domain_options(square=hooks.domain == "square"),
             *[_param_option(spec, p) for p in cli_params],
+            *[_renamed_option(spec, old, new) for old, new in renamed.items()],
             *hooks.options,
             *(_surface.surface_options() if on_surfaces else []),
             *([click.option("--periodic", is_flag=True, default=False,

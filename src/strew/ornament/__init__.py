@@ -96,13 +96,14 @@ SPEC = MethodSpec(
     paper="Wong, Zongker, Salesin, Computer-Generated Floral Ornament, SIGGRAPH 1998",
     summary="Grow rule-driven floral ornament into a panel (adaptive clip art).",
     progress_message="ornament",
+    renamed={"resolution": "cells"},
     input=Param("pattern", "any", help="A Pattern, a built-in name or the path of a Python rule file.", section="§3, App. A",
                 parse="text", metavar="PATTERN_OR_RULE_FILE"),
     params=(
         Param("seeds", "points", None, unit="document units", help="Seed points [default: the centre of the largest inscribed circle].",
               flag="--seed-point", cli="multiple", parse="points", metavar="X,Y",
               cli_help="Seed position (repeatable); default: the centre of the largest inscribed circle.", section="§4.2"),
-        Param("resolution", "int", None, low=1, unit="cells",
+        Param("cells", "int", None, low=1, unit="cells",
               help="Raster cells along the panel's longer side [default: cells of half the minimum radius, 256 to 2048].", section="§4.1"),
         Param("min_radius", "float", None, low=0, low_open=True, unit="document units",
               help="Stop when no empty circle is this large [default: the pattern's].", section="§4.1"),
@@ -149,9 +150,11 @@ def grow_ornament(
         Seed points (§4.2); default: the centre of the largest inscribed circle.
     rng : int, Generator or None
         Source of every random choice rules make (``ctx.rng``); recorded in ``meta``.
-    resolution : int, optional
+    cells : int, optional
         Cells of the raster buffer along the longer side of the region (§4.1); default:
-        cells of half the minimum radius, between 256 and 2048.
+        cells of half the minimum radius, between 256 and 2048. (Called ``resolution``
+        before issue 15, where pack's ``resolution`` is a pixel side; the old keyword is
+        accepted for one release with a DeprecationWarning.)
     min_radius : float, optional
         Stop when no eligible empty circle is at least this large (default: the pattern's).
     delta : float, optional
@@ -216,7 +219,7 @@ def grow_ornament(
             free,
             seeds=prm["seeds"],
             rng=gen,
-            resolution=prm["resolution"],
+            resolution=prm["cells"],
             min_radius=prm["min_radius"],
             delta=prm["delta"],
             epsilon=prm["epsilon"],
@@ -234,5 +237,6 @@ def grow_ornament(
             arr = mark(arr, tile)
         # the engine's resolved values (default seeds, resolution, min_radius) replace the Nones
         resolved = arr.meta.get("params", {})
+        resolved = {**resolved, "cells": resolved.get("resolution")}  # the engine's name
         record.update({k: resolved[k] for k in prm if record.get(k) is None and resolved.get(k) is not None})
     return stamp(arr, SPEC, pattern if isinstance(pattern, str) else pat.name, record, seed, region=dom, context=ctx)

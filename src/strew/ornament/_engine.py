@@ -380,7 +380,7 @@ class _Grower:
             # cells of half the minimum radius, between 256 and 2048 along the longer side
             resolution = int(np.clip(np.ceil(size / (0.5 * min_radius)), 256, 2048))
         if not (isinstance(resolution, (int, np.integer)) and 8 <= resolution <= 8192):
-            raise InputError(f"resolution: expected an integer between 8 and 8192 cells, got {resolution!r}")
+            raise InputError(f"cells: expected an integer between 8 and 8192 cells, got {resolution!r}")
         self.resolution = int(resolution)
         h = size / resolution  # (cells along the region's, or the tile's, longer side)
         self.h = h
