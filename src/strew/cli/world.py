@@ -53,9 +53,20 @@ def _size(text: str) -> tuple[float, float]:
     return size
 
 
+# what --seed, --halo and the command's help say per method: program's tiles are
+# independent and draw from fields fixed in the plane (strew.program._world), and a
+# program world is not periodic (refused at run time), so it has no --periodic
+_SEED_HELP = {"program": "Random seed (a partition's sites come from field cells keyed by (seed, the partition, the cell); "
+                         "the world does not depend on the tiles)."}
+_HALO_HELP = {"program": "How far past its tile each tile runs the script [default: T/4]; it must hold every cell that "
+                         "reaches into the tile, else the run is refused."}
+_HOW = {"program": "each tile on its own, its cells the same as in one evaluation of the whole world"}
+_NOT_IN_WORLD = {"program": ("periodic",)}
+
+
 def _make(name: str) -> click.Command:
     s = spec(name)
-    cli_params = [p for p in s.params if p.cli]
+    cli_params = [p for p in s.params if p.cli and p.name not in _NOT_IN_WORLD.get(name, ())]
 
     def callback(**options: Any) -> None:
         outs, quiet, seed = options.pop("outs"), options.pop("quiet"), options.pop("seed")
@@ -147,13 +158,14 @@ def _make(name: str) -> click.Command:
         click.option("--size", required=True, metavar="WxH", help="The world: rectangle [0, W] x [0, H]."),
         click.option("--tile-size", type=float, required=True, metavar="T", help="Side of a tile (document units)."),
         click.option("--halo", type=float, default=None, metavar="H",
-                     help="How far a tile reaches into its neighbours [default: twice the largest element for pack, T/4 otherwise]."),
+                     help=_HALO_HELP.get(name, "How far a tile reaches into its neighbours [default: twice the largest "
+                                                "element for pack, T/4 otherwise].")),
         click.option("--workers", type=int, default=None, metavar="N",
                      help="Local Dask workers [default: all cores; 1 runs in this process]."),
         click.option("--scheduler", default=None, metavar="tcp://HOST:PORT", help="Run on an existing Dask cluster."),
         click.option("--timeout", type=float, default=10.0, show_default=True, help="Seconds to wait for --scheduler."),
         *[_param_option(s, p) for p in cli_params],
-        click.option("--seed", type=int, default=0, show_default=True, help="Random seed (tile k draws from (seed, k))."),
+        click.option("--seed", type=int, default=0, show_default=True, help=_SEED_HELP.get(name, "Random seed (tile k draws from (seed, k)).")),
         click.option("--overview-px", type=click.IntRange(16, 16384), default=2048, show_default=True,
                      help="Longer side of the PNG overview."),
         click.option("--pyramid", type=click.Path(file_okay=False), default=None, metavar="DIR",
@@ -165,7 +177,8 @@ def _make(name: str) -> click.Command:
         quiet_option,
     ]):
         f = deco(f)
-    return click.command(name, help=f"Fill a world with {name}, tile by tile (phases of 2x2 tiles, Wei 2008), "
+    how = _HOW.get(name, "phases of 2x2 tiles, Wei 2008")
+    return click.command(name, help=f"Fill a world with {name}, tile by tile ({how}), "
                          f"in this process or on Dask ({s.summary})")(f)
 
 
