@@ -1,9 +1,9 @@
 """Reading the strokes of the interaction tools (Ijiri et al. 2008, §3, Fig. 1).
 
-Flow-field strokes, boundary strokes and spray paths are polylines in world space. They
-come from an SVG (every drawn path, transforms applied) or a JSON file: either
-``{"paths": [{"points": [[x, y], ...]}, ...]}`` or a strew document whose elements'
-world geometry gives the strokes.
+Flow-field strokes, boundary strokes and spray paths are polylines in world space, read
+by the one stroke reader, :func:`strew.io.strokes.read_strokes` (shared with synth's
+brush): an SVG (every drawn path, transforms applied), JSON points or paths, or a strew
+document whose elements' world geometry (holes' rings included) gives the strokes.
 """
 
 from __future__ import annotations
