@@ -99,10 +99,10 @@ def read_strokes(path: str | os.PathLike[str], what: str = "strokes") -> list[np
 
     Examples
     --------
-    >>> import json, tempfile, os
-    >>> d = tempfile.mkdtemp()
-    >>> f = os.path.join(d, "s.json")
-    >>> _ = open(f, "w").write(json.dumps({"paths": [{"points": [[0, 0], [5, 0]]}]}))
+    >>> import json, tempfile
+    >>> from pathlib import Path
+    >>> f = Path(tempfile.mkdtemp()) / "s.json"
+    >>> _ = f.write_text(json.dumps({"paths": [{"points": [[0, 0], [5, 0]]}]}))
     >>> read_strokes(f)[0].shape
     (2, 2)
     """
