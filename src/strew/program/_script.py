@@ -12,7 +12,6 @@ from __future__ import annotations
 import hashlib
 import math
 import os
-import re
 import runpy
 import sys
 from collections.abc import Iterator
@@ -39,8 +38,6 @@ __all__ = ["import_svg", "export_svg", "to_strew", "run", "run_script", "run_siz
 
 _IN_RUN: ContextVar[bool] = ContextVar("strew_program_in_run", default=False)
 _RUN_SIZE: ContextVar[float | None] = ContextVar("strew_program_run_size", default=None)
-_AUTO_ID = re.compile(r"^(path|rect|circle|ellipse|polyline|polygon|line|g|layer|svg|use|text|tspan|shape)[-_]?\d+$")
-_INKSCAPE_LABEL = "{http://www.inkscape.org/namespaces/inkscape}label"
 _SVG_CACHE: dict[tuple[str, int, int], Curves] = {}
 
 
@@ -49,29 +46,6 @@ class ScriptError(InputError):
 
 
 # -- import ---------------------------------------------------------------------------------
-def _element_label(el: Any) -> str | None:
-    values = getattr(el, "values", {}) or {}
-    lab = values.get(_INKSCAPE_LABEL) or values.get("inkscape:label")
-    if lab:
-        return str(lab)
-    ident = getattr(el, "id", None)
-    if ident and not _AUTO_ID.match(str(ident)):
-        return str(ident)
-    return None
-
-
-def _flatten(seg: Any, tol: float) -> np.ndarray:
-    import svgelements as se
-
-    if isinstance(seg, (se.Line, se.Close)):
-        return np.array([[seg.end.x, seg.end.y]], dtype=float)
-    length = float(seg.length(error=1e-4))
-    n = max(2, int(math.ceil(length / tol)))
-    ts = np.linspace(0.0, 1.0, n + 1)[1:]
-    pts = seg.npoint(ts)
-    return np.asarray(pts, dtype=float).reshape(-1, 2)
-
-
 def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = None) -> Curves:
     """ImportSVG(String filename): loads curves from an SVG file.
 
@@ -80,7 +54,8 @@ def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = No
     element's Inkscape label, or else its id when the id is not an editor's automatic
     one (``path123``), labels its curves (see :func:`curve_labeled`). A labelled
     ``<circle>`` or ``<ellipse>`` is a labelled *point* at its centre, such as ``"start"``
-    and ``"end"`` (see :func:`point_labeled`), not a curve.
+    and ``"end"`` (see :func:`point_labeled`), not a curve. The file is read by
+    :func:`strew.io.svg.read_svg_curves`.
 
     Parameters
     ----------
@@ -88,7 +63,7 @@ def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = No
     tolerance : float, optional
         Flattening step for curved segments (default: 1/40 of the drawing's diagonal).
     """
-    import svgelements as se
+    from ..io.svg import read_svg_curves
 
     path = Path(filename)
     try:
@@ -98,57 +73,8 @@ def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = No
     key = (str(path.resolve()), st.st_mtime_ns, hash(tolerance))
     if key in _SVG_CACHE:
         return _SVG_CACHE[key]
-    try:
-        svg = se.SVG.parse(str(path), reify=True)
-    except Exception as exc:  # svgelements raises various errors on bad files
-        raise InputError(f"import_svg: {path.name}: not a readable SVG ({type(exc).__name__}: {exc})") from None
-    shapes = []
-    points: dict[str, tuple[float, float]] = {}
-    for el in svg.elements():
-        if not isinstance(el, se.Shape) or isinstance(el, se.SVG):
-            continue
-        label = _element_label(el)
-        if label is not None and isinstance(el, (se.Circle, se.Ellipse)):
-            points[label] = (float(el.cx), float(el.cy))
-            continue
-        shapes.append((el, label))
-    bbs = [se.Path(el).bbox() for el, _ in shapes]
-    bbs = [b for b in bbs if b is not None]
-    if tolerance is None:
-        if bbs:
-            arr = np.array(bbs, dtype=float)
-            diag = math.hypot(arr[:, 2].max() - arr[:, 0].min(), arr[:, 3].max() - arr[:, 1].min())
-        else:
-            diag = 1.0
-        tol = max(diag, 1e-9) / 40.0
-    else:
-        tol = float(tolerance)
-        if not (tol > 0):
-            raise InputError(f"import_svg: tolerance must be positive, got {tolerance!r}")
-    curves = []
-    for el, label in shapes:
-        p = se.Path(el)
-        for sub in p.as_subpaths():
-            sub = se.Path(sub)
-            pts: list[np.ndarray] = []
-            closed = False
-            for seg in sub:
-                if isinstance(seg, se.Move):
-                    pts = [np.array([[seg.end.x, seg.end.y]], dtype=float)]
-                    continue
-                if isinstance(seg, se.Close):
-                    closed = True
-                    continue
-                pts.append(_flatten(seg, tol))
-            if not pts:
-                continue
-            xy = np.concatenate(pts)
-            if len(xy) > 1 and np.allclose(xy[0], xy[-1]):
-                closed = True
-                xy = xy[:-1]
-            if len(xy) < 2:
-                continue
-            curves.append(Curve(xy, closed, frozenset([label]) if label else frozenset()))
+    read, points = read_svg_curves(path, tolerance=tolerance, what="import_svg")
+    curves = [Curve(xy, closed, frozenset([label]) if label else frozenset()) for xy, closed, label in read]
     if not curves and not points:
         raise InputError(f"import_svg: {path.name}: no curves or labelled points found")
     out = Curves(tuple(curves), points)
