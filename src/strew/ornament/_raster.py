@@ -299,8 +299,8 @@ def lower_wave(dist, near, skip, sources, dirty, dlist, dcount, nbr, cap, cap_to
             row = ni * cols
             for dj in range(-1, 2):
                 nj = pj + dj
-                if nj < 0 or nj >= cols:
-                    continue
+                if nj < 0 or nj >= cols or (di == 0 and dj == 0):
+                    continue  # (the cell itself: its own distance to q, no drop)
                 c = row + nj
                 dc = df[c]
                 b = nj - qj
