@@ -246,6 +246,10 @@ def _keep_faces(curves: Curves, geom: shapely.Geometry, keep_inside: bool) -> Cu
     if keep_inside:
         area = geom.buffer(10 * pm.grid)
         sel = shapely.covered_by(polys, area)
+        if field() is not None:  # a world's tile: a dropped cell may be the world's (issue 19.1)
+            from ._world import check_dropped_faces
+
+            check_dropped_faces(polys[~sel], "a cell dropped by KEEP_INSIDE")
     else:
         sel = shapely.relate_pattern(polys, geom, "T********")
     selected = np.r_[False, sel]
@@ -927,6 +931,13 @@ def _mapping(mapper: Any, a: Any, kind: str) -> ArrangementFunction:
             cells = [Edge(pm, i) for i in range(pm.n_edges)]
         else:
             cells = [Face(pm, i) for i in range(1, pm.n_faces)]
+        if field() is not None:  # a world's tile: a mapper's cell must be whole there (issue 19.1)
+            from ._world import check_cut_edges, check_open_faces
+
+            if kind == "faces":
+                check_open_faces(pm.curves, geom, f"a face given to {name}")
+            elif kind == "edges":
+                check_cut_edges(pm, geom, f"an edge given to {name}")
         # §6: the mapper is applied homogeneously to every cell; each call gets its own
         # context, so the order of the calls does not matter
         return concat_curves([_run_mapper(mapper, c, ctx) for c in cells])

@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import math
 import threading
+from contextvars import ContextVar
 from typing import Any
 
 import numpy as np
@@ -47,7 +48,7 @@ import numpy as np
 from .._errors import InputError
 from ._curves import Curve
 
-__all__ = ["field_sites", "run_tile", "evaluate_world", "FIELD_CELL"]
+__all__ = ["field_sites", "run_tile", "evaluate_world", "FIELD_CELL", "HaloError"]
 
 #: Side of a field cell in mean site spacings (1 / sqrt(density)): about 64 sites a cell.
 FIELD_CELL = 8.0
@@ -139,6 +140,134 @@ def _owned_runs(xy: np.ndarray, rect: tuple[float, float, float, float], size: t
     for a, b in zip(k[::2].tolist(), k[1::2].tolist()):
         runs.append(xy[a : b + 1])
     return runs
+
+
+class HaloError(InputError):
+    """A tile's halo does not hold a cell that reaches into the tile (issue 19.1)."""
+
+
+class _Tile:
+    """The tile a script runs for: its rectangle, the grown rectangle it runs on, the
+    sides of that rectangle that lie inside the world (the world's own edges close cells
+    in the untiled evaluation too), and the halo."""
+
+    def __init__(self, rect: tuple[float, float, float, float], grown: tuple[float, float, float, float],
+                 size: tuple[float, float], halo: float) -> None:
+        import shapely
+
+        self.rect, self.grown, self.halo = rect, grown, halo
+        self.tol = 1e-9 * max(size)
+        gx0, gy0, gx1, gy1 = grown
+        sides = []
+        if gx0 > self.tol:
+            sides.append([(gx0, gy0), (gx0, gy1)])
+        if gx1 < size[0] - self.tol:
+            sides.append([(gx1, gy0), (gx1, gy1)])
+        if gy0 > self.tol:
+            sides.append([(gx0, gy0), (gx1, gy0)])
+        if gy1 < size[1] - self.tol:
+            sides.append([(gx0, gy1), (gx1, gy1)])
+        self.sides = shapely.MultiLineString(sides) if sides else None
+        self.box = shapely.box(*rect)
+        if self.sides is not None:
+            shapely.prepare(self.sides)
+
+    def refuse(self, geom: Any, what: str) -> None:
+        x0, y0, x1, y1 = geom.bounds
+        seen = max(x1 - x0, y1 - y0)
+        need = max(seen, 2.0 * self.halo)
+        r, g = self.rect, self.grown
+        raise HaloError(
+            f"halo: {self.halo:g} is too small: {what} reaching into the tile [{r[0]:g}, {r[2]:g}] x [{r[1]:g}, {r[3]:g}] "
+            f"runs past the tile's rectangle grown by the halo, [{g[0]:g}, {g[2]:g}] x [{g[1]:g}, {g[3]:g}] (it is at "
+            f"least {seen:.4g} across), so the tiled world would differ from one evaluation on the whole world; raise "
+            f"halo to at least {need:.4g} (tile_size at least {2 * need:.4g}) or use a larger tile_size")
+
+
+_TILE: ContextVar[_Tile | None] = ContextVar("strew_program_world_tile", default=None)
+
+
+def check_cut_faces(polys: Any, what: str) -> None:
+    """Refuse (:class:`InputError` naming ``halo``) when one of the faces ``polys`` about to
+    be used whole (a mapper's cell) is closed in part by the grown rectangle's inner sides
+    and reaches into the tile: the untiled cell extends beyond what the tile saw."""
+    t = _TILE.get()
+    if t is None or t.sides is None or not len(polys):
+        return
+    import shapely
+
+    polys = np.asarray(polys, dtype=object)
+    hit = np.flatnonzero(shapely.intersects(polys, t.sides))
+    if not len(hit):
+        return
+    cut = shapely.length(shapely.intersection(shapely.boundary(polys[hit]), t.sides)) > t.tol
+    for k in hit[cut].tolist():
+        if shapely.area(shapely.intersection(polys[k], t.box)) > 0:
+            t.refuse(polys[k], what)
+
+
+def check_open_faces(curves: Any, geom: Any, what: str) -> None:
+    """Refuse when a cell of ``curves`` reaching into the tile is cut open by an inner side
+    of the grown rectangle, or closed in part by it: the whole world may close it (and
+    give it to the mapper) beyond what the tile saw. The inner sides are added as open
+    lines, so a region open through the world's own outline stays open as in the untiled
+    evaluation (the world's outline closes nothing before the script's end)."""
+    t = _TILE.get()
+    if t is None or t.sides is None:
+        return
+    import shapely
+
+    if not shapely.intersects(geom, t.sides):
+        return
+    from ._curves import Curves
+    from ._planar_map import PlanarMap
+
+    whole = PlanarMap(curves)._t.face_polygons[1:]
+    check_cut_faces(whole, what)  # closed in part by the region's outline (CROP_ADD_BOUNDARY)
+    sides = tuple(Curve(np.asarray(ln.coords), False, frozenset([SEAM])) for ln in t.sides.geoms)
+    polys = np.asarray(PlanarMap(Curves(curves.curves + sides, curves.points, curves.marks))._t.face_polygons[1:], dtype=object)
+    if not len(polys):
+        return
+    if len(whole):
+        # the sides cut whole cells (KEEP_OUTSIDE's, beyond the region) into pieces: only
+        # the regions that no cell of ``curves`` holds are the open ones
+        inside = shapely.STRtree(np.asarray(whole, dtype=object)).query(shapely.point_on_surface(polys), predicate="within")[0]
+        polys = np.delete(polys, np.unique(inside))
+    check_cut_faces(polys, what)
+
+
+def check_dropped_faces(polys: Any, what: str) -> None:
+    """Refuse when one of the faces ``polys`` that a border rule drops for crossing the
+    domain's outline crosses an inner side of the grown rectangle and reaches into the
+    tile (inside the world it may be kept: Fig. 6's KEEP_INSIDE grid cells)."""
+    t = _TILE.get()
+    if t is None or t.sides is None or not len(polys):
+        return
+    import shapely
+
+    polys = np.asarray(polys, dtype=object)
+    for k in np.flatnonzero(shapely.intersects(polys, t.sides)).tolist():
+        if shapely.area(shapely.intersection(polys[k], t.box)) > 0:
+            t.refuse(polys[k], what)
+
+
+def check_cut_edges(pm: Any, geom: Any, what: str) -> None:
+    """Refuse when one of the edges of the planar map ``pm`` about to be used whole (a
+    mapper's cell) ends on an inner side of the grown rectangle (cut there) and runs
+    into the tile."""
+    t = _TILE.get()
+    if t is None or t.sides is None or not pm.n_edges:
+        return
+    import shapely
+
+    if not shapely.intersects(geom, t.sides):
+        return
+    lines = np.array([shapely.LineString(pm._t.edge_points[e]) for e in range(pm.n_edges)], dtype=object)
+    ends = shapely.boundary(lines)
+    hit = np.flatnonzero(shapely.dwithin(ends, t.sides, t.tol) & ~shapely.is_empty(ends))
+    for k in hit.tolist():
+        if shapely.length(shapely.intersection(lines[k], t.box)) > 0:
+            t.refuse(lines[k], what)
 
 
 def clip_cells(pm: Any, rect: tuple[float, float, float, float], size: tuple[float, float], stroke_width: float) -> Any:
@@ -254,7 +383,19 @@ def evaluate_tile(script: Any, name: str, size: tuple[float, float], rect: tuple
     # one script at a time per process: running a script swaps sys.argv, sys.path and
     # sys.modules["__main__"] (runpy), which threads of one Dask worker would share
     with _RUN_LOCK, field_evaluation(Field(region.geometry)):
-        pm, _ = _run_on(path, name, region, int(seed), float(max(w, h)), convert=False, seam=seam)
+        token = _TILE.set(_Tile(rect, grown, (w, h), halo))
+        try:
+            pm, _ = _run_on(path, name, region, int(seed), float(max(w, h)), convert=False, seam=seam)
+        except InputError as exc:
+            # the script's and mappers' wrappers prefix where it happened: say halo first
+            cause: BaseException | None = exc
+            while cause is not None and not isinstance(cause, HaloError):
+                cause = cause.__cause__ or cause.__context__
+            if cause is None:
+                raise
+            raise HaloError(f"{cause} ({path.name})") from None
+        finally:
+            _TILE.reset(token)
     return clip_cells(pm, rect, size, max(w, h) / 1000.0)
 
 
