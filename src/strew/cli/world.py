@@ -127,6 +127,8 @@ def _make(name: str) -> click.Command:
                                ("scheduler", "--scheduler"), ("size", "--size"), ("seed", "--seed")):
                 if msg.startswith(word + ":"):
                     msg = flag + msg[len(word):]
+            if msg.startswith("--halo:"):  # program's halo refusal names both options in its advice
+                msg = msg.replace("raise halo ", "raise --halo ").replace("tile_size", "--tile-size")
             raise InputError(msg) from exc
         from ..region import Region
         from ._common import command_line
