@@ -325,6 +325,7 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
     from . import surface as _surface
 
     def callback(**options: Any) -> None:
+        renamed_notes = []  # printed with the library's warnings after the run: an error stays one line
         for old, new in renamed.items():  # a renamed option: accepted for one release, with a warning
             raw = options.pop("renamed_" + old)
             if raw is None or raw == ():
@@ -332,7 +333,7 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
             flag_new = spec.param(new).cli_flag
             if options.get(new) not in (None, ()):
                 raise InputError(f"--{old.replace('_', '-')}: give {flag_new} or its old name, not both")
-            click.echo(f"strew: warning: --{old.replace('_', '-')} is renamed {flag_new}; the old name goes in the next release", err=True)
+            renamed_notes.append(f"--{old.replace('_', '-')} is renamed {flag_new}; the old name goes in the next release")
             options[new] = raw
         outs = options.pop("outs")
         quiet = options.pop("quiet")
@@ -389,8 +390,8 @@ def method_command(spec: MethodSpec, hooks: Hooks | None = None) -> click.Comman
                 raise
             raise InputError(msg) from exc
         run.seconds = time.perf_counter() - t0
-        for w in caught:
-            click.echo(f"strew: warning: {w.message}", err=True)
+        for note in [*renamed_notes, *(str(w.message) for w in caught)]:
+            click.echo(f"strew: warning: {note}", err=True)
         if hooks.finish is not None:
             hooks.finish(run, arr)
         from ._common import write_outputs
