@@ -935,7 +935,7 @@ def _mapping(mapper: Any, a: Any, kind: str) -> ArrangementFunction:
             from ._world import check_cut_edges, check_open_faces
 
             if kind == "faces":
-                check_open_faces(pm.curves, geom, f"a face given to {name}")
+                check_open_faces(pm, geom, f"a face given to {name}")
             elif kind == "edges":
                 check_cut_edges(pm, geom, f"an edge given to {name}")
         # §6: the mapper is applied homogeneously to every cell; each call gets its own

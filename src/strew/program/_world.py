@@ -206,8 +206,8 @@ def check_cut_faces(polys: Any, what: str) -> None:
             t.refuse(polys[k], what)
 
 
-def check_open_faces(curves: Any, geom: Any, what: str) -> None:
-    """Refuse when a cell of ``curves`` reaching into the tile is cut open by an inner side
+def check_open_faces(pm: Any, geom: Any, what: str) -> None:
+    """Refuse when a cell of the planar map ``pm`` reaching into the tile is cut open by an inner side
     of the grown rectangle, or closed in part by it: the whole world may close it (and
     give it to the mapper) beyond what the tile saw. The inner sides are added as open
     lines, so a region open through the world's own outline stays open as in the untiled
@@ -222,7 +222,8 @@ def check_open_faces(curves: Any, geom: Any, what: str) -> None:
     from ._curves import Curves
     from ._planar_map import PlanarMap
 
-    whole = PlanarMap(curves)._t.face_polygons[1:]
+    curves = pm.curves
+    whole = pm._t.face_polygons[1:]
     check_cut_faces(whole, what)  # closed in part by the region's outline (CROP_ADD_BOUNDARY)
     sides = tuple(Curve(np.asarray(ln.coords), False, frozenset([SEAM])) for ln in t.sides.geoms)
     polys = np.asarray(PlanarMap(Curves(curves.curves + sides, curves.points, curves.marks))._t.face_polygons[1:], dtype=object)
