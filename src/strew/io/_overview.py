@@ -2,7 +2,8 @@
 
 Every element is drawn as its outline polygon filled with its kind's colour (the
 shape's ``fill`` style when it names a ``#rrggbb`` colour, else a fixed palette in the
-order of the world's shape library), on a canvas at most ``max_side`` pixels on its
+order of the world's shape library; an element with its own geometry, ``parts``, in
+its parts' own fill and stroke where they name them), on a canvas at most ``max_side`` pixels on its
 longer side. Elements smaller than a pixel become single pixels. Memory is the canvas
 plus one tile.
 
@@ -30,6 +31,26 @@ _PALETTE = ["#3b6ea5", "#c8553d", "#6a994e", "#f2a541", "#7b4b94", "#2a9d8f", "#
 
 def _rgb(text: str) -> tuple[int, int, int]:
     return (int(text[1:3], 16), int(text[3:5], 16), int(text[5:7], 16))
+
+
+def _paint(style: Any, key: str, default: tuple[int, int, int]) -> tuple[int, int, int] | None:
+    """The colour of a part's ``fill`` or ``stroke``: None for ``none``, the kind's colour
+    ``default`` when the style names no ``#rrggbb`` colour. ``fill_opacity`` /
+    ``stroke_opacity`` and ``opacity`` blend it with the white canvas once, opaque: the
+    pieces of one face in neighbouring tiles share their border pixels, which a
+    translucent fill would darken into a visible tile grid."""
+    val = str(style.get(key, "")).strip().lower()
+    if val == "none":
+        return None
+    rgb = _rgb(val) if len(val) == 7 and val.startswith("#") else default
+    a = 1.0
+    for k in (f"{key}_opacity", "opacity"):
+        try:
+            a *= float(style.get(k, 1.0))
+        except (TypeError, ValueError):
+            pass
+    a = max(0.0, min(1.0, a))
+    return tuple(round(a * v + (1.0 - a) * 255) for v in rgb)  # type: ignore[return-value]
 
 
 class Overview:
@@ -102,8 +123,13 @@ class Overview:
                 self.draw.polygon(list(zip(a.tolist(), b.tolist())), fill=colour)
 
     def _add_parts(self, arr: Any) -> None:
-        """Draw the elements that carry their own geometry (``parts``: ornament), every
-        path of every part, filled when closed, stroked when open."""
+        """Draw the elements that carry their own geometry (``parts``: ornament, program
+        worlds), every path of every part, filled when closed, stroked when open.
+
+        A part's own style wins where it names them, as in ``strew render``: ``fill``
+        (``none``: not filled; ``fill_opacity`` blends it) and, for open paths,
+        ``stroke`` and ``stroke_width``; the kind's colour otherwise (:func:`_paint`). Closed paths
+        are filled even-odd (a program face's holes stay open)."""
         px, x0, top = self.px, self.x0, self.top
         for i, parts in enumerate(arr.element_parts):
             if parts is None:
@@ -111,18 +137,45 @@ class Overview:
             colour = self._colour(arr.kinds[arr.kind[i]], arr.shapes[arr.kinds[arr.kind[i]]])
             c, s = np.cos(arr.rotation[i]) * arr.scale[i], np.sin(arr.rotation[i]) * arr.scale[i]
             for part in parts:
+                style = getattr(part, "style", None) or {}
+                fill = _paint(style, "fill", colour)
+                stroke = _paint(style, "stroke", colour)
                 if part.radius * arr.scale[i] * px < 1.5:
-                    self.draw.point((float((arr.x[i] - x0) * px), float((top - arr.y[i]) * px)), fill=colour)
+                    dot = fill if any(p.closed for p in part.paths) else stroke
+                    if dot is not None:
+                        self.draw.point((float((arr.x[i] - x0) * px), float((top - arr.y[i]) * px)), fill=dot)
                     continue
+                width = max(1, round(float(style.get("stroke_width", 0.0) or 0.0) * arr.scale[i] * px))
+                rings = []
                 for path in part.paths:
                     q = path.points
                     xs = (arr.x[i] + c * q[:, 0] - s * q[:, 1] - x0) * px
                     ys = (top - (arr.y[i] + s * q[:, 0] + c * q[:, 1])) * px
                     pts = list(zip(xs.tolist(), ys.tolist()))
                     if path.closed and len(pts) >= 3:
-                        self.draw.polygon(pts, fill=colour)
-                    elif len(pts) >= 2:
-                        self.draw.line(pts, fill=colour, width=1)
+                        rings.append(pts)
+                    elif len(pts) >= 2 and stroke is not None:
+                        self.draw.line(pts, fill=stroke, width=width)
+                if rings and fill is not None:
+                    self._fill_evenodd(rings, fill)
+
+    def _fill_evenodd(self, rings: list[list[tuple[float, float]]], fill: tuple[int, int, int]) -> None:
+        if len(rings) == 1:
+            self.draw.polygon(rings[0], fill=fill)
+            return
+        from PIL import Image, ImageChops, ImageDraw
+
+        xy = np.concatenate([np.asarray(r) for r in rings])
+        bx0, by0 = (max(0, int(v) - 1) for v in xy.min(axis=0))
+        bx1, by1 = (min(n, int(v) + 2) for v, n in zip(xy.max(axis=0), self.shape))
+        if bx1 <= bx0 or by1 <= by0:
+            return
+        mask = Image.new("1", (bx1 - bx0, by1 - by0), 0)
+        for r in rings:
+            one = Image.new("1", mask.size, 0)
+            ImageDraw.Draw(one).polygon([(x - bx0, y - by0) for x, y in r], fill=1)
+            mask = ImageChops.logical_xor(mask, one)
+        self.image.paste(Image.new("RGB", mask.size, fill), (bx0, by0), mask)
 
     def png(self) -> bytes:
         """The canvas as PNG bytes."""
