@@ -25,7 +25,15 @@ tile computes the cells it shares with its neighbours to the same bits:
 
 So the world depends on the seed and the script only, not on ``tile_size`` nor on the
 number of workers, as long as ``halo`` holds every cell (and every neighbourhood a mapper
-queries, §6.1's bounded neighbourhood) that reaches into a tile. The tiles need nothing
+queries, §6.1's bounded neighbourhood) that reaches into a tile. Where it does not, the
+tile says so (:class:`HaloError`, naming ``halo`` and the cell's size) instead of drawing
+a different world: a cell that ``KEEP_INSIDE`` drops for crossing a side of the grown
+rectangle inside the world, a face given to ``map_to_faces`` that such a side closes
+or cuts open, or an edge given to ``map_to_edges`` that ends on one, if it reaches into
+the tile (:func:`check_dropped_faces`, :func:`check_open_faces`, :func:`check_cut_edges`;
+the world's own outline closes cells in one evaluation too and does not count). The
+check is conservative: a mapper whose curves happen to stay outside the tile would
+still give the same world. The tiles need nothing
 from each other: the field's phases are computed where they are needed (each process
 keeps the cells it drew), so all tiles can run at once.
 
