@@ -448,8 +448,11 @@ def _connect(scheduler: str | None, workers: int, processes: bool, timeout: floa
             raise InputError(f"scheduler: no Dask scheduler answers at {scheduler} within {timeout:g} s ({type(exc).__name__})") from None
     # ":0": any free port for the dashboard (its link is printed); the default :8787
     # fails the start when another cluster or program holds it
+    # silence_logs=CRITICAL: a task that raises (a refused halo, a script error) is
+    # re-raised here as one message; at ERROR every worker also logged "Compute Failed"
+    # with the traceback, one per tile (issue 17: no traceback)
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes,
-                           dashboard_address=":0", silence_logs=40)
+                           dashboard_address=":0", silence_logs=50)
     return Client(cluster, set_as_default=False), cluster
 
 
