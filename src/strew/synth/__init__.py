@@ -54,6 +54,9 @@ copied as (one phase per ring), and anchors whose children the frame cut off are
 copied beside a candidate (``_grow.anchors``, ``_prepare.parents``); at the end of a
 growth each new anchor's children are put back on its exemplar ring's slots and its
 empty slots filled where nothing is in the way (``_grow._complete_anchor_rings``).
+A growth ends by putting into each empty circle of the output wider than the
+exemplar's largest the exemplar element that fits there and whose neighbourhood matches
+best (Eq. 1 over the whole selection; ``_grow.fill_holes``).
 ``context`` elements are frozen, already-synthesized neighbours (``_context``). The bounding radius of §4.1 is the collision bound wherever the
 exemplar gives it; default radii shrink per kind to the exemplar's spacing, and where
 they shrink below 0.9 of the bounding radius (elongated shapes) the shapes themselves

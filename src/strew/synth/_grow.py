@@ -224,6 +224,14 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     added = 0
     for _ in range(HOLE_PASSES):
         vis = np.flatnonzero(~prep.void[state.src])
+        new = vis[vis >= since]
+        if len(new) == 0:
+            break
+        if len(new) < len(vis):
+            # only the output about the new elements: a circle through one of them that
+            # also holds an element further than 4 limits away is wider than 2 limits,
+            # and what fits at its centre is tested against every element below
+            vis = vis[K.near_any(np.ascontiguousarray(state.pos[vis]), np.ascontiguousarray(state.pos[new]), 4.0 * limit)]
         cen, rad, tri = circumcircles(state.pos[vis])
         # wide circles through an element added since ``since``, centred in the domain
         keep = (rad > limit) & (vis[tri] >= since).any(axis=1)
