@@ -217,6 +217,9 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     par_d = np.where(par >= 0, np.hypot(*(prep.pos[cand] - prep.pos[np.maximum(par, 0)]).T) + prep.r[cand], np.inf)
     if len(cand) == 0:
         return 0
+    # the least distance any candidate keeps from an element copied from each exemplar
+    # element: a circle through an element closer than that to its centre takes nothing
+    need = np.maximum(prep.rc[:, None] + prep.rc[cand][None, :], prep.min_dist[prep.skind[:, None], prep.skind[cand][None, :]]).min(axis=1)
     rbar = float(prep.rbar[cand].max())
     reach = max(2.0 * float(prep.rc.max()), float(prep.min_dist.max()))  # collision reach
     boundary = state.region.geometry.boundary if state.region is not None else None
@@ -234,7 +237,7 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             vis = vis[K.near_any(np.ascontiguousarray(state.pos[vis]), np.ascontiguousarray(state.pos[new]), 4.0 * limit)]
         cen, rad, tri = circumcircles(state.pos[vis])
         # wide circles through an element added since ``since``, centred in the domain
-        keep = (rad > limit) & (vis[tri] >= since).any(axis=1)
+        keep = (rad > limit) & (vis[tri] >= since).any(axis=1) & (rad >= need[state.src[vis[tri]]].max(axis=1))
         keep[keep] = state.in_domain(cen[keep])
         cen, rad = cen[keep], rad[keep]
         if len(cen) == 0:
