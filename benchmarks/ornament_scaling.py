@@ -90,7 +90,8 @@ def main() -> None:
 
     args = parse_args(__doc__.splitlines()[0], extra)
     warm()
-    bench = Bench("ornament_scaling", "growth in squares of growing side: CPU time vs n", baseline=f"code under {args.baseline}" if args.baseline else "exponent target 1.15", json_path=args.json)
+    base = f"code under {args.baseline}" if args.baseline else "exponent target 1.15"
+    bench = Bench("ornament_scaling", "growth in squares of growing side: CPU time vs n", baseline=base, json_path=args.json)
     names = [c.strip() for c in args.cases.split(",")] if args.cases else list(CASES)
     for case in names:
         full, quick = CASES[case][1], CASES[case][2]

@@ -655,7 +655,10 @@ class _Grower:
             # the blocks whose best circle contains the point: within the largest best
             # radius of it (the tree's root), not a pass over every block (issue 19.6)
             rmax = float(self.best_val.flat[self.tree[1]]) * self.h
-            mark_excluded(self.dirty, self.dlist, self.dcount, self.best_val, self.best_idx, self.cols, self.x0, self.y0, self.h, float(p[0]), float(p[1]), rmax)
+            mark_excluded(
+                self.dirty, self.dlist, self.dcount, self.best_val, self.best_idx, self.cols, self.x0, self.y0, self.h,
+                float(p[0]), float(p[1]), rmax,
+            )  # fmt: skip
 
     def clear_exclude_near(self, p: np.ndarray, eps: float) -> None:
         if self.n_ex == 0:
