@@ -85,7 +85,7 @@ def test_lattice_that_cannot_be_moved_to_fit_meets_at_the_seam_without_overlaps_
     # scales.svg's scales touch: squeezing its rows 1.3% into 300 would overlap them, and
     # spreading them to fill from 266 would move them by 13%
     ex = load(str(example_path("exemplars", "scales.svg")))
-    with pytest.warns(ResultWarning, match=r"lattice with periods 22 x 38.*gap or dislocations; --size 308x304"):
+    with pytest.warns(ResultWarning, match=r"lattice with periods 22 x 38.*gap or dislocations; a tile of 308 x 304"):
         arr = grow(ex, Region.rectangle(300, 300), periodic=True, rng=1)
     assert metrics.wrap_overlaps(arr)["across"] == 0
     assert len(metrics.outside(arr)) == 0

@@ -220,7 +220,7 @@ def grow(
         if prm["avoid_overlaps"] is None:  # resolved here, and recorded so in meta
             prm["avoid_overlaps"] = not (isinstance(src, Arrangement) and _overlapping_exemplar(src))
         if prm["periodic"] and ctx is not None:
-            raise InputError("periodic: a repeat tile cannot grow around context elements (--around)")
+            raise InputError("periodic: a repeat tile cannot grow around context elements (context)")
         arr = _grow(exemplar, free, gen, progress, should_cancel, **prm)
         if free is not region:
             arr = arr.replace(region=region)
@@ -368,7 +368,7 @@ def _grow_snapped(ref: Reference, params: GrowParams, snap: tuple[float, float, 
     warnings.warn(
         f"grow: the exemplar is a lattice with periods {per[0]:.4g} x {per[1]:.4g}, which do not divide a {w:g} x {h:g} "
         f"tile: grew it in {nw:.6g} x {nh:.6g} and moved its centres by a factor {fx:.4g} x {fy:.4g} to fill the tile; "
-        f"--size {lo[0]:.6g}x{lo[1]:.6g} or {up[0]:.6g}x{up[1]:.6g} would repeat it unstretched",
+        f"a tile of {lo[0]:.6g} x {lo[1]:.6g} or {up[0]:.6g} x {up[1]:.6g} would repeat it unstretched",
         ResultWarning,
         stacklevel=4,
     )
@@ -392,7 +392,7 @@ def _warn_lattice_misfit(ref: Reference, tile: Sequence[float]) -> None:
     near = [max(1, round(v / p)) * p for v, p in zip((w, h), per)]
     warnings.warn(
         f"grow: the exemplar is a lattice with periods {per[0]:.4g} x {per[1]:.4g}; a {w:g} x {h:g} tile is not a "
-        f"multiple of them, so its rows meet at the tile's edges with a gap or dislocations; --size {near[0]:.6g}x{near[1]:.6g} "
+        f"multiple of them, so its rows meet at the tile's edges with a gap or dislocations; a tile of {near[0]:.6g} x {near[1]:.6g} "
         "would repeat it exactly",
         ResultWarning,
         stacklevel=4,
@@ -482,7 +482,7 @@ def _grow(
         from .._periodic import frame_of_region
 
         if region is None:
-            raise InputError("periodic: a repeat tile needs a rectangular region (--size WxH)")
+            raise InputError("periodic: a repeat tile needs a rectangular region (Region.rectangle, --size WxH on the CLI)")
         if spray_arr is not None:
             raise InputError("periodic: the spray tool paints a path, not a repeat tile; leave out spray or periodic")
         tile = frame_of_region(region)

@@ -435,7 +435,7 @@ def _snap_stripes(p: StripesProperties, tile: tuple[float, float, float, float])
     if k == 0 and l == 0:
         raise InputError(
             f"periodic: the tile ({w:g} x {h:g}) is smaller than two stripes of this set "
-            f"(it repeats every {period:g} units); use a larger --size or narrower stripes"
+            f"(it repeats every {period:g} units); use a larger tile or narrower stripes"
         )
     v = np.array([k / w, l / h])
     p_new = 1.0 / float(np.hypot(v[0], v[1]))
@@ -576,7 +576,7 @@ def grid_partition(s1: StripesProperties, s2: StripesProperties, b: Border) -> A
         per = _periodic_top(geom)
         t1, t2 = (s1, s2) if per is None else (_snap_stripes(s1, per.tile), _snap_stripes(s2, per.tile))
         if abs(math.sin(t1.angle - t2.angle)) < 1e-9:
-            raise InputError("grid_partition: on this periodic tile the two stripes sets snap to one direction; use a larger --size")
+            raise InputError("grid_partition: on this periodic tile the two stripes sets snap to one direction; use a larger tile")
         pad = 2.0 * max(max(t1.widths), max(t2.widths)) / max(abs(math.sin(t1.angle - t2.angle)), 0.05) + 1.0
         bounds = _padded_bounds(geom, pad)
         fixed = _field_top(geom) is not None
@@ -827,7 +827,7 @@ def _periodic_irregular(
     if expected < 2:
         raise InputError(
             f"periodic: the tile ({w:g} x {h:g}) holds about {expected:.2g} cells at density {p.density:g}; "
-            "it needs at least two (use a larger --size or a higher density)"
+            "it needs at least two (use a larger tile or a higher density)"
         )
     if expected > 5e6:
         raise InputError(f"{name}: density {p.density:g} asks for about {expected:.3g} cells on this tile; lower it")

@@ -500,6 +500,6 @@ def _run(path: Path, name: str, region: Region, seed: int, tile: tuple[float, fl
 
     arr = _drop_seam(to_strew(pm, region), drawn, 1e-7 * max(tile[2], tile[3]))
     if len(arr) < 2:
-        raise InputError(f"periodic: the tile ({tile[2]:g} x {tile[3]:g}) holds fewer than two cells; use a larger --size")
+        raise InputError(f"periodic: the tile ({tile[2]:g} x {tile[3]:g}) holds fewer than two cells; use a larger tile")
     return pm, mark(arr, tile)
 

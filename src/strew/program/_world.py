@@ -411,7 +411,7 @@ def evaluate_tile(script: Any, name: str, size: tuple[float, float], rect: tuple
 def run_tile(job: Any, t: Any) -> Any:
     """:func:`strew.tiles.run_tile` for program: one tile, independent of the others."""
     if job.periodic:
-        raise InputError("periodic: a program world is not periodic; use strew run --periodic for a repeat tile")
+        raise InputError("periodic: a program world is not periodic; run the script with periodic=True (strew run --periodic) for a repeat tile")
     arr = evaluate_tile(job.input, job.params.get("name", "arrangement"), job.size, t.rect, job.halo, job.seed)
     return arr.replace(meta={"tile": t.index}, region=None)
 
