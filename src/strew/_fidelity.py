@@ -1089,6 +1089,9 @@ def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None =
     if not res_kinds & set(kinds):
         raise InputError(f"result: no kind in common with the exemplar (exemplar: {', '.join(kinds)}; result: {', '.join(sorted(res_kinds))})")
     K = len(kinds)
+    from ._limits import check_kinds
+
+    check_kinds(K, "exemplar")  # _raw holds an (n, K) table per sample, _stats K x K pairs
     s = _median_nn(exemplar.xy[ex_vis])
     if not (math.isfinite(s) and s > 0):
         raise InputError("exemplar: visible elements share positions; no length scale")

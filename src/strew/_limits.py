@@ -42,6 +42,8 @@ __all__ = [
     "check_file",
     "check_decompressed",
     "check_paths",
+    "check_kinds",
+    "MAX_KINDS",
     "check_coordinates",
     "check_work",
     "element_area",
@@ -182,6 +184,20 @@ def check_paths(count: int, what: str) -> None:
     lim = get_limit("paths")
     if count > lim:
         raise InputError(f"{what}: {_fmt(count)} paths, over the limit of {_fmt(lim)} ({_how_to_raise('paths')})")
+
+
+#: Most kinds an exemplar may have for the measures and preparations that hold one term
+#: per pair of kinds (fidelity's kind-pair statistics, synth's type-mismatch table): a 1 MB
+#: drawing of 9,174 distinct shapes, each its own kind, ran synth's preparation past 10
+#: min and strew compare out of memory. Real exemplars have a handful of kinds.
+MAX_KINDS = 1000
+
+
+def check_kinds(count: int, what: str) -> None:
+    """Refuse an exemplar with more than :data:`MAX_KINDS` kinds (one term per kind pair)."""
+    if count > MAX_KINDS:
+        raise InputError(f"{what}: {_fmt(count)} kinds, over the {_fmt(MAX_KINDS)} that kind-pair measures allow "
+                         "(each distinct shape is a kind: draw repeated elements as copies or clones of one shape)")
 
 
 def check_coordinates(values: Any, where: str, *, positive: bool = False, index: bool = True) -> None:

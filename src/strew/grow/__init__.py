@@ -456,6 +456,9 @@ def _grow(
         for i, j in flips:
             ref = flip_edge(ref, int(i), int(j))
     elif isinstance(exemplar, Arrangement):
+        from .._limits import check_kinds
+
+        check_kinds(len(exemplar.kinds), "exemplar")  # the grower's closeness tables are per kind pair
         ref = analyze(exemplar, flips=flips)
     else:
         raise InputError(f"exemplar: must be an Arrangement or a Reference, got {type(exemplar).__name__}")

@@ -106,6 +106,21 @@ def _angle_at(p: np.ndarray, a: int, b: int, c: int) -> float:
     return float(np.arccos(min(1.0, max(-1.0, cos))))
 
 
+def _direction_support(cands: np.ndarray, dirs: np.ndarray) -> np.ndarray:
+    """For each candidate direction (m,), how many pairs of directions (p, 2) have one
+    within ``DIRECTION_TOL`` (angles modulo pi), in blocks: a Python double loop took
+    minutes on an exemplar of 9,174 elements (issue 17). Same arithmetic as the loop it
+    replaced (``abs(c - p) % pi``, then the shorter way round), so the same counts."""
+    out = np.zeros(len(cands), np.int64)
+    step = max(1, 4_000_000 // max(2 * len(dirs), 1))
+    for a in range(0, len(cands), step):
+        c = cands[a : a + step, None, None]
+        d = np.abs(c - dirs[None, :, :]) % np.pi
+        d = np.minimum(d, np.pi - d)
+        out[a : a + step] = np.count_nonzero(np.min(d, axis=2) < DIRECTION_TOL, axis=1)
+    return out
+
+
 def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SKEW_ANGLE) -> np.ndarray:
     """Flip the ambiguous diagonals of a near-regular lattice to one common direction.
 
@@ -178,7 +193,7 @@ def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SK
     dirs = [(direction(i, j), direction(a, b)) for i, j, a, b in amb]
     cands = [d for pair in dirs for d in pair]
     # the common direction: the candidate agreeing with the most quadrilaterals
-    support = [sum(1 for p in dirs if min(diff(c, p[0]), diff(c, p[1])) < DIRECTION_TOL) for c in cands]
+    support = _direction_support(np.array(cands), np.array(dirs))
     best = int(np.argmax(support))
     if support[best] < 0.75 * len(amb):
         return np.asarray(tri)  # no common direction: an irregular reference

@@ -344,6 +344,9 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     from ..arrangement import concat
 
     arr = concat(tagged)
+    from .._limits import check_kinds
+
+    check_kinds(len(arr.kinds), "exemplar")  # the type-mismatch table and costs are per kind pair
     pos = arr.xy
     r = np.asarray(arr["radius"], dtype=float)
     rbar = np.asarray(arr["neighborhood_radius"], dtype=float)
