@@ -365,16 +365,9 @@ def _voronoi_cells(xy: np.ndarray, simp: np.ndarray, cc: np.ndarray, cr: np.ndar
 
 
 def _circumcircles(t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    a, b, c = t[:, 0], t[:, 1], t[:, 2]
-    bx, by = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
-    cx, cy = c[:, 0] - a[:, 0], c[:, 1] - a[:, 1]
-    d = 2.0 * (bx * cy - by * cx)
-    ok = np.abs(d) > 1e-12
-    d = np.where(ok, d, 1.0)
-    ux = (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / d
-    uy = (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / d
-    centre = np.c_[a[:, 0] + ux, a[:, 1] + uy]
-    return centre[ok], np.hypot(ux, uy)[ok], ok
+    from ._kernels.geometry import circumcircles
+
+    return circumcircles(t[:, 0], t[:, 1], t[:, 2])
 
 
 def _orientation_records(sm: _Sample, tree: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-__all__ = ["TOL", "point_segment_distance", "seg_dist2", "seg_dist2_min", "orient", "seg_hit", "seg_cross", "inside", "where"]
+__all__ = ["TOL", "circumcircles", "point_segment_distance", "seg_dist2", "seg_dist2_min", "orient", "seg_hit", "seg_cross", "inside", "where"]
 
 # Relative tolerance of the exact tests: an orientation whose value is within TOL of the
 # magnitude of its two products, or a crossing within TOL of the point it is compared
@@ -43,6 +43,39 @@ def seg_dist2(px: float, py: float, ax: float, ay: float, bx: float, by: float) 
     qx = ax + t * dx - px
     qy = ay + t * dy - py
     return qx * qx + qy * qy
+
+
+def circumcircles(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Circumcircles of triangles, row by row (numpy; synth's holes and fidelity's empty circles).
+
+    Parameters
+    ----------
+    a, b, c : (m, 2) float
+        The corners.
+
+    Returns
+    -------
+    centre : (k, 2) float
+    radius : (k,) float
+        Of the ``k`` triangles that are not degenerate (twice the signed area beyond 1e-12).
+    ok : (m,) bool
+        Which triangles those are.
+
+    Examples
+    --------
+    >>> centre, radius, ok = circumcircles(np.array([[0.0, 0.0]]), np.array([[2.0, 0.0]]), np.array([[0.0, 2.0]]))
+    >>> centre, radius, ok
+    (array([[1., 1.]]), array([1.41421356]), array([ True]))
+    """
+    bx, by = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
+    cx, cy = c[:, 0] - a[:, 0], c[:, 1] - a[:, 1]
+    d = 2.0 * (bx * cy - by * cx)
+    ok = np.abs(d) > 1e-12
+    d = np.where(ok, d, 1.0)
+    ux = (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / d
+    uy = (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / d
+    centre = np.c_[a[:, 0] + ux, a[:, 1] + uy]
+    return centre[ok], np.hypot(ux, uy)[ok], ok
 
 
 def point_segment_distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import enum
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -464,11 +464,22 @@ def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float
     tmin, tmax = float(proj.min()), float(proj.max())
     c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
     half = 0.5 * math.hypot(x1 - x0, y1 - y0) + 1.0
+    lines = []
+    for tk, labs, left, right in _stripe_offsets(p, tmin, tmax):
+        base = c + (tk - float(c @ nrm)) * nrm
+        pts = np.round(np.array([base - half * d, base + half * d]), 9)
+        lines.append(Curve(pts, False, labs, left, right))
+    return lines
+
+
+def _stripe_offsets(p: StripesProperties, tmin: float, tmax: float) -> Iterator[tuple[float, frozenset, frozenset, frozenset]]:
+    """Each line of a stripes set whose offset along the normal is within a period of
+    ``[tmin, tmax]``: its offset ``t_k``, edge labels, and the face labels on its left
+    and right."""
     m = len(p.widths)
     cum = np.r_[0.0, np.cumsum(p.widths)]
     period = float(cum[-1])
     q0, q1 = math.floor(tmin / period) - 1, math.ceil(tmax / period) + 1
-    lines = []
     for q in range(q0, q1 + 1):
         for r in range(m):
             tk = q * period + cum[r]
@@ -480,10 +491,7 @@ def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float
             # +normal is the math-left of d, i.e. the right as seen in y-down coordinates
             right = frozenset(g[k % len(g)] for g in p.face_labels)
             left = frozenset(g[(k - 1) % len(g)] for g in p.face_labels)
-            base = c + (tk - float(c @ nrm)) * nrm
-            pts = np.round(np.array([base - half * d, base + half * d]), 9)
-            lines.append(Curve(pts, False, labs, left, right))
-    return lines
+            yield tk, labs, left, right
 
 
 def _fixed_stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float]) -> list[Curve]:
@@ -497,9 +505,6 @@ def _fixed_stripe_lines(p: StripesProperties, bounds: tuple[float, float, float,
     proj = corners @ nrm
     along = corners @ d
     tmin, tmax = float(proj.min()), float(proj.max())
-    m = len(p.widths)
-    cum = np.r_[0.0, np.cumsum(p.widths)]
-    period = float(cum[-1])
     # a vertex every narrowest width (a tile whose halo is at least that keeps whole the
     # segments that cross it), offset by an odd fraction of it: at whole widths the
     # vertices would sit on the crossings of a grid's other set (widths in proportion),
@@ -507,19 +512,10 @@ def _fixed_stripe_lines(p: StripesProperties, bounds: tuple[float, float, float,
     step = float(min(p.widths))
     s0, s1 = math.floor(float(along.min()) / step) - 1, math.ceil(float(along.max()) / step) + 1
     steps = (np.arange(s0, s1 + 1, dtype=float) + _ODD) * step
-    q0, q1 = math.floor(tmin / period) - 1, math.ceil(tmax / period) + 1
     lines = []
-    for q in range(q0, q1 + 1):
-        for r in range(m):
-            tk = q * period + cum[r]
-            if tk < tmin - period or tk > tmax + period:
-                continue
-            k = q * m + r
-            labs = frozenset(g[k % len(g)] for g in p.edge_labels)
-            right = frozenset(g[k % len(g)] for g in p.face_labels)
-            left = frozenset(g[(k - 1) % len(g)] for g in p.face_labels)
-            pts = np.round(tk * nrm[None, :] + steps[:, None] * d[None, :], 9)
-            lines.append(Curve(pts, False, labs, left, right))
+    for tk, labs, left, right in _stripe_offsets(p, tmin, tmax):
+        pts = np.round(tk * nrm[None, :] + steps[:, None] * d[None, :], 9)
+        lines.append(Curve(pts, False, labs, left, right))
     return lines
 
 

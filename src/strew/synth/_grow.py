@@ -145,15 +145,10 @@ def circumcircles(xy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         tri = Delaunay(xy)
     except QhullError:
         return np.zeros((0, 2)), np.zeros(0), np.zeros((0, 3), np.int64)
-    a, b, c = (xy[tri.simplices[:, i]] for i in range(3))
-    bx, by = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]
-    cx, cy = c[:, 0] - a[:, 0], c[:, 1] - a[:, 1]
-    d = 2.0 * (bx * cy - by * cx)
-    ok = np.abs(d) > 1e-12
-    d = np.where(ok, d, 1.0)
-    ux = (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / d
-    uy = (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / d
-    return (a + np.c_[ux, uy])[ok], np.hypot(ux, uy)[ok], tri.simplices[ok].astype(np.int64)
+    from .._kernels.geometry import circumcircles
+
+    centre, radius, ok = circumcircles(*(xy[tri.simplices[:, i]] for i in range(3)))
+    return centre, radius, tri.simplices[ok].astype(np.int64)
 
 
 def largest_empty_circles(prep) -> np.ndarray:
