@@ -636,7 +636,8 @@ def iter_params(specs_: Iterable[MethodSpec]) -> Iterable[tuple[MethodSpec, Para
 
 def names_to_flags(spec: MethodSpec, message: str) -> str:
     """A library message with its leading Python parameter name replaced by the CLI flag."""
-    for p in (spec.input, *spec.params):
+    # the input is a positional argument on the CLI (EXEMPLAR, SHAPES...): its name stays
+    for p in spec.params:
         if not p.cli and p.flag is None:
             continue
         for sep in (":", " ", "["):

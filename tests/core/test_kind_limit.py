@@ -31,3 +31,20 @@ def test_more_kinds_than_the_limit_are_refused_naming_the_exemplar(method):
             synthesize(ex, strew.Region.rectangle(50, 50), rng=1)
         else:
             fidelity(ex, ex)
+
+
+
+@pytest.mark.parametrize("method", ["grow", "synth"])
+def test_the_cli_names_the_positional_exemplar_without_a_flag(method, tmp_path, capsys):
+    from strew.cli import main
+    from strew.io import save
+
+    path = tmp_path / "ex.json"
+    save(_distinct(MAX_KINDS + 1), str(path))
+    args = [method, str(path), "-o", str(tmp_path / "out.json")]
+    args += ["--count", "20"] if method == "grow" else ["--size", "50x50"]
+    assert main(args) == 2
+    # the exemplar is an argument, not an option: no "--exemplar" (grow printed one)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("strew: error: exemplar"), err
+    assert not (tmp_path / "out.json").exists()
