@@ -23,7 +23,10 @@ timings: a hexagonal lattice in flow mode along fields that turn 60 and 90 degre
 the spacing +-15%, largest gap in spacings, elements across the region's edge), a closed
 oval boundary stroke around stones, the hexagonal lattice, two and three sizes (share of
 its inside filled, against the exemplar's own share), and the bricks grown with a
-priority, either kind first (largest gap against the exemplar's).
+priority, either kind first (largest gap against the exemplar's). Flow mode does not
+depend on the seed (``rng``), so the 90 degree and quarter-circle cases are also grown
+from other start points (near the bottom and the top-left corner), in a region 1.5 times
+as wide and high, and with the suite's ``scales`` (a distorted hexagonal lattice).
 """
 
 from __future__ import annotations
@@ -112,7 +115,7 @@ def structure(json_path) -> None:
     ex = _suite_exemplar("hex_lattice", nx=8, ny=8)
     sp = 12.0
 
-    def lattice_row(label, out, region, flow=None):
+    def lattice_row(label, out, region, flow=None, ex=ex, sp=sp):
         xy = out.xy
         inner = region.distance_to_boundary(xy) > 2 * sp
         x0, y0, x1, y1 = region.bounds
@@ -122,14 +125,17 @@ def structure(json_path) -> None:
                   across_edge=int((~region.contains_geometry(out.geometry, tolerance=1e-9)).sum()),
                   **lattice_defects(xy, sp, inner, g), **field_misalignment(ex, xy, sp, inner, flow))
 
-    for deg in (60.0, 90.0):
-        w, h = 30 * sp, 20 * sp
-        region = Region.rectangle(w, h)
-
-        def field(p, deg=deg, w=w):
+    def turning(deg, w):
+        def field(p):
             a = np.radians(deg) * np.clip(np.asarray(p)[:, 0] / w, 0, 1)
             return np.c_[np.cos(a), np.sin(a)]
 
+        return field
+
+    for deg in (60.0, 90.0):
+        w, h = 30 * sp, 20 * sp
+        region = Region.rectangle(w, h)
+        field = turning(deg, w)
         lattice_row(f"flow turning {deg:.0f} deg over 30 spacings", grow(ex, region=region, mode="flow", flow=field, rng=1), region, field)
     w, h = 24 * sp, 16 * sp
     region = Region.rectangle(w, h)
@@ -142,6 +148,35 @@ def structure(json_path) -> None:
     arcs = [np.c_[r * np.cos(th), r * np.sin(th)] for r in (10 * sp, 25 * sp)]
     af = flow_field(arcs)
     lattice_row("flow from two quarter-circle strokes", grow(ex, region=region, mode="flow", flow=af, rng=1), region, af)
+    # robustness: flow mode ignores the seed, so other start points, a larger region and
+    # another lattice exemplar (its median nearest distance as the spacing)
+    for f in (1.0, 1.5):
+        w, h = 30 * sp * f, 20 * sp * f
+        field = turning(90.0, w)
+        region = Region.rectangle(w, h)
+        starts = [(w / 2, 2 * sp), (2 * sp, h - 2 * sp)] if f == 1.0 else [None]
+        for st in starts:
+            where = "centre" if st is None else f"start {st[0] / sp:.0f},{st[1] / sp:.0f} spacings"
+            lattice_row(f"flow turning 90 deg, {30 * f:.0f}x{20 * f:.0f} spacings, {where}",
+                        grow(ex, region=region, mode="flow", flow=field, rng=1, start=st), region, field)
+        a = 30 * sp * f
+        region = Region.rectangle(a, a)
+        af = flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (a / 3, a * 5 / 6)])
+        starts = [(a - 2 * sp, a - 2 * sp), (2 * sp, 2 * sp)] if f == 1.0 else [None]
+        for st in starts:
+            where = "centre" if st is None else f"start {st[0] / sp:.0f},{st[1] / sp:.0f} spacings"
+            lattice_row(f"flow from two quarter circles, {30 * f:.0f}x{30 * f:.0f} spacings, {where}",
+                        grow(ex, region=region, mode="flow", flow=af, rng=1, start=st), region, af)
+    scales = _suite_exemplar("scales")
+    s_sp = float(np.median(cKDTree(scales.xy).query(scales.xy, 7)[0][:, 1:]))  # its six neighbours' median distance
+    w, h = 30 * s_sp, 20 * s_sp
+    field = turning(90.0, w)
+    region = Region.rectangle(w, h)
+    lattice_row("scales, flow turning 90 deg over 30 spacings", grow(scales, region=region, mode="flow", flow=field, rng=1),
+                region, field, ex=scales, sp=s_sp)
+    region = Region.rectangle(30 * s_sp, 30 * s_sp)
+    af = flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (10 * s_sp, 25 * s_sp)])
+    lattice_row("scales, flow from two quarter circles", grow(scales, region=region, mode="flow", flow=af, rng=1), region, af, ex=scales, sp=s_sp)
     for name in ("stones", "hex_lattice", "two_sizes", "three_sizes"):
         for seed in (1, 2, 3):
             bench.row(f"closed oval boundary, {name}, seed {seed}", **boundary_fill(_suite_exemplar(name), seed))
