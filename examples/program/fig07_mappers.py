@@ -20,7 +20,7 @@ size = run_size(2000)
 k = size / 800  # the lengths below are for an 800-unit square
 tab = import_svg(here / "puzzle.svg")
 cross = scale(import_svg(here / "cross.svg"), 2.0 * k)
-petal = scale(import_svg(here / "petal.svg", tolerance=2.0), 1.6 * k)
+petal = scale(import_svg(here / "petal.svg", tolerance=0.04), 1.6 * k)  # within 0.04 of the circle: 42 points
 wiggles = import_svg(here / "wiggles.svg")
 
 # -- puzzle bricks ---------------------------------------------------------------------

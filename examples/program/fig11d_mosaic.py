@@ -12,7 +12,7 @@ from strew.program import pi
 
 here = Path(__file__).parent
 size = 2000
-circle = curve_labeled(import_svg(here / "petal.svg", tolerance=2.0), "petal")
+circle = curve_labeled(import_svg(here / "petal.svg", tolerance=0.04), "petal")  # within 0.04 of the circle: 42 points
 
 tiles = grid_partition(stripes_properties(0, 80), stripes_properties(pi / 2, 80), KEEP_INSIDE)
 mosaic = union(tiles, map_to_faces(lambda f: scale(match_face(circle, f), 0.8), tiles))

@@ -49,19 +49,27 @@ class ScriptError(InputError):
 def import_svg(filename: str | os.PathLike[str], *, tolerance: float | None = None) -> Curves:
     """ImportSVG(String filename): loads curves from an SVG file.
 
-    Every path and basic shape becomes curves (one per sub-path, flattened to
-    polylines; closed sub-paths are closed curves), with every transform applied. An
-    element's Inkscape label, or else its id when the id is not an editor's automatic
-    one (``path123``), labels its curves (see :func:`curve_labeled`). A labelled
-    ``<circle>`` or ``<ellipse>`` is a labelled *point* at its centre, such as ``"start"``
-    and ``"end"`` (see :func:`point_labeled`), not a curve. The file is read by
-    :func:`strew.io.svg.read_svg_curves`.
+    Every drawn path and basic shape becomes curves (one per sub-path, flattened to
+    polylines; closed sub-paths are closed curves), with every transform applied, in the
+    file's *user units*: the numbers it is written in, so a point drawn at ``cx="0"`` is
+    at 0 in the script whatever the ``viewBox`` (issue 15 point 5; before, curves came in
+    viewport coordinates, shifted by the viewBox's origin). An element's Inkscape label,
+    or else its id when the id is not an editor's automatic one (``path123``), labels
+    its curves (see :func:`curve_labeled`); curves without one take their group's or
+    clone's. A labelled ``<circle>`` or ``<ellipse>`` is a labelled *point* at its
+    centre, such as ``"start"`` and ``"end"`` (see :func:`point_labeled`), not a curve.
+    Hidden layers and objects are left out. The file is read by
+    :func:`strew.io.svg.read_svg_curves`, the exemplar reader's walk of the document
+    (``<use>`` clones and symbols, the file size and path limits).
 
     Parameters
     ----------
     filename : path
     tolerance : float, optional
-        Flattening step for curved segments (default: 1/40 of the drawing's diagonal).
+        Largest distance between a curved segment and its polyline, in the file's user
+        units (as for :func:`strew.io.svg.read_svg`); default 1/2000 of the drawing's
+        diagonal. Before issue 15 it was a step along the curve: ``tolerance=2.0`` on a
+        circle of radius 13 (42 points) is now about ``tolerance=0.04``.
     """
     from ..io.svg import read_svg_curves
 
