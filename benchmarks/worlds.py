@@ -25,7 +25,10 @@ Point 5 one measurement a command (``--only``, ``--method pack|synth``; writes
 
 - ``--only scaling --sizes 1e5,1e6,1e7``: time and CPU per element, worker peak RSS;
 - ``--only scaling --method synth --sizes 1e5,1e6``: the same for synth (stones.svg);
-- ``--only speedup --sizes 1e5 --repeat 3``: 2 workers against 1 on the same world;
+- ``--only speedup --sizes 1e5 --repeat 3``: 2 workers against 1 on the same world (in
+  process and on a 1-worker LocalCluster), CPU per element by process and thread, and
+  the wall modelled on 2 idle cores from the CPU; ``--baseline-src /tmp/wt/src`` repeats
+  it with strew imported from there (the code before), in the same run;
 - ``--only memory --sizes 1e6 --tile-sizes 50,100,200``: worker peak RSS per tile size.
 """
 
@@ -46,7 +49,7 @@ DENSITY = 0.1395  # elements per unit area of this pack world (measured, 300 x 2
 TILE = 100.0
 
 _CHILD = r"""
-import json, resource, sys, tempfile, time
+import json, os, resource, sys, tempfile, threading, time
 import strew
 from strew.tiles import world
 from strew.io._parquet import ParquetWriter
@@ -62,10 +65,9 @@ out = {}
 client = cluster = None
 kw = {}
 if workers > 1 or (len(sys.argv) > 6 and sys.argv[6] == "dask"):  # "dask": 1 worker on a cluster too
-    from dask.distributed import Client, LocalCluster
+    from strew.tiles import _connect
     t0 = time.perf_counter()
-    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=40)
-    client = Client(cluster)
+    client, cluster = _connect(None, workers, True, 10.0)  # the LocalCluster world(workers=N) starts
     out["cluster_s"] = time.perf_counter() - t0
     kw = {"scheduler": cluster.scheduler_address}
 # warm-up: load (or compile) the kernels in every worker. A 2 x 2 world on the cluster
@@ -75,12 +77,29 @@ if workers > 1 or (len(sys.argv) > 6 and sys.argv[6] == "dask"):  # "dask": 1 wo
 world(method, shapes, (2 * tile, 2 * tile), tile_size=tile, seed=99, workers=workers, **kw)
 if client is not None:
     client.run(lambda: world(method, shapes, (2 * tile, 2 * tile), tile_size=tile, seed=98))
-def cpu():
-    import os
-    t = os.times()
-    return t.user + t.system
+def threads():
+    # CPU seconds of each thread of this process, by role: "main" (the client's loop,
+    # sink and Parquet; in a worker its event loop), "loop" (the client process's IO
+    # loop: scheduler, nannies, comms), "work" (a worker's task thread)
+    names = {t.native_id: t.name for t in threading.enumerate()}
+    tick = os.sysconf("SC_CLK_TCK")
+    res = {}
+    for tid in os.listdir("/proc/self/task"):
+        try:
+            with open(f"/proc/self/task/{tid}/stat") as f:
+                st = f.read()
+        except OSError:
+            continue
+        fields = st[st.rindex(")") + 2:].split()
+        name = names.get(int(tid), "")
+        role = "main" if name == "MainThread" else "work" if "Dask-Default-Threads" in name else "loop" if name == "IO loop" else "other"
+        res[tid] = (role, (int(fields[11]) + int(fields[12])) / tick)
+    return res
 def cpu_all():
-    return cpu() + (sum(client.run(cpu).values()) if client is not None else 0.0)
+    procs = {"client": threads()}
+    if client is not None:
+        procs.update({"worker " + k: v for k, v in client.run(threads).items()})
+    return procs
 with tempfile.TemporaryDirectory() as tmp:
     w = ParquetWriter(tmp + "/w.parquet")
     c0 = cpu_all()
@@ -88,7 +107,17 @@ with tempfile.TemporaryDirectory() as tmp:
     info = world(method, shapes, (side, side), tile_size=tile, seed=1, workers=workers, sink=w.write, **kw)
     w.close(info.shapes, info.meta)
     out["seconds"] = time.perf_counter() - t0
-    out["cpu_seconds"] = cpu_all() - c0
+    c1 = cpu_all()
+# CPU by process kind and thread role: client process main thread / IO loop (the
+# scheduler and nannies live there) / other threads; workers' task threads / the rest
+roles = {}
+for proc, ths in c1.items():
+    kind = "client" if proc == "client" else "worker"
+    for tid, (role, c) in ths.items():
+        d = c - c0[proc].get(tid, (role, 0.0))[1]
+        roles[f"{kind}_{role}"] = roles.get(f"{kind}_{role}", 0.0) + d
+out["cpu_by_role"] = roles
+out["cpu_seconds"] = sum(roles.values())
 out["elements"] = int(info.counts.sum())
 out["tiles"] = len(info.counts)
 out["client_maxrss_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
@@ -108,21 +137,33 @@ SYNTH_DENSITY = 0.00191  # elements per unit area (measured: 1,222-1,232 in 800 
 SYNTH_TILE = 400.0
 
 
-def run(n: float, workers: int, method: str = "pack", tile: float | None = None, dask: bool = False) -> dict:
-    """One world in a fresh subprocess; ``dask``: on a LocalCluster even for 1 worker."""
+def run(n: float, workers: int, method: str = "pack", tile: float | None = None, dask: bool = False, src: str | None = None) -> dict:
+    """One world in a fresh subprocess; ``dask``: on a LocalCluster even for 1 worker;
+    ``src``: import strew from this folder (a worktree's ``src``: the code before)."""
     density, tile = (SYNTH_DENSITY, tile or SYNTH_TILE) if method == "synth" else (DENSITY, tile or TILE)
     side = math.sqrt(n / density)
+    env = dict(os.environ, PYTHONPATH=src) if src else None
     p = subprocess.run([sys.executable, "-c", _CHILD, f"{side:.3f}", str(workers), f"{tile:g}", method, str(SYNTH_EXEMPLAR), "dask" if dask else ""],
-                       capture_output=True, text=True, check=False)
+                       capture_output=True, text=True, check=False, env=env)
     line = [x for x in p.stdout.splitlines() if x.startswith("RESULT ")]
     if p.returncode or not line:
         raise SystemExit(f"child failed ({p.returncode}):\n{p.stderr[-3000:]}")
     r = json.loads(line[0][7:])
-    r.update(method=method, tile_size=tile, target=n, workers=workers, on_dask=bool(dask or workers > 1), side=side, us_per_element=1e6 * r["seconds"] / max(r["elements"], 1),
-             cpu_us_per_element=1e6 * r["cpu_seconds"] / max(r["elements"], 1))
-    print(f"  {method} n~{n:.0e} workers={workers}{' (Dask)' if r['on_dask'] else ''} tile {tile:g}: {r['elements']:,} el, {r['tiles']} tiles, {r['seconds']:.1f} s, "
-          f"{r['us_per_element']:.0f} us/el ({r['cpu_us_per_element']:.0f} CPU us/el, all processes), worker peak RSS {max(r['worker_maxrss_mb']):.0f} MB, "
-          f"client {r['client_maxrss_mb']:.0f} MB", flush=True)
+    ne = max(r["elements"], 1)
+    roles = r["cpu_by_role"]
+    # modelled wall on 2 idle cores: every process's CPU shares them, and a lone worker
+    # cannot go faster than its own CPU (the in-process runner: all of it is serial)
+    if r.get("cluster_s") is None:
+        model = r["cpu_seconds"]
+    else:
+        model = max(r["cpu_seconds"] / 2, (roles.get("worker_work", 0.0) + roles.get("worker_main", 0.0) + roles.get("worker_other", 0.0)) / workers)
+    r.update(method=method, tile_size=tile, target=n, workers=workers, on_dask=bool(dask or workers > 1), side=side, us_per_element=1e6 * r["seconds"] / ne,
+             cpu_us_per_element=1e6 * r["cpu_seconds"] / ne, cpu_us_per_element_by_role={k: 1e6 * v / ne for k, v in roles.items()},
+             modelled_s=model, src=src)
+    by_role = ", ".join(f"{k} {1e6 * v / ne:.1f}" for k, v in sorted(roles.items()) if v > 0.005)
+    print(f"  {method} n~{n:.0e} workers={workers}{' (Dask)' if r['on_dask'] else ''} tile {tile:g}{' [' + src + ']' if src else ''}: {r['elements']:,} el, {r['tiles']} tiles, {r['seconds']:.1f} s, "
+          f"{r['us_per_element']:.0f} us/el ({r['cpu_us_per_element']:.0f} CPU us/el, all processes: {by_role}; modelled wall on 2 idle cores {model:.2f} s), "
+          f"worker peak RSS {max(r['worker_maxrss_mb']):.0f} MB, client {r['client_maxrss_mb']:.0f} MB", flush=True)
     return r
 
 
@@ -281,17 +322,33 @@ def only(args: argparse.Namespace, sizes: list[float]) -> None:
                    cpu_per_element_ratio_max=max(r["cpu_us_per_element"] for r in runs) / min(r["cpu_us_per_element"] for r in runs))
     elif args.only == "speedup":
         n = sizes[0]
-        one = [run(n, 1, args.method) for _ in range(args.repeat)]
-        # two baselines: the in-process runner (no Dask at all), and 1 worker on a
-        # LocalCluster, whose scheduler and client share the 2 cores just as they do with 2
-        one_dask = [run(n, 1, args.method, dask=True) for _ in range(args.repeat)]
-        two = [run(n, 2, args.method) for _ in range(args.repeat)]
-        s1, s2 = statistics.median(r["seconds"] for r in one), statistics.median(r["seconds"] for r in two)
-        s1d = statistics.median(r["seconds"] for r in one_dask)
-        print(f"  {n:.0e} elements: 1 worker in-process {s1:.1f} s, 1 Dask worker {s1d:.1f} s, 2 Dask workers {s2:.1f} s "
-              f"(medians of {args.repeat}): speed-up {s1 / s2:.2f}x over in-process, {s1d / s2:.2f}x over 1 Dask worker (target 1.7x)")
-        res.update(elements=n, one_worker_s=s1, one_dask_worker_s=s1d, two_workers_s=s2, ratio=s1 / s2,
-                   ratio_over_one_dask_worker=s1d / s2, runs_one=one, runs_one_dask=one_dask, runs_two=two)
+        srcs = [None] + ([args.baseline_src] if args.baseline_src else [])
+        for src in srcs:
+            # two baselines: the in-process runner (no Dask at all), and 1 worker on a
+            # LocalCluster, whose scheduler and client share the 2 cores just as they do
+            # with 2; interleaved, so that a change of the machine's load hits all three
+            one, one_dask, two = [], [], []
+            for _ in range(args.repeat):
+                one.append(run(n, 1, args.method, src=src))
+                one_dask.append(run(n, 1, args.method, dask=True, src=src))
+                two.append(run(n, 2, args.method, src=src))
+            med = {k: {f: statistics.median(r[f] for r in rs) for f in ("seconds", "modelled_s", "cpu_us_per_element")}
+                   for k, rs in (("one", one), ("one_dask", one_dask), ("two", two))}
+            s1, s1d, s2 = (med[k]["seconds"] for k in ("one", "one_dask", "two"))
+            m1, m1d, m2 = (med[k]["modelled_s"] for k in ("one", "one_dask", "two"))
+            label = f"[{src}] " if src else ""
+            print(f"  {label}{n:.0e} elements: 1 worker in-process {s1:.1f} s, 1 Dask worker {s1d:.1f} s, 2 Dask workers {s2:.1f} s "
+                  f"(medians of {args.repeat}): speed-up {s1 / s2:.2f}x over in-process, {s1d / s2:.2f}x over 1 Dask worker (target 1.7x)")
+            print(f"  {label}CPU per element (all processes) {med['one']['cpu_us_per_element']:.0f} / {med['one_dask']['cpu_us_per_element']:.0f} / "
+                  f"{med['two']['cpu_us_per_element']:.0f} us; modelled wall on 2 idle cores {m1:.2f} / {m1d:.2f} / {m2:.2f} s: "
+                  f"{m1 / m2:.2f}x over in-process, {m1d / m2:.2f}x over 1 Dask worker", flush=True)
+            part = dict(elements=n, one_worker_s=s1, one_dask_worker_s=s1d, two_workers_s=s2, ratio=s1 / s2,
+                        ratio_over_one_dask_worker=s1d / s2, modelled_s=[m1, m1d, m2], modelled_ratio=m1 / m2,
+                        modelled_ratio_over_one_dask_worker=m1d / m2, runs_one=one, runs_one_dask=one_dask, runs_two=two)
+            if src:
+                res["baseline"] = dict(part, src=src)
+            else:
+                res.update(part)
     else:  # memory
         n = sizes[0]
         runs = [run(n, args.workers, args.method, tile=float(t)) for t in args.tile_sizes.split(",")]
@@ -317,6 +374,7 @@ def main() -> None:
     ap.add_argument("--only", choices=("scaling", "speedup", "memory"), help="one measurement of point 5 (see only())")
     ap.add_argument("--method", choices=("pack", "synth"), default="pack", help="--only: the world's method")
     ap.add_argument("--workers", type=int, default=2, help="--only scaling|memory: Dask workers (1: in-process)")
+    ap.add_argument("--baseline-src", default=None, help="--only speedup: also run with strew imported from this src folder (a worktree of the code before)")
     ap.add_argument("--tile-sizes", default="50,100,200", help="--only memory: tile sides (pack; synth e.g. 100,200,400)")
     ap.add_argument("--classes", default="stones,two_sizes", help="--synth-seams: fidelity-suite classes")
     ap.add_argument("--before", action="store_true", help="--synth-seams: also the tiles' whole grown rectangles (the old region)")

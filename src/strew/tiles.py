@@ -451,9 +451,29 @@ def _connect(scheduler: str | None, workers: int, processes: bool, timeout: floa
     # silence_logs=CRITICAL: a task that raises (a refused halo, a script error) is
     # re-raised here as one message; at ERROR every worker also logged "Compute Failed"
     # with the traceback, one per tile (issue 17: no traceback)
-    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes,
-                           dashboard_address=":0", silence_logs=50)
+    import dask
+
+    with dask.config.set(_LOCAL_CONFIG):
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes,
+                               dashboard_address=":0", silence_logs=50)
     return Client(cluster, set_as_default=False), cluster
+
+
+# the LocalCluster's housekeeping, made rarer (issue 19.5): on 2 cores every periodic
+# callback of the scheduler, the 2 nannies and the 2 workers takes a core from the tiles.
+# An idle cluster of 2 workers spent 47 ms CPU a second in the client process
+# (scheduler, nannies) and 32 ms in each worker; with these, 7.5 and 2.5 ms
+# (/tmp/dask19/idle.py). The event loops' 20 ms tick (a blocked-loop watchdog) cost the
+# most; the workers' 10 ms stack sampling feeds only the dashboard's profile page; the
+# memory monitors (100 ms) and system monitor (500 ms) feed its graphs. An existing
+# cluster (scheduler=...) keeps its own settings.
+_LOCAL_CONFIG = {
+    "distributed.admin.tick.interval": "1s",
+    "distributed.worker.profile.enabled": False,
+    "distributed.worker.memory.monitor-interval": "1s",
+    "distributed.admin.system-monitor.interval": "2s",
+    "distributed.admin.system-monitor.gil.enabled": False,
+}
 
 
 def world(
