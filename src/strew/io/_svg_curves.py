@@ -114,8 +114,8 @@ def _read(source: Any, tolerance: float | None, hidden: str, should_cancel: Call
     drawn = _drawn(doc, hidden)
     doc.warn_dangling()
     tol = _default_tolerance(doc, [p for p, _ in drawn]) if tolerance is None else doc.tolerance
-    curves: list[tuple[np.ndarray, bool, str | None]] = []
     points: dict[str, tuple[float, float]] = {}
+    lines: list[tuple[_Part, str | None]] = []
     for part, outer in drawn:
         tag = _local(part.el.tag)
         own = _curve_label(part.el)
@@ -125,10 +125,12 @@ def _read(source: Any, tolerance: float | None, hidden: str, should_cancel: Call
             name = part.label if part.label is not None else own
             c = _apply(part.m, np.array([[doc.length(part.el, "cx"), doc.length(part.el, "cy")]]))[0]
             points[str(name)] = (float(c[0]), float(c[1]))
-            continue
-        flat = doc.flatten([part], _IDENTITY, tol)
-        label = own if own is not None else outer
-        curves.extend((path.points, bool(path.closed), label) for path in flat.paths)
+        else:
+            lines.append((part, own if own is not None else outer))
+    # every part flattened in one batch, as the exemplar reader does (the same paths as
+    # doc.flatten part by part)
+    flats = doc.flatten_all([([part], tol) for part, _ in lines])
+    curves = [(path.points, bool(path.closed), label) for (_, label), flat in zip(lines, flats) for path in flat.paths]
     return curves, points
 
 
