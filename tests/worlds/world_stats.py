@@ -43,3 +43,157 @@ def border_strips(arr, size, tile_size: float, width: float, margin: float):
         gnear |= np.abs(gy - ly) < width
     cell = (w / 1200) * (h / 1200)
     return inside & near, inside & ~near, (gin & gnear).sum() * cell, (gin & ~gnear).sum() * cell
+
+
+def overlapping_pairs_across(arr, groups, tol: float = 1e-9) -> int:
+    """Pairs of elements of different ``groups`` (e.g. the ``tile`` column) whose areas
+    overlap by more than ``tol``."""
+    g = arr.geometry_of("geometry")
+    groups = np.asarray(groups)
+    left, right = shapely.STRtree(g).query(g, predicate="intersects")
+    m = (left < right) & (groups[left] != groups[right])
+    if not m.any():
+        return 0
+    return int((shapely.area(shapely.intersection(g[left[m]], g[right[m]])) > tol).sum())
+
+
+def strip_units(arr, size, tile_size: float, width: float, margin: float) -> dict:
+    """Border-strip counts per tile (the units of a bootstrap).
+
+    A centre is in a *strip* when it lies within ``width`` of an inner tile border (the
+    lines ``x = k T``, ``y = k T`` inside the world), else in the *interior*; centres in
+    the world's own edge band ``margin`` count in neither. Per tile (row-major, the tile
+    holding the centre): ``strip``, ``inner`` (counts), ``strip_area``, ``inner_area``
+    (exact areas of the two sets in the tile, ``width`` under half a tile) and
+    ``strip_kind``, ``inner_kind`` ((tiles, kinds) counts by kind index).
+    """
+    w, h = size
+    t = float(tile_size)
+    nx, ny = max(1, int(np.ceil(w / t - 1e-9))), max(1, int(np.ceil(h / t - 1e-9)))
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    kind = np.asarray(arr.kind, np.int64)
+    nk = len(arr.kinds)
+    inside = (x >= margin) & (x <= w - margin) & (y >= margin) & (y <= h - margin)
+    lx, ly = np.arange(1, nx) * t, np.arange(1, ny) * t
+    dx = np.min(np.abs(x[:, None] - lx[None, :]), axis=1) if len(lx) else np.full(len(x), np.inf)
+    dy = np.min(np.abs(y[:, None] - ly[None, :]), axis=1) if len(ly) else np.full(len(y), np.inf)
+    near = (dx < width) | (dy < width)
+    i = np.clip(np.floor(x / t), 0, nx - 1).astype(np.int64)
+    j = np.clip(np.floor(y / t), 0, ny - 1).astype(np.int64)
+    unit = j * nx + i
+    n = nx * ny
+    out = {
+        "strip": np.bincount(unit[inside & near], minlength=n).astype(float),
+        "inner": np.bincount(unit[inside & ~near], minlength=n).astype(float),
+        "strip_kind": np.zeros((n, nk)),
+        "inner_kind": np.zeros((n, nk)),
+    }
+    np.add.at(out["strip_kind"], (unit[inside & near], kind[inside & near]), 1)
+    np.add.at(out["inner_kind"], (unit[inside & ~near], kind[inside & ~near]), 1)
+    sa, ia = np.zeros(n), np.zeros(n)
+
+    def span(a0, a1, lo_inner, hi_inner, hi_world):
+        c0, c1 = max(a0, margin), min(a1, hi_world - margin)  # the tile less the edge band
+        e0, e1 = max(a0 + (width if lo_inner else 0.0), margin), min(a1 - (width if hi_inner else 0.0), hi_world - margin)
+        return max(c1 - c0, 0.0), max(e1 - e0, 0.0)
+
+    for jj in range(ny):
+        for ii in range(nx):
+            x0, x1 = ii * t, min(w, (ii + 1) * t)
+            y0, y1 = jj * t, min(h, (jj + 1) * t)
+            fx, ex = span(x0, x1, ii > 0, ii < nx - 1, w)
+            fy, ey = span(y0, y1, jj > 0, jj < ny - 1, h)
+            ia[jj * nx + ii] = ex * ey
+            sa[jj * nx + ii] = fx * fy - ex * ey
+    out["strip_area"], out["inner_area"] = sa, ia
+    return out
+
+
+def bootstrap_ratio(arrays, fn, boot: int, rng) -> dict:
+    """``fn(*arrays)`` and the 95 % percentile interval of ``boot`` resamples of the
+    units (the rows shared by ``arrays``): ``{"value", "ci"}``."""
+    n = len(arrays[0])
+    value = float(fn(*arrays))
+    draws = np.empty(boot)
+    for b in range(boot):
+        pick = rng.integers(0, n, n)
+        draws[b] = fn(*[a[pick] for a in arrays])
+    return {"value": value, "ci": [float(v) for v in np.nanpercentile(draws, [2.5, 97.5])]}
+
+
+def folded_profile(arr, size, tile_size: float, spacing: float) -> dict:
+    """The centres' density across the tile borders folded modulo the tile size.
+
+    Bins of about half a ``spacing`` over ``[0, T)`` of ``x mod T`` (centres with
+    ``T <= x < W - T``: the inner columns only, so that the world's own edges, at
+    multiples of ``T`` too, do not fold onto the borders) and of ``y mod T`` likewise,
+    pooled; every bin then sees the same area (``exposure``). ``near_bins``: the bins
+    within one ``spacing`` of a border.
+    """
+    w, h = size
+    t = float(tile_size)
+    nb = max(8, int(round(t / (0.5 * spacing))))
+    edges = np.linspace(0.0, t, nb + 1)
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    counts = np.zeros(nb, np.int64)
+    exposure = np.zeros(nb)
+    for v, span in ((x, w), (y, h)):
+        n_inner = int(np.floor(span / t + 1e-9)) - 2  # whole inner tiles along this axis
+        if n_inner < 1:
+            continue
+        sel = (v >= t) & (v < t * (n_inner + 1))
+        counts += np.histogram(np.mod(v[sel], t), edges)[0]
+        exposure += n_inner * np.diff(edges) * (h if span is w else w)
+    centre = 0.5 * (edges[:-1] + edges[1:])
+    near = (centre < spacing) | (centre > t - spacing)
+    return {"counts": counts, "exposure": exposure / max(exposure.sum(), 1e-300), "near_bins": near}
+
+
+def profile_test(counts, exposure, near) -> dict:
+    """Chi-square of folded ``counts`` against flat (expected in proportion to
+    ``exposure``) and the density of the ``near`` bins against the others, with a 95 %
+    interval taking the counts as Poisson (conservative for packings, whose counts vary
+    less)."""
+    from scipy import stats
+
+    counts = np.asarray(counts, float)
+    e = counts.sum() * np.asarray(exposure, float)
+    chi2 = float(((counts - e) ** 2 / e).sum())
+    dof = len(counts) - 1
+    cn, cf = counts[near].sum(), counts[~near].sum()
+    en, ef = e[near].sum(), e[~near].sum()
+    r = (cn / en) / (cf / ef)
+    se = np.sqrt(1 / cn + 1 / cf)
+    return {"bins": int(len(counts)), "chi2_dof": chi2 / dof, "p": float(stats.chi2.sf(chi2, dof)),
+            "near_ratio": {"value": float(r), "ci": [float(r * np.exp(-1.96 * se)), float(r * np.exp(1.96 * se))]},
+            "counts": [int(v) for v in counts]}
+
+
+def border_window_scores(local: dict, tile_size: float) -> dict:
+    """The local fidelity map's windows split by the tile borders.
+
+    ``border``: a border line ``k T`` (k >= 1) crosses the window's middle half (both
+    sides in view); ``interior``: the window lies inside one tile. Each: ``score`` and
+    ``unit`` (an id of the tile holding the window's centre).
+    """
+    score = np.asarray(local["score"], float)
+    t = float(tile_size)
+    out = {c: {"score": [], "unit": []} for c in ("border", "interior")}
+    if score.size:
+        sd = float(local["window"])
+        for r in range(score.shape[0]):
+            for c in range(score.shape[1]):
+                v = score[r, c]
+                if not np.isfinite(v):
+                    continue
+                wx, wy = local["x0"] + c * local["step"], local["y0"] + r * local["step"]
+                cross = False
+                for a in (wx, wy):
+                    k0, k1 = np.ceil((a + sd / 4) / t), np.floor((a + 3 * sd / 4) / t)
+                    cross |= bool(k1 >= max(k0, 1))
+                whole = (np.floor(wx / t) == np.floor((wx + sd) / t - 1e-9)) and (np.floor(wy / t) == np.floor((wy + sd) / t - 1e-9))
+                cls = "border" if cross else ("interior" if whole else None)
+                if cls:
+                    out[cls]["score"].append(v)
+                    out[cls]["unit"].append(int(np.floor((wx + sd / 2) / t)) + 100_000 * int(np.floor((wy + sd / 2) / t)))
+    return {c: {"score": np.asarray(d["score"], float), "unit": np.asarray(d["unit"], np.int64)} for c, d in out.items()}

@@ -1,0 +1,279 @@
+"""Border strips of tiled worlds against their interior (issue 19 point 4), with intervals.
+
+For each tiled method (pack, synth, ornament; program's partitions are exact, see
+tests/worlds/test_program_tiles.py) a world of several thousand elements per border strip
+is made tile by tile (:func:`strew.tiles.tiled`, default halo) for a few seeds, and the
+same world untiled (one run of the method, the control: the same statistics on the same
+lines, where no border exists).
+
+Definitions (the same for every method):
+
+- spacing ``s = 1 / sqrt(density)`` (the world's mean element spacing);
+- the *strips*: centres within ``2 s`` of an inner tile border (a band ``4 s`` wide
+  about each border line; also reported at ``1 s``); the *interior*: every other centre.
+  Both leave out the world's own edge band (a halo, at least ``3 s``: the world's edge
+  is no border);
+- the *units*: the tiles of all seeds. A statistic is a ratio of sums over units, and its
+  95 % interval is the percentile interval of 2,000 bootstrap resamples of the units
+  (so the tile-to-tile and seed-to-seed variation are in it);
+- density ratio: (strip count / strip area) / (interior count / interior area);
+  kind-fraction ratio of kind k: (strip share of k) / (interior share of k);
+- fidelity (:func:`strew.metrics.fidelity`, local map; synth against its exemplar, pack
+  and ornament against an untiled run of the method on a square of about one tile): a
+  *border window* has a tile border crossing its middle half, an *interior window* lies
+  inside one tile; per class the median window score, the mean score and the share of
+  failing windows (score > 1), their ratios with bootstrap intervals over the tiles
+  holding the windows' centres;
+- overlaps: pairs of elements whose intersection has area > 1e-9 (shapely, exact
+  polygons), all pairs and those across tiles;
+- grid: the centres' density folded modulo the tile size across the borders (x and y
+  pooled, the inner tiles only, so that the world's edges do not fold onto the
+  borders): chi-square against flat (its p-value), and the density of the bins within
+  ``s`` of a border against the others.
+
+Run: ``python benchmarks/worlds_strips.py [--methods pack,synth,ornament] [--seeds 1,2]
+[--quick] [--no-control]``. Writes ``benchmarks/results/worlds_strips.json``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "tests" / "worlds"))
+sys.path.insert(0, str(HERE.parent / "tests"))
+
+from world_stats import (  # noqa: E402
+    border_window_scores,
+    bootstrap_ratio,
+    folded_profile,
+    overlapping_pairs,
+    overlapping_pairs_across,
+    profile_test,
+    strip_units,
+)
+
+def _configs(quick: bool) -> dict:
+    """method -> (input, world side, tile size, params, fidelity exemplar maker)."""
+    import strew
+    from strew_testing import fidelity_suite
+
+    bar_disc = {"bar": strew.Shape.rectangle(3, 1.5), "disc": strew.Shape.circle(1.0, 16)}
+    two = fidelity_suite().make_exemplar("two_sizes")  # frame 220, stones and pebbles
+
+    def pack_ex():
+        from strew.pack import pack
+
+        return pack(bar_disc, strew.Region.rectangle(60, 60), rng=0)
+
+    def orn_ex():
+        from strew.ornament import grow_ornament
+
+        return grow_ornament("flowers", strew.Region.rectangle(60, 60), rng=0)
+
+    return {
+        # ~1,400 elements a tile (benchmarks/worlds.py's pack world)
+        "pack": dict(input=bar_disc, side=400.0 if quick else 800.0, tile=100.0, params={}, exemplar=pack_ex),
+        # tiles of 2 exemplar frames (fidelity's window, about a frame, fits inside a tile)
+        "synth": dict(input=two, side=1320.0 if quick else 2640.0, tile=440.0, params={"measure": False}, exemplar=lambda: two),
+        # flowers: 4 kinds (stem, leaf, flower, bud)
+        "ornament": dict(input="flowers", side=360.0 if quick else 480.0, tile=120.0, params={}, exemplar=orn_ex),
+    }
+
+
+def _cpu() -> float:
+    return time.process_time()
+
+
+def measure_world(arr, size, tile, halo, spacing, exemplar=None) -> dict:
+    """Per-unit strip counts (two widths), overlaps, folded profile and border windows of one world."""
+    out: dict = {"elements": len(arr)}
+    # the world's own edge band: a halo, and at least 3 spacings (an untiled pack's
+    # density differs within about 1.5 spacings of the region's edge)
+    margin = max(halo, 3.0 * spacing)
+    for mult in (2.0, 1.0):
+        out[f"units_{mult:g}s"] = strip_units(arr, size, tile, mult * spacing, margin)
+    t0 = _cpu()
+    out["overlaps"] = overlapping_pairs(arr)
+    if "tile" in arr.columns:
+        out["overlaps_across_tiles"] = overlapping_pairs_across(arr, arr["tile"])
+    out["overlap_cpu_s"] = _cpu() - t0
+    out["profile"] = folded_profile(arr, size, tile, spacing)
+    if exemplar is not None:
+        from strew.metrics import fidelity
+
+        t0 = _cpu()
+        rep = fidelity(exemplar, arr, eq5=False, local=True)
+        out["fidelity_cpu_s"] = _cpu() - t0
+        out["faithful"] = bool(rep.faithful)
+        out["windows"] = border_window_scores(rep.local, tile)
+    return out
+
+
+def summarize(worlds: list[dict], boot: int, rng: np.random.Generator, kinds: list[str]) -> dict:
+    """Ratios and intervals pooled over the worlds' tiles."""
+    res: dict = {}
+    for key in [k for k in worlds[0] if k.startswith("units_")]:
+        units = {f: np.concatenate([w[key][f] for w in worlds]) for f in worlds[0][key] if f != "kinds"}
+        # density: (sum strip / sum strip area) / (sum interior / sum interior area)
+        dens = bootstrap_ratio([units["strip"], units["strip_area"], units["inner"], units["inner_area"]],
+                               lambda s, sa, i, ia: (s.sum() / sa.sum()) / (i.sum() / ia.sum()), boot, rng)
+        kd = {}
+        for k, name in enumerate(kinds):
+            kd[name] = bootstrap_ratio([units["strip_kind"][:, k], units["strip"], units["inner_kind"][:, k], units["inner"]],
+                                       lambda sk, s, ik, i: (sk.sum() / s.sum()) / (ik.sum() / max(i.sum(), 1)), boot, rng)
+        res[key] = {"strip_elements": int(units["strip"].sum()), "interior_elements": int(units["inner"].sum()),
+                    "units": int(len(units["strip"])), "density_ratio": dens, "kind_fraction_ratio": kd}
+    prof = [w["profile"] for w in worlds]
+    counts = np.sum([p["counts"] for p in prof], axis=0)
+    res["profile"] = profile_test(counts, prof[0]["exposure"], prof[0]["near_bins"])
+    res["overlaps"] = int(sum(w["overlaps"] for w in worlds))
+    if "overlaps_across_tiles" in worlds[0]:
+        res["overlaps_across_tiles"] = int(sum(w["overlaps_across_tiles"] for w in worlds))
+    if "windows" in worlds[0]:
+        win = {c: {f: np.concatenate([w["windows"][c][f] for w in worlds]) for f in ("score", "unit")} for c in ("border", "interior")}
+        # units: (world, tile) pairs, so that resampling keeps a tile's windows together
+        for c in win:
+            win[c]["unit"] = np.concatenate([w["windows"][c]["unit"] + 1_000_000 * i for i, w in enumerate(worlds)])
+        res["fidelity"] = fidelity_summary(win, boot, rng)
+        res["faithful"] = [w["faithful"] for w in worlds]
+    return res
+
+
+def fidelity_summary(win: dict, boot: int, rng: np.random.Generator) -> dict:
+    """Median / mean score and failing share of border vs interior windows, ratios with
+    intervals from resampling the tiles (a tile's windows together)."""
+    b, i = win["border"], win["interior"]
+    units = np.union1d(b["unit"], i["unit"])
+    bi = {u: np.flatnonzero(b["unit"] == u) for u in units}
+    ii = {u: np.flatnonzero(i["unit"] == u) for u in units}
+
+    def stats(sb, si):
+        return {"median": (np.median(sb), np.median(si)), "mean": (np.mean(sb), np.mean(si)),
+                "failing": (np.mean(sb > 1), np.mean(si > 1))}
+
+    point = stats(b["score"], i["score"])
+    draws: dict = {k: [] for k in point}
+    for _ in range(boot):
+        pick = rng.choice(units, len(units))
+        sb = b["score"][np.concatenate([bi[u] for u in pick])]
+        si = i["score"][np.concatenate([ii[u] for u in pick])]
+        if not (len(sb) and len(si)):
+            continue
+        for k, (x, y) in stats(sb, si).items():
+            draws[k].append((x, y))
+    out = {"border_windows": int(len(b["score"])), "interior_windows": int(len(i["score"]))}
+    for k, (x, y) in point.items():
+        d = np.array(draws[k])
+        row = {"border": float(x), "interior": float(y), "border_ci": [float(v) for v in np.percentile(d[:, 0], [2.5, 97.5])],
+               "interior_ci": [float(v) for v in np.percentile(d[:, 1], [2.5, 97.5])]}
+        if k != "failing":
+            r = d[:, 0] / d[:, 1]
+            row.update(ratio=float(x / y), ratio_ci=[float(v) for v in np.percentile(r, [2.5, 97.5])])
+        else:
+            diff = d[:, 0] - d[:, 1]
+            row.update(difference=float(x - y), difference_ci=[float(v) for v in np.percentile(diff, [2.5, 97.5])])
+        out[k] = row
+    return out
+
+
+def _fmt(r: dict) -> str:
+    return f"{r['value']:.3f} [{r['ci'][0]:.3f}, {r['ci'][1]:.3f}]"
+
+
+def report(method: str, mode: str, s: dict) -> None:
+    for key in [k for k in s if k.startswith("units_")]:
+        v = s[key]
+        kinds = ", ".join(f"{k} {_fmt(r)}" for k, r in v["kind_fraction_ratio"].items())
+        print(f"  {method:8s} {mode:8s} strips +-{key[6:]}: {v['strip_elements']:,} strip / {v['interior_elements']:,} interior el, "
+              f"{v['units']} tiles: density ratio {_fmt(v['density_ratio'])}; kind-fraction ratios {kinds}", flush=True)
+    p = s["profile"]
+    print(f"  {method:8s} {mode:8s} folded profile ({p['bins']} bins of the tile): chi2/dof {p['chi2_dof']:.2f} (p {p['p']:.3f}); "
+          f"bins within 1 s of a border {_fmt(p['near_ratio'])} x the others; overlaps {s['overlaps']}"
+          + (f" (across tiles {s['overlaps_across_tiles']})" if "overlaps_across_tiles" in s else ""), flush=True)
+    if "fidelity" in s:
+        f = s["fidelity"]
+        print(f"  {method:8s} {mode:8s} fidelity windows: {f['border_windows']} border / {f['interior_windows']} interior; "
+              f"median score {f['median']['border']:.3f} / {f['median']['interior']:.3f} = {f['median']['ratio']:.3f} "
+              f"[{f['median']['ratio_ci'][0]:.3f}, {f['median']['ratio_ci'][1]:.3f}]; mean {f['mean']['ratio']:.3f} "
+              f"[{f['mean']['ratio_ci'][0]:.3f}, {f['mean']['ratio_ci'][1]:.3f}]; failing {f['failing']['border']:.3f} / "
+              f"{f['failing']['interior']:.3f} (difference {f['failing']['difference']:+.3f} [{f['failing']['difference_ci'][0]:+.3f}, "
+              f"{f['failing']['difference_ci'][1]:+.3f}]); faithful {s['faithful']}", flush=True)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--methods", default="pack,synth,ornament")
+    ap.add_argument("--seeds", default="1,2")
+    ap.add_argument("--quick", action="store_true", help="smaller worlds (a check of the script, wide intervals)")
+    ap.add_argument("--no-control", action="store_true", help="skip the untiled control runs")
+    ap.add_argument("--no-fidelity", action="store_true")
+    ap.add_argument("--boot", type=int, default=2000)
+    ap.add_argument("--out", default=str(HERE / "results" / "worlds_strips.json"))
+    ap.add_argument("--raw", default=None, help="also pickle the per-world measurements here")
+    args = ap.parse_args()
+    import strew
+    from strew._method import spec
+    from strew.tiles import tiled
+
+    t_all = time.perf_counter()
+    seeds = [int(v) for v in args.seeds.split(",")]
+    cfgs = _configs(args.quick)
+    result: dict = {"benchmark": "worlds_strips", "command": " ".join(["python benchmarks/worlds_strips.py", *sys.argv[1:]]),
+                    "definitions": __doc__.split("Definitions (the same for every method):")[1].split("Run:")[0].strip(),
+                    "methods": {}}
+    out_path = Path(args.out)
+    out_path.parent.mkdir(exist_ok=True)
+    for method in args.methods.split(","):
+        c = cfgs[method]
+        size = (c["side"], c["side"])
+        ex = None if args.no_fidelity else c["exemplar"]()
+        modes = ("tiled",) if args.no_control else ("tiled", "untiled")
+        per: dict = {m: [] for m in modes}
+        meta: dict = {"side": c["side"], "tile": c["tile"], "seeds": seeds}
+        for seed in seeds:
+            for mode in modes:
+                t0 = _cpu()
+                if mode == "tiled":
+                    arr = tiled(method, c["input"], size, tile_size=c["tile"], seed=seed, **c["params"])
+                    halo = float(arr.meta["world"]["halo"])
+                    meta["halo"] = halo
+                else:
+                    arr = spec(method).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
+                    halo = meta["halo"]
+                cpu = _cpu() - t0
+                spacing = 1.0 / np.sqrt(len(arr) / (size[0] * size[1]))
+                meta.setdefault("spacing", spacing)
+                meta["kinds"] = list(arr.kinds)
+                w = measure_world(arr, size, c["tile"], halo, meta["spacing"], ex)
+                w["cpu_s"] = cpu
+                per[mode].append(w)
+                print(f"  {method} {mode} seed {seed}: {len(arr):,} el in {cpu:.1f} CPU s (spacing {spacing:.2f}, halo {halo:g}); "
+                      f"overlaps {w['overlaps']}" + (f", fidelity map {w['fidelity_cpu_s']:.1f} CPU s" if 'fidelity_cpu_s' in w else ""), flush=True)
+        if args.raw:
+            import pickle
+
+            with open(f"{args.raw}.{method}.pkl", "wb") as fh:
+                pickle.dump({"world": meta, "per": per}, fh)
+        rng = np.random.default_rng(0)
+        mres = {"world": meta}
+        for mode in modes:
+            s = summarize(per[mode], args.boot, rng, meta["kinds"])
+            s["elements"] = [w["elements"] for w in per[mode]]
+            s["cpu_s"] = [w["cpu_s"] for w in per[mode]]
+            mres[mode] = s
+            report(method, mode, s)
+        result["methods"][method] = mres
+        result["total_s"] = time.perf_counter() - t_all
+        out_path.write_text(json.dumps(result, indent=1, default=float) + "\n")  # after each method
+    print(f"wrote {out_path} ({time.perf_counter() - t_all:.0f} s)")
+
+
+if __name__ == "__main__":
+    main()
