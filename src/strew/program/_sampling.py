@@ -46,8 +46,9 @@ def periodic_poisson_disk(tile: tuple[float, float, float, float], density: floa
 
     Bridson's dart throwing (30 candidates per active point) with distances measured
     around the torus, so that the set and its translates by ``W`` and ``H`` keep the disk
-    radius across the tile's edges. The radius is shrunk a little, if need be, so that a
-    whole number of background-grid cells spans each period.
+    radius across the tile's edges: :func:`strew.pack.poisson_disk` with
+    ``periodic=True`` (the library's one sampler, issue 15 point 5). The radius is capped
+    at half the tile's shorter side, where a disk would meet its own translate.
 
     Returns
     -------
@@ -57,53 +58,10 @@ def periodic_poisson_disk(tile: tuple[float, float, float, float], density: floa
     x0, y0, w, h = tile
     r = math.sqrt(DISK_PACKING / density)
     r = min(r, 0.5 * min(w, h))  # a disk wider than half the tile meets its own translate
-    cell = r / math.sqrt(2.0)
-    nx, ny = max(1, int(math.ceil(w / cell))), max(1, int(math.ceil(h / cell)))
-    cx, cy = w / nx, h / ny  # cells no larger than r / sqrt(2): one point per cell
-    grid = -np.ones((ny, nx), np.int64)
-    pts: list[tuple[float, float]] = []
-    r2 = r * r
-    reach_x, reach_y = int(math.ceil(r / cx)), int(math.ceil(r / cy))
+    from ..pack import poisson_disk as bridson
 
-    def far_enough(px: float, py: float) -> bool:
-        i, j = int(py / cy) % ny, int(px / cx) % nx
-        for di in range(-reach_y, reach_y + 1):
-            for dj in range(-reach_x, reach_x + 1):
-                k = grid[(i + di) % ny, (j + dj) % nx]
-                if k >= 0:
-                    dx = px - pts[k][0]
-                    dy = py - pts[k][1]
-                    dx -= w * math.floor(dx / w + 0.5)
-                    dy -= h * math.floor(dy / h + 0.5)
-                    if dx * dx + dy * dy < r2:
-                        return False
-        return True
-
-    def add(px: float, py: float) -> None:
-        grid[int(py / cy) % ny, int(px / cx) % nx] = len(pts)
-        pts.append((px, py))
-
-    add(float(rng.uniform(0, w)), float(rng.uniform(0, h)))
-    active = [0]
-    while active:
-        a = int(rng.integers(len(active)))
-        bx, by = pts[active[a]]
-        rad = np.sqrt(rng.uniform(r2, 4 * r2, 30))
-        ang = rng.uniform(0, 2 * math.pi, 30)
-        found = False
-        for rr, aa in zip(rad.tolist(), ang.tolist()):
-            px = (bx + rr * math.cos(aa)) % w
-            py = (by + rr * math.sin(aa)) % h
-            px, py = (0.0 if px >= w else px), (0.0 if py >= h else py)
-            if far_enough(px, py):
-                add(px, py)
-                active.append(len(pts) - 1)
-                found = True
-                break
-        if not found:
-            active[a] = active[-1]
-            active.pop()
-    return np.asarray(pts, dtype=float).reshape(-1, 2) + np.array([x0, y0])
+    pts = bridson((float(w), float(h)), r, candidates=30, rng=rng, periodic=True)
+    return pts + np.array([x0, y0])
 
 
 def periodic_poisson(tile: tuple[float, float, float, float], density: float, rng: np.random.Generator) -> np.ndarray:
