@@ -150,6 +150,8 @@ def _metric_counts(rows: list[dict[str, Any]]) -> dict[str, list[Any]]:
             key, _, vt = f.partition("=")
             v, _, t = vt.partition("/")
             ratio = float(v) / float(t) if float(t) else float("inf")
+            if ratio != ratio:  # nan: the result has too few elements to measure
+                ratio = float("inf")
             c = out.setdefault(key, [0, 0.0, ""])
             c[0] += 1
             if ratio > c[1]:
