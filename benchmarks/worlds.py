@@ -9,9 +9,14 @@ Every configuration runs in a fresh subprocess (so that its peak RSS is its own)
 (c) peak RSS of each worker process (``ru_maxrss``) at 1e5 and 1e6: bounded by the
     tile, not the world, when it stays flat.
 
-Times exclude starting the cluster (reported apart) and include writing Parquet; numba's
-kernels are loaded (or compiled) by a small warm-up world in every worker first. The
-machine is shared: the ratios are from the same run.
+Times exclude starting the cluster (reported apart; the LocalCluster is the one
+``world(workers=N)`` starts, :func:`strew.tiles._connect`) and include writing Parquet;
+numba's kernels are loaded (or compiled) by a small warm-up world in every worker first,
+and the client writes that world as Parquet (the first write imports pandas). Each run
+reports its CPU by process and thread (``cpu_by_role``: the client's main thread and IO
+loop, where the scheduler and nannies run; the workers' task threads and the rest) and
+a wall modelled on 2 idle cores from it. The machine is shared: the ratios are from the
+same run.
 
 Run: ``python benchmarks/worlds.py`` (``--quick``: 2e4 and 1e5 only; ``--repeat N``
 repeats of the speed-up pair, default 3; ``--sizes 1e5,1e6,1e7`` the sizes of (a)).
@@ -74,7 +79,13 @@ if workers > 1 or (len(sys.argv) > 6 and sys.argv[6] == "dask"):  # "dask": 1 wo
 # is not enough: its 4 tiles depend on each other and may all run on one worker, and
 # the other then loads its kernels inside the timed run (measured: 216 CPU us/el on 2
 # workers against 146 with this warm-up, 101 in-process, 500 x 500 world)
-world(method, shapes, (2 * tile, 2 * tile), tile_size=tile, seed=99, workers=workers, **kw)
+# and write the warm-up world as Parquet: the first write imports pandas and
+# pyarrow.compute (0.25 s CPU alone, up to 1 s on a busy machine), in this process
+# whatever the runner: a fixed cost, outside the timed run like the kernels' loading
+with tempfile.TemporaryDirectory() as tmp:
+    w = ParquetWriter(tmp + "/warm.parquet")
+    warm = world(method, shapes, (2 * tile, 2 * tile), tile_size=tile, seed=99, workers=workers, sink=w.write, **kw)
+    w.close(warm.shapes, warm.meta)
 if client is not None:
     client.run(lambda: world(method, shapes, (2 * tile, 2 * tile), tile_size=tile, seed=98))
 def threads():
