@@ -27,9 +27,18 @@ from .._rng import as_rng
 
 __all__ = ["poisson_disk"]
 
+_NO_CONTEXT = np.zeros((0, 2), dtype=np.float64)
+
 @numba.njit(cache=True)
-def _bridson(width: float, height: float, r: float, k: int, state: np.ndarray, max_points: int) -> np.ndarray:
-    """Bridson sampling of the rectangle [0, width) x [0, height); (n, 2) points."""
+def _bridson(width: float, height: float, r: float, k: int, state: np.ndarray, max_points: int, ctx: np.ndarray) -> np.ndarray:
+    """Bridson sampling of the rectangle [0, width) x [0, height); (n, 2) points.
+
+    ``ctx`` ((m, 2), rectangle coordinates, at most one point per background cell) are
+    fixed points around which the set is drawn: those within two cells of the rectangle
+    are obstacles (no sample within ``r`` of them) and active seeds from the start, so the
+    set reaches them (a tile next to finished ones, issue 15 point 5 / 19.1); they are not
+    returned. With ``m = 0`` the run starts from one random point, as Bridson's.
+    """
     cell = r / np.sqrt(2.0)
     gw = max(1, int(np.ceil(width / cell)))
     gh = max(1, int(np.ceil(height / cell)))
@@ -44,18 +53,35 @@ def _bridson(width: float, height: float, r: float, k: int, state: np.ndarray, m
             gxs[yy, xx] = -1e300
             gys[yy, xx] = -1e300
     cap = min(gw * gh, max_points)
-    pts = np.empty((cap, 2), dtype=np.float64)
-    active = np.empty(cap, dtype=np.int64)
+    pts = np.empty((cap + ctx.shape[0], 2), dtype=np.float64)
+    active = np.empty(cap + ctx.shape[0], dtype=np.int64)
     r2 = r * r
-    x = _next(state) * width
-    y = _next(state) * height
-    pts[0, 0] = x
-    pts[0, 1] = y
-    gxs[min(int(y / cell), gh - 1) + 2, min(int(x / cell), gw - 1) + 2] = x
-    gys[min(int(y / cell), gh - 1) + 2, min(int(x / cell), gw - 1) + 2] = y
-    active[0] = 0
-    n = 1
-    na = 1
+    n = 0
+    for c in range(ctx.shape[0]):
+        x = ctx[c, 0]
+        y = ctx[c, 1]
+        cx_ = int(np.floor(x / cell)) + 2
+        cy_ = int(np.floor(y / cell)) + 2
+        if 0 <= cx_ < gw + 4 and 0 <= cy_ < gh + 4:
+            pts[n, 0] = x
+            pts[n, 1] = y
+            gxs[cy_, cx_] = x
+            gys[cy_, cx_] = y
+            active[n] = n
+            n += 1
+    m = n  # the fixed points kept, pts[:m]
+    na = n
+    cap += m
+    if m == 0:
+        x = _next(state) * width
+        y = _next(state) * height
+        pts[0, 0] = x
+        pts[0, 1] = y
+        gxs[min(int(y / cell), gh - 1) + 2, min(int(x / cell), gw - 1) + 2] = x
+        gys[min(int(y / cell), gh - 1) + 2, min(int(x / cell), gw - 1) + 2] = y
+        active[0] = 0
+        n = 1
+        na = 1
     scan = 0  # the next cell to look at once the front has died out
     four_r2 = 4.0 * r2
     while True:
@@ -132,8 +158,9 @@ def _bridson(width: float, height: float, r: float, k: int, state: np.ndarray, m
             ccx = 0.5 * (lo_x + hi_x)
             ccy = 0.5 * (lo_y + hi_y)
             far = True
-            for yy in range(max(0, ci - 3), min(gh, ci + 4)):
-                for xx in range(max(0, cj - 3), min(gw, cj + 4)):
+            # the two padding cells too: fixed points stored there (empty: far away)
+            for yy in range(max(-2, ci - 3), min(gh + 2, ci + 4)):
+                for xx in range(max(-2, cj - 3), min(gw + 2, cj + 4)):
                     dx = gxs[yy + 2, xx + 2] - ccx
                     dy = gys[yy + 2, xx + 2] - ccy
                     if dx * dx + dy * dy < four_r2:
@@ -155,7 +182,7 @@ def _bridson(width: float, height: float, r: float, k: int, state: np.ndarray, m
                 break
         if not restarted:
             break
-    return pts[:n].copy()
+    return pts[m:n].copy()
 
 
 @numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
@@ -418,7 +445,35 @@ def _as_geometry(region: Any) -> shapely.Geometry | tuple[float, float, float, f
         if not (np.isfinite(w) and np.isfinite(h) and w > 0 and h > 0):
             raise InputError(f"region: width and height must be positive, got {w} x {h}")
         return (0.0, 0.0, w, h)
-    raise InputError(f"region: expected a Region, a shapely polygon or (W, H), got {type(region).__name__}")
+    if isinstance(region, (tuple, list)) and len(region) == 4:
+        x0, y0, x1, y1 = (float(v) for v in region)
+        if not (np.all(np.isfinite([x0, y0, x1, y1])) and x1 > x0 and y1 > y0):
+            raise InputError(f"region: bounds (x0, y0, x1, y1) must have x1 > x0 and y1 > y0, got {tuple(region)}")
+        return (x0, y0, x1, y1)
+    raise InputError(f"region: expected a Region, a shapely polygon, (W, H) or (x0, y0, x1, y1), got {type(region).__name__}")
+
+
+def _context_cells(context: Any, x0: float, y0: float, w: float, h: float, radius: float) -> np.ndarray:
+    """The points of ``context`` that :func:`_bridson` keeps (within its two padding cells
+    of the rectangle), in rectangle coordinates, C-contiguous (m, 2); refuses two in one
+    background cell (closer than ``radius``: the grid holds one point a cell)."""
+    try:
+        ctx = np.asarray(context, dtype=np.float64).reshape(-1, 2)
+    except (TypeError, ValueError):
+        raise InputError(f"context: expected (m, 2) points, got {np.shape(context)}") from None
+    if not np.all(np.isfinite(ctx)):
+        raise InputError("context: points must be finite")
+    rel = ctx - np.array([x0, y0])
+    cell = radius / np.sqrt(2.0)  # as _bridson's
+    gw = max(1, int(np.ceil(w / cell)))
+    gh = max(1, int(np.ceil(h / cell)))
+    ij = np.floor(rel / cell) + 2  # the padded grid's cells, as _bridson computes them
+    near = (ij[:, 0] >= 0) & (ij[:, 0] < gw + 4) & (ij[:, 1] >= 0) & (ij[:, 1] < gh + 4)
+    rel, ij = rel[near], ij[near].astype(np.int64)
+    flat = ij[:, 1] * (gw + 4) + ij[:, 0]
+    if len(np.unique(flat)) < len(flat):
+        raise InputError(f"context: two points are closer than the radius {radius:g} (context must be a Poisson-disk set of that radius)")
+    return np.ascontiguousarray(rel)
 
 
 def poisson_disk(
@@ -429,6 +484,7 @@ def poisson_disk(
     max_points: int = 50_000_000,
     rng: int | np.random.Generator | None = None,
     periodic: bool = False,
+    context: np.ndarray | None = None,
 ) -> np.ndarray:
     """Poisson-disk points in a region: no two closer than ``radius``.
 
@@ -438,8 +494,9 @@ def poisson_disk(
 
     Parameters
     ----------
-    region : Region, shapely (Multi)Polygon or (W, H)
-        ``(W, H)`` means the rectangle ``[0, W) x [0, H)``.
+    region : Region, shapely (Multi)Polygon, (W, H) or (x0, y0, x1, y1)
+        ``(W, H)`` means the rectangle ``[0, W) x [0, H)``, ``(x0, y0, x1, y1)`` the
+        half-open rectangle ``[x0, x1) x [y0, y1)``.
     radius : float or callable
         Minimum distance between two points (as ``scipy.stats.qmc.PoissonDisk``'s
         ``radius``). A callable ``radius(points) -> radii`` (``(m, 2)`` to ``(m,)``,
@@ -455,6 +512,15 @@ def poisson_disk(
         Sample the torus of a rectangular region (issue 18): distances wrap around its
         edges, so that copies of the points laid side by side keep ``radius`` apart
         across the seams too. Needs a constant ``radius``.
+    context : (m, 2) float, optional
+        Fixed points to sample around (a Poisson-disk set of the same ``radius``: no two
+        closer than it): no returned point comes within ``radius`` of one, and those
+        near the bounding box also seed the dart throwing, so the set reaches them
+        without a gap. A tile sampled around its finished neighbours' points this way
+        joins them into one Poisson-disk set (program's tiled worlds, issue 19.1). They
+        are not returned. Needs a constant ``radius`` and ``periodic=False``; without
+        context the run starts from one random point (Bridson's), with it from the
+        context points.
 
     Returns
     -------
@@ -466,6 +532,9 @@ def poisson_disk(
     >>> pts = poisson_disk((1.0, 1.0), 0.1, rng=0)
     >>> from scipy.spatial.distance import pdist
     >>> bool(pdist(pts).min() >= 0.1)
+    True
+    >>> right = poisson_disk((1.0, 0.0, 2.0, 1.0), 0.1, rng=1, context=pts)
+    >>> bool(pdist(np.r_[pts, right]).min() >= 0.1)
     True
     """
     if not callable(radius):
@@ -479,12 +548,17 @@ def poisson_disk(
         raise InputError(f"candidates: must be at least 1, got {candidates}")
     gen = as_rng(rng)
     geom = _as_geometry(region)
+    if context is not None and (periodic or callable(radius)):
+        raise InputError("context: needs a constant radius and periodic=False")
     if periodic:
         from .._periodic import frame_of_region
 
         if callable(radius):
             raise InputError("radius: periodic sampling needs a constant radius, not a callable")
-        x0, y0, w, h = (0.0, 0.0, geom[2], geom[3]) if isinstance(geom, tuple) else frame_of_region(geom)
+        if isinstance(geom, tuple):
+            x0, y0, w, h = geom[0], geom[1], geom[2] - geom[0], geom[3] - geom[1]
+        else:
+            x0, y0, w, h = frame_of_region(geom)
         if w * h / (radius * radius) > 4 * max_points:
             raise InputError(f"radius: {radius} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
         state = seed_state(gen)
@@ -518,13 +592,18 @@ def poisson_disk(
     cells = (w / rmin * np.sqrt(2) + 1) * (h / rmin * np.sqrt(2) + 1)
     if cells > 4 * max_points:
         raise InputError(f"radius: {rmin} is too small for a region of {w:g} x {h:g} (over {max_points} points)")
-    state = seed_state(gen)
     if rmap is None:
-        pts = _bridson(float(w), float(h), radius, int(candidates), state, int(max_points))
+        ctx = _NO_CONTEXT if context is None else _context_cells(context, x0, y0, w, h, radius)
+        state = seed_state(gen)
+        pts = _bridson(float(w), float(h), radius, int(candidates), state, int(max_points), ctx)
     else:
+        state = seed_state(gen)
         pts = _bridson_variable(float(w), float(h), rmap, float(mcell), rmin, float(rmap.max()), int(candidates), state, int(max_points))
     pts[:, 0] += x0
     pts[:, 1] += y0
     if poly is not None:
         pts = pts[shapely.contains_xy(poly, pts[:, 0], pts[:, 1])]
+    elif x0 != 0.0 or y0 != 0.0:
+        # x0 + (a coordinate below x1 - x0) can round up to x1: keep the rectangle half-open
+        pts = pts[(pts[:, 0] < x1) & (pts[:, 1] < y1)]
     return pts

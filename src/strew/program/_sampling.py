@@ -79,8 +79,10 @@ def tile_poisson_disk(rect: tuple[float, float, float, float], density: float, c
     with the points of ``context`` ((m, 2): the sites of the tile's lower-phase
     neighbours, Wei 2008's phase groups) as obstacles: no point comes within the radius
     of a context point, so the tiles' sets together are one Poisson-disk set of the
-    world (issue 19.1, program's partitions tiled). Every active point also seeds from the
-    context near the rectangle, so the set reaches the finished borders.
+    world (issue 19.1, program's partitions tiled). The context near the rectangle seeds
+    the dart throwing, so the set reaches the finished borders. This is
+    :func:`strew.pack.poisson_disk` with ``context`` (the library's one compiled sampler,
+    issue 15 point 5); phase-0 tiles, with no context, start from a random point.
 
     Returns
     -------
@@ -88,69 +90,11 @@ def tile_poisson_disk(rect: tuple[float, float, float, float], density: float, c
         Points in ``[x0, x1) x [y0, y1)``, in generation order.
     """
     x0, y0, x1, y1 = (float(v) for v in rect)
-    w, h = x1 - x0, y1 - y0
     r = math.sqrt(DISK_PACKING / density)
-    r2 = r * r
-    cell = r / math.sqrt(2.0)  # at most one point per background cell
-    pad = 2  # cells around the rectangle, for the context points within r of it
-    gx, gy = max(1, int(math.ceil(w / cell))) + 2 * pad, max(1, int(math.ceil(h / cell))) + 2 * pad
-    grid = [-1] * (gx * gy)
-    xs: list[float] = []
-    ys: list[float] = []
-    offs = [(di, dj) for dj in range(-2, 3) for di in range(-2, 3) if abs(di) + abs(dj) < 4]
-
-    def far_enough(px: float, py: float) -> bool:
-        ci, cj = int((px - x0) / cell + pad), int((py - y0) / cell + pad)
-        for di, dj in offs:
-            i, j = ci + di, cj + dj
-            if 0 <= i < gx and 0 <= j < gy:
-                k = grid[j * gx + i]
-                if k >= 0:
-                    dx, dy = px - xs[k], py - ys[k]
-                    if dx * dx + dy * dy < r2:
-                        return False
-        return True
-
-    def add(px: float, py: float) -> int:
-        ci, cj = int((px - x0) / cell + pad), int((py - y0) / cell + pad)
-        if 0 <= ci < gx and 0 <= cj < gy:
-            grid[cj * gx + ci] = len(xs)
-        xs.append(px)
-        ys.append(py)
-        return len(xs) - 1
+    from ..pack import poisson_disk as bridson
 
     ctx = np.asarray(context, float).reshape(-1, 2)
-    reach = pad * cell
-    near = (ctx[:, 0] >= x0 - reach) & (ctx[:, 0] < x1 + reach) & (ctx[:, 1] >= y0 - reach) & (ctx[:, 1] < y1 + reach)
-    n_ctx = 0
-    for px, py in ctx[near].tolist():
-        add(px, py)
-        n_ctx += 1
-    active: list[int] = []
-    # a first point: a few random darts into the rectangle (it may be covered already)
-    for _ in range(30):
-        px, py = x0 + float(rng.uniform(0, w)), y0 + float(rng.uniform(0, h))
-        if px < x1 and py < y1 and far_enough(px, py):
-            active.append(add(px, py))
-            break
-    # context points next to the rectangle grow into it too (no gap along a finished border)
-    active += list(range(n_ctx))
-    while active:
-        a = int(rng.integers(len(active)))
-        bx, by = xs[active[a]], ys[active[a]]
-        rad = np.sqrt(rng.uniform(r2, 4 * r2, 30))
-        ang = rng.uniform(0, 2 * math.pi, 30)
-        found = False
-        for rr, aa in zip(rad.tolist(), ang.tolist()):
-            px, py = bx + rr * math.cos(aa), by + rr * math.sin(aa)
-            if x0 <= px < x1 and y0 <= py < y1 and far_enough(px, py):
-                active.append(add(px, py))
-                found = True
-                break
-        if not found:
-            active[a] = active[-1]
-            active.pop()
-    return np.c_[xs[n_ctx:], ys[n_ctx:]].reshape(-1, 2).astype(float)
+    return bridson((x0, y0, x1, y1), r, candidates=30, rng=rng, context=ctx)
 
 
 def tile_poisson(rect: tuple[float, float, float, float], density: float, rng: np.random.Generator) -> np.ndarray:
