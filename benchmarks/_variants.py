@@ -192,12 +192,22 @@ def _write_summary(path: Path, key: str, title: str, rows: list[dict[str, Any]],
     path.write_text(text)
 
 
-def audit(bench_name: str, method: str, run: Callable[[Arrangement, float, int], tuple[Arrangement, float]], doc: str, *, default_skip: tuple[str, ...] = ()) -> None:
+def audit(
+    bench_name: str | Callable[[Any], str],
+    method: str | Callable[[Any], str],
+    run: Callable[[Arrangement, float, int, Any], tuple[Arrangement, float]],
+    doc: str,
+    *,
+    options: Callable[[Any], None] | None = None,
+    default_skip: tuple[str, ...] = (),
+) -> None:
     """The variant audit of one method.
 
-    ``run(exemplar, scale, seed) -> (output, scale used)`` fills a rectangle ``scale``
-    times the exemplar frame's side (the method may enlarge it; it says by how much).
-    ``default_skip``: classes left out unless named by ``--only``.
+    ``run(exemplar, scale, seed, args) -> (output, scale used)`` fills a rectangle
+    ``scale`` times the exemplar frame's side (the method may enlarge it; it says by how
+    much). ``options(parser)`` adds the method's own flags; ``bench_name`` and ``method``
+    may be functions of the parsed ``args``. ``default_skip``: classes left out unless
+    named by ``--only``.
     """
 
     def extra(p: Any) -> None:
@@ -207,8 +217,12 @@ def audit(bench_name: str, method: str, run: Callable[[Arrangement, float, int],
         p.add_argument("--varied", action="store_true", help="also the VARIED and EDGE parameter sets (variant seeds 7, 8)")
         p.add_argument("--scale", type=float, default=3.5, help="region side / exemplar frame side")
         p.add_argument("--summary", default=None, help="markdown file whose block for this run is rewritten after every class (pass counts, failing metrics)")
+        if options is not None:
+            options(p)
 
     args = parse_args(doc.splitlines()[0], extra)
+    bench_name = bench_name(args) if callable(bench_name) else bench_name
+    method = method(args) if callable(method) else method
     mk = fidelity_suite()
     names = [n for n in mk.NAMES if n not in default_skip] if not args.only else args.only.split(",")
     seeds = ints(args.seeds)
@@ -236,7 +250,7 @@ def audit(bench_name: str, method: str, run: Callable[[Arrangement, float, int],
                 print(f"  {name:13s} {label:6s} WARNING: {bad} overlapping pairs in the exemplar", flush=True)
             for seed in seeds:
                 t0 = time.process_time()
-                out, scale = run(ex, args.scale, seed)
+                out, scale = run(ex, args.scale, seed, args)
                 dt = time.process_time() - t0
                 rep = fidelity(ex, out, eq5=False, local=False)
                 fails = [f"{k}={m.value:.3g}/{m.tolerance:.3g}" for k, m in rep.metrics.items() if m.applicable and not m.passed]

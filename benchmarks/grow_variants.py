@@ -1,4 +1,4 @@
-"""Issue 14 point 1 on exemplars nobody tuned on: grow (fixed mode) on untuned variants
+"""Issue 14 point 1 on exemplars nobody tuned on: grow (fixed mode; --mode rotate) on untuned variants
 of the fidelity suite's classes.
 
 The cases are ``synth_variants.py``'s (``_variants.py``): ``make_exemplar(name,
@@ -20,7 +20,7 @@ the figure is the pass rate, compared before/after a change by running this on b
 from __future__ import annotations
 
 import math
-import sys
+from typing import Any
 
 from _variants import audit
 
@@ -28,29 +28,20 @@ from strew import Arrangement, Region
 from strew.grow import grow
 
 
-def _flag(name: str, default: str) -> str:
-    """A flag of this script only, taken out of argv before the shared parser sees it."""
-    if name in sys.argv:
-        i = sys.argv.index(name)
-        value = sys.argv[i + 1]
-        del sys.argv[i : i + 2]
-        return value
-    return default
+def options(p: Any) -> None:
+    p.add_argument("--mode", default="fixed", choices=["fixed", "rotate"], help="grow's mode (JSON: grow_variants.json, grow_variants_rotate.json)")
+    p.add_argument("--times", type=float, default=10.0, help="least output count / exemplar count: the region is enlarged once to reach it")
 
 
-MODE = _flag("--mode", "fixed")
-TIMES = float(_flag("--times", "10"))
-
-
-def run(ex: Arrangement, scale: float, seed: int) -> tuple[Arrangement, float]:
+def run(ex: Arrangement, scale: float, seed: int, args: Any) -> tuple[Arrangement, float]:
     x0, y0, x1, y1 = ex.region.bounds
     for _ in range(2):
-        out = grow(ex, region=Region.rectangle(scale * (x1 - x0), scale * (y1 - y0)), mode=MODE, rng=seed)
-        if len(out) >= TIMES * len(ex):
+        out = grow(ex, region=Region.rectangle(scale * (x1 - x0), scale * (y1 - y0)), mode=args.mode, rng=seed)
+        if len(out) >= args.times * len(ex):
             break
-        scale *= 1.05 * math.sqrt(TIMES * len(ex) / max(len(out), 1))
+        scale *= 1.05 * math.sqrt(args.times * len(ex) / max(len(out), 1))
     return out, scale
 
 
 if __name__ == "__main__":
-    audit("grow_variants" if MODE == "fixed" else f"grow_variants_{MODE}", f"grow:{MODE}", run, __doc__)
+    audit(lambda a: "grow_variants" if a.mode == "fixed" else f"grow_variants_{a.mode}", lambda a: f"grow:{a.mode}", run, __doc__, options=options)

@@ -18,13 +18,15 @@ change by running this script on both. Sticks (synth takes about 40 s each) only
 
 from __future__ import annotations
 
+from typing import Any
+
 from _variants import audit
 
 from strew import Arrangement, Region
 from strew.synth import synthesize
 
 
-def run(ex: Arrangement, scale: float, seed: int) -> tuple[Arrangement, float]:
+def run(ex: Arrangement, scale: float, seed: int, args: Any) -> tuple[Arrangement, float]:
     x0, y0, x1, y1 = ex.region.bounds
     region = Region.rectangle(scale * (x1 - x0), scale * (y1 - y0))
     return synthesize(ex, region, rng=seed, measure=False), scale
