@@ -189,15 +189,32 @@ def _segments(geoms: list) -> tuple[np.ndarray, np.ndarray]:
 
 @numba.njit(cache=True)
 def _occupy(d, x0, y0, cell, segs, offsets, bounds, grow):  # pragma: no cover - numba
+    """Mark the regions ``segs[offsets[g]:offsets[g + 1]]`` (boxes ``bounds``) as
+    obstacles in ``d``: 0 at the pixel centres inside, the smaller of the current value
+    and the exact distance to the edges elsewhere, within ``grow`` of each box.
+
+    Inside-ness comes from each row's sorted crossings (the shared scanline's
+    :func:`strew._kernels.raster.row_crossings`, found once a row and only for rows that
+    reach the test), not from a crossing test per pixel and edge."""
     rows, cols = d.shape
+    xs = np.empty(max(len(segs), 1))
     for g in range(len(offsets) - 1):
         s0, s1 = offsets[g], offsets[g + 1]
+        ylo = np.inf
+        yhi = -np.inf
+        for s in range(s0, s1):
+            ylo = min(ylo, segs[s, 1], segs[s, 3])
+            yhi = max(yhi, segs[s, 1], segs[s, 3])
         c0 = max(int(np.floor((bounds[g, 0] - grow - x0) / cell)), 0)
         r0 = max(int(np.floor((bounds[g, 1] - grow - y0) / cell)), 0)
         c1 = min(int(np.ceil((bounds[g, 2] + grow - x0) / cell)) + 1, cols)
         r1 = min(int(np.ceil((bounds[g, 3] + grow - y0) / cell)) + 1, rows)
         for r in range(r0, r1):
             py = y0 + (r + 0.5) * cell
+            m = -1  # crossings not found yet (0 outside the edges' y range)
+            if py < ylo or py >= yhi:
+                m = 0
+            j = 0
             for c in range(c0, c1):
                 cur = d[r, c]
                 if cur <= 0.0:
@@ -209,24 +226,19 @@ def _occupy(d, x0, y0, cell, segs, offsets, bounds, grow):  # pragma: no cover -
                 by = max(bounds[g, 1] - py, 0.0, py - bounds[g, 3])
                 if bx * bx + by * by >= cur * cur:
                     continue
+                if m < 0:
+                    m = _row_crossings(segs, s0, s1, py, xs)
+                while j < m and xs[j] <= px:  # px grows along the row
+                    j += 1
+                if (m - j) & 1:  # an odd number of crossings right of px: inside
+                    d[r, c] = 0.0
+                    continue
                 best = cur * cur
-                inside = False
                 for s in range(s0, s1):
-                    ax = segs[s, 0]
-                    ay = segs[s, 1]
-                    bx = segs[s, 2]
-                    by = segs[s, 3]
-                    # even-odd crossing test
-                    if (ay > py) != (by > py):
-                        xc = ax + (py - ay) * (bx - ax) / (by - ay)
-                        if px < xc:
-                            inside = not inside
-                    dd = seg_dist2(px, py, ax, ay, bx, by)
+                    dd = seg_dist2(px, py, segs[s, 0], segs[s, 1], segs[s, 2], segs[s, 3])
                     if dd < best:
                         best = dd
-                if inside:
-                    d[r, c] = 0.0
-                elif best < cur * cur:
+                if best < cur * cur:
                     d[r, c] = np.sqrt(best)
 
 
@@ -261,7 +273,12 @@ def _occupy_posed(d, x0, y0, cell, cell_y, segs, bounds, grow, tx, ty, c, sn, lb
         ey[k] = segs[k, 3] - segs[k, 1]
         l2 = ex[k] * ex[k] + ey[k] * ey[k]
         il2[k] = 1.0 / l2 if l2 > 0.0 else 0.0
-    xs = np.empty(ns)
+    xs = np.empty(max(ns, 1))
+    ylo = np.inf
+    yhi = -np.inf
+    for k in range(ns):
+        ylo = min(ylo, segs[k, 1], segs[k, 3])
+        yhi = max(yhi, segs[k, 1], segs[k, 3])
     s2 = c * c + sn * sn
     c0 = max(int(np.floor((bounds[0] - grow - x0) / cell)), 0)
     r0 = max(int(np.floor((bounds[1] - grow - y0) / cell_y)), 0)
@@ -269,7 +286,12 @@ def _occupy_posed(d, x0, y0, cell, cell_y, segs, bounds, grow, tx, ty, c, sn, lb
     r1 = min(int(np.ceil((bounds[3] + grow - y0) / cell_y)) + 1, rows)
     for r in range(r0, r1):
         py = y0 + (r + 0.5) * cell_y
-        m = _row_crossings(segs, 0, ns, py, xs)  # the shared scanline's (half-open in y)
+        # the row's sorted crossings (the shared scanline's, half-open in y), found when a
+        # pixel of the row first reaches the inside test; none outside the edges' y range
+        m = -1
+        if py < ylo or py >= yhi:
+            m = 0
+        j = 0
         for cc in range(c0, c1):
             cur = d[r, cc]
             if cur <= 0.0:
@@ -288,11 +310,11 @@ def _occupy_posed(d, x0, y0, cell, cell_y, segs, bounds, grow, tx, ty, c, sn, lb
             oy = max(lbb[1] - ly, 0.0, ly - lbb[3])
             if (ox * ox + oy * oy) * s2 >= cur * cur:
                 continue
-            inside = False
-            for j in range(m):
-                if px < xs[j]:
-                    inside = not inside
-            if inside:
+            if m < 0:
+                m = _row_crossings(segs, 0, ns, py, xs)
+            while j < m and xs[j] <= px:  # px grows along the row
+                j += 1
+            if (m - j) & 1:  # an odd number of crossings right of px: inside
                 d[r, cc] = 0.0
                 continue
             best = _seg_dist2(px, py, ax, ay, ex, ey, il2, cur * cur)
