@@ -39,9 +39,11 @@ keeps the cells it drew), so all tiles can run at once.
 
 Departures (issue 19.1; the paper evaluates a script once, on one region): the field's
 sites are a Poisson-disk set drawn cell by cell (Wei's phases) rather than one Bridson
-run, and face, edge and vertex labels of the non-regular partitions are drawn per cell
-from hashes instead of from one stream in the order of the cells (§5.1 asks only for
-the given apparition probabilities).
+run (each cell by :func:`strew.pack.poisson_disk` with its lower-phase neighbours' sites
+as ``context``: obstacles and seeds of the same compiled Bridson, issue 15 point 5), and
+face, edge and vertex labels of the non-regular partitions are drawn per cell from hashes
+instead of from one stream in the order of the cells (§5.1 asks only for the given
+apparition probabilities).
 """
 
 from __future__ import annotations
