@@ -677,6 +677,11 @@ def _run_dask(client: Any, job: _Job, tiles: list[Tile], nx: int, ny: int, done:
     now 10.6 (pack, 100 tiles of 30, 12,802 elements, 2 workers, medians of 3 on a loaded
     machine: 141 against 83 us per element); on tiles of 100, 17.0 against 13.8 us per
     element (medians of 2). A tile's inputs are the same, so its result is.
+
+    Memory: a finished tile stays on its worker until its last dependent ran. The
+    scheduler runs the graph in dask.order's priorities, a front sweeping the grid: at
+    most 62 of 729 tiles (27 x 27) wait for dependents in that order, against 560 bands
+    in the phase order the tiles were submitted in before (dask.order.order on the graph).
     """
     from dask.distributed import as_completed
 
