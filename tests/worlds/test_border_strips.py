@@ -82,3 +82,17 @@ def test_no_grid_in_the_density_folded_modulo_the_tile(world):
     cn = np.asarray(t["counts"])[p["near_bins"]].sum()
     cf = np.asarray(t["counts"])[~p["near_bins"]].sum()
     assert abs(np.log(r)) < TOL + Z * np.sqrt(1 / cn + 1 / cf), r
+
+
+def test_every_phase_has_the_density_of_the_others(world):
+    # a tile of phase 0 runs alone, those of phases 1-3 around finished neighbours: a
+    # stationary world has one density in all (a checkerboard in the overview otherwise)
+    a, s, halo = world
+    u = strip_units(a, SIZE, TILE, 2 * s, max(halo, 3 * s))
+    c, area = u["strip"] + u["inner"], u["strip_area"] + u["inner_area"]
+    for p in range(4):
+        m = u["phase"] == p
+        assert m.sum() in (4, 6)  # 5 x 4 tiles: 6, 4, 6, 4
+        r = (c[m].sum() / area[m].sum()) / (c[~m].sum() / area[~m].sum())
+        se = np.sqrt(1 / c[m].sum() + 1 / c[~m].sum())
+        assert abs(np.log(r)) < TOL + Z * se, (p, r, se)

@@ -65,7 +65,8 @@ def strip_units(arr, size, tile_size: float, width: float, margin: float) -> dic
     the world's own edge band ``margin`` count in neither. Per tile (row-major, the tile
     holding the centre): ``strip``, ``inner`` (counts), ``strip_area``, ``inner_area``
     (exact areas of the two sets in the tile, ``width`` under half a tile) and
-    ``strip_kind``, ``inner_kind`` ((tiles, kinds) counts by kind index).
+    ``strip_kind``, ``inner_kind`` ((tiles, kinds) counts by kind index) and ``phase``
+    (the tile's phase in strew.tiles' 2 x 2 colouring).
     """
     w, h = size
     t = float(tile_size)
@@ -106,6 +107,8 @@ def strip_units(arr, size, tile_size: float, width: float, margin: float) -> dic
             ia[jj * nx + ii] = ex * ey
             sa[jj * nx + ii] = fx * fy - ex * ey
     out["strip_area"], out["inner_area"] = sa, ia
+    jj, ii = np.divmod(np.arange(n), nx)
+    out["phase"] = ((jj % 2) * 2 + ii % 2).astype(float)  # strew.tiles' 2 x 2 phases
     return out
 
 
@@ -197,3 +200,31 @@ def border_window_scores(local: dict, tile_size: float) -> dict:
                     out[cls]["score"].append(v)
                     out[cls]["unit"].append(int(np.floor((wx + sd / 2) / t)) + 100_000 * int(np.floor((wy + sd / 2) / t)))
     return {c: {"score": np.asarray(d["score"], float), "unit": np.asarray(d["unit"], np.int64)} for c, d in out.items()}
+
+
+def signed_profile(arr, size, tile_size: float, spacing: float, reach: float = 3.0) -> dict:
+    """Centres by signed distance to the nearest inner border, positive into the tile of
+    the later phase (``strew.tiles``: phase ``(j % 2) * 2 + i % 2``), in bins of half a
+    ``spacing`` out to ``reach`` spacings; the inner tiles' part of each border only
+    (both tiles off the world's edge). ``counts``: (kinds + 1, bins), all kinds first;
+    ``edges`` in spacings."""
+    w, h = size
+    t = float(tile_size)
+    nx, ny = int(round(w / t)), int(round(h / t))
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    kind = np.asarray(arr.kind, np.int64)
+    edges = np.arange(-2 * reach, 2 * reach + 0.5) * 0.5 * spacing
+    counts = np.zeros((len(arr.kinds) + 1, len(edges) - 1), np.int64)
+    for v, o, n_along, n_other in ((x, y, nx, ny), (y, x, ny, nx)):
+        k = np.round(v / t)
+        d = v - k * t
+        oi = np.floor(o / t).astype(np.int64)
+        ok = (k >= 1) & (k <= n_along - 1) & (np.abs(d) < edges[-1]) & (oi >= 1) & (oi <= n_other - 2)
+        lo, hi = (k - 1).astype(np.int64), k.astype(np.int64)
+        p_lo = (oi % 2) * 2 + lo % 2 if v is x else (lo % 2) * 2 + oi % 2
+        p_hi = (oi % 2) * 2 + hi % 2 if v is x else (hi % 2) * 2 + oi % 2
+        sd = np.where(p_hi > p_lo, d, -d)
+        counts[0] += np.histogram(sd[ok], edges)[0]
+        for q in range(len(arr.kinds)):
+            counts[q + 1] += np.histogram(sd[ok & (kind == q)], edges)[0]
+    return {"counts": counts, "edges": edges / spacing}
