@@ -13,8 +13,8 @@ It also holds the connectivity graph (``adj``, the set ``edges``), since the edg
 follows it.
 
 Both grids are the shared hashed incremental grid (:class:`strew._kernels.grid.HashGrid`,
-issue 15 point 5): unbounded cells of side ``cell`` hashed into a table of chains, the
-entries of a cell met in the order they were made. A point is listed in its cell; moving
+issue 15 point 5): unbounded cells of side ``cell`` hashed into a table of chains. A
+point is listed in its cell; moving
 it to another cell lists it anew and leaves the old entry stale, and removing it only
 marks it gone. An edge is listed in every cell its bounding box covers; a moved endpoint
 lists it anew (stale entries stay until the grid is rebuilt, and cost only a test).
