@@ -18,6 +18,8 @@ Definitions (the same for every method):
   (so the tile-to-tile and seed-to-seed variation are in it);
 - density ratio: (strip count / strip area) / (interior count / interior area);
   kind-fraction ratio of kind k: (strip share of k) / (interior share of k);
+- density by phase: each tile's density (strip and interior) by its phase in the 2 x 2
+  colouring (phase 0 runs alone, 1-3 around finished neighbours) against all tiles';
 - fidelity (:func:`strew.metrics.fidelity`, local map; synth against its exemplar, pack
   and ornament against an untiled run of the method on a square of about one tile): a
   *border window* has a tile border crossing its middle half, an *interior window* lies
@@ -56,6 +58,7 @@ from world_stats import (  # noqa: E402
     overlapping_pairs,
     overlapping_pairs_across,
     profile_test,
+    signed_profile,
     strip_units,
 )
 
@@ -87,6 +90,12 @@ def _configs(quick: bool) -> dict:
     }
 
 
+def _same(a, b) -> bool:
+    """The same elements (meta, which records the seed, aside)."""
+    return len(a) == len(b) and all(np.array_equal(np.asarray(getattr(a, f)), np.asarray(getattr(b, f)))
+                                    for f in ("x", "y", "kind", "rotation"))
+
+
 def _cpu() -> float:
     return time.process_time()
 
@@ -105,6 +114,7 @@ def measure_world(arr, size, tile, halo, spacing, exemplar=None) -> dict:
         out["overlaps_across_tiles"] = overlapping_pairs_across(arr, arr["tile"])
     out["overlap_cpu_s"] = _cpu() - t0
     out["profile"] = folded_profile(arr, size, tile, spacing)
+    out["signed"] = signed_profile(arr, size, tile, spacing)
     if exemplar is not None:
         from strew.metrics import fidelity
 
@@ -128,11 +138,24 @@ def summarize(worlds: list[dict], boot: int, rng: np.random.Generator, kinds: li
         for k, name in enumerate(kinds):
             kd[name] = bootstrap_ratio([units["strip_kind"][:, k], units["strip"], units["inner_kind"][:, k], units["inner"]],
                                        lambda sk, s, ik, i: (sk.sum() / s.sum()) / (ik.sum() / max(i.sum(), 1)), boot, rng)
-        res[key] = {"strip_elements": int(units["strip"].sum()), "interior_elements": int(units["inner"].sum()),
+        # a tile's density by its phase (strew.tiles: phase 0 runs alone, 1-3 around
+        # finished neighbours): a stationary world has the same in every phase
+        by_phase = {}
+        for p in range(4):
+            by_phase[str(p)] = bootstrap_ratio(
+                [units["strip"] + units["inner"], units["strip_area"] + units["inner_area"], units["phase"]],
+                lambda c, a, ph, p=p: (c[ph == p].sum() / max(a[ph == p].sum(), 1e-300)) / (c.sum() / a.sum()), boot, rng)
+        res[key] = {"density_by_phase": by_phase, "strip_elements": int(units["strip"].sum()), "interior_elements": int(units["inner"].sum()),
                     "units": int(len(units["strip"])), "density_ratio": dens, "kind_fraction_ratio": kd}
     prof = [w["profile"] for w in worlds]
     counts = np.sum([p["counts"] for p in prof], axis=0)
     res["profile"] = profile_test(counts, prof[0]["exposure"], prof[0]["near_bins"])
+    sc = np.sum([w["signed"]["counts"] for w in worlds], axis=0).astype(float)
+    outer = sc[0][[0, 1, -2, -1]].mean()  # the bins 2-3 spacings from the border
+    res["signed_profile"] = {"edges_in_spacings": [float(v) for v in worlds[0]["signed"]["edges"]],
+                             "relative_density": {name: [float(v) for v in row / outer]
+                                                  for name, row in zip(["all", *kinds], sc)},
+                             "note": "positive into the later tile; density relative to the bins 2-3 spacings out (all kinds)"}
     res["overlaps"] = int(sum(w["overlaps"] for w in worlds))
     if "overlaps_across_tiles" in worlds[0]:
         res["overlaps_across_tiles"] = int(sum(w["overlaps_across_tiles"] for w in worlds))
@@ -191,8 +214,15 @@ def report(method: str, mode: str, s: dict) -> None:
     for key in [k for k in s if k.startswith("units_")]:
         v = s[key]
         kinds = ", ".join(f"{k} {_fmt(r)}" for k, r in v["kind_fraction_ratio"].items())
+        if key == "units_2s":
+            print(f"  {method:8s} {mode:8s} tile density by phase / all: "
+                  + ", ".join(f"phase {p} {_fmt(r)}" for p, r in v["density_by_phase"].items()), flush=True)
         print(f"  {method:8s} {mode:8s} strips +-{key[6:]}: {v['strip_elements']:,} strip / {v['interior_elements']:,} interior el, "
               f"{v['units']} tiles: density ratio {_fmt(v['density_ratio'])}; kind-fraction ratios {kinds}", flush=True)
+    sp = s["signed_profile"]
+    for name, row in sp["relative_density"].items():
+        print(f"  {method:8s} {mode:8s} signed profile {name:7s} (s/2 bins, -3s..+3s into the later tile): "
+              + " ".join(f"{v:.2f}" for v in row), flush=True)
     p = s["profile"]
     print(f"  {method:8s} {mode:8s} folded profile ({p['bins']} bins of the tile): chi2/dof {p['chi2_dof']:.2f} (p {p['p']:.3f}); "
           f"bins within 1 s of a border {_fmt(p['near_ratio'])} x the others; overlaps {s['overlaps']}"
@@ -207,6 +237,20 @@ def report(method: str, mode: str, s: dict) -> None:
               f"{f['failing']['difference_ci'][1]:+.3f}]); faithful {s['faithful']}", flush=True)
 
 
+def _summarize_method(result: dict, method: str, meta: dict, per: dict, args: argparse.Namespace, out_path: Path, t_all: float) -> None:
+    rng = np.random.default_rng(0)
+    mres = {"world": meta}
+    for mode in per:
+        s = summarize(per[mode], args.boot, rng, meta["kinds"])
+        s["elements"] = [w["elements"] for w in per[mode]]
+        s["cpu_s"] = [w["cpu_s"] for w in per[mode]]
+        mres[mode] = s
+        report(method, mode, s)
+    result["methods"][method] = mres
+    result["total_s"] = time.perf_counter() - t_all
+    out_path.write_text(json.dumps(result, indent=1, default=float) + "\n")  # after each method
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--methods", default="pack,synth,ornament")
@@ -217,6 +261,8 @@ def main() -> None:
     ap.add_argument("--boot", type=int, default=2000)
     ap.add_argument("--out", default=str(HERE / "results" / "worlds_strips.json"))
     ap.add_argument("--raw", default=None, help="also pickle the per-world measurements here")
+    ap.add_argument("--from-raw", default=None, help="only summarize the measurements pickled by an earlier --raw run")
+    ap.add_argument("--dedupe", action="store_true", help="--from-raw: drop worlds with the first seed's element count")
     args = ap.parse_args()
     import strew
     from strew._method import spec
@@ -231,12 +277,26 @@ def main() -> None:
     out_path = Path(args.out)
     out_path.parent.mkdir(exist_ok=True)
     for method in args.methods.split(","):
+        if args.from_raw:  # summaries again from the per-world measurements of an earlier run
+            import pickle
+
+            with open(f"{args.from_raw}.{method}.pkl", "rb") as fh:
+                raw = pickle.load(fh)
+            meta, per = raw["world"], raw["per"]
+            for mode, seed in meta.get("same_as_first_seed", []):
+                print(f"  {method} {mode} seed {seed}: the same world as the first seed: counted once", flush=True)
+            if args.dedupe:  # worlds whose element counts repeat the first seed's (an older run's duplicates)
+                for mode in per:
+                    per[mode] = [w for k, w in enumerate(per[mode]) if k == 0 or w["elements"] != per[mode][0]["elements"]]
+            _summarize_method(result, method, meta, per, args, out_path, t_all)
+            continue
         c = cfgs[method]
         size = (c["side"], c["side"])
         ex = None if args.no_fidelity else c["exemplar"]()
         modes = ("tiled",) if args.no_control else ("tiled", "untiled")
         per: dict = {m: [] for m in modes}
         meta: dict = {"side": c["side"], "tile": c["tile"], "seeds": seeds}
+        last: dict = {}
         for seed in seeds:
             for mode in modes:
                 t0 = _cpu()
@@ -248,6 +308,12 @@ def main() -> None:
                     arr = spec(method).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
                     halo = meta["halo"]
                 cpu = _cpu() - t0
+                if mode in last and _same(last[mode][1], arr):  # ornament's flowers draw nothing from the seed
+                    print(f"  {method} {mode} seed {seed}: the same world as seed {last[mode][0]} (the method draws "
+                          "nothing from the seed): counted once", flush=True)
+                    meta.setdefault("same_as_first_seed", []).append([mode, seed])
+                    continue
+                last[mode] = (seed, arr)
                 spacing = 1.0 / np.sqrt(len(arr) / (size[0] * size[1]))
                 meta.setdefault("spacing", spacing)
                 meta["kinds"] = list(arr.kinds)
@@ -261,17 +327,7 @@ def main() -> None:
 
             with open(f"{args.raw}.{method}.pkl", "wb") as fh:
                 pickle.dump({"world": meta, "per": per}, fh)
-        rng = np.random.default_rng(0)
-        mres = {"world": meta}
-        for mode in modes:
-            s = summarize(per[mode], args.boot, rng, meta["kinds"])
-            s["elements"] = [w["elements"] for w in per[mode]]
-            s["cpu_s"] = [w["cpu_s"] for w in per[mode]]
-            mres[mode] = s
-            report(method, mode, s)
-        result["methods"][method] = mres
-        result["total_s"] = time.perf_counter() - t_all
-        out_path.write_text(json.dumps(result, indent=1, default=float) + "\n")  # after each method
+        _summarize_method(result, method, meta, per, args, out_path, t_all)
     print(f"wrote {out_path} ({time.perf_counter() - t_all:.0f} s)")
 
 
