@@ -76,3 +76,24 @@ def test_untuned_three_sizes_variants_are_faithful_with_consensus(variant, monke
     out = synthesize(ex, region, rng=1, measure=False)
     rep = fidelity(ex, out, region, eq5=False)
     assert rep.faithful, rep.failures
+
+
+@pytest.mark.slow
+def test_three_sizes_at_50x_has_few_failing_windows():
+    """Issue 13 point 2 on three sizes 1:2:4 at 50x the exemplar's area (seeds 1-3): the
+    local fidelity map's failing windows (patches poor in medium or large stones) average
+    under 7 %. With the yield window at 2 iterations they were 9.5 / 6.5 / 9.5 % (mean
+    8.5 %), at 3 they are 5.3 / 6.5 / 3.0 %; none is yet free of them."""
+    ex = suite.make_exemplar("three_sizes")
+    x0, y0, x1, y1 = ex.region.bounds
+    region = Region.rectangle(7.07 * (x1 - x0), 7.07 * (y1 - y0))
+    shares = []
+    for seed in (1, 2, 3):
+        out = synthesize(ex, region, rng=seed, measure=False)
+        rep = fidelity(ex, out, region, eq5=False)
+        assert rep.faithful, rep.failures
+        score = np.asarray(rep.local["score"], float)
+        score = score[np.isfinite(score)]
+        assert len(score) > 100
+        shares.append(float(np.mean(score > 1.0)))
+    assert np.mean(shares) < 0.07, shares

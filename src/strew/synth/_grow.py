@@ -528,12 +528,17 @@ def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visibl
     take their place (stones among pebbles: 0.44 of the exemplar's stone fraction, rings
     of small dots around large discs lose their discs). The smaller elements are
     removed once the large one is placed (:func:`_evict`). Only horizon elements of the
-    running :func:`grow` call made in its last ``yield_window`` iterations (2) yield,
+    running :func:`grow` call made in its last ``yield_window`` iterations (3) yield,
     so finished texture and what earlier tools made are not torn up. The window is a
     measured choice, not the paper's: on the fidelity suite's two- and three-size
     exemplars, 1 iteration leaves small kinds over-produced, no limit lets the large
-    kind grow to twice its density, 2 and 3 sit between (2 slightly better). Only
-    classes the output still owes (:func:`owed_classes`) make others yield.
+    kind grow to twice its density, 2 and 3 sit between. 3 rather than 2: at 50x the
+    exemplar's area three sizes leaves fewer windows of the local map poor in medium
+    or large stones (python benchmarks/synth.py --seams --only three_sizes --seeds
+    1,2,3: failing windows 0.095 / 0.065 / 0.095 -> 0.053 / 0.065 / 0.030; 4 gave
+    0.036 / 0.089 / 0.059), the fidelity suite stays 60/60 and the untuned variants'
+    pass counts stay (benchmarks/synth_variants.py --varied). Only classes the output
+    still owes (:func:`owed_classes`) make others yield.
     """
     prep = state.prep
     if state.n == 0 or len(pts) == 0:

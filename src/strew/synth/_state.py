@@ -62,7 +62,7 @@ class SynthParams:
         (Eq. 2), else half of it, else none.
     yield_window : int
         Horizon elements made in the last this many iterations yield to new elements of
-        a larger size class (an extension for several sizes, see ``grow``; 2).
+        a larger size class (an extension for several sizes, see ``grow``; 3).
     noise_floor : float
         Optimisation moves are shortened by the spread of the element's predictions,
         by at most this fraction of its collision radius (0.1; 0 turns it off): the
@@ -82,7 +82,7 @@ class SynthParams:
     horizon_anchor: float = 0.01
     max_failures: int = 3
     check_energy: bool = False
-    yield_window: int = 2
+    yield_window: int = 3
     noise_floor: float = 0.1
 
     def __post_init__(self) -> None:
