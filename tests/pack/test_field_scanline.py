@@ -11,7 +11,6 @@ the boundary (distance 0): with holes, concave parts and vertices on pixel centr
 from __future__ import annotations
 
 import numpy as np
-import pytest
 import shapely
 import shapely.affinity
 from hypothesis import given, settings
@@ -65,7 +64,6 @@ def holed_polygons(draw):
     return geom
 
 
-@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(holed_polygons())
 def test_field_occupancy_equals_a_brute_force_inside_test(geom):
@@ -90,7 +88,6 @@ def test_field_occupancy_equals_a_brute_force_inside_test(geom):
     assert np.all(field.d[out] <= exact + 1e-9)
 
 
-@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(holed_polygons(), st.floats(0.0, 2 * np.pi), st.floats(0.5, 1.5), st.booleans())
 def test_posed_occupancy_equals_a_brute_force_inside_test(geom, angle, scale, torus_pixels):
