@@ -34,7 +34,10 @@ Definitions (the same for every method):
   ``s`` of a border against the others.
 
 Run: ``python benchmarks/worlds_strips.py [--methods pack,synth,ornament] [--seeds 1,2]
-[--quick] [--no-control]``. Writes ``benchmarks/results/worlds_strips.json``.
+[--quick] [--no-control] [--raw R]``. Writes ``benchmarks/results/worlds_strips.json``.
+``--from-raw R [--dedupe]`` summarizes the measurements an earlier ``--raw R`` run kept.
+``--overview``: the overview PNG's ink (the grid as the eye sees it), folded modulo the
+tile, tiled against untiled (``worlds_strips_overview.json``).
 """
 
 from __future__ import annotations
@@ -57,6 +60,7 @@ from world_stats import (  # noqa: E402
     folded_profile,
     overlapping_pairs,
     overlapping_pairs_across,
+    overview_profile,
     profile_test,
     signed_profile,
     strip_units,
@@ -251,6 +255,42 @@ def _summarize_method(result: dict, method: str, meta: dict, per: dict, args: ar
     out_path.write_text(json.dumps(result, indent=1, default=float) + "\n")  # after each method
 
 
+def overview(args: argparse.Namespace) -> None:
+    """``--overview``: the overview PNG's ink folded modulo the tile (world_stats.overview_profile),
+    tiled against untiled, first seed; writes ``worlds_strips_overview.json``."""
+    import strew
+    from strew._method import spec
+    from strew.tiles import tiled
+
+    cfgs = _configs(args.quick)
+    seed = int(args.seeds.split(",")[0])
+    res: dict = {"benchmark": "worlds_strips --overview", "command": " ".join(["python benchmarks/worlds_strips.py", *sys.argv[1:]]),
+                 "note": "ink: non-white pixels of strew.io._overview.Overview (2048 px on the longer side); near: within one "
+                         "mean spacing s of a border, folded over the inner tiles", "methods": {}}
+    for method in args.methods.split(","):
+        c = cfgs[method]
+        size = (c["side"], c["side"])
+        row = {}
+        for mode in ("tiled", "untiled"):
+            if mode == "tiled":
+                arr = tiled(method, c["input"], size, tile_size=c["tile"], seed=seed, **c["params"])
+            else:
+                arr = spec(method).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
+            s = 1.0 / np.sqrt(len(arr) / (size[0] * size[1]))
+            r = overview_profile(arr, size, c["tile"], s)
+            prof = r.pop("profile")
+            r.update(folded_sd=float(prof.std() / prof.mean()), folded_max=float(prof.max() / prof.mean()),
+                     folded_min=float(prof.min() / prof.mean()), elements=len(arr))
+            row[mode] = r
+            print(f"  {method:8s} {mode:8s} overview ink within 1 s of a border {r['near']:.4f}, elsewhere {r['far']:.4f}: "
+                  f"ratio {r['ratio']:.4f}; folded columns sd {r['folded_sd']:.4f}, range {r['folded_min']:.3f}-{r['folded_max']:.3f} "
+                  f"({r['pixels_per_unit']:.2f} px per unit)", flush=True)
+        res["methods"][method] = row
+        out = HERE / "results" / "worlds_strips_overview.json"
+        out.write_text(json.dumps(res, indent=1) + "\n")
+    print(f"wrote {out}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--methods", default="pack,synth,ornament")
@@ -263,7 +303,11 @@ def main() -> None:
     ap.add_argument("--raw", default=None, help="also pickle the per-world measurements here")
     ap.add_argument("--from-raw", default=None, help="only summarize the measurements pickled by an earlier --raw run")
     ap.add_argument("--dedupe", action="store_true", help="--from-raw: drop worlds with the first seed's element count")
+    ap.add_argument("--overview", action="store_true", help="only the overview's ink folded modulo the tile (worlds_strips_overview.json)")
     args = ap.parse_args()
+    if args.overview:
+        overview(args)
+        return
     import strew
     from strew._method import spec
     from strew.tiles import tiled

@@ -228,3 +228,33 @@ def signed_profile(arr, size, tile_size: float, spacing: float, reach: float = 3
         for q in range(len(arr.kinds)):
             counts[q + 1] += np.histogram(sd[ok & (kind == q)], edges)[0]
     return {"counts": counts, "edges": edges / spacing}
+
+
+def overview_profile(arr, size, tile_size: float, spacing: float, max_side: int = 2048) -> dict:
+    """The overview PNG's ink (non-white pixels) folded modulo the tile, as the eye sees
+    a grid: the world drawn by :class:`strew.io._overview.Overview`; the pixel columns
+    (and rows) of the inner tiles folded onto one tile; ``near``: the share of ink within
+    one ``spacing`` of a border, ``far``: elsewhere (``ratio`` near / far), and per
+    folded pixel the ink share (``profile``)."""
+    from strew.io._overview import Overview
+
+    ov = Overview(size, max_side, kinds=list(arr.kinds))
+    ov.add(arr)
+    ink = (np.asarray(ov.image.convert("L"), float) < 250).astype(float)  # (rows, cols), row 0 at the top
+    px = ov.px
+    tp = tile_size * px
+    prof, weight = None, None
+    for axis_ink, n_px in ((ink.mean(axis=0), ink.shape[1]), (ink[::-1].mean(axis=1), ink.shape[0])):
+        pos = (np.arange(n_px) + 0.5) / px  # world coordinate of each pixel column / row
+        inner = (pos >= tile_size) & (pos < tile_size * (np.floor(n_px / tp + 1e-9) - 1))
+        b = np.floor(np.mod(pos[inner], tile_size) * px).astype(np.int64)
+        nb = int(round(tp))
+        s = np.bincount(b, axis_ink[inner], minlength=nb)[:nb]
+        c = np.bincount(b, minlength=nb)[:nb].astype(float)
+        prof = s if prof is None else prof + s
+        weight = c if weight is None else weight + c
+    prof = prof / np.maximum(weight, 1)
+    u = (np.arange(len(prof)) + 0.5) / px
+    near = (u < spacing) | (u > tile_size - spacing)
+    return {"near": float(prof[near].mean()), "far": float(prof[~near].mean()),
+            "ratio": float(prof[near].mean() / prof[~near].mean()), "profile": prof, "pixels_per_unit": px}
