@@ -85,16 +85,36 @@ def element_parameters(exemplar: Arrangement, *, name: str = "exemplar") -> tupl
     # variants 1 and 3: dots 1.7x too dense, or growth dying). Applied to every larger
     # class it broke three sizes (large stones 30.2 apart, reach 51: nn[small>large]
     # failing on 4/5 seeds).
-    from ._prepare import size_classes
+    #
+    # Capped by what the exemplar can show: a neighbourhood is whole (interior, see
+    # _prepare) only where it lies inside the exemplar's domain, so r-bar is at most the
+    # depth of the class's deepest member. Far-apart clusters (discs 75-98 apart in a
+    # 300 x 300 frame) got r-bar 124-148 while their deepest disc lay 109-120 inside:
+    # no disc was interior, no k-coherence candidate could copy a disc-to-disc step,
+    # and synthesis stopped after the first cluster (8 elements; clusters EDGE p2s7,
+    # p2s8, p4s8 of benchmarks/synth_variants.py). The cap still sees the next disc
+    # there (depth >= a_c + r_c - 2 r_max, the neighbourhood's reach with the pairing
+    # margin); exemplars whose deepest member lies deeper are unchanged.
+    from ._prepare import exemplar_domain, size_classes
 
     cls = size_classes(r)
     reach = RING_FACTOR * a + 2.0 * float(r.max())
+    depth = None
     for c in range(1, int(cls.max()) + 1 if n else 0):
         members = cls == c
         if members.sum() >= 2:
             a_c = average_spacing(xy[members])
             if a_c + float(r[members].mean()) > reach:
-                rbar[members] = np.maximum(rbar[members], LARGE_RING * a_c)
+                want = LARGE_RING * a_c
+                if depth is None:
+                    import shapely
+
+                    poly, _ = exemplar_domain(xy, a)
+                    depth = shapely.distance(poly.exterior, shapely.points(xy))
+                deepest = float(depth[members].max())
+                if deepest < want:
+                    want = max(deepest, RING_FACTOR * a)
+                rbar[members] = np.maximum(rbar[members], want)
     if "neighborhood_radius" in exemplar:
         given = np.asarray(exemplar["neighborhood_radius"], dtype=float)
         rbar = np.where(np.isfinite(given), given, rbar)
