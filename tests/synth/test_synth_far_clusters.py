@@ -47,6 +47,23 @@ def test_large_class_has_an_interior_member(params, seed):
     assert rbar[big].max() + 2 * r.max() >= nearest
 
 
+def test_disc_steps_surround_the_interior_discs():
+    """FAR at seed 8: the one disc with a whole neighbourhood shows its three disc
+    steps within a cone; the next deepest discs join the candidates until the steps
+    leave no quarter of directions empty, and no shallower disc joins."""
+    from strew.synth._prepare import SURROUND_DEPTH, SURROUND_GAP
+
+    ex = suite.make_exemplar("clusters", rng=8, **FAR)
+    prep = new_state(ex, Region.rectangle(100, 100), rng=1).prep
+    big = np.flatnonzero(prep.size_class == prep.size_class.max())
+    inner = big[np.isin(big, np.concatenate(prep.interior))]
+    d = shapely.distance(prep.domains[0].exterior, shapely.points(prep.pos))
+    assert len(inner) > 1 and np.all(d[inner] >= SURROUND_DEPTH * prep.rbar[inner])
+    steps = np.concatenate([prep.nb_off[prep.nb_ptr[e] : prep.nb_ptr[e + 1]][prep.size_class[prep.nb_idx[prep.nb_ptr[e] : prep.nb_ptr[e + 1]]] == 1] for e in inner])
+    ang = np.sort(np.arctan2(steps[:, 1], steps[:, 0]))
+    assert np.diff(np.r_[ang, ang[0] + 2 * np.pi]).max() < SURROUND_GAP
+
+
 def test_default_clusters_keep_the_uncapped_radius():
     """The suite's clusters exemplar (discs deep enough inside): r-bar stays LARGE_RING
     times the discs' spacing."""
@@ -55,10 +72,12 @@ def test_default_clusters_keep_the_uncapped_radius():
     assert np.allclose(rbar[big], LARGE_RING * average_spacing(ex.xy[big]))
 
 
-@pytest.mark.parametrize("params, seed", [(FAR, 7), (GRIT, 8)])
+@pytest.mark.parametrize("params, seed", [(FAR, 7), (FAR, 8), (GRIT, 8)])
 def test_far_apart_clusters_fill_the_region(params, seed):
     """Twice the frame's side: the output holds the exemplar's density of elements
-    (within 15 %) and is faithful; before the cap it held one cluster (8 elements)."""
+    (within 15 %) and is faithful; before the cap it held one cluster (8 elements).
+    FAR at seed 8 needs the surrounding steps as well (_prepare._surround_steps):
+    with its one interior disc it grew a one-sided lattice over part of the region."""
     ex = suite.make_exemplar("clusters", rng=seed, **params)
     x0, y0, x1, y1 = ex.region.bounds
     region = Region.rectangle(2.0 * (x1 - x0), 2.0 * (y1 - y0))
