@@ -12,6 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from strew._kernels.grid import GONE, HashGrid, hash_cross, hash_near
+from strew_testing import crosses_strictly
 
 ITEMS = 24
 # quarter units: sums, differences and the crossing test's products are exact in floats;
@@ -162,16 +163,6 @@ def test_near_is_the_points_within_reach_in_cell_and_creation_order(pts, steps, 
         assert hash_near(xs, ys, rs, classes, ITEMS, cell, grid.head, grid.ent, grid.cur, grid.ext, pos, cls, short, short.copy()) == -1
 
 
-def _crosses(p, q, a, b) -> bool:
-    """Segments pq and ab cross at a point interior to both."""
-    def side(o, u, v):
-        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
-
-    d1, d2 = side(a, b, p), side(a, b, q)
-    d3, d4 = side(p, q, a), side(p, q, b)
-    return ((d1 > 0 > d2) or (d1 < 0 < d2)) and ((d3 > 0 > d4) or (d3 < 0 < d4))
-
-
 @settings(max_examples=60, deadline=None)
 @given(
     pts=st.lists(st.tuples(coords, coords), min_size=2, max_size=16),
@@ -212,7 +203,7 @@ def test_cross_sees_exactly_the_current_segments(pts, segs, moves, dead, q, tags
         mx, my, nx, ny = (ax + bx) / 2, (ay + by) / 2, (ay - by) / 2, (bx - ax) / 2
         probes += [((mx - nx, my - ny), (mx + nx, my + ny), (-2, -2)), ((mx - nx, my - ny), (mx + nx, my + ny), tags)]
     for p, r, (ta, tb) in probes:
-        want = any(_crosses(p, r, pos[ends[d, 0]], pos[ends[d, 1]]) for d in range(len(ends))
+        want = any(crosses_strictly(p, r, pos[ends[d, 0]], pos[ends[d, 1]]) for d in range(len(ends))
                    if d not in gone and not {int(ends[d, 2]), int(ends[d, 3])} & {ta, tb})
         assert hash_cross(p[0], p[1], r[0], r[1], ta, tb, cell, grid.head, grid.ent, grid.cur, grid.ext, ends, pos) == want
 

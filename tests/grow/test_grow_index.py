@@ -9,16 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from strew.grow._index import GrowIndex
-
-
-def _crosses(p, q, a, b) -> bool:
-    """Segments pq and ab cross at a point interior to both (the growth's rule)."""
-    def side(o, u, v):
-        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
-
-    d1, d2 = side(a, b, p), side(a, b, q)
-    d3, d4 = side(p, q, a), side(p, q, b)
-    return ((d1 > 0 > d2) or (d1 < 0 < d2)) and ((d3 > 0 > d4) or (d3 < 0 < d4))
+from strew_testing import crosses_strictly
 
 
 def _index(n: int, cell: float):
@@ -114,7 +105,7 @@ def test_crosses_matches_a_scan_of_the_live_edges(pts, pairs, drop, moves, seg, 
     assert idx.edges == {(min(a, b), max(a, b)) for a in range(n) for b in idx.adj[a]}
     p, q = (seg[0], seg[1]), (seg[2], seg[3])
     for ia, ib in ((-2, -2), (0, -2), (0, 1)):
-        want = any(_crosses(p, q, xy[u], xy[v]) for u, v in idx.edges if u not in (ia, ib) and v not in (ia, ib))
+        want = any(crosses_strictly(p, q, xy[u], xy[v]) for u, v in idx.edges if u not in (ia, ib) and v not in (ia, ib))
         assert idx.crosses(ia, p, ib, q) == want
         assert idx.crosses_plane(ia, p, ib, q) == want  # the plane's short path
 

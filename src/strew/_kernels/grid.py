@@ -293,6 +293,26 @@ GONE = np.iinfo(np.int64).max  # ``cur`` of an item not in a hashed grid
 
 
 @numba.njit(cache=True, nogil=True)
+def hash_span(xmin, ymin, xmax, ymax, h, ext):  # pragma: no cover - numba
+    """Cells ``(cx0, cy0, cx1, cy1)`` of a hashed grid of side ``h`` that the box
+    touches, clipped to ``ext`` (the cells any entry was made in)."""
+    # (comparisons, not min/max: each builtin is one more function to compile)
+    cx0 = math.floor(xmin / h)
+    cy0 = math.floor(ymin / h)
+    cx1 = math.floor(xmax / h)
+    cy1 = math.floor(ymax / h)
+    if cx0 < ext[0]:
+        cx0 = ext[0]
+    if cy0 < ext[1]:
+        cy0 = ext[1]
+    if cx1 > ext[2]:
+        cx1 = ext[2]
+    if cy1 > ext[3]:
+        cy1 = ext[3]
+    return cx0, cy0, cx1, cy1
+
+
+@numba.njit(cache=True, nogil=True)
 def hash_near(xs, ys, rs, classes, limit, h, head, ent, cur, ext, pos, cls, out_q, out_i):  # pragma: no cover - numba
     """Point items of a hashed grid within ``rs[q]`` of ``(xs[q], ys[q])`` whose class bit
     is set in ``classes`` (``(classes >> cls[i]) & 1``), for each query q in turn, at most
@@ -309,19 +329,7 @@ def hash_near(xs, ys, rs, classes, limit, h, head, ent, cur, ext, pos, cls, out_
         r = rs[q]
         r2 = r * r
         found = 0
-        # (comparisons, not min/max: each builtin is one more function to compile)
-        cx0 = math.floor((x - r) / h)
-        cy0 = math.floor((y - r) / h)
-        cx1 = math.floor((x + r) / h)
-        cy1 = math.floor((y + r) / h)
-        if cx0 < ext[0]:
-            cx0 = ext[0]
-        if cy0 < ext[1]:
-            cy0 = ext[1]
-        if cx1 > ext[2]:
-            cx1 = ext[2]
-        if cy1 > ext[3]:
-            cy1 = ext[3]
+        cx0, cy0, cx1, cy1 = hash_span(x - r, y - r, x + r, y + r, h, ext)
         for cx in range(cx0, cx1 + 1):
             for cy in range(cy0, cy1 + 1):
                 e = head[((cx * HASH_X) ^ (cy * HASH_Y)) & mask]
@@ -351,18 +359,7 @@ def hash_cross(px, py, qx, qy, ta, tb, h, head, ent, cur, ext, ends, pos):  # pr
     mask = head.shape[0] - 1
     lx, hx = (px, qx) if px <= qx else (qx, px)
     ly, hy = (py, qy) if py <= qy else (qy, py)
-    cx0 = math.floor(lx / h)
-    cy0 = math.floor(ly / h)
-    cx1 = math.floor(hx / h)
-    cy1 = math.floor(hy / h)
-    if cx0 < ext[0]:
-        cx0 = ext[0]
-    if cy0 < ext[1]:
-        cy0 = ext[1]
-    if cx1 > ext[2]:
-        cx1 = ext[2]
-    if cy1 > ext[3]:
-        cy1 = ext[3]
+    cx0, cy0, cx1, cy1 = hash_span(lx, ly, hx, hy, h, ext)
     for cx in range(cx0, cx1 + 1):
         for cy in range(cy0, cy1 + 1):
             e = head[((cx * HASH_X) ^ (cy * HASH_Y)) & mask]
@@ -388,18 +385,7 @@ def hash_query_box(h, head, ent, cur, ext, xmin, ymin, xmax, ymax, stamp, qid, o
     superset of the items whose boxes meet the box). ``out`` must have room for every
     item."""
     mask = head.shape[0] - 1
-    cx0 = math.floor(xmin / h)
-    cy0 = math.floor(ymin / h)
-    cx1 = math.floor(xmax / h)
-    cy1 = math.floor(ymax / h)
-    if cx0 < ext[0]:
-        cx0 = ext[0]
-    if cy0 < ext[1]:
-        cy0 = ext[1]
-    if cx1 > ext[2]:
-        cx1 = ext[2]
-    if cy1 > ext[3]:
-        cy1 = ext[3]
+    cx0, cy0, cx1, cy1 = hash_span(xmin, ymin, xmax, ymax, h, ext)
     m = 0
     for cx in range(cx0, cx1 + 1):
         for cy in range(cy0, cy1 + 1):
