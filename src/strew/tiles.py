@@ -47,12 +47,15 @@ __all__ = ["Tile", "plan", "plan_periodic", "world", "tiled", "periodic", "World
 
 DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 
-# methods whose result is a stationary texture that tiles (issue 19 point 1). pack is
-# seamless (tests/worlds: border strips 0.985-1.03x the interior's density); synth runs
-# without overlaps, as seamless as its context makes it (a neighbourhood, not only an
-# obstacle); ornament's tiles give one kind name shapes that differ a little, but its
-# elements carry their geometry in ``parts``, so the tiles' libraries are made to agree
-# (_harmonize).
+# methods whose result is a stationary texture that tiles (issue 19 point 1). None
+# overlaps across borders, but none is seamless yet (benchmarks/worlds_strips.py, strips
+# within one mean spacing s of a border against the interior, 95% tile-bootstrap
+# intervals): pack's density 1.045x (its later tile fills gaps on the earlier tile's side,
+# mostly with discs), synth's 1.02-1.05x (stones 0.91x), ornament's 1.09x (its first-phase
+# tiles grow from their own centre, sparse). synth uses its context as a neighbourhood,
+# not only an obstacle; ornament's tiles give one kind name shapes that differ a little,
+# but its elements carry their geometry in ``parts``, so the tiles' libraries are made to
+# agree (_harmonize).
 # On a torus (periodic=True) any method with context tiles.
 # program (issue 19.1): the tiles of a script need nothing from each other, their
 # partitions being fixed in the plane (strew.program._world)
