@@ -189,37 +189,6 @@ def test_edt_matches_scipy(rows, cols, density, seed):
     assert np.allclose(aniso, ref)
 
 
-boxes = st.lists(st.tuples(coord, coord, st.floats(0, 8), st.floats(0, 8)), min_size=0, max_size=40)
-
-
-@numba.njit
-def _fill(g, boxes):  # pragma: no cover - numba
-    n = len(boxes)
-    head = np.full(int(g[3]) * int(g[4]), -1, np.int64)
-    enext = np.empty(n * int(g[3]) * int(g[4]) + 1, np.int64)
-    eitem = np.empty_like(enext)
-    ne = 0
-    for i in range(n):
-        ne = grid.insert_box(g, head, enext, eitem, ne, i, boxes[i, 0], boxes[i, 1], boxes[i, 2], boxes[i, 3])
-    return head, enext, eitem
-
-
-@given(boxes, st.tuples(coord, coord, st.floats(0, 20), st.floats(0, 20)), st.floats(1.0, 30.0))
-def test_incremental_grid_finds_every_meeting_box(items, query, cell):
-    b = np.array([(x, y, x + w, y + h) for x, y, w, h in items], dtype=float).reshape(-1, 4)
-    # a grid smaller than the boxes' spread: boxes beyond it land in its border cells
-    g = np.array([-20.0, -20.0, cell, int(40 / cell) + 1, int(40 / cell) + 1])
-    head, enext, eitem = _fill(g, b)
-    stamp = np.full(len(b), -1, np.int64)
-    out = np.empty(len(b), np.int64)
-    qx, qy, qw, qh = query
-    m = grid.query_box(g, head, enext, eitem, stamp, 7, qx, qy, qx + qw, qy + qh, out)
-    found = out[:m]
-    assert len(set(found.tolist())) == m  # each item once
-    meets = (b[:, 0] <= qx + qw) & (b[:, 2] >= qx) & (b[:, 1] <= qy + qh) & (b[:, 3] >= qy)
-    assert set(np.flatnonzero(meets).tolist()) <= set(found.tolist())
-
-
 @given(st.lists(point, min_size=1, max_size=60), point, st.floats(0.0, 30.0), st.floats(0.5, 20.0), st.booleans())
 def test_bucket_grid_query_matches_brute_force(pts, q, reach, cell, reverse):
     p = np.array(pts, dtype=float)
@@ -258,16 +227,3 @@ def test_stream_is_uniform():
     chi2 = float(((counts - 10_000) ** 2 / 10_000).sum())
     assert chi2 < 45.3  # 19 degrees of freedom, p = 0.001
     assert abs(np.corrcoef(u[:-1], u[1:])[0, 1]) < 0.01
-
-
-@given(boxes, st.lists(st.tuples(coord, coord, st.floats(0, 20), st.floats(0, 20)), min_size=1, max_size=5), st.floats(0.5, 30.0))
-def test_box_grid_for_python_callers_matches_brute_force(items, queries, cell):
-    bg = grid.BoxGrid((-10.0, -10.0, 10.0, 10.0), cell)  # boxes reach past it on every side
-    b = np.array([(x, y, x + w, y + h) for x, y, w, h in items], dtype=float).reshape(-1, 4)
-    for i, box in enumerate(b):
-        bg.insert(i, *box)
-    for qx, qy, qw, qh in queries:
-        found = bg.query(qx, qy, qx + qw, qy + qh).tolist()
-        assert len(set(found)) == len(found)
-        meets = (b[:, 0] <= qx + qw) & (b[:, 2] >= qx) & (b[:, 1] <= qy + qh) & (b[:, 3] >= qy)
-        assert set(np.flatnonzero(meets).tolist()) <= set(found)

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from strew._kernels.grid import GONE, HashGrid, hash_cross, hash_near
+from strew._kernels.grid import GONE, HashGrid, hash_cross, hash_insert_box, hash_near, hash_query_box, hash_segments
 from strew_testing import crosses_strictly
 
 ITEMS = 24
@@ -115,6 +115,57 @@ def test_box_query_is_the_current_items_in_cell_and_creation_order(ops, cell, ta
         assert grid.query(*box).tolist() == model.query(box)
     assert all(grid.cur[i] == GONE for i in range(len(grid.cur)) if i not in model.box)
     assert [i for i in range(ITEMS) if i in grid] == sorted(model.box)
+
+
+boxes_of = st.lists(st.tuples(coords, coords, sizes, sizes), max_size=40)
+
+
+def _same_structure(grid: HashGrid, head, tail, ent, ext, n) -> None:
+    assert n == grid.n
+    assert np.array_equal(head, grid.head) and np.array_equal(ext, grid.ext)
+    assert np.array_equal(ent[:n], grid.ent[:n])
+    if tail is not None:
+        assert np.array_equal(tail, grid.tail)
+
+
+@settings(max_examples=60, deadline=None)
+@given(items=boxes_of, cell=st.sampled_from([3.0, 11.0, 40.0]), q=st.tuples(coords, coords, sizes, sizes))
+def test_compiled_box_listing_is_the_python_one(items, cell, q):
+    """hash_insert_box (pack's placed regions, listed from compiled code) builds the very
+    arrays HashGrid.insert builds (no rebuild runs: few entries), and the grid it builds
+    answers box queries as the model does."""
+    b = [(x, y, x + w, y + h) for x, y, w, h in items]
+    grid, model = HashGrid(cell, len(b) + 1, table=1024), Model(cell)
+    head = np.full(len(grid.head), -1, np.int64)
+    tail = head.copy()
+    ent = np.full((9 * 1024, 4), -1, np.int64)
+    ext = np.array([0, 0, -1, -1], np.int64)
+    n = 0
+    for i, box in enumerate(b):
+        grid.insert(i, *box)
+        model.insert(i, box)
+        n = hash_insert_box(cell, head, tail, ent, ext, n, i, *box)
+    _same_structure(grid, head, tail, ent, ext, n)
+    cur = np.zeros(len(b) + 1, np.int64)  # every entry current
+    for box in [(q[0], q[1], q[0] + q[2], q[1] + q[3]), (-1e3, -1e3, 1e3, 1e3), *b]:
+        out = np.empty(len(b) + 1, np.int64)
+        m = hash_query_box(cell, head, ent, cur, ext, *box, np.zeros(len(b) + 1, np.int64), 1, out)
+        assert out[:m].tolist() == model.query(box)
+
+
+@settings(max_examples=60, deadline=None)
+@given(segs=st.lists(st.tuples(coords, coords, coords, coords), max_size=40), cell=cells, table=st.sampled_from([1, 4, 64]))
+def test_segment_grid_built_at_once_is_the_incremental_one(segs, cell, table):
+    """hash_segments (pack's domain edges) lists each segment by its box, as listing them
+    one by one in a HashGrid of the same table would (no rebuild: a table it never outgrows)."""
+    s = np.array(segs, dtype=float).reshape(-1, 4)
+    head, ent, ext = hash_segments(s, cell, table)
+    grid = HashGrid(cell, len(s) + 1, table=table)
+    grid.rebuild = lambda: None  # the compiled build keeps its table whatever the entries
+    for i, (ax, ay, bx, by) in enumerate(s):
+        grid.insert(i, min(ax, bx), min(ay, by), max(ax, bx), max(ay, by))
+    _same_structure(grid, head, None, ent, ext, grid.n)
+    assert len(ent) == max(grid.n, 1)
 
 
 @settings(max_examples=60, deadline=None)

@@ -75,8 +75,8 @@ def test_region_test_agrees_with_shapely(x, y, rot, s):
     c, sn = np.cos(rot) * s, np.sin(rot) * s
     hv = eng.kv @ np.array([[c, sn], [-sn, c]]) + (x, y)
     hbb = np.r_[hv.min(axis=0), hv.max(axis=0)]
-    got = _in_region(hv, eng.kr, 0, len(eng.kr) - 1, hbb, eng.rv, eng.rr, eng.rsegs, eng.g, eng.rhead, eng.rnext,
-                     eng.rsid, eng.rstamp, 1)
+    got = _in_region(hv, eng.kr, 0, len(eng.kr) - 1, hbb, eng.rv, eng.rr, eng.rsegs, eng.g, eng.rhead, eng.rent,
+                     eng.rext, eng.rstamp, 1)
     posed = shapely.Polygon(hv[: eng.kr[1]])
     exact = bool(shapely.contains_properly(dom, posed))
     if shapely.distance(shapely.boundary(dom), posed.exterior) < 1e-9:

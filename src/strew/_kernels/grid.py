@@ -1,8 +1,9 @@
 """The shared spatial grids (issue 15 point 5): a bucket grid over points, built once,
-and two incremental grids, filled as elements are placed: a bounded one of boxes (pack,
-ornament) and an unbounded, hashed one whose items move and leave (grow).
+and one incremental grid, filled as elements are placed: a hashed one of unbounded
+cells, whose items may move and leave (grow) or stay where they were listed (pack,
+ornament).
 
-All are uniform grids of square cells held as linked lists in flat int64 arrays, so
+Both are uniform grids of square cells held as linked lists in flat int64 arrays, so
 compiled loops walk them with no allocation:
 
 * **bucket grid** over points (:func:`bucket_grid`): ``head`` (nx * ny,) holds the first
@@ -10,42 +11,43 @@ compiled loops walk them with no allocation:
   a point: ``int((x - x0) / cell) * ny + int((y - y0) / cell)``. Points near ``(x, y)``
   within ``reach`` are those of the cells ``int((x - reach - x0) / cell)`` ..
   ``int((x + reach - x0) / cell)`` (clamped to ``0 .. nx - 1``), likewise in y.
-* **incremental grid** of boxes, described by ``g = (x0, y0, cell, cols, rows)`` (5,)
-  float: ``head`` (cols * rows,) int64, the first entry of each cell (-1: empty);
-  entries ``enext`` (m,) int64 (the next entry of the same cell, -1: end) and
-  ``eitem`` (m,) int64 (the item the entry lists). :func:`insert_box` adds an item to
-  every cell its box touches (:func:`cell_span`, clamped to the grid, so boxes beyond
-  the grid's extent land in its border cells and are still found); a query walks the
-  cells of its own box and skips items already seen by a stamp array (``stamp[item] ==
-  qid``), since an item that spans several cells is listed in each. Cell ``(c, q)`` is
-  ``head[q * cols + c]``. :func:`grid_segments` builds the same structure at once for
-  the boxes of fixed segments (a domain's edges).
-* **hashed incremental grid** (:class:`HashGrid`), for a growth with no extent known in
-  advance: unbounded cells ``(floor(x / cell), floor(y / cell))`` hashed into a
-  power-of-two table of chains; ``ent`` (m, 4) int64 holds each entry's item, cell x,
-  cell y and the next entry of its chain, appended at the chain's tail, so the entries of
-  a cell are met in creation order (callers whose output depends on that order, grow's,
-  stay byte-identical). Items are listed by point or by box; listing an item again (a
+* **hashed incremental grid** (:class:`HashGrid`): unbounded cells ``(floor(x / cell),
+  floor(y / cell))`` hashed into a power-of-two table of chains; ``ent`` (m, 4) int64
+  holds each entry's item, cell x, cell y and the next entry of its chain, appended at
+  the chain's tail, so the entries of a cell are met in creation order (callers whose
+  output depends on that order, grow's, stay byte-identical). Items are listed by point
+  or by box (an item is listed in every cell its box touches); listing an item again (a
   move) makes its old entries stale, removing it marks it gone (``cur``: an entry ``e``
   of item ``i`` is current when ``e >= cur[i]``), and a rebuild drops stale entries.
+  ``ext`` holds the cells any entry was made in; queries walk no cell outside it.
   Compiled queries: :func:`hash_near` (points within a radius, filtered by class bits),
   :func:`hash_cross` (segments crossed) and :func:`hash_query_box` (items in a box's
-  cells). Why not the bounded grid for grow: grow's extent is unknown until it stops,
-  and a bounded grid would pile a far growth into its border cells or be reallocated;
-  why not this one for pack and ornament: they know their extent, and a direct cell
-  index needs no hash and no cell test per entry (a chain also holds other cells').
+  cells), all through :func:`hash_span` (the cells of a box). Compiled listing, for
+  callers whose items never move: :func:`hash_insert_box` (pack lists each placed region
+  from its compiled loop, in a table it sizes to its domain's cells, never grown) and
+  :func:`hash_segments` (a domain's edges, at once).
 
-Usage from a compiled loop (the pattern of ``strew.pack._predicates.collides``)::
+One incremental grid, not a bounded one beside it: an unbounded grid needs no extent in
+advance (grow's is unknown until it stops; a bounded grid would pile far items into its
+border cells) and a pose or wrapped image beyond the domain costs nothing more; for
+pack and ornament, which know their extent, a table of about one chain per cell of it
+keeps the cost of the hash and the cell test per entry small (pack's fill-gap CPU 1.02x
+of the bounded grid's, ``python benchmarks/pack_field_scanline.py --base WT --repeat 5``).
 
-    c0, c1, q0, q1 = cell_span(g[0], g[1], g[2], int(g[3]), int(g[4]), xmin, ymin, xmax, ymax)
-    for q in range(q0, q1 + 1):
-        for c in range(c0, c1 + 1):
-            e = head[q * int(g[3]) + c]
+Usage from a compiled loop (the pattern of ``strew.pack._predicates._collides``; items
+that never move are all current, so no ``cur`` test)::
+
+    cx0, cy0, cx1, cy1 = hash_span(xmin, ymin, xmax, ymax, cell, ext)
+    mask = head.shape[0] - 1
+    for cx in range(cx0, cx1 + 1):
+        for cy in range(cy0, cy1 + 1):
+            e = head[((cx * HASH_X) ^ (cy * HASH_Y)) & mask]
             while e >= 0:
-                item = eitem[e]
-                e = enext[e]
-                if stamp[item] == qid:
-                    continue
+                item = ent[e, 0]
+                hit = ent[e, 1] == cx and ent[e, 2] == cy and stamp[item] != qid
+                e = ent[e, 3]
+                if not hit:
+                    continue  # another cell of the chain, or an item already seen
                 stamp[item] = qid
                 ...  # exact test against item
 """
@@ -59,86 +61,8 @@ import numpy as np
 
 from .geometry import seg_cross
 
-__all__ = ["cell_span", "insert_box", "grid_segments", "query_box", "bucket_grid", "BoxGrid",
-           "HASH_X", "HASH_Y", "GONE", "hash_near", "hash_cross", "hash_query_box", "HashGrid"]
-
-
-@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def cell_span(gx0, gy0, gc, cols, rows, xmin, ymin, xmax, ymax):  # pragma: no cover - numba
-    """Grid cells ``(c0, c1, q0, q1)`` (inclusive) that a box touches, each end clamped
-    to the grid: a box beyond the grid's extent maps to its border cells, so a box and
-    a query that meet always share a cell."""
-    c0 = min(max(int((xmin - gx0) / gc), 0), cols - 1)
-    c1 = max(min(int((xmax - gx0) / gc), cols - 1), 0)
-    q0 = min(max(int((ymin - gy0) / gc), 0), rows - 1)
-    q1 = max(min(int((ymax - gy0) / gc), rows - 1), 0)
-    return c0, c1, q0, q1
-
-
-@numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def insert_box(g, head, enext, eitem, ne, item, xmin, ymin, xmax, ymax):  # pragma: no cover - numba
-    """List ``item`` in every cell of the incremental grid ``g`` that its box touches,
-    writing entries from ``ne`` on; returns the new entry count. ``enext`` and ``eitem``
-    must have room for the box's cells (at most 9 for a box no wider than a cell)."""
-    cols = int(g[3])
-    c0, c1, q0, q1 = cell_span(g[0], g[1], g[2], cols, int(g[4]), xmin, ymin, xmax, ymax)
-    for q in range(q0, q1 + 1):
-        for c in range(c0, c1 + 1):
-            cell = q * cols + c
-            enext[ne] = head[cell]
-            eitem[ne] = item
-            head[cell] = ne
-            ne += 1
-    return ne
-
-
-@numba.njit(cache=True)
-def query_box(g, head, enext, eitem, stamp, qid, xmin, ymin, xmax, ymax, out):  # pragma: no cover - numba
-    """Items of the incremental grid ``g`` listed in the cells that a box touches, each
-    once (``stamp`` (items,) int64 is set to ``qid``, which must be new), written to
-    ``out``; returns their number (a superset of the items whose boxes meet the box:
-    the caller tests them exactly). ``out`` must have room for every item."""
-    cols = int(g[3])
-    c0, c1, q0, q1 = cell_span(g[0], g[1], g[2], cols, int(g[4]), xmin, ymin, xmax, ymax)
-    m = 0
-    for q in range(q0, q1 + 1):
-        for c in range(c0, c1 + 1):
-            e = head[q * cols + c]
-            while e >= 0:
-                it = eitem[e]
-                e = enext[e]
-                if stamp[it] == qid:
-                    continue
-                stamp[it] = qid
-                out[m] = it
-                m += 1
-    return m
-
-
-@numba.njit(cache=True)
-def grid_segments(segs, gx0, gy0, gc, cols, rows):  # pragma: no cover - numba
-    """The incremental grid's lists, built at once for fixed segments (s, 4) ``ax, ay,
-    bx, by`` (each listed in the cells its box touches): ``head`` (rows * cols,),
-    ``enext`` and ``eitem`` (entries,) int64, ``eitem`` holding segment indices."""
-    n = 0
-    for s in range(len(segs)):
-        c0, c1, q0, q1 = cell_span(gx0, gy0, gc, cols, rows, min(segs[s, 0], segs[s, 2]), min(segs[s, 1], segs[s, 3]), max(segs[s, 0], segs[s, 2]), max(segs[s, 1], segs[s, 3]))
-        n += max(c1 - c0 + 1, 0) * max(q1 - q0 + 1, 0)
-    head = np.empty(rows * cols, dtype=np.int64)
-    for i in range(rows * cols):
-        head[i] = -1
-    nxt = np.empty(n, dtype=np.int64)
-    sid = np.empty(n, dtype=np.int64)
-    e = 0
-    for s in range(len(segs)):
-        c0, c1, q0, q1 = cell_span(gx0, gy0, gc, cols, rows, min(segs[s, 0], segs[s, 2]), min(segs[s, 1], segs[s, 3]), max(segs[s, 0], segs[s, 2]), max(segs[s, 1], segs[s, 3]))
-        for q in range(q0, q1 + 1):
-            for c in range(c0, c1 + 1):
-                nxt[e] = head[q * cols + c]
-                sid[e] = s
-                head[q * cols + c] = e
-                e += 1
-    return head, nxt, sid
+__all__ = ["bucket_grid", "HASH_X", "HASH_Y", "GONE", "hash_span", "hash_near", "hash_cross", "hash_query_box",
+           "hash_insert_box", "hash_segments", "HashGrid"]
 
 
 @numba.njit(cache=True, nogil=True)
@@ -205,84 +129,6 @@ def bucket_grid(pts, cell, queries, reverse):  # pragma: no cover - numba
         nxt[j] = head[g]
         head[g] = j
     return x0, y0, cell, nx, ny, head, nxt
-
-
-class BoxGrid:
-    """The incremental grid for Python callers: boxes inserted one at a time, queries
-    answered by the compiled :func:`query_box`.
-
-    Parameters
-    ----------
-    bounds : (x0, y0, x1, y1)
-        The extent the grid covers; boxes beyond it land in its border cells (still
-        found, at the cost of a longer walk there).
-    cell : float
-        The wished cell side; it grows until the grid holds at most ``max_cells`` cells.
-
-    Attributes
-    ----------
-    g : (5,) float
-        ``(x0, y0, cell, cols, rows)``, as the compiled kernels take it.
-    head : (cols * rows,) int64
-    enext, eitem : (capacity,) int64
-        The entries (the first ``ne`` are in use).
-    """
-
-    def __init__(self, bounds: tuple[float, float, float, float], cell: float, max_cells: int = 1 << 20) -> None:
-        x0, y0, x1, y1 = (float(v) for v in bounds)
-        cell = float(cell)
-        w, h = max(x1 - x0, cell), max(y1 - y0, cell)
-        if (w / cell + 1) * (h / cell + 1) > max_cells:
-            cell = max(cell, float(np.sqrt(w * h / max_cells)) * 1.01)
-        self.cols = int(w / cell) + 1
-        self.rows = int(h / cell) + 1
-        self.x0, self.y0, self.cell = x0, y0, cell
-        self.g = np.array([x0, y0, cell, self.cols, self.rows], dtype=float)
-        self.head = np.full(self.cols * self.rows, -1, dtype=np.int64)
-        self.enext = np.empty(1024, dtype=np.int64)
-        self.eitem = np.empty(1024, dtype=np.int64)
-        self.ne = 0
-        self.stamp = np.full(256, -1, dtype=np.int64)
-        self.out = np.empty(256, dtype=np.int64)
-        self.qid = 0
-
-    def span(self, xmin: float, ymin: float, xmax: float, ymax: float) -> tuple[int, int, int, int]:
-        """:func:`cell_span` in Python: cells ``(c0, c1, q0, q1)``, inclusive, clamped."""
-        x0, y0, c, cols, rows = self.x0, self.y0, self.cell, self.cols, self.rows
-        return (min(max(int((xmin - x0) / c), 0), cols - 1), max(min(int((xmax - x0) / c), cols - 1), 0),
-                min(max(int((ymin - y0) / c), 0), rows - 1), max(min(int((ymax - y0) / c), rows - 1), 0))
-
-    def insert(self, item: int, xmin: float, ymin: float, xmax: float, ymax: float) -> None:
-        """List ``item`` (an int >= 0) in the cells its box touches (:func:`insert_box`)."""
-        c0, c1, q0, q1 = self.span(xmin, ymin, xmax, ymax)
-        need = self.ne + (c1 - c0 + 1) * (q1 - q0 + 1)
-        if need > len(self.enext):
-            size = max(2 * len(self.enext), need)
-            for name in ("enext", "eitem"):
-                a = getattr(self, name)
-                b = np.empty(size, dtype=np.int64)
-                b[: self.ne] = a[: self.ne]
-                setattr(self, name, b)
-        if item >= len(self.stamp):
-            size = max(2 * len(self.stamp), item + 1)
-            self.stamp = np.concatenate([self.stamp, np.full(size - len(self.stamp), -1, dtype=np.int64)])
-            self.out = np.empty(size, dtype=np.int64)
-        head, enext, eitem, ne, cols = self.head, self.enext, self.eitem, self.ne, self.cols
-        for q in range(q0, q1 + 1):
-            for c in range(c0, c1 + 1):
-                cell = q * cols + c
-                enext[ne] = head[cell]
-                eitem[ne] = item
-                head[cell] = ne
-                ne += 1
-        self.ne = ne
-
-    def query(self, xmin: float, ymin: float, xmax: float, ymax: float) -> np.ndarray:
-        """Items listed in the cells a box touches, each once, in no particular order
-        (a view, valid until the next call): a superset of the items whose boxes meet it."""
-        self.qid += 1
-        m = query_box(self.g, self.head, self.enext, self.eitem, self.stamp, self.qid, xmin, ymin, xmax, ymax, self.out)
-        return self.out[:m]
 
 
 # -- the hashed grid ----------------------------------------------------------------------
@@ -401,6 +247,72 @@ def hash_query_box(h, head, ent, cur, ext, xmin, ymin, xmax, ymax, stamp, qid, o
     return m
 
 
+@numba.njit(cache=True, nogil=True)
+def hash_insert_box(h, head, tail, ent, ext, ne, item, xmin, ymin, xmax, ymax):  # pragma: no cover - numba
+    """:meth:`HashGrid.insert` from compiled code, for a grid whose items never move
+    (pack's placed regions): list ``item`` in every cell of side ``h`` that its box
+    touches, at its chain's tail, writing entries from ``ne`` on, and widen ``ext``;
+    returns the new entry count. ``ent`` must have room for the box's cells (at most
+    9 for a box no wider than two cells); the table is not grown."""
+    cx0 = math.floor(xmin / h)
+    cy0 = math.floor(ymin / h)
+    cx1 = math.floor(xmax / h)
+    cy1 = math.floor(ymax / h)
+    if ext[0] > ext[2]:
+        ext[0] = cx0
+        ext[1] = cy0
+        ext[2] = cx1
+        ext[3] = cy1
+    else:
+        if cx0 < ext[0]:
+            ext[0] = cx0
+        if cy0 < ext[1]:
+            ext[1] = cy0
+        if cx1 > ext[2]:
+            ext[2] = cx1
+        if cy1 > ext[3]:
+            ext[3] = cy1
+    mask = head.shape[0] - 1
+    for cx in range(cx0, cx1 + 1):
+        for cy in range(cy0, cy1 + 1):
+            hh = ((cx * HASH_X) ^ (cy * HASH_Y)) & mask
+            ent[ne, 0] = item
+            ent[ne, 1] = cx
+            ent[ne, 2] = cy
+            ent[ne, 3] = -1
+            t = tail[hh]
+            if t >= 0:
+                ent[t, 3] = ne
+            else:
+                head[hh] = ne
+            tail[hh] = ne
+            ne += 1
+    return ne
+
+
+@numba.njit(cache=True, nogil=True)
+def hash_segments(segs, h, table):  # pragma: no cover - numba
+    """A hashed grid of cell side ``h`` and ``table`` chains (a power of two) built at
+    once for fixed segments (s, 4) ``ax, ay, bx, by``, each listed by its box
+    (:func:`hash_insert_box`, item = segment index): ``head`` (table,), ``ent`` (m, 4)
+    and ``ext`` (4,) int64, as :class:`HashGrid` holds them (no segment ever moves)."""
+    n = 0
+    for s in range(len(segs)):
+        n += ((math.floor(max(segs[s, 0], segs[s, 2]) / h) - math.floor(min(segs[s, 0], segs[s, 2]) / h) + 1)
+              * (math.floor(max(segs[s, 1], segs[s, 3]) / h) - math.floor(min(segs[s, 1], segs[s, 3]) / h) + 1))
+    head = np.full(table, -1, np.int64)
+    tail = np.full(table, -1, np.int64)
+    ent = np.full((max(n, 1), 4), -1, np.int64)
+    ext = np.zeros(4, np.int64)
+    ext[2] = -1
+    ext[3] = -1
+    e = 0
+    for s in range(len(segs)):
+        e = hash_insert_box(h, head, tail, ent, ext, e, s, min(segs[s, 0], segs[s, 2]), min(segs[s, 1], segs[s, 3]),
+                            max(segs[s, 0], segs[s, 2]), max(segs[s, 1], segs[s, 3]))
+    return head, ent, ext
+
+
 class HashGrid:
     """The hashed incremental grid: unbounded square cells of side ``cell``, hashed into
     a table of chains, holding items (ints >= 0) listed by point or by box.
@@ -440,9 +352,10 @@ class HashGrid:
 
     Compiled queries: :func:`hash_near` (point items within a radius), :func:`hash_cross`
     (segment items crossed), :func:`hash_query_box` (items listed in a box's cells; from
-    Python :meth:`query`). Listing stays in Python: a box covers one to four cells, and a
-    kernel would cost its compilation on every fresh install (issue 16) for about the
-    same speed.
+    Python :meth:`query`). Listing from Python stays in Python (a box covers one to four
+    cells, and a kernel call costs about as much); compiled code whose items never move
+    lists with :func:`hash_insert_box`, which makes the same entries (with no ``cur``
+    and no automatic rebuild).
     """
 
     def __init__(self, cell: float, items: int = 1024, table: int = 1024) -> None:

@@ -36,7 +36,7 @@ import shapely
 from scipy import ndimage
 
 from .._errors import InputError
-from .._kernels.grid import BoxGrid
+from .._kernels.grid import HashGrid
 from .._progress import Reporter
 from .._rng import as_rng
 from ..region import Region
@@ -113,12 +113,15 @@ class _Placed:
     def __init__(self, bucket: float = 8.0, bounds: tuple[float, float, float, float] | None = None) -> None:
         self.n = 0
         # a uniform grid over bounding boxes answers small queries without a scan: the
-        # shared incremental grid (strew._kernels.grid, issue 15 point 5) over ``bounds``
-        # (proxies beyond them, such as wrapped images, land in its border cells)
+        # shared hashed incremental grid (strew._kernels.grid, issue 15 point 5), whose
+        # cells are unbounded, so proxies beyond ``bounds`` (wrapped images) cost nothing
+        # more; ``bounds`` only sizes its table (a chain per cell of them, at most 2^16)
         self.bucket = float(bucket)
-        if bounds is None:
-            bounds = (0.0, 0.0, 64.0 * self.bucket, 64.0 * self.bucket)
-        self.grid = BoxGrid(bounds, self.bucket)
+        cells = 1024
+        if bounds is not None:
+            x0, y0, x1, y1 = (float(v) for v in bounds)
+            cells = min(max(int((x1 - x0) / self.bucket + 1) * int((y1 - y0) / self.bucket + 1), 1024), 1 << 16)
+        self.grid = HashGrid(self.bucket, table=1 << (cells - 1).bit_length())
         cap = 256
         self.bx = np.empty(cap)
         self.by = np.empty(cap)

@@ -233,8 +233,8 @@ def _rounds(
     rs, max_rounds, limit, p_count, power, fits, suppress, sup_r, ktarget, ktol, sfit, kanch, ka, kdisk, kdo, kbb,
     d, w, fx0, fy0, fcell, qbuf, cand, cdraw,
     kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi, cumw,
-    rv, rr, rsegs, rhead, rnext, rsid, rstamp,
-    pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, stamp,
+    rv, rr, rsegs, rhead, rent, rext, rstamp,
+    pv, pr, pp, pbb, pose, pkind, g, head, tail, ent, ext, stamp,
     cv, ch, cbb, hbb, buf, segs, caps, st, fcell_y, per, ct, tbb,
 ):  # pragma: no cover - numba
     """Up to ``max_rounds`` rounds of Step 2 (§4.2); returns a status code.
@@ -426,16 +426,16 @@ def _rounds(
                         hvv = ch
                     st[_S_QID] += 1
                     if per is not None:
-                        if _collides_torus(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp,
+                        if _collides_torus(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, ent, ext, stamp,
                                            st, buf, blocker, per, ct, tbb):
                             continue
                         ok = True
                         break
                     if not _in_region(hvv, hr if not same_hull[k] else kr, hk[k] if not same_hull[k] else kk[k],
                                       hk[k + 1] if not same_hull[k] else kk[k + 1], hb, rv, rr, rsegs, g,
-                                      rhead, rnext, rsid, rstamp, st[_S_QID]):
+                                      rhead, rent, rext, rstamp, st[_S_QID]):
                         continue
-                    if _collides(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
+                    if _collides(cv, kr, kk[k], kk[k + 1], cbb, pv, pr, pp, pbb, g, head, ent, ext, stamp, st[_S_QID], buf, blocker):
                         continue
                     ok = True
                     break
@@ -443,7 +443,7 @@ def _rounds(
                     break
             if ok:
                 n0 = st[_S_NP]
-                _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
+                _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, tail, ent, ext, st)
                 # the distance field, updated locally at once (see _field.DistanceField.occupy)
                 ns = 0
                 for r in range(pp[n0], pp[n0 + 1]):

@@ -51,7 +51,7 @@ import numpy as np
 import shapely
 
 from .._kernels.geometry import inside as _inside
-from .._kernels.grid import grid_segments as _grid_segments
+from .._kernels.grid import hash_segments as _hash_segments
 from .._kernels.prng import seed_state as rand_state
 from ._draw import DONE, NEED_ROOM, NO_FIELD, RUNNING, _rounds
 from ._exclusive import ExclusiveRegion
@@ -62,8 +62,8 @@ __all__ = ["FitEngine", "ring_layout", "TOL", "RUNNING", "DONE", "NEED_ROOM", "N
 
 @numba.njit(cache=True)
 def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot_lo, rot_hi, sc_lo, sc_hi,
-                  rv, rr, rsegs, rhead, rnext, rsid, rstamp, cv, ch, cbb, hbb,
-                  pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st, per):  # pragma: no cover - numba
+                  rv, rr, rsegs, rhead, rent, rext, rstamp, cv, ch, cbb, hbb,
+                  pv, pr, pp, pbb, pose, pkind, g, head, tail, ent, ext, st, per):  # pragma: no cover - numba
     """Step 1 (§4.1): place an element at each Poisson-disk point, in order, when it lies
     inside the domain (exact test; on a repeat tile's torus, ``per`` not None, every
     point does); the points' circles already keep elements apart, so no collision test
@@ -85,13 +85,13 @@ def _place_sparse(xy, u_rot, u_sc, kinds, kv, kr, kk, hv, hr, hk, same_hull, rot
         if per is not None:
             inside = True
         elif same_hull[k]:
-            inside = _in_region(cv, kr, kk[k], kk[k + 1], cbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, st[_S_QID])
+            inside = _in_region(cv, kr, kk[k], kk[k + 1], cbb, rv, rr, rsegs, g, rhead, rent, rext, rstamp, st[_S_QID])
         else:
             _pose(hv, hr, hk[k], hk[k + 1], x, y, c, sn, ch, hbb)
-            inside = _in_region(ch, hr, hk[k], hk[k + 1], hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, st[_S_QID])
+            inside = _in_region(ch, hr, hk[k], hk[k + 1], hbb, rv, rr, rsegs, g, rhead, rent, rext, rstamp, st[_S_QID])
         if not inside:
             continue
-        _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st)
+        _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, tail, ent, ext, st)
         placed += 1
         if len(kinds) == 0:
             st[_S_NEXT] = (st[_S_NEXT] + 1) % nk
@@ -263,11 +263,15 @@ class FitEngine:
             x0, y0, x1, y1 = x0 - grow, y0 - grow, x1 + grow, y1 + grow
         cols = int(np.floor((x1 - x0) / gc)) + 1
         rows = int(np.floor((y1 - y0) / gc)) + 1
-        self.g = np.array([x0, y0, gc, cols, rows], dtype=float)
+        # the hashed grids (strew._kernels.grid, issue 15 point 5) of the placed regions
+        # and of the domain's edges: cells of side gc, a chain per cell of the extent
+        # (rounded up to a power of two); g = (gc, a box around the domain)
+        self.g = np.array([gc, x0, y0, x0 + cols * gc, y0 + rows * gc], dtype=float)
+        table = 1 << max(int(cols * rows - 1).bit_length(), 10)
         same = np.flatnonzero(self.rr[1:] - self.rr[:-1] > 0)
         starts = np.concatenate([np.arange(self.rr[r], self.rr[r + 1] - 1) for r in same]) if len(same) else np.zeros(0, int)
         self.rsegs = np.ascontiguousarray(np.c_[self.rv[starts], self.rv[starts + 1]]) if len(starts) else np.zeros((0, 4))
-        self.rhead, self.rnext, self.rsid = _grid_segments(self.rsegs, x0, y0, gc, cols, rows)
+        self.rhead, self.rent, self.rext = _hash_segments(self.rsegs, gc, table)
         self.rstamp = np.full(len(self.rsegs), -1, dtype=np.int64)
         nv = max(len(self.kv), len(self.hv))
         self.cv = np.zeros((len(self.kv), 2))
@@ -279,7 +283,9 @@ class FitEngine:
         self.segs = np.zeros((maxseg + 1, 4))
         self.st = np.zeros(10, dtype=np.int64)
         self.st[_S_NEXT] = next_kind
-        self.head = np.full(cols * rows, -1, dtype=np.int64)
+        self.head = np.full(table, -1, dtype=np.int64)
+        self.tail = np.full(table, -1, dtype=np.int64)
+        self.ext = np.array([0, 0, -1, -1], dtype=np.int64)
         reach = max(k.radius * k.scale[1] for k in kinds)
         self.per = None if periodic is None else np.array([*(float(v) for v in periodic), reach], dtype=float)
         self.ct = np.zeros((len(self.kv), 2))
@@ -301,8 +307,7 @@ class FitEngine:
         self.pose = grow(self.pose if old else None, np_, (4,), float)
         self.pkind = grow(self.pkind if old else None, np_, (), np.int64)
         self.stamp = grow(self.stamp if old else None, np_, (), np.int64, -1)
-        self.enext = grow(self.enext if old else None, ne, (), np.int64)
-        self.epoly = grow(self.epoly if old else None, ne, (), np.int64)
+        self.ent = grow(self.ent if old else None, ne, (4,), np.int64, -1)
         self.caps = np.array([np_, nv, nr, ne], dtype=np.int64)
 
     def _room(self, polys: int) -> None:
@@ -341,9 +346,9 @@ class FitEngine:
         return int(_place_sparse(np.ascontiguousarray(xy, dtype=float), np.asarray(u_rot, dtype=float),
                                  np.asarray(u_scale, dtype=float), ks, self.kv, self.kr, self.kk, self.hv, self.hr,
                                  self.hk, self.same_hull, self.rot_lo, self.rot_hi, self.sc_lo, self.sc_hi, self.rv,
-                                 self.rr, self.rsegs, self.rhead, self.rnext, self.rsid, self.rstamp, self.cv, self.ch,
+                                 self.rr, self.rsegs, self.rhead, self.rent, self.rext, self.rstamp, self.cv, self.ch,
                                  self.cbb, self.hbb, self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g,
-                                 self.head, self.enext, self.epoly, self.st, self.per))
+                                 self.head, self.tail, self.ent, self.ext, self.st, self.per))
 
     def segments(self) -> tuple[np.ndarray, np.ndarray]:
         """Ring edges of the placed exclusive regions: (s, 4) ``x0, y0, x1, y1`` and
@@ -381,8 +386,8 @@ class FitEngine:
                 field.d, self.w, field.x0, field.y0, field.cell, self.qbuf, self.cand, self.cdraw,
                 self.kv, self.kr, self.kk, self.hv, self.hr, self.hk, self.same_hull, self.rot_lo, self.rot_hi,
                 self.sc_lo, self.sc_hi, self.cumw,
-                self.rv, self.rr, self.rsegs, self.rhead, self.rnext, self.rsid, self.rstamp,
-                self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g, self.head, self.enext, self.epoly,
+                self.rv, self.rr, self.rsegs, self.rhead, self.rent, self.rext, self.rstamp,
+                self.pv, self.pr, self.pp, self.pbb, self.pose, self.pkind, self.g, self.head, self.tail, self.ent, self.ext,
                 self.stamp, self.cv, self.ch, self.cbb, self.hbb, self.buf, self.segs, self.caps, self.st,
                 float(getattr(field, "cell_y", field.cell)), self.per, self.ct, self.tbb,
             )

@@ -4,8 +4,9 @@ A pose (T + s R p, Eq. 1) of a kind's exclusive region is accepted only when it 
 inside the domain and meets no placed region: closed-segment intersection and even-odd
 point-in-polygon tests (:mod:`strew._kernels.geometry`, robust at relative tolerance
 :data:`TOL`: touching or too close to call counts as a collision) against the neighbours
-found in the incremental grid (:mod:`strew._kernels.grid`) and against the domain's
-edges. The placed regions live in flat arrays (a ring layout, see :func:`ring_layout`)
+found in the hashed incremental grid (:mod:`strew._kernels.grid`, its arrays ``head``,
+``tail``, ``ent``, ``ext``; placed regions never move, so every entry is current) and
+against the domain's edges (a hashed grid built at once). The placed regions live in flat arrays (a ring layout, see :func:`ring_layout`)
 that :func:`_insert` appends to; the integer state vector ``st`` holds the counters
 named by the ``_S_*`` indices. Split from ``_fit.py`` (issue 15 point 7).
 """
@@ -18,8 +19,7 @@ import shapely
 
 from .._kernels.geometry import TOL, where as _where
 from .._kernels.geometry import seg_hit as _seg_hit
-from .._kernels.grid import cell_span as _cell_span
-from .._kernels.grid import insert_box
+from .._kernels.grid import HASH_X, HASH_Y, hash_insert_box, hash_span
 
 __all__ = ["TOL", "ring_layout"]
 
@@ -111,23 +111,25 @@ def _pose(kv, kr, r0, r1, x, y, c, sn, out, bb):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True)
-def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp, qid):  # pragma: no cover - numba
+def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rent, rext, rstamp, qid):  # pragma: no cover - numba
     """True when the posed hull (rings ``r0:r1`` of ``hv``) lies inside the domain.
 
-    ``g`` = (x0, y0, cell, cols, rows) of the grid that holds the domain's edges.
+    ``g`` = (cell, x0, y0, x1, y1): the hashed grids' cell side and a box around the
+    domain; ``rhead``, ``rent``, ``rext``: the hashed grid of the domain's edges.
     """
-    gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
-    if hbb[0] < gx0 or hbb[1] < gy0 or hbb[2] > gx0 + cols * gc or hbb[3] > gy0 + rows * gc:
+    if hbb[0] < g[1] or hbb[1] < g[2] or hbb[2] > g[3] or hbb[3] > g[4]:
         return False
-    c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, hbb[0], hbb[1], hbb[2], hbb[3])
+    cx0, cy0, cx1, cy1 = hash_span(hbb[0], hbb[1], hbb[2], hbb[3], g[0], rext)
+    mask = rhead.shape[0] - 1
     # no hull edge meets a domain edge
-    for q in range(q0, q1 + 1):
-        for c in range(c0, c1 + 1):
-            e = rhead[q * cols + c]
+    for cx in range(cx0, cx1 + 1):
+        for cy in range(cy0, cy1 + 1):
+            e = rhead[((cx * HASH_X) ^ (cy * HASH_Y)) & mask]
             while e >= 0:
-                sid = rsid[e]
-                e = rnext[e]
-                if rstamp[sid] == qid:
+                sid = rent[e, 0]
+                hit = rent[e, 1] == cx and rent[e, 2] == cy and rstamp[sid] != qid
+                e = rent[e, 3]
+                if not hit:
                     continue
                 rstamp[sid] = qid
                 ax, ay, bx, by = rsegs[sid, 0], rsegs[sid, 1], rsegs[sid, 2], rsegs[sid, 3]
@@ -150,7 +152,7 @@ def _in_region(hv, hr, r0, r1, hbb, rv, rr, rsegs, g, rhead, rnext, rsid, rstamp
 
 
 @numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, qid, buf, blocker):  # pragma: no cover - numba
+def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, ent, ext, stamp, qid, buf, blocker):  # pragma: no cover - numba
     """True when the posed body meets a placed exclusive region (grid neighbours only).
 
     ``blocker[0]`` is the region that stopped the last pose (-1: none); it is tested
@@ -162,15 +164,16 @@ def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp
         if not (pbb[b, 0] > cbb[2] or pbb[b, 2] < cbb[0] or pbb[b, 1] > cbb[3] or pbb[b, 3] < cbb[1]):
             if _polys_hit(cv, kr, r0, r1, cbb, pv, pr, pp[b], pp[b + 1], pbb[b], buf):
                 return True
-    gx0, gy0, gc, cols, rows = g[0], g[1], g[2], int(g[3]), int(g[4])
-    c0, c1, q0, q1 = _cell_span(gx0, gy0, gc, cols, rows, cbb[0], cbb[1], cbb[2], cbb[3])
-    for q in range(q0, q1 + 1):
-        for c in range(c0, c1 + 1):
-            e = head[q * cols + c]
+    cx0, cy0, cx1, cy1 = hash_span(cbb[0], cbb[1], cbb[2], cbb[3], g[0], ext)
+    mask = head.shape[0] - 1
+    for cx in range(cx0, cx1 + 1):
+        for cy in range(cy0, cy1 + 1):
+            e = head[((cx * HASH_X) ^ (cy * HASH_Y)) & mask]
             while e >= 0:
-                p = epoly[e]
-                e = enext[e]
-                if stamp[p] == qid:
+                p = ent[e, 0]
+                hit = ent[e, 1] == cx and ent[e, 2] == cy and stamp[p] != qid
+                e = ent[e, 3]
+                if not hit:
                     continue
                 stamp[p] = qid
                 if pbb[p, 0] > cbb[2] or pbb[p, 2] < cbb[0] or pbb[p, 1] > cbb[3] or pbb[p, 3] < cbb[1]:
@@ -182,7 +185,7 @@ def _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp
 
 
 @numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, enext, epoly, st):  # pragma: no cover - numba
+def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, head, tail, ent, ext, st):  # pragma: no cover - numba
     """Append the posed body (already in ``cv``) to the placed store and the grid."""
     n, nv, nr, ne = st[_S_NP], st[_S_NV], st[_S_NR], st[_S_NE]
     for r in range(kk[k], kk[k + 1]):
@@ -200,7 +203,7 @@ def _insert(k, x, y, rot, s, cv, kr, kk, cbb, pv, pr, pp, pbb, pose, pkind, g, h
     pose[n, 2] = rot
     pose[n, 3] = s
     pkind[n] = k
-    ne = insert_box(g, head, enext, epoly, ne, n, cbb[0], cbb[1], cbb[2], cbb[3])
+    ne = hash_insert_box(g[0], head, tail, ent, ext, ne, n, cbb[0], cbb[1], cbb[2], cbb[3])
     st[_S_NP], st[_S_NV], st[_S_NR], st[_S_NE] = n + 1, nv, nr, ne
 
 
@@ -214,7 +217,7 @@ def _wrap(v, lo, period):  # pragma: no cover - numba
 
 
 @numba.njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
-def _collides_torus(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st, buf, blocker, per, ct, tbb):  # pragma: no cover - numba
+def _collides_torus(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, ent, ext, stamp, st, buf, blocker, per, ct, tbb):  # pragma: no cover - numba
     """:func:`_collides` on the torus of a repeat tile (issue 18): the posed body at its
     canonical place and its images by the lattice translations whose boxes reach the
     placed regions (their reference points lie in the tile, so their boxes lie within
@@ -230,7 +233,7 @@ def _collides_torus(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly,
                 continue
             st[_S_QID] += 1  # a fresh stamp: each image meets the neighbours anew
             if ti == 0 and tj == 0:
-                if _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
+                if _collides(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, ent, ext, stamp, st[_S_QID], buf, blocker):
                     return True
                 continue
             for i in range(kr[r0], kr[r1]):
@@ -240,6 +243,6 @@ def _collides_torus(cv, kr, r0, r1, cbb, pv, pr, pp, pbb, g, head, enext, epoly,
             tbb[1] = cbb[1] + dy
             tbb[2] = cbb[2] + dx
             tbb[3] = cbb[3] + dy
-            if _collides(ct, kr, r0, r1, tbb, pv, pr, pp, pbb, g, head, enext, epoly, stamp, st[_S_QID], buf, blocker):
+            if _collides(ct, kr, r0, r1, tbb, pv, pr, pp, pbb, g, head, ent, ext, stamp, st[_S_QID], buf, blocker):
                 return True
     return False
