@@ -13,9 +13,10 @@ One module per concern, each small and free of any method's vocabulary:
     exact Euclidean distance transforms (why compiled and not scipy's: see its
     docstring).
 ``grid``
-    the uniform bucket grid over points (built once), the incremental grid of boxes
-    (linked lists per cell, insertions as elements are placed), and the hashed,
-    unbounded incremental grid whose items move and leave (grow's).
+    the uniform bucket grid over points (built once) and the one incremental grid:
+    hashed, unbounded cells whose items (points or boxes) may move and leave
+    (pack's placed regions and domain edges, ornament's placed elements, grow's points
+    and edges).
 
 The kernels are numba functions compiled with ``cache=True``; small helpers carry no
 Python wrapper (``no_cpython_wrapper``), so that a method's first run compiles no more
