@@ -391,6 +391,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     interior_mask = np.zeros(len(arr), bool)
     depth_all = np.zeros(len(arr))
     interior = []
+    cls = size_classes(r)
     for i in range(nsrc):
         ids = np.flatnonzero(sources == i)
         p = pos[ids]
@@ -405,7 +406,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         if inner.sum() < max(k, 4):
             inner = np.zeros(len(ids), bool)
             inner[np.argsort(-depth, kind="stable")[: max(k, 4)]] = True
-        _surround_steps(inner, ids, depth, rbar[ids], size_classes(r), ptr, idx, off)
+        _surround_steps(inner, ids, depth, rbar[ids], cls, ptr, idx, off)
         interior_mask[ids[inner]] = True
         interior.append(ids[inner])
         center[i] = ids[np.argmax(depth)]
@@ -413,7 +414,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     hp = np.zeros((nsrc, int(hp_n.max()), 3))
     for i, h in enumerate(planes):
         hp[i, : len(h)] = h
-    co = k_coherence(ptr, off, pos, kind, nb_kind, nb_d, 2.0 * r, rbar, sources, (hp, hp_n), interior_mask, k, kind_cost, size_classes(r))
+    co = k_coherence(ptr, off, pos, kind, nb_kind, nb_d, 2.0 * r, rbar, sources, (hp, hp_n), interior_mask, k, kind_cost, cls)
     # Free space (§5.1): free(e) = {p_c' - p_c | c' in n(c), c in co(e)}, clustered.
     free_ptr = np.zeros(len(arr) + 1, dtype=np.int64)
     # DBSCAN core points need vectors from about FREE_SUPPORT of the k neighbourhoods
@@ -509,7 +510,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         interior=interior,
         domains=polys,
         overlap_free=all(len(overlaps(ex)[0]) == 0 for ex in exemplars),
-        size_class=(cls := size_classes(r)),
+        size_class=cls,
         parent=parents(pos, cls, sources, void, depth_all, kind, follow=(follow := np.zeros(len(arr), bool)),
                        anchor=anchor_mask(skind, sources, cls, void)),
         follow=follow,
