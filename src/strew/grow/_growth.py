@@ -664,8 +664,8 @@ def grow_reference(
     total = params.count
     rep = Reporter(progress, should_cancel, total=total, message="growing")
     sat = satellite_structure(ref.exemplar) if params.clusters and params.spray is None and params.tile is None else None
-    if sat is not None:
-        out = grow_clusters(ref.exemplar, sat, params, g.rng, (float(start[0]), float(start[1])), rep, meta or {})
+    out = None if sat is None else grow_clusters(ref.exemplar, sat, params, g.rng, (float(start[0]), float(start[1])), rep, meta or {})
+    if out is not None:
         rep.done(len(out))
         return out
     g.run((float(start[0]), float(start[1])), rep)
