@@ -20,7 +20,7 @@ from .._errors import InputError
 from .._method import MethodSpec, Param, as_region, check_context, empty_result, free_region, is_empty, seed_record, stamp
 from ..arrangement import Arrangement
 from ..region import Region
-from ._analysis import Reference, analyze, delaunay_edges, flip_edge, size_priority
+from ._analysis import Reference, analyze, default_priority, delaunay_edges, flip_edge, size_priority
 from ._growth import GrowParams, grow_reference
 from ._match import matching_set, match_references, order_target
 from ._relax import relax_positions
@@ -71,7 +71,7 @@ SPEC = MethodSpec(
         Param("spray", "any", None, help="Spray path: only seeds within spray_radius of it grow.", parse="stroke", metavar="FILE",
               cli_help="Spray path (SVG or JSON): only seeds within --spray-radius of it grow.", section="§3, Fig. 1c"),
         Param("spray_radius", "float", None, low=0, low_open=True, unit="document units", help="Radius of the spray tool.", section="§3"),
-        Param("priority", "any", None, help="Seed priority per kind [default: larger kinds first when kinds differ in size, else 0].",
+        Param("priority", "any", None, help="Seed priority per kind [default: larger kinds first when kinds differ in size and mix, else 0].",
               cli="multiple", parse="kind-numbers", metavar="KIND=P", section="§5.1"),
         Param("jitter_scale", "float", 0.0, low=0, high=1, high_open=True, help="Relative scale noise S: x(1 +- S).", section="§3"),
         Param("jitter_rotation", "float", 0.0, low=0, unit="radians", help="Rotation noise (+-).", parse="degrees",
@@ -150,7 +150,9 @@ def grow(
         §5.1: a seed grows only when no seed of higher priority lies within ``5 * l``
         (``l`` the mean reference edge length). Kinds default to 0; seeds without a
         symbol id take the lowest priority. Without it, kinds of different sizes are
-        ranked larger first (:func:`size_priority`); ``{}`` turns that off.
+        ranked larger first (:func:`size_priority`), unless they lie apart in bands or
+        patches (fixed and rotate modes, :func:`strew.grow._analysis.default_priority`);
+        ``{}`` turns that off.
     jitter_scale : float
         Relative scale noise: each scale is multiplied by ``1 + U(-s, s)`` (§3).
     jitter_rotation : float
@@ -500,7 +502,9 @@ def _grow(
     # (not on a torus: :mod:`._clusters` places whole clusters in the plane)
     clusters = priority is None and not isinstance(exemplar, Reference) and not list(flips) and tile is None
     if priority is None:
-        priority = size_priority(ref.exemplar)
+        # larger kinds first (§5.1), unless the kinds lie apart in bands or patches
+        # (:func:`default_priority`; flow mode keeps size_priority as it was)
+        priority = size_priority(ref.exemplar) if mode == "flow" else default_priority(ref)
     prio: dict[str, float] = {}
     for name, v in dict(priority or {}).items():
         if name not in kinds:
