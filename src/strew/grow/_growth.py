@@ -52,6 +52,7 @@ from ..region import Region
 from ._analysis import Reference, size_priority
 from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
+from ._flow_gaps import close_gaps, fill_holes, side_stream
 from ._index import GrowIndex
 from ._match import MODES, W1, W2, W3
 from ._objects import (
@@ -112,6 +113,19 @@ class GrowParams:
     flow_bend: float = 0.5
     #: flow mode: carry the fitted frame on by the field's turn from the neighbours
     flow_carry: bool = True
+    #: flow mode: after the growth, gaps whose empty circle is wider than this many
+    #: mean edges get an element, their ring pushed out to ``flow_fill_reach`` (by at
+    #: most ``flow_fill_push``, fading out over ``flow_fill_spread``; see
+    #: :func:`strew.grow._flow_gaps.fill_holes`); None: not
+    flow_fill_min: float | None = 0.7
+    flow_fill_reach: float = 0.95
+    flow_fill_push: float = 0.2
+    flow_fill_spread: float = 1.5
+    #: flow mode: then square cells of circumradius over this many mean edges get a
+    #: bond across their shorter diagonal, if under ``flow_close_max``
+    #: (:func:`strew.grow._flow_gaps.close_gaps`); None: not
+    flow_close_min: float | None = 0.72
+    flow_close_max: float = 1.7
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -461,6 +475,18 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 if len(self.order) >= target or not self.refill():
                     break
                 self.advance(rep, target)
+        if self.mode_code == 2 and self.tile is None:
+            # flow mode: the gaps a bent lattice leaves (issue 14 point 2; not in the
+            # paper), with draws from a stream jumped off ``rng``: a caller's later draws
+            # from ``rng`` stay those they were
+            main, self.rng = self.rng, side_stream(self.rng)
+            for _ in range(p.refill_rounds if p.flow_fill_min is not None else 0):
+                if len(self.order) >= target or not fill_holes(self):
+                    break
+                self.advance(rep, target)
+            if p.flow_close_min is not None:
+                close_gaps(self)
+            self.rng = main
         self.settle()
 
     def refill(self) -> int:
