@@ -47,6 +47,47 @@ def _circumcircles(g):
     return els, pts, tri, np.c_[la, lb, lc], r
 
 
+def reference_gap(g) -> float:
+    """The widest empty circle (radius) of the exemplar's interior: the circumradius of
+    its Delaunay triangles whose centre lies over 1.5 mean edges inside its frame; 0
+    when it has none. A grown gap is filled or closed only when wider than this by a
+    tenth: the gaps of irregular exemplars (stones, two sizes) are their pattern (with
+    the spacing-based bounds alone, flow mode put 5 % more elements into two and three
+    sizes and sparse voids)."""
+    cached = getattr(g, "_reference_gap", None)
+    if cached is not None:
+        return cached
+    from scipy.spatial import Delaunay, QhullError
+
+    ex = g.ref.exemplar
+    out = 0.0
+    if len(ex) >= 4:
+        try:
+            tri = Delaunay(ex.xy)
+        except QhullError:
+            tri = None
+        if tri is not None:
+            a, b, c = (ex.xy[tri.simplices[:, q]] for q in range(3))
+            d = 2 * (a[:, 0] * (b[:, 1] - c[:, 1]) + b[:, 0] * (c[:, 1] - a[:, 1]) + c[:, 0] * (a[:, 1] - b[:, 1]))
+            ok = np.abs(d) > 1e-12 * g.l * g.l
+            d = np.where(ok, d, 1.0)
+            a2, b2, c2 = (a * a).sum(1), (b * b).sum(1), (c * c).sum(1)
+            ux = (a2 * (b[:, 1] - c[:, 1]) + b2 * (c[:, 1] - a[:, 1]) + c2 * (a[:, 1] - b[:, 1])) / d
+            uy = (a2 * (c[:, 0] - b[:, 0]) + b2 * (a[:, 0] - c[:, 0]) + c2 * (b[:, 0] - a[:, 0])) / d
+            r = np.hypot(a[:, 0] - ux, a[:, 1] - uy)
+            cen = np.c_[ux, uy]
+            if ex.region is not None:
+                inner = ex.region.distance_to_boundary(cen) > 1.5 * g.l
+                inner &= ex.region.contains(cen)
+            else:
+                inner = np.ones(len(r), dtype=bool)
+            sel = ok & inner
+            if sel.any():
+                out = float(r[sel].max())
+    g._reference_gap = out
+    return out
+
+
 def fill_holes(g) -> int:
     """An element put into each gap wider than ``flow_fill_min`` spacings (empty
     circle's radius) where the elements around it can make room; how many.
@@ -71,7 +112,9 @@ def fill_holes(g) -> int:
     ux = (a2 * (b[:, 1] - c[:, 1]) + b2 * (c[:, 1] - a[:, 1]) + c2 * (a[:, 1] - b[:, 1])) / d
     uy = (a2 * (c[:, 0] - b[:, 0]) + b2 * (a[:, 0] - c[:, 0]) + c2 * (b[:, 0] - a[:, 0])) / d
     p = g.p
-    lo, want = p.flow_fill_min * g.l, p.flow_fill_reach * g.l
+    lo, want = max(p.flow_fill_min * g.l, 1.1 * reference_gap(g)), p.flow_fill_reach * g.l
+    if lo >= want:
+        return 0
     sel = np.flatnonzero(ok & (r > lo) & (r < 1.5 * g.l))
     sel = sel[np.argsort(-r[sel], kind="stable")]
     made = 0
@@ -183,7 +226,7 @@ def close_gaps(g) -> int:
     p = g.p
     made = 0
     used: set[int] = set()
-    for t in np.flatnonzero(r > p.flow_close_min * g.l).tolist():
+    for t in np.flatnonzero(r > max(p.flow_close_min * g.l, 1.1 * reference_gap(g))).tolist():
         if t in used:
             continue
         q = int(np.argmax(lens[t]))
