@@ -34,7 +34,7 @@ Definitions (the same for every method):
   ``s`` of a border against the others.
 
 Run: ``python benchmarks/worlds_strips.py [--methods pack,synth,ornament] [--seeds 1,2]
-[--quick] [--no-control] [--raw R]``. Writes ``benchmarks/results/worlds_strips.json``.
+[--quick] [--no-control] [--raw R] [--synth-exemplar three_sizes] [--widths 3,2,1]``. Writes ``benchmarks/results/worlds_strips.json``.
 ``--from-raw R [--dedupe]`` summarizes the measurements an earlier ``--raw R`` run kept.
 ``--overview``: the overview PNG's ink (the grid as the eye sees it), folded modulo the
 tile, tiled against untiled (``worlds_strips_overview.json``).
@@ -94,6 +94,22 @@ def _configs(quick: bool) -> dict:
     }
 
 
+WIDTHS = (2.0, 1.0)
+"""Strip half-widths in spacings (``--widths``)."""
+
+
+def _synth_exemplar(cfgs: dict, name: str | None) -> dict:
+    """``--synth-exemplar NAME``: synth's world on another exemplar of the fidelity suite
+    (e.g. three_sizes: small, medium and large stones), the same side and tiles."""
+    if not name:
+        return cfgs
+    from strew_testing import fidelity_suite
+
+    ex = fidelity_suite().make_exemplar(name)
+    cfgs["synth"] = dict(cfgs["synth"], input=ex, exemplar=lambda: ex)
+    return cfgs
+
+
 def _same(a, b) -> bool:
     """The same elements (meta, which records the seed, aside)."""
     return len(a) == len(b) and all(np.array_equal(np.asarray(getattr(a, f)), np.asarray(getattr(b, f)))
@@ -110,7 +126,7 @@ def measure_world(arr, size, tile, halo, spacing, exemplar=None) -> dict:
     # the world's own edge band: a halo, and at least 3 spacings (an untiled pack's
     # density differs within about 1.5 spacings of the region's edge)
     margin = max(halo, 3.0 * spacing)
-    for mult in (2.0, 1.0):
+    for mult in WIDTHS:
         out[f"units_{mult:g}s"] = strip_units(arr, size, tile, mult * spacing, margin)
     t0 = _cpu()
     out["overlaps"] = overlapping_pairs(arr)
@@ -304,7 +320,11 @@ def main() -> None:
     ap.add_argument("--from-raw", default=None, help="only summarize the measurements pickled by an earlier --raw run")
     ap.add_argument("--dedupe", action="store_true", help="--from-raw: drop worlds with the first seed's element count")
     ap.add_argument("--overview", action="store_true", help="only the overview's ink folded modulo the tile (worlds_strips_overview.json)")
+    ap.add_argument("--synth-exemplar", default=None, help="synth on this exemplar of the fidelity suite instead of two_sizes (e.g. three_sizes)")
+    ap.add_argument("--widths", default="2,1", help="strip half-widths in spacings s (e.g. 3,2,1)")
     args = ap.parse_args()
+    global WIDTHS
+    WIDTHS = tuple(float(v) for v in args.widths.split(","))
     if args.overview:
         overview(args)
         return
@@ -314,7 +334,7 @@ def main() -> None:
 
     t_all = time.perf_counter()
     seeds = [int(v) for v in args.seeds.split(",")]
-    cfgs = _configs(args.quick)
+    cfgs = _synth_exemplar(_configs(args.quick), args.synth_exemplar)
     result: dict = {"benchmark": "worlds_strips", "command": " ".join(["python benchmarks/worlds_strips.py", *sys.argv[1:]]),
                     "definitions": __doc__.split("Definitions (the same for every method):")[1].split("Run:")[0].strip(),
                     "methods": {}}

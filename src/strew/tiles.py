@@ -286,33 +286,56 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
             parts.append(m.select(_near(m, window)))
     parts = [p for p in parts if len(p)]
     context = concat(_harmonize(parts)) if parts else None
+    band = 2.0 * _input_extent(job) if job.method in _GROWS_FROM_CONTEXT else 0.0
     if context is not None and job.method in _GROWS_FROM_CONTEXT:
-        region = _outside_finished(region, t, job, links)
+        region = _outside_finished(region, t, job, links, band)
     arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **job.params)
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
     if job.method in _GROWS_FROM_CONTEXT and len(arr):
-        # one element diameter: two_sizes strips +-0.05 tile 1.075x with one extent
-        # (radius), 1.020x with a diameter (seeds 3-5, 880 x 880); an element kept there
-        # touches only tiles within two diameters of t, which see it in t's border band
-        keep |= _within(arr, t.rect, 2.0 * _extent(arr))
+        # the elements whose disc reaches into the band of one element diameter about
+        # t's rectangle (see _GROWS_FROM_CONTEXT); an element kept there touches only
+        # tiles within 1.5 diameters of t, which see it in t's border band
+        keep |= _within(arr, t.rect, band + _radii(arr))
     arr = _own_parts(arr.select(keep))
     return arr.replace(meta={"tile": t.index}, region=None)
 
 
-# methods that grow the texture on from the context (synth: region growing, §5.4): a
-# tile's region leaves out its finished neighbours (_outside_finished), and a tile keeps
-# also its elements centred within one element diameter of its rectangle on an unfinished
-# neighbour's side, so that the elements crossing a border stay (its neighbour sees them
-# as context); pack fills gaps by design and keeps its neighbours' strip instead
+# methods that grow the texture on from the context (synth: region growing, §5.4). A
+# tile keeps also its elements on an unfinished neighbour's side whose disc reaches into
+# the band of one element diameter D (the exemplar's largest, _input_extent) about its
+# rectangle, so that the texture in that band is whole as the tile made it; the later
+# tile's region leaves out its finished neighbours' rectangles grown by D
+# (_outside_finished) and grows on from that band's outer edge. The band was cut by
+# centres before (centres within D kept; the later tile's region only less the finished
+# rectangles): the stones cut off left stone-shaped hollows in the kept band that only a
+# stone placed just there refills, the later tile filled them and the band's gaps with
+# pebbles, and a frozen context cannot yield to a larger element as the growing front
+# does (_grow._split_conflicts). benchmarks/worlds_strips.py (two_sizes, 2640 x 2640,
+# tiles 440, seeds 1,2): strips +-2s 1.049x the interior's density, stones 0.910x ->
+# 1.000x / 1.015x; three_sizes 1.061x, large 0.907x -> ~1.00x (numbers of the commit).
+# pack fills gaps by design and keeps its neighbours' strip instead
 _GROWS_FROM_CONTEXT = ("synth",)
 
 
 def _extent(arr: Any) -> float:
     """The largest bounding radius (shape radius x scale) of ``arr``'s elements."""
+    return float(np.max(_radii(arr)))
+
+
+def _radii(arr: Any) -> np.ndarray:
+    """(n,) float: each element's bounding radius (shape radius x largest |scale|)."""
     radii = np.array([float(arr.shapes[k].radius) for k in arr.kinds])
     scale = np.max(np.abs(np.asarray(arr.scale, float).reshape(len(arr), -1)), axis=1)
-    return float(np.max(radii[np.asarray(arr.kind, np.int64)] * scale))
+    return radii[np.asarray(arr.kind, np.int64)] * scale
+
+
+def _input_extent(job: _Job) -> float:
+    """synth: the largest bounding radius of the selected exemplars' elements (an output
+    element copies its exemplar element's shape and scale), the same for every tile."""
+    from .synth._api import as_selection
+
+    return max((_extent(a) for a in as_selection(job.input, job.params.get("selection")).exemplars() if len(a)), default=0.0)
 
 
 def _within(arr: Any, rect: tuple[float, float, float, float], d: float) -> np.ndarray:
@@ -321,8 +344,9 @@ def _within(arr: Any, rect: tuple[float, float, float, float], d: float) -> np.n
     return (arr.x >= x0 - d) & (arr.x <= x1 + d) & (arr.y >= y0 - d) & (arr.y <= y1 + d)
 
 
-def _outside_finished(region: Any, t: Tile, job: _Job, links: Mapping[int, list[tuple[float, float]]]) -> Any:
-    """``region`` less the finished neighbours' rectangles.
+def _outside_finished(region: Any, t: Tile, job: _Job, links: Mapping[int, list[tuple[float, float]]], band: float = 0.0) -> Any:
+    """``region`` less the finished neighbours' rectangles grown by ``band`` (the band
+    about them whose texture they kept whole, see ``_GROWS_FROM_CONTEXT``).
 
     synth fills any gap it can (§5.4's filler grows wherever a candidate fits): run on
     the whole grown rectangle, a tile filled the gaps of its finished neighbours'
@@ -347,7 +371,7 @@ def _outside_finished(region: Any, t: Tile, job: _Job, links: Mapping[int, list[
         x1 = w if i == nx - 1 else (i + 1) * tw
         y1 = h if j == job.grid[1] - 1 else (j + 1) * th
         for dx, dy in shifts:
-            boxes.append(shapely.box(i * tw + dx, j * th + dy, x1 + dx, y1 + dy))
+            boxes.append(shapely.box(i * tw + dx - band, j * th + dy - band, x1 + dx + band, y1 + dy + band))
     if not boxes:
         return region
     rest = shapely.difference(region.geometry, shapely.union_all(boxes))
