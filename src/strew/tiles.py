@@ -286,7 +286,8 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
             parts.append(m.select(_near(m, window)))
     parts = [p for p in parts if len(p)]
     context = concat(_harmonize(parts)) if parts else None
-    band = 2.0 * _input_extent(job) if job.method in _GROWS_FROM_CONTEXT else 0.0
+    # one element diameter, at most the halo (how far the tile's region reaches past it)
+    band = min(2.0 * _input_extent(job), job.halo) if job.method in _GROWS_FROM_CONTEXT else 0.0
     if context is not None and job.method in _GROWS_FROM_CONTEXT:
         region = _outside_finished(region, t, job, links, band)
     arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **job.params)
@@ -377,7 +378,8 @@ def _outside_finished(region: Any, t: Tile, job: _Job, links: Mapping[int, list[
     rest = shapely.difference(region.geometry, shapely.union_all(boxes))
     polys = [g for g in shapely.get_parts(rest) if isinstance(g, shapely.Polygon) and g.area > 0]
     if not polys:
-        return region
+        # a tile narrower than the bands: less the rectangles alone
+        return _outside_finished(region, t, job, links) if band else region
     return Region(shapely.MultiPolygon(polys) if len(polys) != 1 else polys[0])
 
 
