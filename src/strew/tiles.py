@@ -312,9 +312,15 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
 # rectangles): the stones cut off left stone-shaped hollows in the kept band that only a
 # stone placed just there refills, the later tile filled them and the band's gaps with
 # pebbles, and a frozen context cannot yield to a larger element as the growing front
-# does (_grow._split_conflicts). benchmarks/worlds_strips.py (two_sizes, 2640 x 2640,
-# tiles 440, seeds 1,2): strips +-2s 1.049x the interior's density, stones 0.910x ->
-# 1.000x / 1.015x; three_sizes 1.061x, large 0.907x -> ~1.00x (numbers of the commit).
+# does (_grow._split_conflicts). python benchmarks/worlds_strips.py --methods synth
+# --widths 3,2,1 [--synth-exemplar three_sizes] (2640 x 2640, tiles 440, seeds 1,2),
+# before -> after: two_sizes strips +-2s density 1.050x -> 1.001x, stones 0.910x ->
+# 1.007x (+-1s 1.021x -> 1.000x, stones 0.978x); three_sizes +-2s 1.061x -> 1.004x,
+# large 0.906x -> 1.005x, medium 0.964x -> 0.992x; folded profile chi2/dof 1.95 -> 0.75
+# and 1.94 -> 0.96. What is left: at the outer edge of the band's largest elements
+# (2.5-3 s into the later tile) the large kinds are still short (+-3s: stones 0.897x ->
+# 0.953x, large 0.882x -> 0.959x, density 1.057x -> 1.014x and 1.050x -> 1.010x): the
+# later tile still meets a frozen edge there, only a smoother one.
 # pack fills gaps by design and keeps its neighbours' strip instead
 _GROWS_FROM_CONTEXT = ("synth",)
 
