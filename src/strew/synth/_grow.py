@@ -284,6 +284,76 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     return added
 
 
+CROWD_RULE = True
+"""Growth keeps each output element's neighbourhood no fuller than its exemplar
+element's (see :func:`neighbour_limits`; off: the paper's collision test alone)."""
+
+
+def neighbour_limits(prep) -> np.ndarray:
+    """(n,) int: the most output neighbours (within r-bar) an element copied from each
+    exemplar element may have, or -1 for no limit. Computed once per ``prep``.
+
+    Extension of §5.1 and §5.6 for sparse exemplars: the limit is the element's own
+    neighbour count within its r-bar in the exemplar, scaled up by the share of that
+    disc inside the exemplar's domain (rounded). Only exemplars whose visible elements
+    are of one size class and that hold no voids get limits (the others keep their
+    structure by size classes and voids), and only elements with at least half of the
+    disc inside the domain. In Eq. 1 an output neighbour with no exemplar neighbour to
+    pair with is a left-partial pair: the copy does not belong there. Growth fills
+    every free-space point that no element covers; in a sparse, unsaturated exemplar
+    its gaps are texture that no free-space point stands for, and without a bound the
+    output packs them.
+    """
+    got = getattr(prep, "_nb_limits", None)
+    if got is not None and len(got) == len(prep.kind):
+        return got
+    out = np.full(len(prep.kind), -1, np.int64)
+    for s, dom in enumerate(prep.domains):
+        ids = np.flatnonzero(prep.source == s)
+        if len(ids) < 3 or prep.void[ids].any() or len(np.unique(prep.size_class[ids])) != 1:
+            continue
+        p, rb = prep.pos[ids], prep.rbar[ids]
+        cnt = cKDTree(p).query_ball_point(p, rb, return_length=True) - 1
+        share = shapely.area(shapely.intersection(shapely.buffer(shapely.points(p), rb, quad_segs=16), dom)) / (np.pi * rb**2)
+        ok = share >= 0.5
+        out[ids[ok]] = np.round(cnt[ok] / share[ok]).astype(np.int64)
+    prep._nb_limits = out
+    return out
+
+
+def _crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, lim: np.ndarray) -> np.ndarray:
+    """(m,) bool: copies of ``src`` at ``pts`` that would give themselves, or a visible
+    output element within its r-bar of them, more neighbours within r-bar than ``lim``
+    allows (see :func:`neighbour_limits`)."""
+    prep = state.prep
+    out = np.zeros(len(pts), bool)
+    if state.n == 0 or len(pts) == 0:
+        return out
+    reach = float(prep.rbar.max())
+    pts = np.ascontiguousarray(pts, dtype=float)
+    # the output within two r-bar of a copy: the copy's neighbours and theirs
+    near = np.flatnonzero(K.near_any(np.ascontiguousarray(state.pos), pts, 2.0 * reach) & ~prep.void[state.src])
+    if len(near) == 0:
+        return out
+    opos = state.pos[near]
+    osrc = state.src[near]
+    tree = cKDTree(opos)
+    own = lim[src]
+    cnt = tree.query_ball_point(pts, prep.rbar[src], return_length=True)
+    out |= (own >= 0) & (cnt > own)
+    # output elements whose neighbourhood is full already (only those within r-bar of
+    # a copy have all their neighbours in ``near``)
+    olim = lim[osrc]
+    cand = np.flatnonzero((olim >= 0) & K.near_any(np.ascontiguousarray(opos), pts, reach))
+    if len(cand) == 0:
+        return out
+    ocnt = tree.query_ball_point(opos[cand], prep.rbar[osrc[cand]], return_length=True) - 1
+    full = cand[ocnt >= olim[cand]]
+    if len(full):
+        out |= K.in_discs(pts, np.ascontiguousarray(opos[full]), np.ascontiguousarray(prep.rbar[osrc[full]], dtype=float))
+    return out
+
+
 def _yield_from(state: SynthState) -> int:
     """First iteration whose elements still yield (see :func:`_split_conflicts`)."""
     return max(state.grow_start, state.iterations - state.params.yield_window)
@@ -637,6 +707,9 @@ def grow(
     # elements whose collision disc is shrunk below their shape's bounding disc
     shape_test = shape_test_needed(prep)
     revivals, round_start = 0, state.n
+    lim = neighbour_limits(prep) if CROWD_RULE else None
+    if lim is not None and not (lim[prep.selected_elements] >= 0).any():
+        lim = None
     for _ in range(max_iterations):
         state.iterations += 1
         hz = np.flatnonzero(state.horizon)
@@ -716,6 +789,8 @@ def grow(
                 sub = np.flatnonzero(okp)
                 if phase == 0:
                     hard = _split_conflicts(state, ppos[sub], exv[sub], visible_only=has_voids)
+                    if lim is not None:
+                        hard |= _crowded(state, ppos[sub], exv[sub], lim)
                 else:
                     hard = state.conflicts(ppos[sub], exv[sub])
                 okp[sub[hard]] = False
