@@ -295,14 +295,25 @@ def neighbour_limits(prep) -> np.ndarray:
 
     Extension of §5.1 and §5.6 for sparse exemplars: the limit is the element's own
     neighbour count within its r-bar in the exemplar, scaled up by the share of that
-    disc inside the exemplar's domain (rounded). Only exemplars whose visible elements
-    are of one size class and that hold no voids get limits (the others keep their
-    structure by size classes and voids), and only elements with at least half of the
-    disc inside the domain. In Eq. 1 an output neighbour with no exemplar neighbour to
-    pair with is a left-partial pair: the copy does not belong there. Growth fills
-    every free-space point that no element covers; in a sparse, unsaturated exemplar
-    its gaps are texture that no free-space point stands for, and without a bound the
-    output packs them.
+    disc inside the exemplar's domain (rounded). In Eq. 1 an output neighbour with no
+    exemplar neighbour to pair with is a left-partial pair: the copy does not belong
+    there. Growth fills every free-space point that no element covers; in a sparse,
+    unsaturated exemplar its gaps are texture that no free-space point stands for
+    (§5.6 has the user place invisible elements there), and without a bound the output
+    packs them: stones of radius 4, 60 of them with gap 4 (benchmarks/_variants.py EDGE
+    p2), came out at 2.8x the exemplar's density.
+
+    Only elements with room left empty near them get a limit: an open circle (a
+    Delaunay circumcircle of the exemplar's centres, wholly inside its domain, at
+    whose centre an element of the exemplar would clear its three neighbours by
+    ``max(rc_p + rc_q, min_dist)``) has its centre within the element's r-bar, and at
+    least half of the element's r-bar disc lies inside the domain. Only exemplars of
+    one kind, one size class and no voids take part (voids already say where the
+    texture is empty; kinds and size classes have their own rules). Saturated
+    exemplars (lattices, bricks, scales) have no open circle and keep the paper's
+    growth: with limits on every one-kind exemplar, bricks of 6:1, scales and tight
+    rows lost faithfulness (their jittered copies exceed the lattice's exact count and
+    leave holes).
     """
     got = getattr(prep, "_nb_limits", None)
     if got is not None and len(got) == len(prep.kind):
@@ -310,12 +321,23 @@ def neighbour_limits(prep) -> np.ndarray:
     out = np.full(len(prep.kind), -1, np.int64)
     for s, dom in enumerate(prep.domains):
         ids = np.flatnonzero(prep.source == s)
-        if len(ids) < 3 or prep.void[ids].any() or len(np.unique(prep.size_class[ids])) != 1:
+        if len(ids) < 3 or prep.void[ids].any() or len(np.unique(prep.size_class[ids])) != 1 or len(np.unique(prep.kind[ids])) != 1:
             continue
         p, rb = prep.pos[ids], prep.rbar[ids]
+        cen, rad, tri = circumcircles(p)
+        if len(rad) == 0:
+            continue
+        rc, sk = prep.rc[ids], prep.skind[ids]
+        need = np.maximum(rc.min() + rc[tri], prep.min_dist[sk[0], sk[tri]]).max(axis=1)
+        room = rad >= need
+        room[room] = shapely.contains_xy(dom, cen[room, 0], cen[room, 1])
+        room[room] = shapely.distance(dom.exterior, shapely.points(cen[room])) >= rad[room]
+        if not room.any():
+            continue
+        near_room = cKDTree(cen[room]).query_ball_point(p, rb, return_length=True) > 0
         cnt = cKDTree(p).query_ball_point(p, rb, return_length=True) - 1
         share = shapely.area(shapely.intersection(shapely.buffer(shapely.points(p), rb, quad_segs=16), dom)) / (np.pi * rb**2)
-        ok = share >= 0.5
+        ok = (share >= 0.5) & near_room
         out[ids[ok]] = np.round(cnt[ok] / share[ok]).astype(np.int64)
     prep._nb_limits = out
     return out
