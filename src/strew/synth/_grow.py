@@ -811,8 +811,9 @@ def grow(
                 sub = np.flatnonzero(okp)
                 if phase == 0:
                     hard = _split_conflicts(state, ppos[sub], exv[sub], visible_only=has_voids)
-                    if lim is not None:
-                        hard |= _crowded(state, ppos[sub], exv[sub], lim)
+                    if lim is not None and not hard.all():
+                        rest = np.flatnonzero(~hard)
+                        hard[rest] = _crowded(state, ppos[sub[rest]], exv[sub[rest]], lim)
                 else:
                     hard = state.conflicts(ppos[sub], exv[sub])
                 okp[sub[hard]] = False
