@@ -41,8 +41,9 @@ def test_sparse_stones_keep_the_exemplar_density(seed):
 def test_limits_are_the_exemplar_counts():
     """A sparse stone whose r-bar disc lies inside the frame may have as many neighbours
     as it has in the exemplar (nearly every one has room left empty near it); a
-    saturated one-kind exemplar (hex lattice, bricks: no open circle), one of two size
-    classes (two_sizes) or one with voids (sparse_voids) gets no limit."""
+    saturated one-kind exemplar (hex lattice, bricks: no open circle), one of shrunk
+    collision discs (rows of tiles, sticks), one of two size classes (two_sizes) or one
+    with voids (sparse_voids) gets no limit."""
     ex = suite.make_exemplar("stones", rng=7, **SPARSE)
     prep = new_state(ex, Region.rectangle(100, 100), rng=1).prep
     lim = neighbour_limits(prep)
@@ -51,6 +52,6 @@ def test_limits_are_the_exemplar_counts():
     has = lim[inner] >= 0
     assert has.mean() > 0.9
     assert np.array_equal(lim[inner][has], cnt[has])
-    for name in ("hex_lattice", "bricks", "two_sizes", "sparse_voids"):
+    for name in ("hex_lattice", "bricks", "rows_noisy", "sticks", "two_sizes", "sparse_voids"):
         prep = new_state(suite.make_exemplar(name, rng=1), Region.rectangle(100, 100), rng=1).prep
         assert np.all(neighbour_limits(prep) == -1), name

@@ -309,7 +309,10 @@ def neighbour_limits(prep) -> np.ndarray:
     ``max(rc_p + rc_q, min_dist)``) has its centre within the element's r-bar, and at
     least half of the element's r-bar disc lies inside the domain. Only exemplars of
     one kind, one size class and no voids take part (voids already say where the
-    texture is empty; kinds and size classes have their own rules). Saturated
+    texture is empty; kinds and size classes have their own rules), and whose
+    collision discs are not shrunk below 0.9 of their bounding discs (elongated
+    shapes: the centres' circles do not say where a stick fits; with limits, sticks
+    at 3.5x the frame fell from 4/5 to 2/5 faithful, 0.87x the density). Saturated
     exemplars (lattices, bricks, scales) have no open circle and keep the paper's
     growth: with limits on every one-kind exemplar, bricks of 6:1, scales and tight
     rows lost faithfulness (their jittered copies exceed the lattice's exact count and
@@ -321,7 +324,7 @@ def neighbour_limits(prep) -> np.ndarray:
     out = np.full(len(prep.kind), -1, np.int64)
     for s, dom in enumerate(prep.domains):
         ids = np.flatnonzero(prep.source == s)
-        if len(ids) < 3 or prep.void[ids].any() or len(np.unique(prep.size_class[ids])) != 1 or len(np.unique(prep.kind[ids])) != 1:
+        if len(ids) < 3 or prep.void[ids].any() or len(np.unique(prep.size_class[ids])) != 1 or len(np.unique(prep.kind[ids])) != 1 or np.any(prep.rc[ids] < 0.9 * prep.r[ids]):
             continue
         p, rb = prep.pos[ids], prep.rbar[ids]
         cen, rad, tri = circumcircles(p)
