@@ -34,7 +34,8 @@ Definitions (the same for every method):
   ``s`` of a border against the others.
 
 Run: ``python benchmarks/worlds_strips.py [--methods pack,synth,ornament] [--seeds 1,2]
-[--quick] [--no-control] [--raw R] [--synth-exemplar three_sizes] [--widths 3,2,1]``. Writes ``benchmarks/results/worlds_strips.json``.
+[--quick] [--no-control] [--raw R] [--synth-exemplar three_sizes] [--widths 3,2,1]
+[--ornament-pattern NAME]``. Writes ``benchmarks/results/worlds_strips.json``.
 ``--from-raw R [--dedupe]`` summarizes the measurements an earlier ``--raw R`` run kept.
 ``--overview``: the overview PNG's ink (the grid as the eye sees it), folded modulo the
 tile, tiled against untiled (``worlds_strips_overview.json``).
@@ -107,6 +108,23 @@ def _synth_exemplar(cfgs: dict, name: str | None) -> dict:
 
     ex = fidelity_suite().make_exemplar(name)
     cfgs["synth"] = dict(cfgs["synth"], input=ex, exemplar=lambda: ex)
+    return cfgs
+
+
+def _ornament_pattern(cfgs: dict, argv: list[str]) -> dict:
+    """``--ornament-pattern NAME`` (issue 19.4, another pattern than flowers): ornament's
+    world grows NAME, its fidelity exemplar too; the world and tile sizes stay."""
+    if "--ornament-pattern" not in argv:
+        return cfgs
+    name = argv[argv.index("--ornament-pattern") + 1]
+
+    def ex():
+        import strew
+        from strew.ornament import grow_ornament
+
+        return grow_ornament(name, strew.Region.rectangle(60, 60), rng=0)
+
+    cfgs["ornament"] = dict(cfgs["ornament"], input=name, exemplar=ex)
     return cfgs
 
 
@@ -278,7 +296,7 @@ def overview(args: argparse.Namespace) -> None:
     from strew._method import spec
     from strew.tiles import tiled
 
-    cfgs = _configs(args.quick)
+    cfgs = _ornament_pattern(_configs(args.quick), sys.argv)
     seed = int(args.seeds.split(",")[0])
     res: dict = {"benchmark": "worlds_strips --overview", "command": " ".join(["python benchmarks/worlds_strips.py", *sys.argv[1:]]),
                  "note": "ink: non-white pixels of strew.io._overview.Overview (2048 px on the longer side); near: within one "
@@ -319,6 +337,7 @@ def main() -> None:
     ap.add_argument("--raw", default=None, help="also pickle the per-world measurements here")
     ap.add_argument("--from-raw", default=None, help="only summarize the measurements pickled by an earlier --raw run")
     ap.add_argument("--dedupe", action="store_true", help="--from-raw: drop worlds with the first seed's element count")
+    ap.add_argument("--ornament-pattern", default=None, help="ornament grows this pattern [default: flowers]")
     ap.add_argument("--overview", action="store_true", help="only the overview's ink folded modulo the tile (worlds_strips_overview.json)")
     ap.add_argument("--synth-exemplar", default=None, help="synth on this exemplar of the fidelity suite instead of two_sizes (e.g. three_sizes)")
     ap.add_argument("--widths", default="2,1", help="strip half-widths in spacings s (e.g. 3,2,1)")
@@ -334,7 +353,7 @@ def main() -> None:
 
     t_all = time.perf_counter()
     seeds = [int(v) for v in args.seeds.split(",")]
-    cfgs = _synth_exemplar(_configs(args.quick), args.synth_exemplar)
+    cfgs = _ornament_pattern(_synth_exemplar(_configs(args.quick), args.synth_exemplar), sys.argv)
     result: dict = {"benchmark": "worlds_strips", "command": " ".join(["python benchmarks/worlds_strips.py", *sys.argv[1:]]),
                     "definitions": __doc__.split("Definitions (the same for every method):")[1].split("Run:")[0].strip(),
                     "methods": {}}
