@@ -553,13 +553,21 @@ class _Grower:
         # the proxy translated by (dx, dy) covers the cells the proxy covers in a raster
         # whose origin is moved by (-dx, -dy)
         a = (self.rows, self.cols, self.x0 - dx, self.y0 - dy, self.h)
-        if isinstance(pr, Circle):
-            cells = cover_disc(*a, float(pr.center[0]), float(pr.center[1]), pr.radius, 0.0)  # type: ignore[index]
-            if len(cells):
-                return cells
-            return cover_disc(*a, float(pr.center[0]), float(pr.center[1]), 0.0, self.pad)  # type: ignore[index]
-        if isinstance(pr, Point):
-            return cover_disc(*a, float(pr.center[0]), float(pr.center[1]), 0.0, self.pad)  # type: ignore[index]
+        if isinstance(pr, (Circle, Point)):
+            cx, cy = float(pr.center[0]), float(pr.center[1])  # type: ignore[index]
+            cells = cover_disc(*a, cx, cy, pr.radius, 0.0) if isinstance(pr, Circle) else np.empty(0, np.int64)
+            if not len(cells):
+                cells = cover_disc(*a, cx, cy, 0.0, self.pad)
+            if not len(cells):
+                # a point on a cell corner: the four centres lie at exactly the half
+                # diagonal, which rounding may put a hair beyond it. It covered nothing,
+                # so no circle was stopped by it and growth never began (issue 19.4: a
+                # tile of 180 at (210, 210), seed (300, 300), cells of 0.6 grew nothing
+                # and left its tile empty); it covers the cell that holds it
+                j = min(max(int((cx - a[2]) / self.h), 0), self.cols - 1)
+                i = min(max(int((cy - a[3]) / self.h), 0), self.rows - 1)
+                cells = np.array([i * self.cols + j], np.int64)
+            return cells
         self.has_lines = True
         pts = np.ascontiguousarray(pr.polyline(), dtype=np.float64)
         if isinstance(pr, Polygon):
