@@ -563,10 +563,11 @@ class _Grower:
                 # diagonal, which rounding may put a hair beyond it. It covered nothing,
                 # so no circle was stopped by it and growth never began (issue 19.4: a
                 # tile of 180 at (210, 210), seed (300, 300), cells of 0.6 grew nothing
-                # and left its tile empty); it covers the cell that holds it
-                j = min(max(int((cx - a[2]) / self.h), 0), self.cols - 1)
-                i = min(max(int((cy - a[3]) / self.h), 0), self.rows - 1)
-                cells = np.array([i * self.cols + j], np.int64)
+                # and left its tile empty); it covers the cell that holds it (none when it
+                # lies off the raster: a far image on a torus)
+                j, i = math.floor((cx - a[2]) / self.h), math.floor((cy - a[3]) / self.h)
+                if 0 <= i < self.rows and 0 <= j < self.cols:
+                    cells = np.array([i * self.cols + j], np.int64)
             return cells
         self.has_lines = True
         pts = np.ascontiguousarray(pr.polyline(), dtype=np.float64)
