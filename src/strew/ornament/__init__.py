@@ -227,6 +227,7 @@ def grow_ornament(
             progress=progress,
             should_cancel=should_cancel,
             periodic=prm["periodic"],
+            _thin_boundary=ctx is not None,  # the context's thin footprints (issue 19.4)
         )
         arr = orn.render(prm["style"], line_width=prm["line_width"], seeds=prm["draw_seeds"])
         if free is not dom or tile is not None:

@@ -347,6 +347,7 @@ class _Grower:
         reporter: Reporter,
         incremental: bool = True,
         periodic: tuple[float, float, float, float] | None = None,
+        thin_boundary: bool = False,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -402,6 +403,18 @@ class _Grower:
         inside = shapely.contains_xy(region.prepared, gx.ravel(), gy.ravel()).reshape(rows, cols)
         if periodic is None:
             covered = np.where(inside, 0, 1).astype(np.int8)
+            if thin_boundary:
+                # Around context (issue 19.4): the region is the panel less the context's
+                # footprint, whose thin parts (willow's stems, a hair wide) hold no cell
+                # centre, so the raster saw no boundary where the exact test did; every
+                # circle near them was then discarded as stopped by the boundary, and a
+                # tiled willow world's tile grew nothing. The boundary is drawn as lines
+                # are (cells within half a cell diagonal). Not for a plain panel, whose
+                # results stay as they were.
+                pad = h * math.sqrt(0.5)
+                for p in region.paths:
+                    ring = np.ascontiguousarray(np.vstack([p.points, p.points[:1]]), dtype=np.float64)
+                    covered.flat[cover_polyline(rows, cols, self.x0, self.y0, h, ring, pad)] = 1
         else:
             # no boundary on a torus: cells outside the tile are only not candidates (bit 4)
             covered = np.where(inside, 0, 4).astype(np.int8)
@@ -891,6 +904,7 @@ def grow_elements(
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
     periodic: bool = False,
+    _thin_boundary: bool = False,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
@@ -938,7 +952,8 @@ def grow_elements(
     check_work("--min-radius" if min_radius is not None else "--size/--region", count=max_elements, region=region, per_element=math.pi * mr * mr)
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
-    g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile)
+    g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile,
+                thin_boundary=_thin_boundary)
     g.run()
     rep.done(len(g.elements) - g.n_seeds)
     stats = dict(g.stats)
