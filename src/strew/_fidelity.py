@@ -76,10 +76,19 @@ as a whole fails it even where the local-frame metrics pass. A result made in a 
 mode (grow's rotate and flow modes, recorded in its ``meta``) is measured in each
 element's local frame instead (``eq5_frame``), with the same tolerance.
 
-Edges. The result is compared in its interior: the region eroded by ``2 s``. The
-exemplar's window is its region (a crop, where elements may cross the frame) or, when
-every element is drawn wholly inside the frame, the region eroded by the median element
-radius (such an element has its centre at least its radius from the frame).
+Edges. The result is compared in its interior: the region eroded by ``2 s``, or by its
+wall reach (below) where larger. The exemplar's window is its region (a crop, where
+elements may cross the frame) or, when every element is drawn wholly inside the frame,
+the region eroded by the median element radius (such an element has its centre at least
+its radius from the frame). Kind shares (``fraction`` and both factors of ``density``)
+are counted by minus sampling (the border method of point-process statistics: only
+centres at least ``d`` from the domain's boundary count, unbiased for a stationary
+texture): where several kinds are each kept wholly inside the frame by about their own
+radius and keep off by different distances, the frame is a wall, the band along it holds
+only the smaller kinds and a layer of the larger ones packs against it, and ``d`` is
+twice the largest distance a kind keeps (at most its radius; ``_wall_reach``); otherwise
+``d`` is 0. A stationary result continues the exemplar's interior (Davison §5.1 copies
+interior neighbourhoods), so the whole frame's shares would under-count large stones.
 
 Voids (the synth ``void`` column, Davison §5.6) are invisible: they are left out of
 every metric; their share of the exemplar (and of the result, if it keeps them) is
@@ -233,6 +242,7 @@ class _Sample:
     sym: np.ndarray  # (n,) int symmetry order (0: isotropic)
     window: shapely.Geometry  # where statistics are taken
     region: shapely.Geometry  # the whole domain (for the Hanisch correction and empty circles)
+    wall: float = 0.0  # kind counts (fraction, density) only from centres this far from the domain's boundary
 
 
 def _visible(arr: Arrangement) -> np.ndarray:
@@ -283,6 +293,7 @@ class _Raw:
     circ_r: np.ndarray  # (t,)
     cell_area: np.ndarray  # (n,) Voronoi cell area
     cell_ok: np.ndarray  # (n,) bool: the cell is bounded and decided by elements of the domain
+    counted: np.ndarray  # (n,) bool: beyond the frame's wall reach (minus sampling of kind counts)
 
 
 REL_BINS = 8
@@ -328,7 +339,38 @@ def _raw(sm: _Sample, K: int, s: float, template: tuple[int, np.ndarray] | None)
             inside = shapely.contains_xy(sm.region, circ_c[:, 0], circ_c[:, 1])
             inside &= shapely.distance(sm.region.boundary, shapely.points(circ_c)) >= circ_r
             circ_c, circ_r = circ_c[inside], circ_r[inside]
-    return _Raw(pairs, dvec, dist, nn, to_edge, lattice_ok, lattice_valid, rel, bear, owner, circ_c, circ_r, cell_area, cell_ok)
+    counted = to_edge >= sm.wall if sm.wall > 0 else np.ones(n, bool)
+    return _Raw(pairs, dvec, dist, nn, to_edge, lattice_ok, lattice_valid, rel, bear, owner, circ_c, circ_r, cell_area, cell_ok, counted)
+
+
+def _wall_reach(xy: np.ndarray, kind: np.ndarray, radius: np.ndarray, region: shapely.Geometry) -> float:
+    """How far in from its frame an arrangement's kind shares are biased by the frame (0: not).
+
+    A frame that elements of several sizes are kept wholly inside is a wall, not a window
+    on a larger texture: each kind's centres keep off it by about the kind's radius, so
+    a band along it holds only the smaller kinds, and the kinds kept off pack in a layer
+    against the band (measured over 40 draws of the suite's three_sizes: no large stone
+    within 1.0 R of the frame, R the largest radius; 1.5-1.8 x the interior's density of
+    them at 1.0-1.5 R, small stones at 3 x theirs at 0.25-0.5 R; the shares settle from
+    about 2 R on). With ``m_k`` the least distance of kind k's centres to the frame and
+    ``r_k`` its largest bounding radius, the frame is such a wall when there are several
+    kinds, every kind keeps ``m_k >= 0.75 r_k`` (held inside by its size: no kind crosses
+    the frame as in a crop, nor is cut by it as rings' tiles are, whose hubs sit at the
+    lattice's phase) and the kinds keep off by different distances (``max m >= 1.25 min
+    m``: the band between holds only the nearer kinds; stripes' dots and bars, thrown as
+    equal discs, keep the same). Its reach is then ``2 max_k min(m_k, r_k)`` (a kind kept
+    off by more than its radius is chance: a few boulders), else 0.
+    """
+    kinds = np.unique(kind)
+    if len(xy) == 0 or len(kinds) < 2:
+        return 0.0
+    edge = shapely.distance(region.boundary, shapely.points(xy))
+    edge = np.where(shapely.contains_xy(region, xy[:, 0], xy[:, 1]), edge, 0.0)
+    m = np.array([edge[kind == k].min() for k in kinds])
+    r = np.array([radius[kind == k].max() for k in kinds])
+    if not (np.all(m >= 0.75 * r) and m.max() >= 1.25 * m.min()):
+        return 0.0
+    return 2.0 * float(np.minimum(m, r).max())
 
 
 def _voronoi_cells(xy: np.ndarray, simp: np.ndarray, cc: np.ndarray, cr: np.ndarray, to_edge: np.ndarray, tri: Any) -> tuple[np.ndarray, np.ndarray]:
@@ -518,15 +560,20 @@ def _stats(
     area = float(window.area)
     kin = sm.kind[idx]
     counts = np.bincount(kin, minlength=K + 1).astype(float)[: K + 1]
-    tot = counts.sum()
-    fraction = counts / tot if tot else np.full(K + 1, np.nan)
-    # density per kind: the kind's share of the window's elements times the elements per
-    # unit area of the Voronoi cells that elements beyond the domain cannot change; no
-    # frame, margin or crop biases either factor
-    v = idx[raw.cell_ok[idx]]
+    # kind shares by minus sampling (the border method: only centres beyond the frame's
+    # wall reach count, see _wall_reach): a stationary result's interior takes the
+    # exemplar's interior shares, not those of the band along its frame
+    ci = idx[raw.counted[idx]]
+    shares = np.bincount(sm.kind[ci], minlength=K + 1).astype(float)[: K + 1]
+    tot = shares.sum()
+    fraction = shares / tot if tot else np.full(K + 1, np.nan)
+    # density per kind: the kind's share of the window's counted elements times the
+    # elements per unit area of their Voronoi cells that elements beyond the domain cannot
+    # change; no frame, margin or crop biases either factor
+    v = ci[raw.cell_ok[ci]]
     cell_total = float(raw.cell_area[v].sum())
     if len(v) >= 3 and cell_total > 0 and tot > 0:
-        density = counts[:K] / tot * (len(v) / cell_total)
+        density = shares[:K] / tot * (len(v) / cell_total)
     else:
         density = np.full(K, np.nan)
     # g_ab(r), translation correction
@@ -1100,14 +1147,20 @@ def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None =
         if ex_win.is_empty or ex_win.area <= 0.25 * ex_geom.area:
             ex_win = ex_geom
     res_geom = _region_geom(result, region, 0.5 * s)
-    res_win = _interior(res_geom, RESULT_MARGIN * s)
-    margin_used = RESULT_MARGIN
+    ex = _sample(exemplar, kinds, sym, ex_geom, ex_win)
+    res = _sample(result, kinds, sym, res_geom, res_geom)
+    # kind counts by minus sampling beyond each side's wall reach (_wall_reach), the same
+    # rule on both sides: the result's window is its interior beyond 2 s and its reach
+    ex.wall = _wall_reach(ex.xy, ex.kind, ex.radius, ex_geom)
+    while ex.wall > 0 and ex_win.intersection(_interior(ex_geom, ex.wall)).area < 0.25 * ex_win.area:
+        ex.wall *= 0.8  # a small exemplar keeps a quarter of its window to count kinds in
+    margin_used = max(RESULT_MARGIN * s, _wall_reach(res.xy, res.kind, res.radius, res_geom))
+    res_win = _interior(res_geom, margin_used)
     if res_win.is_empty or res_win.area < 0.25 * ex_win.area:
         res_win, margin_used = res_geom, 0.0
     if res_win.is_empty or res_win.area <= 0:
         raise InputError("region: has no area to measure in")
-    ex = _sample(exemplar, kinds, sym, ex_geom, ex_win)
-    res = _sample(result, kinds, sym, res_geom, res_win)
+    res.window = res_win
 
     template, ex_share = _lattice_template(ex, s)
     lattice = template is not None and ex_share >= LATTICE_SHARE
@@ -1170,7 +1223,8 @@ def fidelity(exemplar: Arrangement, result: Arrangement, region: Region | None =
         "exemplar_window_area": float(ex_win.area),
         "result_window_area": float(res_win.area),
         "area_ratio": float(res_win.area / ex_win.area) if ex_win.area > 0 else None,
-        "result_margin": margin_used * s,
+        "result_margin": margin_used,
+        "exemplar_wall_reach": ex.wall,
         "largest_empty_circle": {"exemplar": ex_stats.lec, "result": res_stats.lec},
         "symmetry_order": {k: int(v) for k, v in sym.items() if k in kinds},
     }
