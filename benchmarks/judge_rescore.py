@@ -34,7 +34,7 @@ from _variants import cases
 from strew import Region
 
 ROOT = Path(__file__).resolve().parents[1]
-SETS = ("suite-synth", "suite-grow", "var-synth", "var-grow")
+SETS = ("suite-synth", "suite-grow", "var-synth", "var-grow", "seams-synth")
 ROTATE = ("hex_lattice", "rows_noisy", "bricks", "scales", "rings", "sticks")
 
 
@@ -45,6 +45,10 @@ def jobs(sets: list[str], only: list[str]) -> list[tuple[str, str, str, int, dic
     out = []
     for st in sets:
         for name in names:
+            if st == "seams-synth":  # synth.py --seams: 50x the area, the local map's failing windows
+                if name != "sticks" or only:
+                    out += [(st, name, "v0", 0, {}, "synth", seed, 7.07) for seed in (1, 2, 3)]
+                continue
             if st.startswith("suite"):
                 methods = ["synth"] if st == "suite-synth" else ["grow:fixed"] + (["grow:rotate"] if name in ROTATE else [])
                 for m in methods:
@@ -59,9 +63,12 @@ def jobs(sets: list[str], only: list[str]) -> list[tuple[str, str, str, int, dic
     return out
 
 
+FREE = ""  # "--free-support X": synth made with strew.synth._prepare.FREE_SUPPORT = X (cache key suffix)
+
+
 def key(j: tuple[Any, ...]) -> str:
     st, name, label, _v, _kw, m, seed, _scale = j
-    return f"{st}_{name}_{label}_{m.replace(':', '-')}_{seed}"
+    return f"{st}_{name}_{label}_{m.replace(':', '-')}_{seed}" + (f"_fs{FREE}" if FREE and m == "synth" else "")
 
 
 def make(j: tuple[Any, ...]) -> tuple[Any, Any]:
@@ -74,6 +81,8 @@ def make(j: tuple[Any, ...]) -> tuple[Any, Any]:
 
         region = Region.rectangle(scale * (x1 - x0), scale * (y1 - y0))
         out = synthesize(ex, region, rng=seed) if st.startswith("suite") else synthesize(ex, region, rng=seed, measure=False)
+        if st == "seams-synth":
+            out = out.replace(region=region)
         return ex, out
     from strew.grow import grow
 
@@ -97,9 +106,16 @@ def load_base(base: str) -> Any:
     return mod
 
 
-def verdict(F: Any, ex: Any, out: Any, suite: bool) -> dict[str, Any]:
-    rep = F.fidelity(ex, out, eq5=suite, local=False)
+def verdict(F: Any, ex: Any, out: Any, suite: bool, seams: bool = False) -> dict[str, Any]:
+    rep = F.fidelity(ex, out, eq5=suite, local=seams)
     fails = [f"{k}={m.value:.3g}/{m.tolerance:.3g}" for k, m in rep.metrics.items() if m.applicable and not m.passed]
+    if seams:
+        import numpy as np
+
+        sc = np.asarray(rep.local["score"], float)
+        sc = sc[np.isfinite(sc)]
+        w = rep.local["worst"] or {}
+        fails.append(f"failing windows {float(np.mean(sc > 1.0)):.3f} of {sc.size}, worst {w.get('score', 0.0):.3f} {w.get('metric')}")
     return {"faithful": bool(rep.faithful), "failures": fails}
 
 
@@ -111,7 +127,14 @@ def main() -> None:
     p.add_argument("--cache", default="/tmp/judge_rescore_cache")
     p.add_argument("--base", default="/work/main/src")
     p.add_argument("--json", default=str(ROOT / "benchmarks" / "results" / "judge_rescore.json"))
+    p.add_argument("--free-support", default="", help="synth with strew.synth._prepare.FREE_SUPPORT set to this (its own cache entries)")
     a = p.parse_args()
+    global FREE
+    if a.free_support:
+        import strew.synth._prepare as P
+
+        FREE = a.free_support
+        P.FREE_SUPPORT = float(FREE)
     sets = [s for s in a.sets.split(",") if s]
     only = [s for s in a.only.split(",") if s]
     cache = Path(a.cache)
@@ -137,7 +160,8 @@ def main() -> None:
             continue
         _, ex, out = pickle.loads(f.read_bytes())
         suite = j[0].startswith("suite")
-        b, n = verdict(OLD, ex, out, suite), verdict(NEW, ex, out, suite)
+        seams = j[0] == "seams-synth"
+        b, n = verdict(OLD, ex, out, suite, seams), verdict(NEW, ex, out, suite, seams)
         r = {"set": j[0], "case": j[1], "variant": j[2], "method": j[5], "seed": j[6], "before": b, "after": n}
         rows.append(r)
         flag = "" if b["faithful"] == n["faithful"] else "  CHANGED"
