@@ -10,7 +10,10 @@ takes the interior's shares, while ``strew.metrics.fidelity`` takes the kind fra
 (and the density factor share x elements per area) over the whole frame. Printed per
 case: the largest kind's share in the whole frame, in the interior (centres at least the
 band's width from the frame) and in the inner part of synth's output (region ``--scale``
-times the frame's side; 10 % margin), and each as a ratio to the whole frame's.
+times the frame's side; 10 % margin), and each as a ratio to the whole frame's; then the
+exemplar's and the output's share as ``strew.metrics.fidelity`` counts them (``judge_ex``,
+``judge_out``: minus sampling beyond the frame's wall reach, ``info["exemplar_wall_reach"]``
+printed as ``reach``).
 
     python benchmarks/synth_band.py [--only three_sizes,two_sizes] [--variants 0-3] [--seeds 1] [--scale 3.5]
 """
@@ -23,6 +26,7 @@ import numpy as np
 from _runner import Bench, fidelity_suite, parse_args
 
 from strew import Region
+from strew.metrics import fidelity
 from strew.synth import synthesize
 
 
@@ -67,9 +71,12 @@ def main() -> None:
             for seed in _ints(args.seeds):
                 out = synthesize(ex, Region.rectangle(w, h), rng=seed, measure=False)
                 got = shares(out, (0.1 * w, 0.1 * h, 0.9 * w, 0.9 * h), K)[big]
+                rep = fidelity(ex, out, eq5=False, local=False)
+                m = rep.metrics[f"fraction[{ex.kinds[big]}]"]
                 bench.row(f"{name} v{v}", seed=seed, kind=ex.kinds[big], band=round(band, 1), frame=round(float(whole), 3),
                           interior=round(float(inner), 3), output=round(float(got), 3),
-                          interior_ratio=round(float(inner / whole), 2), output_ratio=round(float(got / whole), 2))
+                          interior_ratio=round(float(inner / whole), 2), output_ratio=round(float(got / whole), 2),
+                          reach=round(float(rep.info["exemplar_wall_reach"]), 1), judge_ex=round(float(m.exemplar), 3), judge_out=round(float(m.result), 3))
     bench.finish()
 
 
