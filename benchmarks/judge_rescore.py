@@ -34,7 +34,7 @@ from _variants import cases
 from strew import Region
 
 ROOT = Path(__file__).resolve().parents[1]
-SETS = ("suite-synth", "suite-grow", "var-synth", "var-grow", "seams-synth")
+SETS = ("suite-synth", "suite-grow", "var-synth", "var-grow", "seams-synth", "calib")
 ROTATE = ("hex_lattice", "rows_noisy", "bricks", "scales", "rings", "sticks")
 
 
@@ -43,8 +43,13 @@ def jobs(sets: list[str], only: list[str]) -> list[tuple[str, str, str, int, dic
     mk = fidelity_suite()
     names = only or list(mk.NAMES)
     out = []
+    if "calib" in sets:
+        out += [("calib", lab, "seam", 0, {}, "seam", 0, 0.0) for lab in ("rings", "two_sizes", "clusters")]
     for st in sets:
         for name in names:
+            if st == "calib":  # fidelity_calibration.py: fresh draws at 10x, 50x (seed 0) and its --seams controls
+                out += [(st, name, f"x{k:g}", 0, {}, "draw", 0, k) for k in (10.0, 50.0)]
+                continue
             if st == "seams-synth":  # synth.py --seams: 50x the area, the local map's failing windows
                 if name != "sticks" or only:
                     out += [(st, name, "v0", 0, {}, "synth", seed, 7.07) for seed in (1, 2, 3)]
@@ -74,6 +79,12 @@ def key(j: tuple[Any, ...]) -> str:
 def make(j: tuple[Any, ...]) -> tuple[Any, Any]:
     st, name, _label, v, kw, m, seed, scale = j
     mk = fidelity_suite()
+    if st == "calib":
+        import fidelity_calibration as FC
+
+        if m == "seam":
+            return (mk.make_exemplar("rings"), FC.rings_seam(21)) if name == "rings" else (mk.make_exemplar(name), FC.synth_obstacle_seam(name))
+        return mk.make_exemplar(name), FC.larger(name, 0, scale)
     ex = mk.make_exemplar(name, rng=v or None, **kw)
     x0, y0, x1, y1 = ex.region.bounds
     if m == "synth":
@@ -139,7 +150,7 @@ def main() -> None:
     only = [s for s in a.only.split(",") if s]
     cache = Path(a.cache)
     cache.mkdir(parents=True, exist_ok=True)
-    todo = jobs(sets, only)
+    todo = sorted(jobs(sets, only), key=lambda j: j[7] if j[0] == "calib" else 0.0)  # calib: the 50x draws last
     if a.what == "make":
         for j in todo:
             f = cache / (key(j) + ".pkl")
@@ -160,7 +171,7 @@ def main() -> None:
             continue
         _, ex, out = pickle.loads(f.read_bytes())
         suite = j[0].startswith("suite")
-        seams = j[0] == "seams-synth"
+        seams = j[0] in ("seams-synth", "calib")
         b, n = verdict(OLD, ex, out, suite, seams), verdict(NEW, ex, out, suite, seams)
         r = {"set": j[0], "case": j[1], "variant": j[2], "method": j[5], "seed": j[6], "before": b, "after": n}
         rows.append(r)
