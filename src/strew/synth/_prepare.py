@@ -348,6 +348,17 @@ but python benchmarks/fidelity.py --method synth --seeds 1-5 fell from 60/60 to 
 nn 0.129/0.127 on seed 3: its small stones fell further below the exemplar's share),
 so it stays off. 0.4: 46/62; 0.8: 48/62. Without the best match's own vectors,
 clusters (rings of dots far apart) stopped growing after the seed patch (0/6).
+
+Again with the judge's kind shares minus-sampled beyond the exemplar frame's wall reach
+(issue 13, ``strew._fidelity._wall_reach``), on the same outputs (python
+benchmarks/judge_rescore.py score --sets suite-synth,var-synth [--free-support X]; the
+variants are synth_variants.py --varied's 254 runs): 0 -> 0.6 -> 0.4, suite synth seeds
+1-5 60/60 -> 60/60 -> 60/60 (the old judge: 60 -> 55 -> 55, three sizes 0/5), variants
+210 -> 217 -> 214 of 254 (three sizes 10 -> 16 -> 15 of 26, two sizes 16 -> 17 -> 16,
+stones 14 -> 15 -> 15, stripes 19 -> 20 -> 20, rings 21 -> 21 -> 22) but clusters
+26 -> 24 -> 23 (edge set p2s8, far-apart full rings: synth stops after the seed patch,
+g[disc,dot] 764 against 2.08) and, at 0.4, sparse voids 16 -> 15: a class loses runs,
+so it stays off.
 """
 
 
