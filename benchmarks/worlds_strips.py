@@ -85,6 +85,17 @@ def _configs(quick: bool) -> dict:
 
         return grow_ornament("flowers", strew.Region.rectangle(60, 60), rng=0)
 
+    def stones():
+        from strew._resources import example_path
+        from strew.io import load_shapes
+
+        return load_shapes(example_path("pack", "stones.json"))
+
+    def stones_ex():
+        from strew.pack import pack
+
+        return pack(stones(), strew.Region.rectangle(900, 900), scale=(0.55, 0.75), rng=0)
+
     return {
         # ~1,400 elements a tile (benchmarks/worlds.py's pack world)
         "pack": dict(input=bar_disc, side=400.0 if quick else 800.0, tile=100.0, params={}, exemplar=pack_ex),
@@ -92,6 +103,10 @@ def _configs(quick: bool) -> dict:
         "synth": dict(input=two, side=1320.0 if quick else 2640.0, tile=440.0, params={"measure": False}, exemplar=lambda: two),
         # flowers: 4 kinds (stem, leaf, flower, bud)
         "ornament": dict(input="flowers", side=360.0 if quick else 480.0, tile=120.0, params={}, exemplar=orn_ex),
+        # pack on another input (--methods pack_stones): strew demo's concave stones (a
+        # ring with a hole, a hook, a crescent) at its scale 0.55-0.75, ~1,600 elements a tile
+        "pack_stones": dict(method="pack", input=stones(), side=3600.0 if quick else 7200.0, tile=900.0,
+                            params={"scale": (0.55, 0.75)}, exemplar=stones_ex),
     }
 
 
@@ -307,9 +322,9 @@ def overview(args: argparse.Namespace) -> None:
         row = {}
         for mode in ("tiled", "untiled"):
             if mode == "tiled":
-                arr = tiled(method, c["input"], size, tile_size=c["tile"], seed=seed, **c["params"])
+                arr = tiled(c.get("method", method), c["input"], size, tile_size=c["tile"], seed=seed, **c["params"])
             else:
-                arr = spec(method).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
+                arr = spec(c.get("method", method)).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
             s = 1.0 / np.sqrt(len(arr) / (size[0] * size[1]))
             r = overview_profile(arr, size, c["tile"], s)
             prof = r.pop("profile")
@@ -384,11 +399,11 @@ def main() -> None:
             for mode in modes:
                 t0 = _cpu()
                 if mode == "tiled":
-                    arr = tiled(method, c["input"], size, tile_size=c["tile"], seed=seed, **c["params"])
+                    arr = tiled(c.get("method", method), c["input"], size, tile_size=c["tile"], seed=seed, **c["params"])
                     halo = float(arr.meta["world"]["halo"])
                     meta["halo"] = halo
                 else:
-                    arr = spec(method).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
+                    arr = spec(c.get("method", method)).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
                     halo = meta["halo"]
                 cpu = _cpu() - t0
                 if mode in last and _same(last[mode][1], arr):  # ornament's flowers draw nothing from the seed
