@@ -1,0 +1,39 @@
+"""Pack's border strips on a third input: strew demo's trees (oak, pine, scale 0.2-1.0,
+upright within +-0.15 rad), 2400 x 2400 in tiles of 300 (halo 60, about 4.8 mean
+spacings s), seed 1; ratios with tile-bootstrap intervals (tests/worlds/world_stats.py).
+
+Run: ``PYTHONPATH=<src> python benchmarks/pack_seam_trees.py`` (about 230 CPU s); prints
+the strips' density and kind-fraction ratios at +-1 s and +-2 s and the signed profile.
+The figures of h/packseam against d66b77e are in benchmarks/results/pack_seam_trees.json.
+"""
+import sys, time, numpy as np
+from pathlib import Path
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests" / "worlds"))
+import strew
+from strew.tiles import tiled
+from strew._resources import example_path
+from strew.io import load_shapes
+from world_stats import strip_units, bootstrap_ratio, signed_profile, overlapping_pairs_across
+tr = load_shapes(example_path("pack", "trees.json"))
+W, T = 2400.0, 300.0
+U = {1.0: [], 2.0: []}; SC = 0
+t0 = time.process_time()
+for seed in (1,):
+    a = tiled("pack", tr, (W, W), tile_size=T, seed=seed, scale=(0.2, 1.0), rotation=(-0.15, 0.15))
+    s = W / np.sqrt(len(a)); halo = float(a.meta["world"]["halo"])
+    print(strew.__file__, "seed", seed, len(a), "el, s", round(s, 2), "halo", halo, "overlaps across", overlapping_pairs_across(a, a["tile"]), flush=True)
+    for m in U:
+        U[m].append(strip_units(a, (W, W), T, m * s, max(halo, 3 * s)))
+    SC = SC + signed_profile(a, (W, W), T, s)["counts"]
+print("cpu", round(time.process_time() - t0, 1))
+rng = np.random.default_rng(0)
+for m, L in U.items():
+    u = {k: np.concatenate([x[k] for x in L]) for k in L[0] if k != "kinds"}
+    d = bootstrap_ratio([u["strip"], u["strip_area"], u["inner"], u["inner_area"]], lambda s_, sa, i, ia: (s_.sum() / sa.sum()) / (i.sum() / ia.sum()), 1000, rng)
+    ks = []
+    for k in range(u["strip_kind"].shape[1]):
+        r = bootstrap_ratio([u["strip_kind"][:, k], u["strip"], u["inner_kind"][:, k], u["inner"]], lambda sk, s_, ik, i: (sk.sum() / s_.sum()) / (ik.sum() / i.sum()), 1000, rng)
+        ks.append(f"{r['value']:.3f} [{r['ci'][0]:.3f}, {r['ci'][1]:.3f}]")
+    print(f"+-{m:g}s density {d['value']:.3f} [{d['ci'][0]:.3f}, {d['ci'][1]:.3f}]  kinds oak, pine: {'; '.join(ks)}  strip el {int(u['strip'].sum())}")
+c = SC.astype(float); ref = c[0][[0, 1, -2, -1]].mean()
+print("signed all", " ".join(f"{v:.2f}" for v in c[0] / ref))
