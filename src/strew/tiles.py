@@ -48,14 +48,15 @@ __all__ = ["Tile", "plan", "plan_periodic", "world", "tiled", "periodic", "World
 DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 
 # methods whose result is a stationary texture that tiles (issue 19 point 1). None
-# overlaps across borders, but none is seamless yet (benchmarks/worlds_strips.py, strips
-# within one mean spacing s of a border against the interior, 95% tile-bootstrap
-# intervals): pack's density 1.045x (its later tile fills gaps on the earlier tile's side,
-# mostly with discs), synth's 1.02-1.05x (stones 0.91x), ornament's 1.09x (its first-phase
-# tiles grow from their own centre, sparse). synth uses its context as a neighbourhood,
-# not only an obstacle; ornament's tiles give one kind name shapes that differ a little,
-# but its elements carry their geometry in ``parts``, so the tiles' libraries are made to
-# agree (_harmonize).
+# overlaps across borders. Border strips against the interior (benchmarks/worlds_strips.py,
+# s the mean spacing, 95% tile-bootstrap intervals): pack's density 1.007x at +-1s on
+# bars and discs and 1.003x on the demo's stones (its ramp hand-over, _ramp), but 1.07x on
+# the demo's trees (benchmarks/pack_seam_trees.py); synth's 1.001x at +-2s, stones 1.007x
+# (a band of whole texture handed over), stones 0.95x at +-3s; ornament's flowers 1.006x
+# at +-2s and flat over tile phases, but leaves 0.54x and buds 1.28x there, and willow
+# 1.26x. synth uses its context as a neighbourhood, not only an obstacle; ornament's tiles
+# give one kind name shapes that differ a little, but its elements carry their geometry in
+# ``parts``, so the tiles' libraries are made to agree (_harmonize).
 # On a torus (periodic=True) any method with context tiles.
 # program (issue 19.1): the tiles of a script need nothing from each other, their
 # partitions being fixed in the plane (strew.program._world)
@@ -255,6 +256,12 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     within 1 unit of a border at 0.81x the interior's density). An element kept in a
     neighbour's rectangle lies in ``t``'s grown rectangle, so every later tile that can
     touch it is a neighbour of ``t`` and sees it in ``t``'s border band.
+
+    Two methods change the rule at borders with a later tile: synth keeps the elements
+    whose disc reaches into a band of one element diameter about ``t`` (a whole band of
+    texture, see ``_GROWS_FROM_CONTEXT``), and pack thins its elements within a halo of a
+    later tile at random, the more the nearer and the smaller (:func:`_ramp`), so that the
+    later tile refills scattered holes instead of packing against a flat front.
     """
     from ._method import spec
     from .arrangement import concat
