@@ -22,6 +22,7 @@ import math
 
 import numpy as np
 
+from .._kernels.geometry import circumcircles
 from ._objects import ELEMENT
 
 __all__ = ["close_gaps", "fill_holes", "side_stream"]
@@ -68,22 +69,14 @@ def reference_gap(g) -> float:
             tri = None
         if tri is not None:
             a, b, c = (ex.xy[tri.simplices[:, q]] for q in range(3))
-            d = 2 * (a[:, 0] * (b[:, 1] - c[:, 1]) + b[:, 0] * (c[:, 1] - a[:, 1]) + c[:, 0] * (a[:, 1] - b[:, 1]))
-            ok = np.abs(d) > 1e-12 * g.l * g.l
-            d = np.where(ok, d, 1.0)
-            a2, b2, c2 = (a * a).sum(1), (b * b).sum(1), (c * c).sum(1)
-            ux = (a2 * (b[:, 1] - c[:, 1]) + b2 * (c[:, 1] - a[:, 1]) + c2 * (a[:, 1] - b[:, 1])) / d
-            uy = (a2 * (c[:, 0] - b[:, 0]) + b2 * (a[:, 0] - c[:, 0]) + c2 * (b[:, 0] - a[:, 0])) / d
-            r = np.hypot(a[:, 0] - ux, a[:, 1] - uy)
-            cen = np.c_[ux, uy]
+            cen, r, _ = circumcircles(a, b, c)
             if ex.region is not None:
                 inner = ex.region.distance_to_boundary(cen) > 1.5 * g.l
                 inner &= ex.region.contains(cen)
             else:
                 inner = np.ones(len(r), dtype=bool)
-            sel = ok & inner
-            if sel.any():
-                out = float(r[sel].max())
+            if inner.any():
+                out = float(r[inner].max())
     g._reference_gap = out
     return out
 
@@ -105,12 +98,9 @@ def fill_holes(g) -> int:
     els, pts, tri, _, r = cc
     s = tri.simplices
     a, b, c = (pts[s[:, q]] for q in range(3))
-    d = 2 * (a[:, 0] * (b[:, 1] - c[:, 1]) + b[:, 0] * (c[:, 1] - a[:, 1]) + c[:, 0] * (a[:, 1] - b[:, 1]))
-    ok = np.abs(d) > 1e-12 * g.l * g.l
-    d = np.where(ok, d, 1.0)
-    a2, b2, c2 = (a * a).sum(1), (b * b).sum(1), (c * c).sum(1)
-    ux = (a2 * (b[:, 1] - c[:, 1]) + b2 * (c[:, 1] - a[:, 1]) + c2 * (a[:, 1] - b[:, 1])) / d
-    uy = (a2 * (c[:, 0] - b[:, 0]) + b2 * (a[:, 0] - c[:, 0]) + c2 * (b[:, 0] - a[:, 0])) / d
+    cen, _, ok = circumcircles(a, b, c)
+    ux, uy = np.full(len(s), np.nan), np.full(len(s), np.nan)
+    ux[ok], uy[ok] = cen[:, 0], cen[:, 1]
     p = g.p
     lo, want = max(p.flow_fill_min * g.l, 1.1 * reference_gap(g)), p.flow_fill_reach * g.l
     if lo >= want:
