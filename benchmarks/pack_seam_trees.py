@@ -5,6 +5,14 @@ spacings s), seed 1; ratios with tile-bootstrap intervals (tests/worlds/world_st
 Run: ``PYTHONPATH=<src> python benchmarks/pack_seam_trees.py`` (about 230 CPU s); prints
 the strips' density and kind-fraction ratios at +-1 s and +-2 s and the signed profile.
 The figures of h/packseam against d66b77e are in benchmarks/results/pack_seam_trees.json.
+
+Tried (h/packtrees, issue 19.4, not kept): a ramp min(halo, 2 s) wide, the later tile
+dropping its elements deeper than 1.25 ramp widths into a finished one: +-1s 1.095
+[1.071, 1.118], +-2s 1.076 (signed profile, half-s bins from -3 s: 1.01 1.07 1.10 1.09 1.11
+1.17 | 0.99 1.04 0.98 0.94 0.95 0.97), worse than 1.070: the later tile's extra 4-9 %
+over a finished packing (benchmarks/pack_seam_two_tiles.py --input trees) had raised
+the interior too, and the refilled ramp stays 1.09-1.16 whatever its width or area
+exponent (the holes take more, smaller trees). Results: pack_seam_two_tiles_trees.json.
 """
 import sys, time, numpy as np
 from pathlib import Path

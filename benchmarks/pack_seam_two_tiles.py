@@ -19,7 +19,19 @@ and +-2 s; and for B's elements centred on A's side, how late in B's Step 2 they
 
 ``--kw '{"fits": 1}'``: parameters for both tiles' ``pack`` (to try a variant).
 
-Run: ``python benchmarks/pack_seam_two_tiles.py [--seeds 8] [--kw JSON] [--handover ramp|centre] [--height 200]``; writes
+``--input trees``: strew demo's trees (scale 0.2-1.0, halo 60, about 4.8 s; border at x = 0,
+A from -220, B to 160, bins -9 s .. +9 s, printed -6 s .. +6 s, the far bins beyond 7 s,
+"bars' share" is the oaks'). Ramp variants: ``--width Ns`` (the ramp N of A's spacings wide,
+at most the halo), ``--exponent E`` (of the area ratio), ``--cut C`` (B drops its elements
+centred deeper than C ramp widths into A). Trees, 12 seeds, height 1200 (issue 19.4): the
+halo-wide ramp gives +-1s 1.078, and A's side is 1.06-1.24 of the far bins over its whole
+ramp and beyond it, as deep as B's region reaches (B alone adds 4-9 % there: a second pack
+over a full packing still finds room for the smallest trees); a ramp of 2 s with the cut
+leaves A's side beyond the ramp at 1.00 but the ramp itself at 1.09-1.16 (+-1s 1.078,
+exponent 1: 1.093): the holes are refilled by more, smaller trees.
+
+Run: ``python benchmarks/pack_seam_two_tiles.py [--seeds 8] [--kw JSON] [--handover ramp|centre] [--height 200]
+[--input trees] [--width halo|Ns] [--exponent 0.5] [--cut C]``; writes
 ``benchmarks/results/pack_seam_two_tiles.json``.
 """
 
@@ -55,13 +67,28 @@ def main() -> None:
     ap.add_argument("--handover", choices=("ramp", "centre"), default="ramp", help="A's keep rule (see the docstring)")
     ap.add_argument("--reach", type=float, default=None, help="the regions' reach in halos [1.25 with ramp, 1 with centre]")
     ap.add_argument("--height", type=float, default=200.0, help="the border's length")
+    ap.add_argument("--input", choices=("bar_disc", "trees"), default="bar_disc",
+                    help="trees: strew demo's trees, scale 0.2-1.0, rotation +-0.15, halo 60 (benchmarks/pack_seam_trees.py)")
+    ap.add_argument("--exponent", type=float, default=0.5, help="the area ratio's exponent in the drop probability")
+    ap.add_argument("--width", default="halo", help="the ramp's width: 'halo', or 'Ns' (N of A's spacings, at most the halo)")
+    ap.add_argument("--cut", type=float, default=None,
+                    help="B drops its elements centred in A deeper than CUT ramp widths (strew.tiles._ramp: 1.25)")
     ap.add_argument("--out", default=str(HERE / "results" / "pack_seam_two_tiles.json"))
     args = ap.parse_args()
     kw = json.loads(args.kw)
     reach = (1.25 if args.handover == "ramp" else 1.0) if args.reach is None else args.reach
     lib = {"bar": strew.Shape.rectangle(3, 1.5), "disc": strew.Shape.circle(1.0, 16)}
     h, border = args.halo, 100.0
-    n_bins = 24  # half spacings, -6 s .. +6 s
+    x_a, x_b = 40.0, 160.0
+    n_bins = 24  # half spacings, -6 s .. +6 s (trees: -9 s .. +9 s, past their ramp of 4.9 s)
+    if args.input == "trees":
+        from strew._resources import example_path
+        from strew.io import load_shapes
+
+        lib = load_shapes(example_path("pack", "trees.json"))
+        kw = {"scale": (0.2, 1.0), "rotation": (-0.15, 0.15), **kw}
+        h = 60.0 if args.halo == 3.3541 else args.halo
+        border, x_a, x_b, n_bins = 0.0, -220.0, 160.0, 36
     acc = {"A": np.zeros(n_bins), "B": np.zeros(n_bins)}
     bars = np.zeros(n_bins)
     g = h * reach
@@ -70,27 +97,31 @@ def main() -> None:
     t0 = time.process_time()
     s = None
     for seed in range(args.seeds):
-        a = pack(lib, strew.Region(shapely.box(40, 0, border + g, height)), rng=100 + seed, **kw)
+        a = pack(lib, strew.Region(shapely.box(x_a, 0, border + g, height)), rng=100 + seed, **kw)
         xa = _centres(a)
         if s is None:  # the spacing of A's interior
-            inner = (xa > 50) & (xa < border - 10)
-            s = 1.0 / np.sqrt(np.count_nonzero(inner) / ((border - 60) * height))
+            inner = (xa > x_a + 10) & (xa < border - 10)
+            s = 1.0 / np.sqrt(np.count_nonzero(inner) / ((border - x_a - 20) * height))
+        width = h if args.width == "halo" else min(h, float(args.width.rstrip("s")) * s)
         if args.handover == "ramp":  # strew.tiles._ramp (on the element's position, here the centre)
             u = np.random.default_rng(300 + seed).random(len(a))
             sc = np.abs(np.asarray(a.scale, float).reshape(len(a), -1))
             area = np.array([float(a.shapes[k].area) for k in a.kinds])[a.kind] * sc[:, 0] * sc[:, -1]
-            w = (area.min() / area) ** 0.5
-            keep = (a.x < border) & (u >= (1 - np.clip((border - a.x) / h, 0, 1)) * w)
+            w = (area.min() / area) ** args.exponent
+            keep = (a.x < border) & (u >= (1 - np.clip((border - a.x) / width, 0, 1)) * w)
         else:
             keep = xa < border
         a, xa = a.select(keep), xa[keep]
         ctx = a.select(xa > border - 2 * h)
-        b = pack(lib, strew.Region(shapely.box(border - g, 0, 160, height)), context=ctx, rng=200 + seed, **kw)
+        b = pack(lib, strew.Region(shapely.box(border - g, 0, x_b, height)), context=ctx, rng=200 + seed, **kw)
+        if args.cut is not None:
+            b = b.select(b.x >= border - args.cut * width)
         xb = _centres(b)
         edges = border + np.arange(-n_bins // 2, n_bins // 2 + 1) * s / 2
         acc["A"] += np.histogram(xa, edges)[0]
         acc["B"] += np.histogram(xb, edges)[0]
-        bars += np.histogram(xa[a.kind == a.kinds.index("bar")], edges)[0] + np.histogram(xb[b.kind == b.kinds.index("bar")], edges)[0]
+        k0 = a.kinds[0]  # bar (bar_disc), oak (trees)
+        bars += np.histogram(xa[a.kind == a.kinds.index(k0)], edges)[0] + np.histogram(xb[b.kind == b.kinds.index(k0)], edges)[0]
         n1 = int(b.meta["pack"].get("sparse", 0))
         rank = (np.arange(len(b)) - n1) / max(len(b) - n1, 1)
         late += list(rank[(xb < border) & (np.arange(len(b)) >= n1)])
@@ -102,18 +133,19 @@ def main() -> None:
     mid = n_bins // 2
     r1 = float(prof["all"][mid - 2:mid + 2].mean())
     r2 = float(prof["all"][mid - 4:mid + 4].mean())
-    sel = slice(mid - 6, mid + 6)
+    sel = slice(mid - 6, mid + 6) if args.input == "bar_disc" else slice(mid - 12, mid + 12)
     share = float(bars[mid - 2:mid + 2].sum() / tot[mid - 2:mid + 2].sum() / (bars[far].sum() / tot[far].sum()))
     print(f"pack seam, two tiles, {args.seeds} seeds, kw {kw}, handover {args.handover}, reach {reach:g} halo: "
           f"spacing {s:.3f}, {cpu:.1f} CPU s")
     for k in ("A", "B", "all"):
-        print(f"  {k:3s} (s/2 bins, -3s..+3s into B): " + " ".join(f"{v:.2f}" for v in prof[k][sel]))
+        print(f"  {k:3s} (s/2 bins, {'-3s..+3s' if args.input == 'bar_disc' else '-6s..+6s'} into B): " + " ".join(f"{v:.2f}" for v in prof[k][sel]))
     q = np.percentile(late, [25, 50, 75]).round(2).tolist() if late else []
-    print(f"  density ratio +-1s {r1:.3f}, +-2s {r2:.3f} (vs bins beyond 4 s); bars' share +-1s {share:.3f} of theirs")
+    print(f"  density ratio +-1s {r1:.3f}, +-2s {r2:.3f} (vs bins beyond {4 if args.input == 'bar_disc' else 7} s); bars' share +-1s {share:.3f} of theirs")
     print(f"  B's elements centred in A: {len(late)}, their rank in B's Step 2 (quartiles) {q}")
     out = Path(args.out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps({"seeds": args.seeds, "kw": kw, "halo": h, "handover": args.handover, "reach_halos": reach,
+    out.write_text(json.dumps({"input": args.input, "width": args.width, "exponent": args.exponent, "cut": args.cut,
+                               "seeds": args.seeds, "kw": {k: v for k, v in kw.items()}, "halo": h, "handover": args.handover, "reach_halos": reach,
                                "height": height, "bar_share_ratio_1s": share, "spacing": s, "cpu_s": cpu,
                                "profile": {k: v[sel].round(4).tolist() for k, v in prof.items()},
                                "ratio_1s": r1, "ratio_2s": r2, "b_in_a": len(late), "b_in_a_rank_quartiles": q},
