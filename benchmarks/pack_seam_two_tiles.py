@@ -28,7 +28,9 @@ halo-wide ramp gives +-1s 1.078, and A's side is 1.06-1.24 of the far bins over 
 ramp and beyond it, as deep as B's region reaches (B alone adds 4-9 % there: a second pack
 over a full packing still finds room for the smallest trees); a ramp of 2 s with the cut
 leaves A's side beyond the ramp at 1.00 but the ramp itself at 1.09-1.16 (+-1s 1.078,
-exponent 1: 1.093): the holes are refilled by more, smaller trees.
+exponent 1: 1.093; a 1 s ramp 1.131): the holes are refilled by more, smaller trees. The
+centre hand-over gives 1.185 here (the world, d66b77e: 1.187), and B adds 6-9 % to A's
+full packing there too: A's own pack is not saturated for the smallest trees.
 
 Run: ``python benchmarks/pack_seam_two_tiles.py [--seeds 8] [--kw JSON] [--handover ramp|centre] [--height 200]
 [--input trees] [--width halo|Ns] [--exponent 0.5] [--cut C]``; writes
