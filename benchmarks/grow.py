@@ -27,6 +27,8 @@ priority, either kind first (largest gap against the exemplar's). Flow mode does
 depend on the seed (``rng``), so the 90 degree and quarter-circle cases are also grown
 from other start points (near the bottom and the top-left corner), in a region 1.5 times
 as wide and high, and with the suite's ``scales`` (a distorted hexagonal lattice).
+Each flow case also gets the dislocations its field's bend needs and the class of each
+non-six site (``defect_classes``); ``--flow-only`` prints the flow cases alone.
 """
 
 from __future__ import annotations
@@ -103,8 +105,9 @@ def _suite_exemplar(name: str, **kw):
     return fidelity_suite().make_exemplar(name, **kw)
 
 
-def structure(json_path) -> None:
-    """Issue 14 points 2 and 4: flow mode on bending fields, bricks with a priority."""
+def structure(json_path, flow_only: bool = False) -> None:
+    """Issue 14 points 2 and 4: flow mode on bending fields, bricks with a priority
+    (``flow_only``: the flow cases alone)."""
     from scipy.spatial import cKDTree
 
     from strew import Region
@@ -123,7 +126,8 @@ def structure(json_path) -> None:
         bench.row(label, n=len(out), six_nbr_share=hex_share(xy, sp, inner),
                   largest_gap_spacings=float(cKDTree(xy).query(g)[0].max() / sp),
                   across_edge=int((~region.contains_geometry(out.geometry, tolerance=1e-9)).sum()),
-                  **lattice_defects(xy, sp, inner, g), **field_misalignment(ex, xy, sp, inner, flow))
+                  **lattice_defects(xy, sp, inner, g), **field_misalignment(ex, xy, sp, inner, flow),
+                  **defect_classes(xy, sp, inner, region, g, flow))
 
     def turning(deg, w):
         def field(p):
@@ -177,6 +181,9 @@ def structure(json_path) -> None:
     region = Region.rectangle(30 * s_sp, 30 * s_sp)
     af = flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (10 * s_sp, 25 * s_sp)])
     lattice_row("scales, flow from two quarter circles", grow(scales, region=region, mode="flow", flow=af, rng=1), region, af, ex=scales, sp=s_sp)
+    if flow_only:
+        bench.finish()
+        return
     for name in ("stones", "hex_lattice", "two_sizes", "three_sizes"):
         for seed in (1, 2, 3):
             bench.row(f"closed oval boundary, {name}, seed {seed}", **boundary_fill(_suite_exemplar(name), seed))
@@ -227,6 +234,111 @@ def lattice_defects(xy, spacing: float, inner, g) -> dict:
     return {"holes": len(np.unique(groups(far, 1.5 * step))), "defect_groups": len(size),
             "largest_defect_group": int(size.max()) if len(size) else 0,
             "isolated_defect_share": float((size[lab] <= 2).mean()) if len(lab) else float("nan")}
+
+
+def defect_classes(xy, spacing: float, inner, region, g, flow) -> dict:
+    """Issue 14 point 2: what the non-six sites are, and how many dislocations the
+    field's bend needs.
+
+    ``gnd_need``: the geometrically necessary dislocations of the interior (over 2
+    spacings inside the region) for a lattice whose frame turns with the field: the
+    integral of the field angle's gradient magnitude ``|grad theta|`` (the net Burgers
+    vector per area of a lattice rotation field, Nye) over the interior, over the
+    spacing ``b`` (a turn of 90 degrees over 30 spacings on 26 x 16 interior spacings:
+    about 22). ``six_bound``: 1 - 2 ``gnd_need`` / interior elements, the six-neighbour
+    share left if each needed dislocation took exactly two sites (its 5 and its 7) and
+    no strain remained (an upper estimate: the +-15% test also fails next to a core; a
+    lattice that lags behind the field needs fewer).
+
+    Each interior site failing the six-neighbour test (six at 0.85-1.15 spacing, none
+    nearer) is put in the first class it fits: ``ns_edge`` (within 3 spacings of the
+    region's edge), ``ns_hole`` (within 1.25 spacings of a hole's grid point, see
+    ``lattice_defects``), ``ns_disloc`` (within 1.2 spacings of a site of an isolated
+    5-7 pair: Delaunay neighbours counted over edges under 1.6 spacings, a 5 joined to a
+    7 and no other site of coordination other than 6 joined to them), ``ns_stretch`` (fewer than six neighbours within 1.15
+    spacings, none nearer than 0.85: a gap), ``ns_other`` (compressed sites, larger
+    defect clusters). ``disloc_pairs``: how many isolated 5-7 pairs; ``core_sites_in_clusters``:
+    interior sites of coordination other than 6 not in one.
+    """
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import Delaunay, cKDTree
+
+    out: dict = {}
+    idx = np.flatnonzero(inner)
+    n_in = len(idx)
+    if flow is not None and n_in:
+        x0, y0, x1, y1 = region.bounds
+        h = spacing / 2
+        gx, gy = np.arange(x0, x1 + h / 2, h), np.arange(y0, y1 + h / 2, h)
+        X, Y = np.meshgrid(gx, gy, indexing="ij")
+        pts = np.c_[X.ravel(), Y.ravel()]
+        v = np.asarray(flow(pts), dtype=float)
+        z = (v[:, 0] + 1j * v[:, 1]) / np.maximum(np.hypot(v[:, 0], v[:, 1]), 1e-300)
+        z2 = (z * z).reshape(X.shape)  # direction field: theta and theta + pi alike
+        dzx, dzy = np.gradient(z2, h, h)
+        gxt, gyt = np.imag(np.conj(z2) * dzx) / 2, np.imag(np.conj(z2) * dzy) / 2
+        grad = np.hypot(gxt, gyt).ravel()
+        sel = region.contains(pts) & (region.distance_to_boundary(pts) > 2 * spacing)
+        need = float(grad[sel].sum() * h * h / spacing)
+        out["gnd_need"] = need
+        out["six_bound"] = 1.0 - 2.0 * need / n_in
+    tree = cKDTree(xy)
+    hi = np.array([len(tree.query_ball_point(xy[i], 1.15 * spacing)) - 1 for i in idx])
+    lo = np.array([len(tree.query_ball_point(xy[i], 0.85 * spacing)) - 1 for i in idx])
+    bad = idx[~((hi == 6) & (lo == 0))]
+    stretched = set(idx[(hi < 6) & (lo == 0)].tolist())
+    # Delaunay coordination over edges under 1.6 spacings
+    tri = Delaunay(xy)
+    s = tri.simplices
+    e = np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1)
+    e = np.unique(e, axis=0)
+    ln = np.hypot(*(xy[e[:, 0]] - xy[e[:, 1]]).T)
+    e, ln = e[ln < 1.6 * spacing], ln[ln < 1.6 * spacing]
+    n = len(xy)
+    deg = np.bincount(e.ravel(), minlength=n)
+    is_in = np.zeros(n, dtype=bool)
+    is_in[idx] = True
+    core = is_in & (deg != 6)
+    ce = e[core[e[:, 0]] & core[e[:, 1]]]
+    lab = connected_components(coo_matrix((np.ones(len(ce)), (ce[:, 0], ce[:, 1])), shape=(n, n)), directed=False)[1]
+    cidx = np.flatnonzero(core)
+    size = np.bincount(lab[cidx], minlength=n)
+    members: dict[int, list[int]] = {}
+    for i in cidx.tolist():
+        if size[lab[i]] == 2:
+            members.setdefault(int(lab[i]), []).append(i)
+    pair_sites: list[int] = []
+    pairs = 0
+    for a, b in members.values():
+        if sorted((deg[a], deg[b])) == [5, 7]:
+            pairs += 1
+            pair_sites += [a, b]
+    out["disloc_pairs"] = pairs
+    out["core_sites_in_clusters"] = int(core.sum()) - 2 * pairs
+    out["topo_six_share"] = float((deg[idx] == 6).mean()) if n_in else float("nan")
+    near_pair = np.zeros(n, dtype=bool)
+    if pair_sites:
+        d = cKDTree(xy[pair_sites]).query(xy)[0]
+        near_pair = d < 1.2 * spacing
+    far = g[tree.query(g)[0] > 0.75 * spacing]
+    near_hole = (cKDTree(far).query(xy)[0] < 1.25 * spacing) if len(far) else np.zeros(n, dtype=bool)
+    to_edge = region.distance_to_boundary(xy)
+    cls = {"ns_edge": 0, "ns_hole": 0, "ns_disloc": 0, "ns_stretch": 0, "ns_other": 0}
+    for i in bad.tolist():
+        if to_edge[i] < 3 * spacing:
+            cls["ns_edge"] += 1
+        elif near_hole[i]:
+            cls["ns_hole"] += 1
+        elif near_pair[i]:
+            cls["ns_disloc"] += 1
+        elif i in stretched:
+            cls["ns_stretch"] += 1
+        else:
+            cls["ns_other"] += 1
+    out["n_inner"] = n_in
+    out.update(cls)
+    return out
 
 
 def field_misalignment(ex, xy, spacing: float, inner, flow) -> dict:
@@ -341,12 +453,13 @@ def against(rev: str, n: int, repeat: int, json_path, src: str | None = None) ->
 def main() -> None:
     def extra(p):
         p.add_argument("--structure", action="store_true", help="only the structure figures of issue 14 points 2 and 4 (no timings)")
+        p.add_argument("--flow-only", action="store_true", help="with --structure: only the flow cases (point 2)")
         p.add_argument("--against", metavar="REV", default=None, help="CPU el/s of this tree against git revision REV (see the docstring)")
         p.add_argument("--src", default=None, help="with --against: the src folder timed as this tree (default: this checkout's)")
 
     args = parse_args(__doc__, extra)
     if args.structure:
-        structure(args.json)
+        structure(args.json, args.flow_only)
         return
     if args.against:
         against(args.against, 1000 if args.quick else 2000, min(args.repeat, 3), args.json, args.src)
