@@ -245,7 +245,10 @@ def defect_classes(xy, spacing: float, inner, region, g, flow) -> dict:
     integral of the field angle's gradient magnitude ``|grad theta|`` (the net Burgers
     vector per area of a lattice rotation field, Nye) over the interior, over the
     spacing ``b`` (a turn of 90 degrees over 30 spacings on 26 x 16 interior spacings:
-    about 22). ``six_bound``: 1 - 2 ``gnd_need`` / interior elements, the six-neighbour
+    about 22); ``gnd_bend`` and ``gnd_splay``: the same integral of ``|t . grad theta|``
+    (``|div n|``, the rows' curvature) and of ``|n . grad theta|`` (``|div t|``, the
+    rows spreading apart), ``t`` the field's unit direction and ``n`` its normal.
+    ``six_bound``: 1 - 2 ``gnd_need`` / interior elements, the six-neighbour
     share left if each needed dislocation took exactly two sites (its 5 and its 7) and
     no strain remained (an upper estimate: the +-15% test also fails next to a core; a
     lattice that lags behind the field needs fewer).
@@ -279,9 +282,14 @@ def defect_classes(xy, spacing: float, inner, region, g, flow) -> dict:
         dzx, dzy = np.gradient(z2, h, h)
         gxt, gyt = np.imag(np.conj(z2) * dzx) / 2, np.imag(np.conj(z2) * dzy) / 2
         grad = np.hypot(gxt, gyt).ravel()
+        t = np.c_[np.real(z), np.imag(z)]
+        bend = np.abs(t[:, 0] * gxt.ravel() + t[:, 1] * gyt.ravel())  # |div n|: the rows curve
+        splay = np.abs(-t[:, 1] * gxt.ravel() + t[:, 0] * gyt.ravel())  # |div t|: the rows spread
         sel = region.contains(pts) & (region.distance_to_boundary(pts) > 2 * spacing)
         need = float(grad[sel].sum() * h * h / spacing)
         out["gnd_need"] = need
+        out["gnd_bend"] = float(bend[sel].sum() * h * h / spacing)
+        out["gnd_splay"] = float(splay[sel].sum() * h * h / spacing)
         out["six_bound"] = 1.0 - 2.0 * need / n_in
     tree = cKDTree(xy)
     hi = np.array([len(tree.query_ball_point(xy[i], 1.15 * spacing)) - 1 for i in idx])

@@ -126,6 +126,14 @@ class GrowParams:
     #: (:func:`strew.grow._flow_gaps.close_gaps`); None: not
     flow_close_min: float | None = 0.72
     flow_close_max: float = 1.7
+    #: flow mode: two consecutive seeds beside a new element farther apart than this
+    #: many mean edges start a dislocation: the run of front seeds through them is
+    #: spaced anew with one more seed (``_Grower.flow_respace``); None: not
+    flow_respace: float | None = 1.2
+    #: ... the run reaches this many seeds beyond each of the two
+    flow_respace_run: int = 4
+    #: ... and is spaced anew only where its new spacing is at least this many mean edges
+    flow_respace_min: float = 0.95
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -592,6 +600,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             if self.first:
                 self.fixed[self.s0] = True  # Eq. 6: the initial element holds its position
                 self.first = False
+            if self.mode_code == 2 and p.flow_respace is not None and self.tile is None:
+                self.flow_respace(s)
             self.release_deferred(s)
             self.steps_since_relax += 1
             # §5.5 relaxes after every growth step over the whole pattern. To keep the
@@ -603,6 +613,120 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 self.steps_since_relax = 0
             rep.tick(len(self.order))
         return False
+
+    def flow_respace(self, s: int) -> bool:
+        """Flow mode: a dislocation where the growth front stretches; True if one began.
+
+        Not in the paper; it departs from §5.4, where the front gains a seed only by
+        Fig. 6 (e), an extra seed on the bisector of two neighbours over 1.5 times
+        their ring edge apart. Where growth runs away from the centre of curvature of
+        the field's rows (§5.3), the rows fan out: the gaps between consecutive front
+        seeds grow slowly, 1.1 to 1.45 edges over many rows, every element keeps six
+        neighbours in the ring topology but not at the spacing (issue 14 point 2,
+        ``benchmarks/grow.py --structure``: ``ns_stretch``), and no element fits into
+        one gap. (An element put into the gap at once sat 0.6 edges from both seeds,
+        they died, and a hole was left beside it.) Here, when two consecutive seeds
+        beside the new element ``s`` lie over ``flow_respace`` mean edges apart, the
+        run of front seeds through them (up to ``flow_respace_run`` seeds on from each
+        along the line of the two, each the next's neighbour 0.8-1.6 edges on within
+        35 degrees) is spaced evenly along itself with one seed more between its two
+        ends, where that spacing is at least ``flow_respace_min`` edges: the extra row
+        of a dislocation begins, and matching (§5.2), placement and relaxation (§5.5)
+        go on as for any seed. Only seeds move (no element does), and only inside the
+        domain, so no outline is tested here: each seed is still placed or refused as
+        any other.
+        """
+        if self.state[s] != ELEMENT:
+            return False
+        p = self.p
+        lim = float(p.flow_respace) * self.l  # type: ignore[arg-type]
+        x, y = self.xy[s]
+        nbrs = [o for o in self.adj[s] if self.state[o] in (ELEMENT, SEED)]
+        if len(nbrs) < 2:
+            return False
+        angs = {o: math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) for o in nbrs}
+        nbrs.sort(key=angs.__getitem__)
+        for q in range(len(nbrs)):
+            oa, ob = nbrs[q], nbrs[(q + 1) % len(nbrs)]
+            if self.state[oa] != SEED or self.state[ob] != SEED:
+                continue
+            gap = (angs[ob] - angs[oa]) % (2 * math.pi)
+            if gap <= 1e-9 or gap >= 0.5 * math.pi:
+                continue
+            pa, pb = self.xy[oa], self.xy[ob]
+            L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+            if L <= lim:
+                continue
+            ux, uy = (pb[0] - pa[0]) / L, (pb[1] - pa[1]) / L
+            taken = {oa, ob}
+            left = self._seed_run(oa, -ux, -uy, p.flow_respace_run, taken)
+            right = self._seed_run(ob, ux, uy, p.flow_respace_run, taken)
+            run = left[::-1] + [oa, ob] + right
+            pts = [self.xy[o] for o in run]
+            seg = [math.hypot(pts[i + 1][0] - pts[i][0], pts[i + 1][1] - pts[i][1]) for i in range(len(pts) - 1)]
+            m = len(seg)
+            step = sum(seg) / (m + 1)
+            if step < p.flow_respace_min * self.l:
+                continue
+            cum = [0.0]
+            for d in seg:
+                cum.append(cum[-1] + d)
+
+            def along(d: float, pts=pts, seg=seg, cum=cum, m=m) -> tuple[float, float]:
+                i = 0
+                while i < m - 1 and d > cum[i + 1]:
+                    i += 1
+                f = (d - cum[i]) / max(seg[i], 1e-300)
+                return (pts[i][0] + f * (pts[i + 1][0] - pts[i][0]), pts[i][1] + f * (pts[i + 1][1] - pts[i][1]))
+
+            # the run's seeds keep their order; the new one goes between oa and ob
+            ia = len(left)
+            new = [along(i * step) for i in range(m + 2)]
+            dest = [new[i if i <= ia else i + 1] for i in range(len(run))]
+            if not all(self.in_domain(nx, ny) for nx, ny in new):
+                continue
+            if self.boundary is not None and (
+                any(self.crosses_boundary(self.xy[o], d) for o, d in zip(run, dest)) or self.crosses_boundary((x, y), new[ia + 1])
+            ):
+                continue
+            for o, (nx, ny) in zip(run, dest):
+                self._move(o, nx, ny)
+            if self.has_edge(oa, ob):
+                self.remove_edge(oa, ob)
+            tx, ty = new[ia + 1]
+            t = self.new_object(tx, ty, -1)
+            for o in (s, oa, ob):
+                if not self.crosses_edges(o, self.xy[o], t, (tx, ty)):
+                    self.add_edge(o, t)
+            return True
+        return False
+
+    def _seed_run(self, start: int, ux: float, uy: float, k: int, taken: set[int]) -> list[int]:
+        """Up to ``k`` seeds on from ``start`` along (ux, uy), each a neighbour of the one
+        before, 0.8-1.6 mean edges on and within 35 degrees of the direction (see
+        :meth:`flow_respace`); the seeds found are added to ``taken``."""
+        out: list[int] = []
+        cur = start
+        cos_max = math.cos(math.radians(35.0))
+        for _ in range(k):
+            cx, cy = self.xy[cur]
+            best, best_c = -1, cos_max
+            for j in sorted(self.adj[cur]):
+                if self.state[j] != SEED or j in taken:
+                    continue
+                dx, dy = self.xy[j][0] - cx, self.xy[j][1] - cy
+                d = math.hypot(dx, dy)
+                if not (0.8 * self.l < d < 1.6 * self.l):
+                    continue
+                c = (dx * ux + dy * uy) / d
+                if c > best_c:
+                    best, best_c = j, c
+            if best < 0:
+                break
+            out.append(best)
+            taken.add(best)
+            cur = best
+        return out
 
     def settle(self) -> None:
         """The last relaxation window, when growth has stopped."""
