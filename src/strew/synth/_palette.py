@@ -144,9 +144,9 @@ def element_parameters(exemplar: Arrangement, *, name: str = "exemplar") -> tupl
     # p2s8, p4s8 of benchmarks/synth_variants.py). The cap still sees the next disc
     # there (depth >= a_c + r_c - 2 r_max, the neighbourhood's reach with the pairing
     # margin); exemplars whose deepest member lies deeper are unchanged.
-    from ._prepare import exemplar_domain, size_classes
+    from ._prepare import area_radii, exemplar_domain, size_classes
 
-    cls = size_classes(r)
+    cls = size_classes(r, area_radii(exemplar.with_columns(radius=r)))
     reach = RING_FACTOR * a + 2.0 * float(r.max())
     depth = None
     for c in range(1, int(cls.max()) + 1 if n else 0):
