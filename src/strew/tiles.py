@@ -297,7 +297,7 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     band = min(2.0 * _input_extent(job), job.halo) if job.method in _GROWS_FROM_CONTEXT else 0.0
     if context is not None and job.method in _GROWS_FROM_CONTEXT:
         region = _outside_finished(region, t, job, links, band)
-    arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **job.params)
+    arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **_HANDS_ON.get(job.method, ({},))[0], **job.params)
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
     if job.method in _GROWS_FROM_CONTEXT and len(arr):
@@ -307,6 +307,7 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
         keep |= _within(arr, t.rect, band + _radii(arr))
     if job.method in _HANDS_OVER_BY_RAMP and len(arr):
         keep &= _ramp(arr, t, job)
+    keep = _keep_groups(arr, keep, t, job, links)
     arr = _own_parts(arr.select(keep))
     return arr.replace(meta={"tile": t.index}, region=None)
 
@@ -434,6 +435,58 @@ def _harmonize(arrs: list[Any]) -> list[Any]:
                     lib[k] = ref[k]
         out.append(a.replace(shapes=lib) if lib != a.shapes else a)
     return out
+
+
+# methods whose tiles hand later tiles more than their drawn elements: the keyword that
+# asks the method for it, and the private columns that carry it (dropped before a tile
+# reaches the sink, _public). ornament: each element's proxies, so that a later tile grows
+# on from its finished neighbours' elements as parents (Wong et al. §4.1: one run grows
+# the whole panel) instead of meeting them as the panel's edge (strew.ornament._context)
+_HANDS_ON: dict[str, tuple[dict[str, Any], tuple[str, ...]]] = {
+    "ornament": ({"_tiled": True}, ("ornament_proxies", "ornament_group")),
+}
+
+# methods whose elements come in groups kept or dropped whole, by the mean of the group's
+# centres (_keep_groups): the column naming each element's group
+_KEEPS_GROUPS = {"ornament": "ornament_group"}
+
+
+def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[int, Any]) -> np.ndarray:
+    """(n,) bool: for methods of :data:`_KEEPS_GROUPS`, the keep-rule of :func:`run_tile`
+    applied to each group's mean centre, for all its elements, and a group kept only with
+    its parent's (strew.ornament._context.keep_whole); ``keep`` itself for the others."""
+    col = _KEEPS_GROUPS.get(job.method)
+    if col is None or col not in arr.columns or not len(arr):
+        return keep
+    _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
+    cnt = np.bincount(inv)
+    mx = np.bincount(inv, weights=np.asarray(arr.x, float)) / cnt
+    my = np.bincount(inv, weights=np.asarray(arr.y, float)) / cnt
+    o = _owner(mx, my, job)
+    ok = (o == t.index) | np.isin(o, np.fromiter(links, np.int64, len(links)))
+    from .ornament._context import keep_whole, late_phase
+
+    placed = ok[inv]
+    later = _later_rects(t, job)
+    band = _LATE_BAND * job.halo
+    if later and band > 0:
+        # the later phases' elements (flowers' buds) near a later tile are left to it
+        x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+        d = np.full(len(arr), np.inf)
+        for x0, y0, x1, y1 in later:
+            d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
+        placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
+    return keep_whole(arr["element"], arr["parent"], arr[col], placed)
+
+
+# how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)
+_LATE_BAND = 0.5
+
+
+def _public(job: _Job, arr: Any) -> Any:
+    """``arr`` without the private columns of :data:`_HANDS_ON` (what the sink gets)."""
+    private = _HANDS_ON.get(job.method, ({}, ()))[1]
+    return arr.without_columns(*private) if any(c in arr.columns for c in private) else arr
 
 
 # methods that hand a border over to a later tile by a ramp (_ramp) from a region grown
@@ -723,6 +776,7 @@ def world(
     t0 = time.perf_counter()
 
     def done(t: Tile, arr: Any, ndone: int) -> None:
+        arr = _public(job, arr)
         counts[t.index] = len(arr)
         for k, c in arr.counts().items():
             kinds[k] = kinds.get(k, 0) + c

@@ -348,6 +348,7 @@ class _Grower:
         incremental: bool = True,
         periodic: tuple[float, float, float, float] | None = None,
         thin_boundary: bool = False,
+        context: list[Element] | None = None,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -483,6 +484,15 @@ class _Grower:
         self.stats: dict[str, Any] = dict(iterations=0, successes=0, failures=0, rejected=0, outside=0)
         seed_type = pattern.types["seed"]
         self.n_seeds = len(seeds)
+        # a tiled world's finished neighbours (issue 19.4, strew.ornament._context): placed
+        # first, as elements, so that they stop circles and parent growth as the tile's own
+        # elements do; not drawn, not counted
+        self.n_context = len(context or ())
+        if context:
+            phases = [el.phase for el in context]
+            self._commit(None, list(context))
+            for el, ph in zip(context, phases):
+                el.phase = ph
         for s in seeds:
             el = Element(seed_type)
             el.proxy.set(s)  # type: ignore[attr-defined]
@@ -591,7 +601,9 @@ class _Grower:
 
     def _commit(self, parent: Element | None, children: list[Element]) -> None:
         cells = []
+        first = len(self.elements)
         for ch in children:
+            ch.group = first  # type: ignore[attr-defined]  # the rule success that made it (a tiled world keeps it whole)
             ch.parent = parent
             if parent is not None:
                 parent.children.append(ch)
@@ -780,9 +792,9 @@ class _Grower:
         slack = 0.75 * h
         largest = 0.0
         while True:
-            if self.max_elements is not None and len(self.elements) >= self.max_elements:
+            if self.max_elements is not None and len(self.elements) - self.n_context >= self.max_elements:
                 break
-            grown = len(self.elements) - self.n_seeds  # the seeds are not drawn; not counted (issue 23)
+            grown = len(self.elements) - self.n_seeds - self.n_context  # the seeds are not drawn; not counted (issue 23)
             self.rep.tick(grown, message=f"{grown} grown")
             k = scan_blocks(
                 self.dist_all, self.dist_el, self.covered, self.skip, self.dirty, self.dlist, self.dcount,
@@ -905,6 +917,7 @@ def grow_elements(
     should_cancel: Callable[[], bool] | None = None,
     periodic: bool = False,
     _thin_boundary: bool = False,
+    _context: list[Element] | None = None,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
@@ -919,7 +932,9 @@ def grow_elements(
     pat = load_pattern(pattern)
     if not isinstance(region, Region):
         raise InputError(f"region: expected a Region, got {type(region).__name__}")
-    if seeds is None or len(seeds) == 0:
+    if _context and seeds is not None and len(seeds) == 0:
+        pts = np.zeros((0, 2))  # growth goes on from the context elements alone
+    elif seeds is None or len(seeds) == 0:
         pts = default_seed(region)
     else:
         pts = np.asarray(seeds, dtype=float).reshape(-1, 2)
@@ -953,9 +968,9 @@ def grow_elements(
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile,
-                thin_boundary=_thin_boundary)
+                thin_boundary=_thin_boundary, context=_context)
     g.run()
-    rep.done(len(g.elements) - g.n_seeds)
+    rep.done(len(g.elements) - g.n_seeds - g.n_context)
     stats = dict(g.stats)
     stats["seconds"] = time.perf_counter() - t0
     stats["resolution"] = g.resolution

@@ -373,7 +373,8 @@ def _clip_to_panel(paths: list[np.ndarray], closed: bool, panel: Any, cover: Any
     return [np.asarray(g.coords) for g in shapely.get_parts(cut) if isinstance(g, shapely.LineString) and g.length > 0]
 
 
-def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: float | None = None, seeds: bool = False) -> Arrangement:
+def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: float | None = None, seeds: bool = False,
+                    _proxies: bool = False) -> Arrangement:
     """Draw the grown ornament in a named style.
 
     Parameters
@@ -386,6 +387,10 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         Base line width (default: a fifth of the pattern's minimum radius).
     seeds : bool
         Also draw the seed points (as small circles).
+    _proxies : bool
+        A tiled world's tile (issue 19.4): also the private column
+        ``ornament_proxies`` (:mod:`strew.ornament._context`), from which later tiles
+        grow on. Context elements (placed from a finished tile) are never drawn.
 
     Returns
     -------
@@ -406,6 +411,8 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     kind, xs, ys, rots = [], [], [], []
     col_el, col_type, col_parent, col_phase = [], [], [], []
     col_parts: list[list[Shape]] = []
+    col_groups: list[list[Element]] = []
+    col_commit: list[int] = []
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
     panel = cover = None
     # a periodic tile's elements are drawn whole: those crossing its edge wrap in at the
@@ -421,14 +428,16 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     members: dict[int, list[Element]] = {}
     grouped: set[int] = set()
     for el in ornament.elements:
-        if el.type in pat.groups:
-            group = rc.group(el)
+        if el.type in pat.groups and not getattr(el, "context", False):
+            group = [g for g in rc.group(el) if not getattr(g, "context", False)]
             members[group[0].index] = group
             grouped.add(el.index)
     order: dict[str, int] = {}
     for el in sorted(ornament.elements, key=lambda e: (rank.get(e.type, len(rank)), e.index)):
         if el.index in grouped and el.index not in members:
             continue
+        if getattr(el, "context", False):
+            continue  # a finished tile's element, drawn there (issue 19.4)
         if el.type == "seed":
             if not seeds:
                 continue
@@ -474,7 +483,10 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         rots.append(theta)
         col_el.append(el.index)
         col_type.append(name)
-        col_parent.append(el.parent.index if el.parent is not None else -1)
+        col_parent.append(el.parent.index if el.parent is not None and not getattr(el.parent, "context", False) else -1)
+        if _proxies:
+            col_groups.append(members.get(el.index, [el]))
+            col_commit.append(int(getattr(el, "group", el.index)))
         col_phase.append(el.phase or "")
     # SVG draws one layer per kind, in library order: order the library by draw order
     shapes = {name: shapes[name] for name in sorted(shapes, key=lambda t: (order[t], t))}
@@ -485,12 +497,18 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         "ornament": {
             "pattern": pat.name,
             "style": style,
-            "elements": sum(1 for e in ornament.elements if e.type != "seed"),
+            "elements": sum(1 for e in ornament.elements if e.type != "seed" and not getattr(e, "context", False)),
             # the run's wall time stays out, so that outputs are byte-for-byte repeatable
             **{k: (float(v) if isinstance(v, (np.floating, float)) else v) for k, v in ornament.stats.items() if k != "seconds"},
         },
         "params": {**ornament.params, "style": style},
     }
+    extra = {}
+    if _proxies:
+        from ._context import GROUP_COLUMN, PROXIES_COLUMN, records_column
+
+        extra[PROXIES_COLUMN] = records_column(col_groups, pat)
+        extra[GROUP_COLUMN] = np.asarray(col_commit, dtype=np.int64)
     return Arrangement(
         shapes,
         np.asarray(kind, dtype=object) if kind else np.zeros(0, int),
@@ -503,6 +521,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             "parent": np.asarray(col_parent, dtype=np.int64),
             "phase": np.asarray(col_phase, dtype=object),
             "parts": col_parts,
+            **extra,
         },
         region=ornament.region,
         meta=meta,

@@ -1,0 +1,160 @@
+"""Context elements that stay elements: growth on from a finished tile's ornament (issue 19.4).
+
+Wong et al. grow one panel in one run (§4.1): every element may be the parent of the
+next, and the largest empty circle adjacent to the ornament is grown into by the
+elements around it. A tiled world (:mod:`strew.tiles`) runs the method once per tile,
+with the finished neighbours' elements as ``context``. Seen only as the panel's edge
+(the panel less their drawn footprint), a later tile treated them as §4.1's boundary:
+circles that touch only them are discarded, and the band along them was filled last,
+by the smallest elements (flowers, 480 x 480 in tiles of 120: within about s / 2 of a
+border only buds; leaves 0.54x, buds 1.28x the interior's share in the +-2 s strips).
+
+In a tiled run each drawn element therefore also carries its proxies, its element
+type's user fields, its phase and whether it is sterile, in the private column
+:data:`PROXIES_COLUMN` (one record per element drawn in that row: the members of a
+group, e.g. a spiral's segments). A later tile rebuilds them as placed elements:
+obstacles through their exact proxies, as its own elements are, and parents that its
+rules grow from, as if the neighbour's run had gone on. The column is dropped before
+a world's tiles reach their sink.
+
+Two more hand-over rules make the cut look like one run's (strew.tiles._keep_groups):
+
+- a tile keeps or drops each rule success whole (:data:`GROUP_COLUMN`, by the mean of
+  its elements' centres) and only with its parent's (:func:`keep_whole`): a flower
+  dropped beyond the border had left its stem and leaf hanging from the kept parent;
+- a tile leaves its later phases' elements (§5's state preconditions: the flowers'
+  buds) within half a halo of a later tile to that tile. In one run no bud exists
+  while flowers grow; a cut edge of buds and stems gave the later tile's flowers no
+  parent, and its buds filled the band.
+
+Departure from the paper: Wong et al. grow one panel in one run; this hand-over between
+runs is ours. ``python benchmarks/worlds_strips.py --methods ornament --seeds 1
+--no-fidelity`` (flowers, 480 x 480, tiles 120), 82a4322 -> now: +-2 s strips density
+1.006x -> 0.997x, stem 1.002x -> 0.986x, leaf 0.536x -> 0.960x, flower 0.857x ->
+1.028x, bud 1.276x -> 1.020x; +-1 s density 0.950x -> 0.966x, leaf 0.527x -> 0.909x,
+flower 0.637x -> 1.018x, bud 1.604x -> 0.983x (the untiled control on the same lines:
++-2 s flower 0.936x, +-1 s leaf 1.066x); elements 21,354 -> 21,258 (untiled 21,369);
+tiled CPU 119.7 s -> 65.1 s (a later tile no longer grows a second front from a seed).
+"""
+
+from __future__ import annotations
+
+import copy
+from typing import Any
+
+import numpy as np
+
+from ._pattern import Element, Pattern
+from ._proxies import Proxy
+
+__all__ = ["GROUP_COLUMN", "PROXIES_COLUMN", "element_record", "elements_from", "records_column"]
+
+PROXIES_COLUMN = "ornament_proxies"
+"""The private column of a tiled ornament's tile: per row, a tuple of element records."""
+
+GROUP_COLUMN = "ornament_group"
+"""The private column of a tiled ornament's tile: per row, the rule success that placed
+it (the placement index of its first child). A tile keeps or drops such a group whole
+(strew.tiles._keep_groups): a flower dropped beyond the border left its stem and leaf
+dangling from the kept parent, fencing the band along the border off from new flowers."""
+
+
+def _slots(cls: type) -> list[str]:
+    names: list[str] = []
+    for c in cls.__mro__:
+        for s in getattr(c, "__slots__", ()):
+            if s != "_geom" and s not in names:
+                names.append(s)
+    return names
+
+
+def _plain(v: Any) -> Any:
+    return np.array(v, dtype=float) if isinstance(v, np.ndarray) else copy.copy(v)
+
+
+def element_record(el: Element, pattern: Pattern) -> tuple:
+    """``(type, phase, sterile, fields, proxies)`` of a placed element, plain data."""
+    et = pattern.types[el.type]
+    fields = tuple((k, copy.deepcopy(getattr(el, k))) for k in et.fields)
+    proxies = tuple(tuple((s, _plain(getattr(p, s))) for s in _slots(type(p))) for p in el.proxies)
+    return (el.type, el.phase, bool(el.sterile), fields, proxies)
+
+
+def records_column(groups: list[list[Element]], pattern: Pattern) -> np.ndarray:
+    """(n,) object array: per drawn row, the records of the elements it draws."""
+    col = np.empty(len(groups), dtype=object)
+    for i, g in enumerate(groups):
+        col[i] = tuple(element_record(e, pattern) for e in g)
+    return col
+
+
+def elements_from(column: Any, pattern: Pattern) -> list[Element]:
+    """Elements rebuilt from :data:`PROXIES_COLUMN` values (rows without records are
+    skipped), marked ``context`` (not drawn, not counted)."""
+    out: list[Element] = []
+    for recs in column:
+        if not recs:
+            continue
+        for type_name, phase, sterile, fields, proxies in recs:
+            et = pattern.types.get(type_name)
+            if et is None or len(et.proxies) != len(proxies):
+                continue
+            el = Element(et)
+            for pr, state in zip(el.proxies, proxies):
+                if not isinstance(pr, Proxy):
+                    continue
+                for s, v in state:
+                    setattr(pr, s, _plain(v))
+                pr._geom = None
+            for k, v in fields:
+                setattr(el, k, copy.deepcopy(v))
+            el.sterile = bool(sterile)
+            el.phase = phase
+            el.context = True  # type: ignore[attr-defined]
+            out.append(el)
+    return out
+
+
+def keep_whole(element: Any, parent: Any, group: Any, placed: np.ndarray) -> np.ndarray:
+    """(n,) bool: which drawn rows a tile keeps, in whole rule successes.
+
+    ``placed`` (per row) is the tile's keep-rule by the row's own centre. A rule success
+    (:data:`GROUP_COLUMN`: a flower, its stem and its leaf) is kept when the mean of its
+    rows' centres is placed so and its parent's success was kept: a stem then never
+    dangles, neither from a kept parent towards a dropped flower nor from a dropped
+    parent (Wong et al. grow one tree of elements, §4.1; a tile's share of it is a
+    subtree cut whole). Parents not drawn in the tile (its seeds, context elements) count
+    as kept. Groups are numbered in placement order, so parents come first.
+    """
+    element = np.asarray(element, np.int64)
+    parent = np.asarray(parent, np.int64)
+    group = np.asarray(group, np.int64)
+    n = len(group)
+    if not n:
+        return np.zeros(0, bool)
+    ids, inv = np.unique(group, return_inverse=True)
+    cnt = np.bincount(inv)
+    votes = np.bincount(inv, weights=np.asarray(placed, float)) / cnt
+    # the group of each drawn element, and the parent element of each group
+    group_of = dict(zip(element.tolist(), inv.tolist()))
+    par = np.full(len(ids), -1, np.int64)
+    par[inv] = parent
+    ok = np.zeros(len(ids), bool)
+    for g in range(len(ids)):  # ids ascending: a parent's group precedes its children's
+        p = int(par[g])
+        pg = group_of.get(p, -1) if p >= 0 else -1
+        ok[g] = votes[g] >= 0.5 and (pg < 0 or pg == g or bool(ok[pg]))
+    return ok[inv]
+
+
+def late_phase(pattern: Any, phase: Any) -> np.ndarray:
+    """(n,) bool: rows placed after the pattern's first phase (§5's state preconditions:
+    the flowers' buds), False for a pattern without phases."""
+    from ._pattern import load_pattern
+
+    pat = load_pattern(pattern)
+    ph = np.asarray(phase, dtype=object)
+    if not pat.phases:
+        return np.zeros(len(ph), bool)
+    first = pat.phases[0].name
+    return np.array([p not in (first, "", None) for p in ph], bool)
