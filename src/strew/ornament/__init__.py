@@ -273,9 +273,9 @@ def grow_ornament(
 # A tiled world's later tile starts no growth of its own where its finished neighbours'
 # elements can parent growth: it goes on from them, as one run grows the whole panel from
 # its seeds (§4.1). With a seed of its own as well (True) a second front met theirs:
-# flowers 480 x 480, tiles 120, +-2 s strips 1.056x the interior's density against
-# 1.045x without (both before the late phases were handed over, tiles._LATE_BAND), and
-# 10 % more CPU.
+# flowers 480 x 480, tiles 120 (benchmarks/worlds_strips.py --methods ornament): +-2 s
+# strips 0.984x the interior's density, +-1 s 0.946x (leaves 0.869x, flowers 1.073x),
+# against 0.997x and 0.966x (0.909x, 1.018x) without, and 8 % more CPU.
 _SEED_WITH_CONTEXT = False
 
 
