@@ -52,9 +52,11 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # s the mean spacing, 95% tile-bootstrap intervals): pack's density 1.007x at +-1s on
 # bars and discs and 1.003x on the demo's stones (its ramp hand-over, _ramp), but 1.07x on
 # the demo's trees (benchmarks/pack_seam_trees.py); synth's 1.001x at +-2s, stones 1.007x
-# (a band of whole texture handed over), stones 0.95x at +-3s; ornament's flowers 1.006x
-# at +-2s and flat over tile phases, but leaves 0.54x and buds 1.28x there, and willow
-# 1.26x. synth uses its context as a neighbourhood, not only an obstacle; ornament's tiles
+# (a band of whole texture handed over), stones 0.95x at +-3s; ornament's flowers 0.997x
+# at +-2s, every kind within 4% there (leaves 0.96x; they were 0.54x, buds 1.28x), and
+# willow 1.027x (was 1.26x; stems 0.94x), its later tiles growing on from their
+# finished neighbours' elements (_HANDS_ON, _keep_groups). synth uses its context as a
+# neighbourhood, not only an obstacle; ornament's tiles
 # give one kind name shapes that differ a little, but its elements carry their geometry in
 # ``parts``, so the tiles' libraries are made to agree (_harmonize).
 # On a torus (periodic=True) any method with context tiles.
