@@ -19,6 +19,8 @@ Also printed: the covered area's ratio (the elements' area per unit area) in eac
   ``holes-filter``: as ``ramp``, then B's elements centred on A's side outside every
   dropped disc are dropped.
   ``centre``: A keeps the centres before the border, B's region reaches one halo.
+  ``tiles``: as ``ramp``, then B's elements positioned on A's side are kept by
+  ``strew.tiles._in_holes`` (the world's rule), given A's dropped elements.
 
 Run: ``python benchmarks/pack_seam_split.py [--seeds 12] [--height 1200] [--handover ramp|holes|holes-filter|centre]
 [--grow 0] [--exponent 0.5]``; writes ``benchmarks/results/pack_seam_split_<handover>.json``.
@@ -40,6 +42,7 @@ def main() -> None:
     import shapely
 
     import strew
+    import strew.tiles
     from strew._resources import example_path
     from strew.io import load_shapes
     from strew.pack import pack
@@ -47,7 +50,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=12)
     ap.add_argument("--height", type=float, default=1200.0)
-    ap.add_argument("--handover", choices=("ramp", "holes", "holes-filter", "centre"), default="ramp")
+    ap.add_argument("--handover", choices=("ramp", "holes", "holes-filter", "centre", "tiles"), default="ramp")
     ap.add_argument("--grow", type=float, default=0.0, help="holes: the dropped discs grown by this many spacings")
     ap.add_argument("--exponent", type=float, default=0.5)
     ap.add_argument("--width", type=float, default=None, help="the ramp's width in spacings [the halo]")
@@ -92,6 +95,7 @@ def main() -> None:
                 if len(dropped) else np.zeros(0)
         discs = shapely.buffer(cen, rad + args.grow * s)
         holes = shapely.union_all(discs) if len(discs) else shapely.Polygon()
+        hole_xyr = strew.tiles._hole_discs(a, ~keep)  # as strew.tiles.run_tile: the ramp's and those past the border
         a, xa = a.select(keep), xa[keep]
         ctx = a.select(xa > border - 2 * h)
         rb = shapely.box(border - g, 0, x_b, height)
@@ -103,6 +107,11 @@ def main() -> None:
         xb = (bb[:, 0] + bb[:, 2]) / 2
         cb = shapely.points(b.x, b.y) if args.disc == "origin" else shapely.points(xb, (bb[:, 1] + bb[:, 3]) / 2)
         in_hole = shapely.contains(holes, cb) if len(discs) else np.zeros(len(b), bool)
+        if args.handover == "tiles":  # strew.tiles._in_holes, the rule of the tiled world
+            mine = b.x < border
+            k2 = np.ones(len(b), bool)
+            k2[mine] = strew.tiles._in_holes(b.select(mine), (ctx.with_meta(holes=hole_xyr),), {0: [(0.0, 0.0)]}, ctx)
+            b, xb, gb, in_hole = b.select(k2), xb[k2], gb[k2], in_hole[k2]
         if args.handover == "holes-filter":
             k2 = (xb >= border) | in_hole
             b, xb, gb, in_hole = b.select(k2), xb[k2], gb[k2], in_hole[k2]
