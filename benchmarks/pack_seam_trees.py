@@ -13,6 +13,11 @@ dropping its elements deeper than 1.25 ramp widths into a finished one: +-1s 1.0
 over a finished packing (benchmarks/pack_seam_two_tiles.py --input trees) had raised
 the interior too, and the refilled ramp stays 1.09-1.16 whatever its width or area
 exponent (the holes take more, smaller trees). Results: pack_seam_two_tiles_trees.json.
+
+h/trees19 (kept, strew.tiles._in_holes): the later tile keeps on a finished side only
+its elements in the weighted Voronoi cells of the elements the finished one dropped:
++-1s 1.012 [0.990, 1.033], +-2s 0.984 [0.968, 1.003], pines 0.962 / 0.973, oaks 1.033 /
+1.023 (drafts in pack_seam_trees.json; where the surplus was: benchmarks/pack_seam_split.py).
 """
 import sys, time, numpy as np
 from pathlib import Path
