@@ -289,6 +289,56 @@ CROWD_RULE = True
 element's (see :func:`neighbour_limits`; off: the paper's collision test alone)."""
 
 
+OPEN_SIZES = 0.03
+"""Exemplars of several size classes get neighbour limits (:func:`neighbour_limits`)
+when more than this share of their own free space stays open (:func:`open_free_space`)."""
+
+SIZES_SLACK = 1
+"""Neighbours an element of a several-size exemplar may have beyond its exemplar
+element's count (see :func:`neighbour_limits`)."""
+
+
+def open_free_space(prep) -> np.ndarray:
+    """(exemplars,) float: share of each exemplar's own free-space points that its own
+    elements leave uncovered. Computed once per ``prep``.
+
+    Each interior element's free-space points are laid on the exemplar at that element
+    (points within their cover radius of the domain's edge left out) and tested as
+    :func:`update_free_space` tests them: covered when an element o stands within
+    ``max(rc_v + rc_o, cover_v)``. Where the exemplar itself would leave free space
+    open, growth fills it: §5.1 clusters the k matches' vectors and keeps only the
+    clusters, but here F holds every vector (``_prepare.FREE_SUPPORT`` is off), and a
+    vector of one match lands in a gap of another. Measured (benchmarks/_variants.py):
+    two sizes, every variant and parameter set 0.000-0.021; three sizes at default
+    parameters 0.002-0.023; its EDGE sets that growth over-fills 0.059-0.170 (1:3:7,
+    300/30/8 stones: 0.170, output 1.7-2.5x the exemplar's density in every class);
+    clusters (rings of dots far apart) 0.13-0.42.
+    """
+    got = getattr(prep, "_open_free", None)
+    if got is not None and len(got) == len(prep.names):
+        return got
+    out = np.zeros(len(prep.names))
+    for i, dom in enumerate(prep.domains):
+        inter = np.asarray(prep.interior[i], np.int64)
+        ids = np.flatnonzero(prep.source == i)
+        if len(inter) == 0 or len(ids) < 2:
+            continue
+        cnt = prep.free_ptr[inter + 1] - prep.free_ptr[inter]
+        rows = np.repeat(prep.free_ptr[inter], cnt) + (np.arange(int(cnt.sum())) - np.repeat(np.cumsum(cnt) - cnt, cnt))
+        fpos = np.repeat(prep.pos[inter], cnt, axis=0) + prep.free_off[rows]
+        fr, fc = prep.free_r[rows], prep.free_cover[rows]
+        inside = shapely.contains_xy(dom, fpos[:, 0], fpos[:, 1])
+        inside[inside] = shapely.distance(dom.exterior, shapely.points(fpos[inside])) >= fc[inside]
+        if not inside.any():
+            continue
+        fpos, fr, fc = fpos[inside], fr[inside], fc[inside]
+        d, j = cKDTree(prep.pos[ids]).query(fpos, k=min(8, len(ids)))
+        lim = np.maximum(fr[:, None] + prep.rc[ids[j]], fc[:, None])
+        out[i] = float(np.mean(~(d < lim).any(axis=1)))
+    prep._open_free = out
+    return out
+
+
 def neighbour_limits(prep) -> np.ndarray:
     """(n,) int: the most output neighbours (within r-bar) an element copied from each
     exemplar element may have, or -1 for no limit. Computed once per ``prep``.
@@ -317,6 +367,18 @@ def neighbour_limits(prep) -> np.ndarray:
     growth: with limits on every one-kind exemplar, bricks of 6:1, scales and tight
     rows lost faithfulness (their jittered copies exceed the lattice's exact count and
     leave holes).
+
+    Exemplars of several size classes (no voids) take part too where more than
+    ``OPEN_SIZES`` of their own free space stays open (:func:`open_free_space`), each
+    limit ``SIZES_SLACK`` above the count; the open circle then is one the smallest
+    element fits. Cause measured first (three sizes, EDGE 1:3:7 with 300/30/8 stones,
+    3.5x the frame, seed 1): the surplus is not small stones taking others' places but
+    every class packed closer than the exemplar (small 1.67x, medium 1.79x, large 2.52x
+    its density; the nearest small neighbour at median 5.2 against 6.5), and all of it
+    comes from growth (fill_holes added none, seed patches 12 of 7029). Without the
+    gate (limits on every several-size exemplar) three sizes' default variant v1 failed
+    with too few small stones (density[small] 0.195 against its tolerance 0.114);
+    without the slack clusters v2 failed with too few dots (0.182 against 0.17).
     """
     got = getattr(prep, "_nb_limits", None)
     if got is not None and len(got) == len(prep.kind):
@@ -324,14 +386,17 @@ def neighbour_limits(prep) -> np.ndarray:
     out = np.full(len(prep.kind), -1, np.int64)
     for s, dom in enumerate(prep.domains):
         ids = np.flatnonzero(prep.source == s)
-        if len(ids) < 3 or prep.void[ids].any() or len(np.unique(prep.size_class[ids])) != 1 or len(np.unique(prep.kind[ids])) != 1 or np.any(prep.rc[ids] < 0.9 * prep.r[ids]):
+        one = len(np.unique(prep.size_class[ids])) == 1 and len(np.unique(prep.kind[ids])) == 1
+        sizes = len(np.unique(prep.size_class[ids])) > 1 and open_free_space(prep)[s] > OPEN_SIZES
+        if len(ids) < 3 or prep.void[ids].any() or not (one or sizes) or np.any(prep.rc[ids] < 0.9 * prep.r[ids]):
             continue
         p, rb = prep.pos[ids], prep.rbar[ids]
         cen, rad, tri = circumcircles(p)
         if len(rad) == 0:
             continue
         rc, sk = prep.rc[ids], prep.skind[ids]
-        need = np.maximum(rc.min() + rc[tri], prep.min_dist[sk[0], sk[tri]]).max(axis=1)
+        sm = int(np.argmin(rc))  # room for the smallest element (one kind: any)
+        need = np.maximum(rc[sm] + rc[tri], prep.min_dist[sk[sm], sk[tri]]).max(axis=1)
         room = rad >= need
         room[room] = shapely.contains_xy(dom, cen[room, 0], cen[room, 1])
         room[room] = shapely.distance(dom.exterior, shapely.points(cen[room])) >= rad[room]
@@ -341,7 +406,7 @@ def neighbour_limits(prep) -> np.ndarray:
         cnt = cKDTree(p).query_ball_point(p, rb, return_length=True) - 1
         share = shapely.area(shapely.intersection(shapely.buffer(shapely.points(p), rb, quad_segs=16), dom)) / (np.pi * rb**2)
         ok = (share >= 0.5) & near_room
-        out[ids[ok]] = np.round(cnt[ok] / share[ok]).astype(np.int64)
+        out[ids[ok]] = np.round(cnt[ok] / share[ok]).astype(np.int64) + (0 if one else SIZES_SLACK)
     prep._nb_limits = out
     return out
 
