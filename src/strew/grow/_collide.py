@@ -59,6 +59,12 @@ try:
     from shapely.lib import intersects as _intersects  # the ufunc, without the Python wrapper
 except ImportError:  # pragma: no cover
     _intersects = shapely.intersects
+try:
+    from shapely.lib import dwithin as _dwithin
+except ImportError:  # pragma: no cover - shapely < 2.1
+
+    def _dwithin(a: Any, b: Any, d: Any) -> Any:
+        return shapely.distance(a, b) <= d
 
 
 class _Collide:
@@ -146,6 +152,50 @@ class _Collide:
             others.append(j)
         return self._hits_any(g, kind, others)
 
+    def crowds_gap(self, g: Any, kind: int, x: float, y: float, scale: float, s: int) -> bool:
+        """Would element geometry ``g`` of ``kind`` and ``scale`` at (x, y) come nearer a
+        placed element than the reference has their two kinds: outline to outline
+        (:attr:`pair_gap`), or bounding disc to bounding disc (:attr:`pair_disc`)?
+
+        Not in the paper: §5.2's collision test is per element; here it is per pair of
+        kinds, with the reference's least gaps between them (see ``_Grower._pair_gaps``).
+        """
+        gmax = float(self.pair_gap_max[kind])
+        if gmax <= 0:
+            return False
+        row = self.pair_gap[kind]
+        disc = self.pair_disc[kind]
+        far = self.pair_reach[kind]
+        kr = self.kind_radius
+        nk = len(kr)
+        rg = float(kr[kind]) * abs(scale)
+        xy, kinds, scl, orig_of = self.xy, self.kind, self.scl, self.orig_of
+        others = []
+        gaps = []
+        for j in self.index.near(x, y, rg + self.other_rmax + gmax, 1 << ELEMENT):
+            kj = int(kinds[j])
+            if kj < 0 or kj >= nk or orig_of[j] == s:
+                continue
+            gj = float(row[kj])
+            if gj <= 0:
+                continue
+            rj = rg + float(kr[kj]) * abs(float(scl[j]))
+            reach = rj + float(far[kj])
+            px, py = xy[j]
+            d2 = (px - x) ** 2 + (py - y) ** 2
+            if d2 > reach * reach:
+                continue
+            dm = rj + float(disc[kj])
+            if dm > 0 and d2 < dm * dm:
+                return True
+            others.append(j)
+            gaps.append(gj)
+        if not others:
+            return False
+        geom = self.geom
+        gs = np.array([geom[j] for j in others], dtype=object)
+        return bool(_dwithin(g, gs, np.array(gaps)).any())
+
     def _hits_any(self, g: Any, kind: int, others: list[int]) -> bool:
         if not others:
             return False
@@ -184,7 +234,10 @@ class _Collide:
         return out
 
     def overlapping_many(self, check: Sequence[int]) -> dict[int, list[int]]:
-        """:meth:`overlapping` for several elements, with one vectorised shapely call."""
+        """:meth:`overlapping` for several elements, with one vectorised shapely call.
+
+        Where :attr:`pair_gap` holds a gap for two kinds, a pair nearer than it counts
+        as overlapping too (the relaxation then moves neither: see :meth:`crowds_gap`)."""
         out: dict[int, list[int]] = {}
         ca = np.asarray(check, dtype=np.int64)
         if len(ca) == 0:
@@ -194,7 +247,9 @@ class _Collide:
         nk = len(kr)
         rg = kr[self.kind[ca]] * self.scl[ca]
         pos = self.pos
-        qi, js = self.index.near_many(pos[ca, 0], pos[ca, 1], rg + self.other_rmax, _ELEMENT_OR_OBSTACLE)
+        pg = self.pair_gap if len(self.pair_gap_max) and float(self.pair_gap_max.max()) > 0 else None
+        qi, js = self.index.near_many(pos[ca, 0], pos[ca, 1], rg + self.other_rmax + (float(self.pair_gap_max.max()) if pg is not None else 0.0),
+                                      _ELEMENT_OR_OBSTACLE)
         gs = ca[qi]
         keep = js != gs
         if self.tile is not None:  # not an image of the element itself
@@ -204,7 +259,9 @@ class _Collide:
         # cannot touch, and skip the shapely test (obstacles have no kind of ours)
         kj = self.kind[js]
         el = (self.state[js] == ELEMENT) & (kj < nk)
-        reach = (rg[qi] + kr[np.where(el, kj, 0)] * self.scl[js]) * (1.0 + 1e-9)
+        gap = pg[self.kind[gs], np.where(el, kj, 0)] * el if pg is not None else 0.0
+        far = self.pair_reach[self.kind[gs], np.where(el, kj, 0)] * el if pg is not None else 0.0
+        reach = (rg[qi] + kr[np.where(el, kj, 0)] * self.scl[js] + far) * (1.0 + 1e-9)
         d2 = (pos[js, 0] - pos[gs, 0]) ** 2 + (pos[js, 1] - pos[gs, 1]) ** 2
         keep &= ~(el & (d2 > reach * reach))
         ga: list[int] = gs[keep].tolist()
@@ -214,11 +271,30 @@ class _Collide:
         geoms = self.geom
         A = np.array([geoms[g] for g in ga], dtype=object)
         B = np.array([geoms[j] for j in gb], dtype=object)
-        hit = np.flatnonzero(shapely.intersects(A, B))
+        if pg is not None:
+            gk = np.asarray(gap)[keep]
+            near = gk > 0
+            hit_b = np.zeros(len(ga), dtype=bool)
+            if near.any():
+                # nearer than the bounding discs' gap (see crowds_gap), or the outlines'
+                pd = np.maximum(self.pair_disc, self.pair_disc.T)
+                dm = (rg[qi] + kr[np.where(el, kj, 0)] * self.scl[js] + pd[self.kind[gs], np.where(el, kj, 0)])[keep]
+                hit_b = near & (dm > 0) & (d2[keep] < dm * dm)
+                rest = near & ~hit_b
+                if rest.any():
+                    hit_b[rest] = _dwithin(A[rest], B[rest], gk[rest])
+            if (~near).any():
+                hit_b[~near] = shapely.intersects(A[~near], B[~near])
+            hit = np.flatnonzero(hit_b)
+        else:
+            near = None
+            hit = np.flatnonzero(shapely.intersects(A, B))
         if len(hit) == 0:
             return out
         areal = self.areal
         both = np.array([areal[self.kind[ga[q]]] and areal[self.kind[gb[q]]] for q in hit], dtype=bool)
+        if near is not None:
+            both &= ~near[hit]  # too near: a hit whatever the overlap's area
         keep = ~both
         if both.any():
             hb = hit[both]

@@ -365,6 +365,10 @@ class _Place:
             if moved is None:
                 return False
             x, y, g = moved
+        # Not in the paper: §5.2's collision test per pair of kinds (the reference's least
+        # gaps between them, ``_Grower._pair_gaps``; fixed mode)
+        if p.avoid_overlaps and self.pair_gap_max[kind] > 0 and self.crowds_gap(g, kind, x, y, scale, s):
+            return False
         self._unhigh(s)
         self.state[s] = ELEMENT
         self.kind[s] = kind
