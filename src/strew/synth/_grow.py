@@ -308,6 +308,52 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     return added
 
 
+REPEAT_RADIUS = 1.0
+"""Radius, in sides of the seed's exemplar (square root of its area), within which a
+candidate already copied is passed over (see :func:`_prefer_unrepeated`); 0: off."""
+
+
+def _prefer_unrepeated(state: SynthState, seeds: np.ndarray, cands: np.ndarray, costs: np.ndarray, slack: float | np.ndarray, c: float) -> None:
+    """Put candidates already copied near a seed behind the others (in place on ``costs``).
+
+    Extension of §5.1: k-coherence keeps copying the neighbourhoods the output already
+    holds, so a region of the output can repeat one part of the exemplar several times
+    over. Where that part's composition is off the exemplar's mean (three sizes: a part
+    with 33 medium and 39 large stones per frame area against 58 and 29), a window of
+    the exemplar's size holds it twice and fails the local map at 50x the area, where a
+    fresh draw would not (issue 13 point 2). A candidate whose exemplar element was
+    already copied within ``REPEAT_RADIUS`` exemplar sides of the seed has its cost
+    raised past the ratio test's bound ``c d_0 + slack`` when another candidate within
+    that bound was not copied there; otherwise the costs are left as they are.
+    """
+    prep = state.prep
+    if REPEAT_RADIUS <= 0 or len(seeds) == 0 or costs.shape[1] < 2:
+        return
+    side = np.sqrt(np.bincount(prep.source, minlength=len(prep.names)) / np.maximum(prep.density, 1e-12))
+    rad = REPEAT_RADIUS * side[prep.source[state.src[seeds]]]
+    n = state.n
+    tree = cKDTree(state.pos[:n])
+    lists = tree.query_ball_point(state.pos[seeds], rad)
+    lens = np.fromiter((len(v) for v in lists), np.int64, len(lists))
+    if lens.sum() == 0:
+        return
+    who = np.repeat(np.arange(len(seeds)), lens)
+    near = np.fromiter((j for v in lists for j in v), np.int64, int(lens.sum()))
+    keep = near != seeds[who]
+    m = len(prep.pos)
+    have = np.unique(who[keep] * m + state.src[near[keep]])
+    key = np.arange(len(seeds))[:, None] * m + np.maximum(cands, 0)
+    rep = np.isin(key, have) & (cands >= 0)
+    fin = np.isfinite(costs)
+    if not (rep & fin).any():
+        return
+    d0 = np.where(fin, costs, np.inf).min(axis=1)
+    bound = c * d0 + np.broadcast_to(np.asarray(slack, float), d0.shape)
+    fresh = (~rep & fin & (costs <= bound[:, None])).any(axis=1)
+    shift = rep & fin & fresh[:, None]
+    costs[shift] += bound[np.nonzero(shift)[0]] + 1e-9
+
+
 CROWD_RULE = True
 """Growth keeps each output element's neighbourhood no fuller than its exemplar
 element's (see :func:`neighbour_limits`; off: the paper's collision test alone)."""
@@ -865,6 +911,7 @@ def grow(
         cands = prep.co[state.origin[seeds]]
         cands = np.where((cands >= 0) & prep.selected_elements[np.maximum(cands, 0)], cands, -1)
         costs = K.candidate_costs(q_ptr, q_off, q_kind, q_d, rbar[seeds], prep.kind[src[seeds]], 2.0 * prep.r[src[seeds]], cands, prep.nb_ptr, prep.nb_off, prep.nb_kind, prep.nb_d, prep.kind, prep.kind_cost)
+        _prefer_unrepeated(state, seeds, cands, costs, 2.0 * (2.0 * prep.r[src[seeds]]) ** 2, prm.c)
         sizes = np.where(cands >= 0, np.diff(prep.nb_ptr)[np.maximum(cands, 0)], 0).ravel()
         out_ptr = np.zeros(len(sizes) + 1, np.int64)
         np.cumsum(sizes, out=out_ptr[1:])
