@@ -52,18 +52,19 @@ def test_fewer_repeated_copies_near_each_element():
     assert _repeats(on, side) < 0.92 * _repeats(off, side)  # seeds 1, 2: 0.85, 0.73 of it
 
 
-def test_repeated_candidate_goes_behind_a_fresh_one():
+def test_repeated_candidate_goes_behind_a_fresh_one(monkeypatch):
     """Unit: a candidate copied near the seed is pushed past the ratio bound when another
     candidate within the bound is fresh; a seed whose candidates are all repeated keeps
     its costs."""
-    ex = fidelity_suite().make_exemplar("stones")
-    st = new_state(ex, Region.rectangle(200, 200), rng=3)
+    monkeypatch.setattr(G, "REPEAT_RADIUS", 0.2)
+    ex = fidelity_suite().make_exemplar("three_sizes")  # 132 interior elements (REPEAT_MIN_INTERIOR)
+    st = new_state(ex, Region.rectangle(300, 300), rng=3)
     fill(st)
     seeds = np.array([st.n // 2, st.n // 3])
     pos, src = st.pos[: st.n], st.src[: st.n]
     near = cKDTree(pos).query_ball_point(pos[seeds[0]], 20.0)
     rep_src = next(src[j] for j in near if j != seeds[0])
-    used = set(src[cKDTree(pos).query_ball_point(pos[seeds[0]], G.REPEAT_RADIUS * 200.0 + 1)])
+    used = set(src[cKDTree(pos).query_ball_point(pos[seeds[0]], G.REPEAT_RADIUS * 210.0 + 1)])
     fresh_src = next(i for i in range(len(st.prep.pos)) if i not in used) if len(used) < len(st.prep.pos) else None
     if fresh_src is None:
         pytest.skip("every exemplar element is copied near the seed")
@@ -76,3 +77,10 @@ def test_repeated_candidate_goes_behind_a_fresh_one():
     assert np.argmin(costs[0]) == 1
     G._prefer_unrepeated(st, seeds[:1], cands[1:], costs[1:], 0.0, 2.0)
     np.testing.assert_array_equal(costs[1], before[1])
+    # an exemplar with few interior elements (stones: 19) is left alone
+    st2 = new_state(fidelity_suite().make_exemplar("stones"), Region.rectangle(200, 200), rng=3)
+    fill(st2)
+    c2 = np.array([[1.0, 1.5]])
+    s2 = st2.src[: st2.n]
+    G._prefer_unrepeated(st2, np.array([st2.n // 2]), np.array([[s2[0], s2[1]]]), c2, 0.0, 2.0)
+    np.testing.assert_array_equal(c2, [[1.0, 1.5]])

@@ -312,6 +312,9 @@ REPEAT_RADIUS = 1.0
 """Radius, in sides of the seed's exemplar (square root of its area), within which a
 candidate already copied is passed over (see :func:`_prefer_unrepeated`); 0: off."""
 
+REPEAT_MIN_INTERIOR = 60
+"""Least interior elements of an exemplar for :func:`_prefer_unrepeated` to act."""
+
 
 def _prefer_unrepeated(state: SynthState, seeds: np.ndarray, cands: np.ndarray, costs: np.ndarray, slack: float | np.ndarray, c: float) -> None:
     """Put candidates already copied near a seed behind the others (in place on ``costs``).
@@ -329,7 +332,19 @@ def _prefer_unrepeated(state: SynthState, seeds: np.ndarray, cands: np.ndarray, 
     prep = state.prep
     if REPEAT_RADIUS <= 0 or len(seeds) == 0 or costs.shape[1] < 2:
         return
+    if state.fixed.any():
+        # not beside a context (_context): there it thinned the new half's interior
+        # (two sizes, tests/synth/test_synth_context.py: 0.00350 -> 0.00325 elements per
+        # unit area, seeds 1 and 2), with the context's elements counted or not
+        return
     side = np.sqrt(np.bincount(prep.source, minlength=len(prep.names)) / np.maximum(prep.density, 1e-12))
+    # only exemplars with enough interior elements to choose from: clusters far apart
+    # (25 interior elements, tests/synth/test_synth_far_clusters.py) need their few
+    # neighbourhoods repeated and kept holes (empty_circle) without them
+    many = np.array([len(v) >= REPEAT_MIN_INTERIOR for v in prep.interior])[prep.source[state.src[seeds]]]
+    if not many.any():
+        return
+    seeds, cands, sub = seeds[many], cands[many], np.flatnonzero(many)
     rad = REPEAT_RADIUS * side[prep.source[state.src[seeds]]]
     n = state.n
     tree = cKDTree(state.pos[:n])
@@ -344,14 +359,16 @@ def _prefer_unrepeated(state: SynthState, seeds: np.ndarray, cands: np.ndarray, 
     have = np.unique(who[keep] * m + state.src[near[keep]])
     key = np.arange(len(seeds))[:, None] * m + np.maximum(cands, 0)
     rep = np.isin(key, have) & (cands >= 0)
-    fin = np.isfinite(costs)
+    cs = costs[sub]
+    fin = np.isfinite(cs)
     if not (rep & fin).any():
         return
-    d0 = np.where(fin, costs, np.inf).min(axis=1)
-    bound = c * d0 + np.broadcast_to(np.asarray(slack, float), d0.shape)
-    fresh = (~rep & fin & (costs <= bound[:, None])).any(axis=1)
+    d0 = np.where(fin, cs, np.inf).min(axis=1)
+    bound = c * d0 + np.broadcast_to(np.asarray(slack, float), costs.shape[:1])[sub]
+    fresh = (~rep & fin & (cs <= bound[:, None])).any(axis=1)
     shift = rep & fin & fresh[:, None]
-    costs[shift] += bound[np.nonzero(shift)[0]] + 1e-9
+    cs[shift] += bound[np.nonzero(shift)[0]] + 1e-9
+    costs[sub] = cs
 
 
 CROWD_RULE = True
