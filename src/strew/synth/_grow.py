@@ -308,9 +308,15 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     return added
 
 
-REPEAT_RADIUS = 1.0
+REPEAT_RADIUS = 0.0
 """Radius, in sides of the seed's exemplar (square root of its area), within which a
-candidate already copied is passed over (see :func:`_prefer_unrepeated`); 0: off."""
+candidate already copied is passed over (see :func:`_prefer_unrepeated`); 0: off.
+
+Off by default. At 1.0 it halves three sizes' failing windows at 50x the area (seeds
+1-5: mean share 0.062 -> 0.030), but two sizes go from 3 to 5 failing windows and the
+suite's rings, which had none, fail 2 of 143 windows on seeds 1 and 2
+(``orientation.relative``, worst 1.19): ``python benchmarks/synth.py --seams --seeds 1,2``
+with it on and off. ``benchmarks/synth_seams_seam50_diag.py`` sets it (``SEAM50_R``)."""
 
 REPEAT_MIN_INTERIOR = 60
 """Least interior elements of an exemplar for :func:`_prefer_unrepeated` to act."""
