@@ -5,6 +5,12 @@ quarter-circle field (the hardest case of ``benchmarks/grow.py --structure``) le
 holes (empty circles wider than 1.5 spacings) at d66b77e; the passes of
 :mod:`strew.grow._flow_gaps` leave two. Whatever they move stays inside the region and
 off every other element, and the lattice keeps its six-neighbour share.
+
+The same case's rows fan out. At 82a4322 the front only stretched: 0.536 of the interior
+elements kept six neighbours at the spacing (+-15%), 0.46 had fewer than six within 1.15
+spacings and none nearer (a stretched site), and two holes were left.
+``_Grower.flow_respace`` spaces a stretched run of front seeds anew with one seed more:
+0.796 keep six neighbours, 0.20 are stretched, one hole.
 """
 
 from __future__ import annotations
@@ -37,12 +43,19 @@ def _holes(xy: np.ndarray, region: Region) -> int:
     return len(np.unique(connected_components(m, directed=False)[1]))
 
 
-def _six_share(xy: np.ndarray, region: Region) -> float:
+def _shares(xy: np.ndarray, region: Region) -> tuple[float, float]:
+    """Of the interior elements (over 2 spacings inside): the share with six neighbours
+    at 0.85-1.15 spacings and none nearer, and the share with fewer than six within 1.15
+    spacings and none nearer (stretched)."""
     tree = cKDTree(xy)
     inner = np.flatnonzero(region.distance_to_boundary(xy) > 2 * SP)
     hi = np.array([len(tree.query_ball_point(xy[i], 1.15 * SP)) - 1 for i in inner])
     lo = np.array([len(tree.query_ball_point(xy[i], 0.85 * SP)) - 1 for i in inner])
-    return float(((hi == 6) & (lo == 0)).mean())
+    return float(((hi == 6) & (lo == 0)).mean()), float(((hi < 6) & (lo == 0)).mean())
+
+
+def _six_share(xy: np.ndarray, region: Region) -> float:
+    return _shares(xy, region)[0]
 
 
 def _quarter_circles(a: float):
@@ -50,20 +63,31 @@ def _quarter_circles(a: float):
     return flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (a / 3, a * 5 / 6)])
 
 
-@pytest.mark.slow
-def test_flow_from_the_centre_of_curvature_leaves_few_holes_and_no_overlap():
+@pytest.fixture(scope="module")
+def corner():
+    """The hexagonal lattice grown from the corner at the centre of curvature of a
+    quarter-circle field: the reference, the growth's keywords and the output."""
     ex = fidelity_suite().make_exemplar("hex_lattice", nx=8, ny=8)
     a = 30 * SP
-    region = Region.rectangle(a, a)
-    kw = dict(region=region, mode="flow", flow=_quarter_circles(a), start=(2 * SP, 2 * SP))
+    kw = dict(region=Region.rectangle(a, a), mode="flow", flow=_quarter_circles(a), start=(2 * SP, 2 * SP))
     ref = analyze(ex)
-    out = grow_reference(ref, GrowParams(**kw), rng=1)
+    return ref, kw, grow_reference(ref, GrowParams(**kw), rng=1)
+
+
+def _inside_without_overlap(out, region: Region) -> None:
     assert np.all(region.contains_geometry(out.geometry, tolerance=1e-9))
     geoms = np.asarray(out.geometry)
     i, j = shapely.STRtree(geoms).query(geoms, predicate="intersects")
     keep = i < j
     inter = shapely.area(shapely.intersection(geoms[i[keep]], geoms[j[keep]]))
     assert inter.max(initial=0.0) < 1e-6 * float(shapely.area(geoms[0]))
+
+
+@pytest.mark.slow
+def test_flow_from_the_centre_of_curvature_leaves_few_holes_and_no_overlap(corner):
+    ref, kw, out = corner
+    region = kw["region"]
+    _inside_without_overlap(out, region)
     holes = _holes(out.xy, region)
     assert holes <= 3
     # without the passes (the growth of d66b77e): ten
@@ -85,3 +109,29 @@ def test_flow_gap_passes_leave_an_irregular_exemplars_gaps_alone():
     on = grow_reference(ref, GrowParams(**kw), rng=1)
     off = grow_reference(ref, GrowParams(**kw, flow_fill_min=None, flow_close_min=None), rng=1)
     assert abs(len(on) - len(off)) <= 0.01 * len(off)
+
+
+@pytest.mark.slow
+def test_flow_away_from_the_centre_of_curvature_keeps_the_lattice(corner):
+    ref, kw, out = corner
+    region = kw["region"]
+    _inside_without_overlap(out, region)
+    six, stretched = _shares(out.xy, region)
+    assert six >= 0.72  # 0.796 here; 0.536 at 82a4322
+    assert stretched <= 0.28  # 0.20; 0.46 at 82a4322
+    assert _holes(out.xy, region) <= 1  # 1; 2 at 82a4322
+    # the respacing is what keeps it: without it the front stretches as before
+    off = grow_reference(ref, GrowParams(**kw, flow_respace=None), rng=1)
+    six_off, stretched_off = _shares(off.xy, region)
+    assert six_off < six - 0.1 and stretched_off > stretched + 0.1
+
+
+@pytest.mark.parametrize("mode", ["fixed", "rotate"])
+def test_flow_respace_leaves_the_other_modes_alone(mode):
+    ex = fidelity_suite().make_exemplar("hex_lattice", nx=8, ny=8)
+    ref = analyze(ex)
+    kw = dict(region=Region.rectangle(16 * SP, 12 * SP), mode=mode)
+    on = grow_reference(ref, GrowParams(**kw), rng=3)
+    off = grow_reference(ref, GrowParams(**kw, flow_respace=None), rng=3)
+    assert len(on) > 100
+    assert np.array_equal(on.xy, off.xy) and np.array_equal(on.rotation, off.rotation)
