@@ -312,12 +312,15 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         # a void, a void seed with none that near is first tried as an apple. Sparse
         # apples among voids of their size came out 18 % too few (voids took their
         # places, and no ring proposed an apple there again). Not in flow mode.
-        void_miss = np.zeros((self.n_kinds, self.n_kinds), dtype=bool)
+        # (n_kinds,) bool: kinds whose every reference element is a void
         vcol = ex.columns.get("void")
-        if vcol is not None and p.mode != "flow" and len(ex):
-            vk = np.array([bool((self.ex_kind == k).any() and np.asarray(vcol, dtype=bool)[self.ex_kind == k].all()) for k in range(self.n_kinds)])
-            present = np.array([bool((self.ex_kind == k).any()) for k in range(self.n_kinds)])
-            void_miss = vk[:, None] & (present & ~vk)[None, :]
+        vcol = np.asarray(vcol, dtype=bool) if vcol is not None else np.zeros(len(ex), dtype=bool)
+        present = np.bincount(self.ex_kind, minlength=self.n_kinds)[: self.n_kinds] > 0
+        visible = np.bincount(self.ex_kind[~vcol], minlength=self.n_kinds)[: self.n_kinds] > 0
+        self.void_kind = present & ~visible
+        void_miss = np.zeros((self.n_kinds, self.n_kinds), dtype=bool)
+        if p.mode != "flow" and len(ex):
+            void_miss = self.void_kind[:, None] & (present & ~self.void_kind)[None, :]
         if p.canopy_quantile is not None:
             to_frame = shapely.distance(ex.region.geometry.boundary, shapely.points(ex.xy)) if ex.region is not None else np.full(len(ex), np.inf)
             for k2, nearest in nearest_to.items():
@@ -523,11 +526,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         if float(nn.std()) < GAP_LATTICE_CV * float(nn.mean()):
             return gap
         # bounding discs: the smaller (or void) kind k1 placed beside k2
-        void = np.zeros(n, dtype=bool)
-        vcol = ex.columns.get("void")
-        if vcol is not None:
-            vcol = np.asarray(vcol, dtype=bool)
-            void = np.array([bool((self.ex_kind == q).any() and vcol[self.ex_kind == q].all()) for q in range(n)])
+        void = self.void_kind
         R = self.kind_radius[self.ex_kind] * np.abs(ex.scale)
         dg = dd - R[:, None] - R[qq]
         for k1 in range(n):
