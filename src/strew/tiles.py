@@ -652,17 +652,11 @@ def _in_holes(arr: Any, neighbours: tuple[Any, ...], links: Mapping[int, list[tu
             out[m] = np.min(np.hypot(cx[near] - p[0], cy[near] - p[1]) - r[near])
         return out
 
-    dh = nearest(h[:, 0], h[:, 1], h[:, 2])
     if context is None or not len(context):
         return np.ones(len(arr), bool)
+    dh = nearest(h[:, 0], h[:, 1], h[:, 2])
     dk = nearest(np.asarray(context.x, float), np.asarray(context.y, float), _radii(context))
     return dh < dk
-    from scipy.spatial import cKDTree
-
-    h = np.concatenate(discs)
-    for found in cKDTree(np.c_[np.asarray(arr.x, float), np.asarray(arr.y, float)]).query_ball_point(h[:, :2], h[:, 2]):
-        inside[found] = True
-    return inside
 
 
 @dataclass
