@@ -14,7 +14,7 @@ from .._progress import Reporter
 from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
-from ._prepare import anchor_mask
+from ._prepare import OPEN_ROOM, anchor_mask, open_room_share
 from ._shapes import shape_clashes, shape_test_needed
 from ._state import SynthState, map_offsets
 
@@ -487,6 +487,7 @@ def neighbour_limits(prep) -> np.ndarray:
         ids = np.flatnonzero(prep.source == s)
         one = len(np.unique(prep.size_class[ids])) == 1 and len(np.unique(prep.kind[ids])) == 1
         sizes = len(np.unique(prep.size_class[ids])) > 1 and OPEN_SIZES[0] < open_free_space(prep)[s] < OPEN_SIZES[1]
+        sizes |= len(np.unique(prep.size_class[ids])) > 1 and open_free_space(prep)[s] < OPEN_SIZES[1] and open_room_share(prep)[s] >= OPEN_ROOM  # helper sizes13: room for the smallest (_prepare.open_room_share)
         if len(ids) < 3 or prep.void[ids].any() or not (one or sizes) or np.any(prep.rc[ids] < 0.9 * prep.r[ids]):
             continue
         p, rb = prep.pos[ids], prep.rbar[ids]
