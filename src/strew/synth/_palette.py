@@ -147,7 +147,7 @@ def element_parameters(exemplar: Arrangement, *, name: str = "exemplar") -> tupl
     # margin); exemplars whose deepest member lies deeper are unchanged.
     from ._prepare import area_radii, exemplar_domain, size_classes
 
-    cls = size_classes(r, area_radii(exemplar.with_columns(radius=r)))
+    cls = size_classes(r, area_radii(exemplar.with_columns(radius=r)), exemplar.kind)
     reach = RING_FACTOR * a + 2.0 * float(r.max())
     depth = None
     for c in range(1, int(cls.max()) + 1 if n else 0):

@@ -402,7 +402,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     interior_mask = np.zeros(len(arr), bool)
     depth_all = np.zeros(len(arr))
     interior = []
-    cls = size_classes(r, area_radii(arr))
+    cls = size_classes(r, area_radii(arr), kind)
     for i in range(nsrc):
         ids = np.flatnonzero(sources == i)
         p = pos[ids]
@@ -640,7 +640,7 @@ def collision_radii(arr, pos: np.ndarray, r: np.ndarray, cls: np.ndarray, ptr: n
         # in one-size textures the closest approach (min_dist) carries the spacing, and
         # 0.95 of the gap instead of 0.95 of the distance left no room for a jittered
         # grid to settle under optimisation.
-        sc = size_classes(r, area_radii(arr))
+        sc = size_classes(r, area_radii(arr), arr.kind)
         mixed = np.zeros(ns, bool)
         np.logical_or.at(mixed, cls[owner], sc[owner] != sc[idx])
         meets |= ~mixed
@@ -709,7 +709,7 @@ def area_radii(arr) -> np.ndarray:
     return np.where(a > 0, np.minimum(a, r), r)
 
 
-def size_classes(r: np.ndarray, area_r: np.ndarray | None = None) -> np.ndarray:
+def size_classes(r: np.ndarray, area_r: np.ndarray | None = None, kind: np.ndarray | None = None) -> np.ndarray:
     """Size classes of bounding radii: 0 for the smallest, a new class from the first
     radius at least :data:`SIZE_STEP` times the current class's smallest.
 
@@ -732,11 +732,34 @@ def size_classes(r: np.ndarray, area_r: np.ndarray | None = None) -> np.ndarray:
     Parameters
     ----------
     r : (n,) float
+    area_r : (n,) float, optional
+    kind : (n,) int, optional
+        With several kinds, each kind lies wholly in one class (see below).
 
     Returns
     -------
     (n,) int
     """
+    if kind is not None and len(r):
+        # Extension of the §7 split (helper sizes13): with several kinds, a kind is one
+        # size. Where the radius steps cut through a kind (its radii spread across a
+        # SIZE_STEP boundary), the whole kind takes the largest class its members
+        # reached, so it stays apart from the smaller kinds and is not split between
+        # "placed first" and "yields" (see grow). Two sizes with stones 1.7x the
+        # pebbles (benchmarks/_variants.py EDGE p3) had 12 or 25 of 36-40 stones in a
+        # class of their own and the rest in the pebbles' class: stones 0.77-0.89x
+        # their density, pebbles up to 1.18x, nn[stone>stone] 0.088-0.115 against
+        # 0.063-0.075 on all 4 runs; with whole kinds all 4 pass. The one-kind stones
+        # keep per-element classes (their sizes are a continuum, not kinds).
+        cls = size_classes(r, area_r)
+        kind = np.asarray(kind, np.int64)
+        kinds, inv = np.unique(kind, return_inverse=True)
+        if len(kinds) > 1:
+            top = np.zeros(len(kinds), np.int64)
+            np.maximum.at(top, inv, cls)
+            if np.any(top[inv] != cls):
+                _, cls = np.unique(top[inv], return_inverse=True)
+        return cls
     if area_r is not None and len(r):
         r = np.asarray(r, float)
         area_r = np.asarray(area_r, float)
