@@ -35,8 +35,13 @@ Definitions (the same for every method):
 
 Run: ``python benchmarks/worlds_strips.py [--methods pack,synth,ornament] [--seeds 1,2]
 [--quick] [--no-control] [--raw R] [--synth-exemplar three_sizes] [--widths 3,2,1]
-[--ornament-pattern NAME]``. Writes ``benchmarks/results/worlds_strips.json``.
+[--ornament-pattern NAME] [--ornament-tiles 120,110,130] [--coverage]``. Writes ``benchmarks/results/worlds_strips.json``.
 ``--from-raw R [--dedupe]`` summarizes the measurements an earlier ``--raw R`` run kept.
+``--ornament-tiles T1,T2,..``: ornament's worlds also at these tile sizes (side 4 tiles,
+halo the default T / 4). The flowers pattern draws nothing from the seed and a tile's
+result depends only on its grown rectangle's shape and its context, so the seeds give one
+world and the inner tiles of one phase repeat each other; another tile size is another
+world (issue 19.4: several independent measurements; printed per world as well).
 ``--overview``: the overview PNG's ink (the grid as the eye sees it), folded modulo the
 tile, tiled against untiled (``worlds_strips_overview.json``).
 """
@@ -113,6 +118,9 @@ def _configs(quick: bool) -> dict:
 WIDTHS = (2.0, 1.0)
 """Strip half-widths in spacings (``--widths``)."""
 
+COVERAGE = False
+"""``--coverage``: also the drawn geometry's amount by kind in strips and interior."""
+
 
 def _synth_exemplar(cfgs: dict, name: str | None) -> dict:
     """``--synth-exemplar NAME``: synth's world on another exemplar of the fidelity suite
@@ -161,6 +169,9 @@ def measure_world(arr, size, tile, halo, spacing, exemplar=None) -> dict:
     margin = max(halo, 3.0 * spacing)
     for mult in WIDTHS:
         out[f"units_{mult:g}s"] = strip_units(arr, size, tile, mult * spacing, margin)
+    if COVERAGE:
+        for mult in WIDTHS:
+            out[f"cover_{mult:g}s"] = coverage_units(arr, size, tile, mult * spacing, margin)
     t0 = _cpu()
     out["overlaps"] = overlapping_pairs(arr)
     if "tile" in arr.columns:
@@ -176,6 +187,46 @@ def measure_world(arr, size, tile, halo, spacing, exemplar=None) -> dict:
         out["fidelity_cpu_s"] = _cpu() - t0
         out["faithful"] = bool(rep.faithful)
         out["windows"] = border_window_scores(rep.local, tile)
+    return out
+
+
+def coverage_units(arr, size, tile: float, width: float, margin: float) -> dict:
+    """``--coverage``: per tile, how much the elements' drawn geometry lies in the strips
+    and in the interior, by kind: its area where it is a polygon, its length where it is
+    a line (the outline style draws strokes): ``strip``, ``inner`` (the sets' areas),
+    ``strip_kind``, ``inner_kind`` ((tiles, kinds) amounts). A long element (willow's
+    stems, which a later tile starts at the cut and runs inward) counts where it lies,
+    not at its midpoint."""
+    import shapely
+
+    w, h = size
+    t = float(tile)
+    nx, ny = max(1, int(np.ceil(w / t - 1e-9))), max(1, int(np.ceil(h / t - 1e-9)))
+    box = shapely.box(margin, margin, w - margin, h - margin)
+    bands = [shapely.box(k * t - width, 0, k * t + width, h) for k in range(1, nx)]
+    bands += [shapely.box(0, k * t - width, w, k * t + width) for k in range(1, ny)]
+    strip = shapely.intersection(shapely.union_all(bands), box) if bands else shapely.Polygon()
+    inner = shapely.difference(box, strip)
+    geoms = arr.geometry_of("geometry")
+    poly = shapely.area(geoms) > 0
+    kind = np.asarray(arr.kind, np.int64)
+    tree = shapely.STRtree(geoms)
+    n, nk = nx * ny, len(arr.kinds)
+    out = {name: np.zeros(n) for name in ("strip", "inner")}
+    out.update({f"{name}_kind": np.zeros((n, nk)) for name in ("strip", "inner")})
+    for jj in range(ny):
+        for ii in range(nx):
+            cell = shapely.box(ii * t, jj * t, min(w, (ii + 1) * t), min(h, (jj + 1) * t))
+            u = jj * nx + ii
+            for name, part in (("strip", strip), ("inner", inner)):
+                piece = shapely.intersection(part, cell)
+                out[name][u] = shapely.area(piece)
+                idx = tree.query(piece, predicate="intersects")
+                if not len(idx):
+                    continue
+                cut = shapely.intersection(geoms[idx], piece)
+                amount = np.where(poly[idx], shapely.area(cut), shapely.length(cut))
+                np.add.at(out[f"{name}_kind"][u], kind[idx], amount)
     return out
 
 
@@ -200,9 +251,22 @@ def summarize(worlds: list[dict], boot: int, rng: np.random.Generator, kinds: li
                 lambda c, a, ph, p=p: (c[ph == p].sum() / max(a[ph == p].sum(), 1e-300)) / (c.sum() / a.sum()), boot, rng)
         res[key] = {"density_by_phase": by_phase, "strip_elements": int(units["strip"].sum()), "interior_elements": int(units["inner"].sum()),
                     "units": int(len(units["strip"])), "density_ratio": dens, "kind_fraction_ratio": kd}
+    for key in [k for k in worlds[0] if k.startswith("cover_")]:
+        u = {f: np.concatenate([w[key][f] for w in worlds]) for f in worlds[0][key]}
+        cov = {"all": bootstrap_ratio([u["strip_kind"].sum(1), u["strip"], u["inner_kind"].sum(1), u["inner"]],
+                                      lambda sk, s, ik, i: (sk.sum() / s.sum()) / (ik.sum() / i.sum()), boot, rng)}
+        for k, name in enumerate(kinds):
+            cov[name] = bootstrap_ratio([u["strip_kind"][:, k], u["strip"], u["inner_kind"][:, k], u["inner"]],
+                                        lambda sk, s, ik, i: (sk.sum() / s.sum()) / (ik.sum() / max(i.sum(), 1)), boot, rng)
+        res[key] = {"covered_area_ratio": cov, "interior_covered": float(u["inner_kind"].sum() / u["inner"].sum())}
     prof = [w["profile"] for w in worlds]
-    counts = np.sum([p["counts"] for p in prof], axis=0)
-    res["profile"] = profile_test(counts, prof[0]["exposure"], prof[0]["near_bins"])
+    if len({len(p["counts"]) for p in prof}) == 1:
+        counts = np.sum([p["counts"] for p in prof], axis=0)
+        res["profile"] = profile_test(counts, prof[0]["exposure"], prof[0]["near_bins"])
+    else:  # worlds of several tile sizes (--ornament-tiles): bins differ, tests pooled
+        res["profile"] = _pooled_profile(prof)
+    if len({tuple(w.get("world", [0, 0])) for w in worlds}) > 1:
+        res["per_world"] = [_world_points(w, kinds) for w in worlds]
     sc = np.sum([w["signed"]["counts"] for w in worlds], axis=0).astype(float)
     outer = sc[0][[0, 1, -2, -1]].mean()  # the bins 2-3 spacings from the border
     res["signed_profile"] = {"edges_in_spacings": [float(v) for v in worlds[0]["signed"]["edges"]],
@@ -220,6 +284,45 @@ def summarize(worlds: list[dict], boot: int, rng: np.random.Generator, kinds: li
         res["fidelity"] = fidelity_summary(win, boot, rng)
         res["faithful"] = [w["faithful"] for w in worlds]
     return res
+
+
+def _pooled_profile(prof: list[dict]) -> dict:
+    """profile_test over worlds whose folded profiles have different bins: chi-square and
+    degrees of freedom summed, the near / far counts and expectations summed."""
+    from scipy import stats
+
+    chi2 = dof = 0.0
+    cn = cf = en = ef = 0.0
+    for p in prof:
+        c = np.asarray(p["counts"], float)
+        e = c.sum() * np.asarray(p["exposure"], float)
+        chi2 += float(((c - e) ** 2 / e).sum())
+        dof += len(c) - 1
+        near = np.asarray(p["near_bins"], bool)
+        cn, cf, en, ef = cn + c[near].sum(), cf + c[~near].sum(), en + e[near].sum(), ef + e[~near].sum()
+    r = (cn / en) / (cf / ef)
+    se = np.sqrt(1 / cn + 1 / cf)
+    return {"bins": int(dof + len(prof)), "chi2_dof": chi2 / dof, "p": float(stats.chi2.sf(chi2, dof)),
+            "near_ratio": {"value": float(r), "ci": [float(r * np.exp(-1.96 * se)), float(r * np.exp(1.96 * se))]}}
+
+
+def _world_points(w: dict, kinds: list[str]) -> dict:
+    """One world's point ratios (density and kind fractions, strips against interior)."""
+    out: dict = {"world": w.get("world"), "elements": w["elements"]}
+    for key in [k for k in w if k.startswith("units_")]:
+        u = w[key]
+        s, i = u["strip"].sum(), u["inner"].sum()
+        row = {"density": float((s / u["strip_area"].sum()) / (i / u["inner_area"].sum()))}
+        for k, name in enumerate(kinds):
+            row[name] = float((u["strip_kind"][:, k].sum() / s) / max(u["inner_kind"][:, k].sum() / max(i, 1), 1e-300))
+        out[key[6:]] = row
+    for key in [k for k in w if k.startswith("cover_")]:
+        u = w[key]
+        row = {"covered": float((u["strip_kind"].sum() / u["strip"].sum()) / (u["inner_kind"].sum() / u["inner"].sum()))}
+        for k, name in enumerate(kinds):
+            row[name] = float((u["strip_kind"][:, k].sum() / u["strip"].sum()) / max(u["inner_kind"][:, k].sum() / u["inner"].sum(), 1e-300))
+        out["cover " + key[6:]] = row
+    return out
 
 
 def fidelity_summary(win: dict, boot: int, rng: np.random.Generator) -> dict:
@@ -272,6 +375,14 @@ def report(method: str, mode: str, s: dict) -> None:
                   + ", ".join(f"phase {p} {_fmt(r)}" for p, r in v["density_by_phase"].items()), flush=True)
         print(f"  {method:8s} {mode:8s} strips +-{key[6:]}: {v['strip_elements']:,} strip / {v['interior_elements']:,} interior el, "
               f"{v['units']} tiles: density ratio {_fmt(v['density_ratio'])}; kind-fraction ratios {kinds}", flush=True)
+    for key in [k for k in s if k.startswith("cover_")]:
+        c = s[key]["covered_area_ratio"]
+        print(f"  {method:8s} {mode:8s} drawn geometry +-{key[6:]} per area, strip / interior: "
+              + ", ".join(f"{k} {_fmt(r)}" for k, r in c.items()), flush=True)
+    for pw in s.get("per_world", []):
+        print(f"  {method:8s} {mode:8s} world seed {pw['world'][0]} tile {pw['world'][1]:g} ({pw['elements']:,} el): "
+              + "; ".join(f"+-{k}: " + " ".join(f"{n} {v:.3f}" for n, v in pw[k].items()) for k in pw if k not in ("world", "elements")),
+              flush=True)
     sp = s["signed_profile"]
     for name, row in sp["relative_density"].items():
         print(f"  {method:8s} {mode:8s} signed profile {name:7s} (s/2 bins, -3s..+3s into the later tile): "
@@ -305,7 +416,12 @@ def _summarize_method(result: dict, method: str, meta: dict, per: dict, args: ar
 
 
 def overview(args: argparse.Namespace) -> None:
-    """``--overview``: the overview PNG's ink folded modulo the tile (world_stats.overview_profile),
+    """``--ornament-tiles T1,T2,..``: ornament's worlds also at these tile sizes (side 4 tiles,
+halo the default T / 4). The flowers pattern draws nothing from the seed and a tile's
+result depends only on its grown rectangle's shape and its context, so the seeds give one
+world and the inner tiles of one phase repeat each other; another tile size is another
+world (issue 19.4: several independent measurements; printed per world as well).
+``--overview``: the overview PNG's ink folded modulo the tile (world_stats.overview_profile),
     tiled against untiled, first seed; writes ``worlds_strips_overview.json``."""
     import strew
     from strew._method import spec
@@ -353,12 +469,16 @@ def main() -> None:
     ap.add_argument("--from-raw", default=None, help="only summarize the measurements pickled by an earlier --raw run")
     ap.add_argument("--dedupe", action="store_true", help="--from-raw: drop worlds with the first seed's element count")
     ap.add_argument("--ornament-pattern", default=None, help="ornament grows this pattern [default: flowers]")
+    ap.add_argument("--ornament-tiles", default=None, help="ornament: worlds at these tile sizes too (side 4 tiles), e.g. 120,110,130")
     ap.add_argument("--overview", action="store_true", help="only the overview's ink folded modulo the tile (worlds_strips_overview.json)")
     ap.add_argument("--synth-exemplar", default=None, help="synth on this exemplar of the fidelity suite instead of two_sizes (e.g. three_sizes)")
     ap.add_argument("--widths", default="2,1", help="strip half-widths in spacings s (e.g. 3,2,1)")
+    ap.add_argument("--coverage", action="store_true",
+                    help="also the drawn geometry (area of polygons, length of lines) by kind in strips and interior")
     args = ap.parse_args()
-    global WIDTHS
+    global WIDTHS, COVERAGE
     WIDTHS = tuple(float(v) for v in args.widths.split(","))
+    COVERAGE = bool(args.coverage)
     if args.overview:
         overview(args)
         return
@@ -395,7 +515,13 @@ def main() -> None:
         per: dict = {m: [] for m in modes}
         meta: dict = {"side": c["side"], "tile": c["tile"], "seeds": seeds}
         last: dict = {}
-        for seed in seeds:
+        variants = [(c["side"], c["tile"])]
+        if method == "ornament" and args.ornament_tiles:  # several worlds (see --ornament-tiles)
+            variants = [(4 * float(v), float(v)) for v in args.ornament_tiles.split(",")]
+            meta["variants"] = variants
+        for seed, (side, tile) in [(s, v) for s in seeds for v in variants]:
+            c = dict(c, side=side, tile=tile)
+            size = (side, side)
             for mode in modes:
                 t0 = _cpu()
                 if mode == "tiled":
@@ -406,19 +532,21 @@ def main() -> None:
                     arr = spec(c.get("method", method)).function()(c["input"], strew.Region.rectangle(*size), rng=seed, **c["params"])
                     halo = meta["halo"]
                 cpu = _cpu() - t0
-                if mode in last and _same(last[mode][1], arr):  # ornament's flowers draw nothing from the seed
+                if mode in last and last[mode][2] == tile and _same(last[mode][1], arr):  # ornament's flowers draw nothing from the seed
                     print(f"  {method} {mode} seed {seed}: the same world as seed {last[mode][0]} (the method draws "
                           "nothing from the seed): counted once", flush=True)
                     meta.setdefault("same_as_first_seed", []).append([mode, seed])
                     continue
-                last[mode] = (seed, arr)
+                last[mode] = (seed, arr, tile)
                 spacing = 1.0 / np.sqrt(len(arr) / (size[0] * size[1]))
                 meta.setdefault("spacing", spacing)
+                meta.setdefault("spacings", {}).setdefault(str(tile), spacing)  # the first (tiled) world's at this tile
                 meta["kinds"] = list(arr.kinds)
-                w = measure_world(arr, size, c["tile"], halo, meta["spacing"], ex)
+                w = measure_world(arr, size, c["tile"], halo, meta["spacings"][str(tile)], ex)
                 w["cpu_s"] = cpu
+                w["world"] = [seed, tile]
                 per[mode].append(w)
-                print(f"  {method} {mode} seed {seed}: {len(arr):,} el in {cpu:.1f} CPU s (spacing {spacing:.2f}, halo {halo:g}); "
+                print(f"  {method} {mode} seed {seed} tile {tile:g}: {len(arr):,} el in {cpu:.1f} CPU s (spacing {spacing:.2f}, halo {halo:g}); "
                       f"overlaps {w['overlaps']}" + (f", fidelity map {w['fidelity_cpu_s']:.1f} CPU s" if 'fidelity_cpu_s' in w else ""), flush=True)
         if args.raw:
             import pickle
