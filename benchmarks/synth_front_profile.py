@@ -11,9 +11,9 @@ ratios (centres within 1, 2, 3 s of an inner border against the rest, as
 ``worlds_strips.py`` defines them, no intervals). ``--untiled``: the same on one
 untiled run (the control). CPU time per element of the runs.
 
-    python benchmarks/synth19_front_profile.py [--exemplar two_sizes] [--seeds 1,2] [--untiled]
+    python benchmarks/synth_front_profile.py [--exemplar two_sizes] [--seeds 1,2] [--untiled]
 
-Writes ``benchmarks/results/synth19_front_profile.json``.
+Writes ``benchmarks/results/synth_front_profile.json``.
 """
 
 from __future__ import annotations
@@ -61,7 +61,7 @@ def main() -> None:
     ap.add_argument("--seeds", default="1,2")
     ap.add_argument("--side", type=float, default=2640.0)
     ap.add_argument("--untiled", action="store_true")
-    ap.add_argument("--out", default=str(HERE / "results" / "synth19_front_profile.json"))
+    ap.add_argument("--out", default=str(HERE / "results" / "synth_front_profile.json"))
     args = ap.parse_args()
     import strew
     from strew.synth import synthesize
@@ -104,7 +104,7 @@ def main() -> None:
         print(f"strips +-{m}s: density {d:.3f}; kinds " + ", ".join(f"{n} {v:.3f}" for n, v in kinds.items()))
     out = Path(args.out)
     out.parent.mkdir(exist_ok=True)
-    res = {"benchmark": "synth19_front_profile", "command": " ".join(["python benchmarks/synth19_front_profile.py", *sys.argv[1:]]),
+    res = {"benchmark": "synth_front_profile", "command": " ".join(["python benchmarks/synth_front_profile.py", *sys.argv[1:]]),
            "exemplar": args.exemplar, "mode": mode, "elements": nel, "cpu_s": cpu, "spacing": float(s), "bin_from_s": edges,
            "relative_density": {n: row.tolist() for n, row in zip(names, rel)}, "strips": strips}
     out.write_text(json.dumps(res, indent=1) + "\n")

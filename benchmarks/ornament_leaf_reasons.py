@@ -10,7 +10,7 @@ finished neighbour's flower a later tile grows on from). The successes kept in t
 (matched by stem midpoint) are split into the +-1 s / +-2 s strips and the interior,
 and by signed distance into the later tile.
 
-Run: ``python benchmarks/orn19b_leaf_reasons.py [TILE] [tiled|untiled]`` (side 4 tiles,
+Run: ``python benchmarks/ornament_leaf_reasons.py [TILE] [tiled|untiled]`` (side 4 tiles,
 seed 1). At 7c83aee, tile 60: tiled +-1s strips 50 % short stems against 31 % inside
 (untiled 31 % / 37 %); no leaf refused (hit, outside: none).
 """
