@@ -62,7 +62,10 @@ def main() -> None:
     ap.add_argument("--side", type=float, default=2640.0)
     ap.add_argument("--untiled", action="store_true")
     ap.add_argument("--out", default=str(HERE / "results" / "synth_front_profile.json"))
+    ap.add_argument("--quick", action="store_true", help="one seed, a 3 x 3-tile world (a check of the script)")
     args = ap.parse_args()
+    if args.quick:
+        args.seeds, args.side = args.seeds.split(",")[0], 3 * TILE
     import strew
     from strew.synth import synthesize
     from strew.tiles import tiled
