@@ -58,6 +58,7 @@ from ._analysis import Reference, size_priority
 from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
 from ._flow_gaps import close_gaps, fill_holes, side_stream
+from ._flow_holes import close_holes
 from ._index import GrowIndex
 from ._match import MODES, W1, W2, W3
 from ._objects import (
@@ -145,6 +146,19 @@ class GrowParams:
     flow_respace_run: int = 4
     #: ... and is spaced anew only where its new spacing is at least this many mean edges
     flow_respace_min: float = 0.95
+    #: flow mode: last, each hole whose empty circle is wider than this many mean edges
+    #: gets an element, the elements within ``flow_hole_window`` mean edges relaxed
+    #: (§5.5) to make room, the new element's ring pulled ``flow_hole_weight`` times as
+    #: hard as the other offsets are kept, in up to ``flow_hole_rounds`` fits, elements
+    #: turned by up to ``flow_hole_turn`` to clear a contact; where no element fits,
+    #: the ring is pulled towards ``flow_hole_shrink`` mean edges from the centre
+    #: (:func:`strew.grow._flow_holes.close_holes`); None: not
+    flow_hole_min: float | None = 0.74
+    flow_hole_window: float = 2.5
+    flow_hole_weight: float = 10.0
+    flow_hole_rounds: int = 4
+    flow_hole_shrink: float = 0.6
+    flow_hole_turn: float = math.pi / 6
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -623,6 +637,14 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 close_gaps(self)
             self.rng = main
         self.settle()
+        if self.mode_code == 2 and self.tile is None and p.flow_hole_min is not None:
+            # flow mode: the holes left, closed after the last relaxation (nothing moves
+            # them back); draws from the side stream as above
+            main, self.rng = self.rng, side_stream(self.rng)
+            for _ in range(p.refill_rounds):
+                if len(self.order) >= target or not close_holes(self, target):
+                    break
+            self.rng = main
 
     def refill(self) -> int:
         """Torus: seeds again at the empty slots of the placed elements' rings; how many.

@@ -31,6 +31,7 @@ def relax_positions(
     free: np.ndarray,
     *,
     regularization: float = 1e-9,
+    weights: np.ndarray | None = None,
 ) -> np.ndarray:
     """Least-squares fit of ring shapes (Eq. 5) with fixed elements (Eq. 6).
 
@@ -49,6 +50,9 @@ def relax_positions(
         Weight of a tiny pull towards the current positions, so that a group of free
         points joined to no fixed one still has a unique minimiser (Eq. 5 alone is
         translation invariant).
+    weights : (m,) float, optional
+        A weight per term (Eq. 5 weighs all alike; :mod:`strew.grow._flow_holes` holds
+        some pairs harder than others). None: all 1.
 
     Returns
     -------
@@ -80,14 +84,23 @@ def relax_positions(
     both = fd & fs
     rows = np.concatenate([cd[fd], cs[fs], cd[both], cs[both], np.arange(nf)])
     cols = np.concatenate([cd[fd], cs[fs], cs[both], cd[both], np.arange(nf)])
-    vals = np.concatenate([np.ones(int(fd.sum()) + int(fs.sum())), -np.ones(2 * int(both.sum())), np.full(nf, regularization)])
     b = regularization * pos[free]
     d_only = fd & ~fs
     s_only = fs & ~fd
-    np.add.at(b, cd[fd], off[fd])
-    np.add.at(b, cd[d_only], pos[src[d_only]])
-    np.add.at(b, cs[fs], -off[fs])
-    np.add.at(b, cs[s_only], pos[dst[s_only]])
+    if weights is None:
+        vals = np.concatenate([np.ones(int(fd.sum()) + int(fs.sum())), -np.ones(2 * int(both.sum())), np.full(nf, regularization)])
+        np.add.at(b, cd[fd], off[fd])
+        np.add.at(b, cd[d_only], pos[src[d_only]])
+        np.add.at(b, cs[fs], -off[fs])
+        np.add.at(b, cs[s_only], pos[dst[s_only]])
+    else:
+        w = np.asarray(weights, dtype=float)
+        vals = np.concatenate([w[fd], w[fs], -w[both], -w[both], np.full(nf, regularization)])
+        wc = w[:, None]
+        np.add.at(b, cd[fd], (wc * off)[fd])
+        np.add.at(b, cd[d_only], (wc * pos[src])[d_only])
+        np.add.at(b, cs[fs], -(wc * off)[fs])
+        np.add.at(b, cs[s_only], (wc * pos[dst])[s_only])
     if nf <= DENSE_MAX:
         # small windows (the growth's windowed relaxation): a dense solve is far cheaper
         # than assembling a sparse matrix; the system is the same

@@ -1,0 +1,317 @@
+"""Flow mode: the last holes of a bent lattice, closed by relaxing the ring around
+them and then placing an element (issue 14 point 2).
+
+Not in the paper. The holes left after :func:`strew.grow._flow_gaps.fill_holes` are
+rings of five elements around an empty circle of 0.76-0.85 spacings radius (a perfect
+hexagonal lattice: 0.58): a site whose seed died because its element overlapped the
+ring. ``fill_holes`` pushes the ring out radially, by a fixed profile, and is refused
+where the pushed outlines would overlap the next shell (``benchmarks/grow.py
+--structure``). Here the push is spread by the relaxation of §5.5 instead: a new
+object at the hole's centre is joined to the ring with target offsets of one mean edge
+(``flow_hole_weight`` times the weight of the other terms), every other pair of
+elements of the window keeps its present offset, the elements beyond the window are
+held (Eq. 6), and the least-squares fit of Eq. 5 (:func:`strew.grow._relax.relax_positions`)
+moves the window. The new object is then matched (§5.2) and placed (§5.4) as any seed.
+Unless every moved outline stays inside the region, off every other and off the new
+element, and the placement succeeds, all of it is undone.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import shapely
+
+from ._flow_gaps import _circumcircles, _seg_dist, reference_gap
+from ._objects import ELEMENT
+from ._relax import relax_positions
+
+__all__ = ["close_holes"]
+
+
+def close_holes(g, limit: int | None = None) -> int:
+    """An element put into each hole (empty circle wider than ``flow_hole_min`` mean
+    edges) where relaxing the elements around it makes room, else the ring pulled in
+    until the hole is narrower than that; how many holes closed. With ``limit``, no
+    hole is filled once there are that many elements."""
+    from .._kernels.geometry import circumcircles
+
+    p = g.p
+    cc = _circumcircles(g)
+    if cc is None:
+        return 0
+    _, pts, tri, _, r = cc
+    s = tri.simplices
+    a, b, c = (pts[s[:, q]] for q in range(3))
+    cen, _, ok = circumcircles(a, b, c)
+    ux, uy = np.full(len(s), np.nan), np.full(len(s), np.nan)
+    ux[ok], uy[ok] = cen[:, 0], cen[:, 1]
+    lo = max(p.flow_hole_min * g.l, 1.1 * reference_gap(g))
+    sel = np.flatnonzero(ok & (r > lo) & (r < 1.5 * g.l))
+    sel = sel[np.argsort(-r[sel], kind="stable")]
+    made = 0
+    done: list[tuple[float, float]] = []
+    tried: list[tuple[float, float]] = []
+    for q in sel.tolist():
+        cx, cy = float(ux[q]), float(uy[q])
+        if any((cx - x) ** 2 + (cy - y) ** 2 < (1.5 * g.l) ** 2 for x, y in done):
+            continue
+        # (one try per hole: its other triangles' centres lie within half an edge)
+        if any((cx - x) ** 2 + (cy - y) ** 2 < (0.5 * g.l) ** 2 for x, y in tried):
+            continue
+        tried.append((cx, cy))
+        if limit is not None and len(g.order) >= limit:
+            break
+        # the empty circle may have shrunk since (an earlier hole's window moved it)
+        near = g.near(cx, cy, lo, (ELEMENT,))
+        if near or not g.in_domain(cx, cy):
+            continue
+        if _close_one(g, cx, cy):
+            made += 1
+            done.append((cx, cy))
+    return made
+
+
+def _close_one(g, cx: float, cy: float) -> bool:
+    """Fill the hole at (cx, cy) with an element, else shrink it; True when done."""
+    L = g.l
+    ring = sorted(o for o in g.near(cx, cy, 1.3 * L, (ELEMENT,)) if g.orig_of[o] == o)
+    # (a hole is enclosed: a gap at the region's edge, with three elements on one side,
+    # is the edge's and left to it)
+    if len(ring) < 4 or not _encloses(g, cx, cy, ring):
+        return False
+    if g.boundary is not None and any(g.crosses_boundary((cx, cy), g.xy[o]) for o in ring):
+        return False
+    return _fill(g, cx, cy, ring) or _shrink(g, cx, cy, ring)
+
+
+def _encloses(g, cx: float, cy: float, ring: list[int]) -> bool:
+    """Do the ring's elements surround (cx, cy), no angular gap over 150 degrees?"""
+    ang = sorted(math.atan2(g.xy[o][1] - cy, g.xy[o][0] - cx) for o in ring)
+    gaps = [b - a for a, b in zip(ang, ang[1:])] + [ang[0] + 2 * math.pi - ang[-1]]
+    return max(gaps) < math.radians(150.0)
+
+
+def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, centre_free: bool):
+    """Relax the window around (cx, cy) (Eq. 5) with the ring pulled to ``reach`` from
+    an object at the centre (free, or held there); the elements are moved and the
+    centre's fitted position returned, or None (nothing moved) when the moved outlines
+    cannot be kept inside the region and off each other. Returns (centre, undo)."""
+    p = g.p
+    L = g.l
+    from scipy.spatial import cKDTree
+
+    win_r = p.flow_hole_window * L
+    window = sorted(o for o in g.near(cx, cy, win_r, (ELEMENT,)) if g.orig_of[o] == o and not g.fixed[o])
+    wset = set(window)
+    anchors = sorted(o for o in g.near(cx, cy, win_r + 1.5 * L, (ELEMENT,)) if g.orig_of[o] == o and o not in wset)
+    nodes = window + anchors
+    local = {o: i for i, o in enumerate(nodes)}
+    k0 = len(nodes)  # the centre's row
+    pos = np.vstack([g.pos[nodes], [[cx, cy]]])
+    free = np.zeros(k0 + 1, dtype=bool)
+    free[: len(window)] = True
+    free[k0] = centre_free
+    # Eq. 5's terms over the window: every two elements under 1.35 mean edges apart
+    # keep their present offset; the centre wants each ring element ``reach`` away,
+    # ``flow_hole_weight`` times as hard
+    pairs = cKDTree(pos[:k0]).query_pairs(1.35 * L, output_type="ndarray")
+    pairs = pairs[free[pairs[:, 0]] | free[pairs[:, 1]]]
+    ri = np.array([local[o] for o in ring if o in local], dtype=np.intp)
+    d = pos[ri] - pos[k0]
+    n = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-300)
+    src = np.r_[pairs[:, 0], np.full(len(ri), k0)]
+    dst = np.r_[pairs[:, 1], ri]
+    off = np.r_[pos[pairs[:, 1]] - pos[pairs[:, 0]], d / n[:, None] * reach]
+    w = np.r_[np.ones(len(pairs)), np.full(len(ri), float(p.flow_hole_weight))]
+    pair_at = {(int(a), int(b)): q for q, (a, b) in enumerate(pairs.tolist())}
+    tiny = 1e-9 * L
+    old = {o: (g.xy[o][0], g.xy[o][1], g.geom[o], float(g.rot[o])) for o in window}
+
+    def undo() -> None:
+        for o in window:
+            x, y, geom, rot = old[o]
+            if g.xy[o] != (x, y):
+                g._move(o, x, y)
+            g.geom[o] = geom
+            g.rot[o] = rot
+
+    # two elements that the fit brings into contact, unless a turn frees them, are
+    # held at their present offset, ``flow_hole_weight`` times as hard, and the fit is
+    # made again
+    for _ in range(p.flow_hole_rounds):
+        new = relax_positions(pos, src, dst, off, free, weights=w)
+        moves: dict[int, tuple[float, float]] = {}
+        for o in window:
+            nx, ny = (float(v) for v in new[local[o]])
+            ox, oy = old[o][:2]
+            if abs(nx - ox) + abs(ny - oy) > tiny:
+                moves[o] = (nx, ny)
+        for o, (x, y) in moves.items():
+            if not g.in_domain(x, y) or (g.boundary is not None and g.crosses_boundary(old[o][:2], (x, y))):
+                return None, undo
+        for o, (x, y) in moves.items():
+            g._move(o, x, y)
+            g.geom[o] = g.element_geometry(int(g.kind[o]), x, y, float(g.rot[o]), float(g.scl[o]))
+        if not all(g.fits_domain(g.geom[o]) for o in moves):
+            undo()
+            return None, undo
+        hits = {o: g.overlapping(o) for o in moves}
+        if any(hits.values()) and p.flow_hole_turn > 0:
+            _turn_free(g, hits, float(p.flow_hole_turn))
+            hits = {o: g.overlapping(o) for o in moves}
+        if not any(hits.values()):
+            return (float(new[k0, 0]), float(new[k0, 1])), undo
+        undo()
+        for o, hs in hits.items():
+            for h in hs:
+                h = g.orig_of[h]
+                q = pair_at.get(tuple(sorted((local[o], local[h])))) if h in local else None
+                if q is None:
+                    return None, undo
+                w[q] *= float(p.flow_hole_weight)
+    return None, undo
+
+
+def _turn_free(g, hits: dict, turn: float) -> None:
+    """Turn each overlapping element by the least of a few angles up to ``turn`` that
+    frees it (a hexagon's corner turned from its neighbour's)."""
+    steps = [k * turn / 3 for k in range(1, 4)]
+    for o in sorted(hits):
+        if not g.overlapping(o):
+            continue
+        x, y = g.xy[o]
+        r0 = float(g.rot[o])
+        g0 = g.geom[o]
+        for d in steps:
+            done = False
+            for sgn in (1.0, -1.0):
+                g.rot[o] = r0 + sgn * d
+                g.geom[o] = g.element_geometry(int(g.kind[o]), x, y, float(g.rot[o]), float(g.scl[o]))
+                if not g.overlapping(o) and g.fits_domain(g.geom[o]):
+                    done = True
+                    break
+            if done:
+                break
+        else:
+            g.rot[o] = r0
+            g.geom[o] = g0
+
+
+def _turn_ring(g, t: int, a: int, th: float, ring: list[int], turn: float) -> bool:
+    """Turn the ring elements that the outline of reference ``a`` at seed ``t`` (at its
+    fitted place, where ``place`` left it) would overlap, each by the least of a few
+    angles up to ``turn`` that frees it; True when all are freed (else none turns)."""
+    r = int(g.ref_ids[a])
+    kind = int(g.ex_kind[r])
+    x, y = g.xy[t]
+    G = g.element_geometry(kind, x, y, float(g.ex_rot[r]) + th, float(g.ex_scale[r]))
+
+    def meets(geom) -> bool:
+        return bool(shapely.intersects(G, geom)) and shapely.intersection(G, geom).area > 1e-9 * max(G.area, 1e-300)
+
+    hit = [o for o in ring if meets(g.geom[o])]
+    if not hit:
+        return False
+    steps = [k * turn / 3 for k in range(1, 4)]
+    old = {o: (float(g.rot[o]), g.geom[o]) for o in hit}
+    for o in hit:
+        ox, oy = g.xy[o]
+        for d in steps:
+            ok = False
+            for sgn in (1.0, -1.0):
+                g.rot[o] = old[o][0] + sgn * d
+                g.geom[o] = g.element_geometry(int(g.kind[o]), ox, oy, float(g.rot[o]), float(g.scl[o]))
+                if not meets(g.geom[o]) and not g.overlapping(o) and g.fits_domain(g.geom[o]):
+                    ok = True
+                    break
+            if ok:
+                break
+        else:
+            for q, (rot, geom) in old.items():
+                g.rot[q] = rot
+                g.geom[q] = geom
+            return False
+    return True
+
+
+def _fill(g, cx: float, cy: float, ring: list[int]) -> bool:
+    L = g.l
+    c, undo = _relax_around(g, cx, cy, ring, L, True)
+    if c is None:
+        return False
+    sx, sy = c
+    if not g.in_domain(sx, sy):
+        undo()
+        return False
+    # edges across the hole go; the new object is joined to the ring around it
+    removed = []
+    rset = set(ring)
+    for i in ring:
+        for j in list(g.adj[i]):
+            if j in rset and i < j and _seg_dist(g.xy[i], g.xy[j], (sx, sy)) < 0.5 * L:
+                g.remove_edge(i, j)
+                removed.append((i, j))
+    kinds = [int(g.kind[o]) for o in ring]
+    t = g.new_object(sx, sy, max(sorted(set(kinds)), key=kinds.count))
+    for o in ring:
+        if not g.crosses_edges(t, (sx, sy), o, g.xy[o]):
+            g.add_edge(t, o)
+    g._out_of_domain = False
+    pick = g.choose(t)
+    if pick is not None:
+        # the chosen frame first, then turned by up to ``flow_hole_turn`` (its ring's
+        # slots all merge with the ring around the hole: only the outline turns)
+        a, k, th = pick
+        turn = float(g.p.flow_hole_turn)
+        # (then at the relaxed centre: the fit of §5.4 to a reference ring of six pulls
+        # the seed towards one side of a ring of five)
+        stay = 1e-12 * L
+        turns = [0.0] + [sgn * q * turn / 3 for q in range(1, 4) for sgn in (1.0, -1.0)]
+        for d, reach in [(0.0, None)] + [(d, stay) for d in turns]:
+            if g.xy[t] != (sx, sy):
+                g._move(t, sx, sy)
+            if g.place(t, a, k, th + d, reach=reach):
+                return True
+        # then the ring elements its outline meets turned out of its way (as above)
+        if turn > 0:
+            was = {o: (float(g.rot[o]), g.geom[o]) for o in ring}
+            for d in turns:
+                if g.xy[t] != (sx, sy):
+                    g._move(t, sx, sy)
+                if _turn_ring(g, t, a, th + d, ring, turn):
+                    if g.place(t, a, k, th + d, reach=stay):
+                        return True
+                    for o, (rot, geom) in was.items():
+                        g.rot[o] = rot
+                        g.geom[o] = geom
+    g.kill(t)
+    for i, j in removed:
+        g.add_edge(i, j)
+    undo()
+    return False
+
+
+def _shrink(g, cx: float, cy: float, ring: list[int]) -> bool:
+    """The ring pulled in until the hole's empty circle is narrower than
+    ``flow_hole_min`` mean edges (the site becomes a defect of the lattice, not a hole)."""
+    p = g.p
+    L = g.l
+    lo = p.flow_hole_min * L
+    c, undo = _relax_around(g, cx, cy, ring, p.flow_hole_shrink * L, False)
+    if c is None:
+        return False
+    # the widest empty circle left near the hole, on a grid of 0.05 mean edges
+    from scipy.spatial import cKDTree
+
+    near = [o for o in g.near(cx, cy, 2.5 * L, (ELEMENT,))]
+    pts = np.asarray([g.xy[o] for o in near])
+    t = np.arange(-L, L + 1e-9, 0.05 * L)
+    gx, gy = np.meshgrid(cx + t, cy + t)
+    q = np.c_[gx.ravel(), gy.ravel()]
+    q = q[np.hypot(q[:, 0] - cx, q[:, 1] - cy) <= L]
+    if float(cKDTree(pts).query(q)[0].max()) < lo:
+        return True
+    undo()
+    return False
