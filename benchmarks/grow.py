@@ -13,7 +13,9 @@ four neighbours at the row spacing.
 
 Run: ``python benchmarks/grow.py`` (``--quick``: 1,000 and 2,000 elements, one run each).
 ``--against REV`` times only the growth of 2,000 elements (``--quick``: 1,000), with and
-without relaxation, of this tree and of the tree at git revision ``REV`` (extracted with
+without relaxation, and a flow-mode growth that fills a region 30 x 20 spacings (the
+hexagonal lattice along a field turning 90 degrees, with the passes after the growth;
+``hexflow``), of this tree and of the tree at git revision ``REV`` (extracted with
 ``git archive``), each in fresh processes taken in turn, and prints elements per CPU
 second and the CPU ratio this/REV (the best of ``--repeat`` runs each; the machine may be
 shared, so only the ratios of one run compare).
@@ -420,13 +422,26 @@ def hex_share(xy, spacing: float, inner) -> float:
 
 _AGAINST_CODE = r"""
 import sys, time
+import numpy as np
+from strew import Region
 from strew.grow import analyze, grow
 from strew.grow._exemplars import hex_exemplar, stone_exemplar, tile_exemplar
-ex = {"stones": stone_exemplar, "tiles": tile_exemplar, "hex": hex_exemplar}[sys.argv[1]]()
+name = sys.argv[1]
+ex = {"stones": stone_exemplar, "tiles": tile_exemplar, "hex": hex_exemplar, "hexflow": hex_exemplar}[name]()
 ref = analyze(ex)
 grow(ref, count=50, rng=1)  # kernels compiled or loaded outside the timing
+kw = dict(count=int(sys.argv[2]))
+if name == "hexflow":
+    # flow mode filling a region 30 x 20 spacings along a field turning 90 degrees
+    # (benchmarks/grow.py --structure), with the passes after the growth
+    sp = ref.mean_edge
+    w = 30 * sp
+    def field(p):
+        a = np.radians(90.0) * np.clip(np.asarray(p)[:, 0] / w, 0, 1)
+        return np.c_[np.cos(a), np.sin(a)]
+    kw = dict(region=Region.rectangle(w, 20 * sp), mode="flow", flow=field)
 c = time.process_time()
-out = grow(ref, count=int(sys.argv[2]), rng=1, relax=sys.argv[3] == "1")
+out = grow(ref, rng=1, relax=sys.argv[3] == "1", **kw)
 print(time.process_time() - c, len(out))
 """
 
@@ -444,7 +459,7 @@ def against(rev: str, n: int, repeat: int, json_path, src: str | None = None) ->
         archive = subprocess.run(["git", "archive", sha, "src"], cwd=root, capture_output=True, check=True).stdout
         subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
         trees = {"this": str(Path(src).resolve() if src else root / "src"), "base": str(Path(tmp) / "src")}
-        for name in ("stones", "tiles", "hex"):
+        for name in ("stones", "tiles", "hex", "hexflow"):
             for relax in ("1", "0"):
                 cpu: dict[str, list[float]] = {k: [] for k in trees}
                 for _ in range(max(1, repeat)):

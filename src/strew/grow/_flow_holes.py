@@ -6,14 +6,27 @@ rings of five elements around an empty circle of 0.76-0.85 spacings radius (a pe
 hexagonal lattice: 0.58): a site whose seed died because its element overlapped the
 ring. ``fill_holes`` pushes the ring out radially, by a fixed profile, and is refused
 where the pushed outlines would overlap the next shell (``benchmarks/grow.py
---structure``). Here the push is spread by the relaxation of §5.5 instead: a new
-object at the hole's centre is joined to the ring with target offsets of one mean edge
-(``flow_hole_weight`` times the weight of the other terms), every other pair of
-elements of the window keeps its present offset, the elements beyond the window are
-held (Eq. 6), and the least-squares fit of Eq. 5 (:func:`strew.grow._relax.relax_positions`)
-moves the window. The new object is then matched (§5.2) and placed (§5.4) as any seed.
-Unless every moved outline stays inside the region, off every other and off the new
-element, and the placement succeeds, all of it is undone.
+--structure``). Here the push is spread by the relaxation of §5.5 instead, after the
+last relaxation window (so that nothing pulls the ring back):
+
+- a free object at the hole's centre wants each ring element one mean edge away,
+  ``flow_hole_weight`` times as hard as every other pair of the window (elements
+  within ``flow_hole_window`` mean edges, under 1.35 mean edges apart) keeps its
+  present offset; the elements beyond are held (Eq. 6), and Eq. 5 is solved
+  (:func:`strew.grow._relax.relax_positions` with weights);
+- two elements whose outlines the fit makes meet are first turned apart (each by the
+  least of a few angles up to ``flow_hole_turn``); a pair still meeting is held at
+  its offset ``flow_hole_weight`` times harder and the fit is made again, up to
+  ``flow_hole_rounds`` times;
+- the centre is matched (§5.2) and placed (§5.4) as any seed, first with the fit of
+  its position, then at the relaxed centre and turned by up to ``flow_hole_turn``,
+  then with the ring elements its outline meets turned out of its way.
+
+Departs from §5.3 (each element's frame at the field's direction, here within
+``flow_max_turn``): an element moved here may turn by up to ``flow_hole_turn``
+(30 degrees: a hexagon's corner turned from a neighbour's); with no turn, 4 of the 6
+holes of the structure cases stayed (with it, 2). Unless every moved outline stays inside the
+region and off every other, and the placement succeeds, all of it is undone.
 """
 
 from __future__ import annotations
@@ -32,9 +45,8 @@ __all__ = ["close_holes"]
 
 def close_holes(g, limit: int | None = None) -> int:
     """An element put into each hole (empty circle wider than ``flow_hole_min`` mean
-    edges) where relaxing the elements around it makes room, else the ring pulled in
-    until the hole is narrower than that; how many holes closed. With ``limit``, no
-    hole is filled once there are that many elements."""
+    edges) where relaxing the elements around it makes room; how many. With ``limit``,
+    no hole is filled once there are that many elements."""
     from .._kernels.geometry import circumcircles
 
     p = g.p
@@ -74,7 +86,7 @@ def close_holes(g, limit: int | None = None) -> int:
 
 
 def _close_one(g, cx: float, cy: float) -> bool:
-    """Fill the hole at (cx, cy) with an element, else shrink it; True when done."""
+    """Fill the hole at (cx, cy) with an element; True when done."""
     L = g.l
     ring = sorted(o for o in g.near(cx, cy, 1.3 * L, (ELEMENT,)) if g.orig_of[o] == o)
     # (a hole is enclosed: a gap at the region's edge, with three elements on one side,
@@ -83,7 +95,7 @@ def _close_one(g, cx: float, cy: float) -> bool:
         return False
     if g.boundary is not None and any(g.crosses_boundary((cx, cy), g.xy[o]) for o in ring):
         return False
-    return _fill(g, cx, cy, ring) or _shrink(g, cx, cy, ring)
+    return _fill(g, cx, cy, ring)
 
 
 def _encloses(g, cx: float, cy: float, ring: list[int]) -> bool:
@@ -93,11 +105,11 @@ def _encloses(g, cx: float, cy: float, ring: list[int]) -> bool:
     return max(gaps) < math.radians(150.0)
 
 
-def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, centre_free: bool):
+def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float):
     """Relax the window around (cx, cy) (Eq. 5) with the ring pulled to ``reach`` from
-    an object at the centre (free, or held there); the elements are moved and the
-    centre's fitted position returned, or None (nothing moved) when the moved outlines
-    cannot be kept inside the region and off each other. Returns (centre, undo)."""
+    a free object at the centre; the elements are moved and the centre's fitted
+    position returned, or None (nothing moved) when the moved outlines cannot be kept
+    inside the region and off each other. Returns (centre, undo)."""
     p = g.p
     L = g.l
     from scipy.spatial import cKDTree
@@ -112,7 +124,7 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, centre
     pos = np.vstack([g.pos[nodes], [[cx, cy]]])
     free = np.zeros(k0 + 1, dtype=bool)
     free[: len(window)] = True
-    free[k0] = centre_free
+    free[k0] = True
     # Eq. 5's terms over the window: every two elements under 1.35 mean edges apart
     # keep their present offset; the centre wants each ring element ``reach`` away,
     # ``flow_hole_weight`` times as hard
@@ -238,7 +250,7 @@ def _turn_ring(g, t: int, a: int, th: float, ring: list[int], turn: float) -> bo
 
 def _fill(g, cx: float, cy: float, ring: list[int]) -> bool:
     L = g.l
-    c, undo = _relax_around(g, cx, cy, ring, L, True)
+    c, undo = _relax_around(g, cx, cy, ring, L)
     if c is None:
         return False
     sx, sy = c
@@ -289,29 +301,5 @@ def _fill(g, cx: float, cy: float, ring: list[int]) -> bool:
     g.kill(t)
     for i, j in removed:
         g.add_edge(i, j)
-    undo()
-    return False
-
-
-def _shrink(g, cx: float, cy: float, ring: list[int]) -> bool:
-    """The ring pulled in until the hole's empty circle is narrower than
-    ``flow_hole_min`` mean edges (the site becomes a defect of the lattice, not a hole)."""
-    p = g.p
-    L = g.l
-    lo = p.flow_hole_min * L
-    c, undo = _relax_around(g, cx, cy, ring, p.flow_hole_shrink * L, False)
-    if c is None:
-        return False
-    # the widest empty circle left near the hole, on a grid of 0.05 mean edges
-    from scipy.spatial import cKDTree
-
-    near = [o for o in g.near(cx, cy, 2.5 * L, (ELEMENT,))]
-    pts = np.asarray([g.xy[o] for o in near])
-    t = np.arange(-L, L + 1e-9, 0.05 * L)
-    gx, gy = np.meshgrid(cx + t, cy + t)
-    q = np.c_[gx.ravel(), gy.ravel()]
-    q = q[np.hypot(q[:, 0] - cx, q[:, 1] - cy) <= L]
-    if float(cKDTree(pts).query(q)[0].max()) < lo:
-        return True
     undo()
     return False

@@ -150,14 +150,12 @@ class GrowParams:
     #: gets an element, the elements within ``flow_hole_window`` mean edges relaxed
     #: (§5.5) to make room, the new element's ring pulled ``flow_hole_weight`` times as
     #: hard as the other offsets are kept, in up to ``flow_hole_rounds`` fits, elements
-    #: turned by up to ``flow_hole_turn`` to clear a contact; where no element fits,
-    #: the ring is pulled towards ``flow_hole_shrink`` mean edges from the centre
+    #: turned by up to ``flow_hole_turn`` to clear a contact
     #: (:func:`strew.grow._flow_holes.close_holes`); None: not
     flow_hole_min: float | None = 0.74
     flow_hole_window: float = 2.5
     flow_hole_weight: float = 10.0
     flow_hole_rounds: int = 4
-    flow_hole_shrink: float = 0.6
     flow_hole_turn: float = math.pi / 6
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
