@@ -639,9 +639,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # flow mode: the holes left, closed after the last relaxation (nothing moves
             # them back); draws from the side stream as above
             main, self.rng = self.rng, side_stream(self.rng)
-            for _ in range(p.refill_rounds):
-                if len(self.order) >= target or not close_holes(self, target):
-                    break
+            if len(self.order) < target:
+                close_holes(self, target)
             self.rng = main
 
     def refill(self) -> int:
