@@ -554,8 +554,10 @@ def _ramp(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     """(n,) bool: the elements a pack tile keeps near its later neighbours.
 
     An element whose centre lies at distance ``d`` from the nearest later tile's
-    rectangle is dropped with probability ``(1 - min(1, d / halo)) * (a_min / a) ** 0.5``
-    (``a``: its area, ``a_min``: the smallest area among the tile's elements of its kind; the draws come from
+    rectangle is dropped with probability ``(1 - min(1, d / halo)) * (a_min / a) ** 0.5
+    * (c / c_max) ** 0.25`` (``a``: its area, ``a_min``: the smallest area among the
+    tile's elements of its kind, ``c``: its kind's compactness, the shape's area over
+    its circumscribed disc's, ``c_max``: the most compact kind's of the tile; the draws come from
     the tile's second stream, ``SeedSequence(seed, spawn_key=(index, 1))``); those in a
     later tile are dropped, as before. The later tile refills the holes.
 
@@ -574,15 +576,24 @@ def _ramp(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     ratio (exponent 1 overshot: bars' share 1.04 in two tiles): +-1 s 1.007 and 1.003,
     +-2 s 1.005 and 1.011, every kind's share within 1.3 % (bars, the stones' three).
 
-    ``a_min`` is taken within each kind (issue 19.4, after the later tile came to keep on
-    a finished side only what fills its holes, :func:`_in_holes`): with the tile's
-    smallest element over all kinds, the stones' crescents (the smallest kind, 382 units
-    of area against the ring's 460 and the hook's 620) were dropped most, and their
-    holes refilled with rings about as often as with crescents: within 1 s of a border
-    crescents 0.970 [0.956, 0.986] of the interior's share, rings 1.016 (seeds 1-4,
-    python benchmarks/pack_seam_kinds.py); per kind 1.001 and 1.014, hooks 0.982, every
-    kind within 1.1 % at +-2 s. Within a kind (a range of scales: the demo's trees,
-    0.2-1.0) the weight is as before.
+    Across kinds the weight is the compactness, not the area (issue 19.4, after the
+    later tile came to keep on a finished side only what fills its holes,
+    :func:`_in_holes`). With the tile's smallest element over all kinds, the stones'
+    crescents (the smallest kind, 382 units of area against the ring's 460 and the
+    hook's 620) were dropped most, and the later tile refilled every kind's holes with
+    too many rings, the most compact kind (refilled / dropped: rings 1.06, hooks 0.95,
+    crescents 0.97): within 1 s of a border crescents 0.970 [0.956, 0.986] of the
+    interior's share, rings 1.016, hooks 1.016 (7200^2 in tiles of 900, seeds 1-4,
+    python benchmarks/pack_seam_kinds.py). The area within each kind and no weight
+    across kinds: crescents 1.001, rings 1.014, hooks 0.982 [0.966, 0.998], but bars
+    and discs (bars half again as large, and less compact) lost their bars, 0.995 ->
+    0.977 [0.965, 0.988] (benchmarks/worlds_strips.py --methods pack, seeds 1-4): a
+    compact kind refills any kind's hole, so it is dropped more. With the compactness
+    to the power 1/4 (bars 0.85 of the discs' weight, 0.82 by area before; the stones'
+    hooks 0.875, crescents 0.89, rings 1): +-1 s rings 0.987, hooks 1.011, crescents
+    1.005, +-2 s 0.994, 0.996, 1.010, density 0.990 and 0.999; bars 1.011 [0.999,
+    1.023], discs 0.991, density 1.000 (+-2 s 0.999, 1.001, 1.003). Within a kind (a
+    range of scales: the demo's trees, 0.2-1.0) the weight is the area's, as before.
     Sakurai & Miyata pack one region in one run; this hand-over between runs is ours.
     """
     later = _later_rects(t, job)
@@ -599,16 +610,22 @@ def _ramp(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     sc = np.abs(np.asarray(arr.scale, float).reshape(len(arr), -1))
     area = np.array([float(arr.shapes[k].area) for k in arr.kinds])[np.asarray(arr.kind, np.int64)] * sc[:, 0] * sc[:, -1]
     # a_min per kind (issue 19.4): across kinds the area ratio dropped the smallest kind
-    # most, whose holes the later tile refilled with other kinds (see the docstring)
+    # most, whose holes the later tile refilled with the compact kinds (the docstring)
     k = np.asarray(arr.kind, np.int64)
     amin = np.full(len(arr.kinds), np.inf)
     np.minimum.at(amin, k, area)
     w = (amin[k] / np.maximum(area, 1e-300)) ** _RAMP_SIZE_EXPONENT
+    # across kinds, by compactness (area / circumscribed disc's): a compact kind
+    # refills any kind's hole, so it is dropped more (see the docstring)
+    c = np.array([float(arr.shapes[n].area) / (math.pi * float(arr.shapes[n].radius) ** 2) for n in arr.kinds])
+    w = w * (c[k] / np.max(c[np.unique(k)])) ** _RAMP_COMPACT_EXPONENT
     return u >= (1.0 - np.minimum(d / job.halo, 1.0)) * w
 
 
 # the exponent of the area ratio in _ramp's drop probability
 _RAMP_SIZE_EXPONENT = 0.5
+# the exponent of the kinds' compactness ratio in _ramp's drop probability
+_RAMP_COMPACT_EXPONENT = 0.25
 
 
 def _hole_discs(arr: Any, dropped: np.ndarray) -> np.ndarray:
