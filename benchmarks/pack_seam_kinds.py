@@ -24,8 +24,20 @@ smallest kind, weight 1 against the ring's 0.91 and the hook's 0.78): just befor
 border (-0.5 s .. 0) it kept 926 crescents, 1,100 rings and 1,124 hooks, and the later
 tile refilled 2,035 crescents, 2,144 rings, 1,528 hooks into the holes of 2,599, 2,417
 and 1,732 dropped ones: crescent holes went to rings. With the ramp's area weight taken
-within each kind (``_ramp``): crescents 1.001 [0.987, 1.014], rings 1.014, hooks 0.982
-[0.966, 0.998]; +-2 s 1.004, 1.005, 0.989; density +-1 s 0.990 (was 0.989).
+within each kind (``_ramp``, h/pack19 1f276a8): crescents 1.001 [0.987, 1.014], rings
+1.014, hooks 0.982 [0.966, 0.998]; +-2 s 1.004, 1.005, 0.989; density +-1 s 0.990 (was
+0.989); but bars and discs' bars 0.977 (worlds_strips.py --methods pack, seeds 1-4).
+Weighing the kinds by their compactness ** 0.25 instead (47c34a9): rings 0.987
+[0.971, 1.002], hooks 1.011 [0.992, 1.029], crescents 1.005 [0.989, 1.020]; +-2 s
+0.994, 0.996, 1.010; density 0.990 / 0.999 (refilled / dropped: rings 1.05, hooks
+0.96, crescents 0.98: the refill still favours the compact ring).
+
+Trees (``--input trees --side 2400``, tiles 300, about 200 CPU s a seed; one seed is
+about +-3 % per kind): 7c83aee seed 1 (benchmarks/pack_seam_trees.py) +-1 s density
+1.012, oaks 1.033, pines 0.962 [0.929, 0.998]; seed 2 density 1.046 [1.026, 1.066],
+oaks 1.006, pines 0.993 [0.960, 1.028], +-2 s 1.017 / 1.001 / 0.998. 47c34a9 seed 1:
++-1 s 1.019 [0.996, 1.043], oaks 1.014, pines 0.984 [0.949, 1.014]; +-2 s 0.981, 1.010,
+0.988. The refill takes oaks over pines (refilled 0.58 oaks against 0.55 dropped).
 
 Run: ``python benchmarks/pack_seam_kinds.py [--seeds 1,2,3,4] [--input stones|trees] [--side 7200]
 [--untiled] [--tag T] [--set NAME=VALUE]``; writes ``benchmarks/results/pack_seam_kinds_<input>[_untiled]<tag>.json``.
