@@ -37,7 +37,9 @@ about +-3 % per kind): 7c83aee seed 1 (benchmarks/pack_seam_trees.py) +-1 s dens
 1.012, oaks 1.033, pines 0.962 [0.929, 0.998]; seed 2 density 1.046 [1.026, 1.066],
 oaks 1.006, pines 0.993 [0.960, 1.028], +-2 s 1.017 / 1.001 / 0.998. 47c34a9 seed 1:
 +-1 s 1.019 [0.996, 1.043], oaks 1.014, pines 0.984 [0.949, 1.014]; +-2 s 0.981, 1.010,
-0.988. The refill takes oaks over pines (refilled 0.58 oaks against 0.55 dropped).
+0.988; seed 2: +-1 s 1.048 [1.027, 1.071], oaks 1.016, pines 0.981 [0.953, 1.011]; +-2 s
+1.012, 1.020, 0.976 [0.955, 0.997]. The refill takes oaks over pines (refilled 0.58 oaks
+against 0.55 dropped), and the +-1 s density of seed 2 is 1.05 either way (not met).
 
 Run: ``python benchmarks/pack_seam_kinds.py [--seeds 1,2,3,4] [--input stones|trees] [--side 7200]
 [--untiled] [--tag T] [--set NAME=VALUE]``; writes ``benchmarks/results/pack_seam_kinds_<input>[_untiled]<tag>.json``.
