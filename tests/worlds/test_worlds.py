@@ -76,17 +76,25 @@ def test_no_overlaps_across_borders_and_all_inside(worlds):
 
 
 def test_border_strips_match_the_interior(worlds):
-    # measured: strips of half-width halo along the inner tile borders hold 0.985x the
-    # interior's density (seed 3; seeds 3-6: 0.985-1.032, mean 1.012; an untiled pack
-    # of the same world on the same lines: 0.980-1.000, mean 0.992). Before the
+    # Strips of half-width halo along the inner tile borders against the interior, pooled
+    # over the fixture's world (seed 3) and two more seeds: one 150 x 120 world is too
+    # small for a 3% verdict on its own (seeds 3-22 at 7c83aee: density sd 0.017, 1 of
+    # 20 below 0.97; with pack's compactness-weighted ramp, 2 of 20, mean 0.989 against
+    # 0.992). Pooled seeds 3-5: 0.989 at 7c83aee, 0.980 with the ramp. Before the
     # keep-rule of run_tile (a tile keeps what it places in finished neighbours): 0.948x.
     _, (arr, info), _ = worlds
     halo = info.meta["world"]["halo"]
-    strip, inner, sa, ia = border_strips(arr, SIZE, TILE, halo, halo)
-    ratio = (strip.sum() / sa) / (inner.sum() / ia)
+    counts = np.zeros(4)
+    bars_strip, bars_inner = [], []
+    for a in (arr, *(tiled("pack", SHAPES, SIZE, tile_size=TILE, seed=s, workers=1) for s in (4, 5))):
+        strip, inner, sa, ia = border_strips(a, SIZE, TILE, halo, halo)
+        counts += (strip.sum(), sa, inner.sum(), ia)
+        bars_strip.append(a.kind[strip] == 0)
+        bars_inner.append(a.kind[inner] == 0)
+    ratio = (counts[0] / counts[1]) / (counts[2] / counts[3])
     assert 0.97 <= ratio <= 1.03, ratio
-    frac_strip = (arr.kind[strip] == 0).mean()
-    frac_inner = (arr.kind[inner] == 0).mean()
+    frac_strip = np.concatenate(bars_strip).mean()
+    frac_inner = np.concatenate(bars_inner).mean()
     assert abs(frac_strip - frac_inner) < 0.03, (frac_strip, frac_inner)
 
 
