@@ -70,6 +70,7 @@ from ._objects import (
 )
 from ._place import _Place
 from ._relax_window import _RelaxWindow
+from ._void_holes import fill_void_holes
 
 __all__ = ["GrowParams", "grow_reference"]
 
@@ -186,6 +187,10 @@ class GrowParams:
     canopy_reach: float = 1.0
     #: torus: rounds of :meth:`_Grower.refill` after the growth stops (0: none)
     refill_rounds: int = 2
+    #: fixed mode, exemplars with void kinds: after the growth, empty circles of the
+    #: visible elements wider than the exemplar's widest get a visible element in place
+    #: of their voids (:mod:`strew.grow._void_holes`); False: not
+    void_holes: bool = True
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None
@@ -620,6 +625,13 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         if self.tile is not None or self.boundary is not None:
             for _ in range(p.refill_rounds):
                 if len(self.order) >= target or not self.refill():
+                    break
+                self.advance(rep, target)
+        if self.mode_code == 0 and self.tile is None and p.void_holes and bool(self.void_kind.any()):
+            # holes of voids where visible elements belong (not in the paper; see
+            # :mod:`strew.grow._void_holes`)
+            for _ in range(p.refill_rounds):
+                if len(self.order) >= target or not fill_void_holes(self):
                     break
                 self.advance(rep, target)
         if self.mode_code == 2 and self.tile is None:
