@@ -10,7 +10,6 @@ came out 0.4-1.2 units short (``_Grower._pair_gaps``, ``small_outside``).
 from __future__ import annotations
 
 import numpy as np
-import pytest
 from scipy.spatial import cKDTree
 from strew_testing import fidelity_suite
 
@@ -32,7 +31,6 @@ def _disc_gaps(arr):
     return d - R[~stone] - R[np.flatnonzero(stone)[q]]
 
 
-@pytest.mark.slow
 def test_pebbles_stay_outside_the_stones_discs():
     ex = _exemplar()
     assert float(_disc_gaps(ex).min()) >= 0  # the property the rule is keyed on

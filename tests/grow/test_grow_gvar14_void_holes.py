@@ -11,7 +11,6 @@ element in place of the voids of each empty circle wider than the exemplar's wid
 from __future__ import annotations
 
 import numpy as np
-import pytest
 from scipy.spatial import Delaunay
 from strew_testing import fidelity_suite
 
@@ -46,7 +45,6 @@ def _visible_circles(arr, region):
     return r[inner]
 
 
-@pytest.mark.slow
 def test_no_void_hole_wider_than_the_exemplar_has():
     ex = _exemplar()
     widest = float(_visible_circles(ex, ex.region).max())
@@ -68,7 +66,6 @@ def test_no_void_hole_wider_than_the_exemplar_has():
     assert np.array_equal(again.xy, out.xy) and np.array_equal(again.kind, out.kind)
 
 
-@pytest.mark.slow
 def test_sparse_apples_among_voids_are_faithful():
     # the audit's case at 3.5 x: empty_circle 0.171 against 0.1 at 7c83aee
     ex = _exemplar()
