@@ -4,8 +4,8 @@
 A world of ``--side`` (default 2640) in tiles of 440 (two exemplar frames), synth on a
 fidelity-suite exemplar, for each seed; the centres by signed distance to the nearest
 inner border, positive into the tile of the later phase (strew.tiles' 2 x 2 colouring),
-in bins of half a spacing ``s`` (``s = 1 / sqrt(density)``), the world's edge band (the
-halo and 3 s) left out along the border. Each kind's count per bin over its mean in the
+in bins of half a spacing ``s`` (``s = 1 / sqrt(density)``), along the inner tiles'
+part of each border (``tests/worlds/world_stats.signed_profile``). Each kind's count per bin over its mean in the
 bins 4-6 s from the border on both sides; and the strips' density and kind-fraction
 ratios (centres within 1, 2, 3 s of an inner border against the rest, as
 ``worlds_strips.py`` defines them, no intervals). ``--untiled``: the same on one
@@ -34,27 +34,6 @@ TILE = 440.0
 REACH = 6.0
 
 
-def profile(arr, side: float, s: float) -> np.ndarray:
-    """(kinds + 1, bins) counts by signed distance to the nearest inner border."""
-    x, y, kind = np.asarray(arr.x), np.asarray(arr.y), np.asarray(arr.kind)
-    n = int(round(side / TILE))
-    edges = np.arange(-2 * REACH, 2 * REACH + 0.5) * 0.5 * s
-    c = np.zeros((len(arr.kinds) + 1, len(edges) - 1))
-    for v, o in ((x, y), (y, x)):
-        k = np.round(v / TILE)
-        d = v - k * TILE
-        ok = (k >= 1) & (k <= n - 1) & (np.abs(d) < edges[-1]) & (o > 110 + 3 * s) & (o < side - 110 - 3 * s)
-        oi = np.floor(o / TILE).astype(int)
-        lo, hi = (k - 1).astype(int), k.astype(int)
-        p_lo = (oi % 2) * 2 + lo % 2 if v is x else (lo % 2) * 2 + oi % 2
-        p_hi = (oi % 2) * 2 + hi % 2 if v is x else (hi % 2) * 2 + oi % 2
-        sd = np.where(p_hi > p_lo, d, -d)
-        c[0] += np.histogram(sd[ok], edges)[0]
-        for q in range(len(arr.kinds)):
-            c[q + 1] += np.histogram(sd[ok & (kind == q)], edges)[0]
-    return c
-
-
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--exemplar", default="two_sizes")
@@ -70,7 +49,7 @@ def main() -> None:
     from strew.synth import synthesize
     from strew.tiles import tiled
     from strew_testing import fidelity_suite
-    from world_stats import strip_units
+    from world_stats import signed_profile, strip_units
 
     ex = fidelity_suite().make_exemplar(args.exemplar)
     side = args.side
@@ -84,7 +63,7 @@ def main() -> None:
         cpu += time.process_time() - t0
         nel += len(arr)
         s = s or 1.0 / np.sqrt(len(arr) / side**2)
-        c = profile(arr, side, s)
+        c = signed_profile(arr, (side, side), TILE, s, REACH)["counts"].astype(float)
         tot = c if tot is None else tot + c
         for m in units:
             units[m].append(strip_units(arr, (side, side), TILE, m * s, max(110.0, 3 * s)))

@@ -82,3 +82,24 @@ def test_flow_field_from_strokes():
     assert f.angle([[50.0, 0.0]])[0] == pytest.approx(0.0, abs=1e-3)
     with pytest.raises(InputError, match="no stroke"):
         flow_field([np.array([[1.0, 1.0]])])
+
+
+def test_relax_positions_weights_one_is_unweighted_and_weights_pull_harder():
+    rng = np.random.default_rng(0)
+    pos = rng.uniform(0, 10, (8, 2))
+    src = np.array([0, 1, 2, 3, 4, 5, 6, 0])
+    dst = np.array([1, 2, 3, 4, 5, 6, 7, 7])
+    off = rng.uniform(-2, 2, (8, 2))
+    free = np.array([False, True, True, True, True, True, True, True])
+    plain = relax_positions(pos, src, dst, off, free)
+    ones = relax_positions(pos, src, dst, off, free, weights=np.ones(8))
+    assert np.allclose(plain, ones, atol=1e-9)
+    # a heavy term is met more nearly than with weight one
+    w = np.ones(8)
+    w[3] = 100.0
+    heavy = relax_positions(pos, src, dst, off, free, weights=w)
+
+    def miss(p):
+        return float(np.hypot(*(p[dst[3]] - p[src[3]] - off[3])))
+
+    assert miss(heavy) < 0.1 * miss(plain)

@@ -48,6 +48,23 @@ def _circumcircles(g):
     return els, pts, tri, np.c_[la, lb, lc], r
 
 
+def _wide_circles(g, lo: float):
+    """(ux, uy, sel): the Delaunay triangles' circumcentres and the indices of those
+    whose empty circle is wider than ``lo`` and narrower than 1.5 mean edges, widest
+    first; None with fewer than 4 placed elements."""
+    cc = _circumcircles(g)
+    if cc is None:
+        return None
+    _, pts, tri, _, r = cc
+    s = tri.simplices
+    a, b, c = (pts[s[:, q]] for q in range(3))
+    cen, _, ok = circumcircles(a, b, c)
+    ux, uy = np.full(len(s), np.nan), np.full(len(s), np.nan)
+    ux[ok], uy[ok] = cen[:, 0], cen[:, 1]
+    sel = np.flatnonzero(ok & (r > lo) & (r < 1.5 * g.l))
+    return ux, uy, sel[np.argsort(-r[sel], kind="stable")]
+
+
 def reference_gap(g) -> float:
     """The widest empty circle (radius) of the exemplar's interior: the circumradius of
     its Delaunay triangles whose centre lies over 1.5 mean edges inside its frame; 0
@@ -92,21 +109,12 @@ def fill_holes(g) -> int:
     as any other. Unless every pushed outline stays inside the region and off every
     other, and the placement succeeds, all of it is undone.
     """
-    cc = _circumcircles(g)
-    if cc is None:
-        return 0
-    els, pts, tri, _, r = cc
-    s = tri.simplices
-    a, b, c = (pts[s[:, q]] for q in range(3))
-    cen, _, ok = circumcircles(a, b, c)
-    ux, uy = np.full(len(s), np.nan), np.full(len(s), np.nan)
-    ux[ok], uy[ok] = cen[:, 0], cen[:, 1]
     p = g.p
     lo, want = max(p.flow_fill_min * g.l, 1.1 * reference_gap(g)), p.flow_fill_reach * g.l
-    if lo >= want:
+    wide = _wide_circles(g, lo) if lo < want else None
+    if wide is None:
         return 0
-    sel = np.flatnonzero(ok & (r > lo) & (r < 1.5 * g.l))
-    sel = sel[np.argsort(-r[sel], kind="stable")]
+    ux, uy, sel = wide
     made = 0
     done: list[tuple[float, float]] = []
     for q in sel.tolist():

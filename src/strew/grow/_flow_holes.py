@@ -36,7 +36,7 @@ import math
 import numpy as np
 import shapely
 
-from ._flow_gaps import _circumcircles, _seg_dist, reference_gap
+from ._flow_gaps import _seg_dist, _wide_circles, reference_gap
 from ._objects import ELEMENT
 from ._relax import relax_positions
 
@@ -47,21 +47,12 @@ def close_holes(g, limit: int | None = None) -> int:
     """An element put into each hole (empty circle wider than ``flow_hole_min`` mean
     edges) where relaxing the elements around it makes room; how many. With ``limit``,
     no hole is filled once there are that many elements."""
-    from .._kernels.geometry import circumcircles
-
     p = g.p
-    cc = _circumcircles(g)
-    if cc is None:
-        return 0
-    _, pts, tri, _, r = cc
-    s = tri.simplices
-    a, b, c = (pts[s[:, q]] for q in range(3))
-    cen, _, ok = circumcircles(a, b, c)
-    ux, uy = np.full(len(s), np.nan), np.full(len(s), np.nan)
-    ux[ok], uy[ok] = cen[:, 0], cen[:, 1]
     lo = max(p.flow_hole_min * g.l, 1.1 * reference_gap(g))
-    sel = np.flatnonzero(ok & (r > lo) & (r < 1.5 * g.l))
-    sel = sel[np.argsort(-r[sel], kind="stable")]
+    wide = _wide_circles(g, lo)
+    if wide is None:
+        return 0
+    ux, uy, sel = wide
     made = 0
     done: list[tuple[float, float]] = []
     tried: list[tuple[float, float]] = []

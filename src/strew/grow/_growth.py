@@ -701,30 +701,38 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         gaps is left. Each ring slot with no object within half its distance from the
         element is proposed again as a seed, as §5.4 would, and the growth goes on.
         """
-        made = 0
+        return sum(self.seed_empty_slots(s) for s in list(self.order) if self.state[s] == ELEMENT)
+
+    def seed_empty_slots(self, s: int, only_void: bool = False) -> int:
+        """Seeds at the slots of element ``s``'s ring with no object within half the
+        slot's distance, that neither crowd their kind nor cross an edge or the
+        boundary; how many (:meth:`refill`, and :func:`._void_holes.reseed_voids` with
+        ``only_void``: void kinds only, and inside the domain)."""
         rings = self.rings
-        for s in list(self.order):
-            if self.state[s] != ELEMENT:
+        a = int(self.refslot[s])
+        n_ring = int(rings["n"][a])
+        rel = rings["rel"][a, :n_ring]
+        th = float(self.frame[s])
+        c, sn = math.cos(th), math.sin(th)
+        x, y = self.xy[s]
+        made = 0
+        for j in range(n_ring):
+            kind = int(rings["kind"][a, j])
+            if only_void and (kind < 0 or not self.void_kind[kind]):
                 continue
-            a = int(self.refslot[s])
-            n_ring = int(rings["n"][a])
-            rel = rings["rel"][a, :n_ring]
-            th = float(self.frame[s])
-            c, sn = math.cos(th), math.sin(th)
-            x, y = self.xy[s]
-            for j in range(n_ring):
-                rx, ry = float(rel[j, 0]), float(rel[j, 1])
-                cx, cy = x + c * rx - sn * ry, y + sn * rx + c * ry
-                kind = int(rings["kind"][a, j])
-                if self.near(cx, cy, max(self.l_short, 0.5 * math.hypot(rx, ry))):
-                    continue
-                if self.too_close_in_kind(cx, cy, kind, s) or self.crosses_edges(s, (x, y), None, (cx, cy)):
-                    continue
-                if self.crosses_boundary((x, y), (cx, cy)):
-                    continue
-                t = self.new_object(cx, cy, kind)
-                self.add_edge(s, t)
-                made += 1
+            rx, ry = float(rel[j, 0]), float(rel[j, 1])
+            cx, cy = x + c * rx - sn * ry, y + sn * rx + c * ry
+            if only_void and not self.in_domain(cx, cy):
+                continue
+            if self.near(cx, cy, max(self.l_short, 0.5 * math.hypot(rx, ry))):
+                continue
+            if self.too_close_in_kind(cx, cy, kind, s) or self.crosses_edges(s, (x, y), None, (cx, cy)):
+                continue
+            if self.crosses_boundary((x, y), (cx, cy)):
+                continue
+            t = self.new_object(cx, cy, kind)
+            self.add_edge(s, t)
+            made += 1
         return made
 
     def begin(self, start: tuple[float, float]) -> None:

@@ -204,7 +204,6 @@ def reseed_voids(g, around: list[tuple[float, float, float]]) -> int:
     """
     from ._objects import ELEMENT as _EL
 
-    rings = g.rings
     made = 0
     seen: set[int] = set()
     for cx, cy, rad in around:
@@ -212,25 +211,5 @@ def reseed_voids(g, around: list[tuple[float, float, float]]) -> int:
             if s in seen or g.state[s] != _EL or g.orig_of[s] != s:
                 continue
             seen.add(s)
-            a = int(g.refslot[s])
-            n_ring = int(rings["n"][a])
-            rel = rings["rel"][a, :n_ring]
-            th = float(g.frame[s])
-            c, sn = math.cos(th), math.sin(th)
-            x, y = g.xy[s]
-            for j in range(n_ring):
-                kind = int(rings["kind"][a, j])
-                if kind < 0 or not g.void_kind[kind]:
-                    continue
-                rx, ry = float(rel[j, 0]), float(rel[j, 1])
-                px, py = x + c * rx - sn * ry, y + sn * rx + c * ry
-                if not g.in_domain(px, py) or g.near(px, py, max(g.l_short, 0.5 * math.hypot(rx, ry))):
-                    continue
-                if g.too_close_in_kind(px, py, kind, s) or g.crosses_edges(s, (x, y), None, (px, py)):
-                    continue
-                if g.crosses_boundary((x, y), (px, py)):
-                    continue
-                t = g.new_object(px, py, kind)
-                g.add_edge(s, t)
-                made += 1
+            made += g.seed_empty_slots(s, only_void=True)
     return made
