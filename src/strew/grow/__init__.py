@@ -461,7 +461,7 @@ def _grow(
         from .._limits import check_kinds
 
         check_kinds(len(exemplar.kinds), "exemplar")  # the grower's closeness tables are per kind pair
-        ref = analyze(exemplar, flips=flips)
+        ref = analyze(exemplar, flips=flips, lattice_repairs=mode != "flow")
     else:
         raise InputError(f"exemplar: must be an Arrangement or a Reference, got {type(exemplar).__name__}")
     if count is not None:

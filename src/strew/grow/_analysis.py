@@ -51,7 +51,7 @@ def _triangle_angles(p: np.ndarray, tri: np.ndarray) -> np.ndarray:
     return np.c_[ang(b - a, c - a), ang(a - b, c - b), ang(a - c, b - c)]
 
 
-def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize: bool = False) -> np.ndarray:
+def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize: bool = False, shorter: bool = True) -> np.ndarray:
     """Edges of the Delaunay triangulation of ``xy`` without skewed triangles (§4).
 
     Parameters
@@ -63,6 +63,8 @@ def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize
     regularize : bool
         Flip the ambiguous diagonals of a (near-)regular lattice to one direction
         (:func:`regularize_triangles`, the automatic form of Fig. 3's flips).
+    shorter : bool
+        Passed to :func:`regularize_triangles`.
 
     Returns
     -------
@@ -86,7 +88,7 @@ def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize
     if len(tri) == 0:
         raise InputError("exemplar: every Delaunay triangle is skewed (an angle above 120°); nothing to learn from")
     if regularize:
-        tri = regularize_triangles(xy, tri, skew_angle)
+        tri = regularize_triangles(xy, tri, skew_angle, shorter=shorter)
     e = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
     e.sort(axis=1)
     return np.unique(e, axis=0)
@@ -171,7 +173,7 @@ def _steadier_direction(xy: np.ndarray, amb: list[tuple[int, int, int, int]], st
     return star
 
 
-def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SKEW_ANGLE) -> np.ndarray:
+def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SKEW_ANGLE, *, shorter: bool = True) -> np.ndarray:
     """Flip the ambiguous diagonals of a near-regular lattice to one common direction.
 
     §4, Fig. 3: on regular and near-regular references Delaunay triangulation "often
@@ -191,6 +193,9 @@ def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SK
     tri : (m, 3) int
         Triangles (no skewed ones).
     skew_angle : float
+    shorter : bool
+        Break a tie between two directions by the shorter diagonals
+        (``_steadier_direction``); False: the first direction found.
 
     Returns
     -------
@@ -247,7 +252,7 @@ def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SK
     best = int(np.argmax(support))
     if support[best] < 0.75 * len(amb):
         return np.asarray(tri)  # no common direction: an irregular reference
-    star = _steadier_direction(xy, amb, cands[best], support[best], np.array(dirs))
+    star = _steadier_direction(xy, amb, cands[best], support[best], np.array(dirs)) if shorter else cands[best]
     for _ in range(3):
         flipped = False
         for e in list(by_edge):
@@ -382,13 +387,50 @@ class Reference:
         return {"edges": self.edges.tolist()}
 
 
-def _build(exemplar: Arrangement, edges: np.ndarray) -> Reference:
+#: An interior ring whose widest angle between consecutive neighbours exceeds this many
+#: times the median widest angle of the interior rings is left out of the reference set.
+GAP_OUTLIER = 1.5
+
+
+def _gapped_rings(xy: np.ndarray, rings: list[np.ndarray], interior: np.ndarray) -> np.ndarray:
+    """Interior rings with a gap far wider than the exemplar's rings have: boundary rings.
+
+    §4 drops boundary elements; :func:`_is_interior` knows them by an open fan or a gap
+    of π. At the edge of a noisy hexagonal lattice (every gap near π/3), an element whose
+    outer neighbour is missing keeps a fan closed by a triangle just under §4's skew limit
+    (a gap near 2π/3) and counts as interior. Matched in growth, its ring places the two
+    elements beside the hole as if the hole belonged to the lattice, and rows shear
+    (issue 14: 'scales' with 6 rows of 6 lost 10 % of its regularity, and its bearing
+    histogram failed). Keyed on the exemplar's own rings, not a class: a ring is left out
+    when its widest gap exceeds :data:`GAP_OUTLIER` times the median widest gap. In an
+    irregular exemplar the median is near π/2, so the limit is beyond the skew angle
+    and nothing is left out. Never leaves the reference set empty.
+    """
+    out = np.zeros(len(xy), dtype=bool)
+    ids = np.flatnonzero(interior)
+    if len(ids) < 2:
+        return out
+    widest = np.empty(len(ids))
+    for q, v in enumerate(ids):
+        d = xy[rings[v]] - xy[v]
+        a = np.arctan2(d[:, 1], d[:, 0])
+        widest[q] = np.diff(np.r_[a, a[0] + 2 * np.pi]).max()
+    bad = widest > GAP_OUTLIER * float(np.median(widest))
+    if bad.all():
+        return out
+    out[ids[bad]] = True
+    return out
+
+
+def _build(exemplar: Arrangement, edges: np.ndarray, gapped: bool = True) -> Reference:
     xy = exemplar.xy
     n = len(xy)
     edges = np.unique(np.sort(np.asarray(edges, dtype=np.int64).reshape(-1, 2), axis=1), axis=0)
     adj = _adjacency(n, edges)
     rings = [np.asarray(_ccw(xy[v], xy, adj[v]) if adj[v] else [], dtype=np.intp) for v in range(n)]
     interior = np.array([_is_interior(v, xy, adj) for v in range(n)], dtype=bool)
+    if gapped:
+        interior &= ~_gapped_rings(xy, rings, interior)
     if not interior.any():
         raise InputError(
             f"exemplar: no interior element: all {n} elements lie on the boundary of the connectivity; "
@@ -439,6 +481,7 @@ def analyze(
     edges: np.ndarray | Sequence[Sequence[int]] | None = None,
     flips: Iterable[tuple[int, int]] = (),
     regularize: bool = True,
+    lattice_repairs: bool = True,
 ) -> Reference:
     """Build the connectivity of a reference arrangement and its 1-ring reference set (§4).
 
@@ -455,6 +498,12 @@ def analyze(
     regularize : bool
         Flip the ambiguous diagonals of a near-regular lattice to one direction first
         (:func:`regularize_triangles`); only for the triangulation built here.
+    lattice_repairs : bool
+        Between two tied lattice directions, flip to the shorter diagonals
+        (``_steadier_direction``), and leave rings with a far wider gap than the
+        exemplar's out of the reference set (``_gapped_rings``); both issue 14, not in
+        the paper. False gives the connectivity and reference set as before them (flow
+        mode keeps those: its gap and hole repairs were measured on them).
 
     Returns
     -------
@@ -476,8 +525,8 @@ def analyze(
     else:
         e = _edges_from_extra(exemplar)
         if e is None:
-            e = delaunay_edges(xy, regularize=regularize)
-    ref = _build(exemplar, e)
+            e = delaunay_edges(xy, regularize=regularize, shorter=lattice_repairs)
+    ref = _build(exemplar, e, gapped=lattice_repairs)
     for i, j in flips:
         ref = flip_edge(ref, int(i), int(j))
     return ref

@@ -115,7 +115,7 @@ class SprayGrowth:
         if isinstance(exemplar, Reference):
             ref = exemplar
         elif isinstance(exemplar, Arrangement):
-            ref = analyze(exemplar)
+            ref = analyze(exemplar, lattice_repairs=mode != "flow")
         else:
             raise InputError(f"exemplar: must be an Arrangement or a Reference, got {type(exemplar).__name__}")
         if not (isinstance(radius, (int, float)) and math.isfinite(radius) and radius > 0):
