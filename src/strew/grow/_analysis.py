@@ -488,7 +488,7 @@ def analyze(
     edges: np.ndarray | Sequence[Sequence[int]] | None = None,
     flips: Iterable[tuple[int, int]] = (),
     regularize: bool = True,
-    lattice_repairs: bool = True,
+    lattice_repairs: bool = False,
 ) -> Reference:
     """Build the connectivity of a reference arrangement and its 1-ring reference set (§4).
 
@@ -509,8 +509,11 @@ def analyze(
         Between two tied lattice directions, flip to the shorter diagonals
         (``_steadier_direction``), and leave rings with a far wider gap than the
         exemplar's out of the reference set (``_gapped_rings``); both issue 14, not in
-        the paper. False gives the connectivity and reference set as before them (flow
-        mode keeps those: its gap and hole repairs were measured on them).
+        the paper. :func:`strew.grow.grow` and the spray tool turn them on outside flow
+        mode (flow mode's gap and hole repairs were measured without them); off by
+        default, so the clusters' hub lattice (:mod:`strew.grow._clusters`: a sparse
+        hub set whose edge rings the gap rule dropped, and density[hub] of 'rings'
+        failed at 4x) and the other callers keep their reference sets.
 
     Returns
     -------
