@@ -42,7 +42,10 @@ oaks 1.006, pines 0.993 [0.960, 1.028], +-2 s 1.017 / 1.001 / 0.998. 47c34a9 see
 against 0.55 dropped), and the +-1 s density of seed 2 is 1.05 either way (not met).
 
 Run: ``python benchmarks/pack_seam_kinds.py [--seeds 1,2,3,4] [--input stones|trees] [--side 7200]
-[--untiled] [--tag T] [--set NAME=VALUE]``; writes ``benchmarks/results/pack_seam_kinds_<input>[_untiled]<tag>.json``.
+[--untiled] [--tag T] [--set NAME=VALUE] [--pool UNITS.npz ...]``; writes
+``benchmarks/results/pack_seam_kinds_<input>[_untiled]<tag>.json`` and the strips' tile
+units in ``..._units.npz``; ``--pool`` adds an earlier run's units (other seeds, the same
+code) to the strips' intervals, so that a long sweep can run one seed at a time.
 """
 
 from __future__ import annotations
@@ -75,6 +78,7 @@ def main() -> None:
     ap.add_argument("--tag", default="")
     ap.add_argument("--untiled", action="store_true", help="the control: one pack run over the world, the same lines")
     ap.add_argument("--set", action="append", default=[], help="NAME=VALUE: set strew.tiles.NAME (a variant)")
+    ap.add_argument("--pool", action="append", default=[], help="a units .npz of an earlier run (same input, code) to pool the strips over")
     args = ap.parse_args()
     for kv in args.set:
         name, _, val = kv.partition("=")
@@ -184,8 +188,16 @@ def main() -> None:
         print(f"{key} kinds share: " + ", ".join(f"{n} {v / max(tot.sum(), 1):.3f}" for n, v in zip(names, tot)) + f"  (far: {', '.join(f'{v:.3f}' for v in far_share)})")
     # as benchmarks/worlds_strips.py: ratios of sums over the tiles, 95 % tile-bootstrap intervals
     brng = np.random.default_rng(0)
+    upath = HERE / "results" / f"pack_seam_kinds_{args.input}{'_untiled' if args.untiled else ''}{args.tag}_units.npz"
+    upath.parent.mkdir(parents=True, exist_ok=True)
+    np.savez(upath, **{f"{m:g}_{i}_{k}": v for m, L in units.items() for i, x in enumerate(L) for k, v in x.items() if k != "kinds"})
+    for f in args.pool:  # tile units of other seeds (--pool): the intervals over all of them
+        z = np.load(f)
+        for m, L in units.items():
+            for i in sorted({int(key.split("_")[1]) for key in z.files if key.startswith(f"{m:g}_")}):
+                L.append({k: z[f"{m:g}_{i}_{k}"] for k in L[0] if k != "kinds"})
     for m, L in units.items():
-        u = {k: np.concatenate([x[k] for x in L]) for k in L[0]}
+        u = {k: np.concatenate([x[k] for x in L]) for k in L[0] if k != "kinds"}
         d = bootstrap_ratio([u["strip"], u["strip_area"], u["inner"], u["inner_area"]],
                             lambda s_, sa, i, ia: (s_.sum() / sa.sum()) / (i.sum() / ia.sum()), 1000, brng)
         ks = {}
