@@ -43,7 +43,9 @@ against 0.55 dropped), and the +-1 s density of seed 2 is 1.05 either way (not m
 a75e88f (h/trees19c), seeds 3, 4: +-1 s density 1.029 [1.014, 1.045], oaks 1.014, pines
 0.983; +-2 s 0.992 [0.980, 1.004], 1.006, 0.992; refilled oaks 0.584 against 0.545
 dropped. Over seeds 1-4 the +-1 s excess is about 3 % (1.019, 1.048, 1.029 for 3-4):
-real against 1.0, its interval not excluding 1.03; +-2 s within 1 %.
+real against 1.0, its interval not excluding 1.03; +-2 s within 1 %. Seeds 1-4 pooled
+(--seeds 1,2 --pool ..._t19_base34_units.npz): +-1 s 1.032 [1.020, 1.042], oaks 1.014
+[1.001, 1.029], pines 0.983 [0.966, 0.998]; +-2 s 0.994 [0.985, 1.004], 1.011, 0.987.
 Tried (h/trees19c, not kept; diff in results/pack_seam_kinds_trees_t19_refill_cap.diff):
 the later tile's refill capped per hole, each refilled element to its nearest dropped
 one (distance less bounding radii), the largest first while their areas sum to at most
