@@ -172,41 +172,6 @@ def largest_empty_circles(prep) -> np.ndarray:
     return out
 
 
-HOLE_KIND_SLACK = 0.0
-"""With HOLE_KIND_SLACK > 0, an element that :func:`fill_holes` puts into a hole needs
-an output element of its own kind within ``max(HOLE_KIND_SLACK d_e, HOLE_RIM R)`` of
-the hole's centre (``d_e``: its exemplar distance to the nearest element of its kind,
-:func:`_same_kind_distance`; ``R``: the hole's radius); 0: off.
-
-Off by default; measured for issue 13 point 2 (``python benchmarks/synth.py --seams
---seeds 1,2``). Two sizes at 50x the area: of the pebbles put into holes (108 and 83
-on seeds 1 and 2), 93-96% had no pebble within the exemplar's 90th percentile of
-pebble-to-pebble distances (10% in the exemplar), and the failing windows
-(nn[pebble>pebble]) hold them. At 1.1 the hole pebbles fell to 18 and 16 and two
-sizes' failing windows from 1 + 2 to 1 + 0 (0 + 0 without the ``HOLE_RIM`` term, but
-then stones and three sizes kept holes: empty_circle up to 3.1); three sizes went
-from 9 + 11 to 9 + 19 (nn[medium>medium]), with the rule on the smallest class only
-as well."""
-
-HOLE_RIM = 1.05
-
-
-def _same_kind_distance(prep) -> np.ndarray:
-    """(n,) float: each exemplar element's distance to the nearest other element of its
-    exemplar and kind (inf when it has none). Computed once per ``prep``."""
-    got = getattr(prep, "_same_kind_d", None)
-    if got is not None and len(got) == len(prep.kind):
-        return got
-    out = np.full(len(prep.kind), np.inf)
-    for s in range(len(prep.names)):
-        for k in np.unique(prep.skind[prep.source == s]):
-            ids = np.flatnonzero((prep.source == s) & (prep.skind == k))
-            if len(ids) > 1:
-                out[ids] = cKDTree(prep.pos[ids]).query(prep.pos[ids], k=2)[0][:, 1]
-    prep._same_kind_d = out
-    return out
-
-
 HOLE_PASSES = 3
 """Passes of :func:`fill_holes` over the output's empty circles."""
 
@@ -247,7 +212,6 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     par_d = np.where(par >= 0, np.hypot(*(prep.pos[cand] - prep.pos[np.maximum(par, 0)]).T) + prep.r[cand], np.inf)
     if len(cand) == 0:
         return 0
-    same_d = HOLE_KIND_SLACK * _same_kind_distance(prep)[cand] if HOLE_KIND_SLACK > 0 else None
     # the least distance any candidate keeps from an element copied from each exemplar
     # element: a circle through an element closer than that to its centre takes nothing
     need = np.maximum(prep.rc[:, None] + prep.rc[cand][None, :], prep.min_dist[prep.skind[:, None], prep.skind[cand][None, :]]).min(axis=1)
@@ -302,11 +266,6 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             if lean.any():
                 same = prep.skind[s_][None, :] == prep.skind[par[lean]][:, None]
                 fits[lean] = np.any(same & (dist[None, :] <= par_d[lean][:, None]), axis=1)
-            # with HOLE_KIND_SLACK, not alone among other kinds (see _same_kind_distance)
-            alone = fits & (same_d <= max(rbar, reach)) if same_d is not None else None
-            if alone is not None and alone.any():
-                same = prep.skind[s_][None, :] == prep.skind[cand[alone]][:, None]
-                fits[alone] = np.any(same & (dist[None, :] <= np.maximum(same_d[alone], HOLE_RIM * rad[h])[:, None]), axis=1)
             if not fits.any():
                 continue
             ids = cand[fits]
