@@ -1039,7 +1039,7 @@ def open_room_share(prep: Prepared) -> np.ndarray:
         need = np.maximum(rc[sm] + rc[tri], prep.min_dist[sk[sm], sk[tri]]).max(axis=1)
         room = rad >= need
         room[room] = shapely.contains_xy(dom, cen[room, 0], cen[room, 1])
-        room[room] = shapely.distance(dom.exterior, shapely.points(cen[room])) >= rad[room]
+        room[room] = shapely.distance(dom.boundary, shapely.points(cen[room])) >= rad[room]  # holes and parts too
         c = cen[room]
         if len(c) == 0:
             continue
