@@ -51,7 +51,7 @@ def _triangle_angles(p: np.ndarray, tri: np.ndarray) -> np.ndarray:
     return np.c_[ang(b - a, c - a), ang(a - b, c - b), ang(a - c, b - c)]
 
 
-def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize: bool = False, shorter: bool = True) -> np.ndarray:
+def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize: bool = False, shorter: bool = False) -> np.ndarray:
     """Edges of the Delaunay triangulation of ``xy`` without skewed triangles (§4).
 
     Parameters
@@ -64,7 +64,8 @@ def delaunay_edges(xy: np.ndarray, skew_angle: float = SKEW_ANGLE, *, regularize
         Flip the ambiguous diagonals of a (near-)regular lattice to one direction
         (:func:`regularize_triangles`, the automatic form of Fig. 3's flips).
     shorter : bool
-        Passed to :func:`regularize_triangles`.
+        Passed to :func:`regularize_triangles` [default: False, as :func:`analyze`'s
+        ``lattice_repairs``; :func:`strew.grow.grow` turns it on outside flow mode].
 
     Returns
     -------
@@ -173,7 +174,7 @@ def _steadier_direction(xy: np.ndarray, amb: list[tuple[int, int, int, int]], st
     return star
 
 
-def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SKEW_ANGLE, *, shorter: bool = True) -> np.ndarray:
+def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SKEW_ANGLE, *, shorter: bool = False) -> np.ndarray:
     """Flip the ambiguous diagonals of a near-regular lattice to one common direction.
 
     §4, Fig. 3: on regular and near-regular references Delaunay triangulation "often
@@ -195,7 +196,7 @@ def regularize_triangles(xy: np.ndarray, tri: np.ndarray, skew_angle: float = SK
     skew_angle : float
     shorter : bool
         Break a tie between two directions by the shorter diagonals
-        (``_steadier_direction``); False: the first direction found.
+        (``_steadier_direction``); False [default]: the first direction found.
 
     Returns
     -------
