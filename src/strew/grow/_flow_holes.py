@@ -96,16 +96,24 @@ def _encloses(g, cx: float, cy: float, ring: list[int]) -> bool:
     return max(gaps) < math.radians(150.0)
 
 
-def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float):
+def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: float | None = None, win: float | None = None,
+                  room: float | None = None, turn: float | None = None):
     """Relax the window around (cx, cy) (Eq. 5) with the ring pulled to ``reach`` from
     a free object at the centre; the elements are moved and the centre's fitted
     position returned, or None (nothing moved) when the moved outlines cannot be kept
-    inside the region and off each other. Returns (centre, undo)."""
+    inside the region and off each other. Returns (centre, undo).
+
+    For :func:`strew.grow._flow_stretch.insert_stretched`: ``taut`` (pairs over this
+    many mean edges want one mean edge, and ring elements farther than ``reach`` keep
+    their distance), ``win`` (the window's radius in mean edges, instead of
+    ``flow_hole_window``), ``room`` (None when the fit leaves an element nearer the
+    centre than this many mean edges, before anything moves) and ``turn`` (instead of
+    ``flow_hole_turn``)."""
     p = g.p
     L = g.l
     from scipy.spatial import cKDTree
 
-    win_r = p.flow_hole_window * L
+    win_r = (p.flow_hole_window if win is None else win) * L
     window = sorted(o for o in g.near(cx, cy, win_r, (ELEMENT,)) if g.orig_of[o] == o and not g.fixed[o])
     wset = set(window)
     anchors = sorted(o for o in g.near(cx, cy, win_r + 1.5 * L, (ELEMENT,)) if g.orig_of[o] == o and o not in wset)
@@ -126,7 +134,16 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float):
     n = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-300)
     src = np.r_[pairs[:, 0], np.full(len(ri), k0)]
     dst = np.r_[pairs[:, 1], ri]
-    off = np.r_[pos[pairs[:, 1]] - pos[pairs[:, 0]], d / n[:, None] * reach]
+    rel = pos[pairs[:, 1]] - pos[pairs[:, 0]]
+    if taut is not None:
+        # (stretched pairs, over ``taut`` mean edges, want one mean edge in their
+        # present direction: the stretch around gives the new element its room)
+        ln = np.maximum(np.hypot(rel[:, 0], rel[:, 1]), 1e-300)
+        rel = rel * np.where(ln > taut * L, L / ln, 1.0)[:, None]
+    # (with ``taut``, a ring element already farther than ``reach`` keeps its distance:
+    # the new element's second shell does not close in on it)
+    want = np.maximum(n, reach) if taut is not None else np.full(len(n), reach)
+    off = np.r_[rel, d / n[:, None] * want[:, None]]
     w = np.r_[np.ones(len(pairs)), np.full(len(ri), float(p.flow_hole_weight))]
     pair_at = {(int(a), int(b)): q for q, (a, b) in enumerate(pairs.tolist())}
     tiny = 1e-9 * L
@@ -145,6 +162,12 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float):
     # made again
     for _ in range(p.flow_hole_rounds):
         new = relax_positions(pos, src, dst, off, free, weights=w)
+        if room is not None:
+            dc = new[:k0] - new[k0]
+            if float(np.min(dc[:, 0] ** 2 + dc[:, 1] ** 2)) < (room * L) ** 2:
+                # (the fit leaves no room for an element at the centre: nothing is
+                # moved, no overlap tested)
+                return None, undo
         moves: dict[int, tuple[float, float]] = {}
         for o in window:
             nx, ny = (float(v) for v in new[local[o]])
@@ -161,8 +184,9 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float):
             undo()
             return None, undo
         hits = {o: g.overlapping(o) for o in moves}
-        if any(hits.values()) and p.flow_hole_turn > 0:
-            _turn_free(g, hits, float(p.flow_hole_turn))
+        turn_by = float(p.flow_hole_turn if turn is None else turn)
+        if any(hits.values()) and turn_by > 0:
+            _turn_free(g, hits, turn_by)
             hits = {o: g.overlapping(o) for o in moves}
         if not any(hits.values()):
             return (float(new[k0, 0]), float(new[k0, 1])), undo
@@ -239,13 +263,18 @@ def _turn_ring(g, t: int, a: int, th: float, ring: list[int], turn: float) -> bo
     return True
 
 
-def _fill(g, cx: float, cy: float, ring: list[int]) -> bool:
+def _fill(g, cx: float, cy: float, ring: list[int], taut: float | None = None, win: float | None = None,
+          room: float | None = None, turn: float | None = None) -> bool:
     L = g.l
-    c, undo = _relax_around(g, cx, cy, ring, L)
+    c, undo = _relax_around(g, cx, cy, ring, L, taut, win, room, turn)
     if c is None:
         return False
     sx, sy = c
     if not g.in_domain(sx, sy):
+        undo()
+        return False
+    if room is not None and g.near(sx, sy, room * L, (ELEMENT,)):
+        # (the relaxation left no room: no placement is tried)
         undo()
         return False
     # edges across the hole go; the new object is joined to the ring around it
@@ -267,11 +296,11 @@ def _fill(g, cx: float, cy: float, ring: list[int]) -> bool:
         # the chosen frame first, then turned by up to ``flow_hole_turn`` (its ring's
         # slots all merge with the ring around the hole: only the outline turns)
         a, k, th = pick
-        turn = float(g.p.flow_hole_turn)
+        turn = float(g.p.flow_hole_turn if turn is None else turn)
         # (then at the relaxed centre: the fit of §5.4 to a reference ring of six pulls
         # the seed towards one side of a ring of five)
         stay = 1e-12 * L
-        turns = [0.0] + [sgn * q * turn / 3 for q in range(1, 4) for sgn in (1.0, -1.0)]
+        turns = [0.0] + ([sgn * q * turn / 3 for q in range(1, 4) for sgn in (1.0, -1.0)] if turn > 0 else [])
         for d, reach in [(0.0, None)] + [(d, stay) for d in turns]:
             if g.xy[t] != (sx, sy):
                 g._move(t, sx, sy)

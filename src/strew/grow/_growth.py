@@ -63,6 +63,7 @@ from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
 from ._flow_gaps import close_gaps, fill_holes, side_stream
 from ._flow_holes import close_holes
+from ._flow_stretch import insert_stretched
 from ._index import GrowIndex
 from ._match import MODES, W1, W2, W3
 from ._objects import (
@@ -162,6 +163,18 @@ class GrowParams:
     flow_hole_weight: float = 10.0
     flow_hole_rounds: int = 4
     flow_hole_turn: float = math.pi / 6
+    #: flow mode: before the holes, an element at the middle of each bond longer than
+    #: this many mean edges (none within ``flow_stretch_gap`` edges of another), its
+    #: window's pairs over ``flow_stretch_taut`` edges relaxed to one edge
+    #: (:func:`strew.grow._flow_stretch.insert_stretched`); None: not
+    flow_stretch_min: float | None = 1.18
+    flow_stretch_gap: float = 2.0
+    flow_stretch_taut: float = 1.1
+    flow_stretch_ring: float = 1.5
+    flow_stretch_window: float = 4.0
+    flow_stretch_room: float = 0.85
+    flow_stretch_turn: float | None = None
+    flow_stretch_edge: float = 1.5
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -687,6 +700,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # flow mode: the holes left, closed after the last relaxation (nothing moves
             # them back); draws from the side stream as above
             main, self.rng = self.rng, side_stream(self.rng)
+            if len(self.order) < target and p.flow_stretch_min is not None:
+                insert_stretched(self, target)
             if len(self.order) < target:
                 close_holes(self, target)
             self.rng = main
