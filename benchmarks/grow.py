@@ -446,7 +446,7 @@ print(time.process_time() - c, len(out))
 """
 
 
-def against(rev: str, n: int, repeat: int, json_path, src: str | None = None) -> None:
+def against(rev: str, n: int, repeat: int, json_path, src: str | None = None, cases: str | None = None) -> None:
     """CPU elements per second of this tree and of git revision ``rev``, in turns."""
     import os
     import subprocess
@@ -459,7 +459,7 @@ def against(rev: str, n: int, repeat: int, json_path, src: str | None = None) ->
         archive = subprocess.run(["git", "archive", sha, "src"], cwd=root, capture_output=True, check=True).stdout
         subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
         trees = {"this": str(Path(src).resolve() if src else root / "src"), "base": str(Path(tmp) / "src")}
-        for name in ("stones", "tiles", "hex", "hexflow"):
+        for name in cases.split(",") if cases else ("stones", "tiles", "hex", "hexflow"):
             for relax in ("1", "0"):
                 cpu: dict[str, list[float]] = {k: [] for k in trees}
                 for _ in range(max(1, repeat)):
@@ -479,13 +479,14 @@ def main() -> None:
         p.add_argument("--flow-only", action="store_true", help="with --structure: only the flow cases (point 2)")
         p.add_argument("--against", metavar="REV", default=None, help="CPU el/s of this tree against git revision REV (see the docstring)")
         p.add_argument("--src", default=None, help="with --against: the src folder timed as this tree (default: this checkout's)")
+        p.add_argument("--cases", default=None, help="with --against: only these of stones,tiles,hex,hexflow (comma-separated)")
 
     args = parse_args(__doc__, extra)
     if args.structure:
         structure(args.json, args.flow_only)
         return
     if args.against:
-        against(args.against, 1000 if args.quick else 2000, min(args.repeat, 3), args.json, args.src)
+        against(args.against, 1000 if args.quick else 2000, min(args.repeat, 3), args.json, args.src, args.cases)
         return
     from strew import metrics
     from strew.grow import analyze, grow

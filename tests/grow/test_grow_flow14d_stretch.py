@@ -5,7 +5,8 @@ The hexagonal lattice grown from the corner at the centre of curvature of a
 quarter-circle field (``benchmarks/grow.py --structure --flow-only``, "start 2,2
 spacings"): at 550ea99, 0.806 of the interior elements kept six neighbours at the
 spacing (+-15%) and 52 interior sites were stretched (a gap, no crowding). With the
-insertions: 0.834 and 34, no hole, nothing across the edge.
+insertions (and the relaxation of their windows): 0.880 and 28, no hole, nothing
+across the edge.
 """
 
 from __future__ import annotations
@@ -74,12 +75,12 @@ def test_flow_stretched_lattice_gets_elements_and_keeps_its_six_neighbours(hex_r
     out = grow_reference(hex_ref, GrowParams(**kw), rng=1)
     _inside_without_overlap(out, region)
     six, stretched = _shares(out.xy, region)
-    assert six >= 0.82  # 0.834 here; 0.806 at 550ea99
-    assert stretched <= 0.18  # 0.166 here; 0.194 at 550ea99
+    assert six >= 0.85  # 0.880 here; 0.806 at 550ea99
+    assert stretched <= 0.15  # 0.120 here; 0.194 at 550ea99
     assert _widest_gap(out.xy, region) < 0.75  # no hole
     off = grow_reference(hex_ref, GrowParams(**kw, flow_stretch_min=None), rng=1)
     six_off, stretched_off = _shares(off.xy, region)
-    assert six_off < six - 0.015 and stretched_off > stretched + 0.015
+    assert six_off < six - 0.04 and stretched_off > stretched + 0.04
     assert len(out) > len(off)
 
 

@@ -97,7 +97,7 @@ def _encloses(g, cx: float, cy: float, ring: list[int]) -> bool:
 
 
 def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: float | None = None, win: float | None = None,
-                  room: float | None = None, turn: float | None = None):
+                  room: float | None = None, turn: float | None = None, max_hits: int | None = None):
     """Relax the window around (cx, cy) (Eq. 5) with the ring pulled to ``reach`` from
     a free object at the centre; the elements are moved and the centre's fitted
     position returned, or None (nothing moved) when the moved outlines cannot be kept
@@ -107,8 +107,9 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: 
     many mean edges want one mean edge, and ring elements farther than ``reach`` keep
     their distance), ``win`` (the window's radius in mean edges, instead of
     ``flow_hole_window``), ``room`` (None when the fit leaves an element nearer the
-    centre than this many mean edges, before anything moves) and ``turn`` (instead of
-    ``flow_hole_turn``)."""
+    centre than this many mean edges, before anything moves), ``turn`` (instead of
+    ``flow_hole_turn``) and ``max_hits`` (None when more moved elements than this
+    overlap after a fit, before any turn)."""
     p = g.p
     L = g.l
     from scipy.spatial import cKDTree
@@ -184,6 +185,10 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: 
             undo()
             return None, undo
         hits = {o: g.overlapping(o) for o in moves}
+        if max_hits is not None and sum(1 for h in hits.values() if h) > max_hits:
+            # (too crowded a fit to be freed by turns or a refit: given up at once)
+            undo()
+            return None, undo
         turn_by = float(p.flow_hole_turn if turn is None else turn)
         if any(hits.values()) and turn_by > 0:
             _turn_free(g, hits, turn_by)
@@ -264,9 +269,9 @@ def _turn_ring(g, t: int, a: int, th: float, ring: list[int], turn: float) -> bo
 
 
 def _fill(g, cx: float, cy: float, ring: list[int], taut: float | None = None, win: float | None = None,
-          room: float | None = None, turn: float | None = None) -> bool:
+          room: float | None = None, turn: float | None = None, max_hits: int | None = None) -> bool:
     L = g.l
-    c, undo = _relax_around(g, cx, cy, ring, L, taut, win, room, turn)
+    c, undo = _relax_around(g, cx, cy, ring, L, taut, win, room, turn, max_hits)
     if c is None:
         return False
     sx, sy = c

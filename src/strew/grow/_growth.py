@@ -164,16 +164,22 @@ class GrowParams:
     flow_hole_rounds: int = 4
     flow_hole_turn: float = math.pi / 6
     #: flow mode: before the holes, an element at the middle of each bond longer than
-    #: this many mean edges (none within ``flow_stretch_gap`` edges of another), its
-    #: window's pairs over ``flow_stretch_taut`` edges relaxed to one edge
+    #: this many mean edges (none within ``flow_stretch_gap`` edges of another nor
+    #: ``flow_stretch_edge`` of the region's edge), the elements within
+    #: ``flow_stretch_ring`` edges pushed out to one edge and the window of
+    #: ``flow_stretch_window`` edges relaxed, its pairs over ``flow_stretch_taut`` edges
+    #: to one edge; tried only where the fit leaves ``flow_stretch_room`` edges free;
+    #: elements turned by up to ``flow_stretch_turn`` (None: ``flow_hole_turn``)
     #: (:func:`strew.grow._flow_stretch.insert_stretched`); None: not
     flow_stretch_min: float | None = 1.18
     flow_stretch_gap: float = 2.0
     flow_stretch_taut: float = 1.1
     flow_stretch_ring: float = 1.5
-    flow_stretch_window: float = 4.0
+    flow_stretch_window: float = 8.0
     flow_stretch_room: float = 0.85
     flow_stretch_turn: float | None = None
+    flow_stretch_hits: int | None = None
+    flow_stretch_tries: int = 20
     flow_stretch_edge: float = 1.5
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
@@ -700,7 +706,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # flow mode: the holes left, closed after the last relaxation (nothing moves
             # them back); draws from the side stream as above
             main, self.rng = self.rng, side_stream(self.rng)
-            if len(self.order) < target and p.flow_stretch_min is not None:
+            if len(self.order) < target and p.flow_stretch_min is not None and p.relax:
+                # (a relaxation (§5.5) of the stretch: not where the caller turned it off)
                 insert_stretched(self, target)
             if len(self.order) < target:
                 close_holes(self, target)
