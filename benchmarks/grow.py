@@ -18,7 +18,7 @@ hexagonal lattice along a field turning 90 degrees, with the passes after the gr
 ``hexflow``), of this tree and of the tree at git revision ``REV`` (extracted with
 ``git archive``), each in fresh processes taken in turn, and prints elements per CPU
 second and the CPU ratio this/REV (the best of ``--repeat`` runs each; the machine may be
-shared, so only the ratios of one run compare).
+shared, so only the ratios of one run compare); ``--cases hexflow`` (comma-separated) times only those.
 ``--structure`` prints only the structure figures of issue 14 points 2 and 4, no
 timings: a hexagonal lattice in flow mode along fields that turn 60 and 90 degrees across
 30 spacings and along curved strokes (share of interior elements with six neighbours at
