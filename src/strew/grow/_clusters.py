@@ -122,6 +122,43 @@ def satellite_structure(ex: Arrangement) -> Satellites | None:
     return None
 
 
+def hub_hole(hx: Arrangement) -> float:
+    """The radius above which an empty circle of grown hubs is a hole: the widest empty
+    circle of the exemplar's hubs (Delaunay circumcircles wholly inside its frame, as
+    ``strew.metrics.fidelity``'s ``empty_circle``), and at least their least distance
+    apart; 0 when the exemplar has no whole circle.
+
+    Not in the paper (§5.4 seeds only from the growth front and never returns to a
+    place). Hubs drawn saturated (no gap anywhere a hub fits at the exemplar's least
+    distance from the others) grew with hub-sized holes: each hub's ring proposes its
+    neighbours at the distances of one reference ring, and a proposal that lands too
+    near a hub placed from elsewhere dies (``too_close_in_kind``), leaving a gap no
+    front comes back to (clusters far apart: the hubs' widest whole empty circles
+    105-113 against the exemplar's 66.5, their least distance 93.6; empty_circle
+    0.16-0.28 against a tolerance of 0.14). A hole wider than both figures holds a hub
+    at more than the least distance from all around it, and the exemplar shows no such
+    hole (:func:`strew.grow._void_holes.fill_void_holes` puts it there).
+    """
+    from scipy.spatial import Delaunay, QhullError, cKDTree
+
+    from .._kernels.geometry import circumcircles
+
+    pts = hx.xy
+    if len(pts) < 4 or hx.region is None:
+        return 0.0
+    try:
+        tri = Delaunay(pts)
+    except QhullError:
+        return 0.0
+    a, b, c = (pts[tri.simplices[:, q]] for q in range(3))
+    cen, rr, _ = circumcircles(a, b, c)
+    inner = hx.region.contains(cen) & (hx.region.distance_to_boundary(cen) >= rr) if len(cen) else np.zeros(0, dtype=bool)
+    if not inner.any():
+        return 0.0
+    least = float(cKDTree(pts).query(pts, k=2)[0][:, 1].min())
+    return max(float(rr[inner].max()), least)
+
+
 def _jitter_color(base: Any, amt: float, rng: np.random.Generator) -> Any:
     from ._growth import _parse_hex
 
@@ -152,6 +189,7 @@ def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.
     """
     from ._analysis import analyze
     from ._growth import ELEMENT, _Grower
+    from ._void_holes import fill_void_holes
 
     hx = ex.select(ex.kind == sat.hub)
     try:
@@ -187,9 +225,18 @@ def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.
     done = 0
     count = params.count
     target = hp.max_elements if count is None else max(1, math.ceil(count / (1.0 + per_hub)))
+    hole = hub_hole(hx) if params.mode == "fixed" and params.hub_holes else 0.0
     while True:
         g.advance(rep, target)
         g.settle()
+        if hole > 0 and not g.heap:
+            # hub-sized holes the growth and its relaxation left (see :func:`hub_hole`)
+            for _ in range(params.refill_rounds):
+                if len(g.order) >= target or not fill_void_holes(g, hole, bare=True):
+                    break
+                g.advance(rep, target)
+                g.settle()
+            hole = 0.0
         for h in g.order[done:]:
             if g.state[h] != ELEMENT:
                 continue

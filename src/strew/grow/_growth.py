@@ -218,6 +218,10 @@ class GrowParams:
     #: visible elements wider than the exemplar's widest get a visible element in place
     #: of their voids (:mod:`strew.grow._void_holes`); False: not
     void_holes: bool = True
+    #: fixed mode, clustered exemplars: after the hubs' growth, empty circles of the hubs
+    #: wider than any the exemplar's hubs leave get a hub at their centre
+    #: (:func:`strew.grow._clusters.hub_hole`); False: not
+    hub_holes: bool = True
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None

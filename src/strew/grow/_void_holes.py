@@ -81,13 +81,17 @@ def reference_visible_gap(g) -> float:
     return out
 
 
-def fill_void_holes(g) -> int:
+def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
     """A visible element put at the centre of each empty circle of the placed visible
-    elements wider than :func:`reference_visible_gap`, in place of the voids there;
-    how many (see the module docstring)."""
+    elements wider than ``lim`` (default :func:`reference_visible_gap`), in place of
+    the voids there; how many (see the module docstring). Without void kinds it fills
+    the empty circles of all placed elements (the hubs of clustered exemplars,
+    :func:`strew.grow._clusters.grow_clusters`), and with ``bare`` an element whose
+    placement at its fitted position is refused is tried at the circle's centre."""
     from scipy.spatial import Delaunay, QhullError
 
-    lim = reference_visible_gap(g)
+    if lim is None:
+        lim = reference_visible_gap(g)
     if lim <= 0:
         return 0
     els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.int64)
@@ -119,7 +123,7 @@ def fill_void_holes(g) -> int:
         if not g.in_domain(cx, cy):
             continue
         tri_kinds = [int(g.kind[els[v]]) for v in s[q].tolist()]
-        if _fill_one(g, cx, cy, float(r[q]), lim, max(sorted(set(tri_kinds)), key=tri_kinds.count), removed_all):
+        if _fill_one(g, cx, cy, float(r[q]), lim, max(sorted(set(tri_kinds)), key=tri_kinds.count), removed_all, bare):
             made += 1
             filled.append((cx, cy, float(r[q])))
     if removed_all:
@@ -129,7 +133,7 @@ def fill_void_holes(g) -> int:
     return made
 
 
-def _fill_one(g, cx: float, cy: float, rad: float, lim: float, kind: int, removed_all: set[int]) -> bool:
+def _fill_one(g, cx: float, cy: float, rad: float, lim: float, kind: int, removed_all: set[int], bare: bool = False) -> bool:
     # still a hole (an earlier fill may have closed it)?
     near = g.near(cx, cy, rad, (ELEMENT, SEED))
     if any(int(g.kind[o]) >= 0 and not g.void_kind[int(g.kind[o])] and math.hypot(g.xy[o][0] - cx, g.xy[o][1] - cy) < lim for o in near):
@@ -171,6 +175,20 @@ def _fill_one(g, cx: float, cy: float, rad: float, lim: float, kind: int, remove
         _rejoin(g, back, check=True)
         return True
     g.kill(s)
+    if bare and not saved:
+        # the fit to the ring around (§5.4's placement at the matched ring) moved the
+        # element towards one side of the hole, too near a neighbour: it goes at the
+        # centre, matched with no neighbour (§5.2's Eq. 3 over an empty ring), and is
+        # joined to the ring around after
+        s = g.new_object(cx, cy, kind)
+        g._out_of_domain = False
+        pick = g.choose(s)
+        if pick is not None and g.place(s, *pick):
+            for o in ring:
+                if g.state[o] == ELEMENT and not g.has_edge(s, o) and not g.crosses_edges(s, g.xy[s], o, g.xy[o]):
+                    g.add_edge(s, o)
+            return True
+        g.kill(s)
     for o, st, _, _ in saved:
         g.state[o] = st
         g.index.insert(o, g.xy[o][0], g.xy[o][1])
