@@ -222,6 +222,10 @@ class GrowParams:
     #: wider than any the exemplar's hubs leave get a hub at their centre
     #: (:func:`strew.grow._clusters.hub_hole`); False: not
     hub_holes: bool = True
+    #: fixed mode, irregular exemplars without void kinds: after the growth, empty
+    #: circles of the elements wider than any the exemplar's leave get an element at
+    #: their centre (:mod:`strew.grow._void_holes`); False: not
+    open_holes: bool = True
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None
@@ -686,9 +690,9 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 if len(self.order) >= target or not self.refill():
                     break
                 self.advance(rep, target)
-        if self.mode_code == 0 and self.tile is None and p.void_holes and bool(self.void_kind.any()):
-            # holes of voids where visible elements belong (not in the paper; see
-            # :mod:`strew.grow._void_holes`)
+        if self.mode_code == 0 and self.tile is None and ((p.void_holes and bool(self.void_kind.any())) or (p.open_holes and self._irregular())):
+            # holes of voids where visible elements belong, and holes of irregular
+            # exemplars without voids (not in the paper; see :mod:`strew.grow._void_holes`)
             for _ in range(p.refill_rounds):
                 if len(self.order) >= target or not fill_void_holes(self):
                     break
@@ -716,6 +720,28 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             if len(self.order) < target:
                 close_holes(self, target)
             self.rng = main
+
+    def _irregular(self) -> bool:
+        """An exemplar whose nearest-neighbour distances spread by at least
+        :data:`GAP_LATTICE_CV` of their mean (not lattice-like: see ``_pair_gaps``), with
+        no void kind and all kinds of one size (:func:`size_priority`).
+
+        Not in the paper (§5.4 never returns to a place): such exemplars grew holes
+        wider than any the exemplar has (long thin sticks: 9 % of the whole empty
+        circles wider than the exemplar's widest, q95 11 % wider, empty_circle
+        0.104-0.113 against 0.1), which :func:`strew.grow._void_holes.fill_void_holes`
+        fills as for voids (at most the exemplar's widest circle and least distance:
+        :func:`strew.grow._void_holes.reference_visible_gap`, which needs 30 whole
+        circles)."""
+        ex = self.ref.exemplar
+        # (kinds of several sizes are left out: two sizes at ratio 0.6 lost both seeds,
+        # nn[stone>stone] 0.075-0.096 against 0.075, pebbles put in the stones' holes)
+        if bool(self.void_kind.any()) or len(ex) < 4 or float(self.size_level.max()) > float(self.size_level.min()):
+            return False
+        from scipy.spatial import cKDTree
+
+        nn = cKDTree(ex.xy).query(ex.xy, k=2)[0][:, 1]
+        return bool(float(nn.std()) >= GAP_LATTICE_CV * float(nn.mean()))
 
     def refill(self) -> int:
         """Torus: seeds again at the empty slots of the placed elements' rings; how many.

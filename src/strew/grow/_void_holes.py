@@ -15,6 +15,12 @@ inside its frame, as the judge measures them) has its voids taken out and a seed
 the visible kind around it put at its centre; the seed is matched (§5.2) and placed
 (§5.4) as any other, and its ring's void seeds grow back with the rest of the growth.
 If the placement is refused, the voids are put back as they were.
+
+The same pass runs on irregular exemplars without voids (``GrowParams.open_holes``,
+``_Grower._irregular``: long thin sticks grew holes wider than any of the exemplar's,
+empty_circle 0.104-0.113 against 0.1), and on the hubs of clustered exemplars
+(``GrowParams.hub_holes``, :func:`strew.grow._clusters.hub_hole`); there no void is
+taken out, and a hub refused at its fitted position is tried at the circle's centre.
 """
 
 from __future__ import annotations
