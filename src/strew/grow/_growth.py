@@ -690,9 +690,11 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 if len(self.order) >= target or not self.refill():
                     break
                 self.advance(rep, target)
-        if self.mode_code == 0 and self.tile is None and ((p.void_holes and bool(self.void_kind.any())) or (p.open_holes and self._irregular())):
+        if self.mode_code == 0 and self.tile is None and ((p.void_holes and bool(self.void_kind.any())) or (p.open_holes and self.boundary is None and self.spray_area is None and self._irregular())):
             # holes of voids where visible elements belong, and holes of irregular
-            # exemplars without voids (not in the paper; see :mod:`strew.grow._void_holes`)
+            # exemplars without voids (not in the paper; see :mod:`strew.grow._void_holes`;
+            # not with boundary strokes or the spray tool: beyond a closed stroke or off
+            # the sprayed path a gap is no hole)
             for _ in range(p.refill_rounds):
                 if len(self.order) >= target or not fill_void_holes(self):
                     break
