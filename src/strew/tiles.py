@@ -245,7 +245,7 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     -------
     Arrangement
         The new elements whose centre lies in ``t`` or in a finished (lower-phase)
-        neighbour; ``meta`` holds only ``{"tile": index}``. On a torus the positions are
+        neighbour (pack: also a few just past a border with a later one, :func:`_ramp`); ``meta`` holds only ``{"tile": index}``. On a torus the positions are
         not wrapped (they stay next to ``t``, as its dependents expect them).
 
     Notes
@@ -314,9 +314,9 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
         later = ~keep  # centred in a later tile, which refills its side
         theirs = keep & (owner != t.index)  # on a finished neighbour's side
         keep[theirs] = _in_holes(arr.select(theirs), neighbours, links, context)
-        ramp = _ramp(arr, t, job)
-        meta["holes"] = _hole_discs(arr, later | (keep & ~ramp)).tolist()  # a list: meta compares with ==
-        keep &= ramp
+        ramp = _ramp(arr, t, job)  # in a later tile: the few kept just past the border
+        meta["holes"] = _hole_discs(arr, (later | keep) & ~ramp).tolist()  # a list: meta compares with ==
+        keep = (keep | later) & ramp
     keep = _keep_groups(arr, keep, t, job, links)
     arr = _own_parts(arr.select(keep))
     return arr.replace(meta=meta, region=None)
@@ -559,7 +559,7 @@ def _ramp(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     tile's elements of its kind, ``c``: its kind's compactness, the shape's area over
     its circumscribed disc's, ``c_max``: the most compact kind's of the tile; the draws come from
     the tile's second stream, ``SeedSequence(seed, spawn_key=(index, 1))``); those in a
-    later tile are dropped, as before. The later tile refills the holes.
+    later tile are kept only just past the border (below). The later tile refills the holes.
 
     Why (issue 19.4): dropping exactly the centres beyond the border left a rough front,
     nearly a wall, of a saturated packing. The later tile packed against it as against a
@@ -594,6 +594,22 @@ def _ramp(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     1.005, +-2 s 0.994, 0.996, 1.010, density 0.990 and 0.999; bars 1.011 [0.999,
     1.023], discs 0.991, density 1.000 (+-2 s 0.999, 1.001, 1.003). Within a kind (a
     range of scales: the demo's trees, 0.2-1.0) the weight is the area's, as before.
+
+    Past the border (centres in a later tile, which the tile used to drop whole) an
+    element is kept with the probability at the border, ``1 - w`` (``w``: the weights
+    above), falling linearly to 0 at ``_RAMP_PAST`` halos past ``t``'s rectangle: the
+    smallest of a kind (``w = 1``) never, the large ones mostly near the border. Why
+    (issue 19.4, strew demo's trees, scale 0.2-1.0): the later tile packs around its
+    finished neighbours' elements, and pack's Step 1 (§4.1, sparse Poisson-disk
+    placements at random scales, where nearly all large trees come from) samples the free
+    region shrunk by the largest element's radius (30, 2.3 spacings s), so that it placed
+    none next to the finished packing; Step 2 filled that band with small trees. Within
+    half an s past a border the trees of scale 0.6-0.8 and 0.8-1.0 were at 0.48 and 0.25
+    of the interior's density, the mean scale within 1 s at 0.966 (seed 1, python
+    benchmarks/pack_seam_profile.py), the density within 1 s at 1.032 [1.020, 1.042]
+    (seeds 1-4, python benchmarks/pack_seam_kinds.py --input trees --side 2400). The large
+    trees the finished tile placed there (its region reaches 1.25 halo past the border)
+    stand in for them; the later tile packs around them as around the rest.
     Sakurai & Miyata pack one region in one run; this hand-over between runs is ours.
     """
     later = _later_rects(t, job)
@@ -619,13 +635,22 @@ def _ramp(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     # refills any kind's hole, so it is dropped more (see the docstring)
     c = np.array([float(arr.shapes[n].area) / (math.pi * float(arr.shapes[n].radius) ** 2) for n in arr.kinds])
     w = w * (c[k] / np.max(c[np.unique(k)])) ** _RAMP_COMPACT_EXPONENT
-    return u >= (1.0 - np.minimum(d / job.halo, 1.0)) * w
+    thr = (1.0 - np.minimum(d / job.halo, 1.0)) * w
+    # past the border (centres in a later tile): kept with the probability at the border,
+    # 1 - w, falling to 0 at _RAMP_PAST halos past t's rectangle (see the docstring)
+    x0, y0, x1, y1 = t.rect
+    past = np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0))
+    band = _RAMP_PAST * job.halo
+    keep_past = (1.0 - w) * np.maximum(1.0 - past / band, 0.0) if band > 0 else np.zeros(len(arr))
+    return u >= np.where((d > 0) | (past <= 0), thr, 1.0 - keep_past)
 
 
 # the exponent of the area ratio in _ramp's drop probability
 _RAMP_SIZE_EXPONENT = 0.5
 # the exponent of the kinds' compactness ratio in _ramp's drop probability
 _RAMP_COMPACT_EXPONENT = 0.25
+# how far past its rectangle (in halos) a pack tile's ramp keeps elements in a later tile
+_RAMP_PAST = 0.25
 
 
 def _hole_discs(arr: Any, dropped: np.ndarray) -> np.ndarray:
