@@ -89,3 +89,25 @@ def test_step_never_overspreads():
     d1 = nn(st.pos)
     bad = moved & (d1 > bound) & (d1 > d0 + 1e-9)
     assert not bad.any(), int(bad.sum())
+
+
+def test_same_kind_nearest_matches_kdtree():
+    """The guard's grid kernel: the nearest other element of the same kind, exact up to
+    the radius, inf beyond it."""
+    from strew.synth import _kernels as K
+
+    rng = np.random.default_rng(5)
+    pos = rng.uniform(0, 200, (600, 2))
+    sk = rng.integers(0, 3, 600).astype(np.int64)
+    query = rng.choice(600, 150, replace=False).astype(np.int64)
+    for radius in (4.0, 15.0, 400.0):
+        got = K.same_kind_nearest(pos, sk, query, radius)
+        want = np.full(len(query), np.inf)
+        for c in range(3):
+            ids = np.flatnonzero(sk == c)
+            m = sk[query] == c
+            want[m] = cKDTree(pos[ids]).query(pos[query[m]], k=2)[0][:, 1]
+        want[want > radius] = np.inf
+        fin = np.isfinite(want)
+        assert np.array_equal(np.isinf(got), ~fin)
+        assert np.allclose(got[fin], want[fin], rtol=0, atol=1e-9)

@@ -585,9 +585,12 @@ def spread_bound(prep: Prepared) -> np.ndarray:
     return out
 
 
-def _same_kind_nn(pos: np.ndarray, sk: np.ndarray, at: np.ndarray) -> np.ndarray:
+def _same_kind_nn(pos: np.ndarray, sk: np.ndarray, at: np.ndarray, reach: float = np.inf) -> np.ndarray:
     """(len(at),) float: distance from each element ``at`` to its nearest other element
-    of the same kind ``sk`` (inf where it has none)."""
+    of the same kind ``sk`` (inf where it has none); with a finite ``reach``, inf also
+    where none is within ``reach`` (a uniform grid, :func:`_kernels.same_kind_nearest`)."""
+    if np.isfinite(reach):
+        return K.same_kind_nearest(pos, np.ascontiguousarray(sk, np.int64), np.ascontiguousarray(at, np.int64), float(reach))
     out = np.full(len(at), np.inf)
     for c in np.unique(sk[at]):
         ids = np.flatnonzero(sk == c)
@@ -628,16 +631,30 @@ def _undo_overspread(state: SynthState, moved: np.ndarray, old: np.ndarray, d_ol
     if not np.isfinite(bound).any():
         return 0, d_old
     sk = prep.skind[src]
+    reach = float(bound[np.isfinite(bound)].max())
+    before = state.pos.copy()
+    before[moved] = old
     if d_old is None:
-        before = state.pos.copy()
-        before[moved] = old
-        d_old = _same_kind_nn(before, sk, moved)
+        d_old = _same_kind_nn(before, sk, moved, reach)
     total = 0
     for _ in range(len(moved) + 1):
         live = np.flatnonzero(np.any(state.pos[moved] != old, axis=1) & np.isfinite(bound))
         if len(live) == 0:
             break
-        d_new = _same_kind_nn(state.pos, sk, moved[live])
+        d_new = _same_kind_nn(state.pos, sk, moved[live], reach)
+        # distances are exact up to ``reach`` (the largest bound); where both are
+        # beyond it, compare the exact ones
+        far = (d_new > reach) & (d_old[live] > reach)
+        if far.any():
+            at = live[far]
+            d_new[far] = _same_kind_nn(state.pos, sk, moved[at], 4.0 * reach)
+            d_old[at] = _same_kind_nn(before, sk, moved[at], 4.0 * reach)
+            # ... and beyond four times it, with a k-d tree over every element
+            farther = np.isinf(d_new[far]) | np.isinf(d_old[at])
+            if farther.any():
+                w = np.flatnonzero(far)[farther]
+                d_new[w] = _same_kind_nn(state.pos, sk, moved[live[w]])
+                d_old[live[w]] = _same_kind_nn(before, sk, moved[live[w]])
         bad = live[(d_new > bound[live]) & (d_new > d_old[live])]
         if len(bad) == 0:
             break
