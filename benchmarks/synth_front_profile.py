@@ -11,7 +11,23 @@ ratios (centres within 1, 2, 3 s of an inner border against the rest, as
 ``worlds_strips.py`` defines them, no intervals). ``--untiled``: the same on one
 untiled run (the control). CPU time per element of the runs.
 
-    python benchmarks/synth_front_profile.py [--exemplar two_sizes] [--seeds 1,2] [--untiled]
+    python benchmarks/synth_front_profile.py [--exemplar two_sizes] [--seeds 1,2] [--untiled] [--variant V]
+
+``--variant V`` measures a change of the hand-over made here, at run time (helper
+front19d; nothing in ``src`` changes, and the untiled run is never affected):
+
+- ``t4:F``: the finished tile hands over its small elements (bounding radius under half
+  the largest) only to centres within ``F D`` + their radius of its rectangle (``D`` the
+  band, one element diameter), and the later tile's region starts at ``F D``;
+- ``t5:F``: the finished tile keeps each element whose disc reaches into ``D + 2 F r``,
+  ``r`` the largest radius under half its own (its large elements out past the small
+  ones' envelope, so no dropped large element leaves a pocket in the kept small ones);
+- ``killsmall``: the later tile starts with the context's free-space points that only a
+  smaller class fills dead;
+- ``owed``: the later tile's ``owed_classes`` counts only its own elements (not the
+  context's);
+- ``front:K``: the later tile starts with only the context elements within ``K``
+  radii of its region on the horizon (growth from the front layer).
 
 Writes ``benchmarks/results/synth_front_profile.json``.
 """
@@ -34,6 +50,79 @@ TILE = 440.0
 REACH = 6.0
 
 
+def apply_variant(variant: str) -> None:
+    """Patch strew.tiles / strew.synth in this process for ``--variant`` (see above)."""
+    import strew.synth._context as C
+    import strew.synth._grow as G
+    import strew.tiles as T
+
+    name, _, arg = variant.partition(":")
+    if name in ("t4", "t5"):
+        f = float(arg)
+        within0, outside0 = T._within, T._outside_finished
+
+        def within(arr, rect, d):
+            r = T._radii(arr)
+            band = float(np.max(np.asarray(d) - r))  # run_tile passes band + radius
+            if name == "t4":
+                return within0(arr, rect, np.where(r < 0.25 * band, f * band, band) + r)
+            u = np.unique(r)
+            sm = np.array([float(u[u < 0.5 * v].max()) if (u < 0.5 * v).any() else 0.0 for v in u])
+            return within0(arr, rect, band + 2.0 * f * sm[np.searchsorted(u, r)] + r)
+
+        def outside(region, t, job, links, band=0.0):
+            return outside0(region, t, job, links, f * band if name == "t4" else band)
+
+        T._within, T._outside_finished = within, outside
+        return
+    if name == "owed":
+        owed0 = G.owed_classes
+
+        def owed(state):
+            if not state.fixed.any():
+                return owed0(state)
+            prep = state.prep
+            ncls = int(prep.size_class.max()) + 1
+            sel = prep.selected_elements & ~prep.void
+            per = np.bincount(prep.source[sel], minlength=len(prep.names)).astype(float)
+            unit = prep.weights / np.maximum(per, 1.0)
+            ex = np.bincount(prep.size_class[sel], weights=unit[prep.source[sel]], minlength=ncls)
+            src = state.src[~state.fixed]
+            src = src[sel[src]]
+            out = np.bincount(prep.size_class[src], weights=unit[prep.source[src]], minlength=ncls)
+            if out.sum() <= 0:
+                return np.ones(ncls, bool)
+            share = ex / ex.sum()
+            se = np.sqrt(share * (1.0 - share) / max(int(sel.sum()), 1))
+            return out / out.sum() < share + G.SHARE_MARGIN * se
+
+        G.owed_classes = owed
+        return
+    if name not in ("killsmall", "front"):
+        raise SystemExit(f"--variant: unknown {variant!r}")
+    grow0 = G.grow
+
+    def grow(state, **kw):
+        ctx = np.flatnonzero(state.fixed & ~state.ghost & state.horizon)
+        if len(ctx) and not getattr(state, "_front19d", False):
+            state._front19d = True
+            prep = state.prep
+            if name == "killsmall":
+                _fpos, fr, _fc, flag, _o = state.free_points(ctx)
+                big = int(prep.size_class.max())
+                state._alive[flag[fr < float(prep.r[prep.size_class == big].min())]] = False
+                G.update_free_space(state, ctx)
+            else:
+                import shapely
+
+                d = shapely.distance(state.region.geometry, shapely.points(state.pos[ctx]))
+                state._horizon[ctx[d > float(arg) * prep.r[state.src[ctx]]]] = False
+        return grow0(state, **kw)
+
+    G.grow = grow
+    assert C  # fill_with_context imports grow from _grow when it runs
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--exemplar", default="two_sizes")
@@ -41,12 +130,16 @@ def main() -> None:
     ap.add_argument("--side", type=float, default=2640.0)
     ap.add_argument("--untiled", action="store_true")
     ap.add_argument("--out", default=str(HERE / "results" / "synth_front_profile.json"))
+    ap.add_argument("--variant", default=None, help="a hand-over change measured here (see the module's docstring)")
     ap.add_argument("--quick", action="store_true", help="one seed, a 3 x 3-tile world (a check of the script)")
     args = ap.parse_args()
     if args.quick:
         args.seeds, args.side = args.seeds.split(",")[0], 3 * TILE
     import strew
     from strew.synth import synthesize
+
+    if args.variant:
+        apply_variant(args.variant)
     from strew.tiles import tiled
     from strew_testing import fidelity_suite
     from world_stats import signed_profile, strip_units
@@ -70,7 +163,7 @@ def main() -> None:
     far = np.concatenate([tot[:, :4], tot[:, -4:]], axis=1).mean(axis=1)
     rel = tot / far[:, None]
     names = ["all", *arr.kinds]
-    mode = "untiled" if args.untiled else "tiled"
+    mode = "untiled" if args.untiled else "tiled" + (f" variant {args.variant}" if args.variant else "")
     print(f"{args.exemplar} {mode} seeds {args.seeds} side {side:g}: {nel} el, {cpu:.1f} CPU s, {cpu / nel * 1e3:.3f} ms/el, s {s:.2f}")
     edges = (np.arange(-2 * REACH, 2 * REACH) * 0.5).tolist()
     print("bin from (s):", " ".join(f"{v:5.1f}" for v in edges))
@@ -87,7 +180,7 @@ def main() -> None:
     out = Path(args.out)
     out.parent.mkdir(exist_ok=True)
     res = {"benchmark": "synth_front_profile", "command": " ".join(["python benchmarks/synth_front_profile.py", *sys.argv[1:]]),
-           "exemplar": args.exemplar, "mode": mode, "elements": nel, "cpu_s": cpu, "spacing": float(s), "bin_from_s": edges,
+           "exemplar": args.exemplar, "mode": mode, "variant": args.variant, "cpu_ms_per_element": cpu / nel * 1e3, "elements": nel, "cpu_s": cpu, "spacing": float(s), "bin_from_s": edges,
            "relative_density": {n: row.tolist() for n, row in zip(names, rel)}, "strips": strips}
     out.write_text(json.dumps(res, indent=1) + "\n")
     print(f"wrote {out}")
