@@ -27,7 +27,9 @@ front19d; nothing in ``src`` changes, and the untiled run is never affected):
 - ``owed``: the later tile's ``owed_classes`` counts only its own elements (not the
   context's);
 - ``front:K``: the later tile starts with only the context elements within ``K``
-  radii of its region on the horizon (growth from the front layer).
+  radii of its region on the horizon (growth from the front layer);
+- ``noopt``: tiles with a context grow without the optimisation (§5.2); the first
+  phase's tiles, and so the finished side of every border, keep it.
 
 Writes ``benchmarks/results/synth_front_profile.json``.
 """
@@ -98,7 +100,7 @@ def apply_variant(variant: str) -> None:
 
         G.owed_classes = owed
         return
-    if name not in ("killsmall", "front"):
+    if name not in ("killsmall", "front", "noopt"):
         raise SystemExit(f"--variant: unknown {variant!r}")
     grow0 = G.grow
 
@@ -107,7 +109,11 @@ def apply_variant(variant: str) -> None:
         if len(ctx) and not getattr(state, "_front19d", False):
             state._front19d = True
             prep = state.prep
-            if name == "killsmall":
+            if name == "noopt":
+                import dataclasses
+
+                state.params = dataclasses.replace(state.params, optimize="none")
+            elif name == "killsmall":
                 _fpos, fr, _fc, flag, _o = state.free_points(ctx)
                 big = int(prep.size_class.max())
                 state._alive[flag[fr < float(prep.r[prep.size_class == big].min())]] = False
