@@ -1,5 +1,6 @@
 """Issue 13 point 1 (helper opt13d): the horizon optimisation must not push an element
-further from its nearest element of the same kind than its exemplar ever keeps them
+further from its nearest element of a kind than its exemplar keeps them (90th
+percentile)
 (``_optimize.spread_bound``, ``_undo_overspread``).
 
 two_sizes with stones the majority (``ratio=0.35, n_large=120, n_small=35``: the
@@ -34,14 +35,13 @@ def _out(ex, seed, scale=3.5):
     return synthesize(ex, Region.rectangle(scale * (x1 - x0), scale * (y1 - y0)), rng=seed, measure=False)
 
 
-def test_stone_majority_two_sizes_faithful():
-    """Fails at 550ea99 (nn[stone>stone] 0.080 / 0.075 against 0.0685)."""
-    variant = 7
-    ex = make_exemplar("two_sizes", rng=variant, **P4)
+@pytest.mark.parametrize("name,variant,kw", [("two_sizes", 7, P4), ("two_sizes", 1, {})])
+def test_two_sizes_faithful(name, variant, kw):
+    """Both fail at 550ea99: stones the majority (nn[stone>stone] 0.080 / 0.075 against
+    0.0685) and the default variant 1 (nn[pebble>pebble] 0.071 / 0.077 against 0.065)."""
+    ex = make_exemplar(name, rng=variant, **kw)
     for seed in (1, 2):
         rep = fidelity(ex, _out(ex, seed), eq5=False, local=False)
-        m = rep.metrics["nn[stone>stone]"]
-        assert m.passed, (variant, seed, m.value, m.tolerance)
         assert rep.faithful, (variant, seed, [k for k, v in rep.metrics.items() if v.applicable and not v.passed])
 
 
@@ -54,10 +54,13 @@ def test_spread_bound_is_the_exemplar_quantile():
     b = O.spread_bound(prep)
     for c in np.unique(prep.skind):
         m = np.flatnonzero(prep.skind == c)
-        d = cKDTree(prep.pos[m]).query(prep.pos[m], k=2)[0][:, 1]
-        # one bound per kind, between the kind's closest and farthest nearest neighbour
-        assert np.all(b[m] == b[m[0]])
-        assert d.min() <= b[m[0]] <= d.max()
+        for k in np.unique(prep.skind):
+            mk = np.flatnonzero(prep.skind == k)
+            d = cKDTree(prep.pos[mk]).query(prep.pos[m], k=2)[0]
+            d = d[:, 1] if k == c else d[:, 0]
+            # one bound per pair of kinds, between the closest and farthest nearest neighbour
+            assert np.all(b[m, k] == b[m[0], k])
+            assert d.min() <= b[m[0], k] <= d.max()
     # a one-kind exemplar (stones) and a near-regular one (rings) get no bound
     for name in ("stones", "rings"):
         p = new_state(make_exemplar(name), Region.rectangle(300, 300), rng=1).prep
@@ -66,7 +69,7 @@ def test_spread_bound_is_the_exemplar_quantile():
 
 def test_step_never_overspreads():
     """After any optimisation step, no moved element stands further than the bound from
-    its nearest same-kind neighbour unless it already did before the step."""
+    its nearest element of any kind unless it already did before the step."""
     ex = make_exemplar("two_sizes", rng=7, **P4)
     st = new_state(ex, Region.rectangle(400, 400), optimize="none", rng=3)
     fill(st, max_iterations=8)
@@ -76,10 +79,11 @@ def test_step_never_overspreads():
     old = st.pos.copy()
 
     def nn(pos):
-        d = np.full(len(pos), np.inf)
-        for c in np.unique(sk):
-            ids = np.flatnonzero(sk == c)
-            d[ids] = cKDTree(pos[ids]).query(pos[ids], k=2)[0][:, 1]
+        d = np.full(bound.shape, np.inf)
+        for b in np.unique(sk):
+            ids = np.flatnonzero(sk == b)
+            dd, j = cKDTree(pos[ids]).query(pos, k=2)
+            d[:, b] = np.where(ids[j[:, 0]] == np.arange(len(pos)), dd[:, 1], dd[:, 0])
         return d
 
     d0 = nn(old)
@@ -87,7 +91,7 @@ def test_step_never_overspreads():
     moved = np.any(st.pos != old, axis=1)
     assert moved.any()
     d1 = nn(st.pos)
-    bad = moved & (d1 > bound) & (d1 > d0 + 1e-9)
+    bad = moved & np.any((d1 > bound) & (d1 > d0 + 1e-9), axis=1)
     assert not bad.any(), int(bad.sum())
 
 
@@ -101,7 +105,7 @@ def test_same_kind_nearest_matches_kdtree():
     sk = rng.integers(0, 3, 600).astype(np.int64)
     query = rng.choice(600, 150, replace=False).astype(np.int64)
     for radius in (4.0, 15.0, 400.0):
-        got = K.same_kind_nearest(pos, sk, query, radius)
+        got = K.same_kind_nearest(pos, sk, query, radius, sk[query])
         want = np.full(len(query), np.inf)
         for c in range(3):
             ids = np.flatnonzero(sk == c)

@@ -966,10 +966,10 @@ def grid_neighborhoods(pos, query, radius):
 
 
 @numba.njit(cache=True, nogil=True)
-def same_kind_nearest(pos, sk, query, radius):
+def same_kind_nearest(pos, sk, query, radius, want):
     """(m,) float: distance from each element ``query[a]`` to its nearest other element
-    of the same kind ``sk`` within ``radius`` (inf where none is that near); a uniform
-    grid, for the optimisation's spread guard (``_optimize._undo_overspread``)."""
+    of kind ``want[a]`` (``sk``) within ``radius`` (inf where none is that near); a
+    uniform grid, for the optimisation's spread guard (``_optimize._undo_overspread``)."""
     n = pos.shape[0]
     m = query.shape[0]
     out = np.full(m, np.inf)
@@ -987,7 +987,7 @@ def same_kind_nearest(pos, sk, query, radius):
             for ay in range(max(gy - reach, 0), min(gy + reach + 1, ny)):
                 j = head[ax * ny + ay]
                 while j >= 0:
-                    if j != i and sk[j] == sk[i]:
+                    if j != i and sk[j] == want[a]:
                         dx = pos[j, 0] - pos[i, 0]
                         dy = pos[j, 1] - pos[i, 1]
                         d2 = dx * dx + dy * dy
@@ -996,4 +996,40 @@ def same_kind_nearest(pos, sk, query, radius):
                     j = nxt[j]
         if best < np.inf:
             out[a] = np.sqrt(best)
+    return out
+
+
+@numba.njit(cache=True, nogil=True)
+def nearest_by_kind(pos, sk, query, radius, n_kinds):
+    """(m, n_kinds) float: distance from each element ``query[a]`` to its nearest other
+    element of each kind (``sk``) within ``radius`` (inf where none is that near); one
+    pass over a uniform grid, for the optimisation's spread guard
+    (``_optimize._undo_overspread``)."""
+    n = pos.shape[0]
+    m = query.shape[0]
+    out = np.full((m, n_kinds), np.inf)
+    if n < 2 or m == 0:
+        return out
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(pos, float(radius), np.int64(m), np.bool_(False))
+    reach = int(np.ceil(radius / cell))
+    r2 = radius * radius
+    for a in range(m):
+        i = query[a]
+        gx = int((pos[i, 0] - x0) / cell)
+        gy = int((pos[i, 1] - y0) / cell)
+        for ax in range(max(gx - reach, 0), min(gx + reach + 1, nx)):
+            for ay in range(max(gy - reach, 0), min(gy + reach + 1, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    b = sk[j]
+                    if j != i and b >= 0 and b < n_kinds:
+                        dx = pos[j, 0] - pos[i, 0]
+                        dy = pos[j, 1] - pos[i, 1]
+                        d2 = dx * dx + dy * dy
+                        if d2 <= r2 and d2 < out[a, b]:
+                            out[a, b] = d2
+                    j = nxt[j]
+        for b in range(n_kinds):
+            if out[a, b] < np.inf:
+                out[a, b] = np.sqrt(out[a, b])
     return out
