@@ -138,8 +138,12 @@ def main() -> None:
     p.add_argument("--scales", default="10,50")
     p.add_argument("--seams", action="store_true")
     p.add_argument("--before", action="store_true", help="local windows without the exemplar's window noise (the rule before issue 13.2)")
-    p.add_argument("--json", default=str(ROOT / "benchmarks" / "results" / "fidelity_calibration.json"))
+    p.add_argument("--json", default=None, help="[benchmarks/results/fidelity_calibration.json; --quick: fidelity_calibration_quick.json]")
+    p.add_argument("--quick", action="store_true", help="one class (two_sizes unless --only), seed 0, scale 10 (a check of the script)")
     a = p.parse_args()
+    if a.quick:
+        a.only, a.seeds, a.scales = a.only or "two_sizes", "0", "10"
+    a.json = a.json or str(ROOT / "benchmarks" / "results" / f"fidelity_calibration{'_quick' if a.quick else ''}.json")
     if a.before:
         import strew._fidelity as F
 

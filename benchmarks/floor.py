@@ -41,7 +41,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from _runner import Bench, parse_args
+from _runner import SKIPPED, Bench, parse_args
 
 ROOT = Path(__file__).resolve().parents[1]
 CASES = ["pack:leaf", "pack:hook", "pack:concave3", "pack:stones-fit", "pack:periodic", "poisson", "ornament:dots", "ornament:flowers"]
@@ -100,11 +100,14 @@ def run(src: str, case: str, inner: int) -> dict:
 
 def main() -> None:
     def extra(p) -> None:
-        p.add_argument("--base", required=True, help="src folder of the baseline revision")
+        p.add_argument("--base", required="--quick" not in sys.argv, help="src folder of the baseline revision")
         p.add_argument("--only", default=None, help="cases, comma-separated: " + ",".join(CASES))
         p.add_argument("--inner", type=int, default=5, help="runs of the case inside each worker (their median counts)")
 
     args = parse_args(__doc__.splitlines()[0], extra)
+    if args.base is None:  # --quick without --base
+        print("floor: skipped: it times this tree against a baseline revision's src folder (--base PATH), which has no default")
+        sys.exit(SKIPPED)
     cases = args.only.split(",") if args.only else CASES
     bench = Bench("floor", "pack / ornament CPU s, working tree vs a baseline revision, same run", baseline=f"strew at {args.base}", json_path=args.json)
     new_src = str(ROOT / "src")

@@ -39,13 +39,17 @@ def _run(src: str, args: argparse.Namespace) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--base", required=True, help="the baseline tree's src folder")
+    ap.add_argument("--base", required="--quick" not in sys.argv, help="the baseline tree's src folder")
     ap.add_argument("--pattern", default="flowers")
     ap.add_argument("--side", type=float, default=240.0)
     ap.add_argument("--tile", type=float, default=120.0)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--quick", action="store_true", help="run_all.py's check: skips without --base")
     args = ap.parse_args()
+    if args.base is None:  # --quick without --base
+        print("ornament_tiles_cpu: skipped: it times this tree against a baseline tree's src folder (--base PATH), which has no default")
+        sys.exit(3)  # _runner.SKIPPED
     here = str(HERE.parent / "src")
     runs: dict[str, list[dict]] = {"base": [], "new": []}
     for _ in range(args.repeat):
