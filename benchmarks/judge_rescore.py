@@ -131,6 +131,9 @@ def verdict(F: Any, ex: Any, out: Any, suite: bool, seams: bool = False) -> dict
 
 
 def main() -> None:
+    if "--quick" in sys.argv[1:]:
+        print("judge_rescore: skipped: it needs the positional make|score, outputs made beforehand under --cache and a baseline src folder (--base), which have no honest default")
+        sys.exit(3)  # _runner.SKIPPED
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("what", choices=["make", "score"])
     p.add_argument("--sets", default=",".join(SETS))
@@ -139,6 +142,7 @@ def main() -> None:
     p.add_argument("--base", default="/work/main/src")
     p.add_argument("--json", default=str(ROOT / "benchmarks" / "results" / "judge_rescore.json"))
     p.add_argument("--free-support", default="", help="synth with strew.synth._prepare.FREE_SUPPORT set to this (its own cache entries)")
+    p.add_argument("--quick", action="store_true", help="run_all.py's check: skips (see main)")
     a = p.parse_args()
     global FREE
     if a.free_support:

@@ -10,7 +10,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from _runner import fidelity_suite  # noqa: E402
+from _runner import SKIPPED, fidelity_suite  # noqa: E402
 
 import strew.synth._grow as G  # noqa: E402
 from strew import Region  # noqa: E402
@@ -19,12 +19,16 @@ from strew.synth import fill, new_state  # noqa: E402
 
 
 def main() -> None:
+    if "--quick" in sys.argv[1:]:
+        print("seam13d_diag: skipped: a diagnostic of one class and seeds given as positional NAME SEEDS, which have no default")
+        sys.exit(SKIPPED)
     ap = argparse.ArgumentParser()
     ap.add_argument("name")
     ap.add_argument("seeds")
     ap.add_argument("--set", action="append", default=[])
     ap.add_argument("--render", default=None)
     ap.add_argument("--scale", type=float, default=7.07)
+    ap.add_argument("--quick", action="store_true", help="run_all.py's check: skips (the positional arguments have no default)")
     a = ap.parse_args()
     for kv in a.set:
         k, v = kv.split("=")

@@ -6,7 +6,10 @@ region their elements were copied from.
 """
 import sys, json, time, numpy as np
 sys.path.insert(0, __import__("os").path.dirname(__import__("os").path.abspath(__file__)))
-from _runner import fidelity_suite
+from _runner import SKIPPED, fidelity_suite
+if "--quick" in sys.argv[1:]:
+    print("synth_seams_seam50_diag: skipped: a diagnostic of one class and seed given as positional NAME SEED, which have no default")
+    sys.exit(SKIPPED)
 from strew import Region
 from strew.metrics import fidelity
 import strew.synth._grow as G, os
