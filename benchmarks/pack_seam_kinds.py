@@ -95,7 +95,11 @@ def main() -> None:
     ap.add_argument("--untiled", action="store_true", help="the control: one pack run over the world, the same lines")
     ap.add_argument("--set", action="append", default=[], help="NAME=VALUE: set strew.tiles.NAME (a variant)")
     ap.add_argument("--pool", action="append", default=[], help="a units .npz of an earlier run (same input, code) to pool the strips over")
+    ap.add_argument("--quick", action="store_true", help="seed 1, a 3 x 3-tile world, files tagged _quick (a check of the script)")
     args = ap.parse_args()
+    if args.quick:
+        args.seeds, args.tag = "1", args.tag + "_quick"
+        args.side = args.side or (2700.0 if args.input == "stones" else 900.0)
     for kv in args.set:
         name, _, val = kv.partition("=")
         setattr(T, name, type(getattr(T, name))(val) if not isinstance(getattr(T, name), bool) else val == "1")

@@ -247,8 +247,13 @@ def main() -> None:
     ap.add_argument("--untiled", action="store_true")
     ap.add_argument("--set", action="append", default=[], help="NAME=VALUE: set strew.tiles.NAME (a variant)")
     ap.add_argument("--analyze", nargs="+", default=None, help="tags of saved worlds to print")
+    ap.add_argument("--quick", action="store_true", help="seed 1, a 3 x 3-tile world, tag quick, then its analysis (a check of the script)")
     args = ap.parse_args()
-    if args.analyze:
+    if args.quick and not args.analyze:
+        args.seeds, args.side, args.tag = "1", 3 * args.tile, "quick"
+        make(args)
+        analyze([args.tag])
+    elif args.analyze:
         analyze(args.analyze)
     else:
         make(args)
