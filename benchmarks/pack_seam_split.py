@@ -57,7 +57,10 @@ def main() -> None:
     ap.add_argument("--disc", choices=("bbox", "origin"), default="origin",
                     help="hole discs about the dropped elements' positions with their bounding radius (strew.tiles), or their boxes' centres")
     ap.add_argument("--tag", default="")
+    ap.add_argument("--quick", action="store_true", help="3 seeds, tag _quick (a check of the script)")
     args = ap.parse_args()
+    if args.quick:
+        args.seeds, args.tag = 3, args.tag + "_quick"
     lib = load_shapes(example_path("pack", "trees.json"))
     kw = {"scale": (0.2, 1.0), "rotation": (-0.15, 0.15)}
     h, border, x_a, x_b = 60.0, 0.0, -220.0, 160.0

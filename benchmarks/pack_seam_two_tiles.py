@@ -75,8 +75,12 @@ def main() -> None:
     ap.add_argument("--width", default="halo", help="the ramp's width: 'halo', or 'Ns' (N of A's spacings, at most the halo)")
     ap.add_argument("--cut", type=float, default=None,
                     help="B drops its elements centred in A deeper than CUT ramp widths (strew.tiles._ramp: 1.25)")
-    ap.add_argument("--out", default=str(HERE / "results" / "pack_seam_two_tiles.json"))
+    ap.add_argument("--out", default=None, help="[benchmarks/results/pack_seam_two_tiles.json; --quick: pack_seam_two_tiles_quick.json]")
+    ap.add_argument("--quick", action="store_true", help="3 seeds, JSON to pack_seam_two_tiles_quick.json (a check of the script)")
     args = ap.parse_args()
+    if args.quick:
+        args.seeds = 3
+    args.out = args.out or str(HERE / "results" / f"pack_seam_two_tiles{'_quick' if args.quick else ''}.json")
     kw = json.loads(args.kw)
     reach = (1.25 if args.handover == "ramp" else 1.0) if args.reach is None else args.reach
     lib = {"bar": strew.Shape.rectangle(3, 1.5), "disc": strew.Shape.circle(1.0, 16)}
