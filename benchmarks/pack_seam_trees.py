@@ -2,7 +2,8 @@
 upright within +-0.15 rad), 2400 x 2400 in tiles of 300 (halo 60, about 4.8 mean
 spacings s), seed 1; ratios with tile-bootstrap intervals (tests/worlds/world_stats.py).
 
-Run: ``PYTHONPATH=<src> python benchmarks/pack_seam_trees.py`` (about 230 CPU s); prints
+Run: ``PYTHONPATH=<src> python benchmarks/pack_seam_trees.py [--quick]`` (about 230 CPU s; ``--quick``:
+900 x 900, about 20 s); prints
 the strips' density and kind-fraction ratios at +-1 s and +-2 s and the signed profile.
 The figures of h/packseam against d66b77e are in benchmarks/results/pack_seam_trees.json.
 
@@ -29,6 +30,8 @@ from strew.io import load_shapes
 from world_stats import strip_units, bootstrap_ratio, signed_profile, overlapping_pairs_across
 tr = load_shapes(example_path("pack", "trees.json"))
 W, T = 2400.0, 300.0
+if "--quick" in sys.argv[1:]:  # a check of the script: 3 x 3 tiles (wide intervals)
+    W = 3 * T
 U = {1.0: [], 2.0: []}; SC = 0
 t0 = time.process_time()
 for seed in (1,):
