@@ -68,8 +68,12 @@ def _directed(a: list[np.ndarray], b: list[np.ndarray]) -> float:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--base", required=True, type=Path, help="root of a checkout of the baseline revision")
+    ap.add_argument("--base", required="--quick" not in sys.argv, type=Path, help="root of a checkout of the baseline revision")
+    ap.add_argument("--quick", action="store_true", help="run_all.py's check: skips without --base")
     args = ap.parse_args()
+    if args.base is None:  # --quick without --base
+        print("program_import_svg_maps: skipped: it compares this tree's maps with a baseline checkout's (--base PATH), which has no default")
+        sys.exit(3)  # _runner.SKIPPED
     with tempfile.TemporaryDirectory() as tmp:
         old = _maps(args.base.resolve(), Path(tmp), "base")
         new = _maps(ROOT, Path(tmp), "new")

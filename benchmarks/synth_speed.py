@@ -23,7 +23,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from _runner import Bench, parse_args
+from _runner import SKIPPED, Bench, parse_args
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = {"rings": (300, 260), "grid": (400, 400), "stripes": (320, 320), "apples": (300, 300)}
@@ -62,10 +62,13 @@ def run(src: str, case: str) -> dict:
 
 def main() -> None:
     def extra(p) -> None:
-        p.add_argument("--base", required=True, help="src folder of the baseline revision")
+        p.add_argument("--base", required="--quick" not in sys.argv, help="src folder of the baseline revision")
         p.add_argument("--only", default=None, help="cases, comma-separated (grid, stripes, rings, apples, suite:NAME)")
 
     args = parse_args(__doc__.splitlines()[0], extra)
+    if args.base is None:  # --quick without --base
+        print("synth_speed: skipped: it times this tree against a baseline revision's src folder (--base PATH), which has no default")
+        sys.exit(SKIPPED)
     cases = args.only.split(",") if args.only else ["grid", "stripes", "rings", "apples"] + [f"suite:{n}" for n in SUITE]
     bench = Bench("synth_speed", "synth el/CPU s, working tree vs a baseline revision, same run", baseline=f"strew at {args.base}", json_path=args.json)
     new_src = str(ROOT / "src")
