@@ -7,8 +7,8 @@ the element count, the overlaps among 3 x 3 tiled copies (must be 0; ornament's 
 styles only) and the ratio of the edge strips' coverage (ornament: area of ink per area;
 program: edge length per area) to the interior's.
 
-Run: ``python benchmarks/periodic_ornament_program.py [--repeat N]``; writes
-``benchmarks/results/periodic_ornament_program.json``.
+Run: ``python benchmarks/periodic_ornament_program.py [--repeat N] [--quick]``; writes
+``benchmarks/results/periodic_ornament_program.json`` (``--quick``: one run, ``..._quick.json``).
 """
 
 from __future__ import annotations
@@ -51,7 +51,10 @@ def _strip_ratio(geom, w: float, h: float, band: float, measure) -> float:
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--quick", action="store_true", help="one timed run per case, JSON to periodic_ornament_program_quick.json (a check of the script)")
     args = ap.parse_args()
+    if args.quick:
+        args.repeat = 1
     rows = []
     cases = [
         ("ornament", "dots", "outline", (60.0, 45.0), 8.0),
@@ -85,7 +88,7 @@ def main() -> None:
         rows.append(row)
         print(f"{method:9s} {name:8s} {w:g}x{h:g}: plain {t_plain:.3f} s  periodic {t_per:.3f} s  ratio {t_per / t_plain:.2f}  "
               f"count {len(plain)} / {len(per)}  3x3 overlaps {cross}  edge strip / interior {ratio:.3f}")
-    out = ROOT / "results" / "periodic_ornament_program.json"
+    out = ROOT / "results" / f"periodic_ornament_program{'_quick' if args.quick else ''}.json"
     out.parent.mkdir(exist_ok=True)
     out.write_text(json.dumps({"repeat": args.repeat, "rows": rows}, indent=2) + "\n")
     print(f"wrote {out}")

@@ -26,6 +26,7 @@ if __name__ == "__main__":
     ap.add_argument("--only", default="stones", help="class names, comma-separated")
     ap.add_argument("--exemplar-seeds", default="9-14")
     ap.add_argument("--scale", type=float, default=3.5)
+    ap.add_argument("--quick", action="store_true", help="the default set only (a check of the script)")
     args = ap.parse_args()
     mk = fidelity_suite()
     seeds = ints(args.exemplar_seeds)
@@ -33,6 +34,7 @@ if __name__ == "__main__":
     print(f"strew from {strew.__file__}")
     for name in args.only.split(","):
         sets = [("default", {})] + [("varied", kw) for kw in VARIED.get(name, [])] + [("edge", kw) for kw in EDGE.get(name, [])]
+        sets = sets[:1] if args.quick else sets
         for i, (tag, kw) in enumerate(sets):
             marks = []
             for v in seeds:
