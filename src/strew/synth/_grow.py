@@ -322,6 +322,19 @@ REPEAT_MIN_INTERIOR = 60
 """Least interior elements of an exemplar for :func:`_prefer_unrepeated` to act."""
 
 
+def _ratio_test(costs: np.ndarray, cands: np.ndarray, sub: np.ndarray, slack: float | np.ndarray, c: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The acceptance rule's test (§5.1: cost <= c d_0 + slack) for the seeds ``sub``:
+    their costs ``cs`` and candidates ``cd`` (k,), the finite candidates ``fin``, the
+    best cost ``d0`` (len(sub),) and the candidates that pass ``okc`` (len(sub), k)."""
+    cs = costs[sub]
+    cd = cands[sub]
+    fin = np.isfinite(cs) & (cd >= 0)
+    d0 = np.where(fin, cs, np.inf).min(axis=1)
+    bound = c * d0 + np.broadcast_to(np.asarray(slack, float), costs.shape[:1])[sub]
+    okc = fin & (cs <= bound[:, None])
+    return cs, cd, fin, d0, okc
+
+
 def _prefer_unrepeated(state: SynthState, seeds: np.ndarray, cands: np.ndarray, costs: np.ndarray, slack: float | np.ndarray, c: float) -> None:
     """Put candidates already copied near a seed behind the others (in place on ``costs``).
 
@@ -498,12 +511,7 @@ def _prefer_balanced(state: SynthState, seeds: np.ndarray, cands: np.ndarray, co
     if not off.any():
         return
     sub, z = sub[off], z[off]
-    cs = costs[sub]
-    cd = cands[sub]
-    fin = np.isfinite(cs) & (cd >= 0)
-    d0 = np.where(fin, cs, np.inf).min(axis=1)
-    bound = c * d0 + np.broadcast_to(np.asarray(slack, float), costs.shape[:1])[sub]
-    okc = fin & (cs <= bound[:, None])
+    cs, cd, fin, d0, okc = _ratio_test(costs, cands, sub, slack, c)
     two = okc.sum(axis=1) > 1  # something to reorder
     if not two.any():
         return
@@ -619,12 +627,7 @@ def _prefer_near_large(state: SynthState, seeds: np.ndarray, cands: np.ndarray, 
     if not far.any():
         return
     sub = sub[far]
-    cs = costs[sub]
-    cd = cands[sub]
-    fin = np.isfinite(cs) & (cd >= 0)
-    d0 = np.where(fin, cs, np.inf).min(axis=1)
-    bound = c * d0 + np.broadcast_to(np.asarray(slack, float), costs.shape[:1])[sub]
-    okc = fin & (cs <= bound[:, None])
+    cs, cd, fin, d0, okc = _ratio_test(costs, cands, sub, slack, c)
     # candidates whose copy holds a proposal of the largest class that passed the
     # static checks (free space, domain, collisions with the output): it can be placed
     k = costs.shape[1]
