@@ -30,6 +30,14 @@ front19d; nothing in ``src`` changes, and the untiled run is never affected):
   radii of its region on the horizon (growth from the front layer);
 - ``noopt``: tiles with a context grow without the optimisation (§5.2); the first
   phase's tiles, and so the finished side of every border, keep it.
+- ``holes:F[:G]`` (helper holes19e): the finished tile hands over the discs of the
+  elements it dropped whose bounding radius is at least ``G`` (default 0.5) of its
+  largest and whose centre lies within ``D + F D`` of its rectangle (``D`` the band) in
+  ``meta["synth_holes"]`` (position, radius, kind); the later tile puts a copy of that
+  kind at each disc centre before it grows (one at a time, skipped where it would
+  collide or lies outside its region), matched to its neighbourhood as the context is
+  (Eq. 1) and a seed of the growth like any horizon element (§5.1): its large elements
+  get the dropped ones' places before small ones fill them.
 
 Writes ``benchmarks/results/synth_front_profile.json``.
 """
@@ -49,6 +57,7 @@ sys.path.insert(0, str(HERE.parent / "tests"))
 sys.path.insert(0, str(HERE.parent / "tests" / "worlds"))
 
 TILE = 440.0
+HOLES = {"handed": 0, "seeded": 0}  # --variant holes: discs handed over, copies put there
 REACH = 6.0
 
 
@@ -59,6 +68,9 @@ def apply_variant(variant: str) -> None:
     import strew.tiles as T
 
     name, _, arg = variant.partition(":")
+    if name == "holes":
+        _holes_variant(*(float(v) for v in arg.split(":")))
+        return
     if name in ("t4", "t5"):
         f = float(arg)
         within0, outside0 = T._within, T._outside_finished
@@ -129,6 +141,98 @@ def apply_variant(variant: str) -> None:
     assert C  # fill_with_context imports grow from _grow when it runs
 
 
+def _holes_variant(f: float, g: float = 0.5) -> None:
+    """``--variant holes:F[:G]`` (see the module's docstring)."""
+    import strew.synth._context as C
+    import strew.tiles as T
+
+    run0, keep0, fill0 = T.run_tile, T._keep_groups, C.fill_with_context
+    box: dict = {}
+
+    def keep_groups(arr, keep, t, job, links):
+        box["arr"], box["keep"] = arr, keep.copy()
+        return keep0(arr, keep, t, job, links)
+
+    def run_tile(job, t, *neighbours):
+        if job.method != "synth":
+            return run0(job, t, *neighbours)
+        links = T._links(t, job.grid[0], job.grid[1], job.torus)
+        holes = []
+        for n, shifts in zip(neighbours, links.values()):
+            h = n.meta.get("synth_holes", ())
+            for dx, dy in shifts:
+                holes += [(x + dx, y + dy, r, k) for x, y, r, k in h]
+        box.clear()
+        box["holes"] = holes
+        out = run0(job, t, *neighbours)
+        arr, keep = box.pop("arr", None), box.pop("keep", None)
+        if arr is None or not len(arr):
+            return out
+        band = min(2.0 * T._input_extent(job), job.halo)
+        r = T._radii(arr)
+        drop = ~keep & (r >= g * float(r.max())) & T._within(arr, t.rect, band + f * band)
+        names = np.asarray(arr.kinds, dtype=object)[np.asarray(arr.kind, np.int64)]
+        meta = dict(out.meta)
+        HOLES["handed"] += int(drop.sum())
+        meta["synth_holes"] = [[float(arr.x[i]), float(arr.y[i]), float(r[i]), str(names[i])] for i in np.flatnonzero(drop)]
+        return out.replace(meta=meta)
+
+    def fill_with_context(state, **kwargs):
+        holes = box.get("holes") or []
+        if holes:
+            _seed_holes(state, holes)
+        return fill0(state, **kwargs)
+
+    T.run_tile, T._keep_groups, C.fill_with_context = run_tile, keep_groups, fill_with_context
+
+
+def _seed_holes(state, holes) -> int:
+    """Copies of the holes' kinds at their centres, matched (Eq. 1), as unfixed horizon elements."""
+    from strew.synth._optimize import match_neighborhoods
+
+    prep = state.prep
+    names = list(prep.shapes)
+    sel = prep.selected_elements & ~prep.void
+    interior = np.zeros(len(prep.kind), bool)
+    for ids in prep.interior:
+        interior[ids] = True
+    xy = np.array([h[:2] for h in holes], float)
+    kn = [h[3] for h in holes]
+    ok = state.in_domain(xy) & np.array([k in names for k in kn])
+    xy = xy[ok]
+    kn = [k for k, o in zip(kn, ok) if o]
+    if not len(xy):
+        return 0
+    pools = {}
+    for nm in set(kn):
+        of = sel & (prep.kind == names.index(nm))
+        pool = np.flatnonzero(of & interior)
+        pools[nm] = pool if len(pool) else np.flatnonzero(of)
+    keepk = np.array([len(pools[k]) > 0 for k in kn])
+    xy = xy[keepk]
+    kn = [k for k, o in zip(kn, keepk) if o]
+    if not len(xy):
+        return 0
+    first = np.array([pools[k][0] for k in kn], np.int64)
+    idx = state.add(first, xy, horizon=True, fixed=False)
+    width = max(len(pools[k]) for k in kn)
+    cands = np.full((len(kn), width), -1, np.int64)
+    for row, k in enumerate(kn):
+        cands[row, : len(pools[k])] = pools[k]
+    best, *_ = match_neighborhoods(state, idx, None, candidates=cands)
+    src = np.where(best >= 0, best, first)
+    mask = np.zeros(state.n, bool)
+    mask[idx] = True
+    state.remove(mask)
+    added = 0
+    for p, s in zip(xy, src):
+        if not state.conflicts(p[None], np.array([s]))[0]:
+            state.add(np.array([s]), p[None], horizon=True, fixed=False)
+            added += 1
+    HOLES["seeded"] += added
+    return added
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--exemplar", default="two_sizes")
@@ -183,11 +287,15 @@ def main() -> None:
         kinds = {n: float((a / sk.sum()) / (b / ik.sum())) for n, a, b in zip(arr.kinds, sk, ik)}
         strips[f"{m}s"] = {"density_ratio": float(d), "kind_fraction_ratio": kinds}
         print(f"strips +-{m}s: density {d:.3f}; kinds " + ", ".join(f"{n} {v:.3f}" for n, v in kinds.items()))
+    if args.variant and args.variant.startswith("holes"):
+        print(f"holes: {HOLES['handed']} discs handed over, {HOLES['seeded']} copies seeded")
     out = Path(args.out)
     out.parent.mkdir(exist_ok=True)
     res = {"benchmark": "synth_front_profile", "command": " ".join(["python benchmarks/synth_front_profile.py", *sys.argv[1:]]),
            "exemplar": args.exemplar, "mode": mode, "variant": args.variant, "cpu_ms_per_element": cpu / nel * 1e3, "elements": nel, "cpu_s": cpu, "spacing": float(s), "bin_from_s": edges,
            "relative_density": {n: row.tolist() for n, row in zip(names, rel)}, "strips": strips}
+    if args.variant and args.variant.startswith("holes"):
+        res["holes"] = dict(HOLES)
     out.write_text(json.dumps(res, indent=1) + "\n")
     print(f"wrote {out}")
 
