@@ -265,7 +265,9 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     later tile at random, the more the nearer and the smaller (:func:`_ramp`), so that the
     later tile refills scattered holes instead of packing against a flat front; it hands
     the dropped elements on in ``meta["holes"]``, and the later tile keeps on its side
-    only what it placed in those holes (:func:`_in_holes`).
+    only what it placed in those holes (:func:`_in_holes`). synth hands on its dropped
+    large elements near ``t`` in ``meta["synth_holes"]``, and the later tile seeds a copy
+    at each (``_SYNTH_HOLES_LARGE``).
     """
     from ._method import spec
     from .arrangement import concat
@@ -301,6 +303,7 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     band = min(2.0 * _input_extent(job), job.halo) if job.method in _GROWS_FROM_CONTEXT else 0.0
     if context is not None and job.method in _GROWS_FROM_CONTEXT:
         region = _outside_finished(region, t, job, links, band)
+        context = context.with_meta(synth_holes=_synth_holes_in(neighbours, links))
     arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **_HANDS_ON.get(job.method, ({},))[0], **job.params)
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
@@ -310,6 +313,8 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
         # tiles within 1.5 diameters of t, which see it in t's border band
         keep |= _within(arr, t.rect, band + _radii(arr))
     meta: dict[str, Any] = {"tile": t.index}
+    if job.method in _GROWS_FROM_CONTEXT and len(arr):
+        meta["synth_holes"] = _synth_holes_out(arr, keep, t.rect, band)
     if job.method in _HANDS_OVER_BY_RAMP and len(arr):
         later = ~keep  # centred in a later tile, which refills its side
         theirs = keep & (owner != t.index)  # on a finished neighbour's side
@@ -343,6 +348,34 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
 # later tile still meets a frozen edge there, only a smoother one.
 # pack fills gaps by design and keeps its neighbours' strip instead
 _GROWS_FROM_CONTEXT = ("synth",)
+
+
+# synth's hand-over of its dropped large elements (helper holes19e): the later tile's
+# small elements filled the places of the finished tile's dropped large ones just past
+# the kept band before a large one landed there (two_sizes, +-3s strips: stones 0.962x,
+# three_sizes large 0.956x). The finished tile hands over the discs of its dropped
+# elements of at least half its largest bounding radius, centred within two bands of
+# its rectangle (meta["synth_holes"]); the later tile puts a copy of each one's kind at
+# its centre before growing (strew.synth._context.add_holes).
+# python benchmarks/synth_front_profile.py [--exemplar three_sizes] --seeds 1,2,3,4
+# (the same as --variant holes:1 on the code before)
+_SYNTH_HOLES_LARGE = 0.5  # of the tile's largest bounding radius
+_SYNTH_HOLES_REACH = 2.0  # bands from the rectangle
+
+
+def _synth_holes_out(arr: Any, keep: np.ndarray, rect: tuple[float, float, float, float], band: float) -> list[list[Any]]:
+    """synth: ``[x, y, r, kind name]`` of the large elements ``keep`` drops near ``rect``
+    (see ``_SYNTH_HOLES_LARGE``); a list: meta compares with ==."""
+    r = _radii(arr)
+    drop = ~keep & (r >= _SYNTH_HOLES_LARGE * float(r.max())) & _within(arr, rect, _SYNTH_HOLES_REACH * band)
+    names = np.asarray(arr.kinds, dtype=object)[np.asarray(arr.kind, np.int64)]
+    return [[float(arr.x[i]), float(arr.y[i]), float(r[i]), str(names[i])] for i in np.flatnonzero(drop)]
+
+
+def _synth_holes_in(neighbours: tuple[Any, ...], links: Mapping[int, list[tuple[float, float]]]) -> list[list[Any]]:
+    """synth: the finished neighbours' ``meta["synth_holes"]``, moved next to the tile across the wrap."""
+    return [[x + dx, y + dy, r, k] for n, shifts in zip(neighbours, links.values())
+            for dx, dy in shifts for x, y, r, k in n.meta.get("synth_holes", ())]
 
 
 def _extent(arr: Any) -> float:

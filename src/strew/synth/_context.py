@@ -19,7 +19,7 @@ import shapely
 from ..arrangement import Arrangement
 from ._state import SynthState
 
-__all__ = ["add_context", "fill_with_context"]
+__all__ = ["add_context", "add_holes", "fill_with_context"]
 
 
 def add_context(state: SynthState, context: Arrangement, region_geometry=None) -> np.ndarray:
@@ -88,7 +88,53 @@ def add_context(state: SynthState, context: Arrangement, region_geometry=None) -
     ok = best >= 0
     if ok.any():
         state.reassign(idx[ok], best[ok])
+    add_holes(state, context.meta.get("synth_holes") or [], pools)
     return idx
+
+
+def add_holes(state: SynthState, holes: list, pools: dict[str, np.ndarray]) -> int:
+    """Put a copy of each hole's kind at its centre, as an output element that seeds growth.
+
+    ``holes`` are ``[x, y, r, kind name]`` of large elements a finished neighbouring tile
+    made and dropped (``strew.tiles``, ``meta["synth_holes"]``). Each copy is given the
+    exemplar element of its kind (from ``pools``) whose neighbourhood is most like its
+    own (Eq. 1), as the context is, then added one at a time where it collides with
+    nothing and lies in the region; it is a horizon element like any other (§5.1), not
+    fixed. Not in the paper (§5.4 grows one region from one seed): without it the later
+    tile's small elements filled those places first (see ``strew.tiles``).
+
+    Returns
+    -------
+    int
+        Copies added.
+    """
+    if not holes:
+        return 0
+    xy = np.array([h[:2] for h in holes], float)
+    names = [str(h[3]) for h in holes]
+    ok = np.array([nm in pools for nm in names]) & state.in_domain(xy)
+    if not ok.any():
+        return 0
+    xy = xy[ok]
+    names = [nm for nm, o in zip(names, ok) if o]
+    first = np.array([pools[nm][0] for nm in names], np.int64)
+    idx = state.add(first, xy, horizon=True, fixed=False)
+    cands = np.full((len(names), max(len(pools[nm]) for nm in names)), -1, np.int64)
+    for row, nm in enumerate(names):
+        cands[row, : len(pools[nm])] = pools[nm]
+    from ._optimize import match_neighborhoods
+
+    best, *_ = match_neighborhoods(state, idx, None, candidates=cands)
+    src = np.where(best >= 0, best, first)
+    gone = np.zeros(state.n, bool)
+    gone[idx] = True
+    state.remove(gone)
+    added = 0
+    for p, s in zip(xy, src):
+        if not state.conflicts(p[None], np.array([s]))[0]:
+            state.add(np.array([s]), p[None], horizon=True, fixed=False)
+            added += 1
+    return added
 
 
 def fill_with_context(state: SynthState, **kwargs) -> int:
