@@ -37,7 +37,8 @@ front19d; nothing in ``src`` changes, and the untiled run is never affected):
   kind at each disc centre before it grows (one at a time, skipped where it would
   collide or lies outside its region), matched to its neighbourhood as the context is
   (Eq. 1) and a seed of the growth like any horizon element (§5.1): its large elements
-  get the dropped ones' places before small ones fill them.
+  get the dropped ones' places before small ones fill them. In ``src`` since 816dae8
+  (``strew.tiles._SYNTH_HOLES_LARGE``) with F 1, G 0.5: measure it on the code before.
 
 Writes ``benchmarks/results/synth_front_profile.json``.
 """
