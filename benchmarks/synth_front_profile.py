@@ -37,8 +37,10 @@ front19d; nothing in ``src`` changes, and the untiled run is never affected):
   kind at each disc centre before it grows (one at a time, skipped where it would
   collide or lies outside its region), matched to its neighbourhood as the context is
   (Eq. 1) and a seed of the growth like any horizon element (§5.1): its large elements
-  get the dropped ones' places before small ones fill them. In ``src`` since 816dae8
-  (``strew.tiles._SYNTH_HOLES_LARGE``) with F 1, G 0.5: measure it on the code before.
+  get the dropped ones' places before small ones fill them. In ``src`` since 9defcf9
+  (``strew.tiles._SYNTH_HOLES_REACH`` = 1 + F = 2, ``_SYNTH_HOLES_LARGE`` = G = 0.5):
+  the variant sets those two and counts the discs and copies;
+- ``noholes``: no hand-over of dropped large elements (the code before 9defcf9).
 
 Writes ``benchmarks/results/synth_front_profile.json``.
 """
@@ -47,6 +49,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 import time
 from pathlib import Path
@@ -71,6 +74,9 @@ def apply_variant(variant: str) -> None:
     name, _, arg = variant.partition(":")
     if name == "holes":
         _holes_variant(*(float(v) for v in arg.split(":")))
+        return
+    if name == "noholes":
+        _holes_variant(1.0, math.inf)
         return
     if name in ("t4", "t5"):
         f = float(arg)
@@ -143,95 +149,27 @@ def apply_variant(variant: str) -> None:
 
 
 def _holes_variant(f: float, g: float = 0.5) -> None:
-    """``--variant holes:F[:G]`` (see the module's docstring)."""
+    """``--variant holes:F[:G]`` (see the module's docstring): src's hand-over
+    (``strew.tiles._synth_holes_out``, ``strew.synth._context.add_holes``) with reach
+    ``1 + F`` bands and size cut ``G``, counting the discs and copies; ``G`` inf
+    (``noholes``) hands over none."""
     import strew.synth._context as C
     import strew.tiles as T
 
-    run0, keep0, fill0 = T.run_tile, T._keep_groups, C.fill_with_context
-    box: dict = {}
+    T._SYNTH_HOLES_REACH, T._SYNTH_HOLES_LARGE = 1.0 + f, g
+    out0, add0 = T._synth_holes_out, C.add_holes
 
-    def keep_groups(arr, keep, t, job, links):
-        box["arr"], box["keep"] = arr, keep.copy()
-        return keep0(arr, keep, t, job, links)
+    def holes_out(*a):
+        h = out0(*a)
+        HOLES["handed"] += len(h)
+        return h
 
-    def run_tile(job, t, *neighbours):
-        if job.method != "synth":
-            return run0(job, t, *neighbours)
-        links = T._links(t, job.grid[0], job.grid[1], job.torus)
-        holes = []
-        for n, shifts in zip(neighbours, links.values()):
-            h = n.meta.get("synth_holes", ())
-            for dx, dy in shifts:
-                holes += [(x + dx, y + dy, r, k) for x, y, r, k in h]
-        box.clear()
-        box["holes"] = holes
-        out = run0(job, t, *neighbours)
-        arr, keep = box.pop("arr", None), box.pop("keep", None)
-        if arr is None or not len(arr):
-            return out
-        band = min(2.0 * T._input_extent(job), job.halo)
-        r = T._radii(arr)
-        drop = ~keep & (r >= g * float(r.max())) & T._within(arr, t.rect, band + f * band)
-        names = np.asarray(arr.kinds, dtype=object)[np.asarray(arr.kind, np.int64)]
-        meta = dict(out.meta)
-        HOLES["handed"] += int(drop.sum())
-        meta["synth_holes"] = [[float(arr.x[i]), float(arr.y[i]), float(r[i]), str(names[i])] for i in np.flatnonzero(drop)]
-        return out.replace(meta=meta)
+    def add_holes(*a):
+        n = add0(*a)
+        HOLES["seeded"] += n
+        return n
 
-    def fill_with_context(state, **kwargs):
-        holes = box.get("holes") or []
-        if holes:
-            _seed_holes(state, holes)
-        return fill0(state, **kwargs)
-
-    T.run_tile, T._keep_groups, C.fill_with_context = run_tile, keep_groups, fill_with_context
-
-
-def _seed_holes(state, holes) -> int:
-    """Copies of the holes' kinds at their centres, matched (Eq. 1), as unfixed horizon elements."""
-    from strew.synth._optimize import match_neighborhoods
-
-    prep = state.prep
-    names = list(prep.shapes)
-    sel = prep.selected_elements & ~prep.void
-    interior = np.zeros(len(prep.kind), bool)
-    for ids in prep.interior:
-        interior[ids] = True
-    xy = np.array([h[:2] for h in holes], float)
-    kn = [h[3] for h in holes]
-    ok = state.in_domain(xy) & np.array([k in names for k in kn])
-    xy = xy[ok]
-    kn = [k for k, o in zip(kn, ok) if o]
-    if not len(xy):
-        return 0
-    pools = {}
-    for nm in set(kn):
-        of = sel & (prep.kind == names.index(nm))
-        pool = np.flatnonzero(of & interior)
-        pools[nm] = pool if len(pool) else np.flatnonzero(of)
-    keepk = np.array([len(pools[k]) > 0 for k in kn])
-    xy = xy[keepk]
-    kn = [k for k, o in zip(kn, keepk) if o]
-    if not len(xy):
-        return 0
-    first = np.array([pools[k][0] for k in kn], np.int64)
-    idx = state.add(first, xy, horizon=True, fixed=False)
-    width = max(len(pools[k]) for k in kn)
-    cands = np.full((len(kn), width), -1, np.int64)
-    for row, k in enumerate(kn):
-        cands[row, : len(pools[k])] = pools[k]
-    best, *_ = match_neighborhoods(state, idx, None, candidates=cands)
-    src = np.where(best >= 0, best, first)
-    mask = np.zeros(state.n, bool)
-    mask[idx] = True
-    state.remove(mask)
-    added = 0
-    for p, s in zip(xy, src):
-        if not state.conflicts(p[None], np.array([s]))[0]:
-            state.add(np.array([s]), p[None], horizon=True, fixed=False)
-            added += 1
-    HOLES["seeded"] += added
-    return added
+    T._synth_holes_out, C.add_holes = holes_out, add_holes
 
 
 def main() -> None:
