@@ -15,28 +15,15 @@ import hashlib
 
 import numpy as np
 import pytest
-import shapely
 from scipy.spatial import cKDTree
 
 from strew import Region
-from strew.fields import flow_field
 from strew.grow import analyze
 from strew.grow._growth import GrowParams, grow_reference
 
 from strew_testing import fidelity_suite
 
-SP = 12.0  # the hexagonal exemplar's spacing
-
-
-def _shares(xy: np.ndarray, region: Region) -> tuple[float, float]:
-    """Of the interior elements (over 2 spacings inside): the share with six neighbours
-    at 0.85-1.15 spacings and none nearer, and the share with fewer than six within 1.15
-    spacings and none nearer (stretched)."""
-    tree = cKDTree(xy)
-    inner = np.flatnonzero(region.distance_to_boundary(xy) > 2 * SP)
-    hi = np.array([len(tree.query_ball_point(xy[i], 1.15 * SP)) - 1 for i in inner])
-    lo = np.array([len(tree.query_ball_point(xy[i], 0.85 * SP)) - 1 for i in inner])
-    return float(((hi == 6) & (lo == 0)).mean()), float(((hi < 6) & (lo == 0)).mean())
+from test_grow_flow_gaps import SP, _inside_without_overlap, _quarter_circles, _shares  # noqa: E402
 
 
 def _widest_gap(xy: np.ndarray, region: Region) -> float:
@@ -45,15 +32,6 @@ def _widest_gap(xy: np.ndarray, region: Region) -> float:
     x0, y0, x1, y1 = region.bounds
     g = np.mgrid[x0 + 2 * SP : x1 - 2 * SP : 3.0, y0 + 2 * SP : y1 - 2 * SP : 3.0].reshape(2, -1).T
     return float(cKDTree(xy).query(g)[0].max() / SP)
-
-
-def _inside_without_overlap(out, region: Region) -> None:
-    assert np.all(region.contains_geometry(out.geometry, tolerance=1e-9))
-    geoms = np.asarray(out.geometry)
-    i, j = shapely.STRtree(geoms).query(geoms, predicate="intersects")
-    keep = i < j
-    inter = shapely.area(shapely.intersection(geoms[i[keep]], geoms[j[keep]]))
-    assert inter.max(initial=0.0) < 1e-6 * float(shapely.area(geoms[0]))
 
 
 def _digest(out) -> str:
@@ -68,8 +46,7 @@ def hex_ref():
 @pytest.mark.slow
 def test_flow_stretched_lattice_gets_elements_and_keeps_its_six_neighbours(hex_ref):
     a = 30 * SP
-    th = np.linspace(0, np.pi / 2, 30)
-    field = flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (a / 3, a * 5 / 6)])
+    field = _quarter_circles(a)
     region = Region.rectangle(a, a)
     kw = dict(region=region, mode="flow", flow=field, start=(2 * SP, 2 * SP))
     out = grow_reference(hex_ref, GrowParams(**kw), rng=1)

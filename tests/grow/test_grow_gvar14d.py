@@ -20,6 +20,7 @@ from scipy.spatial import Delaunay, cKDTree
 from strew_testing import fidelity_suite
 
 from strew import Region
+from strew._kernels.geometry import circumcircles
 from strew.grow import grow
 from strew.grow._clusters import hub_hole
 from strew.metrics import fidelity, overlaps
@@ -33,13 +34,7 @@ def _region(ex, side):
 def _whole_circles(p, region):
     """Circumradii of the points' Delaunay triangles whose circle lies inside ``region``."""
     tri = Delaunay(p)
-    a, b, c = (p[tri.simplices[:, q]] for q in range(3))
-    d = 2 * (a[:, 0] * (b[:, 1] - c[:, 1]) + b[:, 0] * (c[:, 1] - a[:, 1]) + c[:, 0] * (a[:, 1] - b[:, 1]))
-    s = lambda v: (v**2).sum(axis=1)  # noqa: E731
-    ux = (s(a) * (b[:, 1] - c[:, 1]) + s(b) * (c[:, 1] - a[:, 1]) + s(c) * (a[:, 1] - b[:, 1])) / d
-    uy = (s(a) * (c[:, 0] - b[:, 0]) + s(b) * (a[:, 0] - c[:, 0]) + s(c) * (b[:, 0] - a[:, 0])) / d
-    r = np.hypot(a[:, 0] - ux, a[:, 1] - uy)
-    cen = np.c_[ux, uy]
+    cen, r, _ = circumcircles(*(p[tri.simplices[:, q]] for q in range(3)))
     inner = region.contains(cen) & (region.distance_to_boundary(cen) >= r)
     return r[inner]
 
