@@ -368,8 +368,62 @@ def _own_jitter(state: SynthState, h: np.ndarray, center: np.ndarray, hp: np.nda
     src = state.src
     ok = (e2 >= 0) & (prep.source[src[hp]] == prep.source[center]) & (prep.source[src[h]] == prep.source[center])
     out = off.copy()
-    out[ok] += (jit[src[hp[ok]]] - jit[e2[ok]]) - (jit[src[h[ok]]] - jit[center[ok]])
+    a, b = src[h[ok]], src[hp[ok]]
+    own = jit[b] - jit[a]
+    # A pair whose sources are not the exemplar's pair at this bond (a seam between two
+    # copies) joins two jitters the exemplar never put side by side; where region growing
+    # repeats a copy, the same extreme pair repeats down a column. Its relative jitter is
+    # kept within the exemplar's own bonds' (RELATIVE_JITTER_QUANTILE).
+    bound, spacing = relative_jitter_bound(prep)
+    seam = np.hypot(*((prep.pos[b] - prep.pos[a]) - off[ok]).T) > SEAM_OFFSET * spacing[a]
+    if seam.any():
+        cap = bound[a[seam]]
+        m = np.hypot(own[seam, 0], own[seam, 1])
+        own[seam] *= (np.minimum(m, cap) / np.maximum(m, 1e-300))[:, None]
+    out[ok] += own - (jit[e2[ok]] - jit[center[ok]])
     return out
+
+
+RELATIVE_JITTER_QUANTILE = 0.9
+"""Quantile of the lengths of the exemplar's relative jitters ``x_j - x_i`` over its
+first-shell bonds that a seam pair's relative jitter is shortened to
+(:func:`_own_jitter`, :func:`relative_jitter_bound`)."""
+
+
+SEAM_OFFSET = 0.5
+"""A pair of output elements is a seam pair when the offset between their sources differs
+from the matched exemplar offset by more than this share of the exemplar's median
+nearest-neighbour distance (distinct bonds of a lattice lie a whole spacing apart)."""
+
+
+def relative_jitter_bound(prep: Prepared) -> tuple[np.ndarray, np.ndarray]:
+    """(n,) float, (n,) float: for each exemplar element of a jittered lattice
+    (:func:`jittered_lattice`), the ``RELATIVE_JITTER_QUANTILE`` quantile of the lengths
+    of ``x_j - x_i`` (:func:`exemplar_jitter`) over its exemplar's first-shell bonds
+    (inf elsewhere), and its exemplar's median nearest-neighbour distance. Computed once
+    per ``prep``."""
+    got = getattr(prep, "_rel_jitter", None)
+    if got is not None and len(got[0]) == len(prep.kind):
+        return got
+    jit = exemplar_jitter(prep)
+    lat = jittered_lattice(prep)
+    out = np.full(len(prep.kind), np.inf)
+    spacing = np.full(len(prep.kind), np.inf)
+    for s_ in np.unique(prep.source):
+        ids = np.flatnonzero((prep.source == s_) & ~prep.void)
+        if len(ids) < 3 or not lat[ids[0]]:
+            continue
+        xy = prep.pos[ids]
+        tree = cKDTree(xy)
+        s = float(np.median(tree.query(xy, k=2)[0][:, 1]))
+        pairs = tree.query_pairs(SHELL * s, output_type="ndarray")
+        if len(pairs) == 0:
+            continue
+        dj = jit[ids[pairs[:, 1]]] - jit[ids[pairs[:, 0]]]
+        out[prep.source == s_] = float(np.quantile(np.hypot(dj[:, 0], dj[:, 1]), RELATIVE_JITTER_QUANTILE))
+        spacing[prep.source == s_] = s
+    prep._rel_jitter = (out, spacing)
+    return prep._rel_jitter
 
 
 def _soft_threshold(step: np.ndarray, spread: np.ndarray, cap: np.ndarray) -> np.ndarray:
