@@ -362,6 +362,37 @@ so it stays off.
 """
 
 
+def outer_voids(ex) -> np.ndarray:
+    """(n,) bool: the void elements of ``ex`` outside the convex hull of its visible
+    elements (none when fewer than 3 visible elements span an area).
+
+    Departure from §5.6, where every void element the user placed is texture: voids
+    stand for the empty space *between* visible elements, and a void beyond the last
+    visible element stands for no gap the texture keeps, only for the margin of the
+    exemplar's frame (sparse apples dart-thrown inside their frame leave a band half a
+    spacing wide that only voids fill). Copied, such a band of voids is an apple-free
+    strip inside the output: measured on sparse voids (default variant 2, seeds 1-2,
+    3.5x the frame), the output's apple density was 0.916 / 0.892 of the exemplar's,
+    0.906 / 0.942 without them; ``spacing=24, apple=4`` variant 7 seed 2, the empty
+    circles' q95 1.110 -> 1.098 of the exemplar's.
+    """
+    void = np.asarray(ex["void"], dtype=bool) if "void" in ex.columns else np.zeros(len(ex), bool)
+    if not void.any() or int((~void).sum()) < 3:
+        return np.zeros(len(ex), bool)
+    import shapely
+
+    hull = shapely.convex_hull(shapely.multipoints(ex.xy[~void]))
+    if hull.geom_type != "Polygon" or hull.area <= 0:
+        return np.zeros(len(ex), bool)
+    return void & ~shapely.intersects_xy(hull, ex.xy[:, 0], ex.xy[:, 1])
+
+
+def _without_outer_voids(ex):
+    """``ex`` without its :func:`outer_voids`."""
+    out = outer_voids(ex)
+    return ex.select(~out) if out.any() else ex
+
+
 def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prepared:
     """Analyse the palette of a selection: neighbourhoods, k-coherence and free-space
     points (§5.1), computed for every exemplar of the palette; the selection then picks
@@ -371,7 +402,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         raise InputError(f"k: must be at least 1, got {k}")
     palette = selection.palette
     names = palette.names
-    exemplars = [palette[nm] for nm in names]
+    exemplars = [_without_outer_voids(palette[nm]) for nm in names]
     tagged = [ex.with_columns(exemplar=[name] * len(ex)) for name, ex in zip(names, exemplars)]
     tagged = _rename_conflicting_kinds(tagged)
     sources = np.concatenate([np.full(len(ex), i) for i, ex in enumerate(tagged)])
