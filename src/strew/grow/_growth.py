@@ -63,6 +63,7 @@ from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
 from ._flow_gaps import close_gaps, fill_holes, side_stream
 from ._flow_holes import close_holes
+from ._flow_shear import reshape_shear
 from ._flow_stretch import insert_stretched
 from ._index import GrowIndex
 from ._match import MODES, W1, W2, W3
@@ -187,6 +188,12 @@ class GrowParams:
     flow_stretch_hits: int | None = None
     flow_stretch_tries: int = 20
     flow_stretch_edge: float = 1.5
+    #: flow mode: the bands of elements with a bond over ``flow_shear_min`` mean edges,
+    #: and those within ``flow_shear_window`` edges of one, fitted to a regular star in
+    #: each element's own frame (Eq. 5), all or nothing per band
+    #: (:func:`strew.grow._flow_shear.reshape_shear`); None: not
+    flow_shear_min: float | None = 1.13
+    flow_shear_window: float = 3.0
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -751,6 +758,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # flow mode: the holes left, closed after the last relaxation (nothing moves
             # them back); draws from the side stream as above
             main, self.rng = self.rng, side_stream(self.rng)
+            if p.flow_shear_min is not None and p.relax:
+                reshape_shear(self)
             if len(self.order) < target and p.flow_stretch_min is not None and p.relax:
                 # (a relaxation (§5.5) of the stretch: not where the caller turned it off)
                 insert_stretched(self, target)
