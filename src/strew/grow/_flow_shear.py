@@ -118,8 +118,10 @@ def _reshape_band(g, els, fb, src, dst, off) -> int:
         # (a gap within two edges of the region's edge is the edge's, see close_holes)
         grid = grid[g.region.contains(grid) & (g.region.distance_to_boundary(grid) > 2.0 * L)]
     before = _far(g, grid, 0.75 * L)
+    sites = sorted({j for o in moves for j in g.near(*old[o][:2], 1.5 * L, (ELEMENT,))})
+    six = _six(g, sites)
     _settle(g, moves, old)
-    if (_far(g, grid, 0.75 * L) & ~before).any():
+    if (_far(g, grid, 0.75 * L) & ~before).any() or _six(g, sites) <= six:
         for o, (x, y, geom, rot) in old.items():
             if g.xy[o] != (x, y):
                 g._move(o, x, y)
@@ -127,6 +129,18 @@ def _reshape_band(g, els, fb, src, dst, off) -> int:
             g.rot[o] = rot
         return 0
     return sum(1 for o in moves if g.xy[o] != old[o][:2])
+
+
+def _six(g, sites: list[int]) -> int:
+    """How many of ``sites`` have six elements at 0.85-1.15 mean edges and none nearer."""
+    from scipy.spatial import cKDTree
+
+    els = [i for i in g.order if g.state[i] == ELEMENT]
+    tree = cKDTree(g.pos[els])
+    xy = g.pos[sites]
+    hi = np.array([len(v) for v in tree.query_ball_point(xy, 1.15 * g.l)]) - 1
+    lo = np.array([len(v) for v in tree.query_ball_point(xy, 0.85 * g.l)]) - 1
+    return int(((hi == 6) & (lo == 0)).sum())
 
 
 def _far(g, grid, r: float):
