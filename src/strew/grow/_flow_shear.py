@@ -22,11 +22,19 @@ undone here instead:
   element's star nearest the bond's (the exemplar's ring, as §5.5, but in the
   element's fitted frame rather than the field's), the elements around held;
 - the moves are made as :meth:`strew.grow._relax_window._RelaxWindow.relax_window`
-  makes them (a move out of the region is not made; elements that then overlap, unless
-  a turn by up to ``flow_hole_turn`` frees them, go back with those they overlap);
+  makes them (a move out of the region is not made; elements that then overlap go back
+  with those they overlap; nothing turns);
 - all or nothing per band: where the moves open a gap (a point of a quarter-edge grid
-  around the band, over two mean edges inside the region, farther than 0.75 mean
-  edges from every element, that was not before), the band goes back whole.
+  around the band, over two mean edges inside the region, farther than 0.7 mean
+  edges from every element, that was not before; the holes counted by
+  ``benchmarks/grow.py``: 0.75 spacings), or do not raise the number of the band's
+  sites with six neighbours at 0.85-1.15 mean edges, the band goes back whole.
+
+It runs after :func:`strew.grow._flow_stretch.insert_stretched` and before
+:func:`strew.grow._flow_holes.close_holes` (run before the insertions, it gave more
+holes: 3 against 2 over the twelve flow cases). The moved elements do not turn (with
+the turns of ``close_holes``, up to 30 degrees, elements left the 12 degrees around
+the field that ``tests/grow/test_grow_flow_turn.py`` asks).
 
 Departs from §5.5 (Eq. 5's targets are each element's matched ring in the field's
 frame, here a regular star in the frame fitted to its bonds) and, as
@@ -38,7 +46,6 @@ from __future__ import annotations
 import numpy as np
 
 from ._flow_gaps import _circumcircles
-from ._flow_holes import _turn_free
 from ._objects import ELEMENT
 from ._relax import relax_positions
 
@@ -117,11 +124,11 @@ def _reshape_band(g, els, fb, src, dst, off) -> int:
     if g.region is not None:
         # (a gap within two edges of the region's edge is the edge's, see close_holes)
         grid = grid[g.region.contains(grid) & (g.region.distance_to_boundary(grid) > 2.0 * L)]
-    before = _far(g, grid, 0.75 * L)
+    before = _far(g, grid, 0.7 * L)
     sites = sorted({j for o in moves for j in g.near(*old[o][:2], 1.5 * L, (ELEMENT,))})
     six = _six(g, sites)
     _settle(g, moves, old)
-    if (_far(g, grid, 0.75 * L) & ~before).any() or _six(g, sites) <= six:
+    if (_far(g, grid, 0.7 * L) & ~before).any() or _six(g, sites) <= six:
         for o, (x, y, geom, rot) in old.items():
             if g.xy[o] != (x, y):
                 g._move(o, x, y)
@@ -153,10 +160,9 @@ def _far(g, grid, r: float):
 
 def _settle(g, moves: dict, old: dict) -> None:
     """Make the fitted ``moves``: a move out of the region is not made, and elements
-    that then overlap another, unless a turn by up to ``flow_hole_turn`` frees them, go
-    back to where they were (``old``) with those they overlap, until no overlap is
-    left (the positions before had none, so this ends)."""
-    turn = float(g.p.flow_hole_turn)
+    that then overlap another go back to where they were (``old``) with those they
+    overlap, until no overlap is left (the positions before had none, so this ends).
+    Nothing turns: each element keeps its frame (§5.3)."""
     check = []
     for o, (x, y) in moves.items():
         if not g.in_domain(x, y) or (g.boundary is not None and g.crosses_boundary(old[o][:2], (x, y))):
@@ -169,9 +175,6 @@ def _settle(g, moves: dict, old: dict) -> None:
         check.append(o)
     while check:
         hits = {o: h for o in check if (h := g.overlapping(o))}
-        if hits and turn > 0:
-            _turn_free(g, hits, turn)
-            hits = {o: h for o in hits if (h := g.overlapping(o))}
         back: set[int] = set()
         for o, hs in hits.items():
             back.add(o)

@@ -758,11 +758,11 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # flow mode: the holes left, closed after the last relaxation (nothing moves
             # them back); draws from the side stream as above
             main, self.rng = self.rng, side_stream(self.rng)
-            if p.flow_shear_min is not None and p.relax:
-                reshape_shear(self)
             if len(self.order) < target and p.flow_stretch_min is not None and p.relax:
                 # (a relaxation (§5.5) of the stretch: not where the caller turned it off)
                 insert_stretched(self, target)
+            if p.flow_shear_min is not None and p.relax:
+                reshape_shear(self)
             if len(self.order) < target:
                 close_holes(self, target)
             self.rng = main
