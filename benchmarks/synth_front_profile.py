@@ -31,15 +31,15 @@ front19d; nothing in ``src`` changes, and the untiled run is never affected):
 - ``noopt``: tiles with a context grow without the optimisation (§5.2); the first
   phase's tiles, and so the finished side of every border, keep it.
 - ``holes:F[:G]`` (helper holes19e): the finished tile hands over the discs of the
-  elements it dropped whose bounding radius is at least ``G`` (default 0.5) of its
+  elements it dropped whose bounding radius is at least ``G`` (default src's) of its
   largest and whose centre lies within ``D + F D`` of its rectangle (``D`` the band) in
   ``meta["synth_holes"]`` (position, radius, kind); the later tile puts a copy of that
   kind at each disc centre before it grows (one at a time, skipped where it would
   collide or lies outside its region), matched to its neighbourhood as the context is
   (Eq. 1) and a seed of the growth like any horizon element (§5.1): its large elements
   get the dropped ones' places before small ones fill them. In ``src`` since 9defcf9
-  (``strew.tiles._SYNTH_HOLES_REACH`` = 1 + F = 2, ``_SYNTH_HOLES_LARGE`` = G = 0.5):
-  the variant sets those two and counts the discs and copies;
+  (``strew.tiles._SYNTH_HOLES_REACH`` = 1 + F = 2, ``_SYNTH_HOLES_LARGE`` = G = 0.5,
+  0.35 since helper synth19f): the variant sets those two and counts the discs and copies;
 - ``noholes``: no hand-over of dropped large elements (the code before 9defcf9).
 
 Writes ``benchmarks/results/synth_front_profile.json``.
@@ -148,7 +148,7 @@ def apply_variant(variant: str) -> None:
     assert C  # fill_with_context imports grow from _grow when it runs
 
 
-def _holes_variant(f: float, g: float = 0.5) -> None:
+def _holes_variant(f: float, g: float | None = None) -> None:
     """``--variant holes:F[:G]`` (see the module's docstring): src's hand-over
     (``strew.tiles._synth_holes_out``, ``strew.synth._context.add_holes``) with reach
     ``1 + F`` bands and size cut ``G``, counting the discs and copies; ``G`` inf
@@ -156,7 +156,7 @@ def _holes_variant(f: float, g: float = 0.5) -> None:
     import strew.synth._context as C
     import strew.tiles as T
 
-    T._SYNTH_HOLES_REACH, T._SYNTH_HOLES_LARGE = 1.0 + f, g
+    T._SYNTH_HOLES_REACH, T._SYNTH_HOLES_LARGE = 1.0 + f, T._SYNTH_HOLES_LARGE if g is None else g
     out0, add0 = T._synth_holes_out, C.add_holes
 
     def holes_out(*a):
