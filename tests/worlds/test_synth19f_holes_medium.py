@@ -11,6 +11,7 @@ smallest, which fill the gaps, never are.
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from strew.tiles import _radii, _synth_holes_out
 from strew_testing import fidelity_suite
@@ -49,6 +50,7 @@ def test_two_sizes_never_hands_over_pebbles():
     assert len(holes) == int((~keep & (x <= 150.0) & (names == "stone")).sum())
 
 
+@pytest.mark.slow  # a 240 x 240 three_sizes synthesis: about 3 s
 def test_a_large_hole_wins_over_a_medium_one_in_its_place():
     """The later tile adds the copies of larger kinds first: a medium copy listed first
     no longer takes the place of the large one it collides with."""
