@@ -390,12 +390,12 @@ def _prefer_unrepeated(state: SynthState, seeds: np.ndarray, cands: np.ndarray, 
     costs[sub] = cs
 
 
-BALANCE_Z = 1.5
+BALANCE_Z = 0.75
 """Binomial standard errors by which a size class's count near a seed must stray from
 the output's share before :func:`_prefer_balanced` reorders the seed's candidates;
-0: off."""
+0: off (see :func:`_prefer_balanced` for the choice of 0.75 with a disc of 0.5)."""
 
-BALANCE_RADIUS = 1.0
+BALANCE_RADIUS = 0.5
 """Radius of :func:`_prefer_balanced`'s disc around a seed, in sides of the seed's
 exemplar (square root of its area)."""
 
@@ -451,6 +451,24 @@ def _prefer_balanced(state: SynthState, seeds: np.ndarray, cands: np.ndarray, co
     classes or more: on two sizes (seeds 1-4) failing windows went from 4 to 9, all
     nn[pebble>pebble] or empty_circle, none a share of a class (there the yielding
     rule, :func:`owed_classes`, sets one class against the other).
+
+    Disc of 0.5 sides and z 0.75 (were 1 side and z 1.5; helper seam13f): what still
+    failed at 50x were large-poor patches about half a window wide (nn[small>large],
+    windows of 23-27 large and 64-77 medium stones against means of 30 and 58), which a
+    disc of a whole side dilutes, and the binomial error overstates the noise of the
+    exemplar's sub-Poisson large stones (window counts' sd 2.5-2.8 at 50x, against
+    sqrt(N p (1 - p)) = 5 for N = 220), so such a patch read |z| < 1 and was never
+    acted on. ``python benchmarks/seam13f_diag.py --seeds 1,2,3,4,5,6,7,8`` (failing
+    windows of 169 per seed, seeds 1-4 / 5-8; the windows' sd of the medium / large
+    count): disc 1, z 1.5 4+0+2+3 / 2+3+1+3 (18; sd 5.7-6.5 / 2.5-2.8); disc 0.5,
+    z 1.5 10 / 6 (16); z 1.0 11 / 2 (13; 4.3-5.7 / 2.0-2.6); z 0.75 3+1+1+1 / 2+1+1+5
+    (15; 4.4-5.6 / 2.2-2.6); z 0.5 10 / 7 (17). The failing count of one seed moves by
+    a few windows with any change to the random stream; the spread of the class
+    counts over windows is the steadier figure, and it falls with every smaller disc
+    and lower z tried. Also tried, not kept: the seed's disc short of large stones (by
+    10 %-20 % of the output's share) as a further trigger of
+    :func:`_prefer_near_large`: 9 / 20 / 12 on seeds 1-4 (noise: few short seeds had an
+    acceptable candidate bringing a placeable large stone).
     """
     prep = state.prep
     if BALANCE_Z <= 0 or len(seeds) == 0 or costs.shape[1] < 2:
