@@ -158,6 +158,7 @@ def _boot(fn, units: dict, boot: int, rng) -> tuple[float, float, float]:
 def analyze(args) -> dict:
     rng = np.random.default_rng(0)
     out: dict = {}
+    units: dict = {}  # (tag, width) -> strip units; (tag, "profile") -> profile units
     for tag in args.tags:
         paths = sorted(RES.glob(f"orn19f_{tag}_T*.npz"))
         worlds = [_world(p) for p in paths]
@@ -166,7 +167,7 @@ def analyze(args) -> dict:
             continue
         kinds = worlds[0]["kinds"]
         nk = len(kinds)
-        res: dict = {"worlds": [w["tile"] for w in worlds], "elements": [int(len(w["x"])) for w in worlds],
+        res: dict = {"kinds": kinds, "worlds": [w["tile"] for w in worlds], "elements": [int(len(w["x"])) for w in worlds],
                      "cpu_s": [w["cpu"] for w in worlds]}
         tl = ", ".join(f"{w['tile']:g}" for w in worlds)
         print(f"\n== {tag}: {len(worlds)} worlds (tiles {tl}), "
@@ -192,6 +193,7 @@ def analyze(args) -> dict:
             for k, name in enumerate(kinds):
                 row[name] = _boot(lambda u, k=k: (u["sk"][:, k].sum() / u["sk"].sum()) / (u["ik"][:, k].sum() / u["ik"].sum()), U, args.boot, rng)
             res[f"strips_{width:g}s"] = row
+            units[(tag, width)] = U
             print(f"  +-{width:g}s: " + "; ".join(f"{k} {v[0]:.3f} [{v[1]:.3f}, {v[2]:.3f}]" for k, v in row.items()))
         # -- profile by distance to the nearest inner border (half-spacing bins), per tile units
         nb = len(BINS)  # bins 0..nb-2, and nb-1 the reference beyond BINS[-1]
@@ -237,10 +239,42 @@ def analyze(args) -> dict:
         i1 = [i for i in range(nb - 1) if abs(BINS[i]) <= 1.0 and abs(BINS[i + 1]) <= 1.0]  # within 1 s
         lps1 = _boot(lambda u: (u["leaves"][:, i1].sum() / u["stems"][:, i1].sum()) / (u["leaves"][:, -1].sum() / u["stems"][:, -1].sum()),
                      P, args.boot, rng)
+        units[(tag, "profile")] = (P, i1)
         res["profile"] = prof
         res["leaf_per_stem_1s_ratio"] = lps1
         print(f"  leaves per stem within 1 s / beyond 3 s: {lps1[0]:.3f} [{lps1[1]:.3f}, {lps1[2]:.3f}]")
         out[tag] = res
+    # each later tag against the first: the change of the +-1 s leaf share and of the
+    # leaves per stem within 1 s, with a 95 % interval (the two tags' tiles resampled
+    # independently)
+    tags = [t for t in args.tags if t in out]
+    leaf = None
+    for t in tags[1:]:
+        a, b = tags[0], t
+        def share(u, k_leaf):
+            return (u["sk"][:, k_leaf].sum() / u["sk"].sum()) / (u["ik"][:, k_leaf].sum() / u["ik"].sum())
+
+        def lps(pi):
+            p, i1 = pi
+            return lambda u: (u["leaves"][:, i1].sum() / u["stems"][:, i1].sum()) / (u["leaves"][:, -1].sum() / u["stems"][:, -1].sum())
+
+        leaf = out[a]["kinds"].index("leaf")
+        stats = {
+            "leaf_1s": (lambda u: share(u, leaf), units[(a, 1.0)], units[(b, 1.0)]),
+            "leaf_per_stem_1s": (lps(units[(a, "profile")]), units[(a, "profile")][0], units[(b, "profile")][0]),
+        }
+        diff: dict = {}
+        for name, (fn, ua, ub) in stats.items():
+            na, nb_ = len(next(iter(ua.values()))), len(next(iter(ub.values())))
+            v = fn(ub) - fn(ua)
+            draws = np.empty(args.boot)
+            for i in range(args.boot):
+                pa, pb = rng.integers(0, na, na), rng.integers(0, nb_, nb_)
+                draws[i] = fn({q: w[pb] for q, w in ub.items()}) - fn({q: w[pa] for q, w in ua.items()})
+            lo, hi = np.nanpercentile(draws, [2.5, 97.5])
+            diff[name] = (float(v), float(lo), float(hi))
+        out[b][f"change_vs_{a}"] = diff
+        print(f"\n{b} - {a}: " + "; ".join(f"{q} {v[0]:+.3f} [{v[1]:+.3f}, {v[2]:+.3f}]" for q, v in diff.items()))
     if args.out:
         Path(args.out).write_text(json.dumps(out, indent=1))
         print(f"wrote {args.out}")
