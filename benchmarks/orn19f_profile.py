@@ -22,7 +22,19 @@ re-reads them and prints, pooled over the worlds of each tag:
 ``--set NAME=VALUE`` sets a module constant before ``make`` (``strew.tiles.NAME`` or
 ``strew.ornament._context.NAME``), so that variants are measured in one tree.
 
-Run: ``python benchmarks/orn19f_profile.py make --tag base --tiles 100,105,...`` then
+``analyze A B``: also B's change against A of the +-1 s leaf share and of the leaves per
+stem within 1 s, with a 95 % interval (the two tags' tiles resampled independently).
+
+Findings (issue 19.4; 11 worlds, tiles 100, 104, ..., 140; orn19f_pooled.md): at e1d86dd
++-1 s leaf 0.887 [0.847, 0.929], leaves per flower stem within 1 s 0.897 [0.866, 0.928] of
+the far interior's; the leaf share is 1.08-1.12x from -2.5 to -0.5 s (the finished side)
+and 0.73-0.85x from -0.5 to +1 s, where half the stems are too short for a leaf (0.36
+inside). orn19d's hand-over of a finished tile's small cut successes (its
+orn19d_cut_small.patch): +-1 s leaf 0.939 [0.900, 0.978] (change +0.052 [-0.003, +0.111]),
+leaves per stem 0.960 (change +0.062 [+0.022, +0.105]). About 20 worlds a variant give
++-3 % on the +-1 s leaf share; a world costs 45-85 CPU s.
+
+Run: ``python benchmarks/orn19f_profile.py make --tag base --tiles 100,104,...`` then
 ``python benchmarks/orn19f_profile.py analyze base [new ...]``.
 """
 
