@@ -63,6 +63,21 @@ def fidelity_suite():
     return sys.modules[name]
 
 
+def synth_at_50x(name: str, seed: int):
+    """Synth on the fidelity suite's exemplar ``name`` over a canvas of 50x its area
+    (issue 13 point 2): ``(exemplar, output, region, fidelity report)``, the report
+    without Eq. 5 (its local map is what the 50x tests read)."""
+    from strew import Region
+    from strew.metrics import fidelity
+    from strew.synth import synthesize
+
+    ex = fidelity_suite().make_exemplar(name)
+    x0, y0, x1, y1 = ex.region.bounds
+    region = Region.rectangle(7.07 * (x1 - x0), 7.07 * (y1 - y0))
+    out = synthesize(ex, region, rng=seed, measure=False)
+    return ex, out, region, fidelity(ex, out, region, eq5=False)
+
+
 def crosses_strictly(p, q, a, b) -> bool:
     """Segments pq and ab cross at a point interior to both (grow's edge rule, §5.4)."""
     def side(o, u, v):

@@ -11,27 +11,13 @@ the edge, no overlap.
 
 from __future__ import annotations
 
-import hashlib
-
-import numpy as np
 import pytest
 
 from strew import Region
-from strew.grow import analyze
 from strew.grow._growth import GrowParams, grow_reference
 
-from strew_testing import fidelity_suite
-
+from test_grow_flow14d_stretch import _digest, hex_ref  # noqa: E402, F401 (a fixture)
 from test_grow_flow_gaps import SP, _holes, _inside_without_overlap, _quarter_circles, _shares  # noqa: E402
-
-
-def _digest(out) -> str:
-    return hashlib.sha256(np.ascontiguousarray(np.c_[out.xy, out.rotation]).tobytes()).hexdigest()
-
-
-@pytest.fixture(scope="module")
-def hex_ref():
-    return analyze(fidelity_suite().make_exemplar("hex_lattice", nx=8, ny=8))
 
 
 @pytest.mark.slow

@@ -23,7 +23,7 @@ from strew.synth import new_state, synthesize
 from strew.synth._optimize import one_kind_scatter
 from strew.synth._prepare import outer_voids
 
-from strew_testing import fidelity_suite
+from strew_testing import fidelity_suite, synth_at_50x
 
 
 def _voids(ex) -> np.ndarray:
@@ -74,11 +74,7 @@ def test_one_kind_scatter_is_measured_not_named():
 
 @pytest.mark.slow
 def test_stones_without_seams_at_50x():
-    ex = fidelity_suite().make_exemplar("stones")
-    x0, y0, x1, y1 = ex.region.bounds
-    region = Region.rectangle(7.07 * (x1 - x0), 7.07 * (y1 - y0))
-    out = synthesize(ex, region, rng=2, measure=False)
-    rep = fidelity(ex, out, region, eq5=False)
+    _, _, _, rep = synth_at_50x("stones", 2)
     score = np.asarray(rep.local["score"], float)
     ok = np.isfinite(score)
     assert ok.sum() > 100

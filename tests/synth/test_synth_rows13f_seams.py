@@ -19,11 +19,10 @@ import pytest
 from scipy.spatial import cKDTree
 
 from strew import Region
-from strew.metrics import fidelity
-from strew.synth import new_state, synthesize
+from strew.synth import new_state
 from strew.synth._optimize import SHELL, _own_jitter, exemplar_jitter
 
-from strew_testing import fidelity_suite
+from strew_testing import fidelity_suite, synth_at_50x
 
 
 def _rows_prep():
@@ -76,11 +75,7 @@ def test_seam_pairs_keep_relative_jitter_within_the_exemplars():
 
 @pytest.mark.slow
 def test_noisy_rows_without_seams_at_50x():
-    ex = fidelity_suite().make_exemplar("rows_noisy")
-    x0, y0, x1, y1 = ex.region.bounds
-    region = Region.rectangle(7.07 * (x1 - x0), 7.07 * (y1 - y0))
-    out = synthesize(ex, region, rng=1, measure=False)
-    rep = fidelity(ex, out, region, eq5=False)
+    _, _, _, rep = synth_at_50x("rows_noisy", 1)
     score = np.asarray(rep.local["score"], float)
     ok = np.isfinite(score)
     assert ok.sum() > 100

@@ -16,21 +16,17 @@ import numpy as np
 import pytest
 
 from strew import Region
-from strew.metrics import fidelity
-from strew.synth import new_state, synthesize
+from strew.synth import new_state
 from strew.synth import _grow as G
 
-from strew_testing import fidelity_suite
+from strew_testing import fidelity_suite, synth_at_50x
 
 
 def _nn_small_large_windows(seed: int) -> tuple[int, int]:
     """(windows whose worst metric is nn[small>large] and fails, windows) of the local
     fidelity map for three sizes at 50x the exemplar's area."""
-    ex = fidelity_suite().make_exemplar("three_sizes")
-    x0, y0, x1, y1 = ex.region.bounds
-    region = Region.rectangle(7.07 * (x1 - x0), 7.07 * (y1 - y0))
-    out = synthesize(ex, region, rng=seed, measure=False)
-    loc = fidelity(ex, out, region, eq5=False).local
+    _, _, _, rep = synth_at_50x("three_sizes", seed)
+    loc = rep.local
     score = np.asarray(loc["score"], float)
     worst = np.asarray(loc["worst_metric"], dtype=object)
     ok = np.isfinite(score)

@@ -15,21 +15,14 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from strew import Region
-from strew.metrics import fidelity
-from strew.synth import synthesize
-
-from strew_testing import fidelity_suite
+from strew_testing import synth_at_50x
 
 
 def _window_counts(seed: int) -> np.ndarray:
     """(windows, kinds): the output's elements by kind in each window of the local
     fidelity map (those with a score), three sizes at 50x the exemplar's area."""
-    ex = fidelity_suite().make_exemplar("three_sizes")
-    x0, y0, x1, y1 = ex.region.bounds
-    region = Region.rectangle(7.07 * (x1 - x0), 7.07 * (y1 - y0))
-    out = synthesize(ex, region, rng=seed, measure=False)
-    loc = fidelity(ex, out, region, eq5=False).local
+    _, out, _, rep = synth_at_50x("three_sizes", seed)
+    loc = rep.local
     score = np.asarray(loc["score"], float)
     side, step = loc["window"], loc["step"]
     kind = np.asarray(out.kind)

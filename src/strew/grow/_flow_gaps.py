@@ -48,6 +48,18 @@ def _circumcircles(g):
     return els, pts, tri, np.c_[la, lb, lc], r
 
 
+def _bonds(g):
+    """(els, pts, e): the placed elements, their positions and their Delaunay bonds,
+    ``e`` of shape (m, 2) with rows of indices into ``els`` (each once, lower first);
+    None with fewer than 4 placed elements."""
+    cc = _circumcircles(g)
+    if cc is None:
+        return None
+    els, pts, tri, _, _ = cc
+    s = tri.simplices
+    return els, pts, np.unique(np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1), axis=0)
+
+
 def _wide_circles(g, lo: float):
     """(ux, uy, sel): the Delaunay triangles' circumcentres and the indices of those
     whose empty circle is wider than ``lo`` and narrower than 1.5 mean edges, widest

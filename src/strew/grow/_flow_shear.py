@@ -45,7 +45,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._flow_gaps import _circumcircles
+from ._flow_gaps import _bonds
 from ._objects import ELEMENT
 from ._relax import relax_positions
 
@@ -61,12 +61,10 @@ def reshape_shear(g) -> int:
 
     p = g.p
     L = g.l
-    cc = _circumcircles(g)
-    if cc is None:
+    bonds = _bonds(g)
+    if bonds is None:
         return 0
-    els, pts, tri, _, _ = cc
-    s = tri.simplices
-    e = np.unique(np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1), axis=0)
+    els, pts, e = bonds
     d = pts[e[:, 1]] - pts[e[:, 0]]
     ln = np.hypot(d[:, 0], d[:, 1])
     keep = ln < 1.4 * L

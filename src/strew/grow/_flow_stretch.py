@@ -35,7 +35,7 @@ import math
 
 import numpy as np
 
-from ._flow_gaps import _circumcircles
+from ._flow_gaps import _bonds
 from ._flow_holes import _fill
 from ._objects import ELEMENT
 
@@ -48,12 +48,10 @@ def insert_stretched(g, limit: int | None = None) -> int:
     how many."""
     p = g.p
     L = g.l
-    cc = _circumcircles(g)
-    if cc is None:
+    bonds = _bonds(g)
+    if bonds is None:
         return 0
-    els, pts, tri, _, _ = cc
-    s = tri.simplices
-    e = np.unique(np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1), axis=0)
+    els, pts, e = bonds
     ln = np.hypot(*(pts[e[:, 0]] - pts[e[:, 1]]).T)
     sel = np.flatnonzero((ln > p.flow_stretch_min * L) & (ln < 1.6 * L))
     if g.region is not None and len(sel):
