@@ -266,7 +266,7 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     later tile refills scattered holes instead of packing against a flat front; it hands
     the dropped elements on in ``meta["holes"]``, and the later tile keeps on its side
     only what it placed in those holes (:func:`_in_holes`). synth hands on its dropped
-    large elements near ``t`` in ``meta["synth_holes"]``, and the later tile seeds a copy
+    medium and large elements near ``t`` in ``meta["synth_holes"]``, and the later tile seeds a copy
     at each (``_SYNTH_HOLES_LARGE``).
     """
     from ._method import spec

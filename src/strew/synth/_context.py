@@ -95,13 +95,14 @@ def add_context(state: SynthState, context: Arrangement, region_geometry=None) -
 def add_holes(state: SynthState, holes: list, pools: dict[str, np.ndarray]) -> int:
     """Put a copy of each hole's kind at its centre, as an output element that seeds growth.
 
-    ``holes`` are ``[x, y, r, kind name]`` of large elements a finished neighbouring tile
-    made and dropped (``strew.tiles``, ``meta["synth_holes"]``). Each copy is given the
-    exemplar element of its kind (from ``pools``) whose neighbourhood is most like its
-    own (Eq. 1), as the context is, then added one at a time, larger kinds first, where
-    it collides with nothing and lies in the region; it is a horizon element like any
-    other (§5.1), not fixed. Not in the paper (§5.4 grows one region from one seed): without it the later
-    tile's small elements filled those places first (see ``strew.tiles``).
+    ``holes`` are ``[x, y, r, kind name]`` of the medium and large elements a finished
+    neighbouring tile made and dropped (``strew.tiles``, ``meta["synth_holes"]``). Each
+    copy is given the exemplar element of its kind (from ``pools``) whose neighbourhood
+    is most like its own (Eq. 1), as the context is, then added one at a time, larger
+    kinds first, where it collides with nothing and lies in the region; it is a horizon
+    element like any other (§5.1), not fixed. Not in the paper (§5.4 grows one region
+    from one seed): without it the later tile's small elements filled those places first
+    (see ``strew.tiles``).
 
     Returns
     -------
