@@ -78,6 +78,19 @@ def synth_at_50x(name: str, seed: int):
     return ex, out, region, fidelity(ex, out, region, eq5=False)
 
 
+def assert_no_window_fails_at_50x(name: str, seed: int) -> None:
+    """Issue 13 point 2: synth on ``name`` at 50x its area (:func:`synth_at_50x`) is
+    faithful, its local fidelity map scores over 100 windows, and none fails."""
+    import numpy as np
+
+    _, _, _, rep = synth_at_50x(name, seed)
+    score = np.asarray(rep.local["score"], float)
+    ok = np.isfinite(score)
+    assert ok.sum() > 100
+    assert rep.faithful
+    assert int((score[ok] > 1.0).sum()) == 0, rep.local["worst"]
+
+
 def crosses_strictly(p, q, a, b) -> bool:
     """Segments pq and ab cross at a point interior to both (grow's edge rule, §5.4)."""
     def side(o, u, v):
