@@ -63,8 +63,13 @@ def test_flow_stretched_lattice_gets_elements_and_keeps_its_six_neighbours(hex_r
 
 @pytest.mark.parametrize("mode", ["fixed", "rotate"])
 def test_flow_stretch_option_leaves_the_other_modes_alone(hex_ref, mode):
+    assert_flow_option_leaves_mode_alone(hex_ref, mode, "flow_stretch_min")
+
+
+def assert_flow_option_leaves_mode_alone(hex_ref, mode: str, option: str) -> None:
+    """A flow-only pass switched off (``option=None``) changes no byte of ``mode``'s output."""
     kw = dict(region=Region.rectangle(16 * SP, 12 * SP), mode=mode)
     on = grow_reference(hex_ref, GrowParams(**kw), rng=3)
-    off = grow_reference(hex_ref, GrowParams(**kw, flow_stretch_min=None), rng=3)
+    off = grow_reference(hex_ref, GrowParams(**kw, **{option: None}), rng=3)
     assert len(on) > 100
     assert _digest(on) == _digest(off)

@@ -16,7 +16,7 @@ import pytest
 from strew import Region
 from strew.grow._growth import GrowParams, grow_reference
 
-from test_grow_flow14d_stretch import _digest, hex_ref  # noqa: E402, F401 (a fixture)
+from test_grow_flow14d_stretch import assert_flow_option_leaves_mode_alone, hex_ref  # noqa: E402, F401 (a fixture)
 from test_grow_flow_gaps import SP, _holes, _inside_without_overlap, _quarter_circles, _shares  # noqa: E402
 
 
@@ -38,8 +38,4 @@ def test_flow_sheared_band_fitted_back_keeps_six_neighbours(hex_ref):
 
 @pytest.mark.parametrize("mode", ["fixed", "rotate"])
 def test_flow_shear_option_leaves_the_other_modes_alone(hex_ref, mode):
-    kw = dict(region=Region.rectangle(16 * SP, 12 * SP), mode=mode)
-    on = grow_reference(hex_ref, GrowParams(**kw), rng=3)
-    off = grow_reference(hex_ref, GrowParams(**kw, flow_shear_min=None), rng=3)
-    assert len(on) > 100
-    assert _digest(on) == _digest(off)
+    assert_flow_option_leaves_mode_alone(hex_ref, mode, "flow_shear_min")
