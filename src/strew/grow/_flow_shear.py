@@ -52,9 +52,11 @@ from ._relax import relax_positions
 __all__ = ["reshape_shear"]
 
 
-def reshape_shear(g) -> int:
+def reshape_shear(g, gap: float | None = 0.7) -> int:
     """Fit the sheared bands back to the hexagonal star (Eq. 5); how many elements
-    moved."""
+    moved. ``gap``: a band goes back whole where its moves open a point farther than
+    this many mean edges from every element; None: no such guard (a try of
+    :func:`strew.grow._flow_retry.retry_shear`, whose later passes fill the gaps)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -94,11 +96,11 @@ def reshape_shear(g) -> int:
     lab = connected_components(coo_matrix((np.ones(len(fe)), (fe[:, 0], fe[:, 1])), shape=(n, n)), directed=False)[1]
     moved = 0
     for band in np.unique(lab[free]).tolist():
-        moved += _reshape_band(g, els, free & (lab == band), src, dst, off)
+        moved += _reshape_band(g, els, free & (lab == band), src, dst, off, gap)
     return moved
 
 
-def _reshape_band(g, els, fb, src, dst, off) -> int:
+def _reshape_band(g, els, fb, src, dst, off, gap: float | None = 0.7) -> int:
     """Fit the free elements ``fb`` of ``els`` (Eq. 5 with the terms ``src``, ``dst``,
     ``off``) and move them, all or nothing; how many moved."""
     L = g.l
@@ -122,11 +124,11 @@ def _reshape_band(g, els, fb, src, dst, off) -> int:
     if g.region is not None:
         # (a gap within two edges of the region's edge is the edge's, see close_holes)
         grid = grid[g.region.contains(grid) & (g.region.distance_to_boundary(grid) > 2.0 * L)]
-    before = _far(g, grid, 0.7 * L)
+    before = _far(g, grid, gap * L) if gap is not None else None
     sites = sorted({j for o in moves for j in g.near(*old[o][:2], 1.5 * L, (ELEMENT,))})
     six = _six(g, sites)
     _settle(g, moves, old)
-    if (_far(g, grid, 0.7 * L) & ~before).any() or _six(g, sites) <= six:
+    if (before is not None and (_far(g, grid, gap * L) & ~before).any()) or _six(g, sites) <= six:
         for o, (x, y, geom, rot) in old.items():
             if g.xy[o] != (x, y):
                 g._move(o, x, y)

@@ -63,6 +63,7 @@ from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
 from ._flow_gaps import close_gaps, fill_holes, side_stream
 from ._flow_holes import close_holes
+from ._flow_retry import retry_shear
 from ._flow_shear import reshape_shear
 from ._flow_stretch import insert_stretched
 from ._index import GrowIndex
@@ -194,6 +195,9 @@ class GrowParams:
     #: (:func:`strew.grow._flow_shear.reshape_shear`); None: not
     flow_shear_min: float | None = 1.13
     flow_shear_window: float = 3.0
+    #: flow mode: the passes after the growth also tried with the sheared bands fitted
+    #: first without a gap guard, the better kept (:func:`strew.grow._flow_retry.retry_shear`)
+    flow_shear_retry: bool = True
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -758,13 +762,17 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # flow mode: the holes left, closed after the last relaxation (nothing moves
             # them back); draws from the side stream as above
             main, self.rng = self.rng, side_stream(self.rng)
-            if len(self.order) < target and p.flow_stretch_min is not None and p.relax:
-                # (a relaxation (§5.5) of the stretch: not where the caller turned it off)
-                insert_stretched(self, target)
-            if p.flow_shear_min is not None and p.relax:
-                reshape_shear(self)
-            if len(self.order) < target:
-                close_holes(self, target)
+            if p.flow_shear_retry and p.flow_shear_min is not None and p.relax:
+                # (the same passes, tried a second way too: issue 14 point 2)
+                retry_shear(self, target)
+            else:
+                if len(self.order) < target and p.flow_stretch_min is not None and p.relax:
+                    # (a relaxation (§5.5) of the stretch: not where the caller turned it off)
+                    insert_stretched(self, target)
+                if p.flow_shear_min is not None and p.relax:
+                    reshape_shear(self)
+                if len(self.order) < target:
+                    close_holes(self, target)
             self.rng = main
 
     def _irregular(self) -> bool:
