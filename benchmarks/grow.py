@@ -30,7 +30,8 @@ depend on the seed (``rng``), so the 90 degree and quarter-circle cases are also
 from other start points (near the bottom and the top-left corner), in a region 1.5 times
 as wide and high, and with the suite's ``scales`` (a distorted hexagonal lattice).
 Each flow case also gets the dislocations its field's bend needs and the class of each
-non-six site (``defect_classes``); ``--flow-only`` prints the flow cases alone.
+non-six site (``defect_classes``); ``--flow-only`` prints the flow cases alone,
+``--alternates`` only the flow cases from seven start points no change was tuned on.
 """
 
 from __future__ import annotations
@@ -107,9 +108,10 @@ def _suite_exemplar(name: str, **kw):
     return fidelity_suite().make_exemplar(name, **kw)
 
 
-def structure(json_path, flow_only: bool = False) -> None:
+def structure(json_path, flow_only: bool = False, alternates: bool = False) -> None:
     """Issue 14 points 2 and 4: flow mode on bending fields, bricks with a priority
-    (``flow_only``: the flow cases alone)."""
+    (``flow_only``: the flow cases alone; ``alternates``: only the flow cases grown from
+    the seven start points no change was tuned on)."""
     from scipy.spatial import cKDTree
 
     from strew import Region
@@ -138,6 +140,22 @@ def structure(json_path, flow_only: bool = False) -> None:
 
         return field
 
+    th = np.linspace(0, np.pi / 2, 30)
+    if alternates:
+        # the check of issue 14 point 2's changes: start points none was tuned on
+        w, h = 30 * sp, 20 * sp
+        region, field = Region.rectangle(w, h), turning(90.0, w)
+        for st in ((28, 2), (28, 18), (2, 2), (10, 10)):
+            lattice_row(f"flow turning 90 deg, 30x20 spacings, start {st[0]},{st[1]} spacings",
+                        grow(ex, region=region, mode="flow", flow=field, rng=1, start=(st[0] * sp, st[1] * sp)), region, field)
+        a = 30 * sp
+        region = Region.rectangle(a, a)
+        af = flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (a / 3, a * 5 / 6)])
+        for st in ((15, 15), (2, 28), (28, 2)):
+            lattice_row(f"flow from two quarter circles, 30x30 spacings, start {st[0]},{st[1]} spacings",
+                        grow(ex, region=region, mode="flow", flow=af, rng=1, start=(st[0] * sp, st[1] * sp)), region, af)
+        bench.finish()
+        return
     for deg in (60.0, 90.0):
         w, h = 30 * sp, 20 * sp
         region = Region.rectangle(w, h)
@@ -150,7 +168,6 @@ def structure(json_path, flow_only: bool = False) -> None:
     wf = flow_field(waves)
     lattice_row("flow from two wavy strokes", grow(ex, region=region, mode="flow", flow=wf, rng=1), region, wf)
     region = Region.rectangle(30 * sp, 30 * sp)
-    th = np.linspace(0, np.pi / 2, 30)
     arcs = [np.c_[r * np.cos(th), r * np.sin(th)] for r in (10 * sp, 25 * sp)]
     af = flow_field(arcs)
     lattice_row("flow from two quarter-circle strokes", grow(ex, region=region, mode="flow", flow=af, rng=1), region, af)
@@ -477,13 +494,14 @@ def main() -> None:
     def extra(p):
         p.add_argument("--structure", action="store_true", help="only the structure figures of issue 14 points 2 and 4 (no timings)")
         p.add_argument("--flow-only", action="store_true", help="with --structure: only the flow cases (point 2)")
+        p.add_argument("--alternates", action="store_true", help="with --structure: only the flow cases from the 7 start points not tuned on")
         p.add_argument("--against", metavar="REV", default=None, help="CPU el/s of this tree against git revision REV (see the docstring)")
         p.add_argument("--src", default=None, help="with --against: the src folder timed as this tree (default: this checkout's)")
         p.add_argument("--cases", default=None, help="with --against: only these of stones,tiles,hex,hexflow (comma-separated)")
 
     args = parse_args(__doc__, extra)
     if args.structure:
-        structure(args.json, args.flow_only)
+        structure(args.json, args.flow_only, args.alternates)
         return
     if args.against:
         against(args.against, 1000 if args.quick else 2000, min(args.repeat, 3), args.json, args.src, args.cases)
