@@ -6,6 +6,8 @@ wrapped in (helper bal19g, issue 19 point 4; the variants measured, none in the 
   0.5 and 0.75);
 - ``cut``: seeds whose disc (``BALANCE_RADIUS`` exemplar sides) the region's boundary
   cuts are left as they are; the others as before;
+- ``cutctx``: ``cut`` only where the output holds context elements (untiled synthesis
+  unchanged);
 - ``base``: the rule as it is.
 
 ``python benchmarks/bal19g_variant.py VARIANT SCRIPT -- <the script's arguments>``, SCRIPT a
@@ -60,8 +62,14 @@ def cut(state, seeds, cands, costs, slack, c):
     return None
 
 
+def cutctx(state, seeds, cands, costs, slack, c):
+    if not state.fixed.any():
+        return orig(state, seeds, cands, costs, slack, c)
+    return cut(state, seeds, cands, costs, slack, c)
+
+
 if variant != "base":
-    G._prefer_balanced = {"context": context, "cut": cut}[variant]
+    G._prefer_balanced = {"context": context, "cut": cut, "cutctx": cutctx}[variant]
 print(f"balance rule variant: {variant}", flush=True)
 sys.argv = [script] + sys.argv[4:]
 runpy.run_path(str(Path(__file__).resolve().parent / script), run_name="__main__")
