@@ -83,6 +83,19 @@ def _inside_without_overlap(out, region: Region) -> None:
     assert inter.max(initial=0.0) < 1e-6 * float(shapely.area(geoms[0]))
 
 
+def grown_with_and_without(ref, region: Region, flow, **off) -> tuple:
+    """Grow ``ref`` in flow mode along ``flow`` (seed 1) with the defaults and with the
+    parameters ``off``; assert the default output is inside ``region``, free of
+    overlaps and holes, and return it with its (six, stretched) shares and the
+    shares of the other output."""
+    kw = dict(region=region, mode="flow", flow=flow)
+    out = grow_reference(ref, GrowParams(**kw), rng=1)
+    _inside_without_overlap(out, region)
+    assert _holes(out.xy, region) == 0
+    other = grow_reference(ref, GrowParams(**kw, **off), rng=1)
+    return out, _shares(out.xy, region), _shares(other.xy, region)
+
+
 @pytest.mark.slow
 def test_flow_from_the_centre_of_curvature_leaves_few_holes_and_no_overlap(corner):
     ref, kw, out = corner
