@@ -506,7 +506,7 @@ def _harmonize(arrs: list[Any]) -> list[Any]:
 # on from its finished neighbours' elements as parents (Wong et al. §4.1: one run grows
 # the whole panel) instead of meeting them as the panel's edge (strew.ornament._context)
 _HANDS_ON: dict[str, tuple[dict[str, Any], tuple[str, ...]]] = {
-    "ornament": ({"_tiled": True}, ("ornament_proxies", "ornament_group")),
+    "ornament": ({"_tiled": True}, ("ornament_proxies", "ornament_group", "ornament_goal")),
 }
 
 # methods whose elements come in groups kept or dropped whole, by the mean of the group's
@@ -527,7 +527,7 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     my = np.bincount(inv, weights=np.asarray(arr.y, float)) / cnt
     o = _owner(mx, my, job)
     ok = (o == t.index) | np.isin(o, np.fromiter(links, np.int64, len(links)))
-    from .ornament._context import keep_whole, late_phase
+    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, keep_whole, late_phase
 
     placed = ok[inv]
     later = _later_rects(t, job)
@@ -539,11 +539,46 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         for x0, y0, x1, y1 in later:
             d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
         placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
-    return keep_whole(arr["element"], arr["parent"], arr[col], placed)
+    kept = keep_whole(arr["element"], arr["parent"], arr[col], placed)
+    if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
+        # the successes whose empty circle an element dropped here had bounded are left to
+        # the later tile too, and theirs in turn (placement order: a few rounds)
+        x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+        d = np.full(len(arr), np.inf)
+        for x0, y0, x1, y1 in later:
+            d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
+        near = d < _CUT_BAND * job.halo  # within the later tile's reach, so that it refills them
+        reach = _CUT_REACH * job.halo  # a success goes with its descendants (keep_whole)
+        for _ in range(_CUT_ROUNDS):
+            more = near & cut_touching(job.input, arr[PROXIES_COLUMN], arr[col], arr[GOAL_COLUMN], kept)
+            if not more.any():
+                break
+            trial = placed & ~np.isin(inv, inv[more])  # whole successes
+            k2 = keep_whole(arr["element"], arr["parent"], arr[col], trial)
+            if not (d[kept & ~k2] < reach).all():
+                # one by one, leaving those whose descendants reach past the later tile's
+                # reach (a hole no tile refills)
+                trial, k2 = placed, kept
+                for g in np.unique(inv[more]):
+                    t2 = trial & (inv != g)
+                    k3 = keep_whole(arr["element"], arr["parent"], arr[col], t2)
+                    if (d[k2 & ~k3] < reach).all():
+                        trial, k2 = t2, k3
+                if np.array_equal(k2, kept):
+                    break
+            placed, kept = trial, k2
+    return kept
 
 
 # how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)
 _LATE_BAND = 0.5
+# how many rounds of strew.ornament._context.cut_touching _keep_groups runs at most
+_CUT_ROUNDS = 1
+# how near a later tile (in halos) the successes of cut_touching lie
+_CUT_BAND = 0.5
+# how near a later tile (in halos) every row that cut_touching hands over lies: the later
+# tile refills only its grown rectangle, a halo into this tile
+_CUT_REACH = 0.9
 
 
 def _public(job: _Job, arr: Any) -> Any:

@@ -17,7 +17,7 @@ obstacles through their exact proxies, as its own elements are, and parents that
 rules grow from, as if the neighbour's run had gone on. The column is dropped before
 a world's tiles reach their sink.
 
-Two more hand-over rules make the cut look like one run's (strew.tiles._keep_groups):
+Three more hand-over rules make the cut look like one run's (strew.tiles._keep_groups):
 
 - a tile keeps or drops each rule success whole (:data:`GROUP_COLUMN`, by the mean of
   its elements' centres) and only with its parent's (:func:`keep_whole`): a flower
@@ -25,7 +25,12 @@ Two more hand-over rules make the cut look like one run's (strew.tiles._keep_gro
 - a tile leaves its later phases' elements (§5's state preconditions: the flowers'
   buds) within half a halo of a later tile to that tile. In one run no bud exists
   while flowers grow; a cut edge of buds and stems gave the later tile's flowers no
-  parent, and its buds filled the band.
+  parent, and its buds filled the band;
+- a tile leaves to a later tile, within half a halo of it, the rule successes whose
+  empty circle touched an element it drops (:func:`cut_touching`, :data:`GOAL_COLUMN`),
+  and theirs in turn: they filled pockets against elements beyond the border, and left
+  a ragged front into which the later tile's flowers grew on stems too short for a
+  leaf (Appendix A's 8-unit rule).
 
 Departure from the paper: Wong et al. grow one panel in one run; this hand-over between
 runs is ours. ``python benchmarks/worlds_strips.py --methods ornament --seeds 1
@@ -47,7 +52,7 @@ import numpy as np
 from ._pattern import Element, Pattern
 from ._proxies import Proxy
 
-__all__ = ["GROUP_COLUMN", "PROXIES_COLUMN", "element_record", "elements_from", "records_column"]
+__all__ = ["GOAL_COLUMN", "GROUP_COLUMN", "PROXIES_COLUMN", "element_record", "elements_from", "records_column"]
 
 PROXIES_COLUMN = "ornament_proxies"
 """The private column of a tiled ornament's tile: per row, a tuple of element records."""
@@ -57,6 +62,12 @@ GROUP_COLUMN = "ornament_group"
 it (the placement index of its first child). A tile keeps or drops such a group whole
 (strew.tiles._keep_groups): a flower dropped beyond the border left its stem and leaf
 dangling from the kept parent, fencing the band along the border off from new flowers."""
+
+GOAL_COLUMN = "ornament_goal"
+"""The private column of a tiled ornament's tile: per row, the empty circle ``(x, y,
+radius)`` that its rule success grew into (NaNs for none). A tile drops its successes
+whose circle touched an element it drops (strew.tiles._keep_groups, :func:`cut_touching`):
+they filled a pocket whose other side the tile drops."""
 
 
 def _slots(cls: type) -> list[str]:
@@ -158,3 +169,56 @@ def late_phase(pattern: Any, phase: Any) -> np.ndarray:
         return np.zeros(len(ph), bool)
     first = pat.phases[0].name
     return np.array([p not in (first, "", None) for p in ph], bool)
+
+
+CUT_TOUCH = 0.1
+"""A tile also leaves to a later tile its successes whose empty circle touched (within
+this fraction of its radius) an element placed before them that the tile drops
+(:func:`cut_touching`); 0 turns the rule off."""
+
+
+def cut_touching(pattern: Any, records: Any, group: Any, goal: Any, kept: np.ndarray) -> np.ndarray:
+    """(n,) bool: the kept rows whose rule success grew into an empty circle
+    (:data:`GOAL_COLUMN`) that touched, within :data:`CUT_TOUCH` of its radius, a row
+    the tile drops (``~kept``) placed before that success.
+
+    Wong et al. grow into the largest empty circle first (§4.1): such a circle was as
+    small as it was because of the dropped element, and the space it filled is, once that
+    element is gone, part of a larger gap. Kept, the success leaves the later tile a
+    pocket of the cut that its flowers grow into on stems too short for a leaf (Appendix
+    A's 8-unit rule); dropped, the later tile grows through the larger gap as one run
+    would. Departure from the paper: it grows one panel in one run; this hand-over
+    between runs is ours.
+    """
+    import shapely
+
+    n = len(kept)
+    out = np.zeros(n, bool)
+    if not n or CUT_TOUCH <= 0 or kept.all() or not kept.any():
+        return out
+    from ._pattern import load_pattern
+
+    pat = load_pattern(pattern)
+    group = np.asarray(group, np.int64)
+    drop = np.flatnonzero(~kept)
+    geoms, gid = [], []
+    for i in drop:
+        for el in elements_from([records[i]], pat):
+            for pr in el.proxies:
+                geoms.append(pr.geometry)
+                gid.append(group[i])
+    if not geoms:
+        return out
+    gid_a = np.asarray(gid, np.int64)
+    tree = shapely.STRtree(geoms)
+    rows = np.flatnonzero(kept)
+    g = np.array([tuple(v) if v is not None else (np.nan, np.nan, np.nan) for v in np.asarray(goal, dtype=object)[rows]], float).reshape(len(rows), 3)
+    ok = np.isfinite(g).all(axis=1)
+    rows, g = rows[ok], g[ok]
+    if not len(rows):
+        return out
+    pts = shapely.points(g[:, :2])
+    q, hit = tree.query(pts, predicate="dwithin", distance=g[:, 2] * (1.0 + CUT_TOUCH))
+    earlier = gid_a[hit] < group[rows[q]]
+    out[rows[q[earlier]]] = True
+    return out

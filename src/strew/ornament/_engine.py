@@ -897,6 +897,11 @@ class _Grower:
                     self.stats["outside"] += 1
                     continue
                 self._commit(parent, new)
+                for ch in new:
+                    # the empty circle C it grew into, in the panel's frame: a tiled world
+                    # hands over a finished tile's border by it (issue 19.4,
+                    # strew.ornament._context.GOAL_COLUMN)
+                    ch.goal_circle = (float(goal.center[0]), float(goal.center[1]), float(goal.radius))  # type: ignore[attr-defined]
                 if new:
                     return True
         return False

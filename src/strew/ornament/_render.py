@@ -413,6 +413,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     col_parts: list[list[Shape]] = []
     col_groups: list[list[Element]] = []
     col_commit: list[int] = []
+    col_goal: list[tuple[float, float, float]] = []
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
     panel = cover = None
     # a periodic tile's elements are drawn whole: those crossing its edge wrap in at the
@@ -487,6 +488,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         if _proxies:
             col_groups.append(members.get(el.index, [el]))
             col_commit.append(int(getattr(el, "group", el.index)))
+            col_goal.append(getattr(el, "goal_circle", (math.nan, math.nan, math.nan)))
         col_phase.append(el.phase or "")
     # SVG draws one layer per kind, in library order: order the library by draw order
     shapes = {name: shapes[name] for name in sorted(shapes, key=lambda t: (order[t], t))}
@@ -505,10 +507,14 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     }
     extra = {}
     if _proxies:
-        from ._context import GROUP_COLUMN, PROXIES_COLUMN, records_column
+        from ._context import GOAL_COLUMN, GROUP_COLUMN, PROXIES_COLUMN, records_column
 
         extra[PROXIES_COLUMN] = records_column(col_groups, pat)
         extra[GROUP_COLUMN] = np.asarray(col_commit, dtype=np.int64)
+        goals = np.empty(len(col_goal), dtype=object)
+        for i, g in enumerate(col_goal):
+            goals[i] = g
+        extra[GOAL_COLUMN] = goals
     return Arrangement(
         shapes,
         np.asarray(kind, dtype=object) if kind else np.zeros(0, int),
