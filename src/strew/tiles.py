@@ -532,21 +532,19 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     placed = ok[inv]
     later = _later_rects(t, job)
     band = _LATE_BAND * job.halo
+    # each element's distance to the nearest later tile
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    d = np.full(len(arr), np.inf)
+    for x0, y0, x1, y1 in later:
+        d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
     if later and band > 0:
         # the later phases' elements (flowers' buds) near a later tile are left to it
-        x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
-        d = np.full(len(arr), np.inf)
-        for x0, y0, x1, y1 in later:
-            d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
         placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
     kept = keep_whole(arr["element"], arr["parent"], arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
         # the successes whose empty circle an element dropped here had bounded are left to
-        # the later tile too, and theirs in turn (placement order: a few rounds)
-        x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
-        d = np.full(len(arr), np.inf)
-        for x0, y0, x1, y1 in later:
-            d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
+        # the later tile too (_CUT_ROUNDS rounds: more rounds hand over more, and the
+        # later tile's refill then reaches too deep into this one)
         near = d < _CUT_BAND * job.halo  # within the later tile's reach, so that it refills them
         reach = _CUT_REACH * job.halo  # a success goes with its descendants (keep_whole)
         for _ in range(_CUT_ROUNDS):
