@@ -9,7 +9,7 @@ import textwrap
 import numpy as np
 import pytest
 import shapely
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from strew import _periodic as P
@@ -146,7 +146,30 @@ def test_uniform_sites_keep_their_distance_across_the_wrap():
     assert len(pts) > 0.8 * 300 * 200 / 20**2  # near maximal
 
 
+def _snap_in_bounds(angle, period, w, h):
+    """Whether some lattice vector (k, l) gives stripes that repeat on the w x h tile within
+    the bounds _snap_stripes states (snap18i): a turn of at most 15 degrees (never flipped)
+    and widths within a factor 2. The rounded vector (the old rule) answers when it is
+    within them; otherwise every vector whose period is at least half the asked one."""
+    n0 = np.array([-math.sin(angle), math.cos(angle)])
+
+    def within(k, l):
+        v = np.stack([np.asarray(k, float) / w, np.asarray(l, float) / h])
+        length = np.hypot(v[0], v[1])
+        cos_turn = (n0 @ v) / np.where(length > 0, length, 1.0)
+        ratio = 1.0 / np.where(length > 0, period * length, np.inf)
+        return (length > 0) & (cos_turn >= math.cos(math.radians(15)) - 1e-12) & (ratio >= 0.5 - 1e-12) & (ratio <= 2 + 1e-12)
+
+    if within([round(w * n0[0] / period)], [round(h * n0[1] / period)])[0]:
+        return True
+    kk, ll = np.meshgrid(np.arange(-math.ceil(2 * w / period), math.ceil(2 * w / period) + 1),
+                         np.arange(-math.ceil(2 * h / period), math.ceil(2 * h / period) + 1))
+    return bool(within(kk.ravel(), ll.ravel()).any())
+
+
 @given(st.floats(-3.2, 3.2), st.lists(st.floats(1, 40), min_size=1, max_size=3), st.floats(100, 900), st.floats(100, 900))
+# snap18i: found by a random run: rounding (k, l) gave (0, -1), which turned the lines 65 degrees
+@example(2.0, [21.0, 40.0], 100.0, 220.0)
 def test_snapped_stripes_repeat_with_the_tile(angle, widths, w, h):
     from strew.program._operators import _snap_stripes, set_face_labels, stripes_properties
 
@@ -155,6 +178,11 @@ def test_snapped_stripes_repeat_with_the_tile(angle, widths, w, h):
     asked = sum(widths) * (m * 3 // np.gcd(m, 3)) / m  # the set's whole cycle of lines and labels
     if round(w * -math.sin(angle) / asked) == 0 and round(h * math.cos(angle) / asked) == 0:
         with pytest.raises(InputError, match="smaller than two stripes"):
+            _snap_stripes(p, (0, 0, w, h))
+        return
+    if not _snap_in_bounds(angle, asked, w, h):
+        # no lattice direction within the bounds: refused, naming the nearest reachable angle
+        with pytest.raises(InputError, match=r"nearest reachable angle is -?[0-9.]+ rad"):
             _snap_stripes(p, (0, 0, w, h))
         return
     q = _snap_stripes(p, (0, 0, w, h))
@@ -167,6 +195,9 @@ def test_snapped_stripes_repeat_with_the_tile(angle, widths, w, h):
         assert abs(k - round(k)) < 1e-7 * max(1.0, abs(k))
     np.testing.assert_allclose(np.array(q.widths) / sum(q.widths), np.array(widths) / sum(widths), rtol=1e-9)
     assert n @ n0 > 0.5  # near the asked direction, never flipped
+    # snap18i: the stated bounds, a turn of at most 15 degrees and widths within a factor 2
+    assert n @ n0 >= math.cos(math.radians(15)) - 1e-12
+    assert 0.5 - 1e-12 <= q.widths[0] / widths[0] <= 2 + 1e-12
 
 
 def test_periodic_is_deterministic(script):

@@ -414,35 +414,129 @@ def set_face_labels(p: StripesProperties, l1: str, *labels: str) -> StripesPrope
     return replace(p, face_labels=p.face_labels + (_label_list((l1, *labels), "set_face_labels"),))
 
 
+#: Bounds on how far :func:`_snap_stripes` may move a stripes set to make it repeat with a
+#: tile (issue 18): the lines turn by at most this angle (radians) ...
+_SNAP_MAX_TURN = math.radians(15.0)
+#: ... and the widths change by at most this factor (either way).
+_SNAP_MAX_WIDTH_RATIO = 2.0
+
+
+def _stripes_repeat(p: StripesProperties) -> float:
+    """The repeat of a stripes set along its normal: the widths' cycle, extended to a whole
+    number of every label cycle."""
+    m = len(p.widths)
+    cycle = m
+    for g in (*p.edge_labels, *p.face_labels):
+        cycle = cycle * len(g) // math.gcd(cycle, len(g))
+    return float(sum(p.widths)) * cycle / m
+
+
+def _snap_reach(turn: float, ratio: float) -> float:
+    """How far (in units of the asked frequency's length) a frequency vector that turns by
+    at most ``turn`` and scales the widths by a factor within ``ratio`` either way can be
+    from the asked one: ``|r e^{i d} - 1| <= (ratio - 1) + ratio * 2 sin(turn / 2)`` for
+    ``1 / ratio <= r <= ratio`` and ``|d| <= turn``."""
+    return (ratio - 1.0) + ratio * 2.0 * math.sin(min(turn, math.pi) / 2.0)
+
+
+def _snap_window(n0: np.ndarray, period: float, w: float, h: float, reach: float) -> tuple[np.ndarray, np.ndarray]:
+    """Every lattice vector ``(k, l)`` but ``(0, 0)`` in the box around the asked frequency
+    ``n0 / period`` that holds the disc of radius ``reach / period`` about it (the
+    frequency of ``(k, l)`` is ``(k / w, l / h)``)."""
+    kc, lc = w * n0[0] / period, h * n0[1] / period
+    rk, rl = reach * w / period + 1.0, reach * h / period + 1.0
+    ks = np.arange(math.ceil(kc - rk), math.floor(kc + rk) + 1, dtype=float)
+    ls = np.arange(math.ceil(lc - rl), math.floor(lc + rl) + 1, dtype=float)
+    k, l = (x.ravel() for x in np.meshgrid(ks, ls, indexing="ij"))
+    keep = (k != 0) | (l != 0)
+    return k[keep], l[keep]
+
+
+def _snap_measures(k: np.ndarray, l: np.ndarray, n0: np.ndarray, period: float, w: float, h: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """For lattice vectors ``(k, l)``: the signed turn (radians, from ``n0`` to the
+    snapped normal), the snapped widths' ratio to the asked ones, and the cost
+    ``|period (k / w, l / h) - n0|**2``."""
+    vx, vy = k / w, l / h
+    turn = np.arctan2(n0[0] * vy - n0[1] * vx, n0[0] * vx + n0[1] * vy)
+    ratio = 1.0 / (period * np.hypot(vx, vy))
+    cost = (period * vx - n0[0]) ** 2 + (period * vy - n0[1]) ** 2
+    return turn, ratio, cost
+
+
 def _snap_stripes(p: StripesProperties, tile: tuple[float, float, float, float]) -> StripesProperties:
     """The stripes set nearest ``p`` that repeats with the tile's periods (issue 18).
 
     A stripes set of unit normal ``n`` and repeat ``P`` (the widths' cycle, extended to a
     whole number of every label cycle) is invariant under the translation ``t`` when
-    ``t . n`` is a multiple of ``P``. With ``n / P = (k / W, l / H)`` for integers ``k``
-    and ``l`` both tile periods are; ``k`` and ``l`` are the nearest integers to the
-    requested ``W n_x / P`` and ``H n_y / P``. The angle and the widths change a little
-    (the widths all by one factor), which the paper's fixed stripes do not need.
+    ``t . n`` is a multiple of ``P``. Both tile periods are when ``n / P = (k / W, l / H)``
+    for integers ``k`` and ``l``. The angle and the widths change (the widths all by one
+    factor ``s``), which the paper's fixed stripes do not need (Loi §5.1 has no tile).
+
+    Of the lattice vectors ``(k, l)`` that turn the lines by at most ``_SNAP_MAX_TURN``
+    (15 degrees; never flipping the normal, which would reverse the label order) and keep
+    ``s`` within a factor ``_SNAP_MAX_WIDTH_RATIO`` (2) either way, the one of least cost
+    ``|P (k / W, l / H) - n0|**2`` is taken: the squared distance to the asked frequency
+    vector ``n0 / P``, relative to its length (to first order ``turn**2 + (1 - 1 / s)**2``).
+    Its unbounded minimum is ``k`` and ``l`` rounded (the rule before), which is kept
+    whenever it is within bounds, so those tiles are unchanged. Rounding alone turned the
+    lines by up to 90 degrees when the tile holds about one repeat (65 degrees for angle
+    2, widths 21 and 40 with three labels, tile 100 x 220). Otherwise the search is
+    bounded: the box of lattice vectors that can meet the bounds (rounding misses them only
+    when ``P > 0.36 min(W, H)``, so the box spans at most 11 vectors across the tile's
+    shorter side and about ``3 max(W, H) / P + 3`` along the longer one). When none does, an
+    :class:`InputError` names the angle, the tile and the nearest reachable angle, rather
+    than turning the stripes silently.
     """
-    _, _, w, h = tile
-    m = len(p.widths)
-    cycle = m
-    for g in (*p.edge_labels, *p.face_labels):
-        cycle = cycle * len(g) // math.gcd(cycle, len(g))
-    period = float(sum(p.widths)) * cycle / m
+    _, _, w, h = (float(x) for x in tile)
+    period = _stripes_repeat(p)
     n0 = np.array([-math.sin(p.angle), math.cos(p.angle)])
-    k, l = round(w * n0[0] / period), round(h * n0[1] / period)
-    if k == 0 and l == 0:
+    k0, l0 = round(w * n0[0] / period), round(h * n0[1] / period)
+    if k0 == 0 and l0 == 0:
         raise InputError(
             f"periodic: the tile ({w:g} x {h:g}) is smaller than two stripes of this set "
             f"(it repeats every {period:g} units); use a larger tile or narrower stripes"
         )
-    v = np.array([k / w, l / h])
+    max_turn, max_log = _SNAP_MAX_TURN + 1e-12, math.log(_SNAP_MAX_WIDTH_RATIO) + 1e-12
+    k, l = np.array([k0], dtype=float), np.array([l0], dtype=float)
+    turn, ratio, cost = _snap_measures(k, l, n0, period, w, h)
+    ok = (np.abs(turn) <= max_turn) & (np.abs(np.log(ratio)) <= max_log)
+    if not ok[0]:
+        nearest = (float(turn[0]), float(ratio[0]))
+        k, l = _snap_window(n0, period, w, h, _snap_reach(max_turn, _SNAP_MAX_WIDTH_RATIO))
+        turn, ratio, cost = _snap_measures(k, l, n0, period, w, h)
+        ok = (np.abs(turn) <= max_turn) & (np.abs(np.log(ratio)) <= max_log)
+        if not ok.any():
+            raise InputError(_snap_refusal(p, period, n0, w, h, nearest))
+    i = int(np.argmin(np.where(ok, cost, np.inf)))
+    v = np.array([k[i] / w, l[i] / h])
     p_new = 1.0 / float(np.hypot(v[0], v[1]))
     n = v * p_new
     angle = math.atan2(-n[0], n[1])
     f = p_new / period
     return replace(p, angle=angle, widths=tuple(x * f for x in p.widths))
+
+
+def _snap_refusal(p: StripesProperties, period: float, n0: np.ndarray, w: float, h: float, nearest: tuple[float, float]) -> str:
+    """The message of :func:`_snap_stripes` when no lattice direction is within bounds:
+    the asked angle, the tile, and the nearest reachable angle: the least turn among the
+    lattice vectors whose widths are within bounds, else (none is) the turn and widths'
+    ratio ``nearest`` of the nearest lattice vector."""
+    k, l = _snap_window(n0, period, w, h, _snap_reach(math.pi, _SNAP_MAX_WIDTH_RATIO))
+    turn, ratio, _ = _snap_measures(k, l, n0, period, w, h)
+    fits = np.abs(np.log(ratio)) <= math.log(_SNAP_MAX_WIDTH_RATIO)
+    if fits.any():
+        i = int(np.argmin(np.where(fits, np.abs(turn), np.inf)))
+        t, s = float(turn[i]), float(ratio[i])
+    else:
+        t, s = nearest
+    near = round(p.angle + t, 4) + 0.0  # + 0.0: no "-0"
+    return (
+        f"periodic: stripes at angle {p.angle:g} rad ({math.degrees(p.angle):.1f} deg), repeating every "
+        f"{period:g} units, cannot repeat on the {w:g} x {h:g} tile within {math.degrees(_SNAP_MAX_TURN):g} deg "
+        f"of that angle and a factor {_SNAP_MAX_WIDTH_RATIO:g} on the widths; the nearest reachable angle is "
+        f"{near:.4f} rad ({math.degrees(near):.1f} deg, a turn of {math.degrees(t):+.1f} deg, widths x {s:.3g}); "
+        f"use a larger tile, narrower stripes or that angle"
+    )
 
 
 def _stripe_lines(p: StripesProperties, bounds: tuple[float, float, float, float], fixed: bool = False) -> list[Curve]:
