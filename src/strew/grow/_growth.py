@@ -63,6 +63,7 @@ from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
 from ._flow_gaps import close_gaps, fill_holes, side_stream
 from ._flow_holes import close_holes
+from ._flow_net import hexagonal_reference, relax_network
 from ._flow_retry import retry_shear
 from ._flow_shear import reshape_shear
 from ._flow_stretch import insert_stretched
@@ -199,6 +200,16 @@ class GrowParams:
     #: flow mode: the passes after the growth also tried with the sheared bands fitted
     #: first without a gap guard, the better kept (:func:`strew.grow._flow_retry.retry_shear`)
     flow_shear_retry: bool = True
+    #: flow mode, a regular hexagonal exemplar: last, the whole bond network relaxed to
+    #: one mean edge per bond in this many rounds, each held to the round before with
+    #: ``flow_net_hold``, kept where it leaves more interior six-neighbour sites and no
+    #: more gaps (:func:`strew.grow._flow_net.relax_network`); None: not
+    flow_net_rounds: int | None = 10
+    flow_net_hold: float = 0.3
+    flow_net_passes: int = 3
+    flow_net_rest: float = 1.0
+    flow_net_stiff: float = 1.0
+    flow_net_contact: bool = False
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -781,6 +792,9 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                     reshape_shear(self)
                 if len(self.order) < target:
                     close_holes(self, target)
+            if p.flow_net_rounds and p.relax and hexagonal_reference(self.ref):
+                # (the bond network relaxed whole: issue 14 point 2; no random draws)
+                relax_network(self)
             self.rng = main
 
     def _irregular(self) -> bool:
