@@ -201,15 +201,17 @@ class GrowParams:
     #: first without a gap guard, the better kept (:func:`strew.grow._flow_retry.retry_shear`)
     flow_shear_retry: bool = True
     #: flow mode, a regular hexagonal exemplar: last, the whole bond network relaxed to
-    #: one mean edge per bond in this many rounds, each held to the round before with
-    #: ``flow_net_hold``, kept where it leaves more interior six-neighbour sites and no
-    #: more gaps (:func:`strew.grow._flow_net.relax_network`); None: not
+    #: one mean edge per bond in ``flow_net_rounds`` rounds, each held to the round
+    #: before with ``flow_net_hold``; the moves tried whole, then halved
+    #: (``flow_net_steps`` tries), each kept where it leaves more interior six-neighbour
+    #: sites, no new gap, and the lattice's turn from the field (90th percentile) at
+    #: most ``flow_net_turn`` degrees over the grown one's (None: not checked); up to
+    #: ``flow_net_passes`` passes (:func:`strew.grow._flow_net.relax_network`); None: not
     flow_net_rounds: int | None = 10
     flow_net_hold: float = 0.3
     flow_net_passes: int = 3
-    flow_net_rest: float = 1.0
-    flow_net_stiff: float = 1.0
-    flow_net_contact: bool = False
+    flow_net_turn: float | None = 0.5
+    flow_net_steps: int = 2
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -792,8 +794,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                     reshape_shear(self)
                 if len(self.order) < target:
                     close_holes(self, target)
-            if p.flow_net_rounds and p.relax and hexagonal_reference(self.ref):
-                # (the bond network relaxed whole: issue 14 point 2; no random draws)
+            if p.flow_net_rounds and p.relax and p.flow_stretch_min is not None and hexagonal_reference(self.ref):
+                # (the bond network relaxed whole: issue 14 point 2; no random draws;
+                # it only moves elements, so only after the insertions that give a
+                # stretched lattice its dislocations' extra rows)
                 relax_network(self)
             self.rng = main
 
