@@ -77,8 +77,10 @@ def hexagonal_reference(ref) -> bool:
 def _delaunay_bonds(pts: np.ndarray, cut: float) -> np.ndarray:
     from scipy.spatial import Delaunay
 
-    s = Delaunay(pts).simplices
-    e = np.unique(np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1), axis=0)
+    s = Delaunay(pts).simplices.astype(np.int64)
+    e = np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1)
+    k = np.unique(e[:, 0] * len(pts) + e[:, 1])
+    e = np.c_[k // len(pts), k % len(pts)]
     ln = np.hypot(*(pts[e[:, 1]] - pts[e[:, 0]]).T)
     return e[ln < cut]
 
@@ -137,7 +139,8 @@ def _relax_once(g, turn0: float) -> int:
             new[bad] = pts[bad]
         pts = new
     share0 = _six_share(g)
-    gaps0 = _far_points(g)
+    grid = _grid(g)
+    gaps0 = _far_points(g, grid)
     moves: dict[int, tuple[float, float]] = {}
     old: dict[int, tuple] = {}
     tiny = 1e-9 * L
@@ -150,14 +153,22 @@ def _relax_once(g, turn0: float) -> int:
             old[o] = (ox, oy, g.geom[o], float(g.rot[o]))
     if not moves:
         return 0
+    limit = None if p.flow_net_turn is None else turn0 + float(p.flow_net_turn)
     for first in range(int(p.flow_net_steps)):
-        # the whole fit first, then (where it is not kept) each move shortened
+        # the whole fit first, then (where it is not kept) each move shortened; a step
+        # is not made where its fitted positions alone (before the outlines' checks,
+        # which step some moves back and so turn the lattice less) leave no more six
+        # sites or turn the lattice over _TURN_SLACK degrees past the limit (a
+        # shortcut: the checks cost more than the fit)
+        cand = pts0 + _STEPS[first] * (pts - pts0)
+        if _six_share(g, cand) <= share0 or (limit is not None and _misalignment(g, cand) > limit + _TURN_SLACK):
+            continue
         level = _settle_steps(g, moves, old, first)
-        _undo_gaps(g, moves, old, level, gaps0, 1.5)
+        _undo_gaps(g, moves, old, level, grid, gaps0, 1.5)
         share1 = _six_share(g)
-        gaps1 = _far_points(g)
+        gaps1 = _far_points(g, grid)
         turn1 = _misalignment(g)
-        if share1 > share0 and len(gaps1) <= len(gaps0) and (p.flow_net_turn is None or turn1 <= turn0 + float(p.flow_net_turn)):
+        if share1 > share0 and len(gaps1) <= len(gaps0) and (limit is None or turn1 <= limit):
             return sum(1 for o in moves if g.xy[o] != old[o][:2])
         for o, (x, y, geom, rot) in old.items():
             if g.xy[o] != (x, y):
@@ -166,6 +177,10 @@ def _relax_once(g, turn0: float) -> int:
             g.rot[o] = rot
     return 0
 
+
+#: how far past ``flow_net_turn`` the fitted positions alone may turn the lattice
+#: before a step is tried (see ``_relax_once``)
+_TURN_SLACK = 1.0
 
 #: the shares of a move tried in turn where the whole move makes an overlap or leaves
 #: the region (the last: no move)
@@ -224,21 +239,21 @@ def _resolve(g, moves: dict, old: dict, level: dict, check: list) -> None:
         check = sorted({j for o in back for j in g.near(*g.xy[o], 2.0 * g.l, (ELEMENT,)) if j in level} | back)
 
 
-def _six_share(g) -> float:
-    """The share of the placed elements over two mean edges inside the region with
-    six elements at 0.85-1.15 mean edges and none nearer (``six_nbr_share`` of
-    ``benchmarks/grow.py``)."""
+def _six_share(g, xy: np.ndarray | None = None) -> float:
+    """The share of the placed elements (at ``xy``, None: where they are) over two
+    mean edges inside the region with six elements at 0.85-1.15 mean edges and none
+    nearer (``six_nbr_share`` of ``benchmarks/grow.py``)."""
     from scipy.spatial import cKDTree
 
     L = g.l
-    els = [i for i in g.order if g.state[i] == ELEMENT]
-    xy = g.pos[els]
+    if xy is None:
+        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
     q = xy[g.region.distance_to_boundary(xy) > 2.0 * L] if g.region is not None else xy
     if not len(q):
         return 0.0
     tree = cKDTree(xy)
-    hi = np.array([len(v) for v in tree.query_ball_point(q, 1.15 * L)], dtype=int) - 1
-    lo = np.array([len(v) for v in tree.query_ball_point(q, 0.85 * L)], dtype=int) - 1
+    hi = np.asarray(tree.query_ball_point(q, 1.15 * L, return_length=True), dtype=int) - 1
+    lo = np.asarray(tree.query_ball_point(q, 0.85 * L, return_length=True), dtype=int) - 1
     return float(((hi == 6) & (lo == 0)).mean())
 
 
@@ -247,62 +262,68 @@ def _phases(pts: np.ndarray, q: np.ndarray, r: float) -> np.ndarray:
     of ``exp(6 i theta)`` over its neighbours within ``r``, divided by 6."""
     from scipy.spatial import cKDTree
 
+    t = cKDTree(pts)
+    pairs = t.query_pairs(r, output_type="ndarray")
+    where = np.full(len(pts), -1, dtype=np.intp)
+    where[q] = np.arange(len(q))
     out = np.zeros(len(q), dtype=complex)
-    for k, nb in enumerate(cKDTree(pts).query_ball_point(pts[q], r)):
-        d = pts[[j for j in nb if j != q[k]]] - pts[q[k]]
-        out[k] = np.exp(6j * np.arctan2(d[:, 1], d[:, 0])).sum()
+    d = pts[pairs[:, 1]] - pts[pairs[:, 0]]
+    z = np.exp(6j * np.arctan2(d[:, 1], d[:, 0]))  # (the same both ways: 6 (theta + pi))
+    for a in (pairs[:, 0], pairs[:, 1]):
+        k = where[a]
+        np.add.at(out, k[k >= 0], z[k >= 0])
     return np.angle(out) / 6
 
 
-def _turns(g) -> tuple[np.ndarray, np.ndarray]:
-    """(elements, degrees): the elements over two mean edges inside the region and
-    the turn (wrapped to +-30) of the lattice's six-fold bond direction there from the
-    exemplar's, less the field's angle (``field_misalignment`` of
-    ``benchmarks/grow.py``)."""
+def _misalignment(g, xy: np.ndarray | None = None) -> float:
+    """The 90th percentile over the placed elements (at ``xy``, None: where they are)
+    over two mean edges inside the region of the turn (degrees, wrapped to +-30) of
+    the lattice's six-fold bond direction from the exemplar's, less the field's angle
+    there (``misalign_deg_p90`` of ``benchmarks/grow.py``)."""
     L = g.l
-    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.intp)
-    xy = g.pos[els]
+    if xy is None:
+        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
     q = np.flatnonzero(g.region.distance_to_boundary(xy) > 2.0 * L) if g.region is not None else np.arange(len(xy))
     ex = np.asarray(g.ref.xy, dtype=float)
     er = getattr(g.ref.exemplar, "region", None)
     eq = np.flatnonzero(er.distance_to_boundary(ex) > 1.5 * L) if er is not None else np.arange(len(ex))
     if not len(q) or not len(eq):
-        return els[q], np.zeros(len(q))
+        return 0.0
     phi0 = float(np.angle(np.exp(6j * _phases(ex, eq, 1.15 * L)).sum()) / 6)
     v = np.asarray(g.p.flow(xy[q]), dtype=float)
     d = _phases(xy, q, 1.15 * L) - phi0 - np.arctan2(v[:, 1], v[:, 0])
-    return els[q], np.abs(np.degrees((d + np.pi / 6) % (np.pi / 3) - np.pi / 6))
+    return float(np.quantile(np.abs(np.degrees((d + np.pi / 6) % (np.pi / 3) - np.pi / 6)), 0.9))
 
 
-def _misalignment(g) -> float:
-    """The 90th percentile of :func:`_turns` (``misalign_deg_p90``)."""
-    d = _turns(g)[1]
-    return float(np.quantile(d, 0.9)) if len(d) else 0.0
-
-
-def _far_points(g) -> np.ndarray:
-    """The points of :func:`strew.grow._flow_retry.interior_score`'s grid farther
-    than 0.75 mean edges from every placed element, (k, 2)."""
-    from scipy.spatial import cKDTree
-
+def _grid(g) -> np.ndarray:
+    """The points of a quarter-edge grid over two mean edges inside the region (as
+    :func:`strew.grow._flow_retry.interior_score`'s, and on the band's inner edge too:
+    ``benchmarks/grow.py``'s grid starts there), (k, 2)."""
     L = g.l
-    els = [i for i in g.order if g.state[i] == ELEMENT]
-    xy = g.pos[els]
     rg = g.region
     if rg is not None:
         x0, y0, x1, y1 = (float(v) for v in rg.bounds)
     else:
+        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
         (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
     grid = np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T
     if rg is not None and len(grid):
-        # (on the band's inner edge too: benchmarks/grow.py's grid starts there)
         grid = grid[rg.contains(grid) & (rg.distance_to_boundary(grid) > 2.0 * L - 1e-9 * L)]
+    return grid
+
+
+def _far_points(g, grid: np.ndarray) -> np.ndarray:
+    """The points of ``grid`` farther than 0.75 mean edges from every placed element."""
+    from scipy.spatial import cKDTree
+
     if not len(grid):
         return grid
+    L = g.l
+    xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
     return grid[cKDTree(xy).query(grid, distance_upper_bound=0.75 * L)[0] > 0.75 * L]
 
 
-def _undo_gaps(g, moves: dict, old: dict, level: dict, far0: np.ndarray, reach: float) -> None:
+def _undo_gaps(g, moves: dict, old: dict, level: dict, grid: np.ndarray, far0: np.ndarray, reach: float) -> None:
     """Where the moves opened gaps (far points that were not far before), the elements
     within ``reach`` mean edges of them go back (and those then overlapping them step
     back), up to three times."""
@@ -312,7 +333,7 @@ def _undo_gaps(g, moves: dict, old: dict, level: dict, far0: np.ndarray, reach: 
     last = len(_STEPS) - 1
     was = cKDTree(far0) if len(far0) else None
     for _ in range(3):
-        far = _far_points(g)
+        far = _far_points(g, grid)
         if was is not None and len(far):
             far = far[was.query(far)[0] > 1e-9 * L]
         if not len(far):
