@@ -66,7 +66,6 @@ def main() -> None:
     rows = []
     for v in [int(x) for x in a.variants.split(",")]:
         ex = mk.make_exemplar("rings", rng=v, **kw)
-        p = ex.meta.get("params", {}) or {}
         tiles, radius, spacing = kw.get("tiles", 10), kw.get("radius", 15.0), kw.get("spacing", 40.0)
         x0, y0, x1, y1 = ex.region.bounds
         for s in [int(x) for x in a.seeds.split(",")]:
