@@ -68,7 +68,7 @@ from ._flow_retry import retry_shear
 from ._flow_shear import reshape_shear
 from ._flow_stretch import insert_stretched
 from ._index import GrowIndex
-from ._lone_larger import swap_lone_larger
+from ._lone_larger import lone_kinds, swap_lone_larger
 from ._match import MODES, W1, W2, W3
 from ._objects import (
     ELEMENT,
@@ -759,7 +759,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 if len(self.order) >= target or not fill_void_holes(self):
                     break
                 self.advance(rep, target)
-        if self.mode_code == 0 and self.tile is None and self.boundary is None and self.spray_area is None and self.n_kinds > 1 and float(self.size_level.max()) > float(self.size_level.min()):
+        if self.mode_code == 0 and self.tile is None and self.boundary is None and self.spray_area is None and self.n_kinds > 1 and lone_kinds(self):
             # larger elements with no smaller one as near as the reference always has
             # one (not in the paper; see :mod:`strew.grow._lone_larger`)
             for _ in range(p.refill_rounds):
