@@ -47,6 +47,8 @@ def options(p: Any) -> None:
 # Cases no audit set has (helper gvar14g, issue 14 point 1): where hidden exemplars of the
 # multi-size and stone classes may bite. ``aspect`` (stones only) stretches the stone
 # outline (make.py's ``_stone`` draws aspect 0.8).
+# Helper gvar14i appended 12 sets (two sizes h8-h12, three sizes h7-h13):
+# ``benchmarks/gvar14i_harder_extra.py`` runs them alone.
 HARDER: dict[str, list[dict[str, Any]]] = {
     "two_sizes": [
         dict(ratio=0.45, n_large=60, n_small=200),
@@ -57,6 +59,13 @@ HARDER: dict[str, list[dict[str, Any]]] = {
         dict(ratio=0.6, n_large=25, n_small=250),  # many pebbles among few stones
         dict(ratio=0.5, size=120.0, n_large=12, n_small=40),  # about 50 elements
         dict(ratio=0.4, n_large=100, n_small=60),  # pebbles a minority
+        # (helper gvar14i: kinds of one size level, ratio over 1 / 1.5, few pebbles; and
+        # uneven shares)
+        dict(ratio=0.75, n_large=60, n_small=40),
+        dict(ratio=0.85, n_large=40, n_small=120),
+        dict(ratio=0.7, n_large=80, n_small=20),
+        dict(ratio=0.65, n_large=30, n_small=150),
+        dict(ratio=0.5, n_large=80, n_small=80),
     ],
     "stones": [
         dict(count=20, size=120.0),  # about 20 stones
@@ -76,6 +85,15 @@ HARDER: dict[str, list[dict[str, Any]]] = {
         dict(ratios=(1.0, 2.5, 4.0), counts=(100, 100, 15)),
         dict(small=3.0, ratios=(1.0, 2.0, 6.0), counts=(200, 40, 6)),
         dict(size=150.0, counts=(80, 20, 30)),  # about 100 elements
+        # (helper gvar14i: the medium stones a majority or a minority beside the large
+        # ones, and medium and large of one size level)
+        dict(counts=(20, 120, 20)),
+        dict(counts=(100, 150, 10)),
+        dict(counts=(30, 60, 60)),
+        dict(ratios=(1.0, 1.8, 2.6), counts=(60, 120, 30)),  # medium and large one level
+        dict(ratios=(1.0, 3.0, 4.5), counts=(80, 80, 30)),
+        dict(counts=(400, 15, 15)),
+        dict(counts=(200, 60, 5)),
     ],
     "clusters": [
         dict(large=10.0, small=5.0, ring_min=3, ring_max=4),  # ring discs half the centre's size
