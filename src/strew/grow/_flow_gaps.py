@@ -57,7 +57,12 @@ def _bonds(g):
         return None
     els, pts, tri, _, _ = cc
     s = tri.simplices
-    return els, pts, np.unique(np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1), axis=0)
+    e = np.sort(np.r_[s[:, [0, 1]], s[:, [1, 2]], s[:, [0, 2]]], axis=1).astype(np.int64)
+    # (the rows' unique set by one key each, lower end first: the order of
+    # ``np.unique(e, axis=0)``, without its sort of row records)
+    n = len(pts)
+    k = np.unique(e[:, 0] * n + e[:, 1])
+    return els, pts, np.c_[k // n, k % n].astype(s.dtype)
 
 
 def _wide_circles(g, lo: float):

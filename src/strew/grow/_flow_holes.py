@@ -146,7 +146,9 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: 
     want = np.maximum(n, reach) if taut is not None else np.full(len(n), reach)
     off = np.r_[rel, d / n[:, None] * want[:, None]]
     w = np.r_[np.ones(len(pairs)), np.full(len(ri), float(p.flow_hole_weight))]
-    pair_at = {(int(a), int(b)): q for q, (a, b) in enumerate(pairs.tolist())}
+    # (the pairs' rows by their ends, built only when a refit needs them: most fits
+    # are kept or given up on the first round)
+    pair_at: dict[tuple[int, int], int] = {}
     tiny = 1e-9 * L
     old = {o: (g.xy[o][0], g.xy[o][1], g.geom[o], float(g.rot[o])) for o in window}
 
@@ -196,6 +198,8 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: 
         if not any(hits.values()):
             return (float(new[k0, 0]), float(new[k0, 1])), undo
         undo()
+        if not pair_at:
+            pair_at = {(int(a), int(b)): q for q, (a, b) in enumerate(pairs.tolist())}
         for o, hs in hits.items():
             for h in hs:
                 h = g.orig_of[h]

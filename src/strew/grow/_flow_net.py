@@ -308,7 +308,9 @@ def _grid(g) -> np.ndarray:
         (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
     grid = np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T
     if rg is not None and len(grid):
-        grid = grid[rg.contains(grid) & (rg.distance_to_boundary(grid) > 2.0 * L - 1e-9 * L)]
+        # (the distance only for the points inside: the same points as both tests on all)
+        grid = grid[rg.contains(grid)]
+        grid = grid[rg.distance_to_boundary(grid) > 2.0 * L - 1e-9 * L]
     return grid
 
 

@@ -74,10 +74,27 @@ def restore(g, snap: dict) -> None:
     d.update(snap)
 
 
-def interior_score(g) -> tuple[int, int]:
+def _region_grid(g) -> np.ndarray | None:
+    """The quarter-edge grid of :func:`interior_score`'s holes over a region (None
+    without one: the grid then spans the elements)."""
+    rg = g.region
+    if rg is None:
+        return None
+    L = g.l
+    x0, y0, x1, y1 = (float(v) for v in rg.bounds)
+    grid = np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T
+    if len(grid):
+        # (the distance only for the points inside: the same points as both tests on all)
+        grid = grid[rg.contains(grid)]
+        grid = grid[rg.distance_to_boundary(grid) > 2.0 * L]
+    return grid
+
+
+def interior_score(g, grid: np.ndarray | None = None) -> tuple[int, int]:
     """(sites over two mean edges inside the region with six elements at 0.85-1.15
     mean edges and none nearer, points of a quarter-edge grid there farther than 0.75
-    mean edges from every element)."""
+    mean edges from every element); ``grid``: :func:`_region_grid`'s, made once for
+    two scores of one region."""
     from scipy.spatial import cKDTree
 
     L = g.l
@@ -89,16 +106,15 @@ def interior_score(g) -> tuple[int, int]:
     rg = g.region
     if rg is not None:
         q = xy[rg.distance_to_boundary(xy) > 2.0 * L]
-        x0, y0, x1, y1 = (float(v) for v in rg.bounds)
+        if grid is None:
+            grid = _region_grid(g)
     else:
         q = xy
         (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
-    hi = np.array([len(v) for v in tree.query_ball_point(q, 1.15 * L)], dtype=int) - 1
-    lo = np.array([len(v) for v in tree.query_ball_point(q, 0.85 * L)], dtype=int) - 1
+        grid = np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T
+    hi = np.asarray(tree.query_ball_point(q, 1.15 * L, return_length=True), dtype=int) - 1
+    lo = np.asarray(tree.query_ball_point(q, 0.85 * L, return_length=True), dtype=int) - 1
     six = int(((hi == 6) & (lo == 0)).sum())
-    grid = np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T
-    if rg is not None and len(grid):
-        grid = grid[rg.contains(grid) & (rg.distance_to_boundary(grid) > 2.0 * L)]
     far = int((tree.query(grid, distance_upper_bound=0.75 * L)[0] > 0.75 * L).sum()) if len(grid) else 0
     return six, far
 
@@ -131,12 +147,16 @@ def retry_shear(g, target: int) -> bool:
     """The passes after the last relaxation, run both ways (see the module); True when
     the second was kept."""
     before = snapshot(g)
+    grid = _region_grid(g)
     _passes(g, target, first=False)
-    six0, far0 = interior_score(g)
-    kept = snapshot(g)
+    six0, far0 = interior_score(g, grid)
+    # (the first try's state itself is kept aside, not a copy: putting back ``before``
+    # replaces every attribute, and the second try changes only ``before``'s copies,
+    # so the first try's objects stay as they were; one deep copy fewer)
+    kept = dict(vars(g))
     restore(g, before)
     _passes(g, target, first=True)
-    six1, far1 = interior_score(g)
+    six1, far1 = interior_score(g, grid)
     if six1 > six0 and far1 <= far0:
         return True
     restore(g, kept)

@@ -123,7 +123,9 @@ def _reshape_band(g, els, fb, src, dst, off, gap: float | None = 0.7) -> int:
     grid = np.mgrid[x0:x1:0.25 * L, y0:y1:0.25 * L].reshape(2, -1).T
     if g.region is not None:
         # (a gap within two edges of the region's edge is the edge's, see close_holes)
-        grid = grid[g.region.contains(grid) & (g.region.distance_to_boundary(grid) > 2.0 * L)]
+        # (the distance only for the points inside: the same points as both tests on all)
+        grid = grid[g.region.contains(grid)]
+        grid = grid[g.region.distance_to_boundary(grid) > 2.0 * L]
     before = _far(g, grid, gap * L) if gap is not None else None
     sites = sorted({j for o in moves for j in g.near(*old[o][:2], 1.5 * L, (ELEMENT,))})
     six = _six(g, sites)
@@ -145,8 +147,8 @@ def _six(g, sites: list[int]) -> int:
     els = [i for i in g.order if g.state[i] == ELEMENT]
     tree = cKDTree(g.pos[els])
     xy = g.pos[sites]
-    hi = np.array([len(v) for v in tree.query_ball_point(xy, 1.15 * g.l)]) - 1
-    lo = np.array([len(v) for v in tree.query_ball_point(xy, 0.85 * g.l)]) - 1
+    hi = np.asarray(tree.query_ball_point(xy, 1.15 * g.l, return_length=True), dtype=int) - 1
+    lo = np.asarray(tree.query_ball_point(xy, 0.85 * g.l, return_length=True), dtype=int) - 1
     return int(((hi == 6) & (lo == 0)).sum())
 
 
