@@ -304,7 +304,8 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     if context is not None and job.method in _GROWS_FROM_CONTEXT:
         region = _outside_finished(region, t, job, links, band)
         context = context.with_meta(synth_holes=_synth_holes_in(neighbours, links))
-    arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **_HANDS_ON.get(job.method, ({},))[0], **job.params)
+    synth_kw = {"_balance_drop": _synth_drop(region, t, job, band)} if job.method == "synth" else {}
+    arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **_HANDS_ON.get(job.method, ({},))[0], **synth_kw, **job.params)
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
     if job.method in _GROWS_FROM_CONTEXT and len(arr):
@@ -396,6 +397,24 @@ def _synth_holes_in(neighbours: tuple[Any, ...], links: Mapping[int, list[tuple[
     """synth: the finished neighbours' ``meta["synth_holes"]``, moved next to the tile across the wrap."""
     return [[x + dx, y + dy, r, k] for n, shifts in zip(neighbours, links.values())
             for dx, dy in shifts for x, y, r, k in n.meta.get("synth_holes", ())]
+
+
+def _synth_drop(region: Any, t: Tile, job: _Job, band: float) -> Any:
+    """synth: the part of ``region`` whose elements the tile drops (in its later
+    neighbours' rectangles, beyond the band about ``t``; see ``run_tile``), a prepared
+    shapely geometry, or None (no later neighbour). Passed to ``synthesize``
+    (``_balance_drop``) for its balance rule (``strew.synth._grow.BALANCE_TILE``)."""
+    import shapely
+
+    later = _later_rects(t, job)
+    if not later:
+        return None
+    ahead = shapely.intersection(region.geometry, shapely.union_all([shapely.box(*r) for r in later]))
+    drop = shapely.difference(ahead, shapely.box(*_grow(t.rect, band, None)))
+    if drop.is_empty or drop.area <= 0:
+        return None
+    shapely.prepare(drop)
+    return drop
 
 
 def _extent(arr: Any) -> float:

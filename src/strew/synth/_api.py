@@ -138,6 +138,7 @@ def synthesize(
     rng: int | np.random.Generator | None = None,
     progress: Callable | None = None,
     should_cancel: Callable | None = None,
+    _balance_drop: Any = None,
     **params: Any,
 ) -> Arrangement:
     """Synthesize a discrete element texture from exemplars (Davison et al. 2018).
@@ -222,7 +223,7 @@ def synthesize(
         arr = empty_result({kk: v for a in sel.exemplars() for kk, v in a.shapes.items()}, region,
                            "the region is empty" if ctx is None else "the context covers the region")
     else:
-        arr = _synthesize(sel, free, rng=gen, progress=progress, should_cancel=should_cancel, context=ctx, **prm)
+        arr = _synthesize(sel, free, rng=gen, progress=progress, should_cancel=should_cancel, context=ctx, _balance_drop=_balance_drop, **prm)
         if free is not region:
             arr = arr.replace(region=region)
     record = {**prm, "trace": None}  # an output receiver, not a setting
@@ -252,9 +253,13 @@ def _synthesize(
     progress: Callable | None,
     should_cancel: Callable | None,
     context: Arrangement | None = None,
+    _balance_drop: Any = None,
     **params: Any,
 ) -> Arrangement:
-    """Synthesis on checked arguments; see :func:`synthesize`."""
+    """Synthesis on checked arguments; see :func:`synthesize`. ``_balance_drop``
+    (private, set by :func:`strew.tiles.run_tile`): the part of a tile's region whose
+    elements the tile drops (``SynthState._balance_drop``, read by
+    ``_grow._prefer_balanced``)."""
     selection = None  # already applied to ``exemplars``
     params = {key: v for key, v in params.items() if v is not None}
     if init not in ("grow", "patch"):
@@ -268,6 +273,7 @@ def _synthesize(
     state = new_state(exemplars, region, selection=selection, k=k, c=c, optimize=optimize, kind_cost=kind_cost, rng=rng, **params)
     if trace is not None:
         state.trace = trace
+    state._balance_drop = _balance_drop
     with_context = False
     if context is not None and len(context) and region is not None:
         from ._context import add_context

@@ -402,6 +402,27 @@ exemplar (square root of its area)."""
 BALANCE_CLASSES = 3
 """Least size classes in an exemplar for :func:`_prefer_balanced` to act."""
 
+BALANCE_TILE = ""
+"""In a tile of :mod:`strew.tiles` (``SynthState._balance_drop`` set by ``run_tile``:
+the part of the tile's region that it drops, later tiles growing it again), what
+:func:`_prefer_balanced` does with that part: ``"cut"`` leaves alone the seeds whose disc
+reaches into it, ``"count"`` leaves its elements out of the discs' counts, ``"edge"``
+leaves alone the seeds whose disc reaches the region's edge there; ``""`` (the default):
+as outside tiles. Untiled synthesis never has a dropped part, so it is the same in every
+mode. Not in the paper (§5.1-5.4 grow one region in one run); helper bal19i, issue 19
+point 4: three_sizes' large share in the border strips at +-3s is short (a helper before
+measured the disc of phase-0 tiles, which have no context, reading large-rich near
+their borders). ``python benchmarks/bal19i_variant.py MODE worlds_strips.py --
+--methods synth --synth-exemplar three_sizes --widths 3,2,1 --seeds 1,2,3,4,5,6,7,8
+--no-control --no-fidelity --out F`` (``python benchmarks/bal19g_compare.py`` side by
+side), "" / "cut" / "count": large +-3s 0.985 [0.971, 1.001] / 0.994 [0.977, 1.010] /
+0.988 [0.973, 1.003], +-2s 0.982 / 0.994 / 0.981, +-1s 0.992 / 1.004 / 0.990; but
+"cut" takes it from the medium ones (+-3s 1.009 / 0.987 / 1.009, +-2s 0.989 / 0.970
+[0.957, 0.984] / 0.993, +-1s 1.002 / 0.973 [0.955, 0.991] / 0.999) and the small (+-1s
+1.001 / 1.011 / 1.003), each outside the default's interval, and "count" moves nothing
+beyond noise: none is the default. two_sizes (two size classes, below
+``BALANCE_CLASSES``) is the same in every mode."""
+
 
 def _class_mix(prep) -> np.ndarray:
     """(n, classes) float: each exemplar element's neighbourhood (itself and the
@@ -497,6 +518,21 @@ def _prefer_balanced(state: SynthState, seeds: np.ndarray, cands: np.ndarray, co
     if not act.any():
         return
     sub = np.flatnonzero(act)
+    drop = state._balance_drop if BALANCE_TILE else None
+    if drop is not None and BALANCE_TILE in ("cut", "edge"):
+        import shapely
+
+        far = drop if BALANCE_TILE == "cut" or state.region is None else shapely.intersection(drop.boundary, state.region.geometry.boundary)
+        near = shapely.distance(far, shapely.points(state.pos[seeds[sub]])) <= BALANCE_RADIUS * side[srcs[sub]]
+        sub = sub[~near]
+        if len(sub) == 0:
+            return
+    if drop is not None and BALANCE_TILE == "count":
+        import shapely
+
+        vis = vis[~shapely.contains_xy(drop, state.pos[vis, 0], state.pos[vis, 1])]
+        if len(vis) < 2:
+            return
     # counts per class in a disc about each seed: the output binned on a grid of an
     # eighth of the exemplar's side, cells whose centres lie within the radius
     sd = side[srcs[sub]]

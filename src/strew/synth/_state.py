@@ -183,6 +183,9 @@ class SynthState:
         self.brush_radii = np.zeros(0)
         self.trace: list[tuple[float, int, float]] | None = None
         self.iterations = 0
+        # a tile of strew.tiles: the part of the region whose elements the tile drops
+        # (later tiles redo it; a shapely geometry), read by _grow._prefer_balanced
+        self._balance_drop: Any = None
         if tile is not None:
             self.set_tile(tile)
 
