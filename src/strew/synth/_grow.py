@@ -406,8 +406,8 @@ BALANCE_TILE = "edge"
 """In a tile of :mod:`strew.tiles` (``SynthState._balance_drop`` set by ``run_tile``:
 the part of the tile's region that it drops, later tiles growing it again), what
 :func:`_prefer_balanced` does with that part: ``"edge"`` leaves alone the seeds whose
-disc reaches the region's edge there (the open edge, into the later tiles; not the
-world's edge, not the finished neighbours'), ``"cut"`` the seeds whose disc reaches
+disc reaches the region's edge there (the region's edge in the later tiles'
+rectangles, the world's edge included there; not the finished neighbours'), ``"cut"`` the seeds whose disc reaches
 into the part at all, ``"count"`` leaves its elements out of the discs' counts; ``""``:
 as outside tiles. Untiled synthesis never has a dropped part, so it is the same in
 every mode. Not in the paper (§5.1-5.4 grow one region in one run); helper bal19i,
