@@ -589,6 +589,8 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
         if cap.any():
             new = old + _soft_threshold(new - old, prediction_spread(hp, pred, n)[hbar], cap)
     moved = hbar
+    if RING_RADIAL:
+        new = _keep_ring_radius(state, hbar, new, centres=RING_CENTRES)
     # Guards: keep centres in the region (and brush) and do not make elements intersect.
     # An element whose brush disc was already dropped (spent) stays where it is: a move
     # from outside the remaining discs could otherwise carry it past the stroke's edge.
@@ -621,10 +623,121 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
                 break
         else:
             state._pos[moved] = old
+    if RING_RADIAL and ring_children(state.prep).any():
+        # the guards put elements back one by one: the tiles again on their hubs as they stand
+        state._pos[moved] = _keep_ring_radius(state, moved, state._pos[moved].copy(), centres=False)
+        _undo_intersections(state, moved, old)
     if shape_test_needed(state.prep):
         _undo_shape_overlaps(state, moved, old)
     disp = np.hypot(*(state._pos[moved] - old).T)
     return float(disp.mean())
+
+
+RING_RADIAL = True
+"""Optimisation moves a ring's child along its ring only (see :func:`_keep_ring_radius`)."""
+
+RING_CENTRES = False
+"""Off: a ring's centre moves in the optimisation as any element. On: it moves only with
+its whole ring (every child on it optimised in the same step), else it stays (rings
+h1, hubs of the tiles' own size class: density[hub] then failed on 1 of 4 runs that
+pass; kept off, see :func:`_keep_ring_radius`)."""
+
+RING_CV = 0.005
+"""A kind sits on a ring about its parents' kind when its exemplar distances to its
+parents vary by at most this share of their mean (std / mean; see :func:`ring_children`)."""
+
+
+def ring_children(prep: Prepared) -> np.ndarray:
+    """(n,) bool: exemplar elements whose kind keeps one distance to its parents' kind
+    (``_prepare.parents``), a parent of a larger size class: every (kind, parent kind)
+    pair of at least 3 elements whose distances have std / mean at most
+    :data:`RING_CV`. Rings' tiles on a hub larger than they (cv 0; rings h2 of
+    ``benchmarks/synth_variants.py --harder``); a cluster's dots on its disc are not
+    (cv 0.020-0.023), nor any other exemplar of the fidelity suite, of ``--varied``
+    (rings, clusters) or of ``--harder``. Tiles whose hub is an anchor of their own size
+    class (``_prepare.anchor_mask``: every other ring exemplar) are left out: ``_grow``
+    keeps those on their rings (``_grow.anchor_children``), and projecting them
+    lost a passing run of rings h1 (density[hub] 0.118 against 0.1). Cached on
+    ``prep``."""
+    got = getattr(prep, "_ring_children", None)
+    if got is not None and len(got) == len(prep.kind):
+        return got
+    out = np.zeros(len(prep.kind), bool)
+    has = np.flatnonzero((prep.parent >= 0) & ~prep.void)
+    has = has[prep.size_class[prep.parent[has]] != prep.size_class[has]]
+    if len(has):
+        d = np.hypot(*(prep.pos[has] - prep.pos[prep.parent[has]]).T)
+        pair = np.c_[prep.skind[has], prep.skind[prep.parent[has]]]
+        _, inv = np.unique(pair, axis=0, return_inverse=True)
+        inv = inv.ravel()
+        for g in np.unique(inv):
+            m = inv == g
+            if m.sum() >= 3 and d[m].std() <= RING_CV * d[m].mean():
+                out[has[m]] = True
+    prep._ring_children = out
+    return out
+
+
+def _keep_ring_radius(state: SynthState, moved: np.ndarray, new: np.ndarray, centres: bool = True) -> np.ndarray:
+    """``new`` (the optimised positions of ``moved``) with each copy of a ring's child
+    (:func:`ring_children`: a ring's tile on its hub) put back at its exemplar distance
+    from its ring's centre (the output element of its parent's kind nearest it): the
+    move keeps its component along the ring and the centre's own move, and loses the
+    radial one. With ``centres`` on, a centre moves only with its whole ring (every
+    child on it in ``moved``); else it stays.
+
+    Departure from §5.2-5.3 for structured exemplars (§7). The relative constraints of
+    the paired neighbourhoods pull a tile towards where its matches put it, and the
+    matches of a large ring come from exemplar rings of other phases: rings of sixteen
+    tiles (radius 22, hubs 56 apart, ``benchmarks/synth_variants.py --harder`` rings h2)
+    had every tile on its ring's radius after growth (nn[hub>tile] passing with
+    ``optimize="none"``), and after the optimisation nn[hub>tile] failed on 4 of 4 runs
+    (0.076-0.089 against 0.05). A hub moved while tiles of its ring stayed stands off
+    its ring's centre just as well; holding every hub still instead lost the hub
+    lattice's relaxation (rings h1: g[hub,hub] failing on 2 runs). A child farther from
+    its nearest centre than its exemplar distance plus its radius (one that never sat
+    on a ring) is left alone. With ``centres`` off the centres are not held (see
+    :data:`RING_CENTRES`); :func:`optimize` calls this before its guards and, without
+    centres, again after them (a guard puts a hub back without its tiles or a tile
+    without its hub).
+    """
+    prep = state.prep
+    child = ring_children(prep)
+    if not child.any():
+        return new
+    kids = np.flatnonzero(child[state.src])
+    if len(kids) == 0:
+        return new
+    par = prep.parent[state.src[kids]]
+    want = np.hypot(*(prep.pos[state.src[kids]] - prep.pos[par]).T)
+    var = np.full(state.n, -1, np.int64)
+    var[moved] = np.arange(len(moved))
+    out = new.copy()
+    skind_out = prep.skind[state.src]
+    for k in np.unique(prep.skind[par]):
+        m = np.flatnonzero(prep.skind[par] == k)
+        hubs = np.flatnonzero(skind_out == k)
+        if len(hubs) == 0:
+            continue
+        d, j = cKDTree(state.pos[hubs]).query(state.pos[kids[m]])
+        ok = np.abs(d - want[m]) <= prep.r[state.src[kids[m]]]
+        m, j = m[ok], j[ok]
+        hub = hubs[j]
+        # a centre with a child outside ``moved`` stays where it is
+        stay = np.zeros(len(hubs), bool)
+        stay[j[var[kids[m]] < 0]] = True
+        vh = var[hubs]
+        still = (vh >= 0) & stay & centres
+        out[vh[still]] = state.pos[hubs[still]]
+        sel = var[kids[m]] >= 0
+        m, hub = m[sel], hub[sel]
+        hv = var[hub]
+        hub_new = np.where((hv >= 0)[:, None], out[np.maximum(hv, 0)], state.pos[hub])
+        v = new[var[kids[m]]] - hub_new
+        length = np.hypot(v[:, 0], v[:, 1])
+        good = length > 1e-9
+        out[var[kids[m[good]]]] = hub_new[good] + v[good] * (want[m[good]] / length[good])[:, None]
+    return out
 
 
 SPREAD_QUANTILE = 0.9
