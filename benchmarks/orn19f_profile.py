@@ -23,7 +23,9 @@ re-reads them and prints, pooled over the worlds of each tag:
 ``strew.ornament._context.NAME``), so that variants are measured in one tree.
 
 ``analyze A B``: also B's change against A of the +-1 s leaf share and of the leaves per
-stem within 1 s, with a 95 % interval (the two tags' tiles resampled independently).
+stem within 1 s, with a 95 % interval (the two tags' tiles resampled independently), and
+when both tags hold the same worlds a paired one (``_paired``: the same tiles drawn in
+both; a world depends only on its tile size, so a pair differs only by the change).
 
 Findings (issue 19.4; 11 worlds, tiles 100, 104, ..., 140; orn19f_pooled.md): at e1d86dd
 +-1 s leaf 0.887 [0.847, 0.929], leaves per flower stem within 1 s 0.897 [0.866, 0.928] of
@@ -276,15 +278,26 @@ def analyze(args) -> dict:
             "leaf_per_stem_1s": (lps(units[(a, "profile")]), units[(a, "profile")][0], units[(b, "profile")][0]),
         }
         diff: dict = {}
+        # the same worlds in both tags: also a paired interval (the same tiles drawn in
+        # both; a world depends only on its tile size, so the pairs differ only by the change)
+        paired = out[a]["worlds"] == out[b]["worlds"]
+        prng = np.random.default_rng(1)
         for name, (fn, ua, ub) in stats.items():
             na, nb_ = len(next(iter(ua.values()))), len(next(iter(ub.values())))
             v = fn(ub) - fn(ua)
             draws = np.empty(args.boot)
+            pdraws = np.empty(args.boot)
             for i in range(args.boot):
                 pa, pb = rng.integers(0, na, na), rng.integers(0, nb_, nb_)
                 draws[i] = fn({q: w[pb] for q, w in ub.items()}) - fn({q: w[pa] for q, w in ua.items()})
+                if paired:  # its own stream: the unpaired intervals stay as before
+                    pp = prng.integers(0, na, na)
+                    pdraws[i] = fn({q: w[pp] for q, w in ub.items()}) - fn({q: w[pp] for q, w in ua.items()})
             lo, hi = np.nanpercentile(draws, [2.5, 97.5])
             diff[name] = (float(v), float(lo), float(hi))
+            if paired:
+                plo, phi = np.nanpercentile(pdraws, [2.5, 97.5])
+                diff[name + "_paired"] = (float(v), float(plo), float(phi))
         out[b][f"change_vs_{a}"] = diff
         print(f"\n{b} - {a}: " + "; ".join(f"{q} {v[0]:+.3f} [{v[1]:+.3f}, {v[2]:+.3f}]" for q, v in diff.items()))
     if args.out:
