@@ -101,13 +101,16 @@ GAP_SMALLEST = 0.5
 DISC_WIDE: float | None = 0.9
 #: ... only for a smaller kind above the smallest size level; False: the smallest too
 DISC_WIDE_MIDDLE = True
-#: ... and also for the larger kind placed beside the smaller only where the reference
-#: keeps the smaller aloof: the lowest decile of its elements' least disc gaps to the
-#: larger kind at least this share of its scaled radius, or where it has at least as
-#: many of the larger kind as of the smaller (else one way)
+#: ... only where the reference keeps the smaller aloof: the lowest decile of its
+#: elements' least disc gaps to the larger kind at least this share of its scaled
+#: radius, or where it has at least as many of the larger kind as of the smaller;
+#: there both ways (the larger kind placed beside the smaller too)
 DISC_WIDE_ALOOF = 0.6
-#: the other bounding-disc gaps between visible kinds of different sizes hold both ways
-#: (also when the larger element is placed second), grit's excepted
+#: ... and one way where neither (False: no wide gap there; see ``_Grower._pair_gaps``)
+DISC_WIDE_SNUG = False
+#: where some kind has the wide gap both ways, the other bounding-disc gaps between
+#: visible kinds of different sizes hold both ways too (also when the larger element
+#: is placed second), grit's excepted
 DISC_BOTH_WAYS = True
 #: ... grit's too (a smaller kind the larger one's hollows hold across)
 DISC_BOTH_WAYS_GRIT = False
@@ -624,10 +627,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         - bounding discs, a middle kind beside a larger one (:data:`DISC_WIDE`): a
           smaller kind too large for the hollows, above the smallest size level (medium
           stones among large ones), keeps ``pair_gap`` of the reference's least disc gap
-          where that is not negative, both ways only where the reference keeps it
-          aloof or has as many of the larger kind (:data:`DISC_WIDE_ALOOF`); and the
-          other disc rules between visible kinds of different sizes hold both ways,
-          grit's excepted
+          where that is not negative, both ways, only where the reference keeps it
+          aloof or has as many of the larger kind (:data:`DISC_WIDE_ALOOF`); there the
+          other disc rules between visible kinds of different sizes hold both ways
+          too, grit's excepted
           (:data:`DISC_BOTH_WAYS`). See the comments where they are set.
 
         Fixed mode only (a turned element's outline comes nearer its neighbours').
@@ -703,8 +706,11 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                             # 0.938 one way), 0.19-0.51 where they sit snug beside large
                             # ones (default counts, 40:100:20, 60:30:40 ...); both
                             # ways there cost the default variant 3 (seeds 1-2:
-                            # nn[small>large] 0.113-0.123 against 0.093; one way
-                            # 0.075-0.079)
+                            # nn[small>large] 0.113-0.123 against 0.093), and so did
+                            # the gap one way (DISC_WIDE_SNUG) the fidelity suite's
+                            # exemplar (seeds 1-2: nn[small>large] 0.139-0.141 against
+                            # 0.127; 40:100:20 seed 1 gained with it, 0.0882 -> 0.0591
+                            # against 0.0601): no wide gap there
                             near = np.where(self.ex_kind[qq] == k2, dg, np.inf)[self.ex_kind == k1].min(axis=1)
                             near = near[np.isfinite(near)]
                             r1 = float(self.kind_radius[k1]) * float(np.median(np.abs(ex.scale[self.ex_kind == k1])))
@@ -716,6 +722,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                             # way, a pass both ways)
                             two = two or int(np.sum(self.ex_kind == k2)) >= int(np.sum(self.ex_kind == k1))
                             wide_two[k1, k2] = wide_two[k2, k1] = two
+                            if not two and not DISC_WIDE_SNUG:
+                                wide_gap[k1, k2] = -np.inf
                         continue
                     if smaller:
                         # a smaller kind the reference never has inside a larger one's
@@ -750,8 +758,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         # against 0.050 without, 0.048-0.049 with). Not for grit (DISC_BOTH_WAYS_GRIT):
         # pebbles the stones' hollows hold sit snug at about one gap, and the larger kind
         # kept off them cost pebbles (two sizes, ratio 0.15: nn[pebble>stone] 0.139-0.143
-        # against 0.138). The wide gap as set above (one way where not aloof).
-        if DISC_BOTH_WAYS:
+        # against 0.138). Only where some kind has the wide gap both ways: elsewhere it
+        # cost the fidelity suite's three sizes (seed 1: nn[small>large] 0.134 against
+        # 0.127, a pass without).
+        if DISC_BOTH_WAYS and wide_two.any():
             for k1 in range(n):
                 for k2 in range(n):
                     if not void[k1] and not void[k2] and self.size_level[k1] < self.size_level[k2] and np.isfinite(self.pair_disc[k1, k2]) and (DISC_BOTH_WAYS_GRIT or not grit_pair[k1, k2]) and not (np.isfinite(wide_gap[k1, k2]) and not wide_two[k1, k2]):
