@@ -22,15 +22,8 @@ from strew.grow._growth import GrowParams, grow_reference
 
 from test_grow_flow14d_stretch import assert_flow_option_leaves_mode_alone, hex_ref  # noqa: E402, F401 (a fixture)
 from test_grow_flow_gaps import SP, _holes, _inside_without_overlap, _shares  # noqa: E402
+from test_grow_flow14g_retry import _turning_90  # noqa: E402
 from test_grow_flow_turn import _bond_misalignment  # noqa: E402
-
-
-def _turning_90(w: float):
-    def field(p):
-        a = np.radians(90.0) * np.clip(np.asarray(p)[:, 0] / w, 0, 1)
-        return np.c_[np.cos(a), np.sin(a)]
-
-    return field
 
 
 @pytest.mark.slow

@@ -15,18 +15,9 @@ import shapely
 from scipy.spatial import cKDTree
 from strew_testing import fidelity_suite
 
-from strew import Region
 from strew.grow import grow
-from strew.metrics import fidelity, overlaps
 
-
-def _region(ex, side):
-    x0, y0, x1, y1 = ex.region.bounds
-    return Region.rectangle(side * (x1 - x0), side * (y1 - y0))
-
-
-def _fails(rep):
-    return [f"{k}={m.value:.3g}/{m.tolerance:.3g}" for k, m in rep.metrics.items() if m.applicable and not m.passed]
+from test_grow_gvar14i import _check, _region  # noqa: E402 (the same checks as the one-level case)
 
 
 def _inside_share(arr, small, large):
@@ -35,16 +26,6 @@ def _inside_share(arr, small, large):
     s, lg = np.flatnonzero(arr.kind == arr.kinds.index(small)), np.flatnonzero(arr.kind == arr.kinds.index(large))
     d, j = cKDTree(arr.xy[lg]).query(arr.xy[s], k=min(8, len(lg)))
     return float(np.mean((d - r[s][:, None] - r[lg][j]).min(axis=1) < 0))
-
-
-def _check(ex, out, region, seed):
-    assert len(out) >= 10 * len(ex)
-    assert len(overlaps(out)[0]) == 0
-    assert bool(np.all(region.contains(out.xy)))
-    rep = fidelity(ex, out, eq5=False, local=False)
-    assert rep.faithful, _fails(rep)
-    again = grow(ex, region=region, rng=seed)
-    assert np.array_equal(again.xy, out.xy) and np.array_equal(again.kind, out.kind)
 
 
 @pytest.mark.slow

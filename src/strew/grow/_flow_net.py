@@ -50,6 +50,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._flow_shear import fitted_moves
 from ._objects import ELEMENT
 
 __all__ = ["relax_network", "hexagonal_reference"]
@@ -141,16 +142,7 @@ def _relax_once(g, turn0: float) -> int:
     share0 = _six_share(g)
     grid = _grid(g)
     gaps0 = _far_points(g, grid)
-    moves: dict[int, tuple[float, float]] = {}
-    old: dict[int, tuple] = {}
-    tiny = 1e-9 * L
-    for q in range(n):
-        o = int(els[q])
-        nx, ny = float(pts[q, 0]), float(pts[q, 1])
-        ox, oy = g.xy[o]
-        if abs(nx - ox) + abs(ny - oy) > tiny:
-            moves[o] = (nx, ny)
-            old[o] = (ox, oy, g.geom[o], float(g.rot[o]))
+    moves, old = fitted_moves(g, els, pts, range(n))
     if not moves:
         return 0
     limit = None if p.flow_net_turn is None else turn0 + float(p.flow_net_turn)

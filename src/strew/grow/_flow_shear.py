@@ -100,22 +100,30 @@ def reshape_shear(g, gap: float | None = 0.7) -> int:
     return moved
 
 
+def fitted_moves(g, els: np.ndarray, pts: np.ndarray, qs) -> tuple[dict[int, tuple[float, float]], dict[int, tuple]]:
+    """The elements ``els[q]`` (``q`` in ``qs``) that a fit moves to ``pts[q]`` (shape
+    (len(els), 2)) by more than a billionth of an edge: their new positions and what
+    undoing the move needs (old x, y, outline, rotation), keyed by element."""
+    moves: dict[int, tuple[float, float]] = {}
+    old: dict[int, tuple] = {}
+    tiny = 1e-9 * g.l
+    for q in qs:
+        o = int(els[q])
+        nx, ny = float(pts[q, 0]), float(pts[q, 1])
+        ox, oy = g.xy[o]
+        if abs(nx - ox) + abs(ny - oy) > tiny:
+            moves[o] = (nx, ny)
+            old[o] = (ox, oy, g.geom[o], float(g.rot[o]))
+    return moves, old
+
+
 def _reshape_band(g, els, fb, src, dst, off, gap: float | None = 0.7) -> int:
     """Fit the free elements ``fb`` of ``els`` (Eq. 5 with the terms ``src``, ``dst``,
     ``off``) and move them, all or nothing; how many moved."""
     L = g.l
     use = fb[src] | fb[dst]
     new = relax_positions(g.pos[els], src[use], dst[use], off[use], fb)
-    moves: dict[int, tuple[float, float]] = {}
-    old = {}
-    tiny = 1e-9 * L
-    for q in np.flatnonzero(fb).tolist():
-        o = int(els[q])
-        nx, ny = float(new[q, 0]), float(new[q, 1])
-        ox, oy = g.xy[o]
-        if abs(nx - ox) + abs(ny - oy) > tiny:
-            moves[o] = (nx, ny)
-            old[o] = (ox, oy, g.geom[o], float(g.rot[o]))
+    moves, old = fitted_moves(g, els, new, np.flatnonzero(fb).tolist())
     if not moves:
         return 0
     mv = np.asarray([old[o][:2] for o in moves])
