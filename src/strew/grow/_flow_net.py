@@ -50,7 +50,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._flow_shear import fitted_moves
+from ._flow_shear import fitted_moves, undo_moves
 from ._objects import ELEMENT
 
 __all__ = ["relax_network", "hexagonal_reference"]
@@ -162,11 +162,7 @@ def _relax_once(g, turn0: float) -> int:
         turn1 = _misalignment(g)
         if share1 > share0 and len(gaps1) <= len(gaps0) and (limit is None or turn1 <= limit):
             return sum(1 for o in moves if g.xy[o] != old[o][:2])
-        for o, (x, y, geom, rot) in old.items():
-            if g.xy[o] != (x, y):
-                g._move(o, x, y)
-            g.geom[o] = geom
-            g.rot[o] = rot
+        undo_moves(g, old)
     return 0
 
 

@@ -100,6 +100,16 @@ def reshape_shear(g, gap: float | None = 0.7) -> int:
     return moved
 
 
+def undo_moves(g, old: dict[int, tuple]) -> None:
+    """Put the elements of ``old`` (from :func:`fitted_moves`) back where they were,
+    with their outlines and rotations."""
+    for o, (x, y, geom, rot) in old.items():
+        if g.xy[o] != (x, y):
+            g._move(o, x, y)
+        g.geom[o] = geom
+        g.rot[o] = rot
+
+
 def fitted_moves(g, els: np.ndarray, pts: np.ndarray, qs) -> tuple[dict[int, tuple[float, float]], dict[int, tuple]]:
     """The elements ``els[q]`` (``q`` in ``qs``) that a fit moves to ``pts[q]`` (shape
     (len(els), 2)) by more than a billionth of an edge: their new positions and what
@@ -139,11 +149,7 @@ def _reshape_band(g, els, fb, src, dst, off, gap: float | None = 0.7) -> int:
     six = _six(g, sites)
     _settle(g, moves, old)
     if (before is not None and (_far(g, grid, gap * L) & ~before).any()) or _six(g, sites) <= six:
-        for o, (x, y, geom, rot) in old.items():
-            if g.xy[o] != (x, y):
-                g._move(o, x, y)
-            g.geom[o] = geom
-            g.rot[o] = rot
+        undo_moves(g, old)
         return 0
     return sum(1 for o in moves if g.xy[o] != old[o][:2])
 
