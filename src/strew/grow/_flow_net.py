@@ -91,7 +91,12 @@ def relax_network(g) -> int:
     module), up to ``flow_net_passes`` times while each pass is kept; how many
     elements moved."""
     moved = 0
-    turn0 = _misalignment(g)  # (the limit holds against the lattice as grown)
+    # (the limit holds against the lattice as grown: a later call, after the
+    # insertions of :mod:`strew.grow._flow_densify`, keeps the first call's)
+    turn0 = getattr(g, "flow_net_turn0", None)
+    if turn0 is None:
+        turn0 = _misalignment(g)
+        g.flow_net_turn0 = turn0
     for _ in range(int(g.p.flow_net_passes)):
         m = _relax_once(g, turn0)
         if m == 0:

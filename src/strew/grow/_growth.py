@@ -61,6 +61,7 @@ from ..region import Region
 from ._analysis import Reference, size_priority
 from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
+from ._flow_densify import densify
 from ._flow_gaps import close_gaps, fill_holes, side_stream
 from ._flow_holes import close_holes
 from ._flow_net import hexagonal_reference, relax_network
@@ -232,6 +233,25 @@ class GrowParams:
     flow_net_passes: int = 3
     flow_net_turn: float | None = 0.5
     flow_net_steps: int = 2
+    #: flow mode, a regular hexagonal exemplar: then, one at a time, an element put at
+    #: the circumcentre of the widest interior triangle (circumradius over
+    #: ``flow_densify_min`` mean edges), the elements within ``flow_densify_window``
+    #: edges fitted first to one mean edge per bond with a free point there (its bonds
+    #: ``flow_densify_weight`` times as hard, bonds under ``flow_densify_stiff`` edges
+    #: four times, ``flow_densify_fit_rounds`` rounds held with ``flow_densify_hold``;
+    #: not where two come nearer than ``flow_densify_close`` edges); each kept where it
+    #: leaves more six-neighbour sites and no new gap; up to ``flow_densify_rounds``,
+    #: stopping after ``flow_densify_fails`` refused in a row
+    #: (:func:`strew.grow._flow_densify.densify`); None: not
+    flow_densify_rounds: int | None = 30
+    flow_densify_fails: int = 10
+    flow_densify_min: float = 0.66
+    flow_densify_window: float = 5.0
+    flow_densify_weight: float = 5.0
+    flow_densify_stiff: float = 1.0
+    flow_densify_fit_rounds: int = 6
+    flow_densify_hold: float = 0.05
+    flow_densify_close: float = 0.86
     #: an element that would overlap may move up to this share of l_short (``_nudge``)
     nudge: float = 0.25
     #: fixed mode: ... only when at most this many slots of its ring are left without a
@@ -905,6 +925,9 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 # it only moves elements, so only after the insertions that give a
                 # stretched lattice its dislocations' extra rows)
                 relax_network(self)
+                if p.flow_densify_rounds:
+                    # (then the band's missing elements, one at a time: issue 14 point 2)
+                    densify(self, target)
             self.rng = main
 
     def _irregular(self) -> bool:
