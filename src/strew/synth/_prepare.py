@@ -420,7 +420,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     # n(e) reaches past r-bar by the largest pairing threshold of its exemplar, so that
     # output neighbours on the rim still find their pairs (see kernels.pair_cost).
     margin = np.array([2.0 * r[sources == i].max() for i in range(len(tagged))])[sources]
-    reach, far = anchor_reach(pos, rbar + margin, kind, sources, void, size_classes(r, area_radii(arr), kind))
+    reach, far = anchor_reach(pos, rbar + margin, kind, sources, void, size_classes(r, area_radii(arr), kind), area_radii(arr))
     ptr, idx, off = neighborhoods(pos, reach, group=sources)
     if far is not None:  # beyond r-bar + margin, n(e) holds the foreign anchors only (anchor_reach)
         owner = np.repeat(np.arange(len(pos)), np.diff(ptr))
@@ -560,9 +560,10 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         overlap_free=all(len(overlaps(ex)[0]) == 0 for ex in exemplars),
         size_class=cls,
         parent=parents(pos, cls, sources, void, depth_all, kind, follow=(follow := np.zeros(len(arr), bool)),
-                       anchor=anchor_mask(skind, sources, cls, void)),
+                       anchor=(anchor := anchor_mask(skind, sources, cls, void, pos, area_radii(arr)))),
         follow=follow,
     )
+    prep._anchors = anchor  # _grow.anchors: the same mask, with the centres (_stand_around)
     prep.set_selection(selection)
     return prep
 
@@ -866,7 +867,8 @@ ANCHOR_RATIO = 3.0
 has at least this many times its count (see :func:`anchor_mask`)."""
 
 
-def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np.ndarray) -> np.ndarray:
+def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np.ndarray, pos: np.ndarray | None = None,
+                size: np.ndarray | None = None) -> np.ndarray:
     """(n,) int: 1 for exemplar elements of an anchor kind, else 0.
 
     Extension of §5.1 (§7's "structured" exemplars): within one size class, a kind
@@ -882,6 +884,10 @@ def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np
     source, cls : (n,) int
         Exemplar and size class of each element.
     void : (n,) bool
+    pos, size : (n, 2) float and (n,) float, optional
+        Element centres and sizes (area radii, :func:`area_radii`). With them a rare kind
+        no larger than the class's most numerous kind (median size) is an anchor only
+        where the others of its class stand around it (:func:`_stand_around`).
     """
     out = np.zeros(len(skind), np.int64)
     vis = ~np.asarray(void, bool)
@@ -891,8 +897,47 @@ def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np
             sub = ids[cls[ids] == c]
             kinds, cnt = np.unique(skind[sub], return_counts=True)
             rare = kinds[cnt * ANCHOR_RATIO <= cnt.max()]
+            if pos is not None and size is not None and len(rare):
+                others = sub[~np.isin(skind[sub], rare)]
+                top = np.median(size[sub[skind[sub] == kinds[np.argmax(cnt)]]])
+                rare = np.array([k_ for k_ in rare if np.median(size[sub[skind[sub] == k_]]) > top
+                                 or _stand_around(pos[sub[skind[sub] == k_]], pos[others])], np.int64)
             out[sub[np.isin(skind[sub], rare)]] = 1
     return out
+
+
+ANCHOR_AROUND = 0.15
+"""Largest interquartile range of the others' distance to their nearest anchor, relative
+to its median, of an anchor kind (see :func:`_stand_around`)."""
+
+
+def _stand_around(anchor_pos: np.ndarray, other_pos: np.ndarray) -> bool:
+    """Whether the other kinds of a class stand around the rare kind's elements at one
+    distance (interquartile range of their distance to the nearest rare element at most
+    :data:`ANCHOR_AROUND` times its median), as a ring's tiles around their hub (0) and
+    a cluster's dots around their disc (0.97-1.05 of one radius).
+
+    Extension of §5.1 (helper anchor13k, issue 13 point 1): an anchor is a hub or a
+    cluster centre, an element the others are arranged around. Rarity alone also took
+    the 9-12 pebbles squeezed between 38-45 stones of two sizes at ratio 0.8 and 0.4
+    (one size class, area radius 0.66-0.79 times the stones'; ``benchmarks/
+    synth_variants.py --harder`` two_sizes h4, h8; interquartile range 0.70-0.93 of the
+    median, against 0-0.045 for every ring's hubs and clusters' discs) for anchors.
+    The stones then leant on them (``parents``), were copied only with a pebble, and
+    synthesis stalled: h4s7 seed 1 stopped at 304 elements (others about 900) with a
+    third of the region empty. Hubs may be no larger than their tiles (rings of five or
+    six tiles: area radius 0.94-0.99 times the tiles'), so size alone does not tell them
+    apart; the spread of the distance does (``benchmarks/anchor13k_census.py``). A rare
+    kind larger than the class's common one stays an anchor whatever the spread: the
+    large stones among medium ones of three sizes (``--harder`` three_sizes h10s8, area
+    radius 1.49 times, spread 0.50) pass as anchors and failed nn[small>small] on both
+    seeds without.
+    """
+    if len(anchor_pos) == 0 or len(other_pos) < 4:
+        return True
+    d, _ = cKDTree(anchor_pos).query(other_pos)
+    q1, med, q3 = np.percentile(d, [25, 50, 75])
+    return bool(q3 - q1 <= ANCHOR_AROUND * med)
 
 
 ANCHOR_CROSS = 1.1
@@ -900,7 +945,8 @@ ANCHOR_CROSS = 1.1
 :func:`anchor_reach`)."""
 
 
-def anchor_reach(pos: np.ndarray, reach: np.ndarray, kind: np.ndarray, source: np.ndarray, void: np.ndarray, cls: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
+def anchor_reach(pos: np.ndarray, reach: np.ndarray, kind: np.ndarray, source: np.ndarray, void: np.ndarray, cls: np.ndarray,
+                 size: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray | None]:
     """``reach`` (the distance each exemplar neighbourhood n(e) is stored to) with each
     element of an anchor's size class seeing its nearest foreign anchor (the nearest
     anchor but its own, :func:`anchor_mask`) times :data:`ANCHOR_CROSS`, in exemplars
@@ -921,11 +967,12 @@ def anchor_reach(pos: np.ndarray, reach: np.ndarray, kind: np.ndarray, source: n
     anchors only: with the foreign tiles too, tiles were copied at their offset from
     the seed beside a hub paired up to 2 r away, and 37 % of the tiles stood off any
     hub's ring (doubled, shifted rings; h3s7 seed 1). The hub's own ring is copied
-    from the hub once it is placed.
+    from the hub once it is placed. With ``size`` (area radii), the anchors are those of
+    :func:`anchor_mask` given the centres and sizes.
     """
     reach = np.asarray(reach, float)
     skind = np.unique(np.c_[source, kind], axis=0, return_inverse=True)[1].ravel()
-    anchor = anchor_mask(skind, source, cls, void) > 0
+    anchor = anchor_mask(skind, source, cls, void, pos, size) > 0
     out, far = reach, None
     for s_ in np.unique(source):
         a = np.flatnonzero(anchor & (source == s_))
