@@ -66,3 +66,23 @@ def test_small_rings_keep_one_hub_lattice():
     inner = np.all((hub > 20) & (hub < np.array([region.bounds[2], region.bounds[3]]) - 20), axis=1)
     ring = cKDTree(tile).query_ball_point(hub[inner], SMALL_RINGS["radius"] + 1.0, return_length=True)
     assert np.mean(ring == SMALL_RINGS["tiles"]) > 0.95
+
+
+LARGE_RINGS = dict(tiles=16, radius=22.0, hub=10.0, spacing=56.0)
+
+
+@pytest.mark.slow
+def test_large_rings_about_a_larger_hub_are_completed():
+    # rings of sixteen about a hub of a larger size class (no anchor): _grow._ring_kids
+    # lets _complete_anchor_rings finish them (0.57-0.66 whole before, at 3.5x)
+    ex = suite.make_exemplar("rings", rng=7, **LARGE_RINGS)
+    x0, y0, x1, y1 = ex.region.bounds
+    out = synthesize(ex, Region.rectangle(2.5 * (x1 - x0), 2.5 * (y1 - y0)), rng=2)
+    assert len(overlaps(out)[0]) == 0
+    hub = out.xy[out.kind == out.kinds.index("hub")]
+    tile = out.xy[out.kind == out.kinds.index("tile")]
+    w, h = out.region.bounds[2:]
+    inner = (hub[:, 0] > 30) & (hub[:, 0] < w - 30) & (hub[:, 1] > 30) & (hub[:, 1] < h - 30)
+    assert inner.sum() >= 8
+    ring = cKDTree(tile).query_ball_point(hub[inner], LARGE_RINGS["radius"] + 1.5, return_length=True)
+    assert np.mean(ring == LARGE_RINGS["tiles"]) > 0.85
