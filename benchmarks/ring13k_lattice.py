@@ -1,15 +1,18 @@
-"""Issue 13 point 1, helper ring13k: do the hubs of synthesized rings stay on one lattice?
+"""Issue 13 point 1, helper ring13k: do synthesized rings keep one hub lattice and whole rings?
 
 Rings of five (radius 10, hubs 30 apart: ``synth_variants.py --harder`` rings h4) failed
 0/4 with holes the size of a ring where hub lattices met out of step. Per (variant,
 seed) this fills the audit's region (3.5x the frame's side) with
 ``_grow.LATTICE_CV = 0`` (off: the code before ``_snap_anchors_to_lattice``) and at its
 default, and prints per run: the fidelity verdict and failures, the element count, CPU
-seconds, and the hubs' distance from the lattice of the first hub grown (the exemplar's
-two shortest hub offsets, nearest site), median and 90th percentile per band of
-distance from that hub. Both settings run in the same process.
+seconds, the share of whole rings (``svar13i_rings_diag.ring_stats``) and the hubs'
+distance from the lattice of the first hub grown (the exemplar's two shortest hub
+offsets, nearest site), median and 90th percentile per band of distance from that hub.
+Both settings run in the same process. With ``--toggle complete`` the switch is
+``_grow.RING_COMPLETE_LARGER`` instead (rings h2, whose hub is larger than its tiles).
 
-    python benchmarks/ring13k_lattice.py [--set h4|h0|h1|h3|h5] [--variants 7,8] [--seeds 1,2]
+    python benchmarks/ring13k_lattice.py [--set h4|h0|h1|h2|h3|h5] [--variants 7,8] [--seeds 1,2]
+                                         [--toggle lattice|complete]
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from pathlib import Path
 import numpy as np
 from _runner import fidelity_suite
 from scipy.spatial import cKDTree
+from svar13i_rings_diag import ring_stats
 
 from strew import Region
 from strew.metrics import fidelity
@@ -30,6 +34,7 @@ from strew.synth import _grow, synthesize
 SETS = {
     "h0": dict(tiles=12, radius=18.0, hub=7.0, spacing=46.0),
     "h1": dict(tiles=8, radius=14.0, hub=6.0, spacing=38.0),
+    "h2": dict(tiles=16, radius=22.0, hub=10.0, spacing=56.0),
     "h3": dict(tiles=10, radius=15.0, hub=5.0, spacing=60.0),
     "h4": dict(tiles=5, radius=10.0, hub=4.5, spacing=30.0),
     "h5": dict(tiles=12, radius=16.0, hub=9.0, spacing=42.0, noise=0.02),
@@ -66,19 +71,21 @@ def main() -> None:
     ap.add_argument("--variants", default="7,8")
     ap.add_argument("--seeds", default="1,2")
     ap.add_argument("--scale", type=float, default=3.5)
-    ap.add_argument("--json", default="results/ring13k_lattice.json")
+    ap.add_argument("--toggle", default="lattice", choices=["lattice", "complete"])
+    ap.add_argument("--json", default=None, help="default results/ring13k_lattice_SET.json")
     a = ap.parse_args()
     kw = SETS[a.set]
     mk = fidelity_suite()
-    plain_cv = _grow.LATTICE_CV
+    switch = "LATTICE_CV" if a.toggle == "lattice" else "RING_COMPLETE_LARGER"
+    plain_cv = getattr(_grow, switch)
     rows = []
     for v in [int(x) for x in a.variants.split(",")]:
         ex = mk.make_exemplar("rings", rng=v, **kw)
         x0, y0, x1, y1 = ex.region.bounds
         region = Region.rectangle(a.scale * (x1 - x0), a.scale * (y1 - y0))
         for s in [int(x) for x in a.seeds.split(",")]:
-            for label, cv in (("off", 0.0), ("on", plain_cv)):
-                _grow.LATTICE_CV = cv
+            for label, cv in (("off", type(plain_cv)(0)), ("on", plain_cv)):
+                setattr(_grow, switch, cv)
                 t0 = time.process_time()
                 out = synthesize(ex, region, rng=s, measure=False)
                 dt = time.process_time() - t0
@@ -87,16 +94,19 @@ def main() -> None:
                 # the first hub grown: the one nearest the region's centre (growth starts there)
                 hub = out.xy[out.kind == list(out.kinds).index("hub")]
                 first = hub[np.argmin(np.hypot(*(hub - np.array(region.geometry.centroid.coords[0])).T))]
+                rs = ring_stats(out, kw["tiles"], kw["radius"], kw["spacing"])
                 row = {"set": a.set, "v": v, "s": s, "snap": label, "n": len(out), "cpu": round(dt, 2), "ok": rep.faithful, "fails": fails,
+                       "full_rings": round(rs["full_rings"], 3),
                        "bands_n_median_p90": lattice_offsets(ex, out, first, kw["spacing"])}
                 rows.append(row)
                 print(json.dumps(row))
-    _grow.LATTICE_CV = plain_cv
+    setattr(_grow, switch, plain_cv)
     for label in ("off", "on"):
         rr = [r for r in rows if r["snap"] == label]
-        print(f"{label}: faithful {sum(r['ok'] for r in rr)}/{len(rr)}, median cpu {np.median([r['cpu'] for r in rr]):.2f}s, "
+        print(f"{switch} {label}: faithful {sum(r['ok'] for r in rr)}/{len(rr)}, median cpu {np.median([r['cpu'] for r in rr]):.2f}s, "
+              f"whole rings {np.median([r['full_rings'] for r in rr]):.3f} (median), "
               f"median p90 lattice offset beyond 2 spacings {np.median([b[3] for r in rr for b in r['bands_n_median_p90'] if b[0] >= 2 * kw['spacing']]):.2f}")
-    path = Path(__file__).resolve().parent / a.json
+    path = Path(__file__).resolve().parent / (a.json or f"results/ring13k_lattice_{a.set}.json")
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps({"benchmark": "ring13k_lattice", "argv": vars(a), "rows": rows}, indent=1) + "\n")
     print(f"figures written to {path}")
