@@ -1,7 +1,8 @@
 """Issue 13 point 1 on hidden exemplars (helper ring13k): rings of five (radius 10, hubs
 30 apart; ``benchmarks/synth_variants.py --harder`` rings h4) grew hub lattices that met
-out of step, with holes the size of a ring between them. A proposed hub now joins the
-lattice of the hubs already grown (``_grow._snap_anchors_to_lattice``)."""
+out of step, with holes the size of a ring between them. With ``_grow.LATTICE_CV`` set
+(off by default, see its docstring) a proposed hub joins the lattice of the hubs already
+grown (``_grow._snap_anchors_to_lattice``)."""
 
 from __future__ import annotations
 
@@ -27,7 +28,14 @@ def _lattice(ex, **kw):
     return anchor_lattice(prepare(as_selection(ex, None)))
 
 
-def test_lattice_is_found_for_ring_hubs_only():
+@pytest.fixture
+def lattice_on(monkeypatch):
+    import strew.synth._grow as G
+
+    monkeypatch.setattr(G, "LATTICE_CV", 0.05)
+
+
+def test_lattice_is_found_for_ring_hubs_only(lattice_on):
     ex = suite.make_exemplar("rings", rng=7, **SMALL_RINGS)
     on, basis, spacing = _lattice(ex)
     hubs = ex.kind == ex.kinds.index("hub")
@@ -45,7 +53,7 @@ def test_lattice_is_found_for_ring_hubs_only():
 
 
 @pytest.mark.slow
-def test_small_rings_keep_one_hub_lattice():
+def test_small_rings_keep_one_hub_lattice(lattice_on):
     ex = suite.make_exemplar("rings", rng=7, **SMALL_RINGS)
     x0, y0, x1, y1 = ex.region.bounds
     region = Region.rectangle(3.5 * (x1 - x0), 3.5 * (y1 - y0))
