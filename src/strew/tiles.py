@@ -540,13 +540,27 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     col = _KEEPS_GROUPS.get(job.method)
     if col is None or col not in arr.columns or not len(arr):
         return keep
+    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, declared_rows, keep_whole, late_phase, parent_rows
+
     _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
-    cnt = np.bincount(inv)
-    mx = np.bincount(inv, weights=np.asarray(arr.x, float)) / cnt
-    my = np.bincount(inv, weights=np.asarray(arr.y, float)) / cnt
+    w = np.ones(len(arr))
+    if _GROUP_AT in ("declared", "parents") and PROXIES_COLUMN in arr.columns:
+        # the mean of the rows of declared children only (declared_rows), all rows where
+        # a success has none (willow: every child added at will)
+        rows = declared_rows if _GROUP_AT == "declared" else parent_rows
+        w = rows(job.input, arr[PROXIES_COLUMN]).astype(float)
+        w = np.where(np.bincount(inv, weights=w)[inv] > 0, w, 1.0)
+    cnt = np.bincount(inv, weights=w)
+    mx = np.bincount(inv, weights=w * np.asarray(arr.x, float)) / cnt
+    my = np.bincount(inv, weights=w * np.asarray(arr.y, float)) / cnt
+    if _GROUP_AT == "goal" and GOAL_COLUMN in arr.columns:
+        g = np.array([tuple(v) if v is not None else (np.nan,) * 3 for v in np.asarray(arr[GOAL_COLUMN], dtype=object)], float).reshape(len(arr), 3)
+        gx = np.bincount(inv, weights=np.nan_to_num(g[:, 0])) / np.bincount(inv)
+        gy = np.bincount(inv, weights=np.nan_to_num(g[:, 1])) / np.bincount(inv)
+        has = np.bincount(inv, weights=np.isfinite(g[:, 0]).astype(float)) == np.bincount(inv)
+        mx, my = np.where(has, gx, mx), np.where(has, gy, my)
     o = _owner(mx, my, job)
     ok = (o == t.index) | np.isin(o, np.fromiter(links, np.int64, len(links)))
-    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, keep_whole, late_phase
 
     placed = ok[inv]
     later = _later_rects(t, job)
@@ -587,6 +601,10 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     return kept
 
 
+# where _keep_groups places a rule success: "mean" of its rows' centres, "declared" the
+# mean of its declared children's rows (strew.ornament._context.declared_rows), "goal"
+# the centre of the empty circle it grew into
+_GROUP_AT = "parents"
 # how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)
 _LATE_BAND = 0.5
 # how many rounds of strew.ornament._context.cut_touching _keep_groups runs at most
