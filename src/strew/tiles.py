@@ -540,25 +540,18 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     col = _KEEPS_GROUPS.get(job.method)
     if col is None or col not in arr.columns or not len(arr):
         return keep
-    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, declared_rows, keep_whole, late_phase, parent_rows
+    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, keep_whole, late_phase, parent_rows
 
     _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
     w = np.ones(len(arr))
-    if _GROUP_AT in ("declared", "parents") and PROXIES_COLUMN in arr.columns:
-        # the mean of the rows of declared children only (declared_rows), all rows where
-        # a success has none (willow: every child added at will)
-        rows = declared_rows if _GROUP_AT == "declared" else parent_rows
-        w = rows(job.input, arr[PROXIES_COLUMN]).astype(float)
+    if _GROUP_AT == "parents" and PROXIES_COLUMN in arr.columns:
+        # a success's growing tip: the mean of its rows of a type some rule grows from
+        # (parent_rows), all rows where a success has none
+        w = parent_rows(job.input, arr[PROXIES_COLUMN]).astype(float)
         w = np.where(np.bincount(inv, weights=w)[inv] > 0, w, 1.0)
     cnt = np.bincount(inv, weights=w)
     mx = np.bincount(inv, weights=w * np.asarray(arr.x, float)) / cnt
     my = np.bincount(inv, weights=w * np.asarray(arr.y, float)) / cnt
-    if _GROUP_AT == "goal" and GOAL_COLUMN in arr.columns:
-        g = np.array([tuple(v) if v is not None else (np.nan,) * 3 for v in np.asarray(arr[GOAL_COLUMN], dtype=object)], float).reshape(len(arr), 3)
-        gx = np.bincount(inv, weights=np.nan_to_num(g[:, 0])) / np.bincount(inv)
-        gy = np.bincount(inv, weights=np.nan_to_num(g[:, 1])) / np.bincount(inv)
-        has = np.bincount(inv, weights=np.isfinite(g[:, 0]).astype(float)) == np.bincount(inv)
-        mx, my = np.where(has, gx, mx), np.where(has, gy, my)
     o = _owner(mx, my, job)
     ok = (o == t.index) | np.isin(o, np.fromiter(links, np.int64, len(links)))
 
@@ -601,9 +594,9 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     return kept
 
 
-# where _keep_groups places a rule success: "mean" of its rows' centres, "declared" the
-# mean of its declared children's rows (strew.ornament._context.declared_rows), "goal"
-# the centre of the empty circle it grew into
+# where _keep_groups places a rule success: "parents", its growing tip (the mean of the
+# rows strew.ornament._context.parent_rows names); "mean", the mean of all its rows'
+# centres (the rule up to 3e74fcd)
 _GROUP_AT = "parents"
 # how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)
 _LATE_BAND = 0.5

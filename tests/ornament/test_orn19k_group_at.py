@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from strew.ornament._context import declared_rows, element_record, parent_rows
+from strew.ornament._context import element_record, parent_rows
 from strew.ornament._pattern import Element, load_pattern
 
 
@@ -29,7 +29,7 @@ def _row(pat, type_name):
     return (element_record(el, pat),)
 
 
-def test_rows_of_declared_children_and_of_parents():
+def test_rows_of_parents():
     pat = load_pattern("flowers")
     names = ["stem", "flower", "leaf", "bud"]
     col = np.empty(len(names) + 1, dtype=object)
@@ -37,7 +37,6 @@ def test_rows_of_declared_children_and_of_parents():
         col[i] = _row(pat, n)
     col[-1] = ()  # a row without records (not drawn by a rule)
     # flower --> stem flower (* leaf, added at will); flower bud --> stem bud
-    assert declared_rows("flowers", col).tolist() == [True, True, False, True, False]
     assert parent_rows("flowers", col).tolist() == [False, True, False, True, False]
 
 

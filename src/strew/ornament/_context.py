@@ -158,31 +158,20 @@ def keep_whole(element: Any, parent: Any, group: Any, placed: np.ndarray) -> np.
     return ok[inv]
 
 
-def declared_rows(pattern: Any, records: Any) -> np.ndarray:
-    """(n,) bool: the rows that draw an element of a type some rule declares as a child
-    (``children=``), not only elements a rule body adds at will (``ctx.new_child``: the
-    flowers' leaf, grown only on a long stem).
-
-    strew.tiles._keep_groups places a rule success by the mean of these rows' centres
-    (all rows where a success has none). Counting an optional child shifts the mean
-    towards where that child sits: a flower's leaf, at its stem's midpoint, pulled the
-    mean of a success growing into a later tile back by a third of the stem, so that the
-    finished tile kept successes with a leaf whose flower lay up to about a unit further
-    past the border than those without (flowers at 0-2 units past it placed by the
-    finished tile: 42 % of those with a leaf, 13 % of the others; main at 3e74fcd, tiles
-    of 100, benchmarks/orn19k_direction.py). Departure from the paper: Wong et al. grow
-    one panel in one run (§4.1); this hand-over between runs is ours.
-    """
-    from ._pattern import load_pattern
-
-    pat = load_pattern(pattern)
-    declared = {c for r in pat.rules for c in r.children}
-    return np.array([bool(recs) and any(rec[0] in declared for rec in recs) for recs in records], bool)
-
-
 def parent_rows(pattern: Any, records: Any) -> np.ndarray:
     """(n,) bool: the rows that draw an element of a type some rule grows from (the
-    flowers' flower and bud, not their stem and leaf)."""
+    flowers' flower and bud, not their stem and leaf).
+
+    strew.tiles._keep_groups places a rule success by the mean of these rows' centres
+    (all rows where a success has none: willow, whose every type parents a rule), its
+    growing tip. The mean of all its rows shifted towards an optional child: a flower's
+    leaf, at its stem's midpoint, pulled the mean of a success growing into a later tile
+    back by a third of the stem, so that the finished tile kept successes with a leaf
+    whose flower lay past the border (flowers at 0-2 units past it placed by the finished
+    tile: 46 % of those with a leaf, 7 % of the others at 3e74fcd; 1 % with this rule;
+    benchmarks/orn19k_direction.py). Departure from the paper: Wong et al. grow one
+    panel in one run (§4.1); this hand-over between runs is ours.
+    """
     from ._pattern import load_pattern
 
     pat = load_pattern(pattern)
