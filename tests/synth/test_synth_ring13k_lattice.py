@@ -1,8 +1,8 @@
 """Issue 13 point 1 on hidden exemplars (helper ring13k): rings of five (radius 10, hubs
 30 apart; ``benchmarks/synth_variants.py --harder`` rings h4) grew hub lattices that met
 out of step, with holes the size of a ring between them. With ``_grow.LATTICE_CV`` set
-(off by default, see its docstring) a proposed hub joins the lattice of the hubs already
-grown (``_grow._snap_anchors_to_lattice``)."""
+(on by default since helper ring13l, see its docstring; the tests set it themselves) a
+proposed hub joins the lattice of the hubs already grown (``_grow._snap_anchors_to_lattice``)."""
 
 from __future__ import annotations
 

@@ -1259,18 +1259,16 @@ def anchor_children(prep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return prep._anchor_children
 
 
-LATTICE_CV = 0.0
+LATTICE_CV = 0.05
 """Anchors lie on a lattice (:func:`anchor_lattice`) when their nearest-anchor
 distances in the exemplar vary by at most this share of their median (std / median);
 0: :func:`_snap_anchors_to_lattice` off.
 
-Off by default (helper ring13k, unfinished). At 0.05 rings h4 of
-``benchmarks/synth_variants.py --harder`` pass 4/4 (0/4 off), with h3s8 s2 and h5s7 s2:
-``--harder`` 174 -> 180/208 and ``--varied`` 251 -> 251/254, 0 lost, fidelity 60/60;
-but ``tests/synth/test_synth_seams.py::test_rings_on_a_large_canvas_keep_hub_and_tiles``
-(default rings at 20x the area) then has 3 tiles 25-30 from any hub: a refused hub's
-tiles still come. Refusing the tiles of its copy (``pslot``) or those within their
-ring's reach of it did not clear them."""
+Helper ring13k left it off: ``tests/synth/test_synth_seams.py::
+test_rings_on_a_large_canvas_keep_hub_and_tiles`` (default rings at 20x the area) had
+3 tiles 25-30 from any hub. They were the far-side tiles of hubs snapped onto the
+lattice, left at their unsnapped places (the near-side ones were refused against the
+hub); the tiles copied with a hub now move with it (helper ring13l)."""
 
 LATTICE_SNAP = 0.25
 """Farthest, in lattice spacings, :func:`_snap_anchors_to_lattice` moves a proposed
@@ -1325,7 +1323,7 @@ def anchor_lattice(prep) -> tuple[np.ndarray, np.ndarray, float]:
     return prep._anchor_lattice
 
 
-def _snap_anchors_to_lattice(state: SynthState, ex: np.ndarray, ppos: np.ndarray, valid: np.ndarray) -> None:
+def _snap_anchors_to_lattice(state: SynthState, ex: np.ndarray, ppos: np.ndarray, valid: np.ndarray, pslot: np.ndarray | None = None) -> None:
     """Move each proposed copy of a lattice anchor (:func:`anchor_lattice`: a ring's hub)
     onto the nearest site of the lattice of the output anchor nearest it (within
     :data:`LATTICE_REACH` spacings), or refuse it (``valid`` false) where that site is
@@ -1367,7 +1365,26 @@ def _snap_anchors_to_lattice(state: SynthState, ex: np.ndarray, ppos: np.ndarray
     co = np.round(np.linalg.solve(b, (ppos[t] - hp)[:, :, None]))
     site = hp + (b @ co)[:, :, 0]
     near = np.hypot(*(site - ppos[t]).T) <= LATTICE_SNAP * spacing
-    ppos[t[near]] = site[near]
+    if pslot is not None and near.any():
+        # the proposals copied with a snapped anchor (its ring's tiles: ``pslot``, and
+        # theirs in turn) move with it. Left behind, the tiles on its far side stood
+        # up to a quarter spacing further out than the ring's radius and, with those on
+        # its near side refused against the anchor, stayed as tiles 25-30 from any hub
+        # (default rings at 20x, ``tests/synth/test_synth_seams.py``)
+        shift = np.zeros_like(ppos)
+        shift[t[near]] = site[near] - ppos[t[near]]
+        moved = np.zeros(len(ppos), bool)
+        moved[t[near]] = True
+        has = np.flatnonzero(pslot >= 0)
+        for _ in range(4):
+            step = has[moved[pslot[has]] & ~moved[has]]
+            if len(step) == 0:
+                break
+            shift[step] = shift[pslot[step]]
+            moved[step] = True
+        ppos += shift
+    else:
+        ppos[t[near]] = site[near]
     valid[t[~near]] = False
 
 
@@ -1389,7 +1406,7 @@ def _snap_to_anchor_rings(state: SynthState, ex: np.ndarray, ppos: np.ndarray, v
     child, cptr, cidx = anchor_children(prep)
     if len(cidx) == 0 or state.n == 0:
         return
-    _snap_anchors_to_lattice(state, ex, ppos, valid)
+    _snap_anchors_to_lattice(state, ex, ppos, valid, pslot)
     t = np.flatnonzero(valid & (pslot < 0) & (pslot != -2) & child[np.maximum(ex, 0)])
     if len(t) == 0:
         return
