@@ -179,6 +179,38 @@ FILL_HOLES = True
 """:func:`grow` ends with :func:`fill_holes` (off: the paper's growth alone)."""
 
 
+def _ranked_fits(prep, cand: np.ndarray, fits: np.ndarray, par: np.ndarray, par_d: np.ndarray, near: np.ndarray, off: np.ndarray,
+                 dist: np.ndarray, s_: np.ndarray, rbar: float) -> tuple[np.ndarray, np.ndarray]:
+    """The candidates ``cand`` (m,) that fit a hole (``fits``, (m,) bool) and their order,
+    best Eq. 1 match to the output around the hole's centre first: ``(ids, order)``,
+    ``ids[order]`` at most five with a finite cost (:func:`fill_holes`, :func:`fill_room`).
+
+    ``near`` (k,) the output elements around the centre, ``off`` (k, 2) their offsets from
+    it, ``dist`` (k,) their distances, ``s_`` (k,) their exemplar elements; ``par``/``par_d``
+    (m,) each candidate's parent (-1: none) and its reach. An element that leans on a
+    larger one (or on an anchor) comes only beside an output element of its parent's
+    kind, within its exemplar distance to the parent plus its radius (no stray tiles
+    between rings).
+    """
+    fits = fits.copy()
+    lean = fits & (par >= 0)
+    if lean.any():
+        same = prep.skind[s_][None, :] == prep.skind[par[lean]][:, None]
+        fits[lean] = np.any(same & (dist[None, :] <= par_d[lean][:, None]), axis=1)
+    ids = cand[fits]
+    if not len(ids):
+        return ids, np.empty(0, np.int64)
+    nb = np.flatnonzero(dist <= rbar)
+    nb = nb[np.lexsort((near[nb], dist[nb]))]  # by distance, as every neighbourhood (§4)
+    q_ptr = np.array([0, len(nb)], np.int64)
+    costs = K.candidate_costs(q_ptr, np.ascontiguousarray(off[nb]), prep.kind[s_[nb]], 2.0 * prep.r[s_[nb]], np.array([rbar]),
+                              np.array([-1]), np.array([0.0]), ids[None, :], prep.nb_ptr, prep.nb_off, prep.nb_kind,
+                              prep.nb_d, prep.kind, prep.kind_cost)
+    order = np.argsort(costs[0], kind="stable")[:5]
+    # (ascending: the first infinite cost ends the finite ones)
+    return ids, order[np.isfinite(costs[0, order])]
+
+
 def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element into each empty circle of the output that is wider than
     every empty circle of the exemplar (in place); returns the number added.
@@ -259,25 +291,8 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             s_ = state.src[near]
             lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
             fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h])
-            # an element that leans on a larger one (or on an anchor) comes only beside an
-            # output element of its parent's kind, within its exemplar distance to the
-            # parent plus its radius (no stray tiles between rings)
-            lean = fits & (par >= 0)
-            if lean.any():
-                same = prep.skind[s_][None, :] == prep.skind[par[lean]][:, None]
-                fits[lean] = np.any(same & (dist[None, :] <= par_d[lean][:, None]), axis=1)
-            if not fits.any():
-                continue
-            ids = cand[fits]
-            nb = np.flatnonzero(dist <= rbar)
-            nb = nb[np.lexsort((near[nb], dist[nb]))]  # by distance, as every neighbourhood (§4)
-            q_ptr = np.array([0, len(nb)], np.int64)
-            costs = K.candidate_costs(q_ptr, np.ascontiguousarray(off[nb]), prep.kind[s_[nb]], 2.0 * prep.r[s_[nb]], np.array([rbar]),
-                                      np.array([-1]), np.array([0.0]), ids[None, :], prep.nb_ptr, prep.nb_off, prep.nb_kind,
-                                      prep.nb_d, prep.kind, prep.kind_cost)
-            for best in np.argsort(costs[0], kind="stable")[:5]:
-                if not np.isfinite(costs[0, best]):
-                    break
+            ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar)
+            for best in order:
                 if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
                     continue
                 # the element comes with the smaller elements that lean on it (its
@@ -477,22 +492,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         s_ = state.src[near]
         lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
         fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h]) & (budget[prep.skind[cand]] > 0)
-        lean = fits & (par >= 0)
-        if lean.any():
-            same = prep.skind[s_][None, :] == prep.skind[par[lean]][:, None]
-            fits[lean] = np.any(same & (dist[None, :] <= par_d[lean][:, None]), axis=1)
-        if not fits.any():
-            continue
-        ids = cand[fits]
-        nb = np.flatnonzero(dist <= rbar)
-        nb = nb[np.lexsort((near[nb], dist[nb]))]
-        q_ptr = np.array([0, len(nb)], np.int64)
-        costs = K.candidate_costs(q_ptr, np.ascontiguousarray(off[nb]), prep.kind[s_[nb]], 2.0 * prep.r[s_[nb]], np.array([rbar]),
-                                  np.array([-1]), np.array([0.0]), ids[None, :], prep.nb_ptr, prep.nb_off, prep.nb_kind,
-                                  prep.nb_d, prep.kind, prep.kind_cost)
-        for best in np.argsort(costs[0], kind="stable")[:5]:
-            if not np.isfinite(costs[0, best]):
-                break
+        ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar)
+        for best in order:
             if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
                 continue
             state.add(ids[best : best + 1], c[None], horizon=False)
