@@ -48,8 +48,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from ._flow_holes import _seg_dist
-from ._flow_net import _STEPS, _delaunay_bonds, _phases, relax_network
+from ._flow_holes import close_ring, open_ring
+from ._flow_net import _STEPS, _delaunay_bonds, _phases, _resolve, relax_network
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
 from ._objects import ELEMENT
@@ -273,19 +273,7 @@ def _settle(g, moves: dict, old: dict, turns: dict) -> dict:
     none also turned to ``turns``' rotation (where it has one)."""
     level = {o: 0 for o in moves}
     check = [o for o in moves if _place_at(g, o, moves, old, level, turns)]
-    while check:
-        hits = g.overlapping_many(check)
-        back: set[int] = set()
-        for o, hs in hits.items():
-            for j in [o, *(g.orig_of[h] for h in hs)]:
-                if j in level and _STEPS[level[j]] > 0.0:
-                    back.add(j)
-        if not back:
-            break
-        for o in sorted(back):
-            level[o] += 1
-            _place_at(g, o, moves, old, level, turns)
-        check = sorted({j for o in back for j in g.near(*g.xy[o], 2.0 * g.l, (ELEMENT,)) if j in level} | back)
+    _resolve(g, moves, old, level, check, lambda g_, o, m, ol, lv: _place_at(g_, o, m, ol, lv, turns))
     return level
 
 
@@ -338,19 +326,7 @@ def _put(g, sx: float, sy: float) -> bool:
         return False
     if g.boundary is not None and any(g.crosses_boundary((sx, sy), g.xy[o]) for o in ring):
         return False
-    removed = []
-    rset = set(ring)
-    for i in ring:
-        for j in list(g.adj[i]):
-            if j in rset and i < j and _seg_dist(g.xy[i], g.xy[j], (sx, sy)) < 0.5 * L:
-                g.remove_edge(i, j)
-                removed.append((i, j))
-    kinds = [int(g.kind[o]) for o in ring]
-    t = g.new_object(sx, sy, max(sorted(set(kinds)), key=kinds.count))
-    for o in ring:
-        if not g.crosses_edges(t, (sx, sy), o, g.xy[o]):
-            g.add_edge(t, o)
-    g._out_of_domain = False
+    t, removed = open_ring(g, sx, sy, ring)
     pick = g.choose(t)
     if pick is not None:
         a, kk, th = pick
@@ -361,7 +337,5 @@ def _put(g, sx: float, sy: float) -> bool:
                 g._move(t, sx, sy)
             if g.place(t, a, kk, th + d, reach=1e-12 * L):
                 return True
-    g.kill(t)
-    for i, j in removed:
-        g.add_edge(i, j)
+    close_ring(g, t, removed)
     return False

@@ -210,6 +210,34 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: 
     return None, undo
 
 
+def open_ring(g, sx: float, sy: float, ring: list[int]) -> tuple[int, list[tuple[int, int]]]:
+    """A new object at (sx, sy), of the ring's most common kind, joined to the elements
+    of ``ring`` around it; the ring's edges passing within half a mean edge of it go
+    first. Returns the object and the removed edges (for :func:`close_ring`)."""
+    removed = []
+    rset = set(ring)
+    for i in ring:
+        for j in list(g.adj[i]):
+            if j in rset and i < j and _seg_dist(g.xy[i], g.xy[j], (sx, sy)) < 0.5 * g.l:
+                g.remove_edge(i, j)
+                removed.append((i, j))
+    kinds = [int(g.kind[o]) for o in ring]
+    t = g.new_object(sx, sy, max(sorted(set(kinds)), key=kinds.count))
+    for o in ring:
+        if not g.crosses_edges(t, (sx, sy), o, g.xy[o]):
+            g.add_edge(t, o)
+    g._out_of_domain = False
+    return t, removed
+
+
+def close_ring(g, t: int, removed: list[tuple[int, int]]) -> None:
+    """Undo :func:`open_ring` where ``t`` was not placed: the object goes, the ring's
+    edges come back."""
+    g.kill(t)
+    for i, j in removed:
+        g.add_edge(i, j)
+
+
 def _turn_free(g, hits: dict, turn: float) -> None:
     """Turn each overlapping element by the least of a few angles up to ``turn`` that
     frees it (a hexagon's corner turned from its neighbour's)."""
@@ -287,19 +315,7 @@ def _fill(g, cx: float, cy: float, ring: list[int], taut: float | None = None, w
         undo()
         return False
     # edges across the hole go; the new object is joined to the ring around it
-    removed = []
-    rset = set(ring)
-    for i in ring:
-        for j in list(g.adj[i]):
-            if j in rset and i < j and _seg_dist(g.xy[i], g.xy[j], (sx, sy)) < 0.5 * L:
-                g.remove_edge(i, j)
-                removed.append((i, j))
-    kinds = [int(g.kind[o]) for o in ring]
-    t = g.new_object(sx, sy, max(sorted(set(kinds)), key=kinds.count))
-    for o in ring:
-        if not g.crosses_edges(t, (sx, sy), o, g.xy[o]):
-            g.add_edge(t, o)
-    g._out_of_domain = False
+    t, removed = open_ring(g, sx, sy, ring)
     pick = g.choose(t)
     if pick is not None:
         # the chosen frame first, then turned by up to ``flow_hole_turn`` (its ring's
@@ -327,8 +343,6 @@ def _fill(g, cx: float, cy: float, ring: list[int], taut: float | None = None, w
                     for o, (rot, geom) in was.items():
                         g.rot[o] = rot
                         g.geom[o] = geom
-    g.kill(t)
-    for i, j in removed:
-        g.add_edge(i, j)
+    close_ring(g, t, removed)
     undo()
     return False

@@ -214,9 +214,11 @@ def _place(g, o: int, moves: dict, old: dict, level: dict) -> bool:
         level[o] += 1
 
 
-def _resolve(g, moves: dict, old: dict, level: dict, check: list) -> None:
+def _resolve(g, moves: dict, old: dict, level: dict, check: list, place=None) -> None:
     """Step back the elements of ``check`` (and those near) in an overlap, both of
-    each pair, until none is left."""
+    each pair, until none is left; ``place(g, o, moves, old, level)`` puts one at its
+    step (:func:`_place` unless given)."""
+    place = _place if place is None else place
     while check:
         hits = g.overlapping_many(check)
         back: set[int] = set()
@@ -228,7 +230,7 @@ def _resolve(g, moves: dict, old: dict, level: dict, check: list) -> None:
             break
         for o in sorted(back):
             level[o] += 1
-            _place(g, o, moves, old, level)
+            place(g, o, moves, old, level)
         check = sorted({j for o in back for j in g.near(*g.xy[o], 2.0 * g.l, (ELEMENT,)) if j in level} | back)
 
 
