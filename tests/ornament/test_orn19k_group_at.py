@@ -15,6 +15,8 @@ import pytest
 from strew.ornament._context import element_record, parent_rows
 from strew.ornament._pattern import Element, load_pattern
 
+from test_orn19g_cut_touching import _tile0 as _tile0_cut  # noqa: E402
+
 
 def _row(pat, type_name):
     el = Element(pat.types[type_name])
@@ -42,23 +44,13 @@ def test_rows_of_parents():
 
 def _tile0(monkeypatch, group_at):
     """Tile 0 of a 160 x 160 flowers world in tiles of 80 (halo 20): its grown rows, the
-    rows it keeps and its rectangle."""
+    rows it keeps and its rectangle (test_orn19g_cut_touching's world, its cut unchanged)."""
     import strew.tiles as T
+    from strew.ornament import _context as C
 
     monkeypatch.setattr(T, "_GROUP_AT", group_at)
-    seen = {}
-    orig = T._keep_groups
-
-    def spy(arr, keep, t, job, links):
-        out = orig(arr, keep, t, job, links)
-        seen["arr"], seen["kept"] = arr, out
-        return out
-
-    monkeypatch.setattr(T, "_keep_groups", spy)
-    tiles, nx, ny = T.plan((160.0, 160.0), 80.0)
-    job = T._Job("ornament", "flowers", {}, (160.0, 160.0), 20.0, 1, (80.0, 80.0), (nx, ny))
-    T.run_tile(job, tiles[0])
-    return seen["arr"], seen["kept"], tiles[0].rect
+    arr, kept, _, _ = _tile0_cut(monkeypatch, C.CUT_TOUCH)
+    return arr, kept, T.plan((160.0, 160.0), 80.0)[0][0].rect
 
 
 @pytest.mark.slow
