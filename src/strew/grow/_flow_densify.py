@@ -49,7 +49,7 @@ from dataclasses import replace
 import numpy as np
 
 from ._flow_holes import close_ring, open_ring
-from ._flow_net import _STEPS, _delaunay_bonds, _phases, _resolve, relax_network
+from ._flow_net import _delaunay_bonds, _phases, _place, _resolve, relax_network
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
 from ._objects import ELEMENT
@@ -272,32 +272,9 @@ def _settle(g, moves: dict, old: dict, turns: dict) -> dict:
     """As :func:`strew.grow._flow_net._settle_steps`, each element at a step over
     none also turned to ``turns``' rotation (where it has one)."""
     level = {o: 0 for o in moves}
-    check = [o for o in moves if _place_at(g, o, moves, old, level, turns)]
-    _resolve(g, moves, old, level, check, lambda g_, o, m, ol, lv: _place_at(g_, o, m, ol, lv, turns))
+    check = [o for o in moves if _place(g, o, moves, old, level, turns)]
+    _resolve(g, moves, old, level, check, turns)
     return level
-
-
-def _place_at(g, o: int, moves: dict, old: dict, level: dict, turns: dict) -> bool:
-    ox, oy, geom0, rot0 = old[o]
-    tx, ty = moves[o]
-    while True:
-        f = _STEPS[level[o]]
-        if f == 0.0:
-            if g.xy[o] != (ox, oy):
-                g._move(o, ox, oy)
-            g.geom[o] = geom0
-            g.rot[o] = rot0
-            return True
-        x, y = ox + f * (tx - ox), oy + f * (ty - oy)
-        rot = rot0 + f * (turns[o] - rot0) if o in turns else rot0
-        if g.in_domain(x, y) and not (g.boundary is not None and g.crosses_boundary((ox, oy), (x, y))):
-            geom = g.element_geometry(int(g.kind[o]), x, y, rot, float(g.scl[o]))
-            if g.fits_domain(geom):
-                g._move(o, x, y)
-                g.geom[o] = geom
-                g.rot[o] = rot
-                return True
-        level[o] += 1
 
 
 def _ref_phase(g) -> float:

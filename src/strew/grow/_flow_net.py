@@ -192,33 +192,39 @@ def _settle_steps(g, moves: dict, old: dict, first: int = 0) -> dict:
     return level
 
 
-def _place(g, o: int, moves: dict, old: dict, level: dict) -> bool:
+def _place(g, o: int, moves: dict, old: dict, level: dict, turns: dict | None = None) -> bool:
     """Put ``o`` at its current step, stepping back while it leaves the domain; True
-    (it is placed)."""
-    ox, oy, geom0, rot = old[o]
+    (it is placed). With ``turns``, an element in it also turns to that rotation by the
+    same step (:mod:`strew.grow._flow_densify`)."""
+    ox, oy, geom0, rot0 = old[o]
     tx, ty = moves[o]
+    turn = turns.get(o) if turns else None
     while True:
         f = _STEPS[level[o]]
         if f == 0.0:
             if g.xy[o] != (ox, oy):
                 g._move(o, ox, oy)
             g.geom[o] = geom0
+            if turns is not None:
+                g.rot[o] = rot0
             return True
         x, y = ox + f * (tx - ox), oy + f * (ty - oy)
+        rot = rot0 + f * (turn - rot0) if turn is not None else rot0
         if g.in_domain(x, y) and not (g.boundary is not None and g.crosses_boundary((ox, oy), (x, y))):
             geom = g.element_geometry(int(g.kind[o]), x, y, rot, float(g.scl[o]))
             if g.fits_domain(geom):
                 g._move(o, x, y)
                 g.geom[o] = geom
+                if turns is not None:
+                    g.rot[o] = rot
                 return True
         level[o] += 1
 
 
-def _resolve(g, moves: dict, old: dict, level: dict, check: list, place=None) -> None:
+def _resolve(g, moves: dict, old: dict, level: dict, check: list, turns: dict | None = None) -> None:
     """Step back the elements of ``check`` (and those near) in an overlap, both of
-    each pair, until none is left; ``place(g, o, moves, old, level)`` puts one at its
-    step (:func:`_place` unless given)."""
-    place = _place if place is None else place
+    each pair, until none is left (each put at its step by :func:`_place`, ``turns``
+    as there)."""
     while check:
         hits = g.overlapping_many(check)
         back: set[int] = set()
@@ -230,7 +236,7 @@ def _resolve(g, moves: dict, old: dict, level: dict, check: list, place=None) ->
             break
         for o in sorted(back):
             level[o] += 1
-            place(g, o, moves, old, level)
+            _place(g, o, moves, old, level, turns)
         check = sorted({j for o in back for j in g.near(*g.xy[o], 2.0 * g.l, (ELEMENT,)) if j in level} | back)
 
 
