@@ -64,7 +64,7 @@ from ._collide import _Collide
 from ._flow_densify import densify
 from ._flow_gaps import close_gaps, fill_holes, side_stream
 from ._flow_holes import close_holes
-from ._flow_net import hexagonal_reference, relax_network
+from ._flow_net import NET_BAND, hexagonal_reference, relax_network
 from ._flow_retry import retry_shear
 from ._flow_shear import reshape_shear
 from ._flow_stretch import insert_stretched
@@ -928,6 +928,9 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 if p.flow_densify_rounds:
                     # (then the band's missing elements, one at a time: issue 14 point 2)
                     densify(self, target)
+                # (last, the bonds near the sites without six neighbours pulled into the
+                # six-neighbour test's band, the bond network kept: issue 14 point 2)
+                relax_network(self, band=NET_BAND)
             self.rng = main
 
     def _irregular(self) -> bool:
