@@ -21,7 +21,10 @@ from test_grow_flow_gaps import SP, _quarter_circles, grown_with_and_without  # 
 
 
 @pytest.mark.slow
-def test_flow_sheared_band_fitted_back_keeps_six_neighbours(hex_ref):
+def test_flow_sheared_band_fitted_back_keeps_six_neighbours(hex_ref, monkeypatch):
+    from test_grow_flow14m_band import without_band_pass
+
+    without_band_pass(monkeypatch)  # (the fit weighed against its absence as it was)
     a = 30 * SP
     region = Region.rectangle(a, a)
     _, (six, stretched), (six_off, stretched_off) = grown_with_and_without(
