@@ -1877,6 +1877,12 @@ def grow(
         _record(state, t0, skipped)
     state.unwrap()
     _complete_anchor_rings(state, None if max_elements is None else max(0, max_elements - state.n))
+    if state.n > start_n:
+        from ._displace import fill_displaced  # (lazy: it imports this module)
+
+        state.wrap()
+        fill_displaced(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
+        state.unwrap()
     if state.n > start_n and ROOM_FILL:
         state.wrap()
         fill_room(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)

@@ -1,0 +1,191 @@
+"""Places a saturated kind's copies could not take, given back to it (extension of §5.1, §7).
+
+:func:`fill_displaced` runs at the end of :func:`strew.synth._grow.grow`, before
+:func:`~strew.synth._grow.fill_room`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import shapely
+from scipy.spatial import cKDTree
+
+from ._shapes import shape_test_needed
+from ._state import SynthState
+
+DISPLACE = True
+""":func:`grow` gives a saturated kind the places smaller elements took from it (see
+:func:`fill_displaced`; off: the output as growth, :func:`fill_room` and
+:func:`fill_holes` leave it)."""
+
+
+def _inner_density(prep, margin: float) -> np.ndarray:
+    """(S,) float per kind-in-exemplar class (``Prepared.skind``): visible selected
+    elements per unit area of their exemplar's domain shrunk by ``margin`` (nan: no
+    such area)."""
+    S = int(prep.skind.max()) + 1 if len(prep.skind) else 0
+    out = np.full(S, np.nan)
+    sel = prep.selected_elements & ~prep.void
+    for s, dom in enumerate(prep.domains):
+        if not prep.selected[s]:
+            continue
+        inner = dom.buffer(-margin)
+        if inner.is_empty or inner.area <= 0.25 * dom.area:
+            continue
+        ids = np.flatnonzero(sel & (prep.source == s))
+        ids = ids[shapely.contains_xy(inner, prep.pos[ids, 0], prep.pos[ids, 1])]
+        kinds = np.unique(prep.skind[sel & (prep.source == s)])
+        out[kinds] = np.bincount(prep.skind[ids], minlength=S)[kinds] / float(inner.area)
+    return out
+
+
+def fill_displaced(state: SynthState, room: int | None = None, since: int = 0) -> int:
+    """Give a kind its exemplar leaves (nearly) no room for (``_grow._room_rate``: thrown
+    to saturation) the places in the output that smaller elements took from it, until
+    its density is the exemplar's (in place); returns the net number of elements added.
+
+    Extension of §5.1 for several sizes (§7: "significant differences in element size
+    ... are not supported"). Copies of neighbouring seeds disagree a little, and where a
+    saturated medium stone of one copy would overlap a stone of the next, the copy's
+    small stones still fit and take the place; no later step moves them (yielding, see
+    ``_grow._split_conflicts``, lasts three iterations) and :func:`fill_room` sees no
+    circle there, the small stones standing in it. Measured first (three sizes
+    20:120:20 and 100:100:15 with ratios 1:2.5:4, variant seed 7, synth seeds 1 and 2;
+    ``python benchmarks/tsz13m_stages.py`` and ``benchmarks/tsz13k_diag.py``): medium
+    stones 0.80-0.82x their exemplar's count per area right after growth, 0.81-0.85x at
+    the end, small stones 1.14x and 1.24x the exemplar's density (the metric's
+    windows), and the share of the area where one more medium stone fits 0.004
+    against the exemplar's 0.0003 (no room left for fill_room); the size-mix rules
+    (placing order by size class, ``SHARE_MARGIN``, ``OWED_HERE_Q``, ``NEAR_LARGE_Q``,
+    ``BALANCE_Z``) left medium at 0.81-0.86x.
+
+    For each such kind below its exemplar's density (elements per area away from the
+    frame, in the exemplar and in the region), the empty circles of the output without
+    its removable elements (visible elements of smaller size classes above their own
+    exemplar density, added since ``since``, not context) are visited largest first;
+    each takes the kind's exemplar element whose neighbourhood matches the circle's
+    surroundings best (Eq. 1, as in ``_grow.fill_room``) among those that fit at its
+    centre once the removable elements it overlaps are removed, while those kinds stay
+    at or above their exemplar density. At most ``room`` elements net are added.
+    """
+    from ._grow import _greedy_rooms, _ranked_fits, _room_rate, anchors, circumcircles  # (lazy: _grow imports this module)
+
+    prep = state.prep
+    if not DISPLACE or state.n < 3 or state.region is None or shape_test_needed(prep) or np.count_nonzero(prep.selected) != 1:
+        # one exemplar fills the region (several share it: each kind's density there is
+        # not its exemplar's); shrunk collision discs: the shapes' own test would have to
+        # leave out what is displaced (no exemplar of the audits has them with sizes)
+        return 0
+    sel = prep.selected_elements & ~prep.void
+    rate = _room_rate(prep)
+    tight = np.isfinite(rate[prep.skind])
+    cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
+    cand = np.unique(np.asarray(cand, np.int64))
+    cand = cand[sel[cand] & tight[cand]]
+    cand = cand[(anchors(prep)[cand] == 0) & (prep.parent[cand] < 0)]  # alone: no children to bring, no parent to lean on
+    if len(cand) == 0:
+        return 0
+    margin = 2.0 * float(prep.rc.max())
+    dens = _inner_density(prep, margin)
+    geom = state.region.geometry
+    inner = geom.buffer(-margin)
+    if inner.is_empty or inner.area <= 0.25 * geom.area:
+        return 0
+    area = float(inner.area)
+    S = len(dens)
+
+    def counts() -> np.ndarray:
+        v = np.flatnonzero(~prep.void[state.src])
+        v = v[shapely.contains_xy(inner, state.pos[v, 0], state.pos[v, 1])]
+        return np.bincount(prep.skind[state.src[v]], minlength=S).astype(float)
+
+    have = counts()
+    want = np.where(np.isfinite(dens), dens * area, np.nan)
+    budget = np.zeros(S, np.int64)
+    for k in np.unique(prep.skind[cand]):
+        if np.isfinite(want[k]):
+            budget[k] = max(0, int(np.floor(want[k] - have[k])))
+    if not budget.any():
+        return 0
+    # elements a kind of a larger size class may take the place of: smaller kinds above
+    # their exemplar's density (``spare``: how many of each may go)
+    spare = np.where(np.isfinite(want), np.floor(have - want), 0).astype(np.int64)
+    spare = np.maximum(spare, 0)
+    if not spare.any():
+        return 0
+    cls_of = np.full(S, -1, np.int64)
+    cls_of[prep.skind] = prep.size_class
+    kcls = int(cls_of[np.unique(prep.skind[cand][budget[prep.skind[cand]] > 0])].min())
+    cand = cand[(budget[prep.skind[cand]] > 0)]
+
+    def removable() -> np.ndarray:
+        n = state.n
+        sk = prep.skind[state.src]
+        ok = ~prep.void[state.src] & (np.arange(n) >= since) & ~state.fixed & (cls_of[sk] < kcls) & (spare[sk] > 0)
+        return ok
+
+    # sites: empty circles of the output without its removable elements, largest first
+    rem = removable()
+    keep_pts = np.flatnonzero(~prep.void[state.src] & ~rem)
+    if len(keep_pts) < 3:
+        return 0
+    need = np.maximum(prep.rc[:, None] + prep.rc[cand][None, :], prep.min_dist[prep.skind[:, None], prep.skind[cand][None, :]]).min(axis=1)
+    cen, rad, tri = circumcircles(state.pos[keep_pts])
+    ok = (rad >= need[state.src[keep_pts[tri]]].max(axis=1)) & (keep_pts[tri] >= since).any(axis=1)
+    ok[ok] = state.in_domain(cen[ok])
+    cen, rad = cen[ok], rad[ok]
+    if len(cen) == 0:
+        return 0
+    order = np.argsort(-rad, kind="stable")
+    cen, rad = cen[order], rad[order]
+    # one site per room (two collision radii apart), as _room_rate counts rooms
+    pick = _greedy_rooms(cen, rad, 2.0 * float(prep.rc[cand].min()))
+    pick.sort()
+    cen, rad = cen[pick], rad[pick]
+    boundary = geom.boundary
+    wall = shapely.distance(boundary, shapely.points(cen))
+    par = prep.parent[cand]
+    par_d = np.full(len(cand), np.inf)
+    rbar = float(prep.rbar[cand].max())
+    reach = max(2.0 * float(prep.rc.max()), float(prep.min_dist.max()))
+    net = 0
+    tree = cKDTree(state.pos)
+    for h in range(len(cen)):
+        if not budget.any() or (room is not None and net >= room):
+            break
+        c = cen[h]
+        near = np.asarray(tree.query_ball_point(c, max(rbar, reach)), np.int64)
+        rem = removable()
+        off = state.pos[near] - c
+        dist = np.hypot(off[:, 0], off[:, 1])
+        s_ = state.src[near]
+        lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
+        clash = dist[None, :] < lim  # (m, k)
+        hard = clash & ~rem[near][None, :]
+        fits = ~hard.any(axis=1) & (prep.r[cand] <= wall[h]) & (budget[prep.skind[cand]] > 0)
+        if not fits.any():
+            continue
+        # the neighbourhood the element will have: without what it displaces
+        gone_any = rem[near] & clash[fits].any(axis=0)
+        stay = ~gone_any
+        ids, rank = _ranked_fits(prep, cand, fits, par, par_d, near[stay], off[stay], dist[stay], s_[stay], rbar)
+        for best in rank:
+            b = int(np.flatnonzero(cand == ids[best])[0])
+            gone = near[clash[b] & rem[near]]
+            sk_gone = prep.skind[state.src[gone]]
+            if np.any(np.bincount(sk_gone, minlength=S) > spare):
+                continue
+            if room is not None and net + 1 - len(gone) > room:
+                continue
+            np.subtract.at(spare, sk_gone, 1)
+            budget[prep.skind[ids[best]]] -= 1
+            if len(gone):
+                mask = np.zeros(state.n, bool)
+                mask[gone] = True
+                state.remove(mask)
+            state.add(ids[best : best + 1], c[None], horizon=False)
+            net += 1 - len(gone)
+            tree = cKDTree(state.pos)
+            break
+    return net
+
