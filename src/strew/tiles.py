@@ -544,14 +544,21 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
 
     _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
     w = np.ones(len(arr))
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    tips = None
     if _GROUP_AT == "parents" and PROXIES_COLUMN in arr.columns:
         # a success's growing tip: the mean of its rows of a type some rule grows from
         # (parent_rows), all rows where a success has none
-        w = parent_rows(job.input, arr[PROXIES_COLUMN]).astype(float)
-        w = np.where(np.bincount(inv, weights=w)[inv] > 0, w, 1.0)
+        tips = parent_rows(job.input, arr[PROXIES_COLUMN])
+        w = np.where(np.bincount(inv, weights=tips)[inv] > 0, tips.astype(float), 1.0)
     cnt = np.bincount(inv, weights=w)
-    mx = np.bincount(inv, weights=w * np.asarray(arr.x, float)) / cnt
-    my = np.bincount(inv, weights=w * np.asarray(arr.y, float)) / cnt
+    mx = np.bincount(inv, weights=w * x) / cnt
+    my = np.bincount(inv, weights=w * y) / cnt
+    if tips is not None:
+        # a success whose every row is a tip (willow) is placed where it grows from: its
+        # parent's centre, where the tile drew its parent (_at_parent)
+        at = _at_parent(arr, inv, tips)
+        mx, my = np.where(at >= 0, x[np.maximum(at, 0)], mx), np.where(at >= 0, y[np.maximum(at, 0)], my)
     o = _owner(mx, my, job)
     ok = (o == t.index) | np.isin(o, np.fromiter(links, np.int64, len(links)))
 
@@ -559,7 +566,6 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     later = _later_rects(t, job)
     band = _LATE_BAND * job.halo
     # each element's distance to the nearest later tile
-    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
     d = np.full(len(arr), np.inf)
     for x0, y0, x1, y1 in later:
         d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
@@ -595,9 +601,47 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
 
 
 # where _keep_groups places a rule success: "parents", its growing tip (the mean of the
-# rows strew.ornament._context.parent_rows names); "mean", the mean of all its rows'
-# centres (the rule up to 3e74fcd)
+# rows strew.ornament._context.parent_rows names), or its parent's centre where every
+# row is a tip (_at_parent); "mean", the mean of all its rows' centres (the rule up to
+# 3e74fcd)
 _GROUP_AT = "parents"
+
+
+def _at_parent(arr: Any, inv: np.ndarray, tips: np.ndarray) -> np.ndarray:
+    """(groups,) int: for each rule success (``inv``: each row's group) whose every row
+    is a tip (``tips``, strew.ornament._context.parent_rows) the row of its parent
+    element, where the tile drew it; -1 for the others (placed by their tip's mean).
+
+    Why (issue 19.4, willow): every willow type parents a rule (a stem branches anywhere
+    along a stem and from a leaf's tip), so the tip is the whole success, a stem of up
+    to 28 units with its leaves. By its rows' mean, a success that grew from the
+    finished side across the border was dropped, and with it (keep_whole) every success
+    grown from it, back into the finished side too: the finished tile kept 11 % of its
+    rows within 3 units of a later tile and 25-45 % within 12 (tile 100, seed 1), and the
+    later tile refilled the rest. A refill grows into the narrow holes of the cut, the
+    scale of a rule's elements following its empty circle (Wong et al. §5: the pattern
+    "simplifies as it wanders into narrower spaces"): refilled stems 8.5 units long on
+    average against 10.5 in the interior, 4 % over 20 units against 13 % (seed 1, tiles
+    100, 112, 124), and the strips were denser than the interior (+-1 s 1.050, +-2 s
+    1.046) and short of stems (+-1 s 0.971). Placed at its parent, a success growing out
+    of the finished side is kept (the later tile grows around it as around the rest of
+    its context), and one grown from a row past the border goes to the later tile: the
+    refilled stems fell from 944 to 631, +-1 s 1.012, stems 0.999; +-2 s 1.022
+    (python benchmarks/orn19m_willow.py make/analyze, the same three worlds). A success
+    with rows that parent no rule (flowers' stem and leaf) keeps its tip's mean
+    (parent_rows' docstring); a seed's success (its parent not drawn) too. Departure
+    from the paper: Wong et al. grow one panel in one run (§4.1); this hand-over between
+    runs is ours.
+    """
+    ng = int(inv.max()) + 1 if len(inv) else 0
+    every = np.bincount(inv, weights=np.asarray(tips, float), minlength=ng) == np.bincount(inv, minlength=ng)
+    row_of = {int(e): i for i, e in enumerate(np.asarray(arr["element"], np.int64).tolist())}
+    at = np.full(ng, -1, np.int64)
+    # the rows of a success share its parent (one rule success, strew.ornament._engine._commit)
+    at[inv] = [row_of.get(int(p), -1) for p in np.asarray(arr["parent"], np.int64).tolist()]
+    return np.where(every, at, -1)
+
+
 # how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)
 _LATE_BAND = 0.5
 # how many rounds of strew.ornament._context.cut_touching _keep_groups runs at most

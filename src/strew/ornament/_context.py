@@ -163,8 +163,9 @@ def parent_rows(pattern: Any, records: Any) -> np.ndarray:
     flowers' flower and bud, not their stem and leaf).
 
     strew.tiles._keep_groups places a rule success by the mean of these rows' centres
-    (all rows where a success has none: willow, whose every type parents a rule), its
-    growing tip. The mean of all its rows shifted towards an optional child: a flower's
+    (all rows where a success has none), its growing tip; a success whose every row is
+    one (willow, whose every type parents a rule) by its parent's centre instead
+    (strew.tiles._at_parent). The mean of all its rows shifted towards an optional child: a flower's
     leaf, at its stem's midpoint, pulled the mean of a success growing into a later tile
     back by a third of the stem, so that the finished tile kept successes with a leaf
     whose flower lay past the border (flowers at 0-2 units past it placed by the finished
