@@ -54,8 +54,9 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # the demo's trees (benchmarks/pack_seam_trees.py); synth's 1.001x at +-2s, stones 1.007x
 # (a band of whole texture handed over), stones 0.95x at +-3s; ornament's flowers 0.997x
 # at +-2s, every kind within 4% there (leaves 0.96x; they were 0.54x, buds 1.28x), and
-# willow 1.027x (was 1.26x; stems 0.94x), its later tiles growing on from their
-# finished neighbours' elements (_HANDS_ON, _keep_groups). synth uses its context as a
+# willow 1.037x (10 worlds, tiles 102-138; 1.26x before its later tiles grew on from
+# their finished neighbours' elements, _HANDS_ON, _keep_groups), stems 0.992x, and at
+# +-1s 1.023x, stems 0.985x (1.044x and 0.966x before _at_parent). synth uses its context as a
 # neighbourhood, not only an obstacle; ornament's tiles
 # give one kind name shapes that differ a little, but its elements carry their geometry in
 # ``parts``, so the tiles' libraries are made to agree (_harmonize).
