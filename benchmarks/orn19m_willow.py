@@ -19,6 +19,8 @@ its output).
   holding the centre (``refill`` on the finished side: a later tile's growth; on the
   later side: the finished tile's successes that straddle); the dropped elements'
   density (what the finished tile grew there and cut); stems' mean chord length;
+- the folded profile (worlds_strips.py's grid test: chi-square against flat, the bins
+  within 1 s of a border against the others);
 - the chord of the stems a later tile placed on a finished side within 3 s (the refill)
   against the stems beyond 3 s: mean and share over 20 units.
 
@@ -247,6 +249,21 @@ def analyze(args) -> dict:
             print(f"    {lab:10s} {dens:7.3f} " + " ".join(f"{v:7.3f}" for v in kd) + f"  {oth:6.3f} "
                   + " ".join(f"{v:7.3f}" for v in ok_) + f"  {dr:6.3f} {ch:5.2f}")
         res["profile"] = prof
+        # the grid: centres folded modulo the tile across the borders, pooled over the
+        # worlds (worlds_strips.py's folded profile and its test)
+        sys.path.insert(0, str(HERE.parent / "tests" / "worlds"))
+        sys.path.insert(0, str(HERE))
+        from world_stats import folded_profile
+        from worlds_strips import _pooled_profile
+
+        class _XY:
+            def __init__(self, w):
+                self.x, self.y = w["x"], w["y"]
+
+        fold = _pooled_profile([folded_profile(_XY(w), (w["side"], w["side"]), w["tile"], w["s"]) for w in worlds])
+        res["folded"] = fold
+        print(f"  folded profile: chi2/dof {fold['chi2_dof']:.2f} (p {fold['p']:.2f}), within 1 s of a border "
+              f"{fold['near_ratio']['value']:.3f} [{fold['near_ratio']['ci'][0]:.3f}, {fold['near_ratio']['ci'][1]:.3f}]")
         # the stems a later tile placed on a finished side within 3 s (the refill) against
         # the stems beyond 3 s: chord length, mean and share over 20 units
         ch = {"refill": [], "interior": []}
