@@ -49,7 +49,7 @@ from dataclasses import replace
 import numpy as np
 
 from ._flow_holes import close_ring, open_ring
-from ._flow_net import _delaunay_bonds, _phases, _place, _resolve, relax_network
+from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, relax_network
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
 from ._objects import ELEMENT
@@ -139,14 +139,8 @@ def _centre(g, pts: np.ndarray, skip) -> np.ndarray:
     a, b, c = pts[s[:, 0]], pts[s[:, 1]], pts[s[:, 2]]
     la, lb, lc = (np.hypot(*(u - v).T) for u, v in ((b, c), (c, a), (a, b)))
     ok = np.maximum(np.maximum(la, lb), lc) < 1.4 * L
-    d = 2.0 * (a[:, 0] * (b[:, 1] - c[:, 1]) + b[:, 0] * (c[:, 1] - a[:, 1]) + c[:, 0] * (a[:, 1] - b[:, 1]))
-    ok &= np.abs(d) > 1e-12 * L * L
-    d = np.where(ok, d, 1.0)
-    sa, sb, sc = (a**2).sum(1), (b**2).sum(1), (c**2).sum(1)
-    ux = (sa * (b[:, 1] - c[:, 1]) + sb * (c[:, 1] - a[:, 1]) + sc * (a[:, 1] - b[:, 1])) / d
-    uy = (sa * (c[:, 0] - b[:, 0]) + sb * (a[:, 0] - c[:, 0]) + sc * (b[:, 0] - a[:, 0])) / d
-    cc = np.c_[ux, uy]
-    r = np.hypot(*(cc - a).T)
+    cc, r, ok_d = _circumcentres(a, b, c, L)
+    ok &= ok_d
     ok &= r > float(p.flow_densify_min) * L
     # (the centre inside its triangle: an obtuse one's lies beyond a bond)
     ok &= np.hypot(*(cc - (a + b + c) / 3.0).T) < 0.25 * L

@@ -416,12 +416,21 @@ def _undo_gaps(g, moves: dict, old: dict, level: dict, grid: np.ndarray, far0: n
         if not len(far):
             return
         back = sorted({j for q in far.tolist() for j in g.near(q[0], q[1], reach * L, (ELEMENT,)) if j in level and level[j] != last})
-        if not back:
+        if not _send_back(g, back, moves, old, level):
             return
-        for o in back:
-            level[o] = last
-            _place(g, o, moves, old, level)
-        _resolve(g, moves, old, level, back)
+
+
+def _send_back(g, back: list, moves: dict, old: dict, level: dict) -> bool:
+    """Put the elements ``back`` at their last step's place (level ``len(_STEPS) - 1``)
+    and resolve the overlaps that makes; False where ``back`` is empty."""
+    if not back:
+        return False
+    last = len(_STEPS) - 1
+    for o in back:
+        level[o] = last
+        _place(g, o, moves, old, level)
+    _resolve(g, moves, old, level, back)
+    return True
 
 
 def _six_sites(g, q: np.ndarray, xy: np.ndarray) -> np.ndarray:
@@ -450,12 +459,22 @@ def _undo_worse(g, els: np.ndarray, pts0: np.ndarray, moves: dict, old: dict, le
         if not len(worse):
             return
         back = sorted({j for w in worse.tolist() for j in g.near(now[w, 0], now[w, 1], 1.2 * L, (ELEMENT,)) if j in level and level[j] != last})
-        if not back:
+        if not _send_back(g, back, moves, old, level):
             return
-        for o in back:
-            level[o] = last
-            _place(g, o, moves, old, level)
-        _resolve(g, moves, old, level, back)
+
+
+def _circumcentres(a: np.ndarray, b: np.ndarray, c: np.ndarray, L: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The circumcircles of the triangles with corners ``a``, ``b``, ``c`` (each (m, 2)):
+    centres (m, 2), radii (m,) and (m,) bool, False where a triangle is degenerate (its
+    centre and radius then meaningless); ``L`` the mean edge."""
+    d = 2.0 * (a[:, 0] * (b[:, 1] - c[:, 1]) + b[:, 0] * (c[:, 1] - a[:, 1]) + c[:, 0] * (a[:, 1] - b[:, 1]))
+    ok = np.abs(d) > 1e-12 * L * L
+    d = np.where(ok, d, 1.0)
+    sa, sb, sc = (a**2).sum(1), (b**2).sum(1), (c**2).sum(1)
+    ux = (sa * (b[:, 1] - c[:, 1]) + sb * (c[:, 1] - a[:, 1]) + sc * (a[:, 1] - b[:, 1])) / d
+    uy = (sa * (c[:, 0] - b[:, 0]) + sb * (a[:, 0] - c[:, 0]) + sc * (b[:, 0] - a[:, 0])) / d
+    cc = np.c_[ux, uy]
+    return cc, np.hypot(*(cc - a).T), ok
 
 
 def _far_circles(g, xy: np.ndarray) -> np.ndarray:
@@ -467,14 +486,7 @@ def _far_circles(g, xy: np.ndarray) -> np.ndarray:
     L = g.l
     s = Delaunay(xy).simplices
     a, b, c = xy[s[:, 0]], xy[s[:, 1]], xy[s[:, 2]]
-    d = 2.0 * (a[:, 0] * (b[:, 1] - c[:, 1]) + b[:, 0] * (c[:, 1] - a[:, 1]) + c[:, 0] * (a[:, 1] - b[:, 1]))
-    ok = np.abs(d) > 1e-12 * L * L
-    d = np.where(ok, d, 1.0)
-    sa, sb, sc = (a**2).sum(1), (b**2).sum(1), (c**2).sum(1)
-    ux = (sa * (b[:, 1] - c[:, 1]) + sb * (c[:, 1] - a[:, 1]) + sc * (a[:, 1] - b[:, 1])) / d
-    uy = (sa * (c[:, 0] - b[:, 0]) + sb * (a[:, 0] - c[:, 0]) + sc * (b[:, 0] - a[:, 0])) / d
-    cc = np.c_[ux, uy]
-    r = np.hypot(*(cc - a).T)
+    cc, r, ok = _circumcentres(a, b, c, L)
     cc = cc[ok & (r > 0.74 * L)]
     if g.region is not None and len(cc):
         cc = cc[g.region.contains(cc)]
@@ -501,10 +513,6 @@ def _undo_circles(g, els: np.ndarray, pts0: np.ndarray, moves: dict, old: dict, 
         if k == 3:
             return True
         back = sorted({j for q in now.tolist() for j in g.near(q[0], q[1], 1.5 * L, (ELEMENT,)) if j in level and level[j] != last})
-        if not back:
+        if not _send_back(g, back, moves, old, level):
             return True
-        for o in back:
-            level[o] = last
-            _place(g, o, moves, old, level)
-        _resolve(g, moves, old, level, back)
     return True

@@ -68,7 +68,7 @@ def fill_displaced(state: SynthState, room: int | None = None, since: int = 0) -
     centre once the removable elements it overlaps are removed, while those kinds stay
     at or above their exemplar density. At most ``room`` elements net are added.
     """
-    from ._grow import _greedy_rooms, _ranked_fits, _room_rate, anchors, circumcircles  # (lazy: _grow imports this module)
+    from ._grow import _greedy_rooms, _ranked_fits, _saturated_candidates, circumcircles  # (lazy: _grow imports this module)
 
     prep = state.prep
     if not DISPLACE or state.n < 3 or state.region is None or shape_test_needed(prep) or np.count_nonzero(prep.selected) != 1:
@@ -76,13 +76,8 @@ def fill_displaced(state: SynthState, room: int | None = None, since: int = 0) -
         # not its exemplar's); shrunk collision discs: the shapes' own test would have to
         # leave out what is displaced (no exemplar of the audits has them with sizes)
         return 0
-    sel = prep.selected_elements & ~prep.void
-    rate = _room_rate(prep)
-    tight = np.isfinite(rate[prep.skind])
-    cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
-    cand = np.unique(np.asarray(cand, np.int64))
-    cand = cand[sel[cand] & tight[cand]]
-    cand = cand[(anchors(prep)[cand] == 0) & (prep.parent[cand] < 0)]  # alone: no children to bring, no parent to lean on
+    cand = _saturated_candidates(prep)
+    cand = cand[prep.parent[cand] < 0]  # alone: no children to bring, no parent to lean on
     if len(cand) == 0:
         return 0
     margin = 2.0 * float(prep.rc.max())

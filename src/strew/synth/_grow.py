@@ -395,6 +395,19 @@ def _room_rate(prep) -> np.ndarray:
     return out
 
 
+def _saturated_candidates(prep) -> np.ndarray:
+    """(k,) int64 sorted exemplar elements that may fill room for their kind: selected,
+    visible, interior to their exemplar, of a kind the exemplar leaves saturated
+    (:func:`_room_rate` finite) and no anchor (shared by :func:`fill_room` and
+    ``_displace.fill_displaced``)."""
+    sel = prep.selected_elements & ~prep.void
+    tight = np.isfinite(_room_rate(prep)[prep.skind])
+    cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
+    cand = np.unique(np.asarray(cand, np.int64))
+    cand = cand[sel[cand] & tight[cand]]
+    return cand[anchors(prep)[cand] == 0]
+
+
 def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element of a kind its exemplar leaves (nearly) no room for
     (:func:`_room_rate`) into empty circles of the output where one fits, until the
@@ -433,13 +446,9 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     prep = state.prep
     if not ROOM_FILL or state.n < 3 or state.region is None:
         return 0
-    sel = prep.selected_elements & ~prep.void
     rate = _room_rate(prep)
-    tight = np.isfinite(rate[prep.skind])
-    cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
-    cand = np.unique(np.asarray(cand, np.int64))
-    cand = cand[sel[cand] & tight[cand]]
-    cand = cand[(anchors(prep)[cand] == 0) & (prep.parent[cand] != -3)]
+    cand = _saturated_candidates(prep)
+    cand = cand[prep.parent[cand] != -3]
     if len(cand) == 0:
         return 0
     par = prep.parent[cand]
