@@ -68,7 +68,7 @@ def fill_displaced(state: SynthState, room: int | None = None, since: int = 0) -
     centre once the removable elements it overlaps are removed, while those kinds stay
     at or above their exemplar density. At most ``room`` elements net are added.
     """
-    from ._grow import _greedy_rooms, _ranked_fits, _saturated_candidates, circumcircles  # (lazy: _grow imports this module)
+    from ._grow import _greedy_rooms, _ranked_fits, _room_circles, _saturated_candidates  # (lazy: _grow imports this module)
 
     prep = state.prep
     if not DISPLACE or state.n < 3 or state.region is None or shape_test_needed(prep) or np.count_nonzero(prep.selected) != 1:
@@ -125,14 +125,9 @@ def fill_displaced(state: SynthState, room: int | None = None, since: int = 0) -
     if len(keep_pts) < 3:
         return 0
     need = np.maximum(prep.rc[:, None] + prep.rc[cand][None, :], prep.min_dist[prep.skind[:, None], prep.skind[cand][None, :]]).min(axis=1)
-    cen, rad, tri = circumcircles(state.pos[keep_pts])
-    ok = (rad >= need[state.src[keep_pts[tri]]].max(axis=1)) & (keep_pts[tri] >= since).any(axis=1)
-    ok[ok] = state.in_domain(cen[ok])
-    cen, rad = cen[ok], rad[ok]
+    cen, rad, _ = _room_circles(state, keep_pts, need, since)
     if len(cen) == 0:
         return 0
-    order = np.argsort(-rad, kind="stable")
-    cen, rad = cen[order], rad[order]
     # one site per room (two collision radii apart), as _room_rate counts rooms
     pick = _greedy_rooms(cen, rad, 2.0 * float(prep.rc[cand].min()))
     pick.sort()

@@ -408,6 +408,19 @@ def _saturated_candidates(prep) -> np.ndarray:
     return cand[anchors(prep)[cand] == 0]
 
 
+def _room_circles(state: SynthState, pts: np.ndarray, need: np.ndarray, since: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The empty circles among the output elements ``pts`` (indices) wide enough for
+    an element (radius at least ``need`` of each corner's source) with a corner added
+    since ``since`` and the centre in the domain, largest first: centres (m, 2), radii
+    (m,) and their triangles (m, 3) as indices into ``pts`` (shared by :func:`fill_room`
+    and ``_displace.fill_displaced``)."""
+    cen, rad, tri = circumcircles(state.pos[pts])
+    keep = (pts[tri] >= since).any(axis=1) & (rad >= need[state.src[pts[tri]]].max(axis=1))
+    keep[keep] = state.in_domain(cen[keep])
+    order = np.argsort(-rad[keep], kind="stable")
+    return cen[keep][order], rad[keep][order], tri[keep][order]
+
+
 def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element of a kind its exemplar leaves (nearly) no room for
     (:func:`_room_rate`) into empty circles of the output where one fits, until the
@@ -461,16 +474,11 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     vis = np.flatnonzero(~prep.void[state.src])
     if len(vis) < 3:
         return 0
-    cen, rad, tri = circumcircles(state.pos[vis])
-    keep = (vis[tri] >= since).any(axis=1) & (rad >= need[state.src[vis[tri]]].max(axis=1))
-    keep[keep] = state.in_domain(cen[keep])
-    cen, rad = cen[keep], rad[keep]
+    cen, rad, tri = _room_circles(state, vis, need, since)
     if len(cen) == 0:
         return 0
-    order = np.argsort(-rad, kind="stable")
-    cen, rad = cen[order], rad[order]
     # each kind's budget: the output's rooms for it beyond the exemplar's rate
-    s_tri = state.src[vis[tri[keep][order]]]
+    s_tri = state.src[vis[tri]]
     area = float(state.region.geometry.area)
     budget = np.zeros(len(rate), np.int64)
     some = np.zeros(len(cen), bool)  # circles some kind with a budget fits (a cheap pre-test)
