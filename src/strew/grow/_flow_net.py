@@ -58,7 +58,13 @@ is fitted, which also raised the six share); and after the moves, where a site t
 had six neighbours has lost them, the elements within 1.2 mean edges of it go back
 (so the gains elsewhere are kept), and where an empty circle wider than 0.74 mean
 edges in radius opened (found exactly, as Delaunay circumcircles, rather than on the
-grid), the elements within 1.5 mean edges of it go back. As before, a pass is kept
+grid), the elements within 1.5 mean edges of it go back; then, as in the one-edge pass,
+where a point of the quarter-edge grid is newly farther than 0.75 mean edges from every
+element, those within 1.5 mean edges of it go back too (the acceptance below counts
+the grid's points: on the quarter circles 45 x 45 spacings from the centre the band's
+pass had reached 0.866 but was refused whole for one such point, a circle that was
+already near 0.74 and grew, so 0.810 stayed; with these sent back it is kept, 0.883,
+no hole: ``benchmarks/grow.py --structure --flow-only``). As before, a pass is kept
 only where the six share rises with no new gap and the turn within its limit, so the
 pass cannot lower the six share. Departs from §5.5 as above, with a dead band in
 place of Eq. 5's exact offsets.
@@ -221,6 +227,9 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
             if _undo_circles(g, els, pts0, moves, old, level):
                 undo_moves(g, old)
                 continue
+            # (and the grid's new far points, as the one-edge pass: the acceptance
+            # below counts them, and a circle already near 0.74 that grew is no new circle)
+            _undo_gaps(g, moves, old, level, grid, gaps0, 1.5)
         share1 = _six_share(g)
         gaps1 = _far_points(g, grid)
         turn1 = _misalignment(g)
