@@ -1,49 +1,32 @@
-"""Flow mode: the passes after the growth tried a second way, the better kept
-(issue 14 point 2).
+"""Flow mode: the grower's state kept and put back, and the interior score the flow
+passes compare (issue 14 point 2; :mod:`strew.grow._flow_densify` uses them).
 
-Not in the paper. Where the field's rows fan out from the 90 degree field's corner
-(2,18) (``benchmarks/grow.py --structure --flow-only``) a band of about 15 rows stays
-whole but sheared (:mod:`strew.grow._flow_shear`): fitted back to the hexagonal star
-by Eq. 5 alone it reached 0.732 of the interior with six neighbours (0.581 kept), but
-the fit opens gaps, so :func:`strew.grow._flow_shear.reshape_shear`'s guard undid the
-band whole. Here the grower's whole state is kept (:func:`snapshot`) before the
-passes that follow the last relaxation, and they run twice:
+Not in the paper. :func:`snapshot` keeps the grower's whole state, :func:`restore`
+puts it back exactly (positions, graph, index, the random stream), and
+:func:`interior_score` counts the interior sites (over two mean edges inside the
+region) with six elements at 0.85-1.15 mean edges and none nearer, and the points of
+the interior farther than 0.75 mean edges from every element (the holes' points).
 
-1. as before: :func:`~strew.grow._flow_stretch.insert_stretched`,
-   :func:`~strew.grow._flow_shear.reshape_shear`,
-   :func:`~strew.grow._flow_holes.close_holes`;
-2. from the same state again: the sheared bands fitted first with no gap guard (the
-   shear carried out of the band: its gaps are where the lattice needs the extra
-   half-rows of its dislocations), then ``insert_stretched`` and ``close_holes``,
-   which put elements into the stretched bonds and the gaps; in this try no placed
-   element turns (``flow_hole_turn`` and ``flow_stretch_turn`` 0: with their turns
-   an element of the 90 degree field's lattice left the 12 degrees around the field
-   that ``tests/grow/test_grow_flow_turn.py`` asks).
-
-The second is kept only where it leaves more interior sites (over two mean edges
-inside the region) with six elements at 0.85-1.15 mean edges and none nearer, and no
-more points of the interior farther than 0.75 mean edges from every element (the
-holes' points); else the state after the first is put back exactly (:func:`restore`:
-positions, graph, index, the random stream). Both keep every outline inside the
-region and off the others (each pass does).
-
-Departs from §5.4-5.5 as those passes do (after the growth), and from the paper's
-single pass: the passes' result is compared and one of two kept.
+Until 8224b5f this module also ran the passes after the last relaxation twice
+(``retry_shear``: the second way with the sheared bands fitted first and no gap
+guard, the better kept). Once the band's last network pass
+(:func:`strew.grow._flow_net.relax_network` with ``band``) was on, the retry changed
+one of the twelve flow cases of ``benchmarks/grow.py --structure --flow-only``, the
+90 degree field from the centre, and lowered it (0.904 against 0.921 without), and
+of the seven alternate start points only (28, 18) spacings (0.846 against 0.858,
+whose one hole without the retry the band pass's grid check now sends back): it was
+removed (``benchmarks/flow14n_probe.py``).
 """
 
 from __future__ import annotations
 
 import copy
-from dataclasses import replace
 
 import numpy as np
 
-from ._flow_holes import close_holes
-from ._flow_shear import reshape_shear
-from ._flow_stretch import insert_stretched
 from ._objects import ELEMENT
 
-__all__ = ["retry_shear", "snapshot", "restore", "interior_score"]
+__all__ = ["snapshot", "restore", "interior_score"]
 
 # shared, not copied: read only during the passes (the exemplar's reference, the
 # parameters, the progress reporter)
@@ -117,47 +100,3 @@ def interior_score(g, grid: np.ndarray | None = None) -> tuple[int, int]:
     six = int(((hi == 6) & (lo == 0)).sum())
     far = int((tree.query(grid, distance_upper_bound=0.75 * L)[0] > 0.75 * L).sum()) if len(grid) else 0
     return six, far
-
-
-def _passes(g, target: int, first: bool) -> None:
-    """The passes after the last relaxation; ``first``: the sheared bands fitted
-    first, with no gap guard, and no second fit after the insertions (the second fit
-    of ``first`` raised the twelve flow cases' six-neighbour sum a little more, 10.091
-    against 10.057, both with turns, but the flow speed fell to 0.73-0.92x of a12a5fb's,
-    against 0.82-0.87x: ``python benchmarks/grow.py --against a12a5fb --cases hexflow``)."""
-    p = g.p
-    if first:
-        reshape_shear(g, gap=None)
-        # (and no element turns: with the turns of up to ``flow_hole_turn`` that the
-        # insertions allow, an element of the 90 degree field's lattice left the 12
-        # degrees around the field that tests/grow/test_grow_flow_turn.py asks)
-        g.p = replace(p, flow_hole_turn=0.0, flow_stretch_turn=0.0)
-    try:
-        if len(g.order) < target and p.flow_stretch_min is not None:
-            insert_stretched(g, target)
-        if not first:
-            reshape_shear(g)
-        if len(g.order) < target:
-            close_holes(g, target)
-    finally:
-        g.p = p
-
-
-def retry_shear(g, target: int) -> bool:
-    """The passes after the last relaxation, run both ways (see the module); True when
-    the second was kept."""
-    before = snapshot(g)
-    grid = _region_grid(g)
-    _passes(g, target, first=False)
-    six0, far0 = interior_score(g, grid)
-    # (the first try's state itself is kept aside, not a copy: putting back ``before``
-    # replaces every attribute, and the second try changes only ``before``'s copies,
-    # so the first try's objects stay as they were; one deep copy fewer)
-    kept = dict(vars(g))
-    restore(g, before)
-    _passes(g, target, first=True)
-    six1, far1 = interior_score(g, grid)
-    if six1 > six0 and far1 <= far0:
-        return True
-    restore(g, kept)
-    return False

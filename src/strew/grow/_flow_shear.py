@@ -52,11 +52,10 @@ from ._relax import relax_positions
 __all__ = ["reshape_shear"]
 
 
-def reshape_shear(g, gap: float | None = 0.7) -> int:
+def reshape_shear(g, gap: float = 0.7) -> int:
     """Fit the sheared bands back to the hexagonal star (Eq. 5); how many elements
     moved. ``gap``: a band goes back whole where its moves open a point farther than
-    this many mean edges from every element; None: no such guard (a try of
-    :func:`strew.grow._flow_retry.retry_shear`, whose later passes fill the gaps)."""
+    this many mean edges from every element."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -127,7 +126,7 @@ def fitted_moves(g, els: np.ndarray, pts: np.ndarray, qs) -> tuple[dict[int, tup
     return moves, old
 
 
-def _reshape_band(g, els, fb, src, dst, off, gap: float | None = 0.7) -> int:
+def _reshape_band(g, els, fb, src, dst, off, gap: float = 0.7) -> int:
     """Fit the free elements ``fb`` of ``els`` (Eq. 5 with the terms ``src``, ``dst``,
     ``off``) and move them, all or nothing; how many moved."""
     L = g.l
@@ -144,11 +143,11 @@ def _reshape_band(g, els, fb, src, dst, off, gap: float | None = 0.7) -> int:
         # (the distance only for the points inside: the same points as both tests on all)
         grid = grid[g.region.contains(grid)]
         grid = grid[g.region.distance_to_boundary(grid) > 2.0 * L]
-    before = _far(g, grid, gap * L) if gap is not None else None
+    before = _far(g, grid, gap * L)
     sites = sorted({j for o in moves for j in g.near(*old[o][:2], 1.5 * L, (ELEMENT,))})
     six = _six(g, sites)
     _settle(g, moves, old)
-    if (before is not None and (_far(g, grid, gap * L) & ~before).any()) or _six(g, sites) <= six:
+    if (_far(g, grid, gap * L) & ~before).any() or _six(g, sites) <= six:
         undo_moves(g, old)
         return 0
     return sum(1 for o in moves if g.xy[o] != old[o][:2])
