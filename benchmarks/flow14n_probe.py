@@ -65,7 +65,7 @@ for st in ((15, 15), (2, 28), (28, 2)):
     add(f"A_qc_{st[0]},{st[1]}", ex, Region.rectangle(aa, aa), af, (st[0]*sp, st[1]*sp))
 
 names = [c[0] for c in cases]
-sel = a.only.split(',') if a.only else names[:12]
+sel = a.only.split(';') if a.only else names[:12]
 if a.only == 'alt': sel = [n for n in names if n.startswith('A_')]
 if a.only == 'all': sel = names
 

@@ -6,8 +6,9 @@ network pass on, that retry lowered the hexagonal lattice grown from the centre 
 region 30 x 20 spacings along a field turning 90 degrees (``benchmarks/grow.py
 --structure --flow-only``, "flow turning 90 deg over 30 spacings"): 0.904 of the
 interior elements with six neighbours at the spacing (+-15%), the largest group of
-failing sites 33; run once, 0.921 and 10 (``benchmarks/flow14n_probe.py``), no hole,
-nothing across the edge, no overlap.
+failing sites 33; run once, 0.921 and 10, and with the band's pass repeated while
+it is kept (:data:`strew.grow._flow_net.NET_BAND_PASSES`), 0.938 and 8
+(``benchmarks/flow14n_probe.py``), no hole, nothing across the edge, no overlap.
 """
 
 from __future__ import annotations
@@ -42,5 +43,5 @@ def test_flow_passes_run_once_keep_the_90_degree_lattice(hex_ref):
     assert _holes(out.xy, region) == 0
     six, stretched = _shares(out.xy, region)
     _, largest = _defect_groups(out.xy, region)
-    assert six >= 0.915  # 0.921 here; 0.904 at 8224b5f (with the retry)
-    assert largest <= 20  # 10 here; 33 at 8224b5f
+    assert six >= 0.93  # 0.938 here; 0.921 with three band passes; 0.904 at 8224b5f (with the retry)
+    assert largest <= 20  # 8 here; 33 at 8224b5f
