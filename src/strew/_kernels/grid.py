@@ -406,19 +406,22 @@ class HashGrid:
             ent = np.full((2 * need, 4), -1, dtype=np.int64)
             ent[:e] = self.ent[:e]
             self.ent = ent
-        head, tail = self.head, self.tail
-        mask = len(head) - 1
-        for cx in range(cx0, cx1 + 1):
-            for cy in range(cy0, cy1 + 1):
-                hh = ((cx * HASH_X) ^ (cy * HASH_Y)) & mask
-                ent[e] = (item, cx, cy, -1)
-                t = tail[hh]
-                if t >= 0:
-                    ent[t, 3] = e
-                else:
-                    head[hh] = e
-                tail[hh] = e
-                e += 1
+        if need - e > 1:
+            # (the cells' entries in one compiled call, as the loop below writes them;
+            # ``ext`` already holds the box, so the kernel's widening is a no-op: issue
+            # 14 point 5, the grower lists every new and moved edge here)
+            e = hash_insert_box(h, self.head, self.tail, ent, self.ext, e, item, float(xmin), float(ymin), float(xmax), float(ymax))
+        else:
+            head, tail = self.head, self.tail
+            hh = ((cx0 * HASH_X) ^ (cy0 * HASH_Y)) & (len(head) - 1)
+            ent[e] = (item, cx0, cy0, -1)
+            t = tail[hh]
+            if t >= 0:
+                ent[t, 3] = e
+            else:
+                head[hh] = e
+            tail[hh] = e
+            e += 1
         self.n = e
         if item >= len(self.cur):
             self.reserve(item + 1)

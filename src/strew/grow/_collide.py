@@ -60,6 +60,11 @@ try:
 except ImportError:  # pragma: no cover
     _intersects = shapely.intersects
 try:
+    from shapely.lib import area as _area
+    from shapely.lib import intersection as _intersection
+except ImportError:  # pragma: no cover
+    _area, _intersection = shapely.area, shapely.intersection
+try:
     from shapely.lib import dwithin as _dwithin
 except ImportError:  # pragma: no cover - shapely < 2.1
 
@@ -223,13 +228,15 @@ class _Collide:
             return []
         geom = self.geom[g]
         gs = np.array([self.geom[j] for j in others], dtype=object)
-        hit = np.flatnonzero(shapely.intersects(geom, gs))
+        # (shapely's compiled functions without their Python wrappers: the same calls,
+        # and this runs for every element a relaxation pass moves)
+        hit = np.flatnonzero(_intersects(geom, gs))
         out = []
-        for q in hit:
+        for q in hit.tolist():
             j = others[q]
             if not (self.areal[kind] and self.areal[self.kind[j]]):
                 out.append(j)
-            elif shapely.intersection(geom, gs[q]).area > 1e-9 * max(geom.area, 1e-300):
+            elif _area(_intersection(geom, gs[q])) > 1e-9 * max(geom.area, 1e-300):
                 out.append(j)
         return out
 

@@ -211,7 +211,10 @@ class _Place:
                 carry = -float(np.mean(dd))
                 if abs(carry) > 1e-12:
                     cc, ss = math.cos(carry), math.sin(carry)
-                    rel = np.c_[cc * rel[:, 0] - ss * rel[:, 1], ss * rel[:, 0] + cc * rel[:, 1]]
+                    turned = np.empty_like(rel)  # (np.c_ costs more than the turn)
+                    turned[:, 0] = cc * rel[:, 0] - ss * rel[:, 1]
+                    turned[:, 1] = ss * rel[:, 0] + cc * rel[:, 1]
+                    rel = turned
         err, shift, theta = match_references(
             self.rings,
             rel,
@@ -546,7 +549,9 @@ class _Place:
 
         Returns the offsets in the plane's frame, shape (n_ring, 2).
         """
-        pts = np.vstack([[x, y], ring_pos])
+        pts = np.empty((len(ring_pos) + 1, 2))  # (np.vstack and np.c_ cost more than the turn)
+        pts[0] = (x, y)
+        pts[1:] = ring_pos
         v = np.asarray(self.p.flow(pts), dtype=float)
         a = np.arctan2(v[:, 1], v[:, 0])
         self._flow_at[s] = float(a[0])  # for the frame carried on from s (``choose``)
@@ -554,7 +559,10 @@ class _Place:
         d = d - np.pi * np.round(d / np.pi)  # a line field: +-pi/2 (direction sign free)
         t = math.atan2(sn, c) + self.p.flow_bend * d
         ct, st = np.cos(t), np.sin(t)
-        return np.c_[ct * rel[:, 0] - st * rel[:, 1], st * rel[:, 0] + ct * rel[:, 1]]
+        out = np.empty((len(rel), 2))
+        out[:, 0] = ct * rel[:, 0] - st * rel[:, 1]
+        out[:, 1] = st * rel[:, 0] + ct * rel[:, 1]
+        return out
 
     def _nudge(self, s: int, kind: int, x: float, y: float, rot: float, scale: float) -> tuple[float, float, Any] | None:
         """A place near ``(x, y)`` where the element of seed ``s`` overlaps nothing, or None.

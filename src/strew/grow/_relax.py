@@ -75,38 +75,22 @@ def relax_positions(
     nf = int(free.sum())
     if nf == 0 or len(src) == 0:
         return out
-    col = np.full(len(pos), -1, dtype=np.intp)
-    col[free] = np.arange(nf)
     # Normal equations of the terms r = x_d - x_s - off, assembled directly (a graph
-    # Laplacian over the free points); fixed points move to the right-hand side.
-    fd, fs = free[dst], free[src]
-    cd, cs = col[dst], col[src]
-    both = fd & fs
-    rows = np.concatenate([cd[fd], cs[fs], cd[both], cs[both], np.arange(nf)])
-    cols = np.concatenate([cd[fd], cs[fs], cs[both], cd[both], np.arange(nf)])
-    b = regularization * pos[free]
-    d_only = fd & ~fs
-    s_only = fs & ~fd
-    if weights is None:
-        vals = np.concatenate([np.ones(int(fd.sum()) + int(fs.sum())), -np.ones(2 * int(both.sum())), np.full(nf, regularization)])
-        np.add.at(b, cd[fd], off[fd])
-        np.add.at(b, cd[d_only], pos[src[d_only]])
-        np.add.at(b, cs[fs], -off[fs])
-        np.add.at(b, cs[s_only], pos[dst[s_only]])
-    else:
-        w = np.asarray(weights, dtype=float)
-        vals = np.concatenate([w[fd], w[fs], -w[both], -w[both], np.full(nf, regularization)])
-        wc = w[:, None]
-        np.add.at(b, cd[fd], (wc * off)[fd])
-        np.add.at(b, cd[d_only], (wc * pos[src])[d_only])
-        np.add.at(b, cs[fs], -(wc * off)[fs])
-        np.add.at(b, cs[s_only], (wc * pos[dst])[s_only])
+    # Laplacian over the free points); fixed points move to the right-hand side. One
+    # compiled loop (:mod:`strew.grow._relax_kernels`) sums them in the order the numpy
+    # assembly of 8224b5f did (np.bincount and np.add.at term by term): the same system
+    # to the last bit, some twenty numpy calls fewer per window (issue 14 point 5).
+    from ._relax_kernels import dense_normal_equations, sparse_normal_equations
+
+    args = (np.ascontiguousarray(pos), np.ascontiguousarray(src), np.ascontiguousarray(dst), np.ascontiguousarray(off),
+            np.ones(len(src)) if weights is None else np.ascontiguousarray(weights, dtype=float), np.ascontiguousarray(free), float(regularization))
     if nf <= DENSE_MAX:
         # small windows (the growth's windowed relaxation): a dense solve is far cheaper
         # than assembling a sparse matrix; the system is the same
-        N = np.bincount(rows * nf + cols, weights=vals, minlength=nf * nf).reshape(nf, nf)
+        N, b = dense_normal_equations(*args)
         sol = np.linalg.solve(N, b)
     else:
+        rows, cols, vals, b = sparse_normal_equations(*args)
         sol = spsolve(sp.csc_matrix((vals, (rows, cols)), shape=(nf, nf)), b)
     out[free] = np.asarray(sol).reshape(nf, 2)
     return out
