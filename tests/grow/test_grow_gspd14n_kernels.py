@@ -73,3 +73,23 @@ def test_dense_normal_equations_are_the_numpy_assembly_bit_for_bit():
         # and the minimiser: the same solve of the same system
         assert relax_positions(pos, src, dst, off, free, weights=w).tobytes() == want.tobytes()
     assert dense > 20 and sparse > 20
+
+
+def test_boundary_distance_is_geos_distance_bit_for_bit():
+    import shapely
+
+    from strew import Region
+    from strew.grow._flow_kernels import boundary_distance
+
+    rng = np.random.default_rng(5)
+    holed = shapely.Point(100, 100).buffer(80, 32).difference(shapely.Point(110, 90).buffer(20, 8))
+    regions = [Region.rectangle(30 * 12.3, 20 * 12.3), Region(holed)]
+    for rg in regions:
+        x0, y0, x1, y1 = rg.bounds
+        L = 12.3
+        pts = np.r_[rng.uniform([x0 - 9, y0 - 9], [x1 + 9, y1 + 9], size=(20000, 2)),
+                    # (a quarter-edge grid two edges in: points exactly at the passes' thresholds)
+                    np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T]
+        want = rg.distance_to_boundary(pts)
+        assert boundary_distance(rg, pts).tobytes() == want.tobytes()
+        assert boundary_distance(rg, pts[:0]).shape == (0,)

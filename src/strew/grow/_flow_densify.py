@@ -49,6 +49,7 @@ from dataclasses import replace
 import numpy as np
 
 from ._flow_holes import close_ring, open_ring
+from ._flow_kernels import boundary_distance
 from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, relax_network
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
@@ -112,7 +113,7 @@ def _score(g, grid: np.ndarray | None) -> tuple[float, float, int]:
 
     L = g.l
     xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
-    q = xy[g.region.distance_to_boundary(xy) > 2.0 * L] if g.region is not None else xy
+    q = xy[boundary_distance(g.region, xy) > 2.0 * L] if g.region is not None else xy
     if not len(q):
         return 0.0, 1.0, 0
     tree = cKDTree(xy)
@@ -147,7 +148,7 @@ def _centre(g, pts: np.ndarray, skip) -> np.ndarray:
     w = np.flatnonzero(ok)
     if g.region is not None and len(w):
         w = w[g.region.contains(cc[w])]
-        w = w[g.region.distance_to_boundary(cc[w]) > float(p.flow_stretch_edge) * L]
+        w = w[boundary_distance(g.region, cc[w]) > float(p.flow_stretch_edge) * L]
     if len(skip) and len(w):
         w = w[cKDTree(np.asarray(skip)).query(cc[w])[0] > 0.5 * L]
     if not len(w):
@@ -227,7 +228,7 @@ def _fit(g, pts0: np.ndarray, cs: np.ndarray, held: np.ndarray) -> np.ndarray:
         new = np.c_[solve(np.ascontiguousarray(rhs[:, 0])), solve(np.ascontiguousarray(rhs[:, 1]))]
         new[hh] = pts[hh]
         if rg is not None:
-            bad = ~rg.contains(new) | (rg.distance_to_boundary(new) < 0.5 * L)
+            bad = ~rg.contains(new) | (boundary_distance(rg, new) < 0.5 * L)
             bad[n:] = False
             new[bad] = pts[bad]
         pts = new
@@ -278,7 +279,7 @@ def _ref_phase(g) -> float:
     L = g.l
     ex = np.asarray(g.ref.xy, dtype=float)
     er = getattr(g.ref.exemplar, "region", None)
-    eq = np.flatnonzero(er.distance_to_boundary(ex) > 1.5 * L) if er is not None else np.arange(len(ex))
+    eq = np.flatnonzero(boundary_distance(er, ex) > 1.5 * L) if er is not None else np.arange(len(ex))
     if not len(eq):
         eq = np.arange(len(ex))
     return float(np.angle(np.exp(6j * _phases(ex, eq, 1.15 * L)).sum()) / 6)

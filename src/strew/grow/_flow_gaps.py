@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from .._kernels.geometry import circumcircles
+from ._flow_kernels import boundary_distance
 from ._objects import ELEMENT
 
 __all__ = ["close_gaps", "fill_holes", "side_stream"]
@@ -105,7 +106,7 @@ def reference_gap(g) -> float:
             a, b, c = (ex.xy[tri.simplices[:, q]] for q in range(3))
             cen, r, _ = circumcircles(a, b, c)
             if ex.region is not None:
-                inner = ex.region.distance_to_boundary(cen) > 1.5 * g.l
+                inner = boundary_distance(ex.region, cen) > 1.5 * g.l
                 inner &= ex.region.contains(cen)
             else:
                 inner = np.ones(len(r), dtype=bool)

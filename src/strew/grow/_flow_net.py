@@ -80,6 +80,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._flow_kernels import boundary_distance
 from ._flow_shear import fitted_moves, undo_moves
 from ._objects import ELEMENT
 
@@ -197,7 +198,7 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
         new = np.c_[solve(np.ascontiguousarray(rhs[:, 0])), solve(np.ascontiguousarray(rhs[:, 1]))]
         new[held] = pts[held]
         if rg is not None:
-            bad = ~rg.contains(new) | (rg.distance_to_boundary(new) < 0.5 * L)
+            bad = ~rg.contains(new) | (boundary_distance(rg, new) < 0.5 * L)
             new[bad] = pts[bad]
         pts = new
     share0 = _six_share(g)
@@ -333,7 +334,7 @@ def _six_share(g, xy: np.ndarray | None = None) -> float:
     L = g.l
     if xy is None:
         xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
-    q = xy[g.region.distance_to_boundary(xy) > 2.0 * L] if g.region is not None else xy
+    q = xy[boundary_distance(g.region, xy) > 2.0 * L] if g.region is not None else xy
     if not len(q):
         return 0.0
     tree = cKDTree(xy)
@@ -368,10 +369,10 @@ def _misalignment(g, xy: np.ndarray | None = None) -> float:
     L = g.l
     if xy is None:
         xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
-    q = np.flatnonzero(g.region.distance_to_boundary(xy) > 2.0 * L) if g.region is not None else np.arange(len(xy))
+    q = np.flatnonzero(boundary_distance(g.region, xy) > 2.0 * L) if g.region is not None else np.arange(len(xy))
     ex = np.asarray(g.ref.xy, dtype=float)
     er = getattr(g.ref.exemplar, "region", None)
-    eq = np.flatnonzero(er.distance_to_boundary(ex) > 1.5 * L) if er is not None else np.arange(len(ex))
+    eq = np.flatnonzero(boundary_distance(er, ex) > 1.5 * L) if er is not None else np.arange(len(ex))
     if not len(q) or not len(eq):
         return 0.0
     phi0 = float(np.angle(np.exp(6j * _phases(ex, eq, 1.15 * L)).sum()) / 6)
@@ -399,7 +400,7 @@ def _grid(g) -> np.ndarray:
     if rg is not None and len(grid):
         # (the distance only for the points inside: the same points as both tests on all)
         grid = grid[rg.contains(grid)]
-        grid = grid[rg.distance_to_boundary(grid) > 2.0 * L - 1e-9 * L]
+        grid = grid[boundary_distance(rg, grid) > 2.0 * L - 1e-9 * L]
     if rg is not None:
         g.flow_net_grid = grid
     return grid
@@ -467,7 +468,7 @@ def _undo_worse(g, els: np.ndarray, pts0: np.ndarray, moves: dict, old: dict, le
     up to three times."""
     L = g.l
     last = len(_STEPS) - 1
-    inner = g.region.distance_to_boundary(pts0) > 2.0 * L if g.region is not None else np.ones(len(pts0), dtype=bool)
+    inner = boundary_distance(g.region, pts0) > 2.0 * L if g.region is not None else np.ones(len(pts0), dtype=bool)
     ok0 = _six_sites(g, inner, pts0)
     for _ in range(3):
         now = g.pos[els]
@@ -506,7 +507,7 @@ def _far_circles(g, xy: np.ndarray) -> np.ndarray:
     cc = cc[ok & (r > 0.74 * L)]
     if g.region is not None and len(cc):
         cc = cc[g.region.contains(cc)]
-        cc = cc[g.region.distance_to_boundary(cc) > 1.5 * L]
+        cc = cc[boundary_distance(g.region, cc) > 1.5 * L]
     return cc
 
 

@@ -24,6 +24,7 @@ import copy
 
 import numpy as np
 
+from ._flow_kernels import boundary_distance
 from ._objects import ELEMENT
 
 __all__ = ["snapshot", "restore", "interior_score"]
@@ -69,7 +70,7 @@ def _region_grid(g) -> np.ndarray | None:
     if len(grid):
         # (the distance only for the points inside: the same points as both tests on all)
         grid = grid[rg.contains(grid)]
-        grid = grid[rg.distance_to_boundary(grid) > 2.0 * L]
+        grid = grid[boundary_distance(rg, grid) > 2.0 * L]
     return grid
 
 
@@ -88,7 +89,7 @@ def interior_score(g, grid: np.ndarray | None = None) -> tuple[int, int]:
     tree = cKDTree(xy)
     rg = g.region
     if rg is not None:
-        q = xy[rg.distance_to_boundary(xy) > 2.0 * L]
+        q = xy[boundary_distance(rg, xy) > 2.0 * L]
         if grid is None:
             grid = _region_grid(g)
     else:

@@ -46,6 +46,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._flow_gaps import _bonds
+from ._flow_kernels import boundary_distance
 from ._objects import ELEMENT
 from ._relax import relax_positions
 
@@ -78,7 +79,7 @@ def reshape_shear(g, gap: float = 0.7) -> int:
     free = cKDTree(pts[hot]).query(pts)[0] < p.flow_shear_window * L
     free &= ~np.asarray([bool(g.fixed[o]) for o in els.tolist()], dtype=bool)
     if g.region is not None:
-        free &= g.region.distance_to_boundary(pts) > 1.0 * L
+        free &= boundary_distance(g.region, pts) > 1.0 * L
     # each element's star, and each bond's term: one mean edge along the star's
     # direction nearest the bond's
     th = np.arctan2(d[:, 1], d[:, 0])
@@ -142,7 +143,7 @@ def _reshape_band(g, els, fb, src, dst, off, gap: float = 0.7) -> int:
         # (a gap within two edges of the region's edge is the edge's, see close_holes)
         # (the distance only for the points inside: the same points as both tests on all)
         grid = grid[g.region.contains(grid)]
-        grid = grid[g.region.distance_to_boundary(grid) > 2.0 * L]
+        grid = grid[boundary_distance(g.region, grid) > 2.0 * L]
     before = _far(g, grid, gap * L)
     sites = sorted({j for o in moves for j in g.near(*old[o][:2], 1.5 * L, (ELEMENT,))})
     six = _six(g, sites)

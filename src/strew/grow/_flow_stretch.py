@@ -37,6 +37,7 @@ import numpy as np
 
 from ._flow_gaps import _bonds
 from ._flow_holes import _fill
+from ._flow_kernels import boundary_distance
 from ._objects import ELEMENT
 
 __all__ = ["insert_stretched"]
@@ -57,7 +58,7 @@ def insert_stretched(g, limit: int | None = None) -> int:
     if g.region is not None and len(sel):
         # (a bond along the region's edge has no lattice beyond it to take the stretch)
         mid = 0.5 * (pts[e[sel, 0]] + pts[e[sel, 1]])
-        sel = sel[g.region.distance_to_boundary(mid) > p.flow_stretch_edge * L]
+        sel = sel[boundary_distance(g.region, mid) > p.flow_stretch_edge * L]
     sel = sel[np.argsort(-ln[sel], kind="stable")]
     made = failed = 0
     done: list[tuple[float, float]] = []
