@@ -48,6 +48,9 @@ CASES: dict[str, list[str]] = {
     "grow": ["grow", "{ex}/exemplars/scales.svg", "--count", "40", "--seed", "1"],
     "grow rotate": ["grow", "{ex}/exemplars/stones.svg", "--count", "30", "--mode", "rotate", "--seed", "1"],
     "grow flow": ["grow", "{ex}/grow/scales_hex.json", "--flow", "{ex}/grow/flow_strokes.json", "--count", "30", "--seed", "1"],
+    # flow mode filling a region: the passes after the growth (the relaxation's sparse
+    # system, the distances to the region's edge: strew.grow._relax_kernels, _flow_kernels)
+    "grow flow region": ["grow", "{ex}/grow/scales_hex.json", "--flow", "{ex}/grow/flow_strokes.json", "--size", "160x120", "--seed", "1"],
     "grow boundary": ["grow", "{ex}/grow/stones_irregular.json", "--boundary", "{ex}/grow/boundary_stroke.json", "--count", "30", "--seed", "1"],
     "grow spray": ["grow", "{ex}/exemplars/scales.svg", "--spray", "{ex}/grow/spray_path.json", "--spray-radius", "40", "--count", "30", "--seed", "1"],
     "grow periodic": ["grow", "{ex}/exemplars/scales.svg", "--size", "80x80", "--periodic", "--count", "40", "--seed", "1"],
