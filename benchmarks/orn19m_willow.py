@@ -94,7 +94,16 @@ def make(args) -> None:
             halo = float(arr.meta["world"]["halo"])
             tcol = np.asarray(arr["tile"])
             grp = np.asarray(arr["ornament_group"], np.int64)
+        gr = np.full(len(arr), np.nan)
+        if "ornament_goal" in arr.columns:  # each row's empty circle radius (its success's $goal)
+            gr = np.array([v[2] if v is not None else np.nan for v in arr["ornament_goal"]], float)
         cpu = time.process_time() - t0
+        ovl = -1
+        if args.overlaps:  # pairs of elements that overlap (worlds_strips.py's test)
+            sys.path.insert(0, str(HERE.parent / "tests" / "worlds"))
+            from world_stats import overlapping_pairs
+
+            ovl = int(overlapping_pairs(arr))
         kinds = list(arr.kinds)
         dx = np.concatenate([d[1] for d in dropped]) if dropped else np.zeros(0)
         dy = np.concatenate([d[2] for d in dropped]) if dropped else np.zeros(0)
@@ -103,10 +112,10 @@ def make(args) -> None:
         path = RES / f"orn19m_{args.tag}_T{tile:g}.npz"
         np.savez_compressed(
             path, x=np.asarray(arr.x, float), y=np.asarray(arr.y, float), kind=np.asarray(arr.kind), kinds=np.array(kinds),
-            tile=tcol, group=grp, chord=_chord(arr), dx=dx, dy=dy, dkind=np.array([kinds.index(k) if k in kinds else -1 for k in dk]),
-            dtile=dt, meta=np.array([side, tile, halo, cpu]),
+            tile=tcol, group=grp, chord=_chord(arr), goal_r=gr, dx=dx, dy=dy, dkind=np.array([kinds.index(k) if k in kinds else -1 for k in dk]),
+            dtile=dt, meta=np.array([side, tile, halo, cpu]), overlaps=ovl,
         )
-        print(f"{args.tag} T {tile:g}: {len(arr):,} el, {len(dx):,} dropped, {cpu:.1f} CPU s -> {path.name}", flush=True)
+        print(f"{args.tag} T {tile:g}: {len(arr):,} el, {len(dx):,} dropped, {cpu:.1f} CPU s, overlaps {ovl} -> {path.name}", flush=True)
 
 
 def _sd(x, y, side, tile):
@@ -294,6 +303,7 @@ def main() -> None:
     m.add_argument("--pattern", default="willow")
     m.add_argument("--untiled", action="store_true")
     m.add_argument("--set", action="append", default=[])
+    m.add_argument("--overlaps", action="store_true", help="count overlapping pairs (worlds_strips.py's test; -1 without)")
     a = sub.add_parser("analyze")
     a.add_argument("tags", nargs="+")
     a.add_argument("--boot", type=int, default=1000)

@@ -54,9 +54,10 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # the demo's trees (benchmarks/pack_seam_trees.py); synth's 1.001x at +-2s, stones 1.007x
 # (a band of whole texture handed over), stones 0.95x at +-3s; ornament's flowers 0.997x
 # at +-2s, every kind within 4% there (leaves 0.96x; they were 0.54x, buds 1.28x), and
-# willow 1.037x (10 worlds, tiles 102-138; 1.26x before its later tiles grew on from
-# their finished neighbours' elements, _HANDS_ON, _keep_groups), stems 0.992x, and at
-# +-1s 1.023x, stems 0.985x (1.044x and 0.966x before _at_parent). synth uses its context as a
+# willow 0.981x (10 worlds, tiles 102-138; 1.26x before its later tiles grew on from
+# their finished neighbours' elements, _HANDS_ON, _keep_groups; 1.037x before they refilled
+# the dropped room at its scale, _ornament_holes), stems 1.014x, and at +-1s 0.991x, stems
+# 1.006x (1.044x and 0.966x before _at_parent). synth uses its context as a
 # neighbourhood, not only an obstacle; ornament's tiles
 # give one kind name shapes that differ a little, but its elements carry their geometry in
 # ``parts``, so the tiles' libraries are made to agree (_harmonize).
@@ -302,6 +303,10 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     context = concat(_harmonize(parts)) if parts else None
     # one element diameter, at most the halo (how far the tile's region reaches past it)
     band = min(2.0 * _input_extent(job), job.halo) if job.method in _GROWS_FROM_CONTEXT else 0.0
+    if context is not None and job.method in _KEEPS_GROUPS:
+        # ornament: the circles its finished neighbours' dropped successes grew into on
+        # their side; the later tile refills them at that scale (_ornament_holes)
+        context = context.with_meta(ornament_holes=_holes_in(neighbours, links, "ornament_holes"))
     if context is not None and job.method in _GROWS_FROM_CONTEXT:
         region = _outside_finished(region, t, job, links, band)
         context = context.with_meta(synth_holes=_synth_holes_in(neighbours, links))
@@ -325,6 +330,8 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
         meta["holes"] = _hole_discs(arr, (later | keep) & ~ramp).tolist()  # a list: meta compares with ==
         keep = (keep | later) & ramp
     keep = _keep_groups(arr, keep, t, job, links)
+    if job.method in _KEEPS_GROUPS and len(arr):
+        meta["ornament_holes"] = _ornament_holes(arr, keep, job, t.rect)
     arr = _own_parts(arr.select(keep))
     return arr.replace(meta=meta, region=None)
 
@@ -392,6 +399,42 @@ def _synth_holes_out(arr: Any, keep: np.ndarray, rect: tuple[float, float, float
     drop = ~keep & (r >= _SYNTH_HOLES_LARGE * float(r.max())) & _within(arr, rect, _SYNTH_HOLES_REACH * band)
     names = np.asarray(arr.kinds, dtype=object)[np.asarray(arr.kind, np.int64)]
     return [[float(arr.x[i]), float(arr.y[i]), float(r[i]), str(names[i])] for i in np.flatnonzero(drop)]
+
+
+def _holes_in(neighbours: tuple[Any, ...], links: Mapping[int, list[tuple[float, float]]], key: str) -> list[list[float]]:
+    """The finished neighbours' ``meta[key]`` circles ``[x, y, r]``, moved next to the tile across the wrap."""
+    return [[x + dx, y + dy, r] for n, shifts in zip(neighbours, links.values())
+            for dx, dy in shifts for x, y, r in n.meta.get(key, ())]
+
+
+def _ornament_holes(arr: Any, keep: np.ndarray, job: _Job, rect: tuple[float, float, float, float]) -> list[list[float]]:
+    """ornament: the empty circles ``[x, y, r]``, centred in ``rect`` (the tile's own),
+    that the rule successes it drops and places at their parent (_at_parent: willow's)
+    grew into (see _handed_over in strew.ornament._engine).
+
+    A later tile raises the scale of a circle it grows into to the largest of these that
+    holds its centre. Only those centred on this tile's side: with all the dropped
+    successes' circles (those past the border too, grown into the empty halo of this
+    tile's region) the later tile's own room grew at their scale as well, and the strips
+    thinned (tile 100, seed 1: +-2 s density 0.919x, the later side's bins 0.73-0.98x).
+    Only successes placed at their parent: flowers' successes, each with a stem that
+    parents no rule, hand nothing over, and their worlds stay as they were.
+    """
+    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, parent_rows
+
+    col = _KEEPS_GROUPS[job.method]
+    if GOAL_COLUMN not in arr.columns or PROXIES_COLUMN not in arr.columns or keep.all():
+        return []
+    _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
+    rows = ~keep & (_at_parent(arr, inv, parent_rows(job.input, arr[PROXIES_COLUMN])) >= 0)[inv]
+    if not rows.any():
+        return []
+    g = np.array([tuple(v) if v is not None else (np.nan,) * 3 for v in np.asarray(arr[GOAL_COLUMN], dtype=object)[rows]], float).reshape(-1, 3)
+    g = np.unique(g[np.isfinite(g).all(axis=1)], axis=0)
+    x0, y0, x1, y1 = rect
+    # only those on the tile's own side: a later tile grows its own room at its own scale
+    g = g[(g[:, 0] >= x0) & (g[:, 0] < x1) & (g[:, 1] >= y0) & (g[:, 1] < y1)]
+    return g.tolist()
 
 
 def _synth_holes_in(neighbours: tuple[Any, ...], links: Mapping[int, list[tuple[float, float]]]) -> list[list[Any]]:

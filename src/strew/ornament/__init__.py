@@ -249,6 +249,7 @@ def grow_ornament(
             periodic=prm["periodic"],
             _thin_boundary=thin,  # the context's thin footprints (issue 19.4)
             _context=parents,
+            _holes=ctx.meta.get("ornament_holes") if _tiled and ctx is not None else None,  # strew.tiles._ornament_holes
         )
         if _tiled:
             from ._render import render_ornament

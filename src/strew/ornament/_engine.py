@@ -349,6 +349,7 @@ class _Grower:
         periodic: tuple[float, float, float, float] | None = None,
         thin_boundary: bool = False,
         context: list[Element] | None = None,
+        holes: np.ndarray | None = None,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -488,6 +489,9 @@ class _Grower:
         # first, as elements, so that they stop circles and parent growth as the tile's own
         # elements do; not drawn, not counted
         self.n_context = len(context or ())
+        # a tiled world's handed-over room (issue 19.4, strew.ornament._context.HOLES_KEY):
+        # the empty circles (x, y, r) of the successes a finished neighbour grew and dropped
+        self.holes = _holes_in(holes, region.bounds)
         if context:
             phases = [el.phase for el in context]
             self._commit(None, list(context))
@@ -837,6 +841,7 @@ class _Grower:
                 continue
             self.stats["iterations"] += 1
             goal = Goal(c, rho)
+            scaled = goal if self.holes is None else _handed_over(goal, self.holes)
             delta = self.delta if self.delta is not None else max(2 * h, 0.1 * rho)
             owners = self.placed.owner[idx]
             order: dict[int, float] = {}
@@ -846,7 +851,7 @@ class _Grower:
                     order[o] = dd
                     shift[o] = (float(self.placed.ox[k]), float(self.placed.oy[k]))
             cand = sorted(order, key=lambda o: (order[o], o))
-            success = self._try(goal, cand, shift)
+            success = self._try(scaled, cand, shift, circle=goal)
             if success:
                 self.stats["successes"] += 1
                 eps = self.epsilon if self.epsilon is not None else 2 * rho
@@ -862,7 +867,11 @@ class _Grower:
         self.stats["largest_circle_raster"] = largest
         self.stats["phase"] = self.state.phase
 
-    def _try(self, goal: Goal, candidates: list[int], shift: dict[int, tuple[float, float]] | None = None) -> bool:
+    def _try(self, goal: Goal, candidates: list[int], shift: dict[int, tuple[float, float]] | None = None,
+             circle: Goal | None = None) -> bool:
+        """Try the rules of ``candidates`` on ``goal`` (the rule's $goal); ``circle`` is the
+        empty circle grown into (``goal`` itself unless a hand-over scaled it, _handed_over)."""
+        circle = goal if circle is None else circle
         types = self.pattern.types
         for o in candidates:
             parent = self.elements[o]
@@ -901,10 +910,46 @@ class _Grower:
                     # the empty circle C it grew into, in the panel's frame: a tiled world
                     # hands over a finished tile's border by it (issue 19.4,
                     # strew.ornament._context.GOAL_COLUMN)
-                    ch.goal_circle = (float(goal.center[0]), float(goal.center[1]), float(goal.radius))  # type: ignore[attr-defined]
+                    ch.goal_circle = (float(circle.center[0]), float(circle.center[1]), float(circle.radius))  # type: ignore[attr-defined]
                 if new:
                     return True
         return False
+
+
+def _holes_in(holes: np.ndarray | None, bounds: tuple[float, float, float, float]) -> np.ndarray | None:
+    """The handed-over circles ``(m, 3)`` that reach into ``bounds``, or None for none."""
+    if holes is None or not len(holes):
+        return None
+    h = np.asarray(holes, float).reshape(-1, 3)
+    x0, y0, x1, y1 = bounds
+    ok = (h[:, 0] + h[:, 2] > x0) & (h[:, 0] - h[:, 2] < x1) & (h[:, 1] + h[:, 2] > y0) & (h[:, 1] - h[:, 2] < y1)
+    return h[ok] if ok.any() else None
+
+
+def _handed_over(goal: Goal, holes: np.ndarray) -> Goal:
+    """``goal`` at the scale a finished neighbour grew at there: its radius raised to the
+    largest handed-over circle (``holes``) that holds its centre (the first such circle
+    the neighbour grew into, §4.1 taking the largest first).
+
+    Why (issue 19.4, willow): a later tile refills the room its finished neighbour
+    dropped (strew.tiles._keep_groups) between the elements that neighbour kept, and
+    Wong et al. scale a rule's elements to the empty circle it grows into (§5: the
+    pattern "simplifies as it wanders into narrower spaces"). The refill's circles were
+    narrower than the interior's (radius 0.85 s on average against 1.35 s; 0.7 % of
+    them over 3 s against 9.2 %), its stems as long as the interior's in circles of the
+    same size (1.08 s against 1.09 s under 0.6 s) but shorter on the whole (1.66 s
+    against 2.07 s), and the finished side of the +-2 s strips denser than the interior
+    (seed 1, tiles 100, 112, 124; benchmarks/orn19m_willow.py). Departure from §5: the
+    rule sees the circle the finished tile had grown into there, not the narrower one
+    the cut left; it grows fewer, larger elements into it, as the one run would have.
+    The empty circle itself is still the one recorded (GOAL_COLUMN) and tried.
+    """
+    c = goal.center
+    inside = np.hypot(holes[:, 0] - c[0], holes[:, 1] - c[1]) < holes[:, 2]
+    if not inside.any():
+        return goal
+    r = float(holes[inside, 2].max())
+    return Goal(c, r) if r > goal.radius else goal
 
 
 def grow_elements(
@@ -923,6 +968,7 @@ def grow_elements(
     periodic: bool = False,
     _thin_boundary: bool = False,
     _context: list[Element] | None = None,
+    _holes: Sequence[Sequence[float]] | None = None,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
@@ -973,7 +1019,7 @@ def grow_elements(
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile,
-                thin_boundary=_thin_boundary, context=_context)
+                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else np.asarray(_holes, float))
     g.run()
     rep.done(len(g.elements) - g.n_seeds - g.n_context)
     stats = dict(g.stats)
