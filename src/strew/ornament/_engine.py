@@ -851,7 +851,8 @@ class _Grower:
                     order[o] = dd
                     shift[o] = (float(self.placed.ox[k]), float(self.placed.oy[k]))
             cand = sorted(order, key=lambda o: (order[o], o))
-            success = self._try(scaled, cand, shift, circle=goal)
+            # (a goal no hand-over scaled: _try's call as it always was)
+            success = self._try(goal, cand, shift) if scaled is goal else self._try(scaled, cand, shift, circle=goal)
             if success:
                 self.stats["successes"] += 1
                 eps = self.epsilon if self.epsilon is not None else 2 * rho
