@@ -6,8 +6,9 @@
 world (the control; the same lines are measured where no border exists). It saves to
 ``benchmarks/results/orn19m_<tag>_T<T>.npz`` per element x, y, kind, the tile that placed
 it, its rule success (``ornament_group``, numbered per tile) and, for a stem, its chord
-length; and every element a tile grew and dropped (the cut: ``_keep_groups``' input less
-its output).
+length, and the radius of the empty circle its rule success grew into (``goal_r``); and
+every element a tile grew and dropped (the cut: ``_keep_groups``' input less its output).
+``--overlaps`` counts each world's overlapping pairs as worlds_strips.py does.
 
 ``analyze TAG [TAG ...]`` pools the worlds of each tag and prints:
 
