@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The whole test suite on a fresh machine: installs strew with its test extras, Debian's
-# chromium for the browser tests when it is missing (needs root and apt), then runs pytest.
+# chromium for the browser tests when it is missing (needs root and apt), then runs pytest on every core (pytest-xdist).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 python -m pip install --quiet '.[test]'
@@ -13,4 +13,8 @@ if ! command -v chromium >/dev/null 2>&1; then
         echo "chromium is missing and cannot be installed here (needs root and apt)" >&2
     fi
 fi
-python -m pytest "$@"
+# one worker per core this process may use; whole files go to a worker (--dist loadfile),
+# so a module's fixtures (the gallery, the tiled worlds) are built once. Later options win:
+# `bash scripts/test.sh -n 0` runs in this process.
+workers=$(python -c "import os; print(max(1, len(os.sched_getaffinity(0))))")
+python -m pytest -n "$workers" --dist loadfile "$@"

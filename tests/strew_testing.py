@@ -7,6 +7,8 @@ Not ``from conftest import ...``: a second ``conftest.py`` in a test folder (suc
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from hypothesis import strategies as st
 
@@ -63,10 +65,16 @@ def fidelity_suite():
     return sys.modules[name]
 
 
+@functools.cache
 def synth_at_50x(name: str, seed: int):
     """Synth on the fidelity suite's exemplar ``name`` over a canvas of 50x its area
     (issue 13 point 2): ``(exemplar, output, region, fidelity report)``, the report
-    without Eq. 5 (its local map is what the 50x tests read)."""
+    without Eq. 5 (its local map is what the 50x tests read).
+
+    Cached for the test process: several modules read the same draws (three_sizes seeds
+    2, 3 and 8), and each draw takes several seconds. Callers only read the result, and
+    none of them runs under a monkeypatch, so the cached draw is the one a fresh call
+    would give."""
     from strew import Region
     from strew.metrics import fidelity
     from strew.synth import synthesize

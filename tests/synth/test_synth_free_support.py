@@ -13,7 +13,7 @@ from strew.metrics import fidelity
 from strew.synth import new_state, synthesize
 import strew.synth._prepare as P
 
-from strew_testing import fidelity_suite
+from strew_testing import fidelity_suite, synth_at_50x
 
 suite = fidelity_suite()
 
@@ -84,13 +84,9 @@ def test_three_sizes_at_50x_has_few_failing_windows():
     local fidelity map's failing windows (patches poor in medium or large stones) average
     under 7 %. With the yield window at 2 iterations they were 9.5 / 6.5 / 9.5 % (mean
     8.5 %), at 3 they are 5.3 / 6.5 / 3.0 %; none is yet free of them."""
-    ex = suite.make_exemplar("three_sizes")
-    x0, y0, x1, y1 = ex.region.bounds
-    region = Region.rectangle(7.07 * (x1 - x0), 7.07 * (y1 - y0))
     shares = []
     for seed in (1, 2, 3):
-        out = synthesize(ex, region, rng=seed, measure=False)
-        rep = fidelity(ex, out, region, eq5=False)
+        rep = synth_at_50x("three_sizes", seed)[3]
         assert rep.faithful, rep.failures
         score = np.asarray(rep.local["score"], float)
         score = score[np.isfinite(score)]
