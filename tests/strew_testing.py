@@ -107,3 +107,35 @@ def crosses_strictly(p, q, a, b) -> bool:
     d1, d2 = side(a, b, p), side(a, b, q)
     d3, d4 = side(p, q, a), side(p, q, b)
     return ((d1 > 0 > d2) or (d1 < 0 < d2)) and ((d3 > 0 > d4) or (d3 < 0 < d4))
+
+
+class TileRows:
+    """What strew.tiles' ornament hand-over (``_keep_groups``, ``_ornament_holes``) reads
+    of a tile's rows (``run_tile``'s ``arr``): columns by name, ``x``, ``y`` and a length."""
+
+    def __init__(self, cols: dict):
+        self._c = {k: np.asarray(v) if k not in ("ornament_proxies", "ornament_goal") else v for k, v in cols.items()}
+        self.x = np.asarray(cols["x"], float)
+        self.y = np.asarray(cols["y"], float)
+
+    @property
+    def columns(self):
+        return self._c
+
+    def __len__(self):
+        return len(self.x)
+
+    def __getitem__(self, name):
+        return self._c[name]
+
+
+def willow_stem(pat, a, b):
+    """A willow ``stem`` element of pattern ``pat`` from point ``a`` to ``b`` (2,), its
+    Bezier proxy straight, at depth 0."""
+    from strew.ornament._pattern import Element
+
+    el = Element(pat.types["stem"])
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    el.proxy.set_points(a, a + (b - a) / 3, a + 2 * (b - a) / 3, b)
+    el.depth = 0
+    return el

@@ -17,34 +17,9 @@ import pytest
 
 import strew.tiles as T
 from strew.ornament._context import element_record
-from strew.ornament._pattern import Element, load_pattern
+from strew.ornament._pattern import load_pattern
 
-
-class _Rows:
-    """What _keep_groups reads of a tile's rows (strew.tiles.run_tile's ``arr``)."""
-
-    def __init__(self, cols: dict):
-        self._c = {k: np.asarray(v) if k not in ("ornament_proxies", "ornament_goal") else v for k, v in cols.items()}
-        self.x = np.asarray(cols["x"], float)
-        self.y = np.asarray(cols["y"], float)
-
-    @property
-    def columns(self):
-        return self._c
-
-    def __len__(self):
-        return len(self.x)
-
-    def __getitem__(self, name):
-        return self._c[name]
-
-
-def _stem(pat, a, b):
-    el = Element(pat.types["stem"])
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    el.proxy.set_points(a, a + (b - a) / 3, a + 2 * (b - a) / 3, b)
-    el.depth = 0
-    return el
+from strew_testing import TileRows, willow_stem
 
 
 def _world_rows():
@@ -56,12 +31,12 @@ def _world_rows():
     segs = [((60.0, 50.0), (90.0, 50.0)), ((95.0, 50.0), (125.0, 50.0)), ((120.0, 55.0), (70.0, 70.0))]
     recs = np.empty(3, dtype=object)
     for i, (a, b) in enumerate(segs):
-        recs[i] = (element_record(_stem(pat, a, b), pat),)
+        recs[i] = (element_record(willow_stem(pat, a, b), pat),)
     goal = np.empty(3, dtype=object)
     goal[:] = [(math.nan, math.nan, math.nan)] * 3
     cx = [0.5 * (a[0] + b[0]) for a, b in segs]
     cy = [0.5 * (a[1] + b[1]) for a, b in segs]
-    rows = _Rows({"x": cx, "y": cy, "ornament_group": [1, 2, 3], "element": [1, 2, 3], "parent": [0, 1, 2],
+    rows = TileRows({"x": cx, "y": cy, "ornament_group": [1, 2, 3], "element": [1, 2, 3], "parent": [0, 1, 2],
                   "phase": [""] * 3, "ornament_proxies": recs, "ornament_goal": goal})
     tiles, nx, ny = T.plan((200.0, 200.0), 100.0)
     job = T._Job("ornament", "willow", {}, (200.0, 200.0), 25.0, 1, (100.0, 100.0), (nx, ny))

@@ -19,7 +19,9 @@ import strew
 import strew.tiles as T
 from strew.ornament._context import element_record
 from strew.ornament._engine import Goal, grow_elements
-from strew.ornament._pattern import Element, load_pattern
+from strew.ornament._pattern import load_pattern
+
+from strew_testing import TileRows, willow_stem
 
 
 def test_goal_takes_the_largest_handed_over_circle_that_holds_it():
@@ -56,42 +58,15 @@ def test_willow_grows_fewer_longer_stems_in_handed_over_room():
         [tuple(np.round(e.proxy.points.ravel(), 12)) for e in plain.elements if e.type == "stem"]
 
 
-class _Rows:
-    """What _keep_groups and _ornament_holes read of a tile's rows (strew.tiles.run_tile's ``arr``)."""
-
-    def __init__(self, cols: dict):
-        self._c = {k: np.asarray(v) if k not in ("ornament_proxies", "ornament_goal") else v for k, v in cols.items()}
-        self.x = np.asarray(cols["x"], float)
-        self.y = np.asarray(cols["y"], float)
-
-    @property
-    def columns(self):
-        return self._c
-
-    def __len__(self):
-        return len(self.x)
-
-    def __getitem__(self, name):
-        return self._c[name]
-
-
-def _stem(pat, a, b):
-    el = Element(pat.types["stem"])
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    el.proxy.set_points(a, a + (b - a) / 3, a + 2 * (b - a) / 3, b)
-    el.depth = 0
-    return el
-
-
 def test_finished_tile_hands_over_the_circles_of_what_it_drops():
     pat = load_pattern("willow")
     segs = [((60.0, 50.0), (90.0, 50.0)), ((95.0, 50.0), (125.0, 50.0)), ((120.0, 55.0), (70.0, 70.0))]
     recs = np.empty(3, dtype=object)
     for i, (a, b) in enumerate(segs):
-        recs[i] = (element_record(_stem(pat, a, b), pat),)
+        recs[i] = (element_record(willow_stem(pat, a, b), pat),)
     goal = np.empty(3, dtype=object)
     goal[:] = [(75.0, 50.0, 9.0), (110.0, 50.0, 8.0), (95.0, 62.0, 7.0)]
-    rows = _Rows({"x": [75.0, 110.0, 95.0], "y": [50.0, 50.0, 62.5], "ornament_group": [1, 2, 3], "element": [1, 2, 3],
+    rows = TileRows({"x": [75.0, 110.0, 95.0], "y": [50.0, 50.0, 62.5], "ornament_group": [1, 2, 3], "element": [1, 2, 3],
                   "parent": [0, 1, 2], "phase": [""] * 3, "ornament_proxies": recs, "ornament_goal": goal})
     tiles, nx, ny = T.plan((200.0, 200.0), 100.0)
     job = T._Job("ornament", "willow", {}, (200.0, 200.0), 25.0, 1, (100.0, 100.0), (nx, ny))
