@@ -15,6 +15,8 @@ if ! command -v chromium >/dev/null 2>&1; then
 fi
 # one worker per core this process may use; whole files go to a worker (--dist loadfile),
 # so a module's fixtures (the gallery, the tiled worlds) are built once. Later options win:
-# `bash scripts/test.sh -n 0` runs in this process.
+# `bash scripts/test.sh -n 0` runs in this process. pytest-benchmark, where a machine has
+# it, turns itself off under xdist with a warning that the suite's filterwarnings=error
+# makes fatal; strew's benchmarks are scripts (benchmarks/), so the plugin is not loaded.
 workers=$(python -c "import os; print(max(1, len(os.sched_getaffinity(0))))")
-python -m pytest -n "$workers" --dist loadfile "$@"
+python -m pytest -n "$workers" --dist loadfile -p no:benchmark "$@"
