@@ -139,3 +139,15 @@ def willow_stem(pat, a, b):
     el.proxy.set_points(a, a + (b - a) / 3, a + 2 * (b - a) / 3, b)
     el.depth = 0
     return el
+
+
+def willow_stem_records(pat, segs):
+    """The ``ornament_proxies`` column of a tile's rows: one row a willow stem of ``pat``
+    per segment ``((ax, ay), (bx, by))`` of ``segs`` (n,), each row's tuple of element
+    records; object array (n,)."""
+    from strew.ornament._context import element_record
+
+    recs = np.empty(len(segs), dtype=object)
+    for i, (a, b) in enumerate(segs):
+        recs[i] = (element_record(willow_stem(pat, a, b), pat),)
+    return recs

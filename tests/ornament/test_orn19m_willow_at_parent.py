@@ -16,10 +16,9 @@ import numpy as np
 import pytest
 
 import strew.tiles as T
-from strew.ornament._context import element_record
 from strew.ornament._pattern import load_pattern
 
-from strew_testing import TileRows, willow_stem
+from strew_testing import TileRows, willow_stem_records
 
 
 def _world_rows():
@@ -29,9 +28,7 @@ def _world_rows():
     (its centre at x = 95)."""
     pat = load_pattern("willow")
     segs = [((60.0, 50.0), (90.0, 50.0)), ((95.0, 50.0), (125.0, 50.0)), ((120.0, 55.0), (70.0, 70.0))]
-    recs = np.empty(3, dtype=object)
-    for i, (a, b) in enumerate(segs):
-        recs[i] = (element_record(willow_stem(pat, a, b), pat),)
+    recs = willow_stem_records(pat, segs)
     goal = np.empty(3, dtype=object)
     goal[:] = [(math.nan, math.nan, math.nan)] * 3
     cx = [0.5 * (a[0] + b[0]) for a, b in segs]

@@ -17,11 +17,10 @@ import numpy as np
 
 import strew
 import strew.tiles as T
-from strew.ornament._context import element_record
 from strew.ornament._engine import Goal, grow_elements
 from strew.ornament._pattern import load_pattern
 
-from strew_testing import TileRows, willow_stem
+from strew_testing import TileRows, willow_stem_records
 
 
 def test_goal_takes_the_largest_handed_over_circle_that_holds_it():
@@ -61,9 +60,7 @@ def test_willow_grows_fewer_longer_stems_in_handed_over_room():
 def test_finished_tile_hands_over_the_circles_of_what_it_drops():
     pat = load_pattern("willow")
     segs = [((60.0, 50.0), (90.0, 50.0)), ((95.0, 50.0), (125.0, 50.0)), ((120.0, 55.0), (70.0, 70.0))]
-    recs = np.empty(3, dtype=object)
-    for i, (a, b) in enumerate(segs):
-        recs[i] = (element_record(willow_stem(pat, a, b), pat),)
+    recs = willow_stem_records(pat, segs)
     goal = np.empty(3, dtype=object)
     goal[:] = [(75.0, 50.0, 9.0), (110.0, 50.0, 8.0), (95.0, 62.0, 7.0)]
     rows = TileRows({"x": [75.0, 110.0, 95.0], "y": [50.0, 50.0, 62.5], "ornament_group": [1, 2, 3], "element": [1, 2, 3],
