@@ -10,7 +10,8 @@ allows a peak difference of 0.67. Printed, for variant seeds 7 and 8:
 * the same generator drawn larger (8 x 8 hubs, the variant seed) and cropped by centres
   to frames of the exemplar's size at other offsets (in lattice periods), as
   ``svar13i_phase.py`` for rings p2: the ring peak of each frame, and its mean and spread
-  over 24 random offsets (what a stationary result's peak should meet);
+  over 24 random offsets (what a stationary result's peak should meet), and how many of
+  those 24 frames each result passes (g[tile,hub]; whole verdict);
 * synth at 3.5x (seeds 1-3): its ring peak, the metric against the make.py frame and
   against each offset frame, ring structure (whole rings, tiles off their hub's ring),
   hub-hub nearest-neighbour median, tiles per lattice cell in the interior;
@@ -209,13 +210,14 @@ def main() -> None:
         print(f"  ring peak, make.py frame vs offset frames: {frame_peaks}")
         # the frame's phase drawn at random (rng 13, 24 offsets in [0, 1) x [0, 1) periods): the
         # spread of the exemplar-sized frame's ring peak, which a stationary result should meet on average
-        rp = []
+        rp, rframes = [], []
         for fx, fy in np.random.default_rng(13).uniform(0, 1, (24, 2)):
             x0r, y0r = sp + fx * sp, 2 * hh + fy * hh
             f = big.select(
                 (big.x >= x0r) & (big.x < x0r + w) & (big.y >= y0r) & (big.y < y0r + h)
             )
             f = f.replace(x=f.x - x0r, y=f.y - y0r, region=Region.rectangle(w, h))
+            rframes.append(f)
             rp.append(peak(fidelity(f, f, eq5=False, local=False), "g_exemplar"))
         rp = np.array(rp)
         ex_peak = peak(fidelity(ex, ex, eq5=False, local=False), "g_exemplar")
@@ -229,6 +231,12 @@ def main() -> None:
         }
         print(f"  ring peak over 24 random phases: {random_phase}")
         for lab, out, dt in results:
+            # the result judged against each random-phase frame: g[tile,hub] and the whole verdict
+            rg = rf_ok = 0
+            for f in rframes:
+                rr = fidelity(f, out, eq5=False, local=False)
+                rg += int(rr.metrics["g[tile,hub]"].passed)
+                rf_ok += int(rr.faithful)
             rep = fidelity(ex, out, eq5=False, local=False)
             m = rep.metrics["g[tile,hub]"]
             vs = {}
@@ -256,11 +264,13 @@ def main() -> None:
                 "exemplar_rings": exr,
                 "frame_peaks": frame_peaks,
                 "random_phase_peaks": random_phase,
+                "random_frames_g_passed": rg,
+                "random_frames_faithful": rf_ok,
             }
             out_rows.append(row)
             print(
                 f"  {lab:16s} n={len(out)} peak {row['peak_result']:.2f} (exemplar {row['peak_exemplar']:.2f}) g[tile,hub]={m.value:.3f}/{m.tolerance:.3f}"
-                f" offset frames passed {row['offset_frames_passed']}/{len(vs)} {vs}",
+                f" offset frames passed {row['offset_frames_passed']}/{len(vs)}; random frames g passed {rg}/{len(rframes)}, faithful {rf_ok}/{len(rframes)}",
                 flush=True,
             )
             print(f"      {row['rings']}")
