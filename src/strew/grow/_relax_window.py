@@ -95,6 +95,10 @@ class _RelaxWindow:
         moved = []
         new_geom: dict[int, Any] = {}
         in_domain = self.in_domain
+        # (in_domain's test of a rectangular region in the plane, inlined: this loop runs
+        # for every element of every window)
+        box = self.region_box if self.tile is None else None
+        bx0, by0, bx1, by1 = box if box is not None else (0.0, 0.0, 0.0, 0.0)
         check_boundary = self.boundary is not None
         state = self.state
         for g in win:
@@ -103,7 +107,12 @@ class _RelaxWindow:
             if abs(nx - ox) + abs(ny - oy) <= tiny:
                 continue
             # relaxation never takes a centre out of the region or across a boundary stroke
-            if not in_domain(nx, ny) or (check_boundary and self.crosses_boundary((ox, oy), (nx, ny))):
+            if box is not None:
+                if not (bx0 < nx < bx1 and by0 < ny < by1):
+                    continue
+            elif not in_domain(nx, ny):
+                continue
+            if check_boundary and self.crosses_boundary((ox, oy), (nx, ny)):
                 continue
             # nor an element's centre out of the spray area (§5.1: elements grow within it)
             if self.spray_area is not None and state[g] == ELEMENT and not shapely.contains_xy(self.spray_area, nx, ny):
@@ -154,6 +163,10 @@ class _RelaxWindow:
                 back.add(g)
                 back.update(self.orig_of[h] for h in hits if self.orig_of[h] in old)
             back = {g for g in back if self.xy[g] != old[g][:2]}
+            if not back:
+                # (nothing went back: the check list below would be empty, and the loop
+                # ends; building it cost a walk over every moved element's ring)
+                break
             for g in back:
                 self._move(g, old[g][0], old[g][1])
                 self.geom[g] = old[g][2]
@@ -161,7 +174,5 @@ class _RelaxWindow:
                     self._sync(g)
             oo = self.orig_of
             check = [g for g in moved if self.state[g] == ELEMENT and g not in back and any(oo[h] in back for h in self.adj[g])] + sorted(back)
-            if not back:
-                break
 
     # -- main loop --------------------------------------------------------------------------
