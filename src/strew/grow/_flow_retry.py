@@ -20,12 +20,11 @@ removed (``benchmarks/flow14n_probe.py``).
 
 from __future__ import annotations
 
-import copy
-
 import numpy as np
 
 from ._flow_kernels import boundary_distance
 from ._objects import ELEMENT
+from ._state_copy import deep_copy_state
 
 __all__ = ["snapshot", "restore", "interior_score"]
 
@@ -48,7 +47,7 @@ def snapshot(g) -> dict:
     memo[id(d["adj"])] = [set(a) for a in d["adj"]]
     memo[id(d["edges"])] = set(d["edges"])
     memo[id(d["target"])] = [None if t is None else dict(t) for t in d["target"]]
-    return copy.deepcopy(dict(d), memo)
+    return deep_copy_state(d, memo)  # (copy.deepcopy(dict(d), memo), the plain containers copied in one call each)
 
 
 def restore(g, snap: dict) -> None:
