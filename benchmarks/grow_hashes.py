@@ -6,7 +6,9 @@ positions (``xy`` as float64) and the WKB of its shapes. Cases (first argument):
 ``hexflow`` -- the hexagonal lattice in flow mode along a field turning 90 degrees, in
 regions 20, 30 and 45 spacings wide (two thirds as high), relaxation on and off;
 ``structure`` -- the 12 flow cases of ``benchmarks/grow.py --structure --flow-only``;
-``alternates`` -- its 7 alternate start points; ``all`` -- all of them.
+``alternates`` -- its 7 alternate start points; ``modes`` -- rotation mode, a repeat tile,
+the spray, a boundary stroke, two and three sizes and bricks with a priority, smaller,
+relaxation on and off; ``all`` -- all of them.
 
 Run: ``PYTHONPATH=src python benchmarks/grow_hashes.py fixed a.json`` on two trees and
 compare the two JSON files (the structure cases' tables also print; the CPU time goes to
@@ -76,6 +78,31 @@ def main() -> None:
                     flow=field,
                 )
                 rows[f"hexflow {W} relax {relax}"] = [len(out), digest(out)]
+    if which in ("modes", "all"):
+        # the other modes and tools, smaller: rotation mode, a repeat tile, two and three
+        # sizes, bricks with a priority, the spray tool, a boundary stroke
+        from grow import _suite_exemplar
+
+        hexr, stones = analyze(hex_exemplar()), analyze(stone_exemplar())
+        sp = hexr.mean_edge
+        cases = [
+            ("rotate stones 600", stones, dict(count=600, mode="rotate")),
+            ("rotate hex 600", hexr, dict(count=600, mode="rotate")),
+            ("periodic hex", hexr, dict(region=Region.rectangle(10 * sp, 4 * np.sqrt(3) * sp), periodic=True)),
+            ("periodic stones", stones, dict(region=Region.rectangle(12 * sp, 12 * sp), periodic=True)),
+            ("spray stones", stones, dict(spray=np.c_[np.linspace(0, 40 * sp, 20), 5 * sp * np.sin(np.linspace(0, 3, 20))], spray_radius=4 * sp)),
+            ("boundary hex", hexr, dict(region=Region.rectangle(24 * sp, 16 * sp), boundary=[np.c_[np.linspace(2, 22, 9) * sp, np.linspace(2, 6, 9) * sp]])),
+        ]
+        for name in ("two_sizes", "three_sizes", "bricks"):
+            ex = _suite_exemplar(name)
+            if ex is not None:
+                x0, y0, x1, y1 = ex.region.bounds
+                prio = {"brick_red": 1, "brick_ochre": 0} if name == "bricks" else None
+                cases.append((f"{name}", ex, dict(region=Region.rectangle(2.5 * (x1 - x0), 2.5 * (y1 - y0)), priority=prio)))
+        for label, ref, kw in cases:
+            for relax in (True, False):
+                out = orig(ref, rng=2, relax=relax, **kw)
+                rows[f"{label} relax {relax}"] = [len(out), digest(out)]
     for case in ("structure", "alternates"):
         if which not in (case, "all"):
             continue
