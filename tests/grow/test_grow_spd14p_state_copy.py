@@ -111,6 +111,13 @@ def test_snapshot_is_the_deep_copy_it_replaces(monkeypatch):
     g = got[-1]
     old, new = _deepcopy_snapshot(g), snapshot(g)
     _same(old, new, {})
+    # and deep_copy_state on its own: copy.deepcopy's copy of the whole state
+    from strew.grow._state_copy import deep_copy_state
+
+    def shared_memo():
+        return {id(vars(g)[k]): vars(g)[k] for k in _SHARED if k in vars(g)} | {id(g): g}
+
+    _same(copy.deepcopy(dict(vars(g)), shared_memo()), deep_copy_state(vars(g), shared_memo()), {})
     # nothing mutable in the copy is the grower's (but the shared reference, parameters
     # and reporter, and the grower itself)
     shared = {id(vars(g)[k]) for k in _SHARED if k in vars(g)} | {id(g)}
