@@ -5,6 +5,11 @@ exemplar's, and (``--oracle``) the same figures for the exemplar's own generator
 the output's size (counts x scale^2).
 
     PYTHONPATH=src python benchmarks/grw14p_diag.py three_sizes:1:7,three_sizes:9:7 --seeds 1,2 [--oracle]
+    PYTHONPATH=src python benchmarks/grw14p_diag.py scan   # exemplars with two kinds of one size level among several
+
+``scan`` lists the audits' exemplars (fidelity suite, ``--varied`` at variant seeds 1-3,
+``--harder``) where two different kinds share a size level while there are several
+levels: the only ones whose fixed-mode growth the outline-gap rule of grw14p changes.
 """
 
 from __future__ import annotations
@@ -57,6 +62,29 @@ def report(lab, ex, out, near=0.6):
     return rep
 
 
+def scan(mk) -> None:
+    import _variants
+
+    from strew.grow._analysis import size_priority
+
+    def affected(ex) -> bool:
+        lv = [size_priority(ex).get(k, 0.0) for k in ex.kinds]
+        return max(lv) > min(lv) and any(lv[i] == lv[j] for i in range(len(lv)) for j in range(i + 1, len(lv)))
+
+    hit = []
+    for name in mk.NAMES:
+        if affected(mk.make_exemplar(name)):
+            hit.append(f"suite {name}")
+        for lab, _, v, kw in _variants.cases(name, [1, 2, 3], True):
+            if affected(mk.make_exemplar(name, rng=v, **kw)):
+                hit.append(f"varied {name} {lab}")
+        for i, kw in enumerate(HARDER.get(name, [])):
+            for v in (7, 8):
+                if affected(mk.make_exemplar(name, rng=v, **kw)):
+                    hit.append(f"harder {name} h{i}s{v}")
+    print("exemplars with two kinds of one size level among several:", hit)
+
+
 def main() -> None:
     p = argparse.ArgumentParser()
     p.add_argument("cases", help="name:index:variant,...")
@@ -65,6 +93,9 @@ def main() -> None:
     p.add_argument("--oracle", action="store_true")
     a = p.parse_args()
     mk = _harder_suite()
+    if a.cases == "scan":
+        scan(mk)
+        return
     for spec in a.cases.split(","):
         name, i, v = spec.split(":")
         i, v = int(i), int(v)
