@@ -109,7 +109,7 @@ def main() -> None:
             if a.oracle and name == "three_sizes":
                 okw = dict(kw)
                 okw["size"] = a.scale * kw.get("size", 210.0)
-                okw["counts"] = tuple(int(round(c * a.scale**2)) for c in kw.get("counts", (170, 65, 26)))
+                okw["counts"] = tuple(round(c * a.scale**2) for c in kw.get("counts", (170, 65, 26)))
                 orc = mk.make_exemplar(name, rng=1000 + seed, **okw)
                 report(f"  oracle h{i}s{v} draw {1000 + seed}", ex, orc)
 

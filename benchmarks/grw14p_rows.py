@@ -3,12 +3,15 @@
     PYTHONPATH=src python benchmarks/grw14p_rows.py 10:7,10:8,11:7 1-6
 """
 import sys
+
 sys.path.insert(0, __import__("os").path.dirname(__import__("os").path.abspath(__file__)))
 from grow_variants import HARDER, _harder_suite
+
+import strew
 from strew import Region
 from strew.grow import grow
 from strew.metrics import fidelity
-import strew
+
 mk = _harder_suite()
 a, _, b = sys.argv[2].partition("-")
 seeds = range(int(a), int(b) + 1)
