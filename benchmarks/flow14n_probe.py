@@ -84,7 +84,8 @@ if a.stages:
             return r
         setattr(G, name, f)
     for nm in ('retry_shear', 'insert_stretched', 'reshape_shear', 'close_holes', 'relax_network', 'densify'):
-        wrap(nm)
+        if hasattr(G, nm):
+            wrap(nm)
 
 res = {}
 tot = 0
