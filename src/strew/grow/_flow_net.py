@@ -212,6 +212,7 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
     if not moves:
         return 0
     limit = None if p.flow_net_turn is None else turn0 + float(p.flow_net_turn)
+    best = None
     for first in range(int(p.flow_net_steps)):
         # the whole fit first, then (where it is not kept) each move shortened; a step
         # is not made where its fitted positions alone (before the outlines' checks,
@@ -235,6 +236,7 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
             # (and the grid's new far points, as the one-edge pass: the acceptance
             # below counts them, and a circle already near 0.74 that grew is no new circle)
             _undo_gaps(g, moves, old, level, grid, gaps0, 1.5)
+        turned = False
         if limit is not None and band is not None:
             # (the band's pass: where the lattice turned past the limit, the elements
             # around the sites it turned from the field go back, so the pass is not
@@ -242,13 +244,22 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
             # 0.887 -> 0.903, its last pass had turned the lattice 17.521 degrees
             # against a limit of 17.517; departs from §5.5 as the module does, and
             # keeps §5.3's frame as the whole-pass limit did)
-            _undo_turn(g, els, pts0, moves, old, level, limit)
+            turned = _undo_turn(g, els, pts0, moves, old, level, limit)
         share1 = _six_share(g)
         gaps1 = _far_points(g, grid)
         turn1 = _misalignment(g)
         if share1 > share0 and len(gaps1) <= len(gaps0) and (limit is None or turn1 <= limit):
-            return sum(1 for o in moves if g.xy[o] != old[o][:2])
+            if not turned and best is None:
+                return sum(1 for o in moves if g.xy[o] != old[o][:2])
+            # (a step kept only by sending elements back for the turn is weighed
+            # against the shorter step, as the whole-pass limit would have tried it:
+            # the better is kept)
+            if best is None or share1 > best[0]:
+                best = (share1, {o: (*g.xy[o], g.geom[o], float(g.rot[o])) for o in moves})
         undo_moves(g, old)
+    if best is not None:
+        undo_moves(g, best[1])
+        return sum(1 for o in moves if g.xy[o] != old[o][:2])
     return 0
 
 
@@ -503,25 +514,28 @@ def _undo_worse(g, els: np.ndarray, pts0: np.ndarray, moves: dict, old: dict, le
             return
 
 
-def _undo_turn(g, els: np.ndarray, pts0: np.ndarray, moves: dict, old: dict, level: dict, limit: float) -> None:
+def _undo_turn(g, els: np.ndarray, pts0: np.ndarray, moves: dict, old: dict, level: dict, limit: float) -> bool:
     """While the lattice's turn from the field (:func:`_misalignment`) is over ``limit``,
     the elements within 1.2 mean edges of each interior site whose turn the moves
     raised and left over ``limit`` go back (and those then overlapping them step
     back), up to four times: the pass is then refused for its turn only where sending
-    these back is not enough (see :func:`_relax_once`)."""
+    these back is not enough (see :func:`_relax_once`); True where any went back."""
     L = g.l
     last = len(_STEPS) - 1
     a0 = _turns(g, pts0)
+    sent = False
     for _ in range(4):
         now = g.pos[els]
         a1 = _turns(g, now)
         ok = np.isfinite(a1)
         if not ok.any() or float(np.quantile(a1[ok], 0.9)) <= limit:
-            return
+            return sent
         worse = np.flatnonzero(ok & (a1 > limit) & (a1 > a0))
         back = sorted({j for w in worse.tolist() for j in g.near(now[w, 0], now[w, 1], 1.2 * L, (ELEMENT,)) if j in level and level[j] != last})
         if not _send_back(g, back, moves, old, level):
-            return
+            return sent
+        sent = True
+    return sent
 
 
 def _circumcentres(a: np.ndarray, b: np.ndarray, c: np.ndarray, L: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
