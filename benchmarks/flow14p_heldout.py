@@ -1,6 +1,7 @@
 """flow14p: held-out flow cases (issue 14 point 2), not tuned on: the hexagonal lattice
 grown along the two-quarter-circle field over squares of 16, 20 and 24 spacings,
-from the centre and from each corner (2 spacings in); the interior six-neighbour
+from the centre and from each corner (2 spacings in) (``--scales``: the scales
+exemplar instead); the interior six-neighbour
 share (``benchmarks/grow.py``'s ``six_nbr_share``), holes and CPU s per case.
 
     PYTHONPATH=src python benchmarks/flow14p_heldout.py [--json F]
@@ -25,9 +26,16 @@ from strew.grow import grow  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--json", default="")
+ap.add_argument("--scales", action="store_true", help="the scales exemplar (its spacing: the median distance to six nearest)")
 a = ap.parse_args()
-ex = gb._suite_exemplar("hex_lattice", nx=8, ny=8)
-sp = 12.0
+if a.scales:
+    from scipy.spatial import cKDTree
+
+    ex = gb._suite_exemplar("scales")
+    sp = float(np.median(cKDTree(ex.xy).query(ex.xy, 7)[0][:, 1:]))
+else:
+    ex = gb._suite_exemplar("hex_lattice", nx=8, ny=8)
+    sp = 12.0
 th = np.linspace(0, np.pi / 2, 30)
 res = {}
 for n in (16, 20, 24):

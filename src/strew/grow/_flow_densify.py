@@ -50,7 +50,7 @@ import numpy as np
 
 from ._flow_holes import close_ring, open_ring
 from ._flow_kernels import boundary_distance
-from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, relax_network
+from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, relax_network, six_spacing
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
 from ._objects import ELEMENT
@@ -103,7 +103,7 @@ def densify(g, target: int) -> int:
 
 def _score(g, grid: np.ndarray | None) -> tuple[float, float, int]:
     """(the share of the interior sites, over two mean edges inside the region, with six
-    elements at 0.85-1.15 mean edges and none nearer; the share of the interior sites
+    elements at 0.85-1.15 spacings (``_flow_net.six_spacing``) and none nearer; the share of the interior sites
     failing it that lie in groups, linked within 1.15 mean edges, of at most two: the
     isolated dislocations, 1 where none fails; the gap points of
     :func:`strew.grow._flow_retry.interior_score`), as ``benchmarks/grow.py`` measures
@@ -117,8 +117,9 @@ def _score(g, grid: np.ndarray | None) -> tuple[float, float, int]:
     if not len(q):
         return 0.0, 1.0, 0
     tree = cKDTree(xy)
-    hi = np.asarray(tree.query_ball_point(q, 1.15 * L, return_length=True), dtype=int) - 1
-    lo = np.asarray(tree.query_ball_point(q, 0.85 * L, return_length=True), dtype=int) - 1
+    S = six_spacing(g)
+    hi = np.asarray(tree.query_ball_point(q, 1.15 * S, return_length=True), dtype=int) - 1
+    lo = np.asarray(tree.query_ball_point(q, 0.85 * S, return_length=True), dtype=int) - 1
     ok = (hi == 6) & (lo == 0)
     bad = q[~ok]
     iso = 1.0

@@ -75,7 +75,7 @@ def _region_grid(g) -> np.ndarray | None:
 
 def interior_score(g, grid: np.ndarray | None = None) -> tuple[int, int]:
     """(sites over two mean edges inside the region with six elements at 0.85-1.15
-    mean edges and none nearer, points of a quarter-edge grid there farther than 0.75
+    spacings (``_flow_net.six_spacing``) and none nearer, points of a quarter-edge grid there farther than 0.75
     mean edges from every element); ``grid``: :func:`_region_grid`'s, made once for
     two scores of one region."""
     from scipy.spatial import cKDTree
@@ -95,8 +95,11 @@ def interior_score(g, grid: np.ndarray | None = None) -> tuple[int, int]:
         q = xy
         (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
         grid = np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T
-    hi = np.asarray(tree.query_ball_point(q, 1.15 * L, return_length=True), dtype=int) - 1
-    lo = np.asarray(tree.query_ball_point(q, 0.85 * L, return_length=True), dtype=int) - 1
+    from ._flow_net import six_spacing
+
+    S = six_spacing(g)
+    hi = np.asarray(tree.query_ball_point(q, 1.15 * S, return_length=True), dtype=int) - 1
+    lo = np.asarray(tree.query_ball_point(q, 0.85 * S, return_length=True), dtype=int) - 1
     six = int(((hi == 6) & (lo == 0)).sum())
     far = int((tree.query(grid, distance_upper_bound=0.75 * L)[0] > 0.75 * L).sum()) if len(grid) else 0
     return six, far
