@@ -70,8 +70,10 @@ pass cannot lower the six share. Where the band's pass turns the lattice past
 ``flow_net_turn``, the elements around the sites it turned from the field (over the
 limit, more than before) go back too, so the pass is refused for its turn only where
 that is not enough (:func:`_undo_turn`; the one-edge pass keeps the whole-pass limit:
-there the same lowered the corner (2, 18) 0.828 -> 0.805). Departs from §5.5 as
-above, with a dead band in place of Eq. 5's exact offsets.
+there the same lowered the corner (2, 18) 0.828 -> 0.805). The band's passes run
+twice from the same positions, the second time clearing overlaps one element of a
+pair at a time, and the run with the larger six share is kept (:func:`_band_passes`).
+Departs from §5.5 as above, with a dead band in place of Eq. 5's exact offsets.
 
 Only for exemplars whose interior elements nearly all have six bonds of nearly one
 length (a square lattice's diagonals are no bonds of one mean edge).
