@@ -570,7 +570,6 @@ def _six_sites(g, q: np.ndarray, xy: np.ndarray) -> np.ndarray:
     at 0.85-1.15 spacings (:func:`six_spacing`) and none nearer, (n,) bool."""
     from scipy.spatial import cKDTree
 
-    L = g.l
     tree = cKDTree(xy)
     S = six_spacing(g)
     hi = np.asarray(tree.query_ball_point(xy, 1.15 * S, return_length=True), dtype=int) - 1
