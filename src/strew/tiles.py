@@ -418,7 +418,8 @@ def _ornament_holes(arr: Any, keep: np.ndarray, job: _Job, rect: tuple[float, fl
     tile's region) the later tile's own room grew at their scale as well, and the strips
     thinned (tile 100, seed 1: +-2 s density 0.919x, the later side's bins 0.73-0.98x).
     Only successes placed at their parent: flowers' successes, each with a stem that
-    parents no rule, hand nothing over, and their worlds stay as they were.
+    parents no rule, hand nothing over, and their worlds stay as they were. Nor spirals
+    (a success drawn as one row of several elements; see below).
     """
     from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, parent_rows
 
@@ -427,6 +428,13 @@ def _ornament_holes(arr: Any, keep: np.ndarray, job: _Job, rect: tuple[float, fl
         return []
     _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
     rows = ~keep & (_at_parent(arr, inv, parent_rows(job.input, arr[PROXIES_COLUMN])) >= 0)[inv]
+    # nor a success drawn as one row of several elements (Pattern.group: a spiral, its
+    # arms): it fills its circle about the circle's centre (0.8 of its radius), and a
+    # refill raised to the dropped circle about its own, other centre rarely fits and
+    # fails. Placed at their parent (PARENT_COLUMN), spirals handing over: tile 100, seed
+    # 1, +-1 s density 0.915x, +-2 s 0.928x; handing nothing over 0.997x, 0.957x (1.023x,
+    # 1.046x before; benchmarks/spi19p_parents.py, orn19m_willow.py analyze)
+    rows &= np.array([len(r) == 1 for r in arr[PROXIES_COLUMN]], bool)
     if not rows.any():
         return []
     g = np.array([tuple(v) if v is not None else (np.nan,) * 3 for v in np.asarray(arr[GOAL_COLUMN], dtype=object)[rows]], float).reshape(-1, 3)
@@ -569,7 +577,7 @@ def _harmonize(arrs: list[Any]) -> list[Any]:
 # on from its finished neighbours' elements as parents (Wong et al. §4.1: one run grows
 # the whole panel) instead of meeting them as the panel's edge (strew.ornament._context)
 _HANDS_ON: dict[str, tuple[dict[str, Any], tuple[str, ...]]] = {
-    "ornament": ({"_tiled": True}, ("ornament_proxies", "ornament_group", "ornament_goal")),
+    "ornament": ({"_tiled": True}, ("ornament_proxies", "ornament_group", "ornament_goal", "ornament_parent")),
 }
 
 # methods whose elements come in groups kept or dropped whole, by the mean of the group's
@@ -616,7 +624,8 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     if later and band > 0:
         # the later phases' elements (flowers' buds) near a later tile are left to it
         placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
-    kept = keep_whole(arr["element"], arr["parent"], arr[col], placed)
+    parent = _parent_rows(arr)
+    kept = keep_whole(arr["element"], parent, arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
         # the successes whose empty circle an element dropped here had bounded are left to
         # the later tile too (_CUT_ROUNDS rounds: more rounds hand over more, and the
@@ -628,14 +637,14 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
             if not more.any():
                 break
             trial = placed & ~np.isin(inv, inv[more])  # whole successes
-            k2 = keep_whole(arr["element"], arr["parent"], arr[col], trial)
+            k2 = keep_whole(arr["element"], parent, arr[col], trial)
             if not (d[kept & ~k2] < reach).all():
                 # one by one, leaving those whose descendants reach past the later tile's
                 # reach (a hole no tile refills)
                 trial, k2 = placed, kept
                 for g in np.unique(inv[more]):
                     t2 = trial & (inv != g)
-                    k3 = keep_whole(arr["element"], arr["parent"], arr[col], t2)
+                    k3 = keep_whole(arr["element"], parent, arr[col], t2)
                     if (d[k2 & ~k3] < reach).all():
                         trial, k2 = t2, k3
                 if np.array_equal(k2, kept):
@@ -673,7 +682,9 @@ def _at_parent(arr: Any, inv: np.ndarray, tips: np.ndarray) -> np.ndarray:
     refilled stems fell from 944 to 631, +-1 s 1.012, stems 0.999; +-2 s 1.022
     (python benchmarks/orn19m_willow.py make/analyze, the same three worlds). A success
     with rows that parent no rule (flowers' stem and leaf) keeps its tip's mean
-    (parent_rows' docstring); a seed's success (its parent not drawn) too. Departure
+    (parent_rows' docstring); a seed's success (its parent not drawn) too. The parent is
+    the row drawing it (_parent_rows): a spiral grows from an arm inside its parent
+    spiral's row. Departure
     from the paper: Wong et al. grow one panel in one run (§4.1); this hand-over between
     runs is ours.
     """
@@ -682,8 +693,17 @@ def _at_parent(arr: Any, inv: np.ndarray, tips: np.ndarray) -> np.ndarray:
     row_of = {int(e): i for i, e in enumerate(np.asarray(arr["element"], np.int64).tolist())}
     at = np.full(ng, -1, np.int64)
     # the rows of a success share its parent (one rule success, strew.ornament._engine._commit)
-    at[inv] = [row_of.get(int(p), -1) for p in np.asarray(arr["parent"], np.int64).tolist()]
+    at[inv] = [row_of.get(int(p), -1) for p in np.asarray(_parent_rows(arr), np.int64).tolist()]
     return np.where(every, at, -1)
+
+
+def _parent_rows(arr: Any) -> Any:
+    """Per row, the ``element`` of the row drawing its parent: the private column
+    strew.ornament._context.PARENT_COLUMN where the tile wrote it (a spiral's parent is
+    an arm inside its parent spiral's row), else the public ``parent``."""
+    from .ornament._context import PARENT_COLUMN
+
+    return arr[PARENT_COLUMN] if PARENT_COLUMN in arr.columns else arr["parent"]
 
 
 # how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)

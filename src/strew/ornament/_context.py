@@ -52,7 +52,7 @@ import numpy as np
 from ._pattern import Element, Pattern
 from ._proxies import Proxy
 
-__all__ = ["GOAL_COLUMN", "GROUP_COLUMN", "PROXIES_COLUMN", "element_record", "elements_from", "records_column"]
+__all__ = ["GOAL_COLUMN", "GROUP_COLUMN", "PARENT_COLUMN", "PROXIES_COLUMN", "element_record", "elements_from", "records_column"]
 
 PROXIES_COLUMN = "ornament_proxies"
 """The private column of a tiled ornament's tile: per row, a tuple of element records."""
@@ -68,6 +68,17 @@ GOAL_COLUMN = "ornament_goal"
 radius)`` that its rule success grew into (NaNs for none). A tile drops its successes
 whose circle touched an element it drops (strew.tiles._keep_groups, :func:`cut_touching`):
 they filled a pocket whose other side the tile drops."""
+
+
+PARENT_COLUMN = "ornament_parent"
+"""The private column of a tiled ornament's tile: per row, the ``element`` of the row that
+draws its parent (-1 for none drawn in the tile: a seed, a context element). It differs
+from the public ``parent`` (the parent's placement index) where the parent is a group's
+member: a spiral branches from any arm of its parent spiral, and a spiral's row is its
+first arm (Pattern.group), so ``parent`` named a row for 7 of 131 spirals (60 x 60,
+seed 0). strew.tiles places a success at its parent's row (_at_parent) and keeps it only
+with that row (:func:`keep_whole`): by ``parent`` a spiral was placed by its own centre
+and its parent's cut was lost, so a tile kept spirals whose parent spiral it dropped."""
 
 
 def _slots(cls: type) -> list[str]:

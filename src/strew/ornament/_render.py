@@ -414,6 +414,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     col_groups: list[list[Element]] = []
     col_commit: list[int] = []
     col_goal: list[tuple[float, float, float]] = []
+    col_parent_el: list[int] = []  # the parent's placement index, context parents aside
     rank = {t: k for k, t in enumerate(dict.fromkeys([*pat.draw_order, *pat.types]))}
     panel = cover = None
     # a periodic tile's elements are drawn whole: those crossing its edge wrap in at the
@@ -489,6 +490,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
             col_groups.append(members.get(el.index, [el]))
             col_commit.append(int(getattr(el, "group", el.index)))
             col_goal.append(getattr(el, "goal_circle", (math.nan, math.nan, math.nan)))
+            col_parent_el.append(col_parent[-1])
         col_phase.append(el.phase or "")
     # SVG draws one layer per kind, in library order: order the library by draw order
     shapes = {name: shapes[name] for name in sorted(shapes, key=lambda t: (order[t], t))}
@@ -507,7 +509,7 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     }
     extra = {}
     if _proxies:
-        from ._context import GOAL_COLUMN, GROUP_COLUMN, PROXIES_COLUMN, records_column
+        from ._context import GOAL_COLUMN, GROUP_COLUMN, PARENT_COLUMN, PROXIES_COLUMN, records_column
 
         extra[PROXIES_COLUMN] = records_column(col_groups, pat)
         extra[GROUP_COLUMN] = np.asarray(col_commit, dtype=np.int64)
@@ -515,6 +517,10 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
         for i, g in enumerate(col_goal):
             goals[i] = g
         extra[GOAL_COLUMN] = goals
+        # the row that draws each row's parent (PARENT_COLUMN): a group's member stands
+        # for its group's first element (a spiral branches from any of its parent's arms)
+        row_el = {m.index: e for e, c in zip(col_el, col_groups) for m in c}
+        extra[PARENT_COLUMN] = np.asarray([row_el.get(p, -1) for p in col_parent_el], dtype=np.int64)
     return Arrangement(
         shapes,
         np.asarray(kind, dtype=object) if kind else np.zeros(0, int),
