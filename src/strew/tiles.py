@@ -57,7 +57,10 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # willow 0.981x (10 worlds, tiles 102-138; 1.26x before its later tiles grew on from
 # their finished neighbours' elements, _HANDS_ON, _keep_groups; 1.037x before they refilled
 # the dropped room at its scale, _ornament_holes), stems 1.014x, and at +-1s 0.991x, stems
-# 1.006x (1.044x and 0.966x before _at_parent). synth uses its context as a
+# 1.006x (1.044x and 0.966x before _at_parent); spirals 0.993x at +-2s and 0.987x at
+# +-1s (6 worlds, tiles 102-122; 1.054x and 1.035x on tiles 102-138 before their
+# successes were placed at and kept with the row drawing their parent spiral,
+# strew.ornament._context.PARENT_COLUMN). synth uses its context as a
 # neighbourhood, not only an obstacle; ornament's tiles
 # give one kind name shapes that differ a little, but its elements carry their geometry in
 # ``parts``, so the tiles' libraries are made to agree (_harmonize).
