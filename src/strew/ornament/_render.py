@@ -509,7 +509,13 @@ def render_ornament(ornament: Ornament, style: str = "outline", *, line_width: f
     }
     extra = {}
     if _proxies:
-        from ._context import GOAL_COLUMN, GROUP_COLUMN, PARENT_COLUMN, PROXIES_COLUMN, records_column
+        from ._context import (
+            GOAL_COLUMN,
+            GROUP_COLUMN,
+            PARENT_COLUMN,
+            PROXIES_COLUMN,
+            records_column,
+        )
 
         extra[PROXIES_COLUMN] = records_column(col_groups, pat)
         extra[GROUP_COLUMN] = np.asarray(col_commit, dtype=np.int64)
