@@ -6,7 +6,6 @@ On dots this grows the same world as 8224b5f (tile 100, seed 1: the same x, 7,87
 """
 
 import runpy
-import sys
 from pathlib import Path
 
 if __name__ == "__main__":

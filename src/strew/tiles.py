@@ -60,7 +60,11 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # 1.006x (1.044x and 0.966x before _at_parent); spirals 0.993x at +-2s and 0.987x at
 # +-1s (6 worlds, tiles 102-122; 1.054x and 1.035x on tiles 102-138 before their
 # successes were placed at and kept with the row drawing their parent spiral,
-# strew.ornament._context.PARENT_COLUMN). synth uses its context as a
+# strew.ornament._context.PARENT_COLUMN); hierarchy 1.008x at +-1s and 0.984x at +-2s (3
+# worlds, tiles 104-116; 0.830x and 0.835x on tile 100 while a handed-over circle raised
+# the rules of every phase, not only its own: strew.ornament._engine._Grower._holes_of_phase).
+# dots are still short (0.823x, 0.871x: the raised dot does not fit its room and fails,
+# benchmarks/dot19r_handover.py). synth uses its context as a
 # neighbourhood, not only an obstacle; ornament's tiles
 # give one kind name shapes that differ a little, but its elements carry their geometry in
 # ``parts``, so the tiles' libraries are made to agree (_harmonize).
@@ -404,16 +408,18 @@ def _synth_holes_out(arr: Any, keep: np.ndarray, rect: tuple[float, float, float
     return [[float(arr.x[i]), float(arr.y[i]), float(r[i]), str(names[i])] for i in np.flatnonzero(drop)]
 
 
-def _holes_in(neighbours: tuple[Any, ...], links: Mapping[int, list[tuple[float, float]]], key: str) -> list[list[float]]:
-    """The finished neighbours' ``meta[key]`` circles ``[x, y, r]``, moved next to the tile across the wrap."""
-    return [[x + dx, y + dy, r] for n, shifts in zip(neighbours, links.values())
-            for dx, dy in shifts for x, y, r in n.meta.get(key, ())]
+def _holes_in(neighbours: tuple[Any, ...], links: Mapping[int, list[tuple[float, float]]], key: str) -> list[list[Any]]:
+    """The finished neighbours' ``meta[key]`` circles ``[x, y, r(, phase)]``, moved next to the tile across the wrap."""
+    return [[x + dx, y + dy, *rest] for n, shifts in zip(neighbours, links.values())
+            for dx, dy in shifts for x, y, *rest in n.meta.get(key, ())]
 
 
-def _ornament_holes(arr: Any, keep: np.ndarray, job: _Job, rect: tuple[float, float, float, float]) -> list[list[float]]:
+def _ornament_holes(arr: Any, keep: np.ndarray, job: _Job, rect: tuple[float, float, float, float]) -> list[list[Any]]:
     """ornament: the empty circles ``[x, y, r]``, centred in ``rect`` (the tile's own),
     that the rule successes it drops and places at their parent (_at_parent: willow's)
-    grew into (see _handed_over in strew.ornament._engine).
+    grew into (see _handed_over in strew.ornament._engine); ``[x, y, r, phase]`` for a
+    success grown in a named phase (hierarchy's): the later tile raises only the rules of
+    that phase by it (strew.ornament._engine._Grower._holes_of_phase).
 
     A later tile raises the scale of a circle it grows into to the largest of these that
     holds its centre. Only those centred on this tile's side: with all the dropped
@@ -441,11 +447,15 @@ def _ornament_holes(arr: Any, keep: np.ndarray, job: _Job, rect: tuple[float, fl
     if not rows.any():
         return []
     g = np.array([tuple(v) if v is not None else (np.nan,) * 3 for v in np.asarray(arr[GOAL_COLUMN], dtype=object)[rows]], float).reshape(-1, 3)
-    g = np.unique(g[np.isfinite(g).all(axis=1)], axis=0)
+    ph = np.asarray(arr["phase"], dtype=object)[rows] if "phase" in arr.columns else np.full(int(rows.sum()), None, object)
+    ok = np.isfinite(g).all(axis=1)
     x0, y0, x1, y1 = rect
     # only those on the tile's own side: a later tile grows its own room at its own scale
-    g = g[(g[:, 0] >= x0) & (g[:, 0] < x1) & (g[:, 1] >= y0) & (g[:, 1] < y1)]
-    return g.tolist()
+    ok &= (g[:, 0] >= x0) & (g[:, 0] < x1) & (g[:, 1] >= y0) & (g[:, 1] < y1)
+    out = sorted({(float(a), float(b), float(c), str(p) if p else None) for (a, b, c), p in zip(g[ok].tolist(), ph[ok].tolist())},
+                 key=lambda v: (v[0], v[1], v[2], "" if v[3] is None else v[3]))
+    # (x, y, r) where no phase: the meta as it was
+    return [list(v) if v[3] is not None else list(v[:3]) for v in out]
 
 
 def _synth_holes_in(neighbours: tuple[Any, ...], links: Mapping[int, list[tuple[float, float]]]) -> list[list[Any]]:

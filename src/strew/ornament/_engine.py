@@ -349,7 +349,7 @@ class _Grower:
         periodic: tuple[float, float, float, float] | None = None,
         thin_boundary: bool = False,
         context: list[Element] | None = None,
-        holes: np.ndarray | None = None,
+        holes: Sequence[Sequence[Any]] | None = None,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -491,7 +491,9 @@ class _Grower:
         self.n_context = len(context or ())
         # a tiled world's handed-over room (issue 19.4, strew.ornament._context.HOLES_KEY):
         # the empty circles (x, y, r) of the successes a finished neighbour grew and dropped
-        self.holes = _holes_in(holes, region.bounds)
+        # and the phase each was grown in (None: any), see _holes_of_phase
+        self.holes, self.hole_phases = _holes_in(holes, region.bounds)
+        self._hole_cache: dict[str, np.ndarray] = {}
         if context:
             phases = [el.phase for el in context]
             self._commit(None, list(context))
@@ -841,7 +843,7 @@ class _Grower:
                 continue
             self.stats["iterations"] += 1
             goal = Goal(c, rho)
-            scaled = goal if self.holes is None else _handed_over(goal, self.holes)
+            scaled = goal if self.holes is None else _handed_over(goal, self._holes_of_phase())
             delta = self.delta if self.delta is not None else max(2 * h, 0.1 * rho)
             owners = self.placed.owner[idx]
             order: dict[int, float] = {}
@@ -867,6 +869,26 @@ class _Grower:
                     self.add_exclude(c0)
         self.stats["largest_circle_raster"] = largest
         self.stats["phase"] = self.state.phase
+
+    def _holes_of_phase(self) -> np.ndarray:
+        """The handed-over circles grown into in the current phase, or of no phase
+        (``(k, 3)``, possibly empty: no goal is raised).
+
+        Why (issue 19.4, hierarchy): a circle a vine grew into in the vines phase raised
+        the later tile's leaves and fillers to a vine's scale (Wong et al. §5: each phase
+        grows its own kind, the phase handing over when no circle as large as its
+        threshold is left); the refill grew fewer, larger elements and the strips
+        thinned (tile 100, seed 1: +-2 s density 0.835, against 0.996 with nothing
+        handed over). A finished tile's circle scales only the rules of the phase it was
+        grown in (benchmarks/dot19r_handover.py, orn19m_willow.py)."""
+        ph = self.state.phase
+        if ph is None or self.hole_phases is None:
+            return self.holes
+        key = str(ph)
+        if key not in self._hole_cache:
+            ok = np.array([p is None or p == key for p in self.hole_phases], bool)
+            self._hole_cache[key] = self.holes[ok]
+        return self._hole_cache[key]
 
     def _try(self, goal: Goal, candidates: list[int], shift: dict[int, tuple[float, float]] | None = None,
              circle: Goal | None = None) -> bool:
@@ -917,14 +939,19 @@ class _Grower:
         return False
 
 
-def _holes_in(holes: np.ndarray | None, bounds: tuple[float, float, float, float]) -> np.ndarray | None:
-    """The handed-over circles ``(m, 3)`` that reach into ``bounds``, or None for none."""
+def _holes_in(holes: Sequence[Sequence[Any]] | None, bounds: tuple[float, float, float, float]) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """The handed-over circles ``(m, 3)`` that reach into ``bounds`` (None for none), and
+    the phase each was grown in (``(m,)`` object; None where no circle has one)."""
     if holes is None or not len(holes):
-        return None
-    h = np.asarray(holes, float).reshape(-1, 3)
+        return None, None
+    h = np.array([v[:3] for v in holes], float).reshape(-1, 3)
+    # (x, y, r[, phase]): the phase the circle was grown in (strew.tiles._ornament_holes)
+    ph = np.array([v[3] if len(v) > 3 else None for v in holes], dtype=object)
     x0, y0, x1, y1 = bounds
     ok = (h[:, 0] + h[:, 2] > x0) & (h[:, 0] - h[:, 2] < x1) & (h[:, 1] + h[:, 2] > y0) & (h[:, 1] - h[:, 2] < y1)
-    return h[ok] if ok.any() else None
+    if not ok.any():
+        return None, None
+    return h[ok], (None if all(p is None for p in ph[ok]) else ph[ok])
 
 
 def _handed_over(goal: Goal, holes: np.ndarray) -> Goal:
@@ -969,7 +996,7 @@ def grow_elements(
     periodic: bool = False,
     _thin_boundary: bool = False,
     _context: list[Element] | None = None,
-    _holes: Sequence[Sequence[float]] | None = None,
+    _holes: Sequence[Sequence[Any]] | None = None,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
@@ -1020,7 +1047,7 @@ def grow_elements(
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile,
-                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else np.asarray(_holes, float))
+                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else [list(v) for v in _holes])
     g.run()
     rep.done(len(g.elements) - g.n_seeds - g.n_context)
     stats = dict(g.stats)
