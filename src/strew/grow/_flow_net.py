@@ -89,7 +89,7 @@ import math
 import numpy as np
 
 from ._flow_kernels import boundary_distance
-from ._flow_shear import fitted_moves, undo_moves
+from ._flow_shear import fitted_moves, saved_moves, undo_moves
 from ._objects import ELEMENT
 
 __all__ = ["relax_network", "hexagonal_reference"]
@@ -169,13 +169,13 @@ def _band_passes(g, turn0: float, band: tuple[float, float]) -> int:
     and the scales' quarter circles 0.931 -> 0.911 (``benchmarks/flow14n_probe.py
     --only all``); both tried, neither is lower. The band's passes only move
     elements, so the first run's are put back exactly.)"""
-    start = {o: (*g.xy[o], g.geom[o], float(g.rot[o])) for o in g.order if g.state[o] == ELEMENT}
+    start = saved_moves(g, [o for o in g.order if g.state[o] == ELEMENT])
     moved = [0, 0]
     share = [0.0, 0.0]
     kept = None
     for k in (0, 1):
         if k:
-            kept = {o: (*g.xy[o], g.geom[o], float(g.rot[o])) for o in start}
+            kept = saved_moves(g, start)
             undo_moves(g, start)
         g.flow_net_one_side = bool(k)
         try:
@@ -301,7 +301,7 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
             # against the shorter step, as the whole-pass limit would have tried it:
             # the better is kept)
             if best is None or share1 > best[0]:
-                best = (share1, {o: (*g.xy[o], g.geom[o], float(g.rot[o])) for o in moves})
+                best = (share1, saved_moves(g, moves))
         undo_moves(g, old)
     if best is not None:
         undo_moves(g, best[1])

@@ -100,6 +100,12 @@ def reshape_shear(g, gap: float = 0.7) -> int:
     return moved
 
 
+def saved_moves(g, els) -> dict[int, tuple]:
+    """Where the elements ``els`` are now, keyed by element, as :func:`undo_moves`
+    puts them back (x, y, outline, rotation)."""
+    return {o: (*g.xy[o], g.geom[o], float(g.rot[o])) for o in els}
+
+
 def undo_moves(g, old: dict[int, tuple]) -> None:
     """Put the elements of ``old`` (from :func:`fitted_moves`) back where they were,
     with their outlines and rotations."""
