@@ -63,8 +63,10 @@ DISTRIBUTED_HINT = "pip install 'strew[distributed]'"
 # strew.ornament._context.PARENT_COLUMN); hierarchy 1.008x at +-1s and 0.984x at +-2s (3
 # worlds, tiles 104-116; 0.830x and 0.835x on tile 100 while a handed-over circle raised
 # the rules of every phase, not only its own: strew.ornament._engine._Grower._holes_of_phase).
-# dots are still short (0.823x, 0.871x: the raised dot does not fit its room and fails,
-# benchmarks/dot19r_handover.py). synth uses its context as a
+# dots 1.026x at +-1s and 1.022x at +-2s (3 worlds, tiles 130-138; 0.823x and 0.871x on
+# tiles 104-116 while a raised dot, filling its raised goal circle, overlapped and failed:
+# strew.ornament.patterns.dots.dot_to_dot now shrinks it to fit; benchmarks/dot19r_handover.py,
+# dot19s_holes.py). synth uses its context as a
 # neighbourhood, not only an obstacle; ornament's tiles
 # give one kind name shapes that differ a little, but its elements carry their geometry in
 # ``parts``, so the tiles' libraries are made to agree (_harmonize).
