@@ -181,6 +181,24 @@ def test_vase_grows_hooks_from_the_seed_where_no_grid_point_holds_a_flower():
     assert _largest_gap(orn, ring) < 4 * orn.params["min_radius"]
 
 
+@pytest.mark.parametrize("side", [157.5, 200.0, 300.0])
+def test_vase_seed_delivers_flowers_in_a_large_panel(side):
+    # the seed's first circles touch it, centred their radius (0.29 side) away: beyond the
+    # vine's reach in a large panel. The vine still delivers a flower, to the free grid
+    # point within its reach (before: every vine failed there, the panel grew hooks only;
+    # a tiled world's phase-0 tile of 126 + 2 x 15.75 was such a panel)
+    from strew.ornament.patterns.vase import GRID, REACH
+
+    orn = grow_elements("vase", Region.rectangle(side, side), rng=1, max_elements=40)
+    vines = [e for e in orn.elements if e.type == "vine"]
+    centres = np.array([e.proxy.center for e in orn.elements if e.type in ("lotus", "peony")])
+    assert len(vines) >= 10 and len(centres) == len(vines)
+    assert np.allclose(centres / GRID, np.round(centres / GRID))  # on the grid
+    for v in vines:  # every vine within its reach
+        pts = v.proxy.point_at(np.array([0.0, 1.0]))
+        assert np.hypot(*(pts[1] - pts[0])) <= REACH
+
+
 def test_marks_of_one_template_share_a_kind_and_draw_in_place(tmp_path):
     from strew import load, save
 

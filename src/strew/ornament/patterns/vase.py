@@ -69,8 +69,9 @@ def _nearest_on(el, target):
     return c + r * u, u
 
 
-def _free_grid_point(ctx, near):
-    """The grid point nearest ``near`` that holds no flower yet, inside the panel."""
+def _free_grid_point(ctx, near, start=None):
+    """The grid point nearest ``near`` that holds no flower yet, inside the panel; with
+    ``start``, the nearest of those within the vine's reach (:data:`REACH`) of it."""
     i0, j0 = round(near[0] / GRID), round(near[1] / GRID)
     best = None
     for i in range(i0 - 1, i0 + 2):
@@ -78,6 +79,8 @@ def _free_grid_point(ctx, near):
             if (i, j) in ctx.state.flowers:
                 continue
             p = np.array([i * GRID, j * GRID])
+            if start is not None and float(np.hypot(*(p - start))) > REACH:
+                continue
             d = float(np.hypot(*(p - near)))
             if best is None or d < best[0]:
                 best = (d, (i, j), p)
@@ -86,7 +89,19 @@ def _free_grid_point(ctx, near):
 
 def grow_vine(ctx, parent, start, tangent, depth):
     g, rho = ctx.goal.center, ctx.goal.radius
-    found = _free_grid_point(ctx, g)
+    # the free grid point nearest C's centre that the vine can reach. Nearest C's centre
+    # alone, the seed's first vine failed in a panel whose largest circles lie farther
+    # from the seed than REACH (§4.1: C touches the seed, centred its radius away): the
+    # grid point nearest C was out of reach for every C, the vines' phase ended with no
+    # flower (a 157.5 x 157.5 panel, seed at its centre: 0 flowers; a tiled world's phase-0
+    # tiles, and so every tile, grew none)
+    found = _free_grid_point(ctx, g, start)
+    to_c = g - start
+    far = float(np.hypot(*to_c))
+    if found is None and far > REACH - GRID:
+        # C lies beyond the vine's reach: the free grid point within reach nearest the
+        # point of the chord towards C's centre where the reach ends
+        found = _free_grid_point(ctx, start + (REACH - GRID) / far * to_c, start)
     if found is None:
         return FAILURE
     _, ij, p = found
