@@ -14,7 +14,6 @@ from typing import Any
 import numpy as np
 import shapely
 
-from ._collide import _polygon
 from ._match import match_references, order_target
 from ._objects import (
     ELEMENT,
@@ -589,6 +588,11 @@ class _Place:
         pool = self.overlap_pool(kind, x, y, scale, reach)
         nbrs = [(o, self.xy[o]) for o in self.adj[s]]
         for f in (0.25, 0.5, 0.75, 1.0):
+            # the offsets at this distance that pass the point tests, in order; then
+            # their outlines in one shapely call and the region test in another (the
+            # tests are pure: the first offset that passes them all is the one the
+            # offset-by-offset loop took; issue 14 point 5)
+            pts = []
             for q in range(4):
                 t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
                 nx, ny = x + f * reach * math.cos(t), y + f * reach * math.sin(t)
@@ -600,8 +604,17 @@ class _Place:
                     continue
                 if self.too_close_in_kind(nx, ny, kind, s, (ELEMENT,), placing=True):
                     continue
-                g = _polygon(base + np.array([nx, ny])) if base is not None else self.element_geometry(kind, nx, ny, rot, scale)
-                if not self.fits_domain(g) or self.overlaps_pool(g, kind, nx, ny, scale, pool):
+                pts.append((nx, ny))
+            if not pts:
+                continue
+            if base is not None:
+                # (the same sums as base + np.array([nx, ny]) offset by offset)
+                gs = list(shapely.polygons(base[None, :, :] + np.array(pts)[:, None, :]))
+            else:
+                gs = [self.element_geometry(kind, nx, ny, rot, scale) for nx, ny in pts]
+            fits = self.fits_domain_many(gs).tolist()
+            for (nx, ny), g, fit in zip(pts, gs, fits):
+                if not fit or self.overlaps_pool(g, kind, nx, ny, scale, pool):
                     continue
                 self._move(s, nx, ny)
                 return nx, ny, g
