@@ -485,6 +485,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         # placed and dead ones are dropped as they go
         self.hcell = max(5 * self.l, 1e-9)
         self.hgrid: dict[tuple[int, int], set[int]] = {}
+        self.outranker: dict[int, int] = {}  # the seed that last held each seed back (outranked)
         self.none_prio = float(prio.min())
         self.top_prio = float(prio.max())
         self.kind_prio_list = [float(v) for v in prio]
