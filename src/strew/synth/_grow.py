@@ -328,6 +328,18 @@ ROOM_FILL = True
 for them beyond the exemplar's own room per area (see :func:`fill_room`)."""
 
 
+ROOM_SMALLEST = True
+"""The kinds of an exemplar's smallest size class that the exemplar leaves saturated
+take part in :func:`fill_room` too, up to their exemplar's density (:func:`_room_cap`),
+and take the rooms beside an element of their own kind first. Extension of §5.1 for
+several sizes (§7), as :func:`fill_room`: two sizes whose pebbles the generator threw to
+saturation (ratio 0.65, 30:150 asked, 30:50 drawn; ratio 0.5, 80:80 asked, 38:43
+drawn; ``python benchmarks/synth_variants.py --harder``, h11s8 and h12s7) came out with
+pebbles at 0.85-0.92 of their density and their nearest pebble too far at every
+decile (nn[pebble>pebble] 0.14-0.17 against 0.086 and 0.154), rooms for 113-125 more
+pebbles left in the output against the exemplar's 23 per the same area."""
+
+
 ROOM_SHARE = 0.25
 """Most rooms for one more of a kind (:func:`_room_rate`), as a share of the kind's
 count (over the same area), for :func:`fill_room` to act on the kind: above it the
@@ -350,16 +362,18 @@ def _greedy_rooms(cen: np.ndarray, rad: np.ndarray, sep: float) -> np.ndarray:
     return np.asarray(taken, np.int64)
 
 
-def _room_rate(prep) -> np.ndarray:
+def _room_rate(prep, smallest: bool = False) -> np.ndarray:
     """(S,) float per kind-in-exemplar class (``Prepared.skind``): the exemplar's room
     for one more of the kind per unit of its domain's area (inf: no rule). The room is
     its open circles (Delaunay circumcircles of its visible centres, wholly inside its
     domain) at whose centre the kind's smallest element clears the three neighbours by
     ``max(rc_p + rc_q, min_dist)``, counted greedily two collision radii apart. Only
-    kinds above their exemplar's smallest size class, with 10 elements or more.
-    Computed once per ``prep``."""
+    kinds above their exemplar's smallest size class, with 10 elements or more; with
+    ``smallest``, only the kinds of that smallest class instead (see
+    :data:`ROOM_SMALLEST`). Computed once per ``prep``."""
     key = (len(prep.kind), np.asarray(prep.selected_elements).tobytes())
-    got = getattr(prep, "_room_rate", None)
+    attr = "_room_rate_smallest" if smallest else "_room_rate"
+    got = getattr(prep, attr, None)
     if got is not None and got[0] == key:
         return got[1]
     S = int(prep.skind.max()) + 1 if len(prep.skind) else 0
@@ -381,7 +395,7 @@ def _room_rate(prep) -> np.ndarray:
             continue
         inside = shapely.contains_xy(inner, cen[:, 0], cen[:, 1])
         inside[inside] = shapely.distance(dom.exterior, shapely.points(cen[inside])) >= rad[inside] + margin
-        for k in np.unique(sk[cls > cls.min()]):
+        for k in np.unique(sk[cls == cls.min()] if smallest else sk[cls > cls.min()]):
             mine = np.flatnonzero(sk == k)
             if len(mine) < 10:
                 continue
@@ -391,17 +405,17 @@ def _room_rate(prep) -> np.ndarray:
             rooms = len(_greedy_rooms(cen[fit], rad[fit], 2.0 * rc[m]))
             if rooms <= ROOM_SHARE * len(mine) * inner.area / dom.area:
                 out[k] = rooms / float(inner.area)
-    prep._room_rate = (key, out)
+    setattr(prep, attr, (key, out))
     return out
 
 
-def _saturated_candidates(prep) -> np.ndarray:
+def _saturated_candidates(prep, smallest: bool = False) -> np.ndarray:
     """(k,) int64 sorted exemplar elements that may fill room for their kind: selected,
     visible, interior to their exemplar, of a kind the exemplar leaves saturated
-    (:func:`_room_rate` finite) and no anchor (shared by :func:`fill_room` and
-    ``_displace.fill_displaced``)."""
+    (:func:`_room_rate` finite; with ``smallest``, of its smallest size class) and no
+    anchor (shared by :func:`fill_room` and ``_displace.fill_displaced``)."""
     sel = prep.selected_elements & ~prep.void
-    tight = np.isfinite(_room_rate(prep)[prep.skind])
+    tight = np.isfinite(_room_rate(prep, smallest)[prep.skind])
     cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
     cand = np.unique(np.asarray(cand, np.int64))
     cand = cand[sel[cand] & tight[cand]]
@@ -419,6 +433,36 @@ def _room_circles(state: SynthState, pts: np.ndarray, need: np.ndarray, since: i
     keep[keep] = state.in_domain(cen[keep])
     order = np.argsort(-rad[keep], kind="stable")
     return cen[keep][order], rad[keep][order], tri[keep][order]
+
+
+def _room_cap(state: SynthState, k: int) -> int | None:
+    """How many more elements of kind-in-exemplar ``k`` (``Prepared.skind``) the output
+    holds before the kind reaches its exemplar's density (None: no cap, ``k`` is above
+    its exemplar's smallest size class). Densities as ``_displace.fill_displaced``
+    counts them: inside the exemplar's domain and the region shrunk by two of the
+    largest collision radii (a drawn exemplar's frame band holds more small elements
+    than its interior: three sizes h6s7, counted over the whole domain, went to 1.34x
+    the small stones' density). One exemplar only (several share the region: 0)."""
+    from ._displace import _inner_density  # (lazy: _displace imports this module)
+
+    prep = state.prep
+    sel = prep.selected_elements & ~prep.void
+    mine = np.flatnonzero(sel & (prep.skind == k))
+    if len(mine) == 0:
+        return 0
+    s = int(prep.source[mine[0]])
+    if prep.size_class[mine].min() > prep.size_class[sel & (prep.source == s)].min():
+        return None
+    if np.count_nonzero(prep.selected) != 1 or state.region is None:
+        return 0
+    margin = 2.0 * float(prep.rc.max())
+    dens = _inner_density(prep, margin)[k]
+    inner = state.region.geometry.buffer(-margin)
+    if not np.isfinite(dens) or inner.is_empty or inner.area <= 0.25 * state.region.geometry.area:
+        return 0
+    own = np.flatnonzero((prep.skind[state.src] == k) & ~prep.void[state.src])
+    have = int(np.count_nonzero(shapely.contains_xy(inner, state.pos[own, 0], state.pos[own, 1]))) if len(own) else 0
+    return max(0, int(np.floor(dens * float(inner.area))) - have)
 
 
 def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int:
@@ -461,6 +505,10 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         return 0
     rate = _room_rate(prep)
     cand = _saturated_candidates(prep)
+    if ROOM_SMALLEST:
+        # the smallest size class's saturated kinds too, capped at their density (_room_cap)
+        rate = np.where(np.isfinite(rate), rate, _room_rate(prep, smallest=True))
+        cand = np.union1d(cand, _saturated_candidates(prep, smallest=True))
     cand = cand[prep.parent[cand] != -3]
     if len(cand) == 0:
         return 0
@@ -482,16 +530,28 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     area = float(state.region.geometry.area)
     budget = np.zeros(len(rate), np.int64)
     some = np.zeros(len(cen), bool)  # circles some kind with a budget fits (a cheap pre-test)
+    beside = np.zeros(len(cen), bool)  # circles beside an element of a capped kind with a budget
     for k in np.unique(prep.skind[cand]):
         m = cand[prep.skind[cand] == k]
         m = m[np.argmin(prep.rc[m])]
         nk = np.maximum(prep.rc[m] + prep.rc[s_tri], prep.min_dist[k, prep.skind[s_tri]]).max(axis=1)
         fit = np.flatnonzero(rad >= nk)
         budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
+        cap = _room_cap(state, int(k)) if budget[k] > 0 else None
+        if cap is not None:
+            budget[k] = min(budget[k], cap)
+            if budget[k] > 0:
+                beside |= (prep.skind[s_tri] == k).any(axis=1)
         if budget[k] > 0:
             some[fit] = True
     if not budget.any():
         return 0
+    if beside.any():
+        # a capped kind's rooms beside its own kind first: the budget runs out before the
+        # rooms do, and the exemplar's pebbles stand in groups (h12s7: grouped share 0.72;
+        # largest rooms first left 0.55-0.58, the rooms between stones taken singly)
+        first = np.argsort(~beside, kind="stable")
+        cen, rad, some = cen[first], rad[first], some[first]
     cen, rad = cen[some], rad[some]
     wall = shapely.distance(boundary, shapely.points(cen)) if boundary is not None else np.full(len(cen), np.inf)
     n0 = state.n
