@@ -32,6 +32,7 @@ GRID = 22.0  # spacing of the flowers' grid
 FLOWER_RADIUS = 6.0
 REACH = 1.6 * GRID  # longest vine
 HOOK_MAX = 7.0  # longest hook
+SHRINK = 0.8  # a hook that does not fit tries this much shorter (hook)
 RED = "#a3231f"
 GOLD = "#d9a441"
 
@@ -160,18 +161,39 @@ def hook(ctx, parent, *_):
     u = unit(chord)
     turn = -parent.turn if parent.type == "hook" else (1.0 if ctx.rng.random() < 0.5 else -1.0)
     n = turn * np.array([-u[1], u[0]])
+    h = ctx.new_child("hook", turn=turn)
+    drop = ctx.new_child("teardrop")
+    # Not in §5 / Appendix A: a hook that does not fit tries shorter ones (the lengths
+    # length * SHRINK**k, k = 1, 2, ..., down to the rule's 1.5) and the longest that fits
+    # grows, instead of failing. The hook fills its goal circle (length = chord + 0.3 rho,
+    # up to HOOK_MAX), which is the room only while the goal is the empty circle itself;
+    # in a tiled world a later tile raises a goal to the circle its finished neighbour
+    # grew into there (strew.ornament._engine._handed_over, issue 19.4), the raised hook
+    # saturated at HOOK_MAX, collided and failed, and the circle stayed empty (tiled /
+    # untiled control, border strips +-2 s: T126 0.910, T60 0.913; with the hand-over off
+    # 1.001 / 1.028, benchmarks/vas19s_nohand.py). A hook is homothetic about its start, so
+    # a shorter one is not inside a longer one and whether it fits is not monotone in its
+    # length: a bisection (as dots.dot_to_dot does for its nested dots) could step past the
+    # lengths that fit; a short descending scan takes the longest of a fixed ladder.
+    while True:
+        _set_hook(h, drop, start, u, n, length, rho)
+        if not ctx.intersects([h, drop], ignore=[parent]) and ctx.inside([h, drop]):
+            return SUCCESS
+        length *= SHRINK
+        if length < 1.5:
+            ctx.dynamic.remove(h)
+            ctx.dynamic.remove(drop)
+            return FAILURE
+
+
+def _set_hook(h, drop, start, u, n, length, rho):
+    """Shape hook ``h`` (from ``start`` along ``u``, curling to side ``n``) and its
+    teardrop ``drop`` for a hook of ``length`` in a goal of radius ``rho``."""
     end = start + length * u
     # a hook: out along the chord, curling back at its end
-    h = ctx.new_child("hook", turn=turn)
     h.proxy.set_points(start, start + 0.7 * length * u, end + 0.45 * length * n, end + 0.25 * length * n - 0.2 * length * u)
-    drop = ctx.new_child("teardrop")
     tip = h.proxy.point_at(1.0)
     drop.proxy.set(tip + 0.12 * length * n, max(0.35, min(0.12 * length, 0.25 * rho)))
-    if ctx.intersects([h, drop], ignore=[parent]) or not ctx.inside([h, drop]):
-        ctx.dynamic.remove(h)
-        ctx.dynamic.remove(drop)
-        return FAILURE
-    return SUCCESS
 
 
 # -- rendering: gold on red lacquer would need a background; here red on the paper --------
