@@ -205,6 +205,21 @@ def _swap_one(g, o: int, a: int) -> bool:
         g.remove_edge(o, j)
     g.state[o] = DEAD
     g.index.remove(o)
+    for px, py, j in _snug_spots(g, x, y, a, nbs):
+        # the smaller element snug against one neighbour left around the hole, where the
+        # exemplar has one of kind ``a`` next to one of that neighbour's kind; joined to
+        # that neighbour alone, so that the placement keeps the spot (``_fit_position``
+        # moves a seed with two placed neighbours or more)
+        s = g.new_object(px, py, a)
+        if g.crosses_edges(s, (px, py), j, g.xy[j]):
+            g.kill(s)
+            continue
+        g.add_edge(s, j)
+        g._out_of_domain = False
+        pick = g.choose(s)
+        if pick is not None and g.place(s, *pick):
+            return True
+        g.kill(s)
     s = g.new_object(x, y, a)
     for j in nbs:
         if g.state[j] == ELEMENT and not g.crosses_edges(s, (x, y), j, g.xy[j]):
@@ -223,3 +238,53 @@ def _swap_one(g, o: int, a: int) -> bool:
             if j in tg:
                 g.target[j][o] = tg[j]
     return False
+
+
+#: the most snug spots tried per swap (:func:`_snug_spots`), nearest the hole's centre first
+SNUG_TRIES = 6
+#: the offsets kept: those no longer than this quantile of their lengths
+SNUG_QUANTILE = 0.5
+
+
+def _snug_offsets(g, kj: int, a: int) -> np.ndarray:
+    """Where the reference's elements of kind ``a`` sit relative to its elements of kind
+    ``kj`` that they neighbour (ring slots, fixed mode's frame), the shorter half."""
+    cache = g.__dict__.setdefault("_lone_snug", {})
+    got = cache.get((kj, a))
+    if got is None:
+        rings = g.rings
+        n = rings["n"]
+        own = g.ex_kind[g.ref_ids] == kj
+        rel = rings["rel"][own]
+        sel = (rings["kind"][own] == a) & (np.arange(rel.shape[1])[None, :] < n[own][:, None])
+        got = rel[sel].reshape(-1, 2)
+        if len(got):
+            ln = np.hypot(got[:, 0], got[:, 1])
+            got = got[ln <= np.quantile(ln, SNUG_QUANTILE)]
+        cache[(kj, a)] = got
+    return got
+
+
+def _snug_spots(g, x: float, y: float, a: int, nbs: list[int]) -> list[tuple[float, float, int]]:
+    """Spots for a seed of kind ``a`` in the hole a larger element at ``(x, y)`` leaves:
+    each remaining neighbour's position plus a reference offset (:func:`_snug_offsets`)
+    that points into the hole (nearer its centre than the neighbour is), nearest the
+    centre first, at most :data:`SNUG_TRIES`."""
+    spots: list[tuple[float, int, float, float, int]] = []
+    lv = lone_sizes(g)
+    for j in nbs:
+        if g.state[j] != ELEMENT or int(g.kind[j]) < 0 or int(g.kind[j]) == a or not lv[int(g.kind[j])] > lv[a]:
+            continue
+        off = _snug_offsets(g, int(g.kind[j]), a)
+        if len(off) == 0:
+            continue
+        jx, jy = g.xy[j]
+        px, py = jx + off[:, 0], jy + off[:, 1]
+        dc = np.hypot(px - x, py - y)
+        ok = np.flatnonzero(dc < math.hypot(jx - x, jy - y))
+        if len(ok) == 0:
+            continue
+        i = int(ok[np.argmin(dc[ok])])
+        spots.append((float(dc[i]), int(j), float(px[i]), float(py[i]), int(j)))
+    spots.sort()
+    return [(px, py, j) for _, _, px, py, j in spots[:SNUG_TRIES] if g.in_domain(px, py)]
