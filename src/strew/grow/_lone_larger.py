@@ -205,6 +205,16 @@ def swap_lone_larger(g) -> int:
     return made
 
 
+def _match_and_place(g, s: int) -> bool:
+    """Match seed ``s`` and place it (§5.2); a seed that does not place is killed."""
+    g._out_of_domain = False
+    pick = g.choose(s)
+    if pick is not None and g.place(s, *pick):
+        return True
+    g.kill(s)
+    return False
+
+
 def _swap_one(g, o: int, a: int) -> bool:
     x, y = g.xy[o]
     nbs = sorted(g.adj[o])
@@ -224,20 +234,14 @@ def _swap_one(g, o: int, a: int) -> bool:
             g.kill(s)
             continue
         g.add_edge(s, j)
-        g._out_of_domain = False
-        pick = g.choose(s)
-        if pick is not None and g.place(s, *pick):
+        if _match_and_place(g, s):
             return True
-        g.kill(s)
     s = g.new_object(x, y, a)
     for j in nbs:
         if g.state[j] == ELEMENT and not g.crosses_edges(s, (x, y), j, g.xy[j]):
             g.add_edge(s, j)
-    g._out_of_domain = False
-    pick = g.choose(s)
-    if pick is not None and g.place(s, *pick):
+    if _match_and_place(g, s):
         return True
-    g.kill(s)
     g.state[o] = st
     g.index.insert(o, x, y)
     for j in nbs:
