@@ -83,7 +83,11 @@ def fill_beside_largest(state: SynthState, room: int | None = None, since: int =
     as ``fill_room``) among those that fit there. Only exemplars of at least
     :data:`SHELL_CLASSES` size classes, one exemplar filling the region, no shape test.
     """
-    from ._grow import _ranked_fits, _room_cap, _saturated_candidates  # (lazy: _grow imports this module)
+    from ._grow import (  # (lazy: _grow imports this module)
+        _ranked_fits,
+        _room_cap,
+        _saturated_candidates,
+    )
 
     prep = state.prep
     if not SHELL_FILL or state.n < 3 or state.region is None or shape_test_needed(prep) or np.count_nonzero(prep.selected) != 1:
@@ -120,24 +124,19 @@ def fill_beside_largest(state: SynthState, room: int | None = None, since: int =
     reach = float(prep.rc.max() + 2.0 * rcs.max() + prep.rc.max())
     reach = max(reach, float(prep.min_dist.max() + 2.0 * rcs.max()))
     pairs = [[j for j in lst if j != i] for i, lst in zip(big, tree.query_ball_point(pos[big], reach))]
-    k0 = int(prep.skind[cand[0]])  # (the smallest class's kinds share min_dist rows: one is enough for the sites)
+    k0 = int(prep.skind[cand[0]])  # (sites for the first kind's min_dist; each candidate is tested with its own below)
     sites = []
     eps = 1e-9
-    for lev in sorted(set(float(np.quantile(rcs, q)) for q in SHELL_LEVELS)):
+    for lev in sorted({float(np.quantile(rcs, q)) for q in SHELL_LEVELS}):
         lim = np.maximum(lev + prep.rc[src], prep.min_dist[k0, sk]) * (1.0 + eps) + eps
-        sites.append(_snug_sites(pos[big], lim[big], pos, lim, [[j for j in p] for p in pairs]))
+        sites.append(_snug_sites(pos[big], lim[big], pos, lim, pairs))
     pts = np.concatenate(sites) if sites else np.zeros((0, 2))
     if len(pts) == 0:
         return 0
     pts = pts[state.in_domain(pts)]
     # a first, static test against the output with the smallest candidate
     m0 = cand[np.argmin(rcs)]
-    near = tree.query_ball_point(pts, float(max(prep.rc.max() + rcs.max(), prep.min_dist.max())))
-    ok = np.zeros(len(pts), bool)
-    for i, lst in enumerate(near):
-        lst = np.asarray(lst, np.int64)
-        d = np.hypot(*(pos[lst] - pts[i]).T)
-        ok[i] = bool(np.all(d >= np.maximum(prep.rc[m0] + prep.rc[src[lst]], prep.min_dist[prep.skind[m0], sk[lst]])))
+    ok = ~state.conflicts(pts, np.full(len(pts), m0, np.int64))
     pts = pts[ok]
     if len(pts) == 0:
         return 0
