@@ -96,10 +96,21 @@ def fits(ctx, children, parent=None):
 # -- phase 1: vines ------------------------------------------------------------------------
 def grow_vine(ctx, parent, vine, start, heading, turn):
     g, rho = ctx.goal.center, ctx.goal.radius
+    d = distance(g, start)
     # towards the goal centre, bending to the side `turn`; shorter and then bending the
     # other way if that does not fit
     for short, bend in ((0.25, turn), (0.25, -turn), (0.6, turn), (0.6, -turn)):
-        end = offset(g, g - start, -short * rho)
+        # the vine ends short of the goal's centre by `short` of its radius: (1 - short)
+        # rho from its start, the start lying on the circle's rim. Not so where a tiled
+        # world's later tile raised the goal to the circle its finished neighbour grew
+        # into there (strew.ornament._engine._handed_over; the start then lies inside
+        # the raised circle, d < rho): measured back from the centre by the raised
+        # radius, the vine came out shorter than in the narrow circle itself (and with
+        # rho > 4 d pointed backwards), not longer as the hand-over means (issue 19.4;
+        # 60 x 60 panel, every vines-phase goal raised to 20: vines 21 -> 27, mean
+        # chord 8.96 -> 6.89). It is measured from its start instead, as long as the
+        # raised circle's vine would be.
+        end = offset(start, g - start, (1.0 - short) * rho) if rho > d else offset(g, g - start, -short * rho)
         vine.proxy.set(start, angle_of(heading), 0.45, end, angle_of(end - start) + bend * 0.7, 0.35)
         vine.orientation = bend
         if fits(ctx, vine, parent):
