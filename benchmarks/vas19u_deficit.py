@@ -101,7 +101,19 @@ def main() -> None:
             ta, ca = a["pcnt"][pidx], c["pcnt"][pidx]
             ph[pidx] = dict(tiled=ta.tolist(), control=ca.tolist(), ratio=float(ta.sum() / max(ca.sum(), 1)))
             print(f"  phase (col%2,row%2)={pidx % 2, pidx // 2}: tiled/ctl {ph[pidx]['ratio']:.3f}  " + " ".join(f"{k} {int(u)}/{int(v)}" for k, u, v in zip(kinds, ta, ca)))
-        res["worlds"][T] = dict(kinds=kinds, bins=rows, phases=ph, elements=[a["n"], c["n"]], s=s)
+        # the elements counted in the +-1 s and +-2 s strips of vas19s_compare.py (its
+        # spacing and edge band, per world), by kind: how many the share ratios rest on
+        from orn19m_willow import _world
+
+        strips = {}
+        for name, path in (("tiled", p), ("control", q)):
+            w = _world(path)
+            for width in (1.0, 2.0):
+                m = w["inside"] & (w["d"] < width)
+                strips.setdefault(f"{width:g}s", {})[name] = dict(zip(kinds, np.bincount(w["kind"][m], minlength=len(kinds)).tolist()))
+        for k, v in strips.items():
+            print(f"  strip +-{k} counts: tiled {v['tiled']} control {v['control']}")
+        res["worlds"][T] = dict(kinds=kinds, bins=rows, phases=ph, elements=[a["n"], c["n"]], s=s, strip_counts=strips)
     if args.out:
         Path(args.out).write_text(json.dumps(res, indent=1) + "\n")
         print(f"wrote {args.out}")
