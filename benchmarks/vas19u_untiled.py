@@ -3,7 +3,7 @@ rng=SEED)`` for each side and seed, its digest (benchmarks/spi19p_identity.diges
 counts by kind, and the successes whose hook goal the parent's distance bounded (vase.hook's
 ``min(rho, far)``: a hook where rho > far). Run on two trees and compare.
 
-``PYTHONPATH=TREE/src python benchmarks/vas19u_untiled.py --sides 120,200 --seeds 1 [--json F] [--png P]``
+``PYTHONPATH=TREE/src python benchmarks/vas19u_untiled.py --sides 120,200 --seeds 1 [--json F]``
 """
 
 from __future__ import annotations
@@ -22,7 +22,6 @@ def main() -> None:
     ap.add_argument("--sides", default="120,200")
     ap.add_argument("--seeds", default="1")
     ap.add_argument("--json", default=None)
-    ap.add_argument("--png", default=None, help="render the first panel here")
     args = ap.parse_args()
     import numpy as np
 
@@ -31,7 +30,6 @@ def main() -> None:
     from strew.ornament import grow_ornament
 
     out = {}
-    first = None
     for side in [float(v) for v in args.sides.split(",")]:
         for seed in [int(v) for v in args.seeds.split(",")]:
             t0 = time.process_time()
@@ -41,10 +39,6 @@ def main() -> None:
             key = f"{side:g}_s{seed}"
             out[key] = {"digest": digest(arr), "n": len(arr), "counts": cnt, "cpu_s": cpu}
             print(f"{key}: {digest(arr)} {len(arr):,} el {cnt} {cpu:.1f} CPU s", flush=True)
-            if first is None:
-                first = arr
-    if args.png and first is not None:
-        first.render(args.png) if hasattr(first, "render") else None
     if args.json:
         Path(args.json).write_text(json.dumps(out, indent=1) + "\n")
 
