@@ -4,6 +4,7 @@ its largest ones in the output as in the exemplar (``_shell.fill_beside_largest`
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from scipy.spatial import cKDTree
 from strew_testing import fidelity_suite
 
@@ -26,6 +27,7 @@ def _shell_density(arr, lo: float, hi: float, margin: float) -> float:
     return float(np.count_nonzero((ds >= lo) & (ds < hi))) / float(np.count_nonzero((dg >= lo) & (dg < hi)))
 
 
+@pytest.mark.slow
 def test_small_stones_snug_against_large_ones():
     # three sizes: small stones touching a large one (nearest large centre 14-16 away,
     # contact is at about 14.3) per unit area of that shell, output / exemplar, at 2x
