@@ -22,6 +22,7 @@ from strew.fields import flow_field
 from strew.grow import grow
 
 from strew_testing import fidelity_suite
+from test_grow_flow_gaps import _inside_without_overlap
 
 
 def _quarter_circles(a: float):
@@ -37,7 +38,7 @@ def test_flow_scales_quarter_circles_keep_no_hole():
     region = Region.rectangle(a, a)
     out = grow(ex, region=region, mode="flow", flow=_quarter_circles(a), rng=1, start=(10 * sp, 2 * sp))
     xy = np.asarray(out.xy)
-    assert np.all(region.contains_geometry(out.geometry, tolerance=1e-9))
+    _inside_without_overlap(out, region)
     # the widest empty circle over 2 spacings inside the edge (a hole: radius over 0.75
     # spacings, as benchmarks/grow.py's lattice_defects counts; a perfect lattice 0.58;
     # a2b29a1 0.777 here)
@@ -51,3 +52,27 @@ def test_flow_scales_quarter_circles_keep_no_hole():
     hi = np.array([len(tree.query_ball_point(xy[i], 1.15 * sp)) - 1 for i in inner])
     lo = np.array([len(tree.query_ball_point(xy[i], 0.85 * sp)) - 1 for i in inner])
     assert float(((hi == 6) & (lo == 0)).mean()) >= 0.73
+
+
+def test_flow_hex_hole_in_a_packed_ring_is_filled_by_pushing():
+    """The hexagonal lattice along the quarter circles over a square of 10 spacings from
+    (2, 2): a five-ring of 0.775 spacings radius stayed at a2b29a1 and after the late
+    close_holes (5a9daea), in a lattice packed to contact, where relaxing the ring made
+    no room; pushing the outlines out along their chains of contact
+    (``_flow_holes._push_fill``) fills it (widest empty circle 0.660), and the six
+    share rises 0.714 -> 0.786."""
+    ex = fidelity_suite().make_exemplar("hex_lattice", nx=8, ny=8)
+    sp = 12.0
+    a = 10 * sp
+    region = Region.rectangle(a, a)
+    out = grow(ex, region=region, mode="flow", flow=_quarter_circles(a), rng=1, start=(2 * sp, 2 * sp))
+    xy = np.asarray(out.xy)
+    _inside_without_overlap(out, region)
+    x0, y0, x1, y1 = region.bounds
+    g = np.mgrid[x0 + 2 * sp : x1 - 2 * sp : 3.0, y0 + 2 * sp : y1 - 2 * sp : 3.0].reshape(2, -1).T
+    assert float(cKDTree(xy).query(g)[0].max() / sp) < 0.75  # (0.775 at a2b29a1)
+    tree = cKDTree(xy)
+    inner = np.flatnonzero(region.distance_to_boundary(xy) > 2 * sp)
+    hi = np.array([len(tree.query_ball_point(xy[i], 1.15 * sp)) - 1 for i in inner])
+    lo = np.array([len(tree.query_ball_point(xy[i], 0.85 * sp)) - 1 for i in inner])
+    assert float(((hi == 6) & (lo == 0)).mean()) >= 0.714  # (0.786 here)
