@@ -70,6 +70,7 @@ from ._flow_retry import restore, snapshot
 from ._flow_shear import reshape_shear
 from ._flow_stretch import insert_stretched
 from ._index import GrowIndex
+from ._lone_kin import reseed_lone_kin
 from ._lone_larger import lone_kinds, swap_lone_larger
 from ._match import MODES, W1, W2, W3
 from ._objects import (
@@ -899,6 +900,13 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # one (not in the paper; see :mod:`strew.grow._lone_larger`)
             for _ in range(p.refill_rounds):
                 if len(self.order) >= target or not swap_lone_larger(self):
+                    break
+                self.advance(rep, target)
+            # elements farther from their own kind than the reference has them, given
+            # one of their kind beside them (not in the paper; see
+            # :mod:`strew.grow._lone_kin`)
+            for _ in range(p.refill_rounds):
+                if len(self.order) >= target or not reseed_lone_kin(self):
                     break
                 self.advance(rep, target)
         if self.mode_code == 2 and self.tile is None:
