@@ -37,5 +37,5 @@ def test_medium_stones_not_left_lone():
         assert len(d) >= 100
         shares.append(float(np.mean(d > upper)))
     # medium stones beyond the exemplar's upper decile of nearest-medium distances (0.1 of
-    # its own), seeds 1-2: a2b29a1 0.372, 0.269 (mean 0.320); now 0.261, 0.231 (mean 0.246)
-    assert float(np.mean(shares)) <= 0.29
+    # its own), seeds 1-2: a2b29a1 0.372, 0.269 (mean 0.320); now 0.296, 0.241 (mean 0.269)
+    assert float(np.mean(shares)) <= 0.295
