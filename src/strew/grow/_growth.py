@@ -1008,11 +1008,9 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         """
         return sum(self.seed_empty_slots(s) for s in list(self.order) if self.state[s] == ELEMENT)
 
-    def seed_empty_slots(self, s: int, only_void: bool = False) -> int:
-        """Seeds at the slots of element ``s``'s ring with no object within half the
-        slot's distance, that neither crowd their kind nor cross an edge or the
-        boundary; how many (:meth:`refill`, and :func:`._void_holes.reseed_voids` with
-        ``only_void``: void kinds only, and inside the domain)."""
+    def ring_slots(self, s: int):
+        """The slots of element ``s``'s reference ring, placed in its frame: ``(kind, rx,
+        ry, cx, cy)`` per slot, the ring offset and the slot's position (§5.2)."""
         rings = self.rings
         a = int(self.refslot[s])
         n_ring = int(rings["n"][a])
@@ -1020,13 +1018,20 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         th = float(self.frame[s])
         c, sn = math.cos(th), math.sin(th)
         x, y = self.xy[s]
-        made = 0
         for j in range(n_ring):
-            kind = int(rings["kind"][a, j])
+            rx, ry = float(rel[j, 0]), float(rel[j, 1])
+            yield int(rings["kind"][a, j]), rx, ry, x + c * rx - sn * ry, y + sn * rx + c * ry
+
+    def seed_empty_slots(self, s: int, only_void: bool = False) -> int:
+        """Seeds at the slots of element ``s``'s ring with no object within half the
+        slot's distance, that neither crowd their kind nor cross an edge or the
+        boundary; how many (:meth:`refill`, and :func:`._void_holes.reseed_voids` with
+        ``only_void``: void kinds only, and inside the domain)."""
+        x, y = self.xy[s]
+        made = 0
+        for kind, rx, ry, cx, cy in self.ring_slots(s):
             if only_void and (kind < 0 or not self.void_kind[kind]):
                 continue
-            rx, ry = float(rel[j, 0]), float(rel[j, 1])
-            cx, cy = x + c * rx - sn * ry, y + sn * rx + c * ry
             if only_void and not self.in_domain(cx, cy):
                 continue
             if self.near(cx, cy, max(self.l_short, 0.5 * math.hypot(rx, ry))):

@@ -138,19 +138,11 @@ def reseed_lone_kin(g) -> int:
 def _seed_kin_slots(g, s: int, kind: int) -> int:
     """Step 1: the free slots of element ``s``'s ring of its own kind, as seeds (as
     ``_Grower.seed_empty_slots``)."""
-    rings = g.rings
-    a = int(g.refslot[s])
-    n_ring = int(rings["n"][a])
-    rel = rings["rel"][a, :n_ring]
-    th = float(g.frame[s])
-    c, sn = math.cos(th), math.sin(th)
     x, y = g.xy[s]
     made = 0
-    for j in range(n_ring):
-        if int(rings["kind"][a, j]) != kind:
+    for k, rx, ry, cx, cy in g.ring_slots(s):
+        if k != kind:
             continue
-        rx, ry = float(rel[j, 0]), float(rel[j, 1])
-        cx, cy = x + c * rx - sn * ry, y + sn * rx + c * ry
         if not g.in_domain(cx, cy):
             continue
         # (a slot held only by elements of smaller kinds is left alone: taking them out
