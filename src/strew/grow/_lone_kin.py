@@ -163,7 +163,7 @@ def _snug_kin(g, s: int, a: int) -> int:
     """Step 2: a seed of kind ``a`` at a reference offset between two elements of kind
     ``a`` (the shorter half) from ``s``, at the free spot with most room, joined to
     ``s`` alone and placed at once; 1 if one placed."""
-    from ._lone_larger import _match_and_place, _snug_offsets
+    from ._lone_larger import _place_joined, _snug_offsets
 
     off = _snug_offsets(g, a, a)
     if len(off) == 0:
@@ -179,11 +179,6 @@ def _snug_kin(g, s: int, a: int) -> int:
         room.append((-dmin, px, py))
     room.sort()
     for _, px, py in room[:KIN_TRIES]:
-        t = g.new_object(px, py, a)
-        if g.crosses_edges(t, (px, py), s, g.xy[s]):
-            g.kill(t)
-            continue
-        g.add_edge(t, s)
-        if _match_and_place(g, t):
+        if _place_joined(g, px, py, a, s):
             return 1
     return 0

@@ -215,6 +215,18 @@ def _match_and_place(g, s: int) -> bool:
     return False
 
 
+def _place_joined(g, px: float, py: float, a: int, j: int) -> bool:
+    """A seed of kind ``a`` at ``(px, py)`` joined to element ``j`` alone, matched and
+    placed at once (:func:`_match_and_place`); one whose edge to ``j`` crosses an edge
+    is killed."""
+    s = g.new_object(px, py, a)
+    if g.crosses_edges(s, (px, py), j, g.xy[j]):
+        g.kill(s)
+        return False
+    g.add_edge(s, j)
+    return _match_and_place(g, s)
+
+
 def _swap_one(g, o: int, a: int) -> bool:
     x, y = g.xy[o]
     nbs = sorted(g.adj[o])
@@ -229,12 +241,7 @@ def _swap_one(g, o: int, a: int) -> bool:
         # exemplar has one of kind ``a`` next to one of that neighbour's kind; joined to
         # that neighbour alone, so that the placement keeps the spot (``_fit_position``
         # moves a seed with two placed neighbours or more)
-        s = g.new_object(px, py, a)
-        if g.crosses_edges(s, (px, py), j, g.xy[j]):
-            g.kill(s)
-            continue
-        g.add_edge(s, j)
-        if _match_and_place(g, s):
+        if _place_joined(g, px, py, a, j):
             return True
     s = g.new_object(x, y, a)
     for j in nbs:
