@@ -43,12 +43,14 @@ from ._relax import relax_positions
 __all__ = ["close_holes"]
 
 
-def close_holes(g, limit: int | None = None, push: bool = False) -> int:
+def close_holes(g, limit: int | None = None, push: bool = False, each=None) -> int:
     """An element put into each hole (empty circle wider than ``flow_hole_min`` mean
     edges) where relaxing the elements around it makes room; how many. With ``limit``,
     no hole is filled once there are that many elements. With ``push`` (the last call,
     after the band's network pass and the plain call), each hole is filled with the
-    outlines pushed out of the new element's way instead (:func:`_push_fill`)."""
+    outlines pushed out of the new element's way instead (:func:`_push_fill`). With
+    ``each``: called with no argument before each try (its mark), and with that mark
+    after a fill; a fill it answers False for is not counted (``each`` has undone it)."""
     p = g.p
     lo = max(p.flow_hole_min * g.l, 1.1 * reference_gap(g))
     wide = _wide_circles(g, lo)
@@ -72,7 +74,10 @@ def close_holes(g, limit: int | None = None, push: bool = False) -> int:
         near = g.near(cx, cy, lo, (ELEMENT,))
         if near or not g.in_domain(cx, cy):
             continue
+        mark = None if each is None else each()
         if _close_one(g, cx, cy, push):
+            if each is not None and not each(mark):
+                continue
             made += 1
             done.append((cx, cy))
     return made
