@@ -78,7 +78,7 @@ for case in a.cases.split(";"):
     dstart = np.hypot(*(xy[idx] - s0).T) / sp
     rad = np.hypot(*xy[idx].T) / sp  # distance to the arcs' centre (0, 0), spacings
 
-    def split(v, edges):
+    def split(v, edges, bad=bad):
         rows = []
         for lo_, hi_ in zip(edges[:-1], edges[1:]):
             m = (v >= lo_) & (v < hi_)

@@ -24,7 +24,7 @@ class _G:
     class p:
         flow_hole_min = 0.7
 
-    order: list = []
+    order = ()
 
     def near(self, *a):
         return []
