@@ -1980,6 +1980,11 @@ def grow(
         state.wrap()
         fill_partners(state, None if max_elements is None else max(0, max_elements - state.n))
         state.unwrap()
+        from ._swap import fill_swapped  # (lazy: it imports this module)
+
+        state.wrap()
+        fill_swapped(state)
+        state.unwrap()
     if state.n > start_n and FILL_HOLES:
         state.wrap()  # a periodic state: the holes across the tile's edges are seen
         fill_holes(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
