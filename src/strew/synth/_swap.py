@@ -68,7 +68,8 @@ def fill_swapped(state: SynthState) -> int:
     sk = prep.skind[state.src[:n]]
     vis = ~prep.void[state.src[:n]]
     ins = shapely.contains_xy(inner, state.pos[:n, 0], state.pos[:n, 1]) & vis & ~state.fixed[:n]
-    want = np.floor(dens * float(inner.area)).astype(np.int64)
+    # (kinds of other exemplars of a palette have no density here: NaN, never read)
+    want = np.floor(np.where(np.isfinite(dens), dens, 0.0) * float(inner.area)).astype(np.int64)
     have = np.bincount(sk[ins], minlength=len(dens))
     short = [k for k in kinds if have[k] < want[k]]
     over = [k for k in kinds if have[k] > want[k]]
