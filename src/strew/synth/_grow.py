@@ -1970,6 +1970,11 @@ def grow(
         state.wrap()
         trade_far_small(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
         state.unwrap()
+        from ._shell import fill_beside_far_small  # (lazy: it imports this module)
+
+        state.wrap()
+        fill_beside_far_small(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
+        state.unwrap()
     if state.n > start_n and ROOM_FILL:
         state.wrap()
         fill_room(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
