@@ -1994,6 +1994,10 @@ def grow(
         state.wrap()  # a periodic state: the holes across the tile's edges are seen
         fill_holes(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
         state.unwrap()
+    if state.n > start_n and not len(state.brush_radii):
+        from ._thin import thin_small  # (lazy: it imports _displace, which imports this module)
+
+        thin_small(state)
     rep.done(state.n - start_n)
     return state.n - start_n
 
