@@ -1997,7 +1997,7 @@ def grow(
     if state.n > start_n and not len(state.brush_radii):
         from ._thin import thin_small  # (lazy: it imports _displace, which imports this module)
 
-        thin_small(state)
+        thin_small(state, since=start_n)
     rep.done(state.n - start_n)
     return state.n - start_n
 

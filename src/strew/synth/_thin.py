@@ -23,7 +23,7 @@ scale must exceed the exemplar's before :func:`thin_small` acts (the exemplar's 
 sampling noise of the share does not say the output is wrong)."""
 
 
-def thin_small(state: SynthState) -> int:
+def thin_small(state: SynthState, since: int = 0) -> int:
     """Remove output elements of the small end of a one-kind exemplar's scales where
     the output holds more of them than the exemplar's scale mix and its density allow,
     the most crowded first; returns the number removed.
@@ -52,7 +52,8 @@ def thin_small(state: SynthState) -> int:
     - THIN_Z sqrt(N F (1 - F))``; removing ``D / (1 - F)`` of them leaves the share at
     ``F``. The largest such count (at most ``E``) is removed among the elements at or
     below its ``v``: each time the closest pair of centres with such an element, its
-    smaller one. No random choice.
+    smaller one. Only elements added since index ``since`` (this call of :func:`grow`)
+    are taken out: a filler's earlier strokes stay. No random choice.
 
     Measured (``python benchmarks/synth_variants.py --harder --only stones``): h2s7
     seeds 1-6 density 0.084-0.106 -> 0.031-0.037 of the exemplar's (2/6 failing -> 0;
@@ -106,7 +107,7 @@ def thin_small(state: SynthState) -> int:
     R_ = int(min(np.floor(R[b]), E))
     if R_ <= 0:
         return 0
-    cand = ins & (sc <= vals[b])
+    cand = ins & (sc <= vals[b]) & (np.arange(n) >= since)
     vis = ~prep.void[src]
     keep = np.ones(n, bool)
     for _ in range(R_):
@@ -118,5 +119,5 @@ def thin_small(state: SynthState) -> int:
         if not np.isfinite(d[i]):
             break
         p, q = int(idx[i]), int(j[i])
-        keep[q if cand[q] and sc[q] < sc[p] else p] = False
+        keep[q if cand[q] and sc[q] < sc[p] else p] = False  # p is a candidate
     return state.remove(~keep)
