@@ -105,7 +105,7 @@ def main() -> None:
     L._swap_one = swap_one
     mk = _harder_suite()
     name, i, v = o.row.split(":")
-    ex = mk.make_exemplar(name, rng=int(v), **HARDER[name][int(i)])
+    ex = mk.make_exemplar(name, rng=int(v), **(HARDER[name][int(i)] if i != "suite" else {}))  # "suite": the default parameters
     A, B = ex.kinds.index(o.a), ex.kinds.index(o.b)
     st["A"] = A
     _, de = nn_to(ex, A, B, o.margin)

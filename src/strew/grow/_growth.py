@@ -118,6 +118,19 @@ DISC_BOTH_WAYS = True
 #: ... grit's too (a smaller kind the larger one's hollows hold across)
 DISC_BOTH_WAYS_GRIT = False
 
+#: kinds of three or more sizes: a kind two size levels or more above the smallest one,
+#: ringed by it alone and snug (``DISC_RINGED_SNUG``, ``DISC_RINGED_SHARE``), keeps this
+#: share of the reference's least gap between their scaled bounding discs from it, both
+#: ways (see ``_Grower._pair_gaps``); None: no such rule
+DISC_RINGED: float | None = 0.9
+#: ... snug: the median of the larger kind's least disc gaps to the smaller within this
+#: share of the smaller kind's scaled radius of the least gap
+DISC_RINGED_SNUG = 0.1
+#: ... ringed by it alone: at least this share of the larger kind's contacts with other
+#: kinds (disc gaps under the least gap plus the smaller kind's scaled diameter) are of
+#: the smaller kind
+DISC_RINGED_SHARE = 0.85
+
 
 @dataclass
 class GrowParams:
@@ -654,6 +667,11 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
           other disc rules between visible kinds of different sizes hold both ways
           too, grit's excepted
           (:data:`DISC_BOTH_WAYS`). See the comments where they are set.
+        - bounding discs, a kind ringed by one two size levels or more below it
+          (:data:`DISC_RINGED`): where the larger kind's contacts with other kinds are
+          nearly all of the smaller kind, snug at about the reference's least disc gap,
+          ``DISC_RINGED`` of that gap, both ways (large stones grown from small stones'
+          rings into a field of them; see the comment where it is set).
 
         Fixed mode only (a turned element's outline comes nearer its neighbours').
         """
@@ -788,6 +806,47 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 for k2 in range(n):
                     if not void[k1] and not void[k2] and self.size_level[k1] < self.size_level[k2] and np.isfinite(self.pair_disc[k1, k2]) and (DISC_BOTH_WAYS_GRIT or not grit_pair[k1, k2]) and not (np.isfinite(wide_gap[k1, k2]) and not wide_two[k1, k2]):
                         self.pair_disc[k2, k1] = max(self.pair_disc[k2, k1], self.pair_disc[k1, k2])
+        # bounding discs, a kind ringed by a kind two size levels or more below it
+        # (DISC_RINGED): DISC_RINGED of the reference's least gap between their scaled
+        # discs, both ways. Not in the paper (§5.2 tests outlines; §5.1's size priority
+        # grows the larger elements first, but where the reference rings each one with
+        # the smaller kind alone they come from the smaller kind's rings, placed into a
+        # field of smaller elements already there, which the outline test lets come to
+        # any gap): three sizes 400:15:15 (--harder h12; 202 of 228 large stones from
+        # small stones' rings, benchmarks/grw14s_origin.py) had every large stone's
+        # nearest small one short (disc gaps min/q10/q30/q50 0.00/0.10/0.41/0.88 against
+        # the reference's 1.20/1.22/1.25/1.45; nn[large>small] 0.082-0.106 against
+        # 0.058-0.074, s7 and s8 seeds 1-2). Only where the larger kind's contacts with
+        # other kinds are DISC_RINGED_SHARE or more of the smaller kind (h12 0.94-0.97)
+        # and snug at about the least gap (DISC_RINGED_SNUG): the fidelity suite's three
+        # sizes is as snug (0.083 of the small stones' radius) but rings its large
+        # stones with medium ones too (0.72 small; 87 of 305 large stones from small
+        # stones' rings), and there the gap pushed the small stones off the large ones
+        # at every decile (+0.02..+0.08 s at deciles 1-5) on top of the upper deciles'
+        # excess it has without (+0.13..+0.33 s at 7-9): nn[small>large] 0.139-0.150
+        # against 0.127 on seeds 1, 2, 5 (benchmarks/grw14w_diag.py). Not for two size
+        # levels (two kinds: each larger element is ringed by the smaller kind alone)
+        if DISC_RINGED is not None and len(np.unique(self.size_level[~void])) >= 3:
+            for k1 in range(n):
+                for k2 in range(n):
+                    if void[k1] or void[k2] or self.size_level[k2] - self.size_level[k1] < 2 or grit_pair[k1, k2]:
+                        continue
+                    m = ((self.ex_kind[:, None] == k1) & (self.ex_kind[qq] == k2)) | ((self.ex_kind[:, None] == k2) & (self.ex_kind[qq] == k1))
+                    big = self.ex_kind == k2
+                    if not m.any() or not big.any():
+                        continue
+                    lo = float(dg[m].min())
+                    near = np.where(self.ex_kind[qq] == k1, dg, np.inf)[big].min(axis=1)
+                    near = near[np.isfinite(near)]
+                    if lo < 0 or len(near) == 0:
+                        continue
+                    r1 = float(self.kind_radius[k1]) * float(np.median(np.abs(ex.scale[self.ex_kind == k1])))
+                    other = (dg[big] < lo + 2.0 * r1) & (self.ex_kind[qq][big] != k2)
+                    share = float(np.sum(other & (self.ex_kind[qq][big] == k1))) / max(1, int(other.sum()))
+                    if float(np.median(near)) - lo <= DISC_RINGED_SNUG * r1 and share >= DISC_RINGED_SHARE:
+                        g = DISC_RINGED * lo
+                        self.pair_disc[k1, k2] = max(self.pair_disc[k1, k2], g)
+                        self.pair_disc[k2, k1] = max(self.pair_disc[k2, k1], g)
         # bounding discs, the smallest kind beside itself where kinds differ in size:
         # GAP_SMALLEST of the reference's least gap between their scaled discs, where
         # that is not negative (drawn apart). Not in the paper (see the docstring):
