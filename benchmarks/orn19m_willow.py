@@ -86,12 +86,12 @@ def make(args) -> None:
         if args.untiled:
             from strew.ornament import grow_ornament
 
-            arr = grow_ornament(args.pattern, strew.Region.rectangle(side, side), rng=1)
+            arr = grow_ornament(args.pattern, strew.Region.rectangle(side, side), rng=args.seed)
             halo = tile / 4
             tcol = np.full(len(arr), -1)
             grp = np.full(len(arr), -1)
         else:
-            arr = T.tiled("ornament", args.pattern, (side, side), tile_size=tile, seed=1)
+            arr = T.tiled("ornament", args.pattern, (side, side), tile_size=tile, seed=args.seed)
             halo = float(arr.meta["world"]["halo"])
             tcol = np.asarray(arr["tile"])
             grp = np.asarray(arr["ornament_group"], np.int64)
@@ -303,6 +303,7 @@ def main() -> None:
     m.add_argument("--tiles", default="100,120")
     m.add_argument("--pattern", default="willow")
     m.add_argument("--untiled", action="store_true")
+    m.add_argument("--seed", type=int, default=1, help="the world's seed (tiled) or rng (untiled)")
     m.add_argument("--set", action="append", default=[])
     m.add_argument("--overlaps", action="store_true", help="count overlapping pairs (worlds_strips.py's test; -1 without)")
     a = sub.add_parser("analyze")
