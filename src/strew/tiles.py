@@ -607,7 +607,7 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     col = _KEEPS_GROUPS.get(job.method)
     if col is None or col not in arr.columns or not len(arr):
         return keep
-    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, keep_whole, late_phase, parent_rows
+    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, keep_ancestors, keep_whole, late_phase, parent_rows
 
     _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
     w = np.ones(len(arr))
@@ -640,6 +640,10 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         # the later phases' elements (flowers' buds) near a later tile are left to it
         placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
     parent = _parent_rows(arr)
+    if later:
+        # a success this tile keeps by its own rows is not dropped for a dropped ancestor's
+        # sake where one of its rows lies beyond every later tile's region (keep_ancestors)
+        placed = keep_ancestors(arr["element"], parent, arr[col], placed, d >= _CUT_REACH * job.halo)
     kept = keep_whole(arr["element"], parent, arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
         # the successes whose empty circle an element dropped here had bounded are left to
@@ -728,7 +732,8 @@ _CUT_ROUNDS = 1
 # how near a later tile (in halos) the successes of cut_touching lie
 _CUT_BAND = 0.5
 # how near a later tile (in halos) every row that cut_touching hands over lies: the later
-# tile refills only its grown rectangle, a halo into this tile
+# tile refills only its grown rectangle, a halo into this tile; a success with a row
+# farther keeps its ancestors (strew.ornament._context.keep_ancestors)
 _CUT_REACH = 0.9
 
 

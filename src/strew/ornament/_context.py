@@ -169,6 +169,48 @@ def keep_whole(element: Any, parent: Any, group: Any, placed: np.ndarray) -> np.
     return ok[inv]
 
 
+def keep_ancestors(element: Any, parent: Any, group: Any, placed: np.ndarray, far: np.ndarray) -> np.ndarray:
+    """(n,) bool: ``placed`` with the rows of every ancestor of a lost success set, so that
+    :func:`keep_whole` keeps that success. A success is lost where :func:`keep_whole`
+    drops it only for an ancestor's sake (its own rows vote it placed) and one of its rows
+    is ``far`` (beyond every later tile's region, strew.tiles._keep_groups): no tile grows
+    there again, and its subtree left a hole in the finished tile.
+
+    Wong et al. grow one tree of elements in one run (§4.1): a success kept with its
+    ancestors is what one run would have drawn there; the ancestors kept past the border
+    (or within half a halo of it, strew.tiles._LATE_BAND) lie in the tile's grown
+    rectangle, and the later tile grows around them as around the rest of its context.
+    Without it (d6d394e), the vase, seed 1, dropped 43 rows (hooks, teardrops) a halo or
+    more from every later tile at tile 72 and 162 at tile 84, holes in the tiles' cores
+    (benchmarks/vas19v_vines.py). Departure from the paper: the hand-over between runs is
+    ours.
+    """
+    element = np.asarray(element, np.int64)
+    parent = np.asarray(parent, np.int64)
+    group = np.asarray(group, np.int64)
+    placed = np.asarray(placed, bool)
+    if not len(group):
+        return placed.copy()
+    kept = keep_whole(element, parent, group, placed)
+    ids, inv = np.unique(group, return_inverse=True)
+    votes = np.bincount(inv, weights=placed.astype(float)) / np.bincount(inv)
+    lost = np.zeros(len(ids), bool)
+    lost[inv[~kept & np.asarray(far, bool)]] = True
+    lost &= votes >= 0.5
+    if not lost.any():
+        return placed.copy()
+    group_of = dict(zip(element.tolist(), inv.tolist()))
+    par = np.full(len(ids), -1, np.int64)
+    par[inv] = parent
+    keep_g = np.zeros(len(ids), bool)
+    for g in np.flatnonzero(lost):
+        p = group_of.get(int(par[g]), -1) if par[g] >= 0 else -1
+        while p >= 0 and p != g and not keep_g[p]:
+            keep_g[p] = True
+            g, p = p, (group_of.get(int(par[p]), -1) if par[p] >= 0 else -1)
+    return placed | keep_g[inv]
+
+
 def parent_rows(pattern: Any, records: Any) -> np.ndarray:
     """(n,) bool: the rows that draw an element of a type some rule grows from (the
     flowers' flower and bud, not their stem and leaf).
