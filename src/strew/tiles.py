@@ -607,7 +607,7 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     col = _KEEPS_GROUPS.get(job.method)
     if col is None or col not in arr.columns or not len(arr):
         return keep
-    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, cut_touching, keep_ancestors, keep_whole, late_phase, parent_rows
+    from .ornament._context import GOAL_COLUMN, PROXIES_COLUMN, anchor_rows, cut_touching, keep_ancestors, keep_whole, late_phase, parent_rows
 
     _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
     w = np.ones(len(arr))
@@ -626,6 +626,14 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         # parent's centre, where the tile drew its parent (_at_parent)
         at = _at_parent(arr, inv, tips)
         mx, my = np.where(at >= 0, x[np.maximum(at, 0)], mx), np.where(at >= 0, y[np.maximum(at, 0)], my)
+        # a success holding a row of the pattern's tile anchors (the vase's flowers, on a
+        # grid fixed in the world) is placed at those rows (anchor_rows)
+        anchors = anchor_rows(job.input, arr[PROXIES_COLUMN]).astype(float)
+        na = np.bincount(inv, weights=anchors, minlength=len(mx))
+        if na.any():
+            has = na > 0
+            mx = np.where(has, np.bincount(inv, weights=anchors * x, minlength=len(mx)) / np.maximum(na, 1), mx)
+            my = np.where(has, np.bincount(inv, weights=anchors * y, minlength=len(my)) / np.maximum(na, 1), my)
     o = _owner(mx, my, job)
     ok = (o == t.index) | np.isin(o, np.fromiter(links, np.int64, len(links)))
 

@@ -233,6 +233,34 @@ def parent_rows(pattern: Any, records: Any) -> np.ndarray:
     return np.array([bool(recs) and any(rec[0] in parents for rec in recs) for recs in records], bool)
 
 
+def anchor_rows(pattern: Any, records: Any) -> np.ndarray:
+    """(n,) bool: the rows that draw an element of one of the pattern's tile anchors (the
+    element types named by its ``tile_anchors`` attribute; none by default).
+
+    strew.tiles._keep_groups places a rule success holding such a row at the mean of these
+    rows' centres, not at its growing tip (parent_rows, strew.tiles._at_parent). The vase
+    names its flowers: a vine delivers its flower to a grid point fixed in the world (Wong
+    et al. §5, "predefined locations on the grid"), so the tile holding that grid point owns
+    the flower and the vine that brings it. Placed at its parent, a finished tile kept the
+    vines it grew from its flowers across the border to the grid points up to a halo past it,
+    and every such vine crossed the border at one place of the grid: tile 72 (seed 1), 22
+    of the 24 vines centred within 1 s of a border (the untiled control: 10), all 0-0.5 s past
+    it, where the grid's midpoints 143 = 6.5 x 22 lie next to the border 144; hooks in the
+    +-1 s strip 0.972 of the control's share. Placed at the flower (with keep_ancestors),
+    tiled / untiled control: T72 +-1 s density 0.969 -> 0.980, hook 0.972 -> 0.992, 10 vines
+    in the strip; T60 +-1 s 1.036 -> 0.973, +-2 s 1.028 -> 1.007 (benchmarks/vas19s_compare.py,
+    vas19v_vines.py). Departure from the paper: Wong et al. grow one panel in one run
+    (§4.1); this hand-over between runs is ours.
+    """
+    from ._pattern import load_pattern
+
+    pat = load_pattern(pattern)
+    names = set(getattr(pat, "tile_anchors", ()) or ())
+    if not names:
+        return np.zeros(len(records), bool)
+    return np.array([bool(recs) and any(rec[0] in names for rec in recs) for recs in records], bool)
+
+
 def late_phase(pattern: Any, phase: Any) -> np.ndarray:
     """(n,) bool: rows placed after the pattern's first phase (§5's state preconditions:
     the flowers' buds), False for a pattern without phases."""

@@ -45,6 +45,11 @@ pattern = Pattern(
     draw_order=["vine", "hook", "lotus", "peony", "teardrop"],
 )
 
+# a tiled world (strew.tiles) places a vine's success at the flower it delivers, on the
+# grid fixed in the world: the tile holding the grid point owns it (anchor_rows in
+# strew.ornament._context; not in the paper, which grows one panel in one run)
+pattern.tile_anchors = ("lotus", "peony")
+
 pattern.element("seed", Point)
 pattern.element("vine", Bezier, depth=0)
 pattern.element("lotus", Circle)
