@@ -52,6 +52,28 @@ def _snug_sites_owned(big: np.ndarray, rb: np.ndarray, other: np.ndarray, ro: np
     return np.concatenate([m + h[:, None] * n, m - h[:, None] * n]), np.tile(ii[ok], 2)
 
 
+def _fits_at(
+    state: SynthState, tree: cKDTree, n0: int, reach: float, cand: np.ndarray, c: np.ndarray, wall_d: float, budget: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Which candidate stones fit at one site ``c``, shape (2,).
+
+    The output's elements within ``reach`` of ``c`` (``tree`` holds the first ``n0``;
+    those added since are all tested) as indices ``near``, shape (m,), their offsets
+    ``off``, shape (m, 2), distances ``dist`` and exemplar sources ``src``, shape (m,),
+    and ``fits``, shape (len(cand),): the candidate keeps its collision radius plus each
+    neighbour's, and the kinds' ``min_dist`` (§4.1), from every one, lies within
+    ``wall_d`` of the region's edge, and its kind still has ``budget``.
+    """
+    prep = state.prep
+    near = np.r_[np.asarray(tree.query_ball_point(c, reach), np.int64), np.arange(n0, state.n)]
+    off = state.pos[near] - c
+    dist = np.hypot(off[:, 0], off[:, 1])
+    src = state.src[near]
+    lim = np.maximum(prep.rc[cand][:, None] + prep.rc[src][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[src][None, :]])
+    fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall_d) & (budget[prep.skind[cand]] > 0)
+    return near, off, dist, src, fits
+
+
 def fill_beside_largest(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar's saturated smallest stones (``_grow._saturated_candidates(prep,
     smallest=True)``) into the places snug against an output element of its largest
@@ -159,12 +181,7 @@ def fill_beside_largest(state: SynthState, room: int | None = None, since: int =
         if not budget.any():
             break
         c = pts[h]
-        near_h = np.r_[np.asarray(tree.query_ball_point(c, reach2), np.int64), np.arange(n0, state.n)]
-        off = state.pos[near_h] - c
-        dist = np.hypot(off[:, 0], off[:, 1])
-        s_ = state.src[near_h]
-        lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
-        fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wd[h]) & (budget[prep.skind[cand]] > 0)
+        near_h, off, dist, s_, fits = _fits_at(state, tree, n0, reach2, cand, c, float(wd[h]), budget)
         if not fits.any():
             continue
         ids, order = _ranked_fits(prep, cand, fits, par, par_d, near_h, off, dist, s_, rbar)
@@ -316,12 +333,7 @@ def fill_beside_far_small(state: SynthState, room: int | None = None, since: int
         if served[own[h]]:
             continue
         c = pts[h]
-        near_h = np.r_[np.asarray(tree.query_ball_point(c, reach2), np.int64), np.arange(n0, state.n)]
-        off = state.pos[near_h] - c
-        dist = np.hypot(off[:, 0], off[:, 1])
-        s_ = state.src[near_h]
-        lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
-        fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wd[h]) & (budget[prep.skind[cand]] > 0)
+        near_h, off, dist, s_, fits = _fits_at(state, tree, n0, reach2, cand, c, float(wd[h]), budget)
         if not fits.any():
             continue
         dm = mtree.query(c)[0]
