@@ -7,6 +7,8 @@ of §5.1, §7).
 
 from __future__ import annotations
 
+import heapq
+
 import numpy as np
 import shapely
 from scipy.spatial import cKDTree
@@ -108,16 +110,48 @@ def thin_small(state: SynthState, since: int = 0) -> int:
     if R_ <= 0:
         return 0
     cand = ins & (sc <= vals[b]) & (np.arange(n) >= since)
-    vis = ~prep.void[src]
+    vis = np.flatnonzero(~prep.void[src])
+    alive = np.zeros(n, bool)
+    alive[vis] = True
+    # each visible element's nearest other visible one, kept up to date as elements go:
+    # only the candidates whose nearest went are asked again (the tree stays; a heap of (distance,
+    # index) pops the closest candidate, the lowest index among equals, as a scan would)
+    tree = cKDTree(pos[vis])
+    d0, j0 = tree.query(pos[vis], k=2)
+    nn_d = np.full(n, np.inf)
+    nn_j = np.full(n, -1, np.int64)
+    nn_d[vis], nn_j[vis] = d0[:, 1], vis[j0[:, 1]]
+    heap = [(float(nn_d[i]), int(i)) for i in np.flatnonzero(cand & alive)]
+    heapq.heapify(heap)
+
+    def nearest(a: int) -> None:
+        k = 8
+        while True:
+            k = min(k, len(vis))
+            dd, jj = tree.query(pos[a], k=k)
+            jj = vis[np.atleast_1d(jj)]
+            ok = alive[jj] & (jj != a)
+            if ok.any():
+                f = int(np.argmax(ok))
+                nn_d[a], nn_j[a] = float(np.atleast_1d(dd)[f]), int(jj[f])
+                return
+            if k == len(vis):
+                nn_d[a], nn_j[a] = np.inf, -1
+                return
+            k *= 2
+
+    removed = 0
+    while removed < R_ and heap:
+        d, p = heapq.heappop(heap)
+        if not alive[p] or d != nn_d[p] or not np.isfinite(d):
+            continue
+        q = int(nn_j[p])
+        r = q if cand[q] and sc[q] < sc[p] else p  # p is a candidate
+        alive[r] = False
+        removed += 1
+        for a in np.flatnonzero(alive & cand & (nn_j == r)).tolist():
+            nearest(a)
+            heapq.heappush(heap, (float(nn_d[a]), a))
     keep = np.ones(n, bool)
-    for _ in range(R_):
-        idx = np.flatnonzero(keep & vis)
-        d, j = cKDTree(pos[idx]).query(pos[idx], k=2)
-        d, j = d[:, 1], idx[j[:, 1]]
-        d = np.where(cand[idx], d, np.inf)
-        i = int(np.argmin(d))
-        if not np.isfinite(d[i]):
-            break
-        p, q = int(idx[i]), int(j[i])
-        keep[q if cand[q] and sc[q] < sc[p] else p] = False  # p is a candidate
+    keep[vis[~alive[vis]]] = False
     return state.remove(~keep)
