@@ -229,8 +229,12 @@ def parent_rows(pattern: Any, records: Any) -> np.ndarray:
     from ._pattern import load_pattern
 
     pat = load_pattern(pattern)
-    parents = {r.parent for r in pat.rules}
-    return np.array([bool(recs) and any(rec[0] in parents for rec in recs) for recs in records], bool)
+    return _rows_of(records, {r.parent for r in pat.rules})
+
+
+def _rows_of(records: Any, names: set) -> np.ndarray:
+    """(n,) bool: the rows whose proxy records draw an element of a type in ``names``."""
+    return np.array([bool(recs) and any(rec[0] in names for rec in recs) for recs in records], bool)
 
 
 def anchor_rows(pattern: Any, records: Any) -> np.ndarray:
@@ -258,7 +262,7 @@ def anchor_rows(pattern: Any, records: Any) -> np.ndarray:
     names = set(getattr(pat, "tile_anchors", ()) or ())
     if not names:
         return np.zeros(len(records), bool)
-    return np.array([bool(recs) and any(rec[0] in names for rec in recs) for recs in records], bool)
+    return _rows_of(records, names)
 
 
 def late_phase(pattern: Any, phase: Any) -> np.ndarray:
