@@ -25,18 +25,18 @@ import numpy as np
 import shapely
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
-from grow_variants import HARDER, _harder_suite  # noqa: E402
+from grow_variants import HARDER, _harder_suite
 
-import strew._fidelity as F  # noqa: E402
-import strew.synth._displace as DP  # noqa: E402
-import strew.synth._farmix as FM  # noqa: E402
-import strew.synth._grow as G  # noqa: E402
-import strew.synth._pebbles as PB  # noqa: E402
-import strew.synth._shell as SH  # noqa: E402
-import strew.synth._swap as SW  # noqa: E402
-import strew.synth._thin as TH  # noqa: E402
-from strew import Region  # noqa: E402
-from strew.synth import synthesize  # noqa: E402
+import strew._fidelity as F
+import strew.synth._displace as DP
+import strew.synth._farmix as FM
+import strew.synth._grow as G
+import strew.synth._pebbles as PB
+import strew.synth._shell as SH
+import strew.synth._swap as SW
+import strew.synth._thin as TH
+from strew import Region
+from strew.synth import synthesize
 
 LOG = []
 ORIG = {}
@@ -79,7 +79,7 @@ for mod, name in [(G, "_complete_anchor_rings"), (DP, "fill_displaced"), (SH, "f
     wrap(mod, name)
 
 # origin of growth's copies: wrap state.add during the loop
-from strew.synth._state import SynthState  # noqa: E402
+from strew.synth._state import SynthState
 
 ADDS = []
 _add = SynthState.add

@@ -1,5 +1,7 @@
 """Helper syn13a: which audit exemplars have three size classes or more (``Prepared.size_class`` of visible
-selected elements), i.e. which outputs the largest-class ownership rule can change.
+selected elements), and which of them the largest-class ownership rule acts on (``_grow._top_class``: three
+classes or more and the largest covering less than ``OWN_COVER`` of the inner frame): only their outputs
+can change.
 
     python benchmarks/syn13a_static.py
 """
@@ -8,13 +10,15 @@ import sys
 import numpy as np
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
-import _variants  # noqa: E402
-from grow_variants import HARDER, _harder_suite  # noqa: E402
+import _variants
+from grow_variants import HARDER, _harder_suite
 
-from strew.synth._api import new_state  # noqa: E402
+from strew.synth import _grow as G
+from strew.synth._api import new_state
 
 mk = _harder_suite()
 hit = []
+act = []
 total = 0
 for name in mk.EXEMPLARS:
     sets = [("fid", 0, {})] + [(f"v{v}", v, {}) for v in (1, 2, 3)]
@@ -29,5 +33,9 @@ for name in mk.EXEMPLARS:
         total += 1
         if n >= 3:
             hit.append(f"{name}:{lab}")
+        if G._top_class(prep).any():
+            act.append(f"{name}:{lab}")
 print(f"{total} exemplars; three size classes or more: {len(hit)}")
 print(" ".join(hit))
+print(f"the rule acts on {len(act)}:")
+print(" ".join(act))

@@ -1691,6 +1691,98 @@ def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visibl
     return hard
 
 
+OWN_CLASSES = 3
+"""Exemplars of at least this many size classes (visible, selected) place an element of
+their largest class only from the seed nearest to it (see :func:`_not_owned`; 0: off)."""
+
+OWN_COVER = 0.22
+"""... and only where that class covers less than this share of the exemplar's inner
+frame (:func:`_top_cover`; see :func:`_not_owned`): the middle of the gap 0.20-0.24
+between the three sizes exemplars whose large stones growth over-places and those it
+does not."""
+
+
+def _top_class(prep) -> np.ndarray:
+    """(n,) bool: exemplar elements of their exemplar's largest size class, in exemplars
+    of :data:`OWN_CLASSES` size classes or more (visible selected elements). Computed
+    once per ``prep`` and selection."""
+    key = (len(prep.kind), OWN_CLASSES, OWN_COVER, np.asarray(prep.selected_elements).tobytes())
+    got = getattr(prep, "_top_class", None)
+    if got is not None and got[0] == key:
+        return got[1]
+    out = np.zeros(len(prep.kind), bool)
+    sel = prep.selected_elements & ~prep.void
+    cover = _top_cover(prep)
+    for s_ in np.unique(prep.source[sel]) if OWN_CLASSES > 0 else ():
+        mine = sel & (prep.source == s_)
+        cls = np.unique(prep.size_class[mine])
+        if len(cls) >= OWN_CLASSES and cover[s_] < OWN_COVER:
+            out[mine & (prep.size_class == cls[-1])] = True
+    prep._top_class = (key, out)
+    return out
+
+
+def _top_cover(prep) -> np.ndarray:
+    """(exemplars,) float: the share of each exemplar's inner frame (its domain shrunk by
+    two of the largest collision radii, as ``_displace._inner_density``) that the
+    bounding discs of its largest size class cover: that class's inner-frame density
+    times its mean disc area (nan: no inner frame)."""
+    from ._displace import _inner_density  # (lazy: _displace imports this module)
+
+    dens = _inner_density(prep, 2.0 * float(prep.rc.max()))
+    out = np.full(len(prep.names), np.nan)
+    sel = prep.selected_elements & ~prep.void
+    for s_ in np.unique(prep.source[sel]):
+        mine = np.flatnonzero(sel & (prep.source == s_))
+        top = mine[prep.size_class[mine] == prep.size_class[mine].max()]
+        kinds = np.unique(prep.skind[top])
+        out[s_] = float(np.sum(dens[kinds]) * np.mean(np.pi * prep.r[top] ** 2))
+    return out
+
+
+def _not_owned(prep, seed_pos: np.ndarray, seed_of: np.ndarray, ppos: np.ndarray, exv: np.ndarray) -> np.ndarray:
+    """(P,) bool: proposals of an exemplar's largest size class (:func:`_top_class`)
+    that stand nearer another seed of this iteration than the seed whose copy brought
+    them; :func:`grow` does not place them.
+
+    Departure from §5.1, the counterweight of placing the copies of all seeds largest
+    class first (``_kernels.place_proposals``, itself a departure for several sizes):
+    seeds are only 0.75 r-bar apart, so the copies of several seeds overlap at every
+    point, and with the largest class placed first a large element any of them brings
+    wins its place; the largest class then grows at the rate of the union of the
+    copies, not of one copy. Measured (three sizes --harder, 3.5x, seed 1; ``python
+    benchmarks/syn13a_stages.py``): 47-48 % of the large stones growth placed stood
+    nearer another seed than their own (h4s7 130 of 274, h3s8 263 of 562, h0s7 117 of
+    250); the large stones' density away from the frame right after growth was 1.24 /
+    1.31 / 1.44 of the exemplar's inner-frame density (no later pass removes one), and
+    the medium ones of h4s7 0.83. Each place now takes its largest-class element from
+    its nearest seed's copy, as a place takes its content from one copy in the paper's
+    seed-by-seed generation. Only the largest class: with every class owned, h4s7's
+    medium stones fell further (nn[medium>medium] 0.051 -> 0.067).
+
+    Only where the largest class covers less than ``OWN_COVER`` of the inner frame
+    (:func:`_top_cover`): where it covers more, the large stones that overlapping
+    copies bring collide with each other, which caps the union. Over the 29 three
+    sizes exemplars of --harder and the fidelity suite (d67a7c3, seed 1; ``python
+    benchmarks/syn13a_cover.py``) the large stones after growth stood at 1.18-2.53 of
+    their density at covers below 0.18 (13 exemplars), 1.15-1.31 at 0.18-0.20 (3), and
+    0.86-1.18 at 0.24 or more (13; the suite's 0.299: 0.947); none of the 42 three
+    sizes exemplars of the audits has a cover between 0.20 and 0.24. With the
+    rule on every exemplar of three classes, the suite's large stones fell to
+    0.88-0.90 after growth and its 50x canvas (``benchmarks/seam13n_windows.py``,
+    seeds 1-8) failed 17 windows against 1, each in a window poor in large stones.
+    """
+    top = _top_class(prep)[exv]
+    if not top.any():
+        return np.zeros(len(exv), bool)
+    rows = np.flatnonzero(top)
+    d_own = np.hypot(*(ppos[rows] - seed_pos[seed_of[rows]]).T)
+    d_near = cKDTree(seed_pos).query(ppos[rows], k=1)[0]
+    out = np.zeros(len(exv), bool)
+    out[rows] = d_own > d_near + 1e-9
+    return out
+
+
 LARGER_IN_CLASS = 1.2
 """A kind whose mean bounding radius is at least this many times the smallest kind's
 of its size class is placed before the others of the class (see :func:`_larger_in_class`)."""
@@ -1900,6 +1992,10 @@ def grow(
                 okp[sub[hard]] = False
             if not okp.any():
                 continue
+            if phase == 0 and len(seeds) > 1:
+                # an exemplar's largest class comes only from the copy of the nearest
+                # seed (departure from §5.1, see _not_owned; >= OWN_CLASSES size classes)
+                okp &= ~_not_owned(prep, seed_pos, seed_of, ppos, exv)
             # larger size classes first, and within a class the anchors (see anchors),
             # then its clearly larger kinds (see _larger_in_class)
             order_key = 2 * prep.size_class[exv] + anchors(prep)[exv] + _larger_in_class(prep)[exv]
