@@ -19,6 +19,7 @@ from ._objects import (
     ELEMENT,
     SEED,
 )
+from ._place_kernels import slot_probe
 
 
 def _skewed(p: Sequence[float], q: Sequence[float], r: Sequence[float]) -> bool:
@@ -415,6 +416,11 @@ class _Place:
             slot_of[j] = (k + i) % n_ring
         paired = set(slot_of.values())
         gap_min = self.ring_gap_min[a]
+        plane = self.tile is None
+        if plane:
+            index = self.index
+            over_on, l_short, top_level = bool(self.over_smaller), float(self.l_short), float(self.top_level)
+            size_level, pair_short, pair_short_max = self.size_level, self.pair_short, self.pair_short_max
         # New seeds (Fig. 2g) with the heuristics of Fig. 6 (b)-(d).
         for j in range(n_ring):
             if j in paired:
@@ -427,13 +433,24 @@ class _Place:
                 continue
             # (b) merge with an object within l_short
             # a slot of the largest kind is not lost to seeds of smaller kinds (§5.1)
-            over = self.over_smaller and ring_kind[j] >= 0 and self.size_level[ring_kind[j]] == self.top_level and self._over_smaller_seeds(s, cx, cy, ring_kind[j])
-            close = self.near(cx, cy, self.l_short) if not over else []
-            close = [o for o in close if self.orig_of[o] != s]
-            if not close and not over and self.too_close_in_kind(cx, cy, ring_kind[j], s):
-                continue
+            if plane:
+                # the three tests below in one compiled call (the same answers: issue 14
+                # point 5; _place_kernels.slot_probe)
+                pts = index.points
+                _, o, tc = slot_probe(cx, cy, s, ring_kind[j], over_on, l_short, size_level, top_level, pair_short, pair_short_max,
+                                         index.cell, pts.head, pts.ent, pts.cur, pts.ext, index.pos, index.state, self.kind, index.out)
+                if tc:
+                    continue
+                close = o >= 0
+            else:
+                over = self.over_smaller and ring_kind[j] >= 0 and self.size_level[ring_kind[j]] == self.top_level and self._over_smaller_seeds(s, cx, cy, ring_kind[j])
+                close = self.near(cx, cy, self.l_short) if not over else []
+                close = [o for o in close if self.orig_of[o] != s]
+                if not close and not over and self.too_close_in_kind(cx, cy, ring_kind[j], s):
+                    continue
+                if close:
+                    o = min(close, key=lambda o: (self.xy[o][0] - cx) ** 2 + (self.xy[o][1] - cy) ** 2)
             if close:
-                o = min(close, key=lambda o: (self.xy[o][0] - cx) ** 2 + (self.xy[o][1] - cy) ** 2)
                 if not self.has_edge(s, o):
                     po = self.xy[o]
                     if not self.crosses_edges(s, (x, y), o, po) and not self.crosses_boundary((x, y), po):
