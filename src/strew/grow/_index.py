@@ -36,6 +36,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from .._kernels.grid import GONE, HashGrid, hash_cross, hash_near
+from ._index_kernels import edge_insert
 
 __all__ = ["GrowIndex"]
 
@@ -143,9 +144,21 @@ class GrowIndex:
     # -- edges --------------------------------------------------------------------------
     def _index_edge(self, e: int, a: int, b: int) -> None:
         """List edge ``e`` = (a, b) in every cell its bounding box covers."""
+        ec = self.edge_cells
+        if ec._ext is not None and ec.n < 2 * len(ec.head) and e < len(ec.cur):
+            # HashGrid.insert's listing in one compiled call (the same entries, extent
+            # and current listing; issue 14 point 5); its Python fields kept in step
+            n, widened, new = edge_insert(ec.cell, ec.head, ec.tail, ec.ent, ec.ext, ec.n, ec.cur, e, self.pos, a, b)
+            if n >= 0:
+                ec.n = n
+                if widened:
+                    ec._ext[:] = ec.ext.tolist()
+                if new:
+                    ec.live += 1
+                return
         xa, ya = self.xy[a]
         xb, yb = self.xy[b]
-        self.edge_cells.insert(e, min(xa, xb), min(ya, yb), max(xa, xb), max(ya, yb))
+        ec.insert(e, min(xa, xb), min(ya, yb), max(xa, xb), max(ya, yb))
 
     def add_edge(self, a: int, b: int, oa: int, ob: int) -> None:
         """Edge (a, b), whose ends are images of originals ``oa``, ``ob``."""
