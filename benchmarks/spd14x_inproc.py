@@ -1,10 +1,10 @@
 """In-process A/B of grow speed changes (issue 14 point 5): this tree's grow with the base
 tree's versions of the changed methods swapped in, in turns.
 
-The base tree's ``grow/_place.py`` and ``grow/_index.py`` (first argument: its ``src``
-folder) are loaded as modules of this tree's package (``strew.grow._place_base``, ...)
-and their ``_Place.place`` and ``GrowIndex._index_edge`` replace this tree's for the
-base rounds. Rounds alternate which goes first; CPU seconds
+The base tree's ``grow/_place.py``, ``grow/_index.py`` and ``grow/_collide.py`` (first
+argument: its ``src`` folder) are loaded as modules of this tree's package
+(``strew.grow._place_base``, ...) and their ``_Place.place``, ``GrowIndex._index_edge``
+and ``_Collide.too_close_in_kind`` replace this tree's for the base rounds. Rounds alternate which goes first; CPU seconds
 (``time.process_time``) per growth, the median ratio this/base, and the digests of both
 outputs (they must be equal).
 
@@ -28,7 +28,7 @@ from strew.grow import analyze, grow
 from strew.grow._exemplars import hex_exemplar, stone_exemplar, tile_exemplar
 
 #: (module, class, method) of this tree's changes
-CHANGED = [("_place", "_Place", "place"), ("_index", "GrowIndex", "_index_edge")]
+CHANGED = [("_place", "_Place", "place"), ("_index", "GrowIndex", "_index_edge"), ("_collide", "_Collide", "too_close_in_kind")]
 
 
 def _base_module(src: str, name: str):

@@ -72,3 +72,64 @@ def test_slot_probe_equals_the_python_tests(monkeypatch):
         want = _python_answers(g, cx, cy, int(live[0]), kj)
         got = _probe(g, cx, cy, int(live[0]), kj)
         assert (bool(got[0]), int(got[1]), bool(got[2])) == (bool(want[0]), int(want[1]), bool(want[2]))
+
+
+def test_too_close_in_kind_equals_the_python_loop(monkeypatch):
+    """``too_close_in_kind`` in the plane (compiled) gives the answers of its Python loop,
+    for seeds and elements, new seeds and placements, on a growth of three sizes."""
+    from strew_testing import fidelity_suite
+
+    import strew.grow._growth as G
+    from strew.grow import analyze, grow
+    from strew.grow._objects import ELEMENT, SEED
+    from strew.grow._place_kernels import too_close
+
+    grown = []
+    init = G._Grower.__init__
+
+    def keep(self, *a, **k):
+        init(self, *a, **k)
+        grown.append(self)
+
+    monkeypatch.setattr(G._Grower, "__init__", keep)
+    grow(analyze(fidelity_suite().make_exemplar("three_sizes")), count=100, rng=2, relax=True)
+    g = grown[-1]
+
+    def loop(x, y, kind, s, states, placing):
+        if kind < 0:
+            return False
+        ps = g.pair_close if placing else g.pair_short
+        r = float((g.pair_close_max if placing else g.pair_short_max)[kind])
+        if r <= g.l_short:
+            return False
+        for o in g.near(x, y, r, states):
+            ko = int(g.kind[o])
+            if g.orig_of[o] == s or ko < 0:
+                continue
+            if (g.xy[o][0] - x) ** 2 + (g.xy[o][1] - y) ** 2 < ps[kind, ko] ** 2:
+                return True
+        return False
+
+    rng = np.random.default_rng(7)
+    live = np.flatnonzero(g.state[: g.n] > 0)
+    hits = 0
+    for _ in range(600):
+        o = int(rng.choice(live))
+        t, d = rng.uniform(0, 2 * np.pi), rng.uniform(0, 3.0) * g.l_short
+        x, y = float(g.pos[o, 0] + d * np.cos(t)), float(g.pos[o, 1] + d * np.sin(t))
+        s = o if rng.random() < 0.3 else int(rng.choice(live))
+        kind = int(rng.integers(-1, g.n_kinds))
+        states = (SEED, ELEMENT) if rng.random() < 0.5 else (ELEMENT,)
+        placing = bool(rng.random() < 0.5)
+        want = loop(x, y, kind, s, states, placing)
+        assert g.too_close_in_kind(x, y, kind, s, states, placing=placing) == want
+        if kind >= 0:  # the kernel itself, past the early returns
+            ps = g.pair_close if placing else g.pair_short
+            r = float((g.pair_close_max if placing else g.pair_short_max)[kind])
+            if r > g.l_short:
+                ix, pts = g.index, g.index.points
+                bits = sum(1 << b for b in states)
+                got = too_close(x, y, kind, s, r, ps, bits, ix.cell, pts.head, pts.ent, pts.cur, pts.ext, ix.pos, ix.state, g.kind, ix.out)
+                assert bool(got) == want
+        hits += want
+    assert 50 < hits < 550

@@ -19,6 +19,7 @@ from ._objects import (
     OBSTACLE,
     SEED,
 )
+from ._place_kernels import too_close
 
 _SEED_OR_ELEMENT = (1 << SEED) | (1 << ELEMENT)
 _STATE_BITS: dict[tuple[int, ...], int] = {}
@@ -338,8 +339,14 @@ class _Collide:
         r = float((self.pair_close_max if placing else self.pair_short_max)[kind])
         if r <= self.l_short:
             return False
+        classes = _SEED_OR_ELEMENT if states == (SEED, ELEMENT) else _state_bits(states)
+        if self.tile is None and not classes >> OBSTACLE & 1:
+            # the loop below in one compiled call (in the plane an object's original is
+            # itself; the same answers: issue 14 point 5)
+            ix, pts = self.index, self.index.points
+            return too_close(x, y, kind, s, r, ps, classes, ix.cell, pts.head, pts.ent, pts.cur, pts.ext, ix.pos, ix.state, self.kind, ix.out)
         xy, orig_of, kinds = self.xy, self.orig_of, self.kind
-        for o in self.index.near(x, y, r, _SEED_OR_ELEMENT if states == (SEED, ELEMENT) else _state_bits(states)):
+        for o in self.index.near(x, y, r, classes):
             if orig_of[o] == s:
                 continue
             ko = int(kinds[o])

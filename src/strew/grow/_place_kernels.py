@@ -24,10 +24,10 @@ _SEED_OR_ELEMENT = (1 << 1) | (1 << 2)
 
 
 @numba.njit(cache=True, nogil=True)
-def _near_into(x, y, r, h, head, ent, cur, ext, pos, state, out):  # pragma: no cover - numba
-    """The seeds and elements within ``r`` of (x, y) in ``out``, in
-    :func:`~strew._kernels.grid.hash_near`'s order (cells x-major, creation order in a
-    cell); their count."""
+def _near_into(x, y, r, h, head, ent, cur, ext, pos, state, out, classes=_SEED_OR_ELEMENT):  # pragma: no cover - numba
+    """The objects within ``r`` of (x, y) whose state bit is in ``classes`` (default:
+    seeds and elements) in ``out``, in :func:`~strew._kernels.grid.hash_near`'s order
+    (cells x-major, creation order in a cell); their count."""
     mask = head.shape[0] - 1
     r2 = r * r
     k = 0
@@ -41,7 +41,7 @@ def _near_into(x, y, r, h, head, ent, cur, ext, pos, state, out):  # pragma: no 
                     if e >= cur[i]:
                         dx = pos[i, 0] - x
                         dy = pos[i, 1] - y
-                        if dx * dx + dy * dy <= r2 and ((_SEED_OR_ELEMENT >> state[i]) & 1) != 0:
+                        if dx * dx + dy * dy <= r2 and ((classes >> state[i]) & 1) != 0:
                             out[k] = i
                             k += 1
                 e = ent[e, 3]
@@ -118,3 +118,24 @@ def slot_probe(cx, cy, s, kj, over_on, l_short, size_level, top_level, pair_shor
         if dx * dx + dy * dy < d * d:
             return False, -1, True
     return False, -1, False
+
+
+@numba.njit(cache=True, nogil=True)
+def too_close(x, y, kind, s, r, ps, classes, h, head, ent, cur, ext, pos, state, kinds, out):  # pragma: no cover - numba
+    """``_Collide.too_close_in_kind`` in the plane, past its early returns: is an object
+    (state bit in ``classes``, other than ``s``, of a kind ``ko >= 0``) within
+    ``ps[kind, ko]`` of (x, y)? ``r`` is the largest of ``ps[kind]``."""
+    n = _near_into(x, y, r, h, head, ent, cur, ext, pos, state, out, classes)
+    for q in range(n):
+        o = out[q]
+        if o == s:
+            continue
+        ko = kinds[o]
+        if ko < 0:
+            continue
+        d = ps[kind, ko]
+        dx = pos[o, 0] - x
+        dy = pos[o, 1] - y
+        if dx * dx + dy * dy < d * d:
+            return True
+    return False
