@@ -14,6 +14,25 @@ import argparse
 import numpy as np
 
 
+def old_free(ctx, near, start=None):
+    """d67a7c3's vase._free_grid_point: no MIN_VINE skip."""
+    from strew.ornament.patterns import vase
+
+    i0, j0 = round(near[0] / vase.GRID), round(near[1] / vase.GRID)
+    best = None
+    for i in range(i0 - 1, i0 + 2):
+        for j in range(j0 - 1, j0 + 2):
+            if (i, j) in ctx.state.flowers:
+                continue
+            p = np.array([i * vase.GRID, j * vase.GRID])
+            if start is not None and float(np.hypot(*(p - start))) > vase.REACH:
+                continue
+            d = float(np.hypot(*(p - near)))
+            if best is None or d < best[0]:
+                best = (d, (i, j), p)
+    return best
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--sides", default="200,240,264,288,312,336")
@@ -25,21 +44,6 @@ def main() -> None:
     from strew.ornament.patterns import vase
 
     new_free = vase._free_grid_point
-
-    def old_free(ctx, near, start=None):  # d67a7c3's: no MIN_VINE skip
-        i0, j0 = round(near[0] / vase.GRID), round(near[1] / vase.GRID)
-        best = None
-        for i in range(i0 - 1, i0 + 2):
-            for j in range(j0 - 1, j0 + 2):
-                if (i, j) in ctx.state.flowers:
-                    continue
-                p = np.array([i * vase.GRID, j * vase.GRID])
-                if start is not None and float(np.hypot(*(p - start))) > vase.REACH:
-                    continue
-                d = float(np.hypot(*(p - near)))
-                if best is None or d < best[0]:
-                    best = (d, (i, j), p)
-        return best
 
     st = {"calls": 0, "differ": 0, "state": None}
 
