@@ -39,8 +39,8 @@ def main() -> None:
     ap.add_argument("--seeds", default="1")
     args = ap.parse_args()
     import strew
-    from strew.ornament import grow_ornament
     from strew._errors import Cancelled
+    from strew.ornament import grow_ornament
     from strew.ornament.patterns import vase
 
     new_free = vase._free_grid_point

@@ -36,11 +36,10 @@ def test_vase_panel_opens_with_vines_and_flowers(side):
 
 
 def test_free_grid_point_skips_the_vines_start():
-    class _State:
-        flowers: list = []
-
     class _Ctx:
-        state = _State()
+        def __init__(self):
+            self.state = type("State", (), {})()
+            self.state.flowers = []
 
     start = np.array([6 * vase.GRID, 6 * vase.GRID])
     # the seed's chord point REACH - GRID towards a far C down-left
