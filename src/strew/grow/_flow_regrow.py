@@ -1,0 +1,136 @@
+"""Flow mode: a sheared patch grown again from its border (issue 14 point 2).
+
+Not in the paper (§5.3 grows each element once, §5.5 only relaxes). Where the growth
+front lags the field at the frame's turn limit (``flow_max_turn``), the lattice it
+leaves is sheared over a patch: one bond family stretched, the rows too far apart, a
+missing half-row spread over it (``benchmarks/flow14w_shear.py``); no later pass
+repairs it (the shear band pass sends it back whole, densify finds no room). Here the
+largest connected patch of interior sites without six neighbours is taken out, and
+grown again (§5.2-§5.4 as in the growth) from the empty ring slots of the elements
+around it, and relaxed (§5.5 and the band's network pass); the new patch is kept only
+where the interior six share rises and no new hole opens.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from ._flow_holes import close_holes
+from ._flow_kernels import boundary_distance
+from ._flow_net import NET_BAND, hexagonal_reference, relax_network, six_spacing
+from ._flow_net import _six_share as six_share
+from ._flow_retry import interior_score, restore, snapshot
+from ._objects import DEAD, ELEMENT
+
+__all__ = ["regrow_sheared"]
+
+#: a patch is grown again only where it holds at least this many sites
+REGROW_MIN = 12
+#: the frame's turn limits tried for the regrowth, as multiples of ``flow_max_turn``
+#: (larger ones turned elements past the field's limit that §5.3's frame keeps)
+REGROW_TURNS = (1.0,)
+#: how many patches are tried, largest first
+REGROW_PATCHES = 3
+
+
+def _patches(g) -> list[list[int]]:
+    """The connected groups (within 1.3 six spacings) of interior elements without six
+    neighbours at 0.85-1.15 spacings, largest first."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+
+    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.intp)
+    if len(els) < 7:
+        return []
+    xy = g.pos[els]
+    L = g.l
+    inner = boundary_distance(g.region, xy) > 2.0 * L if g.region is not None else np.ones(len(els), bool)
+    tree = cKDTree(xy)
+    S = six_spacing(g)
+    hi = np.asarray(tree.query_ball_point(xy, 1.15 * S, return_length=True), dtype=int) - 1
+    lo = np.asarray(tree.query_ball_point(xy, 0.85 * S, return_length=True), dtype=int) - 1
+    bad = np.flatnonzero(inner & ~((hi == 6) & (lo == 0)))
+    if len(bad) < REGROW_MIN:
+        return []
+    pr = cKDTree(xy[bad]).query_pairs(1.3 * S, output_type="ndarray")
+    m = coo_matrix((np.ones(len(pr)), (pr[:, 0], pr[:, 1])), shape=(len(bad), len(bad)))
+    nc, lab = connected_components(m, directed=False)
+    groups = [els[bad[lab == c]].tolist() for c in range(nc)]
+    groups = [q for q in groups if len(q) >= REGROW_MIN]
+    groups.sort(key=lambda q: (-len(q), min(q)))
+    return groups
+
+
+def _take_out(g, patch: list[int]) -> list[int]:
+    """The patch's elements taken out (edges, ring targets, index, order); the elements
+    left around it, sorted."""
+    gone = set(patch)
+    around: set[int] = set()
+    for o in patch:
+        for j in list(g.adj[o]):
+            if g.target[j] is not None:
+                g.target[j].pop(o, None)
+            g.remove_edge(o, j)
+            if j not in gone and g.state[j] == ELEMENT:
+                around.add(j)
+        g.state[o] = DEAD
+        g.index.remove(o)
+    g.order[:] = [i for i in g.order if i not in gone]
+    return sorted(around)
+
+
+def regrow_sheared(g, target: int, rep) -> int:
+    """Grow the sheared patches again (see the module); how many were kept."""
+    p0 = g.p
+    kept = 0
+    tried: set[tuple[int, ...]] = set()
+    for _ in range(REGROW_PATCHES):
+        if len(g.order) >= target:
+            break
+        groups = [q for q in _patches(g) if tuple(sorted(q)) not in tried]
+        if not groups:
+            break
+        patch = groups[0]
+        tried.add(tuple(sorted(patch)))
+        share0 = six_share(g)
+        far0 = interior_score(g)[1]
+        base = snapshot(g)
+        # the turn limits tried in turn, the first regrowth that raises the six share
+        # with no new hole kept (its holes' elements turned no further than the
+        # frame's limit, ``flow_max_turn``, not ``flow_hole_turn``: an element turned
+        # past it is off §5.3's frame)
+        for f in REGROW_TURNS:
+            restore(g, base)
+            base = snapshot(g)  # (a snapshot is used, not copied, when put back)
+            g.p = replace(p0, flow_max_turn=f * p0.flow_max_turn, flow_hole_turn=p0.flow_max_turn)
+            _regrow(g, patch, target, rep)
+            g.p = p0
+            sh, far = six_share(g), interior_score(g)[1]
+            if sh > share0 + 1e-12 and far <= far0:
+                kept += 1
+                break
+        else:
+            restore(g, base)
+    return kept
+
+
+def _regrow(g, patch: list[int], target: int, rep) -> None:
+    """The patch taken out and grown again from the empty slots of the rings around
+    it (§5.2-§5.4), relaxed (§5.5 and the band's network pass), and its holes closed
+    as after the growth (:func:`strew.grow._flow_holes.close_holes`)."""
+    around = _take_out(g, patch)
+    for s in around:
+        if g.state[s] == ELEMENT:
+            g.seed_empty_slots(s)
+    g.advance(rep, target)
+    g.settle()
+    net = bool(g.p.flow_net_rounds and g.p.relax and hexagonal_reference(g.ref))
+    if net:
+        relax_network(g, band=NET_BAND)
+    if len(g.order) < target and close_holes(g, target) and net:
+        relax_network(g, band=NET_BAND)
+    if len(g.order) < target and close_holes(g, target, push=True) and net:
+        relax_network(g, band=NET_BAND)
