@@ -115,30 +115,44 @@ def lone_reach(g) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, float
     far, q, share = np.full((n, n), np.inf), np.full((n, n), np.inf), np.zeros((n, n))
     top = np.full((n, n, len(LONE_TOP)), np.inf)
     ex = g.ref.exemplar
-    lv = lone_sizes(g)
-    if LONE_FACTOR is not None and ex.region is not None and n > 1 and float(lv.max()) > float(lv.min()):
-        to_edge = np.asarray(ex.region.distance_to_boundary(ex.xy), dtype=float)
-        for a in range(n):
-            sa = np.flatnonzero(g.ex_kind == a)
-            if len(sa) == 0 or g.void_kind[a]:
-                continue
-            tree = cKDTree(ex.xy[sa])
-            for b in range(n):
-                if g.void_kind[b] or not lv[b] > lv[a]:
-                    continue
-                sb = np.flatnonzero(g.ex_kind == b)
-                if len(sb) == 0:
-                    continue
-                d = tree.query(ex.xy[sb])[0]
-                d = d[d <= to_edge[sb]]
-                if len(d) >= MIN_LONE:
-                    far[b, a] = float(LONE_FACTOR) * float(d.max())
-                    q[b, a] = float(np.quantile(d, LONE_DECILE))
-                    share[b, a] = float(np.mean(d > q[b, a]))
-                    top[b, a] = np.quantile(d, LONE_TOP)
+    if LONE_FACTOR is not None:
+        for b, a, d in ref_nearest(g, larger=True):
+            far[b, a] = float(LONE_FACTOR) * float(d.max())
+            q[b, a] = float(np.quantile(d, LONE_DECILE))
+            share[b, a] = float(np.mean(d > q[b, a]))
+            top[b, a] = np.quantile(d, LONE_TOP)
     unit = float(np.median(cKDTree(ex.xy).query(ex.xy, k=2)[0][:, 1])) if len(ex) >= 2 else 0.0
     g._lone_reach = (far, q, share, top, unit)
     return g._lone_reach
+
+
+def ref_nearest(g, larger: bool):
+    """The reference's nearest-neighbour distances between a smaller visible kind ``a``
+    and a larger visible kind ``b`` (:func:`lone_sizes`), over the elements that see
+    their nearest one within the frame: yields ``(b, a, d)`` with ``d`` (m,) the
+    distances from each ``b`` element to its nearest ``a`` (``larger``) or ``(a, b,
+    d)`` from each ``a`` element to its nearest ``b`` (not ``larger``), for the pairs
+    with at least :data:`MIN_LONE` of them."""
+    from scipy.spatial import cKDTree
+
+    n = g.n_kinds
+    ex = g.ref.exemplar
+    lv = lone_sizes(g)
+    if ex.region is None or n <= 1 or not float(lv.max()) > float(lv.min()):
+        return
+    to_edge = np.asarray(ex.region.distance_to_boundary(ex.xy), dtype=float)
+    for a in range(n):
+        for b in range(n):
+            if g.void_kind[a] or g.void_kind[b] or not lv[b] > lv[a]:
+                continue
+            sa, sb = np.flatnonzero(g.ex_kind == a), np.flatnonzero(g.ex_kind == b)
+            if len(sa) == 0 or len(sb) == 0:
+                continue
+            frm, to = (sb, sa) if larger else (sa, sb)
+            d = cKDTree(ex.xy[to]).query(ex.xy[frm])[0]
+            d = d[d <= to_edge[frm]]
+            if len(d) >= MIN_LONE:
+                yield (b, a, d) if larger else (a, b, d)
 
 
 def swap_lone_larger(g) -> int:
@@ -146,63 +160,105 @@ def swap_lone_larger(g) -> int:
     farthest distance (:func:`lone_reach`), where more of them than in the reference lie
     beyond its upper decile, replaced by seeds of that smaller kind, matched and placed;
     how many were replaced (see the module docstring)."""
-    from scipy.spatial import cKDTree
-
     far, q, share, top, unit = lone_reach(g)
     pairs = [(int(b), int(a)) for b, a in zip(*np.nonzero(np.isfinite(far)))]
+    # (an earlier swap may have put an ``a`` element within the reach: then it is left)
+    return lone_pass(g, lone_candidates(g, pairs, far, q, share, top, unit), far, lambda o, a: _swap_one(g, o, a))
+
+
+def lone_candidates(g, pairs, lim, q, share, top, unit) -> list[tuple[float, int, int]]:
+    """The output's elements of kind ``f`` whose nearest ``t`` element lies beyond
+    ``lim[f, t]``, for each pair ``(f, t)`` of ``pairs`` where the output's upper deciles
+    of that distance are long against the reference's (``top``, :data:`LONE_TRIGGER` of
+    ``unit``), farthest first and only as many as the output has in excess over the
+    reference's share beyond its upper decile (``q``, ``share``): ``(-d, element, t)``,
+    sorted. Only elements that see their nearest ``t`` inside the region count (the
+    region crops the pattern as the reference's frame does)."""
+    from scipy.spatial import cKDTree
+
     if not pairs:
-        return 0
+        return []
     els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.int64)
     if len(els) < 4:
-        return 0
+        return []
     kinds = g.kind[els]
     pos = g.pos[els]
     cand: list[tuple[float, int, int]] = []
-    for b, a in pairs:
-        ia, ib = els[kinds == a], els[kinds == b]
-        if len(ia) == 0 or len(ib) == 0:
+    for f, t in pairs:
+        it, jf = els[kinds == t], els[kinds == f]
+        if len(it) == 0 or len(jf) == 0:
             continue
-        d = cKDTree(pos[kinds == a]).query(pos[kinds == b])[0]
-        # the elements that see their nearest smaller one inside the region (the
-        # region crops the pattern as the reference's frame does)
+        d = cKDTree(pos[kinds == t]).query(pos[kinds == f])[0]
         if g.region is not None:
-            seen = d <= np.asarray(g.region.distance_to_boundary(pos[kinds == b]), dtype=float)
-            ib, d = ib[seen], d[seen]
+            seen = d <= np.asarray(g.region.distance_to_boundary(pos[kinds == f]), dtype=float)
+            jf, d = jf[seen], d[seen]
         if len(d) < MIN_LONE:
             continue
         # only where the output's upper deciles are long against the reference's (the
-        # judge's nn[b>a] compares deciles): three sizes at default parameters (variant
+        # judge's nn[f>t] compares deciles): three sizes at default parameters (variant
         # 3), 0.03 s over, lost small stones' nearness to large ones when its large
         # stones beyond the reference's farthest were swapped (nn[small>large]
         # 0.137-0.146 against 0.093); two sizes at ratio 0.55-0.6: 0.15-0.33 s over
-        over = float(np.mean(np.quantile(d, LONE_TOP) - top[b, a])) / unit if unit > 0 else 0.0
+        over = float(np.mean(np.quantile(d, LONE_TOP) - top[f, t])) / unit if unit > 0 else 0.0
         if over < LONE_TRIGGER:
             continue
         # only the excess over the reference's share beyond its upper decile: an output
         # ten times the reference's size has a few beyond the reference's farthest by
         # chance (three sizes at 80:20:30 lost small-stone density swapping 10 % of
         # its large stones, nn[large>small] passing either way)
-        excess = int(round((float(np.mean(d > q[b, a])) - share[b, a]) * len(d)))
-        beyond = np.flatnonzero(d > far[b, a])
+        excess = round((float(np.mean(d > q[f, t])) - share[f, t]) * len(d))
+        beyond = np.flatnonzero(d > lim[f, t])
         beyond = beyond[np.argsort(-d[beyond], kind="stable")][: max(excess, 0)]
-        cand.extend((-float(d[i]), int(ib[i]), a) for i in beyond.tolist())
+        cand.extend((-float(d[i]), int(jf[i]), t) for i in beyond.tolist())
     cand.sort()
+    return cand
+
+
+def lone_pass(g, cand, lim, act) -> int:
+    """``act(o, t)`` for each candidate ``(_, o, t)`` of :func:`lone_candidates` still an
+    element, not fixed, and with no ``t`` element within ``lim[kind of o, t]`` (an
+    earlier one may have put one there); the elements it acted on leave ``g.order``;
+    how many."""
     made = 0
-    removed: set[int] = set()
-    for _, o, a in cand:
+    done: set[int] = set()
+    for _, o, t in cand:
         if g.state[o] != ELEMENT or g.fixed[o]:
             continue
         x, y = g.xy[o]
-        b = int(g.kind[o])
-        lim = float(far[b, a])
-        if any(int(g.kind[k]) == a and math.hypot(g.xy[k][0] - x, g.xy[k][1] - y) <= lim for k in g.near(x, y, lim, (ELEMENT,))):
-            continue  # an earlier swap put one near it
-        if _swap_one(g, o, a):
-            removed.add(o)
+        r = float(lim[int(g.kind[o]), t])
+        if any(int(g.kind[k]) == t and math.hypot(g.xy[k][0] - x, g.xy[k][1] - y) <= r for k in g.near(x, y, r, (ELEMENT,))):
+            continue
+        if act(o, t):
+            done.add(o)
             made += 1
-    if removed:
-        g.order[:] = [i for i in g.order if i not in removed]
+    if done:
+        g.order[:] = [i for i in g.order if i not in done]
     return made
+
+
+def take_out(g, o: int) -> tuple[list[int], dict, int]:
+    """Element ``o`` taken out of the growth (edges, targets, index); what
+    :func:`put_back` needs: its neighbours, their targets of it, its state."""
+    nbs = sorted(g.adj[o])
+    tg = {j: g.target[j].pop(o) for j in nbs if g.target[j] is not None and o in g.target[j]}
+    st = int(g.state[o])
+    for j in nbs:
+        g.remove_edge(o, j)
+    g.state[o] = DEAD
+    g.index.remove(o)
+    return nbs, tg, st
+
+
+def put_back(g, o: int, x: float, y: float, nbs: list[int], tg: dict, st: int) -> None:
+    """Element ``o`` put back at ``(x, y)`` as :func:`take_out` found it."""
+    g.state[o] = st
+    g.index.insert(o, x, y)
+    for j in nbs:
+        if g.state[j] in (ELEMENT, SEED):
+            if not g.has_edge(o, j):
+                g.add_edge(o, j)
+            if j in tg:
+                g.target[j][o] = tg[j]
 
 
 def _match_and_place(g, s: int) -> bool:
@@ -229,13 +285,7 @@ def _place_joined(g, px: float, py: float, a: int, j: int) -> bool:
 
 def _swap_one(g, o: int, a: int) -> bool:
     x, y = g.xy[o]
-    nbs = sorted(g.adj[o])
-    tg = {j: g.target[j].pop(o) for j in nbs if g.target[j] is not None and o in g.target[j]}
-    st = int(g.state[o])
-    for j in nbs:
-        g.remove_edge(o, j)
-    g.state[o] = DEAD
-    g.index.remove(o)
+    nbs, tg, st = take_out(g, o)
     for px, py, j in _snug_spots(g, x, y, a, nbs):
         # the smaller element snug against one neighbour left around the hole, where the
         # exemplar has one of kind ``a`` next to one of that neighbour's kind; joined to
@@ -249,14 +299,7 @@ def _swap_one(g, o: int, a: int) -> bool:
             g.add_edge(s, j)
     if _match_and_place(g, s):
         return True
-    g.state[o] = st
-    g.index.insert(o, x, y)
-    for j in nbs:
-        if g.state[j] in (ELEMENT, SEED):
-            if not g.has_edge(o, j):
-                g.add_edge(o, j)
-            if j in tg:
-                g.target[j][o] = tg[j]
+    put_back(g, o, x, y, nbs, tg, st)
     return False
 
 

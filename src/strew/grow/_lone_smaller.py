@@ -32,20 +32,20 @@ sizes, after the lone-larger swap at its call site.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from ._lone_larger import (
     LONE_DECILE,
     LONE_TOP,
-    LONE_TRIGGER,
-    MIN_LONE,
     SNUG_TRIES,
     _place_joined,
-    lone_sizes,
+    lone_candidates,
+    lone_pass,
+    put_back,
+    ref_nearest,
+    take_out,
 )
-from ._objects import DEAD, ELEMENT, SEED
+from ._objects import ELEMENT, SEED
 
 __all__ = ["move_lone_smaller", "smaller_reach"]
 
@@ -69,26 +69,10 @@ def smaller_reach(g) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
     q, share = np.full((n, n), np.inf), np.zeros((n, n))
     top = np.full((n, n, len(LONE_TOP)), np.inf)
     ex = g.ref.exemplar
-    lv = lone_sizes(g)
-    if ex.region is not None and n > 1 and float(lv.max()) > float(lv.min()):
-        to_edge = np.asarray(ex.region.distance_to_boundary(ex.xy), dtype=float)
-        for b in range(n):
-            sb = np.flatnonzero(g.ex_kind == b)
-            if len(sb) == 0 or g.void_kind[b]:
-                continue
-            tree = cKDTree(ex.xy[sb])
-            for a in range(n):
-                if g.void_kind[a] or not lv[b] > lv[a]:
-                    continue
-                sa = np.flatnonzero(g.ex_kind == a)
-                if len(sa) == 0:
-                    continue
-                d = tree.query(ex.xy[sa])[0]
-                d = d[d <= to_edge[sa]]
-                if len(d) >= MIN_LONE:
-                    q[a, b] = float(np.quantile(d, LONE_DECILE))
-                    share[a, b] = float(np.mean(d > q[a, b]))
-                    top[a, b] = np.quantile(d, LONE_TOP)
+    for a, b, d in ref_nearest(g, larger=False):
+        q[a, b] = float(np.quantile(d, LONE_DECILE))
+        share[a, b] = float(np.mean(d > q[a, b]))
+        top[a, b] = np.quantile(d, LONE_TOP)
     unit = float(np.median(cKDTree(ex.xy).query(ex.xy, k=2)[0][:, 1])) if len(ex) >= 2 else 0.0
     g._smaller_reach = (q, share, top, unit)
     return g._smaller_reach
@@ -98,54 +82,14 @@ def move_lone_smaller(g) -> int:
     """Elements of a smaller kind beyond the reference's upper decile from every element
     of a larger kind, where more of them than in the reference lie beyond it, moved snug
     against one of that kind; how many moved (see the module docstring)."""
-    from scipy.spatial import cKDTree
-
     q, share, top, unit = smaller_reach(g)
     pairs = [(int(a), int(b)) for a, b in zip(*np.nonzero(np.isfinite(q)))]
-    if not pairs or unit <= 0:
+    if unit <= 0:
         return 0
-    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.int64)
-    if len(els) < 4:
-        return 0
-    kinds = g.kind[els]
-    pos = g.pos[els]
-    cand: list[tuple[float, int, int]] = []
-    for a, b in pairs:
-        ia, ib = els[kinds == a], els[kinds == b]
-        if len(ia) == 0 or len(ib) == 0:
-            continue
-        d = cKDTree(pos[kinds == b]).query(pos[kinds == a])[0]
-        # the elements that see their nearest larger one inside the region (the region
-        # crops the pattern as the reference's frame does)
-        if g.region is not None:
-            seen = d <= np.asarray(g.region.distance_to_boundary(pos[kinds == a]), dtype=float)
-            ia, d = ia[seen], d[seen]
-        if len(d) < MIN_LONE:
-            continue
-        over = float(np.mean(np.quantile(d, LONE_TOP) - top[a, b])) / unit
-        if over < LONE_TRIGGER:
-            continue
-        excess = round((float(np.mean(d > q[a, b])) - share[a, b]) * len(d))
-        beyond = np.flatnonzero(d > q[a, b])
-        beyond = beyond[np.argsort(-d[beyond], kind="stable")][: max(excess, 0)]
-        cand.extend((-float(d[i]), int(ia[i]), b) for i in beyond.tolist())
-    cand.sort()
+    cand = lone_candidates(g, pairs, q, q, share, top, unit)
     n0 = g.n
-    made = 0
-    moved: set[int] = set()
-    for _, o, b in cand:
-        if g.state[o] != ELEMENT or g.fixed[o]:
-            continue
-        x, y = g.xy[o]
-        a = int(g.kind[o])
-        lim = float(q[a, b])
-        if any(int(g.kind[k]) == b and math.hypot(g.xy[k][0] - x, g.xy[k][1] - y) <= lim for k in g.near(x, y, lim, (ELEMENT,))):
-            continue  # an earlier move put one near it
-        if _move_one(g, o, a, b, lim):
-            moved.add(o)
-            made += 1
-    if moved:
-        g.order[:] = [i for i in g.order if i not in moved]
+    # (an earlier move may have put a ``b`` element within the decile: then it is left)
+    made = lone_pass(g, cand, q, lambda o, b: _move_one(g, o, int(g.kind[o]), b, float(q[int(g.kind[o]), b])))
     # the moved elements' rings' seeds: the pass adds no element
     for i in range(n0, g.n):
         if g.state[i] == SEED:
@@ -155,28 +99,15 @@ def move_lone_smaller(g) -> int:
 
 def _move_one(g, o: int, a: int, b: int, lim: float) -> bool:
     """Element ``o`` of kind ``a`` taken out and placed snug against an element of kind
-    ``b`` near it (:func:`._lone_larger._snug_spots`); put back if none places."""
+    ``b`` near it (:func:`_near_spots`); put back if none places."""
     x, y = g.xy[o]
-    nbs = sorted(g.adj[o])
     near_b = {int(k) for k in g.near(x, y, MOVE_REACH * g.l_short, (ELEMENT,)) if int(g.kind[k]) == b and k != o}
-    tg = {j: g.target[j].pop(o) for j in nbs if g.target[j] is not None and o in g.target[j]}
-    st = int(g.state[o])
-    for j in nbs:
-        g.remove_edge(o, j)
-    g.state[o] = DEAD
-    g.index.remove(o)
+    nbs, tg, st = take_out(g, o)
     cands = [j for j in sorted(set(nbs) | near_b) if g.state[j] == ELEMENT and int(g.kind[j]) == b]
     for px, py, j in _near_spots(g, x, y, a, b, cands, lim):
         if _place_joined(g, px, py, a, j):
             return True
-    g.state[o] = st
-    g.index.insert(o, x, y)
-    for j in nbs:
-        if g.state[j] in (ELEMENT, SEED):
-            if not g.has_edge(o, j):
-                g.add_edge(o, j)
-            if j in tg:
-                g.target[j][o] = tg[j]
+    put_back(g, o, x, y, nbs, tg, st)
     return False
 
 

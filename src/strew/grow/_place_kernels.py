@@ -104,20 +104,7 @@ def slot_probe(cx, cy, s, kj, over_on, l_short, size_level, top_level, pair_shor
     r = pair_short_max[kj]
     if r <= l_short:
         return False, -1, False
-    n = _near_into(cx, cy, r, h, head, ent, cur, ext, pos, state, out)
-    for q in range(n):
-        o = out[q]
-        if o == s:
-            continue
-        ko = kinds[o]
-        if ko < 0:
-            continue
-        d = pair_short[kj, ko]
-        dx = pos[o, 0] - cx
-        dy = pos[o, 1] - cy
-        if dx * dx + dy * dy < d * d:
-            return False, -1, True
-    return False, -1, False
+    return False, -1, too_close(cx, cy, kj, s, r, pair_short, _SEED_OR_ELEMENT, h, head, ent, cur, ext, pos, state, kinds, out)
 
 
 @numba.njit(cache=True, nogil=True)
