@@ -99,6 +99,20 @@ def assert_no_window_fails_at_50x(name: str, seed: int) -> None:
     assert int((score[ok] > 1.0).sum()) == 0, rep.local["worst"]
 
 
+def disc_gaps(arr, radius, a, b):
+    """(n_a,) gaps between each ``a`` element's scaled bounding disc and its nearest
+    ``b`` element's (``radius``: kind name -> bounding radius at scale 1)."""
+    from scipy.spatial import cKDTree
+
+    ia, ib = (
+        np.flatnonzero(arr.kind == arr.kinds.index(a)),
+        np.flatnonzero(arr.kind == arr.kinds.index(b)),
+    )
+    d, j = cKDTree(arr.xy[ib]).query(arr.xy[ia])
+    r = np.array([radius[k] for k in arr.kinds])[arr.kind] * np.abs(arr.scale)
+    return d - r[ia] - r[ib][j]
+
+
 def crosses_strictly(p, q, a, b) -> bool:
     """Segments pq and ab cross at a point interior to both (grow's edge rule, §5.4)."""
     def side(o, u, v):
