@@ -309,18 +309,24 @@ SNUG_TRIES = 6
 SNUG_QUANTILE = 0.5
 
 
+def ring_offsets(g, kj: int, a: int) -> np.ndarray:
+    """(m, 2) where the reference's elements of kind ``a`` sit relative to its elements
+    of kind ``kj`` that they neighbour (their ring slots, fixed mode's frame)."""
+    rings = g.rings
+    n = rings["n"]
+    own = g.ex_kind[g.ref_ids] == kj
+    rel = rings["rel"][own]
+    sel = (rings["kind"][own] == a) & (np.arange(rel.shape[1])[None, :] < n[own][:, None])
+    return rel[sel].reshape(-1, 2)
+
+
 def _snug_offsets(g, kj: int, a: int) -> np.ndarray:
     """Where the reference's elements of kind ``a`` sit relative to its elements of kind
     ``kj`` that they neighbour (ring slots, fixed mode's frame), the shorter half."""
     cache = g.__dict__.setdefault("_lone_snug", {})
     got = cache.get((kj, a))
     if got is None:
-        rings = g.rings
-        n = rings["n"]
-        own = g.ex_kind[g.ref_ids] == kj
-        rel = rings["rel"][own]
-        sel = (rings["kind"][own] == a) & (np.arange(rel.shape[1])[None, :] < n[own][:, None])
-        got = rel[sel].reshape(-1, 2)
+        got = ring_offsets(g, kj, a)
         if len(got):
             ln = np.hypot(got[:, 0], got[:, 1])
             got = got[ln <= np.quantile(ln, SNUG_QUANTILE)]

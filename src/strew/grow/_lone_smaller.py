@@ -43,6 +43,7 @@ from ._lone_larger import (
     lone_pass,
     put_back,
     ref_nearest,
+    ring_offsets,
     take_out,
 )
 from ._objects import ELEMENT, SEED
@@ -122,12 +123,7 @@ def _near_spots(g, x: float, y: float, a: int, b: int, nbs: list[int], lim: floa
     cache = g.__dict__.setdefault("_smaller_near", {})
     off = cache.get((a, b))
     if off is None:
-        rings = g.rings
-        n = rings["n"]
-        own = g.ex_kind[g.ref_ids] == b
-        rel = rings["rel"][own]
-        sel = (rings["kind"][own] == a) & (np.arange(rel.shape[1])[None, :] < n[own][:, None])
-        off = rel[sel].reshape(-1, 2)
+        off = ring_offsets(g, b, a)
         off = off[np.hypot(off[:, 0], off[:, 1]) <= lim]
         cache[(a, b)] = off
     spots: list[tuple[float, int, float, float]] = []
