@@ -62,6 +62,7 @@ def main() -> None:
     ap.add_argument("--pattern", default="hierarchy")
     ap.add_argument("--untiled", action="store_true")
     ap.add_argument("--centre", action="store_true", help="untiled: one seed at the world's centre (orn19m's control)")
+    ap.add_argument("--set", action="append", default=[], help="NAME=VALUE: a module constant of strew.tiles or strew.ornament._context (orn19m)")
     args = ap.parse_args()
     import orn19m_willow as W
 
@@ -98,7 +99,7 @@ def main() -> None:
                 O.grow_ornament = grow
             t0 = time.time()
             W.make(argparse.Namespace(tag=f"{args.tag}_s{s}", tiles=f"{tile:g}", pattern=args.pattern, untiled=args.untiled,
-                                      seed=s, set=[], overlaps=True))
+                                      seed=s, set=args.set, overlaps=True))
             a = rows[:]
             rows.clear()
             run_no[0] = -1

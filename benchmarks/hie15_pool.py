@@ -146,10 +146,16 @@ def main() -> None:
                                   for j, lab in enumerate(labels)}
             out["pooled"][key]["strip_counts"] = {"tiled": T.sum(0)[4:4 + nk].astype(int).tolist(), "control": C.sum(0)[4:4 + nk].astype(int).tolist()}
             P = out["pooled"][key]
+            per = np.array([ratios(T[i], nk) / ratios(C[i], nk) for i in range(len(names))])
+            out["per_world"] = out.get("per_world", {})
+            out["per_world"][key] = {n: dict(zip(labels, per[i].tolist())) for i, n in enumerate(names)}
             print(f"+-{wd:g}s {sd:5s} tiled/control: " + "; ".join(f"{lab} {P[lab]['ratio']:.3f} [{P[lab]['ci95'][0]:.3f}, {P[lab]['ci95'][1]:.3f}]" for lab in show))
             print(f"{'':14s}tiled/interior: " + "; ".join(f"{lab} {P[lab]['tiled']:.3f}" for lab in show)
                   + " | control/interior: " + "; ".join(f"{lab} {P[lab]['control']:.3f}" for lab in show)
                   + f" | strip counts tiled {P['strip_counts']['tiled']} control {P['strip_counts']['control']}")
+    for key in ("1s_both", "2s_both"):
+        print(f"per world +-{key}: " + "; ".join(f"{n.rsplit(' ', 1)[1]} " + " ".join(f"{k[0]}{v[k]:.2f}" for k in ["density"] + kinds)
+                                          for n, v in out["per_world"][key].items()))
     if args.json:
         Path(args.json).write_text(json.dumps(out, indent=1) + "\n")
         print(f"wrote {args.json}")
