@@ -47,7 +47,7 @@ def main() -> None:
                 w = W._world(RES / f"orn19m_{tag}_s{s}_T{tile}.npz")
                 n = np.load(p)["num"]
                 ph, x, y, run, ok = n[:, 0], n[:, 1], n[:, 2], n[:, 5], n[:, 7]
-                halo = w["tile"] / 4
+                halo = float(np.load(RES / f"orn19m_{tag}_s{s}_T{tile}.npz")["meta"][2])
                 d, sd = W._sd(x, y, w["side"], w["tile"])
                 m = w["margin"]
                 ins = (x >= m) & (x <= w["side"] - m) & (y >= m) & (y <= w["side"] - m)

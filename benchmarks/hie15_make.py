@@ -62,6 +62,7 @@ def main() -> None:
     ap.add_argument("--pattern", default="hierarchy")
     ap.add_argument("--untiled", action="store_true")
     ap.add_argument("--centre", action="store_true", help="untiled: one seed at the world's centre (orn19m's control)")
+    ap.add_argument("--halo", type=float, default=None, help="tiled: the halo as a fraction of the tile (default the library's, 1/4)")
     ap.add_argument("--set", action="append", default=[], help="NAME=VALUE: a module constant of strew.tiles or strew.ornament._context (orn19m)")
     args = ap.parse_args()
     import orn19m_willow as W
@@ -70,6 +71,11 @@ def main() -> None:
     import strew.ornament._engine as E
 
     grow = O.grow_ornament
+    if args.halo is not None:
+        import strew.tiles as T
+
+        tiled = T.tiled
+        T.tiled = lambda *a, tile_size, **k: tiled(*a, tile_size=tile_size, halo=args.halo * tile_size, **k)
     rows: list = []
     run_no = [-1]
     orig_init, orig_try = E._Grower.__init__, E._Grower._try
