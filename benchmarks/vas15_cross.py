@@ -71,6 +71,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("pairs", nargs="+")
     ap.add_argument("--halo", type=float, default=None)
+    ap.add_argument("--json", default=None)
     args = ap.parse_args()
     from vas19x_pool import _counts, _ratios
 
@@ -78,6 +79,7 @@ def main() -> None:
 
     tot: dict = {}
     lines: dict = {}
+    per: dict = {}
     for pr in args.pairs:
         tt, ct = pr.split(":")
         for p in sorted(RES.glob(f"vas15_{tt}_T*.npz")):
@@ -98,6 +100,11 @@ def main() -> None:
                     sv = o["inside"] & (o["d"] < wd)
                     row.append(f"{name} +-{wd:g}s {int(cnt[4 + vk])} (near the centre {int((sv & cen).sum())}) own share {_ratios(cnt, len(w['kinds']))[1 + vk]:.3f}")
                 g = o["g"]
+                # grid points in the panel that hold no flower (a vine delivers every flower)
+                n = int((w["side"] - 6.0) // GRID)
+                have = {(int(a), int(b)) for a, b in g[:, 3:5]}
+                holes = [(i, j) for i in range(1, n + 1) for j in range(1, n + 1) if (i, j) not in have]
+                row.append(f"{name} grid points without a flower {holes}")
                 fx, fy, sx, sy = g[:, 3] * GRID, g[:, 4] * GRID, g[:, 1], g[:, 2]
                 for b in (1, 2, 3):
                     L = b * o["T"]
@@ -109,15 +116,25 @@ def main() -> None:
                         v = lines.setdefault(key, np.zeros(6, int))
                         v += [(cr & fin).sum(), (cr & ~fin).sum(), (cr & fin & s1).sum(), (cr & ~fin & s1).sum(), (cr & fin & s2).sum(), (cr & ~fin & s2).sum()]
             print(f"{pr} T{T}: " + "; ".join(row))
+            per[f"{pr} T{T}"] = row
+    out: dict = {"pairs": args.pairs, "halo": args.halo, "per_world": per, "pooled": {}, "crossing": {}}
     for wd in (1.0, 2.0):
         t, c = tot[("tiled", wd)], tot[("control", wd)]
         rt, rc = _ratios(t, 5), _ratios(c, 5)
+        out["pooled"][f"{wd:g}s"] = {"vines_tiled_control": [int(t[4]), int(c[4])], "own_vine_share_tiled_control": [float(rt[1]), float(rc[1])],
+                                     "tiled_over_control": dict(zip(["density", "vine", "hook", "lotus", "peony", "teardrop"], (rt / rc).tolist()))}
         print(f"pooled +-{wd:g} s: vines tiled {int(t[4])} control {int(c[4])}; own strip / interior vine share tiled {rt[1]:.3f} control {rc[1]:.3f}; "
               f"tiled / control vine {rt[1] / rc[1]:.3f} density {rt[0] / rc[0]:.3f} hook {rt[2] / rc[2]:.3f} teardrop {rt[5] / rc[5]:.3f} "
               f"lotus {rt[3] / rc[3]:.3f} peony {rt[4] / rc[4]:.3f}")
     print("vines crossing each inner border line (x and y pooled): finished -> later, later -> finished | of those in +-1 s | in +-2 s")
     for (name, ln), v in sorted(lines.items(), key=lambda kv: (kv[0][1], kv[0][0] != "tiled")):
         print(f"  {ln:4s} {name:8s}: {v[0]:3d} {v[1]:3d} | {v[2]:3d} {v[3]:3d} | {v[4]:3d} {v[5]:3d}")
+        out["crossing"][f"{ln} {name}"] = v.tolist()
+    if args.json:
+        import json
+
+        Path(args.json).write_text(json.dumps(out, indent=1) + "\n")
+        print(f"wrote {args.json}")
 
 
 if __name__ == "__main__":
