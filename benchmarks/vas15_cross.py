@@ -1,8 +1,8 @@
 """The vines that cross a tile border, tiled vase world against its untiled control (issue 19.4, vas15).
 
-``python benchmarks/vas15_cross.py TILED:CONTROL [...] [--halo H]`` reads the worlds of
-``benchmarks/vas15_trace.py make --tag TILED --tiles T`` (and ``--tag CONTROL --untiled``) and
-prints, pooled over the pairs:
+``python benchmarks/vas15_cross.py TILED:CONTROL[:T] [...] [--halo H] [--json F]`` reads the worlds of
+``benchmarks/vas15_trace.py make --tag TILED --tiles T`` (and ``--tag CONTROL --untiled``; with ``:T`` only tile size T)
+and prints, pooled over the pairs:
 
 - per world and strip (+-1 s, +-2 s; vas19s_compare.py's lines, the world's edge band left out)
   the vines in the strip, tiled / control, and each world's own vine share in the strip
@@ -81,9 +81,11 @@ def main() -> None:
     lines: dict = {}
     per: dict = {}
     for pr in args.pairs:
-        tt, ct = pr.split(":")
+        tt, ct, *only = pr.split(":")
         for p in sorted(RES.glob(f"vas15_{tt}_T*.npz")):
             T = p.name.rsplit("_T", 1)[1][:-4]
+            if only and T != only[0]:
+                continue
             if not (RES / f"vas15_{ct}_T{T}.npz").exists():
                 continue
             row = []
