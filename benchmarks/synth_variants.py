@@ -14,7 +14,7 @@ change by running this script on both. Sticks (synth takes about 40 s each) only
 
     python benchmarks/synth_variants.py [--only NAME,...] [--variants 1-3] [--seeds 1-2]
                                         [--varied] [--scale 3.5] [--summary PATH]
-                                        [--harder]
+                                        [--harder] [--harder-variants 7,8]
 
 With ``--harder`` the cases are ``HARDER``'s instead (labels ``h0s7``, ``h0s8`` ..., set
 ``harder``; variant seeds 7 and 8; ``--varied`` and ``--variants`` are then ignored):
@@ -24,6 +24,10 @@ rings, clusters, stripes and sparse voids no audit has (other ring spacings, til
 and hub sizes; crowded and far clusters; narrow, wide, turned and dense stripes). Every
 set is a valid exemplar at variant seeds 7 and 8 (no overlapping pair). JSON:
 ``synth_variants_harder.json``.
+
+``--harder-variants 9,10`` draws the same ``HARDER`` sets at other variant seeds (default
+7,8: the rows above; implies ``--harder``): fresh held-out exemplars nobody tuned on
+(helper syn15, issue 13 point 1). Labels keep the form ``h{set}s{variant seed}``.
 """
 
 from __future__ import annotations
@@ -32,7 +36,7 @@ import sys
 from typing import Any
 
 import _variants
-from _variants import audit
+from _variants import audit, ints
 
 from strew import Arrangement, Region
 from strew.synth import synthesize
@@ -46,6 +50,7 @@ def run(ex: Arrangement, scale: float, seed: int, args: Any) -> tuple[Arrangemen
 
 def options(p: Any) -> None:
     p.add_argument("--harder", action="store_true", help="the HARDER parameter sets instead of the audit's (variant seeds 7, 8)")
+    p.add_argument("--harder-variants", default="7,8", help="variant seeds of the HARDER sets (default 7,8; others imply --harder)")
 
 
 def _harder() -> dict[str, list[dict[str, Any]]]:
@@ -83,11 +88,29 @@ def _harder() -> dict[str, list[dict[str, Any]]]:
     return out
 
 
+HARDER_VARIANTS = (7, 8)
+
+
 def _harder_cases(name: str, variants: list[int], varied: bool) -> list[tuple[str, str, int, dict[str, Any]]]:
-    return [(f"h{i}s{s}", "harder", s, kw) for i, kw in enumerate(_harder().get(name, [])) for s in (7, 8)]
+    return [(f"h{i}s{s}", "harder", s, kw) for i, kw in enumerate(_harder().get(name, [])) for s in HARDER_VARIANTS]
+
+
+def _harder_variants(argv: list[str]) -> tuple[int, ...] | None:
+    """The ``--harder-variants`` seeds named on the command line (None when absent)."""
+    for i, a in enumerate(argv):
+        if a == "--harder-variants" and i + 1 < len(argv):
+            return tuple(ints(argv[i + 1]))
+        if a.startswith("--harder-variants="):
+            return tuple(ints(a.split("=", 1)[1]))
+    return None
 
 
 if __name__ == "__main__":
+    hv = _harder_variants(sys.argv)
+    if hv is not None:
+        HARDER_VARIANTS = hv
+        if "--harder" not in sys.argv:
+            sys.argv.append("--harder")
     if "--harder" in sys.argv:  # the audit's own cases and suite stay as they are without the flag
         from grow_variants import _harder_suite
 
