@@ -564,6 +564,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         follow=follow,
     )
     prep._anchors = anchor  # _grow.anchors: the same mask, with the centres (_stand_around)
+    prep._area_r = area_radii(arr)  # _grow._larger_in_class: a kind's size by area as well
     prep.set_selection(selection)
     return prep
 
