@@ -15,12 +15,15 @@ the figure is the pass rate, compared before/after a change by running this on b
     python benchmarks/grow_variants.py [--only NAME,...] [--variants 1-3] [--seeds 1-2]
                                        [--varied] [--scale 3.5] [--summary PATH]
                                        [--mode fixed|rotate] [--times 10]
-                                       [--harder]
+                                       [--harder] [--harder-variants 7,8]
 
 With ``--harder`` the cases are ``HARDER``'s instead (labels ``h0s7``, ``h0s8`` ...,
 set ``harder``; variant seeds 7 and 8; ``--varied`` and ``--variants`` are then ignored):
 parameter sets no other audit has (size ratios 0.4-0.8, densities, 20-120 elements,
 stretched stones, uneven shares of three sizes). JSON: ``grow_variants_harder.json``.
+``--harder-variants 9,10`` draws the same sets at other variant seeds (default 7,8:
+the rows above; labels then ``h0s9``, ``h0s10`` ...): a held-out check that nobody has
+tuned on (helper grw15).
 """
 
 from __future__ import annotations
@@ -42,6 +45,7 @@ def options(p: Any) -> None:
     p.add_argument("--mode", default="fixed", choices=["fixed", "rotate"], help="grow's mode (JSON: grow_variants.json, grow_variants_rotate.json)")
     p.add_argument("--times", type=float, default=10.0, help="least output count / exemplar count: the region is enlarged once to reach it")
     p.add_argument("--harder", action="store_true", help="the HARDER parameter sets instead of the audit's (variant seeds 7, 8)")
+    p.add_argument("--harder-variants", default="7,8", help="with --harder: the variant seeds each set is drawn at (default 7,8)")
 
 
 # Cases no audit set has (helper gvar14g, issue 14 point 1): where hidden exemplars of the
@@ -102,8 +106,18 @@ HARDER: dict[str, list[dict[str, Any]]] = {
 }
 
 
-def _harder_cases(name: str, variants: list[int], varied: bool) -> list[tuple[str, str, int, dict[str, Any]]]:
-    return [(f"h{i}s{s}", "harder", s, kw) for i, kw in enumerate(HARDER.get(name, [])) for s in (7, 8)]
+def _harder_cases(name: str, variants: list[int], varied: bool, seeds: tuple[int, ...] = (7, 8)) -> list[tuple[str, str, int, dict[str, Any]]]:
+    return [(f"h{i}s{s}", "harder", s, kw) for i, kw in enumerate(HARDER.get(name, [])) for s in seeds]
+
+
+def _harder_variants(argv: list[str]) -> tuple[int, ...]:
+    """``--harder-variants`` read before the audit parses its arguments (the cases are chosen first)."""
+    for i, a in enumerate(argv):
+        if a.startswith("--harder-variants="):
+            return tuple(_variants.ints(a.split("=", 1)[1]))
+        if a == "--harder-variants" and i + 1 < len(argv):
+            return tuple(_variants.ints(argv[i + 1]))
+    return (7, 8)
 
 
 def _harder_suite() -> Any:
@@ -135,6 +149,6 @@ def run(ex: Arrangement, scale: float, seed: int, args: Any) -> tuple[Arrangemen
 if __name__ == "__main__":
     harder = "--harder" in sys.argv
     if harder:  # the audit's own cases and suite stay as they are without the flag
-        _variants.cases = _harder_cases
+        _variants.cases = functools.partial(_harder_cases, seeds=_harder_variants(sys.argv[1:]))
         _variants.fidelity_suite = _harder_suite
     audit(lambda a: ("grow_variants" if a.mode == "fixed" else f"grow_variants_{a.mode}") + ("_harder" if a.harder else ""), lambda a: f"grow:{a.mode}", run, __doc__, options=options)
