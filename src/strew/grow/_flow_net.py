@@ -89,6 +89,7 @@ import math
 import numpy as np
 
 from ._flow_kernels import boundary_distance
+from ._flow_memo import memo
 from ._flow_shear import fitted_moves, saved_moves, undo_moves
 from ._objects import ELEMENT
 
@@ -242,7 +243,7 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
         if band is None or solve is None:
             # (the band's pass keeps the bonds of its first round: an elastic network,
             # no bond flips to a new neighbour while it is fitted)
-            e = _delaunay_bonds(pts, 1.4 * L)
+            e = memo(g, "bonds", (pts, 1.4 * L), lambda pts=pts: _delaunay_bonds(pts, 1.4 * L))  # (the same bonds: _flow_memo)
             m = len(e)
             if m == 0:
                 return 0
@@ -595,11 +596,16 @@ def _six_share(g, xy: np.ndarray | None = None) -> float:
     """The share of the placed elements (at ``xy``, None: where they are) over two
     mean edges inside the region with six elements at 0.85-1.15 spacings
     (:func:`six_spacing`) and none nearer (``six_nbr_share`` of ``benchmarks/grow.py``)."""
+    if xy is None:
+        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+    return memo(g, "six_share", (xy,), lambda: _six_share_at(g, xy))  # (measured once: _flow_memo)
+
+
+def _six_share_at(g, xy: np.ndarray) -> float:
+    """:func:`_six_share` of the elements at ``xy``, measured."""
     from scipy.spatial import cKDTree
 
     L = g.l
-    if xy is None:
-        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
     q = xy[boundary_distance(g.region, xy) > 2.0 * L] if g.region is not None else xy
     if not len(q):
         return 0.0
@@ -642,9 +648,14 @@ def _turns(g, xy: np.ndarray | None = None) -> np.ndarray:
     """Each placed element's (at ``xy``, None: where they are, in ``g.order``) turn of
     :func:`_misalignment` (degrees, absolute), NaN for those within two mean edges of
     the region's edge, (n,); empty where no element or no exemplar site is inside."""
-    L = g.l
     if xy is None:
         xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+    return memo(g, "turns", (xy,), lambda: _turns_at(g, xy))  # (measured once: _flow_memo)
+
+
+def _turns_at(g, xy: np.ndarray) -> np.ndarray:
+    """:func:`_turns` of the elements at ``xy``, measured."""
+    L = g.l
     q = np.flatnonzero(boundary_distance(g.region, xy) > 2.0 * L) if g.region is not None else np.arange(len(xy))
     ex = np.asarray(g.ref.xy, dtype=float)
     er = getattr(g.ref.exemplar, "region", None)
@@ -686,12 +697,17 @@ def _grid(g) -> np.ndarray:
 
 def _far_points(g, grid: np.ndarray) -> np.ndarray:
     """The points of ``grid`` farther than 0.75 mean edges from every placed element."""
-    from scipy.spatial import cKDTree
-
     if not len(grid):
         return grid
-    L = g.l
     xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+    return memo(g, "far_points", (xy, grid), lambda: _far_points_at(g, xy, grid))  # (measured once: _flow_memo)
+
+
+def _far_points_at(g, xy: np.ndarray, grid: np.ndarray) -> np.ndarray:
+    """:func:`_far_points` of the elements at ``xy``, measured."""
+    from scipy.spatial import cKDTree
+
+    L = g.l
     return grid[cKDTree(xy).query(grid, distance_upper_bound=0.75 * L)[0] > 0.75 * L]
 
 
@@ -731,6 +747,11 @@ def _send_back(g, back: list, moves: dict, old: dict, level: dict) -> bool:
 def _six_sites(g, q: np.ndarray, xy: np.ndarray) -> np.ndarray:
     """Which of the elements at ``xy`` lie in ``q`` (the interior) with six elements
     at 0.85-1.15 spacings (:func:`six_spacing`) and none nearer, (n,) bool."""
+    return memo(g, "six_sites", (q, xy), lambda: _six_sites_at(g, q, xy))  # (measured once: _flow_memo)
+
+
+def _six_sites_at(g, q: np.ndarray, xy: np.ndarray) -> np.ndarray:
+    """:func:`_six_sites`, measured."""
     from scipy.spatial import cKDTree
 
     tree = cKDTree(xy)
@@ -800,6 +821,11 @@ def _far_circles(g, xy: np.ndarray) -> np.ndarray:
     """The centres of the empty circles (Delaunay circumcircles of the elements at
     ``xy``) wider than 0.74 mean edges in radius, over 1.5 mean edges inside the
     region, (k, 2): exact where a grid samples."""
+    return memo(g, "far_circles", (xy,), lambda: _far_circles_at(g, xy))  # (measured once: _flow_memo)
+
+
+def _far_circles_at(g, xy: np.ndarray) -> np.ndarray:
+    """:func:`_far_circles`, measured."""
     from scipy.spatial import Delaunay
 
     L = g.l
