@@ -23,9 +23,10 @@ this replaced gave, so the growth is unchanged (same bytes for the same seed). A
 walks only the cells any entry was made in, so a disc far wider than the pattern costs no
 more than the pattern.
 
-The two compiled kernels, point queries (one or many) and the crossing test, are the
-grid's :func:`~strew._kernels.grid.hash_near` and :func:`~strew._kernels.grid.hash_cross`
-(numba, cached); each first run on a fresh install compiles them (issue 16).
+The compiled kernels, point queries (one: :func:`strew.grow._index_kernels.near_one`;
+many: the grid's :func:`~strew._kernels.grid.hash_near`) and the crossing test
+(:func:`~strew._kernels.grid.hash_cross`), are numba's, cached; each first run on a fresh
+install compiles them (issue 16).
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from .._kernels.grid import GONE, HashGrid, hash_cross, hash_near
-from ._index_kernels import edge_insert
+from ._index_kernels import edge_insert, near_one
 
 __all__ = ["GrowIndex"]
 
@@ -62,9 +63,7 @@ class GrowIndex:
         self.state = state
         self.xy = xy
         self.points = HashGrid(self.cell, len(state))
-        # buffers of single queries: the query, the pairs found
-        self.qx, self.qy, self.qr = np.zeros(1), np.zeros(1), np.zeros(1)
-        self.out_q = np.zeros(len(state), dtype=np.int64)
+        # buffer of single queries' answers (:func:`near_one`)
         self.out = np.zeros(len(state), dtype=np.int64)
         # edges: (end, end, original of the first, original of the second); ids by pair
         self.edge_cells = HashGrid(self.cell, 1024)
@@ -85,7 +84,6 @@ class GrowIndex:
         self.state = state
         if len(state) > len(self.out):
             self.points.reserve(len(state))
-            self.out_q = np.zeros(len(state), dtype=np.int64)
             self.out = np.zeros(len(state), dtype=np.int64)
 
     def cell_of(self, x: float, y: float) -> tuple[int, int]:
@@ -118,11 +116,9 @@ class GrowIndex:
         """Objects within ``r`` of (x, y) whose state ``s`` has bit ``1 << s`` in
         ``states``, in grid order; at most ``limit`` (-1: all)."""
         pts = self.points
-        self.qx[0] = x
-        self.qy[0] = y
-        self.qr[0] = r
-        k = hash_near(self.qx, self.qy, self.qr, states, limit if limit > 0 else len(self.out), self.cell,
-                      pts.head, pts.ent, pts.cur, pts.ext, self.pos, self.state, self.out_q, self.out)
+        # (one query as scalars: hash_near's answer, four array arguments fewer)
+        k = near_one(float(x), float(y), float(r), states, limit if limit > 0 else len(self.out), self.cell,
+                     pts.head, pts.ent, pts.cur, pts.ext, self.pos, self.state, self.out)
         return self.out[:k].tolist()
 
     def near_many(self, xs: np.ndarray, ys: np.ndarray, rs: np.ndarray, states: int) -> tuple[np.ndarray, np.ndarray]:

@@ -7,6 +7,15 @@ box's cells, the extent, the chains). :func:`edge_insert` does the same in one c
 :func:`strew._kernels.grid.hash_insert_box` writing the entries as ``insert`` has them
 written; the caller keeps the grid's Python fields in step and takes ``insert`` when the
 table is due a rebuild or the entries would not fit.
+
+:func:`near_one` is :func:`strew._kernels.grid.hash_near` for one query given as
+scalars (``GrowIndex.near``): the grower asks single queries for every element placed
+(Fig. 6 (b), the overlap guard, the closeness rules; 3,512 in the flow growth of
+``benchmarks/grow.py --against``'s hexflow, some 28,000 in a growth of 2,000 stones),
+and numba's call costs about a quarter of a microsecond per array argument; the
+batched kernel's query and output arrays (four of its fourteen arguments) and the
+three writes that filled them were a third of each call (h/spd14w's cb7c585, ported).
+Both kernels are reached by the warm-up's 'grow' case.
 """
 
 from __future__ import annotations
@@ -15,7 +24,7 @@ import math
 
 import numba
 
-from .._kernels.grid import GONE, hash_insert_box
+from .._kernels.grid import GONE, HASH_X, HASH_Y, hash_insert_box, hash_span
 
 
 @numba.njit(cache=True, nogil=True)
@@ -47,3 +56,33 @@ def edge_insert(h, head, tail, ent, ext, ne, cur, item, pos, a, b):  # pragma: n
     new = cur[item] == GONE
     cur[item] = ne
     return n, widened, new
+
+
+@numba.njit(cache=True, nogil=True)
+def near_one(x, y, r, classes, limit, h, head, ent, cur, ext, pos, cls, out_i):  # pragma: no cover - numba
+    """Point items of a hashed grid within ``r`` of ``(x, y)`` whose class bit is set in
+    ``classes``, at most ``limit``, in the order :func:`~strew._kernels.grid.hash_near`
+    gives them (cells x-major, creation order within a cell), written to ``out_i``
+    (room for every item: each live item is listed once); returns their count."""
+    mask = head.shape[0] - 1
+    r2 = r * r
+    found = 0
+    # (a live item is listed once, so this never bites; but nothing is written beyond
+    # out_i. A comparison, not min(): each builtin is one more function to compile)
+    if limit > out_i.shape[0]:  # noqa: PLR1730
+        limit = out_i.shape[0]
+    cx0, cy0, cx1, cy1 = hash_span(x - r, y - r, x + r, y + r, h, ext)
+    for cx in range(cx0, cx1 + 1):
+        for cy in range(cy0, cy1 + 1):
+            e = head[((cx * HASH_X) ^ (cy * HASH_Y)) & mask]
+            while e >= 0 and found < limit:
+                if ent[e, 1] == cx and ent[e, 2] == cy:
+                    i = ent[e, 0]
+                    if e >= cur[i]:
+                        dx = pos[i, 0] - x
+                        dy = pos[i, 1] - y
+                        if dx * dx + dy * dy <= r2 and ((classes >> cls[i]) & 1) != 0:
+                            out_i[found] = i
+                            found += 1
+                e = ent[e, 3]
+    return found
