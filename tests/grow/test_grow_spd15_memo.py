@@ -11,15 +11,14 @@ made each time.
 from __future__ import annotations
 
 import numpy as np
+from test_grow_flow14d_stretch import hex_ref  # noqa: F401 (a fixture)
+from test_grow_flow14g_retry import _turning_90
+from test_grow_flow_gaps import SP
 
 from strew import Region
 from strew.grow import _flow_net
 from strew.grow._growth import GrowParams, grow_reference
 from strew.grow._objects import ELEMENT
-
-from test_grow_flow14d_stretch import hex_ref  # noqa: F401 (a fixture)
-from test_grow_flow14g_retry import _turning_90
-from test_grow_flow_gaps import SP
 
 
 def _grown(hex_ref, monkeypatch):
@@ -78,13 +77,25 @@ def test_memo_answers_what_measuring_gives(hex_ref, monkeypatch):
     moved[5, 0] = np.nextafter(moved[5, 0], np.inf)
     memo(g, "probe", (moved,), measure)
     assert len(calls) == 2
+    # past the byte budget the oldest answers go, and are measured anew when asked
+    from strew.grow import _flow_memo
+
+    monkeypatch.setattr(_flow_memo, "MEMO_BYTES", 3 * xy0.nbytes)
+    for k in range(4):
+        memo(g, "budget", (xy0 + k,), measure)
+    store, used = _flow_memo._STORE[g]
+    assert used[0] <= 3 * xy0.nbytes and used[0] == sum(size for _, size in store.values())
+    n = len(calls)
+    memo(g, "budget", (xy0 + 3,), measure)  # (kept)
+    memo(g, "budget", (xy0 + 0,), measure)  # (dropped: measured again)
+    assert len(calls) == n + 1
     # a stand-in without weak references is measured each time
     from types import SimpleNamespace
 
     s = SimpleNamespace()
     memo(s, "probe", (xy0,), measure)
     memo(s, "probe", (xy0,), measure)
-    assert len(calls) == 4
+    assert len(calls) == n + 3
 
 
 def test_flow_growth_is_the_same_with_the_memo(hex_ref, monkeypatch):

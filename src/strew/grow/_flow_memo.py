@@ -20,8 +20,10 @@ keys are equal arrays), and gives the same answer when asked again; answers are
 made read-only so no caller can change a kept one. The store is not in the grower's
 state (``vars``), so :func:`strew.grow._flow_retry.snapshot` does not copy it and
 :func:`strew.grow._flow_retry.restore` does not drop it (an answer stays true of its
-positions whatever state is put back), and it goes with the grower. At most
-:data:`MEMO_SIZE` answers are kept per grower (the oldest dropped first).
+positions whatever state is put back), and it goes with the grower. The keys hold
+the arrays' bytes, so at most :data:`MEMO_BYTES` of keys are kept per grower (the
+oldest answers dropped first: a far-point key holds the quarter-edge grid too, some
+0.1 MB for 30 x 20 spacings, 2.6 MB for 10,000 elements).
 """
 
 from __future__ import annotations
@@ -34,21 +36,25 @@ import numpy as np
 
 __all__ = ["memo"]
 
-#: how many answers are kept per grower (each some kilobytes; a growth of the flow
-#: cases asks some 160 measures of some 70 position sets)
-MEMO_SIZE = 256
+#: how many bytes of keys are kept per grower (the hexflow growth of
+#: ``benchmarks/grow.py --against`` keeps 72 answers, 1.5 MB)
+MEMO_BYTES = 32 << 20
 
+# grower -> (answers by key, [bytes of their keys]), insertion-ordered
 _STORE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
-def _key(name: str, arrays: tuple) -> tuple:
+def _key(name: str, arrays: tuple) -> tuple[tuple, int]:
     parts: list[Any] = [name]
+    size = 0
     for a in arrays:
         if isinstance(a, np.ndarray):
-            parts.append((a.shape, a.dtype.str, np.ascontiguousarray(a).tobytes()))
+            b = np.ascontiguousarray(a).tobytes()
+            size += len(b)
+            parts.append((a.shape, a.dtype.str, b))
         else:
             parts.append(a)
-    return tuple(parts)
+    return tuple(parts), size
 
 
 def memo(g, name: str, arrays: tuple, compute: Callable[[], Any]) -> Any:
@@ -56,16 +62,17 @@ def memo(g, name: str, arrays: tuple, compute: Callable[[], Any]) -> Any:
     ``name`` and arguments ``arrays`` (numpy arrays, compared by value, or hashable
     values); array answers come back read-only."""
     try:
-        store = _STORE.get(g)
+        kept = _STORE.get(g)
     except TypeError:  # (a stand-in that takes no weak reference: measured each time)
         return compute()
-    if store is None:
-        store = {}
-        _STORE[g] = store
-    key = _key(name, arrays)
+    if kept is None:
+        kept = ({}, [0])
+        _STORE[g] = kept
+    store, used = kept
+    key, size = _key(name, arrays)
     got = store.get(key)
     if got is not None:
-        return got
+        return got[0]
     got = compute()
     if isinstance(got, np.ndarray):
         got.setflags(write=False)
@@ -73,7 +80,8 @@ def memo(g, name: str, arrays: tuple, compute: Callable[[], Any]) -> Any:
         for a in got:
             if isinstance(a, np.ndarray):
                 a.setflags(write=False)
-    if len(store) >= MEMO_SIZE:
-        del store[next(iter(store))]
-    store[key] = got
+    while store and used[0] + size > MEMO_BYTES:
+        used[0] -= store.pop(next(iter(store)))[1]
+    store[key] = (got, size)
+    used[0] += size
     return got
