@@ -213,7 +213,9 @@ def border_band(arr: Any, t: Tile, halo: float) -> Any:
     """The elements of tile ``t``'s result that a neighbour can see: centres within
     ``2 halo`` of its rectangle's edges (the only part sent on to dependent tiles)."""
     x0, y0, x1, y1 = t.rect
-    d = 2 * halo
+    # 2 halo, and farther for an element whose bounding disc is wider than the halo: it
+    # can reach a neighbour's region from deeper inside (see run_tile's context)
+    d = 2 * halo + (_radii(arr) if len(arr) else 0.0)
     inner = (arr.x > x0 + d) & (arr.x < x1 - d) & (arr.y > y0 + d) & (arr.y < y1 - d)
     return arr.select(~inner)
 
@@ -221,6 +223,15 @@ def border_band(arr: Any, t: Tile, halo: float) -> Any:
 def _near(arr: Any, rect: tuple[float, float, float, float]) -> np.ndarray:
     x0, y0, x1, y1 = rect
     return (arr.x >= x0) & (arr.x <= x1) & (arr.y >= y0) & (arr.y <= y1)
+
+
+def _reaches(arr: Any, rect: tuple[float, float, float, float]) -> np.ndarray:
+    """(n,) bool: the elements whose bounding disc meets the rectangle ``rect``."""
+    x0, y0, x1, y1 = rect
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    dx = np.maximum(np.maximum(x0 - x, x - x1), 0.0)
+    dy = np.maximum(np.maximum(y0 - y, y - y1), 0.0)
+    return dx * dx + dy * dy < _radii(arr) ** 2
 
 
 @dataclass(frozen=True)
@@ -298,8 +309,10 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     else:
         region = Region.rectangle(grown[2] - grown[0], grown[3] - grown[1])
     links = _links(t, job.grid[0], job.grid[1], torus)
-    # every finished element that can touch the grown rectangle: centre within 2 halo
-    # (halo >= the element's diameter, see world()); across the wrap, moved next to t
+    # every finished element that can touch the grown rectangle: centre within 2 halo,
+    # and any element whose bounding disc meets it (wider than the halo, as ornament's
+    # quarter-tile halo allows on small tiles: hierarchy at tile 24 overlapped a leaf whose
+    # centre lay 2.1 halo away); across the wrap, moved next to t
     window = _grow(t.rect, 2 * job.halo, None if torus else job.size)
     parts = []
     for n, shifts in zip(neighbours, links.values()):
@@ -307,7 +320,7 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
             continue
         for dx, dy in shifts:
             m = n.replace(x=n.x + dx, y=n.y + dy) if (dx or dy) else n
-            parts.append(m.select(_near(m, window)))
+            parts.append(m.select(_near(m, window) | _reaches(m, grown)))
     parts = [p for p in parts if len(p)]
     context = concat(_harmonize(parts)) if parts else None
     # one element diameter, at most the halo (how far the tile's region reaches past it)
