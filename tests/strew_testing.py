@@ -12,7 +12,6 @@ import functools
 import numpy as np
 from hypothesis import strategies as st
 
-
 finite = st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False)
 angles = st.floats(-np.pi, np.pi, allow_nan=False, exclude_min=True)
 scales = st.floats(0.1, 10.0, allow_nan=False)
@@ -165,3 +164,27 @@ def willow_stem_records(pat, segs):
     for i, (a, b) in enumerate(segs):
         recs[i] = (element_record(willow_stem(pat, a, b), pat),)
     return recs
+
+
+def synth_inner_density_ratios(ex, rng: int = 1, scale: float = 2.0) -> dict[str, float]:
+    """Each kind's density in a synth output of ``scale`` x the exemplar's side, away from
+    the region's edge, against the exemplar's inner-frame density (margin two of the
+    largest collision radii, as ``strew.synth._grow._room_cap`` counts): ``{kind name: ratio}``."""
+    import shapely
+
+    from strew import Region
+    from strew.synth import synthesize
+    from strew.synth._api import new_state
+    from strew.synth._displace import _inner_density
+
+    prep = new_state(ex).prep
+    margin = 2.0 * float(prep.rc.max())
+    dens = _inner_density(prep, margin)
+    names = list(ex.kinds)
+    x0, y0, x1, y1 = ex.region.bounds
+    region = Region.rectangle(scale * (x1 - x0), scale * (y1 - y0))
+    out = synthesize(ex, region, rng=rng, measure=False)
+    inner = region.geometry.buffer(-margin)
+    xy, kind = np.asarray(out.xy), np.asarray(out.kind)
+    inside = shapely.contains_xy(inner, xy[:, 0], xy[:, 1])
+    return {nm: np.count_nonzero(inside & (kind == k)) / inner.area / dens[k] for k, nm in enumerate(names)}

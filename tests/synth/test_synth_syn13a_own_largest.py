@@ -6,14 +6,7 @@ each place now takes its largest-class element from the copy of its nearest seed
 
 from __future__ import annotations
 
-import numpy as np
-import shapely
-from strew_testing import fidelity_suite
-
-from strew import Region
-from strew.synth import synthesize
-from strew.synth._api import new_state
-from strew.synth._displace import _inner_density
+from strew_testing import fidelity_suite, synth_inner_density_ratios
 
 
 def test_largest_stones_keep_their_exemplar_density():
@@ -22,16 +15,6 @@ def test_largest_stones_keep_their_exemplar_density():
     # collision radii, as _grow._room_cap counts): d67a7c3 1.314 / 0.859 (seeds 2-4 large
     # 1.24-1.37), now 1.014 / 0.997 (seeds 2-4 large 1.01-1.15)
     ex = fidelity_suite().make_exemplar("three_sizes", rng=7, ratios=(1.0, 2.5, 4.0), counts=(100, 100, 15))
-    prep = new_state(ex).prep
-    margin = 2.0 * float(prep.rc.max())
-    dens = _inner_density(prep, margin)
-    names = list(ex.kinds)
-    x0, y0, x1, y1 = ex.region.bounds
-    region = Region.rectangle(2.0 * (x1 - x0), 2.0 * (y1 - y0))
-    out = synthesize(ex, region, rng=1, measure=False)
-    inner = region.geometry.buffer(-margin)
-    xy, kind = np.asarray(out.xy), np.asarray(out.kind)
-    inside = shapely.contains_xy(inner, xy[:, 0], xy[:, 1])
-    ratio = {nm: np.count_nonzero(inside & (kind == names.index(nm))) / inner.area / dens[names.index(nm)] for nm in ("medium", "large")}
+    ratio = synth_inner_density_ratios(ex, rng=1)
     assert ratio["large"] <= 1.2, ratio
     assert ratio["medium"] >= 0.93, ratio

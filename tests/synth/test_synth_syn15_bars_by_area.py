@@ -9,13 +9,10 @@ density[bar] 0.175-0.21 against 0.121 on seeds 1-6 at h3s9."""
 from __future__ import annotations
 
 import numpy as np
-import shapely
-from strew_testing import fidelity_suite
+import pytest
+from strew_testing import fidelity_suite, synth_inner_density_ratios
 
-from strew import Region
-from strew.synth import synthesize
 from strew.synth._api import new_state
-from strew.synth._displace import _inner_density
 from strew.synth._grow import _larger_in_class
 
 STRIPES_H3 = {"band": 22.0, "angle": 1.1, "dot": 4.0, "bar": (10.0, 4.0), "count": 160}
@@ -36,19 +33,10 @@ def test_bars_not_placed_before_dots_of_larger_area():
     assert np.all(bonus[prep2.kind == bar] > 0) and not bonus[prep2.kind != bar].any()
 
 
+@pytest.mark.slow
 def test_bars_keep_their_exemplar_density():
     # 2x the exemplar's side, seed 1; bars per area away from the region's edge against
     # the exemplar's inner-frame density (margin two of the largest collision radii)
     ex = fidelity_suite().make_exemplar("stripes", rng=9, **STRIPES_H3)
-    prep = new_state(ex).prep
-    margin = 2.0 * float(prep.rc.max())
-    dens = _inner_density(prep, margin)
-    names = list(ex.kinds)
-    x0, y0, x1, y1 = ex.region.bounds
-    region = Region.rectangle(2.0 * (x1 - x0), 2.0 * (y1 - y0))
-    out = synthesize(ex, region, rng=1, measure=False)
-    inner = region.geometry.buffer(-margin)
-    xy, kind = np.asarray(out.xy), np.asarray(out.kind)
-    inside = shapely.contains_xy(inner, xy[:, 0], xy[:, 1])
-    ratio = {nm: np.count_nonzero(inside & (kind == names.index(nm))) / inner.area / dens[names.index(nm)] for nm in names}
+    ratio = synth_inner_density_ratios(ex, rng=1)
     assert ratio["bar"] <= 1.12, ratio

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numba
 
-from .._kernels.grid import HASH_X, HASH_Y, hash_span
+from ._index_kernels import near_one
 
 #: state bits of SEED (1) and ELEMENT (2): the objects the three tests look at
 _SEED = 1
@@ -28,24 +28,9 @@ def _near_into(x, y, r, h, head, ent, cur, ext, pos, state, out, classes=_SEED_O
     """The objects within ``r`` of (x, y) whose state bit is in ``classes`` (default:
     seeds and elements) in ``out``, in :func:`~strew._kernels.grid.hash_near`'s order
     (cells x-major, creation order in a cell); their count."""
-    mask = head.shape[0] - 1
-    r2 = r * r
-    k = 0
-    cx0, cy0, cx1, cy1 = hash_span(x - r, y - r, x + r, y + r, h, ext)
-    for cx in range(cx0, cx1 + 1):
-        for cy in range(cy0, cy1 + 1):
-            e = head[((cx * HASH_X) ^ (cy * HASH_Y)) & mask]
-            while e >= 0:
-                if ent[e, 1] == cx and ent[e, 2] == cy:
-                    i = ent[e, 0]
-                    if e >= cur[i]:
-                        dx = pos[i, 0] - x
-                        dy = pos[i, 1] - y
-                        if dx * dx + dy * dy <= r2 and ((classes >> state[i]) & 1) != 0:
-                            out[k] = i
-                            k += 1
-                e = ent[e, 3]
-    return k
+    # near_one's walk (the same cells, the same order), bounded by out's room: each live
+    # object is listed once, and out has room for all of them
+    return near_one(x, y, r, classes, out.shape[0], h, head, ent, cur, ext, pos, state, out)
 
 
 @numba.njit(cache=True, nogil=True)
