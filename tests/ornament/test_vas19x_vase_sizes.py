@@ -32,7 +32,12 @@ def test_vase_panel_opens_with_vines_and_flowers(side):
     # grow 0 flowers and 50 hooks with their teardrops)
     c = _counts(side, max_elements=100)
     flowers = c.get("lotus", 0) + c.get("peony", 0)
-    assert flowers >= 45 and c.get("vine", 0) == flowers, (side, c)
+    # vaf16: where a grid point lies within MIN_VINE of the seed (the panel's centre: 264,
+    # 300, 308, 352), the seed opens that flower itself, with no vine; every other flower is
+    # delivered by a vine
+    g = np.round(side / 2 / vase.GRID) * vase.GRID
+    at_seed = int(float(np.hypot(g - side / 2, g - side / 2)) <= vase.MIN_VINE)
+    assert flowers >= 45 and c.get("vine", 0) == flowers - at_seed, (side, c)
 
 
 def test_free_grid_point_skips_the_vines_start():
