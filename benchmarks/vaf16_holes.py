@@ -3,8 +3,9 @@
 ``python benchmarks/vaf16_holes.py world NPZ [NPZ ...] [--json F]`` reads saved worlds
 (``benchmarks/results/orn19m_*.npz``, as ``orn19m_willow.py make --pattern vase`` and
 ``vas15_trace.py make`` write them) and lists every grid point (vase.GRID) whose flower fits
-in the world and that holds no lotus or peony, with its distance to the nearest first-phase
-tile seed (a tile's centre; the world's centre for an untiled world).
+in the world and that holds no lotus or peony, with its distance to the nearest tile seed
+(the centre of the tile's region with its halo, clipped to the world; the world's centre
+untiled).
 
 ``PYTHONPATH=TREE/src python benchmarks/vaf16_holes.py panel SIDE [SIDE ...] [--seed S]``
 grows untiled square panels (the vines' phase, min_radius 5, as vas19x_sizes.py) and lists
@@ -12,7 +13,9 @@ the same, with the distance to the seed (the panel's centre), and the panel's di
 (spi19p_identity.digest) to compare two trees.
 
 At f1671ca a grid point within MIN_VINE of a seed stayed empty: untiled 221 / 225 / 227 /
-229.2 (seed 0.7 / 3.5 / 4.9 / 6.5 from (5, 5)), 264 (the seed on (6, 6)).
+229.2 (seed 0.7 / 3.5 / 4.9 / 6.5 from (5, 5)), 264 (the seed on (6, 6)); tiled T60 s1
+(7, 7) (5.66 from tile 10's seed), T72 s1 (2, 2), (2, 8), (8, 2), (8, 8) (1.41 / 4.12 /
+4.12 / 5.66 from a tile's seed).
 """
 
 from __future__ import annotations
@@ -56,16 +59,18 @@ def main() -> None:
             kinds = [str(k) for k in z["kinds"]]
             fl = np.isin(z["kind"], [kinds.index("lotus"), kinds.index("peony")])
             tiled = tile < side
-            # first-phase tiles' seeds: the centres of the tiles whose (row + column) is even
-            # on the 4 x 4 plan (strew.tiles' phases); an untiled world's seed is its centre
+            # a tile's seed: the centre of its region, the tile grown by the halo and clipped
+            # to the world (edge tiles' seeds lie halo / 2 in from the tile's centre); an
+            # untiled world's seed is its centre
             if tiled:
-                n = round(side / tile)
-                seeds = np.array([((a + 0.5) * tile, (b + 0.5) * tile) for a in range(n) for b in range(n)])
+                n, h = round(side / tile), float(z["meta"][2])
+                c = [(max(0.0, a * tile - h) + min(side, (a + 1) * tile + h)) / 2 for a in range(n)]
+                seeds = np.array([(a, b) for a in c for b in c])
             else:
                 seeds = np.array([[side / 2, side / 2]])
             tot, h = _holes(z["x"][fl], z["y"][fl], side, seeds)
             res[Path(p).name] = {"grid_points": tot, "flowers": int(fl.sum()), "holes": h}
-            print(f"{Path(p).name}: {tot} grid points, {int(fl.sum())} flowers, no flower at {h} (i, j, to a tile centre)",
+            print(f"{Path(p).name}: {tot} grid points, {int(fl.sum())} flowers, no flower at {h} (i, j, to a tile's seed)",
                   flush=True)
     else:
         from spi19p_identity import digest
