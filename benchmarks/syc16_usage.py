@@ -83,3 +83,29 @@ for j, q in enumerate(oo):
     cand = od[tree.query_ball_point(pos[q], 1.2 * pd[j] + 1.0)]
     orph += not np.any(src[cand] == par[j])
 print(f"  dots whose exemplar parent's copy is not beside them (orphans): {orph} of {len(oo)} ({orph / len(oo):.3f})")
+# counterfactual (measurement only): the final output less those orphan dots (still standing at the end), and less as
+# many dots drawn at random, scored by the fidelity metric
+from strew.metrics import fidelity
+
+orph_pos = []
+for j, q in enumerate(oo):
+    cand = od[tree.query_ball_point(pos[q], 1.2 * pd[j] + 1.0)]
+    if not np.any(src[cand] == par[j]):
+        orph_pos.append(pos[q])
+hit = cKDTree(out.xy).query(np.array(orph_pos))
+drop = hit[1][hit[0] < 1e-6]
+keep = np.ones(len(out), bool); keep[drop] = False
+dotsi = np.flatnonzero(out.kind == do)
+keep2 = np.ones(len(out), bool); keep2[np.random.default_rng(0).choice(dotsi, len(drop), replace=False)] = False
+for lab, arr in (("as is", out), (f"less {len(drop)} orphans", out.select(keep)), (f"less {len(drop)} random dots", out.select(keep2))):
+    m = fidelity(ex, arr, eq5=False, local=False).metrics
+    print(f"  {lab}: nn[dot>dot] {m['nn[dot>dot]'].value:.4f} density[dot] {m['density[dot]'].value:.3f} nn[disc>dot] {m['nn[disc>dot]'].value:.4f}")
+# counterfactual: only enough orphans to bring dots to the exemplar's density (density[dot] is |ratio - 1|, ratio > 1
+# here), those nearest another dot first, against as many random dots
+n_dot = len(dotsi)
+k = int(round(n_dot * (1 - 1 / (1 + fidelity(ex, out, eq5=False, local=False).metrics["density[dot]"].value))))
+ddist = cKDTree(out.xy[dotsi]).query(out.xy[drop], 2)[0][:, 1]
+for lab, rm in ((f"less {k} closest orphans", drop[np.argsort(ddist)[:k]]), (f"less {k} random dots", np.random.default_rng(0).choice(dotsi, k, replace=False))):
+    kk = np.ones(len(out), bool); kk[rm] = False
+    m = fidelity(ex, out.select(kk), eq5=False, local=False).metrics
+    print(f"  {lab}: nn[dot>dot] {m['nn[dot>dot]'].value:.4f} density[dot] {m['density[dot]'].value:.3f} nn[disc>dot] {m['nn[disc>dot]'].value:.4f} (tol {m['nn[dot>dot]'].tolerance:.3f})")
