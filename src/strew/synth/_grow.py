@@ -2109,6 +2109,11 @@ def grow(
         from ._thin import thin_small  # (lazy: it imports _displace, which imports this module)
 
         thin_small(state, since=start_n)
+    if state.n > start_n and not len(state.brush_radii):
+        from . import _thin
+
+        if _thin.THIN_ORPHANS:
+            _thin.thin_orphans(state, since=start_n)
     rep.done(state.n - start_n)
     return state.n - start_n
 

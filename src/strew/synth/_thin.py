@@ -155,3 +155,84 @@ def thin_small(state: SynthState, since: int = 0) -> int:
     keep = np.ones(n, bool)
     keep[vis[~alive[vis]]] = False
     return state.remove(~keep)
+
+
+THIN_ORPHANS = True
+""":func:`grow` takes out the surplus of children standing without their parent's copy
+(see :func:`thin_orphans`)."""
+
+
+def thin_orphans(state: SynthState, since: int = 0) -> int:
+    """Remove output children (``_prepare.parents``: a smaller element leaning on a
+    parent) that stand without a copy of their exemplar parent beside them, where their
+    kind is denser than its exemplar, those nearest another element of their kind first,
+    until the kind's density is the exemplar's; returns the number removed.
+
+    Extension of §5.1 (a copy brings an element's whole neighbourhood; where the
+    parent of a copy did not land its children still may, beside another copy's
+    parent). Measured first (clusters h3s9 at 3.5x, fresh held-out exemplar, seeds
+    1-3; ``python benchmarks/syc16_usage.py``): 13-16 % of the dots stand away from
+    their parent's copy (the exemplar 3 %), dots at 1.033-1.039 of the exemplar's
+    density and nn[dot>dot] 0.054-0.0575 against 0.05. Taking out as many dots as the
+    surplus, the orphans nearest another dot first, gives 0.031-0.035; as many dots at
+    random 0.050-0.054. Densities as ``_grow._room_cap`` counts them (the region and the
+    exemplar shrunk by two of the largest collision radii); one exemplar only. Only
+    leaf kinds (none of the exemplar's elements leans on one), and only orphans nearer
+    another element of their kind than the exemplar's tenth percentile of that
+    distance: without these limits ``synth_variants.py --harder`` lost 4 rows (three
+    sizes h5s7, h9s7 s1/s2, two sizes h7s8; ``syc16_rejected_harder_all_cmp.txt``).
+    """
+    from ._displace import _inner_density  # (lazy: _displace imports _grow)
+
+    prep = state.prep
+    if np.count_nonzero(prep.selected) != 1 or state.region is None or state.n <= since:
+        return 0
+    margin = 2.0 * float(prep.rc.max())
+    inner = state.region.geometry.buffer(-margin)
+    if inner.is_empty or inner.area <= 0.25 * state.region.geometry.area:
+        return 0
+    dens = _inner_density(prep, margin)
+    src = state.src
+    vis = np.flatnonzero(~prep.void[src])
+    if len(vis) < 2:
+        return 0
+    par = prep.parent[src[vis]]
+    ins = shapely.contains_xy(inner, state.pos[vis, 0], state.pos[vis, 1])
+    tree = cKDTree(state.pos[vis])
+    drop = []
+    selv = prep.selected_elements & ~prep.void
+    parents = np.unique(prep.parent[selv & (prep.parent >= 0)])
+    for k in np.unique(prep.skind[src[vis[par >= 0]]]):
+        # leaf kinds only: a kind others lean on (three sizes' medium stones) is a parent's
+        # structure too (three sizes h9s7 nn[medium>medium] 0.222/0.184 with it)
+        if not np.isfinite(dens[k]) or np.any(prep.skind[parents] == k):
+            continue
+        of_k = prep.skind[src[vis]] == k
+        surplus = int(np.count_nonzero(of_k & ins)) - int(np.floor(dens[k] * float(inner.area)))
+        if surplus <= 0:
+            continue
+        cand = np.flatnonzero(of_k & ins & (par >= 0) & (vis >= since))
+        orphan = np.zeros(len(cand), bool)
+        for j, c in enumerate(cand):
+            p = par[c]
+            off = float(np.hypot(*(prep.pos[src[vis[c]]] - prep.pos[p])))
+            near = tree.query_ball_point(state.pos[vis[c]], 1.2 * off + float(prep.r[src[vis[c]]]))
+            orphan[j] = not np.any(src[vis[near]] == p)
+        cand = cand[orphan]
+        if not len(cand):
+            continue
+        kp = state.pos[vis[of_k]]
+        dd = cKDTree(kp).query(state.pos[vis[cand]], 2)[0][:, 1]
+        # only orphans squeezed closer to their kind than the exemplar's tenth percentile
+        mine = np.flatnonzero(prep.selected_elements & ~prep.void & (prep.skind == k))
+        if len(mine) < 2:
+            continue
+        q10 = float(np.quantile(cKDTree(prep.pos[mine]).query(prep.pos[mine], 2)[0][:, 1], 0.1))
+        sq = dd < q10
+        cand, dd = cand[sq], dd[sq]
+        drop.append(vis[cand[np.argsort(dd, kind="stable")[:surplus]]])
+    if not drop:
+        return 0
+    keep = np.ones(state.n, bool)
+    keep[np.concatenate(drop)] = False
+    return state.remove(~keep)
