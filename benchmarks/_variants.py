@@ -6,7 +6,8 @@ Each case draws an exemplar with ``make_exemplar(name, rng=VARIANT, **variation)
 
 - ``v1``, ``v2`` ... the default parameters at other seeds (``--variants``);
 - with ``--varied``, ``p0``, ``p1`` ... the parameter sets of ``VARIED`` then ``EDGE``
-  below, each drawn at variant seeds 7 and 8. ``VARIED`` holds the sets used before this
+  below, each drawn at variant seeds 7 and 8 (``--varied-variants 9,10``: at other
+  variant seeds, a held-out draw; labels ``p0s9``, ``p0s10`` ...; implies ``--varied``). ``VARIED`` holds the sets used before this
   audit (their labels and results stay comparable); ``EDGE`` pushes each class's knobs
   (size ratio, density, counts, spacing, noise, angle, cluster size) to the edges of what
   a user would plausibly draw, each still a valid exemplar of its class (checked: no two
@@ -126,12 +127,17 @@ def ints(text: str) -> list[int]:
     return out
 
 
+# the variant seeds the VARIED and EDGE sets are drawn at; ``--varied-variants`` sets it
+# (helper fresh17: a held-out draw nobody tuned on; labels keep the form p{set}s{seed})
+VARIED_SEEDS: tuple[int, ...] = (7, 8)
+
+
 def cases(name: str, variants: list[int], varied: bool) -> list[tuple[str, str, int, dict[str, Any]]]:
     """(label, set, variant seed, variation) of one class: ``set`` is default, varied or edge."""
     out: list[tuple[str, str, int, dict[str, Any]]] = [(f"v{v}", "default", v, {}) for v in variants]
     if varied:
         sets = [("varied", kw) for kw in VARIED.get(name, [])] + [("edge", kw) for kw in EDGE.get(name, [])]
-        out += [(f"p{i}s{s}", tag, s, kw) for i, (tag, kw) in enumerate(sets) for s in (7, 8)]
+        out += [(f"p{i}s{s}", tag, s, kw) for i, (tag, kw) in enumerate(sets) for s in VARIED_SEEDS]
     return out
 
 
@@ -215,12 +221,17 @@ def audit(
         p.add_argument("--variants", default="1-3", help="exemplar seeds at default parameters, e.g. 1-3 ('' for none)")
         p.add_argument("--seeds", default="1-2", help=f"{method} seeds")
         p.add_argument("--varied", action="store_true", help="also the VARIED and EDGE parameter sets (variant seeds 7, 8)")
+        p.add_argument("--varied-variants", default=None, help="variant seeds the VARIED and EDGE sets are drawn at (default 7,8; implies --varied), e.g. 9,10 for a held-out draw")
         p.add_argument("--scale", type=float, default=3.5, help="region side / exemplar frame side")
         p.add_argument("--summary", default=None, help="markdown file whose block for this run is rewritten after every class (pass counts, failing metrics)")
         if options is not None:
             options(p)
 
     args = parse_args(doc.splitlines()[0], extra)
+    global VARIED_SEEDS
+    if args.varied_variants is not None:
+        VARIED_SEEDS = tuple(ints(args.varied_variants))
+        args.varied = True
     bench_name = bench_name(args) if callable(bench_name) else bench_name
     method = method(args) if callable(method) else method
     mk = fidelity_suite()
@@ -238,6 +249,8 @@ def audit(
             rows.append({"case": "summary", **{n: f"{p}/{m}" for n, (p, m) in tally.items()}, "total": f"{total[0]}/{total[1]}"})
         bench.json_path.parent.mkdir(parents=True, exist_ok=True)
         meta = {"variants": variants, "seeds": seeds, "varied": args.varied, "scale": args.scale, "complete": done}
+        if args.varied_variants is not None:
+            meta["varied_variants"] = list(VARIED_SEEDS)
         bench.json_path.write_text(json.dumps({"benchmark": bench.name, "title": bench.title, **meta, "rows": rows}, indent=1, default=str) + "\n")
         if args.summary:
             _write_summary(Path(args.summary), bench.json_path.stem, f"{bench_name}: {title}", bench.rows, done)
