@@ -24,6 +24,10 @@ stretched stones, uneven shares of three sizes). JSON: ``grow_variants_harder.js
 ``--harder-variants 9,10`` draws the same sets at other variant seeds (default 7,8:
 the rows above; labels then ``h0s9``, ``h0s10`` ...): a held-out check that nobody has
 tuned on (helper grw15).
+
+``--varied-variants 9,10`` draws the ``VARIED`` and ``EDGE`` sets at other variant seeds
+(default 7,8: the ``--varied`` rows; implies ``--varied``; labels ``p0s9``, ``p0s10`` ...; helper
+fresh17). ``benchmarks/fresh17_rows.py`` reruns such rows at more seeds.
 """
 
 from __future__ import annotations

@@ -28,6 +28,10 @@ set is a valid exemplar at variant seeds 7 and 8 (no overlapping pair). JSON:
 ``--harder-variants 9,10`` draws the same ``HARDER`` sets at other variant seeds (default
 7,8: the rows above; implies ``--harder``): fresh held-out exemplars nobody tuned on
 (helper syn15, issue 13 point 1). Labels keep the form ``h{set}s{variant seed}``.
+
+``--varied-variants 9,10`` draws the ``VARIED`` and ``EDGE`` sets at other variant seeds
+(default 7,8: the ``--varied`` rows; implies ``--varied``; labels ``p0s9``, ``p0s10`` ...; helper
+fresh17). ``benchmarks/fresh17_rows.py`` reruns such rows at more seeds.
 """
 
 from __future__ import annotations
