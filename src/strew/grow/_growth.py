@@ -84,7 +84,7 @@ from ._objects import (
 )
 from ._place import _Place
 from ._relax_window import _RelaxWindow
-from ._void_holes import fill_void_holes
+from ._void_holes import fill_void_holes, small_fill
 
 __all__ = ["GrowParams", "grow_reference"]
 
@@ -313,9 +313,10 @@ class GrowParams:
     #: wider than any the exemplar's hubs leave get a hub at their centre
     #: (:func:`strew.grow._clusters.hub_hole`); False: not
     hub_holes: bool = True
-    #: fixed mode, irregular exemplars without void kinds: after the growth, empty
-    #: circles of the elements wider than any the exemplar's leave get an element at
-    #: their centre (:mod:`strew.grow._void_holes`); False: not
+    #: fixed mode, irregular exemplars without void kinds and kinds of several sizes:
+    #: after the growth, empty circles of the elements wider than any the exemplar's
+    #: leave get an element (of the smallest kind, with several sizes) at their centre
+    #: (:mod:`strew.grow._void_holes`); False: not
     open_holes: bool = True
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
@@ -994,11 +995,13 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 if len(self.order) >= target or not self.refill():
                     break
                 self.advance(rep, target)
-        if self.mode_code == 0 and self.tile is None and ((p.void_holes and bool(self.void_kind.any())) or (p.open_holes and self.boundary is None and self.spray_area is None and self._irregular())):
-            # holes of voids where visible elements belong, and holes of irregular
-            # exemplars without voids (not in the paper; see :mod:`strew.grow._void_holes`;
-            # not with boundary strokes or the spray tool: beyond a closed stroke or off
-            # the sprayed path a gap is no hole)
+        if self.mode_code == 0 and self.tile is None and ((p.void_holes and bool(self.void_kind.any())) or (
+                p.open_holes and self.boundary is None and self.spray_area is None and (self._irregular() or small_fill(self) is not None))):
+            # holes of voids where visible elements belong, holes of irregular exemplars
+            # without voids, and holes of kinds of several sizes, filled with the
+            # smallest (not in the paper; see :mod:`strew.grow._void_holes`; not with
+            # boundary strokes or the spray tool: beyond a closed stroke or off the
+            # sprayed path a gap is no hole)
             for _ in range(p.refill_rounds):
                 if len(self.order) >= target or not fill_void_holes(self):
                     break
