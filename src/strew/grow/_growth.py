@@ -1131,7 +1131,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         circles)."""
         ex = self.ref.exemplar
         # (kinds of several sizes are left out: two sizes at ratio 0.6 lost both seeds,
-        # nn[stone>stone] 0.075-0.096 against 0.075, pebbles put in the stones' holes)
+        # nn[stone>stone] 0.075-0.096 against 0.075, pebbles put in the stones' holes;
+        # their holes get the smallest kind instead, :func:`._void_holes.small_fill`)
         if bool(self.void_kind.any()) or len(ex) < 4 or float(self.size_level.max()) > float(self.size_level.min()):
             return False
         from scipy.spatial import cKDTree
