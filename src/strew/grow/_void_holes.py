@@ -108,7 +108,7 @@ def small_fill(g) -> tuple[int, np.ndarray] | None:
     spaces the larger ones leave, which the growth front does only while it passes).
     Two sizes of nearly one size grew pebbles at 0.77-0.83 of the exemplar's density
     (the judge's, crop free) with the stones at 0.95-1.06 of theirs (``--harder``
-    two_sizes h3s10 and h11s7, 3.5x, seeds 1-8; pebble placements refused 237 of 491
+    two_sizes h3s10 and h11s7, 3.5x, seeds 1-8; 237 of 515 pebble placements refused
     as nearer a stone than the reference has one, h3s10 seed 1), and the holes they
     left made the empty circles 9-13 % wider than the exemplar's at q95
     (empty_circle 0.100-0.134 against 0.1: h3s10 passed 2 of 8 seeds, h11s7 2 of 8).
