@@ -1609,6 +1609,29 @@ def _complete_anchor_rings(state: SynthState, room: int | None = None) -> int:
                     continue
                 used[a] = taken[b] = True
                 pairs.append((int(near[a]), b))
+            if len(kids) > 1 and not used.all() and not taken.all():
+                # a second round (seam17): a child left over ON this ring (its distance
+                # from the hub within its collision radius of the slot's) that stands in
+                # the way of a slot still empty (nearer it than the two may stand), within
+                # one slot spacing of it, belongs to that slot. Part
+                # of a ring copied from another hub's exemplar ring comes turned against
+                # this one's slots: two of its tiles between three slots, each over half
+                # a spacing from the free one, so the ring stayed a tile short and the
+                # two kept the other hub's ring as their parent, and thin_orphans took
+                # them out (rings at 50x, seed 1: a ring of 7, empty circle 3.6x the
+                # tolerance in four windows; benchmarks/seam17_all50.py)
+                rad = np.abs(np.hypot(*(pos[near] - pos[h]).T)[:, None] - np.hypot(*(slots - pos[h]).T)[None, :])
+                sn = state.src[near]
+                lim = np.maximum(prep.rc[kids][None, :] + prep.rc[sn][:, None], prep.min_dist[prep.skind[sn][:, None], prep.skind[kids][None, :]])
+                d2 = np.where(used[:, None] | taken[None, :] | (rad > prep.rc[kids][None, :]) | (d >= lim), np.inf, d)
+                for flat in np.argsort(d2, axis=None, kind="stable"):
+                    a, b = divmod(int(flat), len(kids))
+                    if not np.isfinite(d2[a, b]) or d2[a, b] > 2.0 * grab[b]:
+                        break
+                    if used[a] or taken[b]:
+                        continue
+                    used[a] = taken[b] = True
+                    pairs.append((int(near[a]), b))
             # a ring turned as a whole is a chain: each move waits for its neighbour's
             todo = [(j, b) for j, b in pairs if np.hypot(*(pos[j] - slots[b])) > 1e-9]
             while todo:
