@@ -31,12 +31,12 @@ from typing import Any
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import fidelity_calibration as FC  # noqa: E402
-import seam13m_oracle50 as O  # noqa: E402
-from _runner import SKIPPED, fidelity_suite  # noqa: E402
+import fidelity_calibration as FC
+import seam13m_oracle50 as O
+from _runner import SKIPPED, fidelity_suite
 
-from strew import Region  # noqa: E402
-from strew.metrics import fidelity  # noqa: E402
+from strew import Region
+from strew.metrics import fidelity
 
 OUTLINED = ("stones", "two_sizes", "three_sizes")
 _orig_dart = FC.suite._dart

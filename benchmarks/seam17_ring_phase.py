@@ -29,11 +29,11 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import fidelity_calibration as FC  # noqa: E402
-from _runner import SKIPPED, fidelity_suite  # noqa: E402
+import fidelity_calibration as FC
+from _runner import SKIPPED, fidelity_suite
 
-from strew import Region  # noqa: E402
-from strew.metrics import fidelity  # noqa: E402
+from strew import Region
+from strew.metrics import fidelity
 
 
 def phases(xy: np.ndarray, kind: np.ndarray, kinds: list[str], tiles: int = 10) -> tuple[np.ndarray, np.ndarray]:

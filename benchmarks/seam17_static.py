@@ -10,13 +10,13 @@ import sys
 import numpy as np
 
 sys.path.insert(0, "benchmarks")
-from _variants import EDGE, VARIED  # noqa: E402
-from grow_variants import _harder_suite  # noqa: E402
-from synth_variants import _harder  # noqa: E402
+from _variants import EDGE, VARIED
+from grow_variants import _harder_suite
+from synth_variants import _harder
 
-import strew.synth._grow as G  # noqa: E402
-from strew.synth._api import as_selection  # noqa: E402
-from strew.synth._prepare import prepare  # noqa: E402
+import strew.synth._grow as G
+from strew.synth._api import as_selection
+from strew.synth._prepare import prepare
 
 mk = _harder_suite()
 cases = [(n, "suite", 0, {}) for n in mk.NAMES]

@@ -14,12 +14,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.synth import new_state
 from strew.synth._grow import _complete_anchor_rings, anchor_children
-
-from strew_testing import fidelity_suite
 
 
 def _turned(slot: np.ndarray, centre: np.ndarray, chord: float, sign: float) -> np.ndarray:
@@ -49,7 +48,7 @@ def test_leftover_tiles_beside_empty_slots_complete_the_ring():
     state.add(kids[:7], slots[:7])  # seven tiles on their slots; slots 7, 8 and 9 empty
     # two tiles of the other hub's ring, turned against this one's slots: one 4.0 past
     # slot 8 (toward 9), one midway between slots 7 and 8 (over half a spacing from both)
-    t8 = _turned(slots[8], centre, 4.0, 1.0 if np.hypot(*(_turned(slots[8], centre, 4.0, 1.0) - slots[9])) < spacing else -1.0)
+    t8 = min((_turned(slots[8], centre, 4.0, sg) for sg in (1.0, -1.0)), key=lambda p: float(np.hypot(*(p - slots[9]))))
     mid = 0.5 * (slots[7] + slots[8])
     mid = centre + (mid - centre) * np.hypot(*(slots[7] - centre)) / np.hypot(*(mid - centre))
     assert np.hypot(*(mid - slots[7])) > 0.5 * spacing and np.hypot(*(mid - slots[8])) > 0.5 * spacing
