@@ -1610,7 +1610,8 @@ def _complete_anchor_rings(state: SynthState, room: int | None = None) -> int:
                 used[a] = taken[b] = True
                 pairs.append((int(near[a]), b))
             if len(kids) > 1 and not used.all() and not taken.all():
-                # a second round (seam17): a child left over ON this ring (its distance
+                # a second round (seam17; like the first, an extension of §5.1 for §7's
+                # structured exemplars, see the docstring): a child left over ON this ring (its distance
                 # from the hub within its collision radius of the slot's) that stands in
                 # the way of a slot still empty (nearer it than the two may stand), within
                 # one slot spacing of it, belongs to that slot. Part
