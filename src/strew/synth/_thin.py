@@ -200,6 +200,9 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
     ins = shapely.contains_xy(inner, state.pos[vis, 0], state.pos[vis, 1])
     tree = cKDTree(state.pos[vis])
     drop = []
+    from ._grow import _ring_kids
+
+    ring = _ring_kids(prep)[0]
     selv = prep.selected_elements & ~prep.void
     parents = np.unique(prep.parent[selv & (prep.parent >= 0)])
     for k in np.unique(prep.skind[src[vis[par >= 0]]]):
@@ -211,7 +214,9 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
         surplus = int(np.count_nonzero(of_k & ins)) - int(np.floor(dens[k] * float(inner.area)))
         if surplus <= 0:
             continue
-        cand = np.flatnonzero(of_k & ins & (par >= 0) & (vis >= since))
+        # ring tiles stay (seam17): a ring's tile copied with another hub's exemplar ring has
+        # that hub as parent although it stands on this hub's ring (rings at 50x: every hole)
+        cand = np.flatnonzero(of_k & ins & (par >= 0) & (vis >= since) & ~ring[src[vis]])
         orphan = np.zeros(len(cand), bool)
         for j, c in enumerate(cand):
             p = par[c]
