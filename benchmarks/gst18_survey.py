@@ -13,7 +13,7 @@ import _variants
 from grow_variants import HARDER, _harder_suite
 
 from strew.grow import _analysis
-from strew.grow._analysis import size_priority
+from strew.grow._analysis import _levels
 
 astep = sys.argv[1] if len(sys.argv) > 1 else "1.3"
 mk = _harder_suite()
@@ -29,10 +29,8 @@ for cls in mk.EXEMPLARS:
         except Exception as e:  # noqa: BLE001
             print("skip", cls, label, e)
             continue
-        _analysis.SIZE_STEP_AREA = 0.0
-        a = size_priority(ex)
-        _analysis.SIZE_STEP_AREA = float(astep)
-        b = size_priority(ex)
+        a = _levels(ex, 0.0)
+        b = _levels(ex, float(astep))
         n += 1
         if a != b:
             changed += 1

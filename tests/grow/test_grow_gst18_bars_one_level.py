@@ -4,7 +4,8 @@ every seed: bars over-produced, dots too sparse).
 
 The EDGE set "wide near-vertical bands, long bars" draws dots of radius 2.5 and bars of
 12 x 2.5: the bars' bounding radius (6.1) is 2.45 times the dots', their equal-area radius
-only 1.25 times. :func:`size_priority` put the bars a size level above the dots, and the
+only 1.25 times. :func:`size_priority` put the bars a size level above the dots (now
+:func:`size_levels` for growth's rules), and the
 size-level rules of growth over-produced them.
 """
 
@@ -16,6 +17,7 @@ from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.grow import grow, size_priority
+from strew.grow._analysis import size_levels
 
 
 def _exemplar():
@@ -30,10 +32,11 @@ def _inner_density(arr, kind, margin):
 
 def test_bars_and_dots_of_like_area_are_one_size_level():
     ex = _exemplar()
-    assert size_priority(ex) == {}
+    assert size_levels(ex) == {}
+    assert size_priority(ex) == {"dot": 0.0, "bar": 1.0}  # priorities keep bounding radii
     # discs SIZE_STEP apart stay two levels (the suite's three sizes, 1 : 1.5 : 3)
     ex3 = fidelity_suite().make_exemplar("three_sizes", rng=7, ratios=(1.0, 1.5, 3.0), counts=(150, 80, 30))
-    assert size_priority(ex3) == {"small": 0.0, "medium": 1.0, "large": 2.0}
+    assert size_levels(ex3) == size_priority(ex3) == {"small": 0.0, "medium": 1.0, "large": 2.0}
 
 
 @pytest.mark.slow

@@ -17,7 +17,7 @@ import numpy as np
 from .._errors import InputError
 from ..arrangement import Arrangement
 
-__all__ = ["Reference", "analyze", "delaunay_edges", "flip_edge", "regularize_triangles", "size_priority", "SKEW_ANGLE", "SIZE_STEP"]
+__all__ = ["Reference", "analyze", "delaunay_edges", "flip_edge", "regularize_triangles", "size_levels", "size_priority", "SKEW_ANGLE", "SIZE_STEP", "SIZE_STEP_AREA"]
 
 #: §4: triangles with an angle greater than 2/3 π are "skewed" and removed.
 SKEW_ANGLE = 2.0 * np.pi / 3.0
@@ -594,11 +594,10 @@ def flip_edge(ref: Reference, i: int, j: int) -> Reference:
     return _build(ref.exemplar, new)
 
 
-#: Kinds whose bounding radii differ by this factor or more are of different sizes
-#: (when their equal-area radii also differ by :data:`SIZE_STEP_AREA`).
+#: Kinds whose bounding radii differ by this factor or more are of different sizes.
 SIZE_STEP = 1.5
-#: ... and whose equal-area radii (sqrt(area / pi)) differ by this factor or more: an
-#: elongated kind's bounding radius overstates its size (see :func:`size_priority`).
+#: For growth's size levels (:func:`size_levels`), their equal-area radii must also differ
+#: by this factor: an elongated kind's bounding radius overstates its size.
 SIZE_STEP_AREA = 1.3
 #: Two kinds are segregated (bands, patches) when their Delaunay edges between them are
 #: fewer than this share of what the same kinds drawn at random would give (see
@@ -613,41 +612,57 @@ def size_priority(exemplar: Arrangement) -> dict[str, float]:
     with the smaller elements later", with priorities the user gives. Without them, kinds
     that occur are ranked by size: sorted by bounding radius (times their median scale),
     a kind starts a new, higher level when it is at least :data:`SIZE_STEP` times the
-    next smaller kind, and its equal-area radius at least :data:`SIZE_STEP_AREA` times
-    the next smaller kind's. One level (kinds of about one size) gives no priority.
+    next smaller kind. One level (kinds of about one size) gives no priority.
     Not in the paper as a default: large elements otherwise lose their places to small
     ones grown first, are under-produced and leave the small ones in scatter.
-
-    The area test is not in the paper either (helper gst18; synth's ``_larger_in_class``
-    has the same, §7 of Davison): a long thin kind is no larger a kind to fill around.
-    Bands of dots (radius 2.5) and bars (12 x 2.5: bounding radius 6.1, equal-area
-    radius 3.1, 1.25x the dots'; fresh held-out EDGE set stripes p2s10) put the bars a
-    level above the dots, and the size-level rules (``_Grower.size_level``) over-produced
-    them: bars 23.4 against 17.3 per 1e4, dots 13.7 against 14.9, density[bar]
-    0.338/0.224 and nn[bar>bar] 0.108/0.05 on seed 1 (faithful on 2 of seeds 1-6 at
-    091af61, fresh17_rows.py grow stripes:p2s10 1-6); with one level bars 18.1, dots
-    15.4 on seed 1, faithful on 6/6. The bound 1.3 sits
-    between those bars and the suite's discs of SIZE_STEP apart (three sizes 1, 1.5,
-    3: equal-area radii just under 1.5x); of 476 audit exemplars only stripes p2 and
-    rings p3 (six tiles of 11 around hubs of 4) change (benchmarks/gst18_survey.py).
 
     Returns
     -------
     dict of kind name to float
         Empty when every kind is of about one size.
     """
+    return _levels(exemplar, 0.0)
+
+
+def size_levels(exemplar: Arrangement) -> dict[str, float]:
+    """The size levels growth's rules read (``_Grower.size_level``): as
+    :func:`size_priority`, but a kind starts a higher level only when its equal-area
+    radius (sqrt(area / pi)) is also at least :data:`SIZE_STEP_AREA` times the next
+    smaller kind's.
+
+    Not in the paper (helper gst18; synth's ``_larger_in_class`` has the same, §7 of
+    Davison): a long thin kind is no larger a kind for the rules that let larger kinds
+    take the places of smaller ones' seeds and keep smaller ones outside them (§5.1's
+    "filling spaces with the smaller elements later"). Bands of dots (radius 2.5) and bars
+    (12 x 2.5: bounding radius 6.1, equal-area radius 3.1, 1.25x the dots'; fresh
+    held-out EDGE set stripes p2s10) put the bars a level above the dots, and growth
+    over-produced them: bars 23.4 against 17.3 per 1e4, dots 13.7 against 14.9,
+    density[bar] 0.338/0.224 and nn[bar>bar] 0.108/0.05 on seed 1 (faithful on 2 of
+    seeds 1-6 at 091af61, fresh17_rows.py grow stripes:p2s10 1-6); with one level bars
+    18.1, dots 15.4 on seed 1, faithful on 6/6. The bound 1.3 sits between those bars
+    and the suite's discs SIZE_STEP apart (three sizes 1, 1.5, 3: equal-area radii just
+    under 1.5x); of 476 audit exemplars only stripes p2 and rings p3 (six tiles of 11
+    around hubs of 4) change (benchmarks/gst18_survey.py). Priorities (which kinds grow
+    first) keep :func:`size_priority`.
+    """
+    return _levels(exemplar, SIZE_STEP_AREA)
+
+
+def _levels(exemplar: Arrangement, area_step: float) -> dict[str, float]:
+    """Size levels by bounding radius (:data:`SIZE_STEP`) and equal-area radius
+    (``area_step``; 0 for none); empty when every kind is of one level."""
     sizes = []
     for i, name in enumerate(exemplar.kinds):
         sel = exemplar.kind == i
         if sel.any():
             sc = float(np.median(np.abs(exemplar.scale[sel])))
-            r, area = float(exemplar.shapes[name].radius), float(exemplar.shapes[name].area)
+            r, area = float(exemplar.shapes[name].radius), float(exemplar.shapes[name].area) if area_step > 0 else 0.0
             # an outline without filled area (strokes) is judged by its bounding radius
             sizes.append((r * sc, (float(np.sqrt(area / np.pi)) if area > 0 else r) * sc, name))
     sizes.sort()
     level, out, prev, prev_a = 0, {}, None, None
     for r, a, name in sizes:
-        if prev is not None and r >= SIZE_STEP * prev and a >= SIZE_STEP_AREA * prev_a:
+        if prev is not None and r >= SIZE_STEP * prev and a >= area_step * prev_a:
             level += 1
         prev, prev_a = r, a
         out[name] = float(level)

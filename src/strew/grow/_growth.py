@@ -58,7 +58,7 @@ from .._progress import Reporter
 from .._rng import as_rng
 from ..arrangement import Arrangement
 from ..region import Region
-from ._analysis import Reference, size_priority
+from ._analysis import Reference, size_levels
 from ._clusters import grow_clusters, satellite_structure
 from ._collide import _Collide
 from ._flow_densify import densify
@@ -385,7 +385,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.pair_short = np.minimum(self.pair_short, self.pair_short.T)
         self.pair_short_max = self.pair_short.max(axis=1)
         # size levels of the kinds (see lean_ok); none when all are of about one size
-        lv = size_priority(ex)
+        lv = size_levels(ex)  # (see size_levels: bounding and equal-area radii)
         self.size_level = np.array([lv.get(k, 0.0) for k in ex.kinds])
         # the closest an element may be placed to one of a kind of another size, or of
         # its own kind (see place): the reference's smallest distance between the two,
@@ -654,7 +654,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
           comes a little nearer than the reference and the refusal left holes; bricks
           and scales lost regularity), nor for thin kinds (area under
           :data:`GAP_THIN` of the bounding disc: long sticks lost 10 % of their density),
-          nor where the kinds differ in size (:func:`size_priority` gives several
+          nor where the kinds differ in size (:func:`size_levels` gives several
           levels): the fidelity suite's three sizes then lost small stones beside large
           ones (nn[small>large] 0.129-0.146 against 0.127 on seeds 1-3 and 5; with the
           rule only between kinds of one level, or only for the smaller kind, or with
@@ -1120,7 +1120,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
     def _irregular(self) -> bool:
         """An exemplar whose nearest-neighbour distances spread by at least
         :data:`GAP_LATTICE_CV` of their mean (not lattice-like: see ``_pair_gaps``), with
-        no void kind and all kinds of one size (:func:`size_priority`).
+        no void kind and all kinds of one size (:func:`size_levels`).
 
         Not in the paper (§5.4 never returns to a place): such exemplars grew holes
         wider than any the exemplar has (long thin sticks: 9 % of the whole empty
