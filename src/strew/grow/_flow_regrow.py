@@ -15,7 +15,9 @@ shear's own stretched bonds) and grown again under the same test: the hexagons o
 16 spacings from (14, 2) (``benchmarks/flow14p_heldout.py``) grew the patch of 35
 sites again to a six share of 0.856 (0.747 before) but left one point over 0.75 mean
 edges from every element, so it was sent back; the patch of 57 widened so gives
-0.857 and no hole (``benchmarks/flow15_probe.py``).
+0.857 and no hole (``benchmarks/flow15_probe.py``). Patches of 8-11 sites, which the
+corner starts keep after the larger ones are grown again, are grown again too, held
+also to the widest empty circle (``REGROW_MIN``, ``REGROW_SMALL``; flow17).
 """
 
 from __future__ import annotations
@@ -33,11 +35,31 @@ from ._objects import DEAD, ELEMENT
 
 __all__ = ["regrow_sheared"]
 
-#: a patch is grown again only where it holds at least this many sites
-REGROW_MIN = 12
+#: a patch is grown again only where it holds at least this many sites (linked within
+#: 1.3 six spacings; an isolated dislocation's 5-7 pair is two). 12 at flow15: the
+#: corner starts' patches left after the first regrowth were 8-11 sites, e.g. the
+#: hexagons over 16 spacings from (2, 14), six share 0.818 with 8 lowered to 0.878, and
+#: the scales over 16 from (2, 2) 0.795 -> 0.838, none of the 30 held-out cases lower
+#: (hexagons' sum 13.237 -> 13.360, scales' 13.156 -> 13.264 and their hole gone:
+#: ``benchmarks/flow17_screen.py --cases all``; flow17, with the turn guard flow18)
+REGROW_MIN = 8
+#: patches under this many sites (the smallest before flow17) are held to the widest
+#: empty circle too (``REGROW_HOLE``; see :func:`regrow_sheared`)
+REGROW_SMALL = 12
 #: the frame's turn limits tried for the regrowth, as multiples of ``flow_max_turn``
 #: (larger ones turned elements past the field's limit that §5.3's frame keeps)
 REGROW_TURNS = (1.0,)
+#: a regrowth is sent back where it leaves an empty circle wider than this many six
+#: spacings (``benchmarks/grow.py``'s hole) wider than the widest before
+REGROW_HOLE = 0.75
+#: a patch under ``REGROW_SMALL`` sites is tried only where all its sites lie farther
+#: than this many six spacings from the region's edge (the interior line is at two
+#: mean edges). A cost cap, not the paper's: the 90 degree field over 30 x 20 spacings
+#: (``benchmarks/grow.py --against REV --cases hexflow``) tried a patch of 10 at 2.02
+#: spacings, then widened, both sent back, 1.53x its CPU; the least of the patches
+#: kept on the held-out fields was 2.21 (the hexagons over 20 spacings from (2, 18);
+#: ``benchmarks/flow17_screen.py --cases all``; flow18)
+REGROW_EDGE = 2.1
 #: how many patches are tried, largest first
 REGROW_PATCHES = 3
 #: a patch not kept is tried again with the interior elements within this many six
@@ -86,6 +108,47 @@ def _widen(g, patch: list[int]) -> list[int]:
     return sorted(set(patch) | set(els[inner & near].tolist()))
 
 
+def _widest(g) -> float:
+    """The widest empty circle (the largest Delaunay circumradius) centred over two mean
+    edges inside the region, in six spacings (0 with no region or under three
+    elements)."""
+    from scipy.spatial import Delaunay
+
+    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.intp)
+    if g.region is None or len(els) < 3:
+        return 0.0
+    xy = g.pos[els]
+    tri = xy[Delaunay(xy).simplices]
+    a, b, c = tri[:, 0], tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]
+    d = 2.0 * (b[:, 0] * c[:, 1] - b[:, 1] * c[:, 0])
+    ok = np.abs(d) > 1e-12
+    b, c, d, a = b[ok], c[ok], d[ok], a[ok]
+    bb, cc = (b * b).sum(1), (c * c).sum(1)
+    u = np.c_[(c[:, 1] * bb - b[:, 1] * cc) / d, (b[:, 0] * cc - c[:, 0] * bb) / d]
+    cen = a + u
+    inner = g.region.contains(cen)
+    inner[inner] = boundary_distance(g.region, cen[inner]) > 2.0 * g.l
+    return float(np.hypot(*u[inner].T).max() / six_spacing(g)) if inner.any() else 0.0
+
+
+def _interior(g, patch: list[int]) -> bool:
+    """All the patch's sites farther than ``REGROW_EDGE`` six spacings from the region's
+    edge (True without a region)."""
+    if g.region is None:
+        return True
+    xy = g.pos[np.asarray(patch, dtype=np.intp)]
+    return bool(boundary_distance(g.region, xy).min() > REGROW_EDGE * six_spacing(g))
+
+
+def _turn_ok(g, p) -> bool:
+    """The lattice's turn from the field within the band pass's limit
+    (``flow_net_turn`` over the turn as grown; :func:`strew.grow._flow_net._misalignment`)."""
+    from ._flow_net import _misalignment
+
+    t0 = getattr(g, "flow_net_turn0", None)
+    return t0 is None or p.flow_net_turn is None or _misalignment(g) <= t0 + p.flow_net_turn
+
+
 def _take_out(g, patch: list[int]) -> list[int]:
     """The patch's elements taken out (edges, ring targets, index, order); the elements
     left around it, sorted."""
@@ -112,13 +175,22 @@ def regrow_sheared(g, target: int, rep) -> int:
     for _ in range(REGROW_PATCHES):
         if len(g.order) >= target:
             break
-        groups = [q for q in _patches(g) if tuple(sorted(q)) not in tried]
+        groups = [q for q in _patches(g) if tuple(sorted(q)) not in tried and (len(q) >= REGROW_SMALL or _interior(g, q))]
         if not groups:
             break
         patch = groups[0]
         tried.add(tuple(sorted(patch)))
         share0 = six_share(g)
         far0 = interior_score(g)[1]
+        # (a patch under ``REGROW_SMALL`` sites, and its widened patch, also kept only
+        # where it leaves no empty circle wider than a hole's, 0.75 six spacings, or
+        # than the widest before: the quarter-edge grid of interior_score can miss one
+        # by a third of an edge, and the scales along the 90 degree field over 30
+        # spacings kept the widened regrowth of a patch of 9 that left one of 0.774
+        # spacings, benchmarks/grow.py's hole. Not on the larger patches: there it sent
+        # back regrowths flow15 keeps, e.g. the hexagons over 16 spacings from (14, 2)
+        # 0.857 -> 0.747, the scales over 20 from (18, 2) 0.881 -> 0.780. flow17)
+        wide0 = max(_widest(g), REGROW_HOLE) if len(patch) < REGROW_SMALL else np.inf
         base = snapshot(g)
         # the turn limits tried in turn, the first regrowth that raises the six share
         # with no new hole kept (its holes' elements turned no further than the
@@ -132,7 +204,13 @@ def regrow_sheared(g, target: int, rep) -> int:
             _regrow(g, _widen(g, patch) if wide else patch, target, rep)
             g.p = p0
             sh, far = six_share(g), interior_score(g)[1]
-            if sh > share0 + 1e-12 and far <= far0:
+            # (a patch under REGROW_SMALL also kept only where the lattice's turn from
+            # the field stays within the band pass's limit, flow_net_turn over the turn
+            # as grown: without it the hexagons over 20 spacings from the centre kept a
+            # regrowth to a six share of 0.942 whose turn p90 was 17.37 degrees against
+            # 16.84 + 0.5, test_grow_flow14p_turn; with it 0.929 as before. flow17/18)
+            small_ok = wide0 == np.inf or (_widest(g) <= wide0 and _turn_ok(g, p0))
+            if sh > share0 + 1e-12 and far <= far0 and small_ok:
                 kept += 1
                 break
         else:
