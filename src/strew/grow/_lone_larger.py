@@ -35,8 +35,8 @@ element near it). If the placement is refused, the larger element is put back as
 was. At ratio 0.6 the stones beyond the reference's farthest went from 7-8 % to none,
 ``nn[stone>pebble]`` to 0.54-0.69 of its tolerance on seeds 1-4.
 
-Kinds of one size level (:func:`strew.grow._analysis.size_priority`: bounding radii
-within its step of each other) are ordered by bounding radius times median scale too
+Kinds of one size level (:func:`strew.grow._analysis.size_levels`: bounding radii,
+or equal-area radii, within its step of each other) are ordered by bounding radius times median scale too
 (:data:`LONE_ONE_LEVEL`): two sizes at ratio 0.8 (variant 7, 9 pebbles among 38 stones)
 are one level, so the pass did not look, and stones grew in patches with no pebble near:
 the stones' nearest-pebble distances at 60-90 % 1.30-2.02 s against the reference's
@@ -70,7 +70,7 @@ LONE_DECILE = 0.9
 #: unit) the output's must exceed the reference's on average for the pass to act
 LONE_TOP = (0.8, 0.9)
 LONE_TRIGGER = 0.08
-#: also between kinds of one size level (:func:`strew.grow._analysis.size_priority`:
+#: also between kinds of one size level (:func:`strew.grow._analysis.size_levels`:
 #: radii within its step of each other), the larger by bounding radius times median
 #: scale (see :func:`lone_sizes`)
 LONE_ONE_LEVEL = True
@@ -78,7 +78,7 @@ LONE_ONE_LEVEL = True
 
 def lone_sizes(g) -> np.ndarray:
     """Per kind, the order of size this pass reads: the size level
-    (:func:`strew.grow._analysis.size_priority`) and, with :data:`LONE_ONE_LEVEL`,
+    (:func:`strew.grow._analysis.size_levels`) and, with :data:`LONE_ONE_LEVEL`,
     within one level the bounding radius times the median scale (a tie-break below one
     level's step)."""
     lv = np.asarray(g.size_level, dtype=float)
