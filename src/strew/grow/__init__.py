@@ -504,7 +504,7 @@ def _grow(
     if priority is None:
         # larger kinds first (§5.1), unless the kinds lie apart in bands or patches
         # (:func:`default_priority`; flow mode keeps size_priority as it was)
-        priority = size_priority(ref.exemplar) if mode == "flow" else default_priority(ref)
+        priority = size_priority(ref.exemplar) if mode == "flow" else default_priority(ref, several=mode == "fixed")
     prio: dict[str, float] = {}
     for name, v in dict(priority or {}).items():
         if name not in kinds:

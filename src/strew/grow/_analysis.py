@@ -17,7 +17,7 @@ import numpy as np
 from .._errors import InputError
 from ..arrangement import Arrangement
 
-__all__ = ["Reference", "analyze", "delaunay_edges", "flip_edge", "regularize_triangles", "size_levels", "size_priority", "SKEW_ANGLE", "SIZE_STEP", "SIZE_STEP_AREA"]
+__all__ = ["Reference", "analyze", "delaunay_edges", "flip_edge", "regularize_triangles", "several_priority", "size_levels", "size_priority", "SKEW_ANGLE", "SIZE_STEP", "SIZE_STEP_AREA", "SIZE_STEP_SEVERAL"]
 
 #: §4: triangles with an angle greater than 2/3 π are "skewed" and removed.
 SKEW_ANGLE = 2.0 * np.pi / 3.0
@@ -596,6 +596,9 @@ def flip_edge(ref: Reference, i: int, j: int) -> Reference:
 
 #: Kinds whose bounding radii differ by this factor or more are of different sizes.
 SIZE_STEP = 1.5
+#: Fixed mode's default priorities, kinds of three or more sizes: kinds whose bounding
+#: radii differ by this factor rank larger first (see :func:`several_priority`)
+SIZE_STEP_SEVERAL = 1.3
 #: For growth's size levels (:func:`size_levels`), their equal-area radii must also differ
 #: by this factor: an elongated kind's bounding radius overstates its size.
 SIZE_STEP_AREA = 1.3
@@ -648,9 +651,36 @@ def size_levels(exemplar: Arrangement) -> dict[str, float]:
     return _levels(exemplar, SIZE_STEP_AREA)
 
 
-def _levels(exemplar: Arrangement, area_step: float) -> dict[str, float]:
-    """Size levels by bounding radius (:data:`SIZE_STEP`) and equal-area radius
-    (``area_step``; 0 for none); empty when every kind is of one level."""
+def several_priority(exemplar: Arrangement) -> dict[str, float]:
+    """Fixed mode's default priorities before :func:`_mixed_priority`: :func:`size_priority`,
+    but where kinds come in three or more sizes, kinds whose bounding radii (times their
+    median scale) differ by :data:`SIZE_STEP_SEVERAL` rank larger first too.
+
+    §5.1 grows "the larger elements at first", after Wong et al.; which kinds count as
+    larger is the user's choice there, and :func:`size_priority` takes one step of
+    :data:`SIZE_STEP` for it. Three sizes at radius ratios 1:1.8:2.6 (``--harder`` h10)
+    draw stone outlines whose bounding radii put the large stones 1.44-1.51 times the
+    medium ones: below 1.5 (variants 12, 13, 14; and 11, through the scales) the two
+    shared a level, the medium stones grown beside them closed the large stones' seeds
+    in (46 % of their placements refused, against 19 % of the medium ones': the outline
+    gap and the overlap test), and the large stones came out 9-17 % short (density 6.9-7.4
+    against 7.9-8.4 per 1e4 at seed 1) with the medium stones' nearest large one too far
+    at the upper deciles (nn[medium>large] 0.17/0.16 against a tolerance of 0.094 at
+    variant 12, seeds 1-2). Ranked, 7.6-8.5 against 7.9-8.4, variant 12 seed 2 passing
+    (benchmarks/g3s_stages.py, helper g3s). Only with three or more sizes: two kinds of
+    close sizes (two sizes at ratios 0.7-0.85) keep one level, where the larger kind grown
+    first took the smaller one's places (:mod:`strew.grow._lone_larger`).
+    """
+    fine = _levels(exemplar, 0.0, SIZE_STEP_SEVERAL)
+    if len(set(fine.values())) >= 3:
+        return fine
+    return size_priority(exemplar)
+
+
+def _levels(exemplar: Arrangement, area_step: float, step: float | None = None) -> dict[str, float]:
+    """Size levels by bounding radius (``step``, :data:`SIZE_STEP` by default) and
+    equal-area radius (``area_step``; 0 for none); empty when every kind is of one level."""
+    step = SIZE_STEP if step is None else step
     sizes = []
     for i, name in enumerate(exemplar.kinds):
         sel = exemplar.kind == i
@@ -662,14 +692,14 @@ def _levels(exemplar: Arrangement, area_step: float) -> dict[str, float]:
     sizes.sort()
     level, out, prev, prev_a = 0, {}, None, None
     for r, a, name in sizes:
-        if prev is not None and r >= SIZE_STEP * prev and a >= area_step * prev_a:
+        if prev is not None and r >= step * prev and a >= area_step * prev_a:
             level += 1
         prev, prev_a = r, a
         out[name] = float(level)
     return out if level > 0 else {}
 
 
-def default_priority(ref: Reference) -> dict[str, float]:
+def default_priority(ref: Reference, several: bool = False) -> dict[str, float]:
     """The priorities :func:`strew.grow.grow` uses when the user gives none (§5.1).
 
     :func:`size_priority` (larger kinds first), unless the kinds of different sizes lie
@@ -684,8 +714,21 @@ def default_priority(ref: Reference) -> dict[str, float]:
     The suite's mixed kinds (pebbles among stones, three sizes) have 1.1 to 2.5 times
     the random share; such bands 0.54-0.64.) Kinds of void elements rank below the
     visible ones either way (:func:`_voids_last`).
+
+    Parameters
+    ----------
+    ref : Reference
+        The analysed exemplar (§4).
+    several : bool
+        Rank by :func:`several_priority` instead of :func:`size_priority` (fixed mode:
+        kinds of three or more sizes ranked by the finer step :data:`SIZE_STEP_SEVERAL`).
+
+    Returns
+    -------
+    dict of kind name to float
+        Empty when no kind ranks above another.
     """
-    return _voids_last(ref.exemplar, _mixed_priority(ref, size_priority(ref.exemplar)))
+    return _voids_last(ref.exemplar, _mixed_priority(ref, several_priority(ref.exemplar) if several else size_priority(ref.exemplar)))
 
 
 def _voids_last(ex: Arrangement, prio: dict[str, float]) -> dict[str, float]:
