@@ -659,17 +659,20 @@ def several_priority(exemplar: Arrangement) -> dict[str, float]:
     §5.1 grows "the larger elements at first", after Wong et al.; which kinds count as
     larger is the user's choice there, and :func:`size_priority` takes one step of
     :data:`SIZE_STEP` for it. Three sizes at radius ratios 1:1.8:2.6 (``--harder`` h10)
-    draw stone outlines whose bounding radii put the large stones 1.44-1.51 times the
-    medium ones: below 1.5 (variants 12, 13, 14; and 11, through the scales) the two
-    shared a level, the medium stones grown beside them closed the large stones' seeds
-    in (46 % of their placements refused, against 19 % of the medium ones': the outline
-    gap and the overlap test), and the large stones came out 9-17 % short (density 6.9-7.4
-    against 7.9-8.4 per 1e4 at seed 1) with the medium stones' nearest large one too far
-    at the upper deciles (nn[medium>large] 0.17/0.16 against a tolerance of 0.094 at
-    variant 12, seeds 1-2). Ranked, 7.6-8.5 against 7.9-8.4, variant 12 seed 2 passing
-    (benchmarks/g3s_stages.py, helper g3s). Only with three or more sizes: two kinds of
-    close sizes (two sizes at ratios 0.7-0.85) keep one level, where the larger kind grown
-    first took the smaller one's places (:mod:`strew.grow._lone_larger`).
+    draw stone outlines whose bounding radii (times the median scales) put the large
+    stones under 1.5 times the medium ones at every variant 7-14: the two shared a
+    level, the medium stones grown beside them closed the large stones' seeds in
+    (variant 12, seed 1: 46 % of the large stones' placements refused, against 24 % of
+    the medium ones': the outline gap and the overlap test; benchmarks/grw17_refusals.py),
+    and the large stones came out 9-17 % short (density 6.9-7.4 against 7.9-8.4 per 1e4 at
+    variants 12-14, seed 1) with the medium stones' nearest large one too far at the upper
+    deciles (nn[medium>large] 0.17/0.16 against a tolerance of 0.094 at variant 12, seeds
+    1-2). Ranked, 7.6-8.5 against 7.9-8.4; variant 12 passes 3 of seeds 1-4 (none
+    before; helper g3s, benchmarks/results/g3s_diagnosis.md). Only with three or more
+    sizes: two kinds of close sizes (two sizes at ratios 0.7-0.85) keep one level, where
+    the larger kind grown first took the smaller one's places
+    (:mod:`strew.grow._lone_larger`). The audits' rows this changes:
+    benchmarks/g3s_changed.py.
     """
     fine = _levels(exemplar, 0.0, SIZE_STEP_SEVERAL)
     if len(set(fine.values())) >= 3:
