@@ -664,7 +664,7 @@ def several_priority(exemplar: Arrangement) -> dict[str, float]:
     level, the medium stones grown beside them closed the large stones' seeds in
     (variant 12, seed 1: 46 % of the large stones' placements refused, against 24 % of
     the medium ones': the outline gap and the overlap test; benchmarks/grw17_refusals.py),
-    and the large stones came out 9-17 % short (density 6.9-7.4 against 7.9-8.4 per 1e4 at
+    and the large stones came out 11-13 % short (density 6.9-7.4 against 7.9-8.4 per 1e4 at
     variants 12-14, seed 1) with the medium stones' nearest large one too far at the upper
     deciles (nn[medium>large] 0.17/0.16 against a tolerance of 0.094 at variant 12, seeds
     1-2). Ranked, 7.6-8.5 against 7.9-8.4; variant 12 passes 3 of seeds 1-4 (none
