@@ -318,6 +318,11 @@ class GrowParams:
     #: leave get an element (of the smallest kind, with several sizes) at their centre
     #: (:mod:`strew.grow._void_holes`); False: not
     open_holes: bool = True
+    #: §5.5's ring targets r_ji only for the neighbours that stand within this share of
+    #: the slot's length of the slot they are paired with (Eq. 5 takes the current
+    #: offset for the others, as for edges the ring did not make); None: every pair.
+    #: Set for the hubs' growth of clustered exemplars (:mod:`strew.grow._clusters`)
+    ring_target_far: float | None = None
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None

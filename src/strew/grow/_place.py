@@ -495,10 +495,19 @@ class _Place:
         # ring targets r_ji for the relaxation (§5.5)
         tgt = {}
         rel_l = rel.tolist()
+        far = p.ring_target_far
         for o, j in slot_of.items():
             if o in self.adj[s]:
                 rx, ry = rel_l[j]
-                tgt[o] = (c * rx - sn * ry, sn * rx + c * ry)
+                tx, ty = c * rx - sn * ry, sn * rx + c * ry
+                if far is not None:
+                    # a neighbour paired with a slot it stands far from is not that
+                    # slot's member: its edge keeps its current shape (see
+                    # GrowParams.ring_target_far; departs from §5.5)
+                    ox, oy = self.xy[o]
+                    if (ox - x - tx) ** 2 + (oy - y - ty) ** 2 > far * far * (tx * tx + ty * ty):
+                        continue
+                tgt[o] = (tx, ty)
         self.target[s] = tgt
         self.ring_n[s] = n_ring
         return True
