@@ -10,7 +10,7 @@ from scipy.spatial import cKDTree
 
 from . import _kernels as K
 from ._shapes import shape_test_needed, shapes_overlapping
-from ._prepare import Prepared
+from ._prepare import Prepared, anchor_mask
 from ._state import SynthState, map_offsets
 
 __all__ = ["optimize", "expanded_horizon", "prediction_weights", "prediction_spread", "match_neighborhoods"]
@@ -779,8 +779,6 @@ def sized_scatter(prep: Prepared) -> np.ndarray:
     got = getattr(prep, "_sized_scatter", None)
     if got is not None and len(got) == len(prep.kind):
         return got
-    from ._prepare import anchor_mask  # noqa: PLC0415 (as _grow.anchors; kept local to this rule)
-
     lat = jittered_lattice(prep)
     anc = anchor_mask(prep.skind, prep.source, prep.size_class, prep.void).astype(bool)
     ring = ring_children(prep)
