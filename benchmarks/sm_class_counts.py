@@ -1,6 +1,6 @@
 """Helper sm: how many size classes (``Prepared.size_class``, visible selected elements)
 each audited exemplar of a class has: the middle-class rule of ``_grow.owed_classes``
-(MIDDLE_MARGIN) acts only on exemplars of three classes or more.
+(MIDDLE_RARE) acts only on exemplars of three classes or more.
 
     PYTHONPATH=src:benchmarks python benchmarks/sm_class_counts.py two_sizes,stones,clusters,three_sizes
 """

@@ -1,7 +1,7 @@
 """Helper sm: benchmarks/synth_variants.py with constants of strew.synth._grow set first
 (``--gset NAME=VALUE``, repeatable), to audit a setting before it becomes a default.
 
-    PYTHONPATH=src:benchmarks python benchmarks/sm_variants.py --gset MIDDLE_MARGIN=0 --harder-variants 13,14 --only three_sizes --seeds 1 --json OUT.json
+    PYTHONPATH=src:benchmarks python benchmarks/sm_variants.py --gset MIDDLE_RARE=99 --harder-variants 13,14 --only three_sizes --seeds 1 --json OUT.json
 """
 import runpy
 import sys

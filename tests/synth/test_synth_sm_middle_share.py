@@ -22,7 +22,7 @@ from strew.synth import synthesize
 def test_rare_middle_class_keeps_its_share(variant):
     # 2x the exemplar's side, seed 1; each kind's share of the output over its share of the
     # exemplar. 9877c79: medium 1.369 / 1.403 / 1.478 (variant 9 / 11 / 12; seed 2 1.29 /
-    # 1.22 / 1.51); with MIDDLE_MARGIN 0: 1.007 / 1.021 / 1.057 (seed 2 1.05 / 0.97 / 1.08)
+    # 1.22 / 1.51); with MIDDLE_RARE (no margin for a rare middle class): 1.007 / 1.021 / 1.057 (seed 2 1.05 / 0.97 / 1.08)
     ex = fidelity_suite().make_exemplar("three_sizes", rng=variant, counts=(400, 15, 15))
     x0, y0, x1, y1 = ex.region.bounds
     out = synthesize(ex, Region.rectangle(2.0 * (x1 - x0), 2.0 * (y1 - y0)), rng=1, measure=False)
