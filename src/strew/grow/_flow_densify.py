@@ -53,6 +53,7 @@ from ._flow_kernels import boundary_distance
 from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, relax_network, six_spacing
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
+from ._near_kernels import ball_counts
 from ._objects import ELEMENT
 
 __all__ = ["densify"]
@@ -116,10 +117,9 @@ def _score(g, grid: np.ndarray | None) -> tuple[float, float, int]:
     q = xy[boundary_distance(g.region, xy) > 2.0 * L] if g.region is not None else xy
     if not len(q):
         return 0.0, 1.0, 0
-    tree = cKDTree(xy)
     S = six_spacing(g)
-    hi = np.asarray(tree.query_ball_point(q, 1.15 * S, return_length=True), dtype=int) - 1
-    lo = np.asarray(tree.query_ball_point(q, 0.85 * S, return_length=True), dtype=int) - 1
+    hi, lo = ball_counts(xy, q, 1.15 * S, 0.85 * S)  # (cKDTree's counts, compiled: _near_kernels)
+    hi, lo = hi - 1, lo - 1
     ok = (hi == 6) & (lo == 0)
     bad = q[~ok]
     iso = 1.0

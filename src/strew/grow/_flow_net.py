@@ -91,6 +91,7 @@ import numpy as np
 from ._flow_kernels import boundary_distance
 from ._flow_memo import memo
 from ._flow_shear import fitted_moves, saved_moves, undo_moves
+from ._near_kernels import ball_counts, far_from
 from ._objects import ELEMENT
 
 __all__ = ["relax_network", "hexagonal_reference"]
@@ -603,16 +604,13 @@ def _six_share(g, xy: np.ndarray | None = None) -> float:
 
 def _six_share_at(g, xy: np.ndarray) -> float:
     """:func:`_six_share` of the elements at ``xy``, measured."""
-    from scipy.spatial import cKDTree
-
     L = g.l
     q = xy[boundary_distance(g.region, xy) > 2.0 * L] if g.region is not None else xy
     if not len(q):
         return 0.0
-    tree = cKDTree(xy)
     S = six_spacing(g)
-    hi = np.asarray(tree.query_ball_point(q, 1.15 * S, return_length=True), dtype=int) - 1
-    lo = np.asarray(tree.query_ball_point(q, 0.85 * S, return_length=True), dtype=int) - 1
+    hi, lo = ball_counts(xy, q, 1.15 * S, 0.85 * S)  # (cKDTree's counts, compiled: _near_kernels)
+    hi, lo = hi - 1, lo - 1
     return float(((hi == 6) & (lo == 0)).mean())
 
 
@@ -705,10 +703,8 @@ def _far_points(g, grid: np.ndarray) -> np.ndarray:
 
 def _far_points_at(g, xy: np.ndarray, grid: np.ndarray) -> np.ndarray:
     """:func:`_far_points` of the elements at ``xy``, measured."""
-    from scipy.spatial import cKDTree
-
     L = g.l
-    return grid[cKDTree(xy).query(grid, distance_upper_bound=0.75 * L)[0] > 0.75 * L]
+    return grid[far_from(xy, grid, 0.75 * L)]  # (cKDTree's query, compiled: _near_kernels)
 
 
 def _undo_gaps(g, moves: dict, old: dict, level: dict, grid: np.ndarray, far0: np.ndarray, reach: float) -> None:
@@ -752,13 +748,9 @@ def _six_sites(g, q: np.ndarray, xy: np.ndarray) -> np.ndarray:
 
 def _six_sites_at(g, q: np.ndarray, xy: np.ndarray) -> np.ndarray:
     """:func:`_six_sites`, measured."""
-    from scipy.spatial import cKDTree
-
-    tree = cKDTree(xy)
     S = six_spacing(g)
-    hi = np.asarray(tree.query_ball_point(xy, 1.15 * S, return_length=True), dtype=int) - 1
-    lo = np.asarray(tree.query_ball_point(xy, 0.85 * S, return_length=True), dtype=int) - 1
-    return q & (hi == 6) & (lo == 0)
+    hi, lo = ball_counts(xy, xy, 1.15 * S, 0.85 * S)  # (cKDTree's counts, compiled: _near_kernels)
+    return q & (hi - 1 == 6) & (lo - 1 == 0)
 
 
 def _undo_worse(g, els: np.ndarray, pts0: np.ndarray, moves: dict, old: dict, level: dict) -> None:

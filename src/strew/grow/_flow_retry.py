@@ -23,6 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._flow_kernels import boundary_distance
+from ._near_kernels import ball_counts, far_from
 from ._objects import ELEMENT
 from ._state_copy import deep_copy_state
 
@@ -78,14 +79,11 @@ def interior_score(g, grid: np.ndarray | None = None) -> tuple[int, int]:
     spacings (``_flow_net.six_spacing``) and none nearer, points of a quarter-edge grid there farther than 0.75
     mean edges from every element); ``grid``: :func:`_region_grid`'s, made once for
     two scores of one region."""
-    from scipy.spatial import cKDTree
-
     L = g.l
     els = [i for i in g.order if g.state[i] == ELEMENT]
     if len(els) < 7:
         return 0, 0
     xy = g.pos[els]
-    tree = cKDTree(xy)
     rg = g.region
     if rg is not None:
         q = xy[boundary_distance(rg, xy) > 2.0 * L]
@@ -98,8 +96,9 @@ def interior_score(g, grid: np.ndarray | None = None) -> tuple[int, int]:
     from ._flow_net import six_spacing
 
     S = six_spacing(g)
-    hi = np.asarray(tree.query_ball_point(q, 1.15 * S, return_length=True), dtype=int) - 1
-    lo = np.asarray(tree.query_ball_point(q, 0.85 * S, return_length=True), dtype=int) - 1
+    # (cKDTree's counts and query, compiled: _near_kernels)
+    hi, lo = ball_counts(xy, q, 1.15 * S, 0.85 * S)
+    hi, lo = hi - 1, lo - 1
     six = int(((hi == 6) & (lo == 0)).sum())
-    far = int((tree.query(grid, distance_upper_bound=0.75 * L)[0] > 0.75 * L).sum()) if len(grid) else 0
+    far = int(far_from(xy, grid, 0.75 * L).sum()) if len(grid) else 0
     return six, far

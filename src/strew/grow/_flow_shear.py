@@ -47,6 +47,7 @@ import numpy as np
 
 from ._flow_gaps import _bonds
 from ._flow_kernels import boundary_distance
+from ._near_kernels import ball_counts, far_from
 from ._objects import ELEMENT
 from ._relax import relax_positions
 
@@ -162,22 +163,16 @@ def _reshape_band(g, els, fb, src, dst, off, gap: float = 0.7) -> int:
 
 def _six(g, sites: list[int]) -> int:
     """How many of ``sites`` have six elements at 0.85-1.15 mean edges and none nearer."""
-    from scipy.spatial import cKDTree
-
     els = [i for i in g.order if g.state[i] == ELEMENT]
-    tree = cKDTree(g.pos[els])
     xy = g.pos[sites]
-    hi = np.asarray(tree.query_ball_point(xy, 1.15 * g.l, return_length=True), dtype=int) - 1
-    lo = np.asarray(tree.query_ball_point(xy, 0.85 * g.l, return_length=True), dtype=int) - 1
-    return int(((hi == 6) & (lo == 0)).sum())
+    hi, lo = ball_counts(g.pos[els], xy, 1.15 * g.l, 0.85 * g.l)  # (cKDTree's counts, compiled: _near_kernels)
+    return int(((hi - 1 == 6) & (lo - 1 == 0)).sum())
 
 
 def _far(g, grid, r: float):
     """Which points of ``grid`` lie farther than ``r`` from every placed element."""
-    from scipy.spatial import cKDTree
-
     els = [i for i in g.order if g.state[i] == ELEMENT]
-    return cKDTree(g.pos[els]).query(grid, distance_upper_bound=r)[0] > r
+    return far_from(g.pos[els], grid, r)  # (cKDTree's query, compiled: _near_kernels)
 
 
 def _settle(g, moves: dict, old: dict) -> None:
