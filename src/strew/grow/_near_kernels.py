@@ -21,7 +21,7 @@ whose farthest corner is nearer than ``r``; a point inside the node is then near
 as its squared distance cannot round above the corner's but by a last-bit drift of the
 node bounds, which the grow hashes would show: none did.)
 
-Compiled with ``cache=True``; the warm-up's "grow flow" case reaches them.
+Compiled with ``cache=True``; the warm-up's "grow flow region" case reaches them.
 """
 
 from __future__ import annotations
@@ -41,11 +41,16 @@ _MAX_CELLS_PER_POINT = 64
 
 
 @numba.njit(cache=True)
-def _cells(px, py, h):  # pragma: no cover - numba
-    """A uniform grid of side ``h`` over the points (px, py): origin, shape, each cell's
-    first entry in ``order`` (``start``, (nx * ny + 1,)) and the points by cell, each
-    cell's in index order."""
+def _near(px, py, qx, qy, r_hi, r_lo, h, far):  # pragma: no cover - numba
+    """Over a uniform grid of side ``h`` (> r_hi) on the points (px, py): for each query
+    (qx, qy), with ``far`` False the counts of points within ``r_hi`` and ``r_lo``
+    (``ball_counts``), with ``far`` True (``r_hi``: the distance) 1 where it lies
+    farther than ``r_hi`` from every point (``far_from``) and 0 where not (the second
+    array then unused). (One kernel, the grid's build inlined: each compiled function
+    costs a cold start some half a second.)"""
     n = px.shape[0]
+    # the grid: origin, shape, each cell's first entry in ``order`` and the points by
+    # cell (a counting sort; each cell's in index order)
     x0 = px[0]
     y0 = py[0]
     for i in range(1, n):
@@ -53,14 +58,14 @@ def _cells(px, py, h):  # pragma: no cover - numba
             x0 = px[i]
         if py[i] < y0:
             y0 = py[i]
-    cx = np.empty(n, dtype=np.int64)
+    cell = np.empty(n, dtype=np.int64)
     cy = np.empty(n, dtype=np.int64)
     nx = 1
     ny = 1
     for i in range(n):
         a = int(math.floor((px[i] - x0) / h))
         b = int(math.floor((py[i] - y0) / h))
-        cx[i] = a
+        cell[i] = a
         cy[i] = b
         if a + 1 > nx:
             nx = a + 1
@@ -68,36 +73,15 @@ def _cells(px, py, h):  # pragma: no cover - numba
             ny = b + 1
     start = np.zeros(nx * ny + 1, dtype=np.int64)
     for i in range(n):
-        start[cx[i] * ny + cy[i] + 1] += 1
+        cell[i] = cell[i] * ny + cy[i]
+        start[cell[i] + 1] += 1
     for c in range(nx * ny):
         start[c + 1] += start[c]
     fill = start[:-1].copy()
     order = np.empty(n, dtype=np.int64)
     for i in range(n):
-        c = cx[i] * ny + cy[i]
-        order[fill[c]] = i
-        fill[c] += 1
-    return x0, y0, nx, ny, start, order
-
-
-@numba.njit(cache=True)
-def _span(v, v0, h, nv):  # pragma: no cover - numba
-    """The cells (first, last) of one axis about coordinate ``v``: its own and the one
-    each side, clipped to 0..nv-1 (first > last: none)."""
-    t = (v - v0) / h
-    if not t > -2.0:  # (far below, or NaN)
-        return 0, -1
-    if t >= nv + 1.0:
-        return 0, -1
-    c = int(math.floor(t))
-    lo = c - 1 if c >= 1 else 0
-    hi = c + 1 if c + 1 <= nv - 1 else nv - 1
-    return lo, hi
-
-
-@numba.njit(cache=True)
-def _ball_counts(px, py, qx, qy, r_hi, r_lo, h):  # pragma: no cover - numba
-    x0, y0, nx, ny, start, order = _cells(px, py, h)
+        order[fill[cell[i]]] = i
+        fill[cell[i]] += 1
     m = qx.shape[0]
     hi = np.zeros(m, dtype=np.int64)
     lo = np.zeros(m, dtype=np.int64)
@@ -106,38 +90,22 @@ def _ball_counts(px, py, qx, qy, r_hi, r_lo, h):  # pragma: no cover - numba
     for q in range(m):
         x = qx[q]
         y = qy[q]
-        ax, bx = _span(x, x0, h, nx)
-        ay, by = _span(y, y0, h, ny)
+        # the query's cell and the one each side per axis, clipped to the grid (none
+        # where the query lies two cells or more outside it, or is NaN)
+        tx = (x - x0) / h
+        ty = (y - y0) / h
+        if not (tx > -2.0 and ty > -2.0 and tx < nx + 1.0 and ty < ny + 1.0):
+            if far:
+                hi[q] = 1
+            continue
+        ix = int(math.floor(tx))
+        iy = int(math.floor(ty))
+        ax = ix - 1 if ix >= 1 else 0
+        bx = ix + 1 if ix + 1 <= nx - 1 else nx - 1
+        ay = iy - 1 if iy >= 1 else 0
+        by = iy + 1 if iy + 1 <= ny - 1 else ny - 1
         k_hi = 0
         k_lo = 0
-        for a in range(ax, bx + 1):
-            for b in range(ay, by + 1):
-                c = a * ny + b
-                for e in range(start[c], start[c + 1]):
-                    i = order[e]
-                    dx = px[i] - x
-                    dy = py[i] - y
-                    d = dx * dx + dy * dy
-                    if d <= t_hi:
-                        k_hi += 1
-                    if d <= t_lo:
-                        k_lo += 1
-        hi[q] = k_hi
-        lo[q] = k_lo
-    return hi, lo
-
-
-@numba.njit(cache=True)
-def _far_from(px, py, qx, qy, r, h):  # pragma: no cover - numba
-    x0, y0, nx, ny, start, order = _cells(px, py, h)
-    m = qx.shape[0]
-    out = np.empty(m, dtype=np.bool_)
-    ub = r * r
-    for q in range(m):
-        x = qx[q]
-        y = qy[q]
-        ax, bx = _span(x, x0, h, nx)
-        ay, by = _span(y, y0, h, ny)
         best = np.inf
         for a in range(ax, bx + 1):
             for b in range(ay, by + 1):
@@ -147,11 +115,21 @@ def _far_from(px, py, qx, qy, r, h):  # pragma: no cover - numba
                     dx = px[i] - x
                     dy = py[i] - y
                     d = dx * dx + dy * dy
-                    if d < best:
-                        best = d
-        # query's test: a neighbour only below the squared bound; its distance the root
-        out[q] = not (best < ub) or math.sqrt(best) > r
-    return out
+                    if far:
+                        if d < best:
+                            best = d
+                    else:
+                        if d <= t_hi:
+                            k_hi += 1
+                        if d <= t_lo:
+                            k_lo += 1
+        if far:
+            # query's test: a neighbour only below the squared bound; its distance the root
+            hi[q] = 1 if (not (best < t_hi) or math.sqrt(best) > r_hi) else 0
+        else:
+            hi[q] = k_hi
+            lo[q] = k_lo
+    return hi, lo
 
 
 def _columns(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -199,7 +177,7 @@ def ball_counts(points: np.ndarray, queries: np.ndarray, r_hi: float, r_lo: floa
         q = np.c_[qx, qy]
         return (np.asarray(tree.query_ball_point(q, r_hi, return_length=True), dtype=np.int64),
                 np.asarray(tree.query_ball_point(q, r_lo, return_length=True), dtype=np.int64))
-    return _ball_counts(px, py, qx, qy, r_hi, r_lo, h)
+    return _near(px, py, qx, qy, r_hi, r_lo, h, False)
 
 
 def far_from(points: np.ndarray, queries: np.ndarray, r: float) -> np.ndarray:
@@ -229,4 +207,4 @@ def far_from(points: np.ndarray, queries: np.ndarray, r: float) -> np.ndarray:
         from scipy.spatial import cKDTree
 
         return cKDTree(np.c_[px, py]).query(np.c_[qx, qy], distance_upper_bound=r)[0] > r
-    return _far_from(px, py, qx, qy, r, h)
+    return _near(px, py, qx, qy, r, r, h, True)[0] == 1
