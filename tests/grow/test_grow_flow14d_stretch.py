@@ -7,6 +7,16 @@ spacings"): at 550ea99, 0.806 of the interior elements kept six neighbours at th
 spacing (+-15%) and 52 interior sites were stretched (a gap, no crowding). With the
 insertions (and the relaxation of their windows): 0.880 and 28, no hole, nothing
 across the edge.
+
+Flow growth is chaotic in the last bit of a float. The figures above (and the test's
+first form: more elements than without the pass) were measured on a CPU with AVX-512
+(numpy's dispatch X86_V4). On an AMD EPYC without AVX-512 (numpy X86_V3) the growth
+takes another trajectory: 0.940 with six neighbours and 0.054 stretched (without the
+pass, ``flow_stretch_min=None``: 0.795 and 0.205), the pass puts 4 elements (924 ->
+928), but the growth without it ends with 928 as well (its later hole passes fill what
+the stretch leaves). So the count is checked where the pass acts: the pass puts at
+least one element into the growth, and the growth ends with no fewer elements than
+without it (from (3, 3), (2, 3) and (3, 2) there: 4 more each).
 """
 
 from __future__ import annotations
@@ -18,7 +28,7 @@ import pytest
 from scipy.spatial import cKDTree
 
 from strew import Region
-from strew.grow import analyze
+from strew.grow import _growth, analyze
 from strew.grow._growth import GrowParams, grow_reference
 
 from strew_testing import fidelity_suite
@@ -44,12 +54,26 @@ def hex_ref():
 
 
 @pytest.mark.slow
-def test_flow_stretched_lattice_gets_elements_and_keeps_its_six_neighbours(hex_ref):
+def test_flow_stretched_lattice_gets_elements_and_keeps_its_six_neighbours(hex_ref, monkeypatch):
     a = 30 * SP
     field = _quarter_circles(a)
     region = Region.rectangle(a, a)
     kw = dict(region=region, mode="flow", flow=field, start=(2 * SP, 2 * SP))
+    orig = _growth.insert_stretched
+    made: list[tuple[int, int, int]] = []  # (put, elements before, after)
+
+    def spy(g, limit=None):
+        n0 = len(g.order)
+        k = orig(g, limit)
+        made.append((k, n0, len(g.order)))
+        return k
+
+    monkeypatch.setattr(_growth, "insert_stretched", spy)
     out = grow_reference(hex_ref, GrowParams(**kw), rng=1)
+    monkeypatch.setattr(_growth, "insert_stretched", orig)
+    # the pass puts elements where the lattice is stretched (X86_V3: 4, 924 -> 928)
+    assert sum(k for k, _, _ in made) >= 1, made
+    assert all(n1 == n0 + k for k, n0, n1 in made), made
     _inside_without_overlap(out, region)
     six, stretched = _shares(out.xy, region)
     assert six >= 0.85  # 0.880 here; 0.806 at 550ea99
@@ -58,7 +82,8 @@ def test_flow_stretched_lattice_gets_elements_and_keeps_its_six_neighbours(hex_r
     off = grow_reference(hex_ref, GrowParams(**kw, flow_stretch_min=None), rng=1)
     six_off, stretched_off = _shares(off.xy, region)
     assert six_off < six - 0.04 and stretched_off > stretched + 0.04
-    assert len(out) > len(off)
+    # X86_V4: more elements than without the pass; X86_V3: 928 both (see the docstring)
+    assert len(out) >= len(off)
 
 
 @pytest.mark.parametrize("mode", ["fixed", "rotate"])
