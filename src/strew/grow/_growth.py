@@ -381,7 +381,10 @@ def lattice_like(nn: np.ndarray) -> bool:
     variant seeds 12 and 13) spread by 5.6 % and 5.9 %, under the 6 % test alone, and
     grew as a lattice would: no hole fill, and the dots' nearest dots too near at the
     low deciles and too far at the high ones (nn[dot>dot] 0.065-0.076 against 0.05 on
-    seeds 1-6 at 13). Their floors are within 0.7 % and their tails 1.12-1.14; of the
+    seeds 1-6 at 13). With this test the per-pair gap rule holds the bars back (1,160
+    elements against 1,325 at seed 1) and the row is faithful on 4 of seeds 1-6
+    (``benchmarks/fresh17_rows.py grow stripes:p2s13 1-6``; each half alone: 2/6 and
+    0/6). Their floors are within 0.7 % and their tails 1.12-1.14; of the
     audit's lattices under 6 % (rows, bricks, scales, rings of six; 832 exemplars
     surveyed by ``benchmarks/gst_cv_survey.py``), those with a tail of 1.1 have their
     nearest tenth at least 2.1 % over the least distance, and those with a floor within
@@ -697,7 +700,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
 
         - outlines (``pair_gap``): at least ``pair_gap`` times the reference's least
           outline gap between the two kinds. Not for lattice-like exemplars (nearest
-          distances varying by under :data:`GAP_LATTICE_CV`: a fitted lattice position
+          distances varying by under :data:`GAP_LATTICE_CV`, not hard-core:
+          :func:`lattice_like`; a fitted lattice position
           comes a little nearer than the reference and the refusal left holes; bricks
           and scales lost regularity), nor for thin kinds (area under
           :data:`GAP_THIN` of the bounding disc: long sticks lost 10 % of their density),
@@ -1166,7 +1170,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
 
     def _irregular(self) -> bool:
         """An exemplar whose nearest-neighbour distances spread by at least
-        :data:`GAP_LATTICE_CV` of their mean (not lattice-like: see ``_pair_gaps``), with
+        :data:`GAP_LATTICE_CV` of their mean or are hard-core (not lattice-like:
+        :func:`lattice_like`, ``_pair_gaps``), with
         no void kind and all kinds of one size (:func:`size_levels`).
 
         Not in the paper (§5.4 never returns to a place): such exemplars grew holes
