@@ -62,6 +62,88 @@ SAT_REACH = 1.5
 HUB_TARGET_FAR = 0.5
 
 
+#: rings of satellites (:func:`ring_phases`): every whole cluster has one count n of
+#: satellites, each at an angular gap within this share of 2 pi / n from the next
+RING_EVEN = 0.2
+#: ... and two hubs are adjacent (their rings' phase difference is read) within this
+#: factor of the hubs' median nearest-hub distance
+RING_ADJACENT = 1.3
+
+
+@dataclass(frozen=True)
+class RingPhases:
+    """The phases of an exemplar's rings of satellites (see :func:`ring_phases`).
+
+    Attributes
+    ----------
+    period : float
+        2 pi / n for rings of n satellites.
+    phase : (h,) float
+        Each hub's ring phase in [0, period) (the satellites' bearings from the hub,
+        modulo the period, as one circular mean); nan for a hub without satellites.
+    adjacent : (p,) float
+        The phase difference of each pair of adjacent hubs' rings, folded into
+        [0, period / 2].
+    """
+
+    period: float
+    phase: np.ndarray
+    adjacent: np.ndarray
+
+
+def ring_phases(ex: Arrangement, sat: Satellites) -> RingPhases | None:
+    """The phases of rings of satellites and their differences between adjacent hubs;
+    None unless every whole cluster is a ring of one count n (n >= 2) of satellites
+    spaced evenly (:data:`RING_EVEN`) and some adjacent pair (:data:`RING_ADJACENT`)
+    has phases.
+
+    Not in the paper (the satellites are copied whole, a departure of §5.1 / §5.4; see
+    the module's docstring). A copied cluster brings its ring's phase, and the phases of
+    neighbouring rings decide which satellites face each other across the gap between
+    the rings (the tiles' relative rotation).
+    Drawn at random, the whole clusters are paired as any two of them: the default rings
+    at variant seed 14 have their phases bunched (11 of 12 within 16 degrees of a period
+    of 36), random pairs differ by under 7.2 degrees at 54 % of pairs, the exemplar's
+    adjacent rings by 7.2-14.4 degrees at 57 % (``benchmarks/gst_rings_probe.py``); the
+    result's tiles faced their neighbours' otherwise, orientation.relative 0.134-0.154
+    against 0.096 on every seed (helper gst).
+    """
+    from scipy.spatial import cKDTree
+
+    whole = np.flatnonzero(sat.complete)
+    counts = {len(sat.members[i]) for i in whole}
+    if len(whole) == 0 or len(counts) != 1:
+        return None
+    n = counts.pop()
+    if n < 2:
+        return None
+    period = 2.0 * np.pi / n
+    phase = np.full(len(sat.hubs), np.nan)
+    for i, m in enumerate(sat.members):
+        if len(m) == 0:
+            continue
+        d = ex.xy[m] - ex.xy[sat.hubs[i]]
+        a = np.arctan2(d[:, 1], d[:, 0])
+        if sat.complete[i]:
+            sa = np.sort(a)
+            gaps = np.diff(sa, append=sa[0] + 2.0 * np.pi)
+            if np.any(np.abs(gaps - period) > RING_EVEN * period):
+                return None
+        phase[i] = (float(np.angle(np.mean(np.exp(1j * n * a)))) / n) % period
+    hxy = ex.xy[sat.hubs]
+    if len(hxy) < 2:
+        return None
+    reach = RING_ADJACENT * float(np.median(cKDTree(hxy).query(hxy, k=2)[0][:, 1]))
+    adj = []
+    for i, j in sorted(cKDTree(hxy).query_pairs(reach)):
+        if np.isfinite(phase[i]) and np.isfinite(phase[j]):
+            d = (phase[j] - phase[i]) % period
+            adj.append(min(d, period - d))
+    if not adj:
+        return None
+    return RingPhases(period, phase, np.asarray(adj))
+
+
 @dataclass(frozen=True)
 class Satellites:
     """The cluster structure of an exemplar (see :func:`satellite_structure`).
@@ -133,6 +215,25 @@ def satellite_structure(ex: Arrangement) -> Satellites | None:
     return None
 
 
+def _pick_ring(rings: RingPhases, complete: np.ndarray, th: float, x: float, y: float, placed_xy: list[tuple[float, float]],
+               placed_phase: list[float], near2: float, rng: np.random.Generator, default: int) -> int:
+    """The whole cluster whose ring, turned by ``th``, differs in phase from the placed
+    adjacent hubs' rings nearest differences drawn from the exemplar's adjacent pairs
+    (one draw per placed neighbour); ``default`` (the random draw) with no placed
+    neighbour. See :func:`ring_phases`; not in the paper."""
+    near = [q for q, (px, py) in enumerate(placed_xy) if (px - x) ** 2 + (py - y) ** 2 <= near2]
+    if not near:
+        return default
+    per = rings.period
+    want = rings.adjacent[rng.integers(len(rings.adjacent), size=len(near))]
+    cand = rings.phase[complete] + th
+    cost = np.zeros(len(complete))
+    for q, w in zip(near, want.tolist()):
+        d = np.mod(cand - placed_phase[q], per)
+        cost += np.abs(np.minimum(d, per - d) - w)
+    return int(complete[int(np.argmin(cost))])
+
+
 def hub_hole(hx: Arrangement) -> float:
     """The radius above which an empty circle of grown hubs is a hole: the widest empty
     circle of the exemplar's hubs (Delaunay circumcircles wholly inside its frame, as
@@ -198,6 +299,8 @@ def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.
         As for :func:`strew.grow._growth.grow_reference`; ``count`` counts hubs and
         satellites together.
     """
+    from scipy.spatial import cKDTree
+
     from ._analysis import analyze
     from ._growth import ELEMENT, _Grower
     from ._void_holes import fill_void_holes
@@ -234,6 +337,15 @@ def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.
     grower_of: list[int] = []  # the hub's grower index, -1 for satellites
     hub_of: list[int] = []  # the output index of each satellite's hub
     done = 0
+    # rings of satellites: each hub's ring chosen against its placed neighbours' (see
+    # ring_phases); its own random stream, spawned, so the hubs' growth draws as before
+    rings = ring_phases(ex, sat)
+    ring_rng = rng.spawn(1)[0] if rings is not None else None
+    placed_xy: list[tuple[float, float]] = []  # the placed hubs' positions
+    placed_phase: list[float] = []  # ... and their rings' phases, turned by their frames
+    if rings is not None:
+        hxy = ex.xy[sat.hubs]
+        near2 = (RING_ADJACENT * float(np.median(cKDTree(hxy).query(hxy, k=2)[0][:, 1]))) ** 2
     count = params.count
     target = hp.max_elements if count is None else max(1, math.ceil(count / (1.0 + per_hub)))
     hole = hub_hole(hx) if params.mode == "fixed" and params.hub_holes else 0.0
@@ -270,9 +382,13 @@ def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.
             # those on the frame) would repeat a handful of rings, whose turns then
             # repeat between neighbouring clusters (rings: orientation.relative failed)
             src_i = int(complete[rng.integers(len(complete))])
+            th = float(g.frame[h])
+            if rings is not None:
+                src_i = _pick_ring(rings, complete, th, x, y, placed_xy, placed_phase, near2, ring_rng, src_i)
+                placed_xy.append((x, y))
+                placed_phase.append(float(rings.phase[src_i]) + th)
             src = int(sat.hubs[src_i])
             m = sat.members[src_i]
-            th = float(g.frame[h])
             c, s = math.cos(th), math.sin(th)
             off = ex.xy[m] - ex.xy[src]
             for q, r in enumerate(m.tolist()):
