@@ -357,6 +357,38 @@ def _parse_hex(c: Any) -> tuple[float, float, float] | None:
         return None
 
 
+#: the quantile of the exemplar's turns between neighbours that bounds an element's turn
+#: from its neighbours' frame in rotation mode (see :func:`exemplar_turn`)
+TURN_QUANTILE = 0.9
+
+
+def exemplar_turn(ex: Arrangement) -> float:
+    """How far an exemplar's elements turn from their neighbours: the
+    :data:`TURN_QUANTILE` quantile of the rotation differences (wrapped into
+    [0, pi]) between each element and its six nearest; 0 for fewer than seven elements
+    or where none turns.
+
+    Rotation mode holds an element's turn from its neighbours' frame within
+    ``GrowParams.max_turn`` (a departure from §5.3, whose Eq. 4 fits each turn alone);
+    where the exemplar's neighbours turn less than that from each other, within this
+    figure. Not in the paper. Helper gst: wide flat scales with noisy positions
+    (``benchmarks/_variants.py`` EDGE set p2: their rotations spread by 0.0175, the
+    neighbours' turns 0.041 at the 90th percentile) turned by the fit to their noisy
+    neighbours at up to pi / 18 = 0.17: the output's rotations spread by 0.026-0.028,
+    the rows bent, and the relaxation cost regularity, 0.928-0.936 against the
+    exemplar's 1.0 (regularity 0.064-0.072 against 0.05 at variant seed 13, seeds 1-2;
+    ``benchmarks/gst_rotate_probe.py``). Exemplars whose elements do not turn at all
+    (rows, bricks and hexagons of one rotation: nothing to read) keep ``max_turn``.
+    """
+    if len(ex) < 7:
+        return 0.0
+    from scipy.spatial import cKDTree
+
+    q = cKDTree(ex.xy).query(ex.xy, k=7)[1][:, 1:]
+    d = np.abs(np.angle(np.exp(1j * (ex.rotation[q] - ex.rotation[:, None]))))
+    return float(np.quantile(d, TURN_QUANTILE))
+
+
 def lattice_like(nn: np.ndarray) -> bool:
     """Whether an exemplar's nearest-neighbour distances read as a lattice's.
 
@@ -412,6 +444,13 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.l = ref.mean_edge
         self.l_short = 0.5 * ref.shortest_edge  # §5.4: half of the shortest reference edge
         self.mode_code = MODES[p.mode]
+        #: rotation mode: the largest turn of an element's frame from its neighbours'
+        #: (``max_turn``, at most the exemplar's own turns: see :func:`exemplar_turn`)
+        self.max_turn = float(p.max_turn)
+        if self.mode_code == 1:
+            t = exemplar_turn(ex)
+            if 0.0 < t < self.max_turn:
+                self.max_turn = t
         # half the smallest centre distance between elements of two kinds in the
         # reference (see too_close_in_kind), at least l_short
         self.pair_short = np.full((self.n_kinds, self.n_kinds), self.l_short)

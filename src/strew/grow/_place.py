@@ -240,7 +240,7 @@ class _Place:
             weights=self.p.weights,
             frame_theta=frame_theta,
             frame_weight=frame_w,
-            max_turn=self.p.flow_max_turn if self.mode_code == 2 else self.p.max_turn,
+            max_turn=self.p.flow_max_turn if self.mode_code == 2 else self.max_turn,
             keep_frame=self.p.keep_frame if self.mode_code == 1 else 0,
         )
         best = float(err.min()) if len(err) else math.inf
