@@ -65,7 +65,7 @@ for s in seeds:
         import grow_variants
         from strew.grow import grow as _grow
         grow_variants.grow = lambda *a, **k: _grow(*a, **{**k, **kw})
-    out, sc = run(ex, 3.5, s, SimpleNamespace(mode=kw.pop("mode", "fixed") if False else "fixed", times=10.0))
+    out, sc = run(ex, 3.5, s, SimpleNamespace(mode="fixed", times=10.0))
     _calls.clear()
     rep = fidelity(ex, out, eq5=False, local=False)
     r, e = deciles("dot")
