@@ -104,6 +104,9 @@ GAP_THIN = 0.25
 GAP_GRIT = 0.4
 #: grit: the share of the reference's least bounding-disc gap it keeps from itself
 GAP_SMALLEST = 0.5
+#: ... and the smallest kind beside itself wherever visible kinds come in three size
+#: levels or more, grit or not (see ``_Grower._pair_gaps``)
+GAP_SMALLEST_SEVERAL = True
 #: kinds of several sizes: a smaller kind too large for the larger one's hollows, and not
 #: of the smallest size level (``DISC_WIDE_MIDDLE``; medium stones beside large ones), keeps
 #: this share of the reference's least gap between their scaled bounding discs, where
@@ -995,9 +998,16 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         # (lowest 0.12-0.15 s; nn[small>small] 0.060-0.065 against 0.052-0.064)
         # (only where its hollows could hold it across, as above: pebbles at ratio 0.3
         # lost, nn[pebble>pebble] 0.067-0.070 against 0.065)
+        # ... and, with GAP_SMALLEST_SEVERAL, wherever the visible kinds come in three
+        # sizes or more, grit or not: three sizes 300:20:10 (``--harder`` h0s13, h0s14)
+        # grew 28 % of their small stones nearer one another than the reference's least
+        # disc gap (1.2; the output's down to -1.4), every decile of their nearest-small
+        # distances short (lowest 0.74 s against 0.87), nn[small>small] 0.051-0.058
+        # against 0.051-0.055 on seeds 1-3 (benchmarks/g3s_diag.py)
+        three = GAP_SMALLEST_SEVERAL and len(np.unique(self.size_level[~void])) >= 3
         if float(self.size_level.max()) > float(self.size_level.min()):
             for k1 in range(n):
-                if void[k1] or self.size_level[k1] > self.size_level[~void].min() or not grit_of[k1]:
+                if void[k1] or self.size_level[k1] > self.size_level[~void].min() or not (grit_of[k1] or three):
                     continue
                 m = (self.ex_kind[:, None] == k1) & (self.ex_kind[qq] == k1)
                 if m.any():
