@@ -333,6 +333,9 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
         region = _outside_finished(region, t, job, links, band)
         context = context.with_meta(synth_holes=_synth_holes_in(neighbours, links))
     synth_kw = {"_balance_drop": _synth_drop(region, t, job, band)} if job.method == "synth" else {}
+    if job.method == "ornament" and _keeps_first_phase(job) is not None:
+        # the halo's edges that face a later tile stop no circle (_open_edges)
+        synth_kw = {"_open": [e + [_OPEN_REACH * job.halo] for e in _open_edges(t, job, grown)]}
     arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **_HANDS_ON.get(job.method, ({},))[0], **synth_kw, **job.params)
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
@@ -660,11 +663,19 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     if later and band > 0:
         # the later phases' elements (flowers' buds) near a later tile are left to it
         placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
+    first_rows = _first_phase_rows(arr, t, job) if later else None
+    if first_rows is not None:
+        placed |= first_rows
     parent = _parent_rows(arr)
     if later:
         # a success this tile keeps by its own rows is not dropped for a dropped ancestor's
         # sake where one of its rows lies beyond every later tile's region (keep_ancestors)
-        placed = keep_ancestors(arr["element"], parent, arr[col], placed, d >= _CUT_REACH * job.halo)
+        far = d >= _CUT_REACH * job.halo
+        if first_rows is not None:
+            # and, for a pattern that keeps its first phase, where it is one of those
+            # (_first_phase_rows): a vine does not go for its parent's sake
+            far = far | first_rows
+        placed = keep_ancestors(arr["element"], parent, arr[col], placed, far)
     kept = keep_whole(arr["element"], parent, arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
         # the successes whose empty circle an element dropped here had bounded are left to
@@ -674,6 +685,8 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         reach = _CUT_REACH * job.halo  # a success goes with its descendants (keep_whole)
         for _ in range(_CUT_ROUNDS):
             more = near & cut_touching(job.input, arr[PROXIES_COLUMN], arr[col], arr[GOAL_COLUMN], kept)
+            if first_rows is not None:
+                more &= ~first_rows  # the kept first phase stays whole (_first_phase_rows)
             if not more.any():
                 break
             trial = placed & ~np.isin(inv, inv[more])  # whole successes
@@ -748,6 +761,11 @@ def _parent_rows(arr: Any) -> Any:
 
 # how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)
 _LATE_BAND = 0.5
+# for a pattern that keeps its first phase (_first_phase_rows): how far past the halo's
+# open edges (in halos) circle centres may lie (strew.ornament._engine: the elements stay
+# in the region), and how far past its rectangle (in halos) a tile keeps its first phase
+_OPEN_REACH = 1.0
+_KEEP_FIRST_REACH = 0.5
 # how many rounds of strew.ornament._context.cut_touching _keep_groups runs at most
 _CUT_ROUNDS = 1
 # how near a later tile (in halos) the successes of cut_touching lie
@@ -786,6 +804,88 @@ def _reach(job: _Job) -> float:
     if job.method not in _HANDS_OVER_BY_RAMP:
         return h
     return max(h, min(1.25 * h, (min(job.tile) - h) / 2.0))
+
+
+def _keeps_first_phase(job: _Job) -> str | None:
+    """The name of the first phase of an ornament pattern that keeps it across borders
+    (its ``tile_keeps_first_phase`` attribute, hierarchy's vines), else None."""
+    if job.method != "ornament":
+        return None
+    from .ornament._pattern import load_pattern
+
+    try:
+        pat = load_pattern(job.input)
+    except Exception:  # not a pattern (the method reports it itself)
+        return None
+    if not getattr(pat, "tile_keeps_first_phase", False) or not pat.phases:
+        return None
+    return str(pat.phases[0].name)
+
+
+def _first_phase_rows(arr: Any, t: Tile, job: _Job) -> np.ndarray | None:
+    """(n,) bool: for a pattern that keeps its first phase (:func:`_keeps_first_phase`),
+    the rows of that phase within ``_KEEP_FIRST_REACH`` halos of ``t``'s rectangle,
+    which ``t`` keeps (with their ancestors: _keep_groups) even where they lie in a later
+    tile; None for the others.
+
+    Why (issue 19.4, hierarchy). Wong et al. grow the whole vine structure before any
+    flower (§5, Fig. 10: "the pattern starts from the seed points by growing the vines",
+    a state precondition on each rule). A tile's region ends a halo past its border, and
+    §4.1 discards a circle the region's boundary stops: the finished tile squeezed its
+    vines into the first half halo past the border (1.8 and 3.1 times the interior's
+    rate by quarter halo; benchmarks/hie15_halo.py), and the +-1 s strips held 1.32
+    times the untiled control's vines (6 worlds, tiles 48-68). With the halo's edges
+    that face a later tile open (_open_edges; no squeeze), the finished tile dropped its
+    vines that crossed the border and every vine grown from them back into its side,
+    and the later tile could not regrow them: its band held no circle of a vine's
+    radius 8 among the finished tile's other kinds (vines 0.75, density 0.90 at +-1 s;
+    helper wld17). Kept, the vines near the border are the ones one run grows there
+    before any flower, and the later tile grows its own vines around them, and every
+    later phase across the border. Past half a halo the open edge's own pile-up begins
+    (3.4 times the interior's vines 2-2.5 s past the border when kept a halo deep), so
+    those are left to the later tile. Departure from the paper: it grows one panel in
+    one run; this hand-over between runs is ours.
+    """
+    first = _keeps_first_phase(job)
+    if first is None or "phase" not in arr.columns or not len(arr):
+        return None
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    x0, y0, x1, y1 = t.rect
+    depth = np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0))
+    ph = np.array([p == first for p in np.asarray(arr["phase"], dtype=object)], bool)
+    return ph & (depth <= _KEEP_FIRST_REACH * job.halo)
+
+
+def _open_edges(t: Tile, job: _Job, grown: tuple[float, float, float, float]) -> list[list[float]]:
+    """The parts ``[x0, y0, x1, y1]`` of the grown rectangle's edges that lie in a later
+    tile (not on the world's edge, not in a finished tile): the ornament engine measures
+    a circle there against the elements alone (strew.ornament._engine._closed_part).
+    For the patterns of :func:`_keeps_first_phase` only (helper wld17's open edges, whose
+    finished side was refilled short of vines without them, see _first_phase_rows)."""
+    gx0, gy0, gx1, gy1 = grown
+    w, h = job.size
+    torus = job.torus is not None
+    sides = []
+    if torus or gx0 > 0:
+        sides.append((gx0, gy0, gx0, gy1))
+    if torus or gx1 < w:
+        sides.append((gx1, gy0, gx1, gy1))
+    if torus or gy0 > 0:
+        sides.append((gx0, gy0, gx1, gy0))
+    if torus or gy1 < h:
+        sides.append((gx0, gy1, gx1, gy1))
+    out = []
+    for lx0, ly0, lx1, ly1 in _later_rects(t, job):
+        for ax, ay, bx, by in sides:
+            if ax == bx:  # vertical: x inside the later tile, y overlapping it
+                lo, hi = max(ay, ly0), min(by, ly1)
+                if lx0 < ax < lx1 and hi > lo:
+                    out.append([ax, lo, ax, hi])
+            else:
+                lo, hi = max(ax, lx0), min(bx, lx1)
+                if ly0 < ay < ly1 and hi > lo:
+                    out.append([lo, ay, hi, ay])
+    return out
 
 
 def _later_rects(t: Tile, job: _Job) -> list[tuple[float, float, float, float]]:

@@ -133,6 +133,7 @@ def grow_ornament(
     progress: Callable[[int, int | None, str], None] | None = None,
     should_cancel: Callable[[], bool] | None = None,
     _tiled: bool = False,
+    _open: Any = None,
     **params: Any,
 ) -> Arrangement:
     """Grow adaptive clip art in a region and render it (Wong et al. 1998).
@@ -250,6 +251,7 @@ def grow_ornament(
             _thin_boundary=thin,  # the context's thin footprints (issue 19.4)
             _context=parents,
             _holes=ctx.meta.get("ornament_holes") if _tiled and ctx is not None else None,  # strew.tiles._ornament_holes
+            _open=_open if _tiled else None,  # the halo edges facing a later tile (strew.tiles._open_edges)
         )
         if _tiled:
             from ._render import render_ornament

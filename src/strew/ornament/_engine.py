@@ -268,8 +268,12 @@ class RuleContext:
         p = vec(point)
         if self._g.periodic is not None:
             return math.inf  # a torus has no boundary
-        d = float(shapely.distance(self._g.region.boundary, shapely.Point(p)))
-        return d if self._g.region.contains(p[None])[0] else -d
+        # (a tiled world's open edges, strew.tiles._open_edges, are no boundary: the
+        # distance to the closed part, inf where there is none)
+        d = float(shapely.distance(self._g.closed_boundary, shapely.Point(p)))
+        if not math.isfinite(d) or shapely.is_empty(self._g.closed_boundary):
+            d = math.inf
+        return d if self._g.region.contains(p[None])[0] else -(d if math.isfinite(d) else 0.0)
 
     def clearance(self, point: Any, *, ignore: Iterable[Element] = ()) -> float:
         """Radius of the largest empty circle at ``point``: distance to the nearest placed
@@ -350,6 +354,7 @@ class _Grower:
         thin_boundary: bool = False,
         context: list[Element] | None = None,
         holes: Sequence[Sequence[Any]] | None = None,
+        open_edges: Sequence[Sequence[float]] | None = None,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -382,6 +387,28 @@ class _Grower:
             # tile's diagonal of the obstacles that shape it: render their images that far
             self.margin = 0.5 * math.hypot(bx1 - bx0, by1 - by0)
             bx0, by0, bx1, by1 = bx0 - self.margin, by0 - self.margin, bx1 + self.margin, by1 + self.margin
+        self.open_edges = None
+        self.centre_zone = None
+        if periodic is None and open_edges is not None and len(open_edges):
+            self.open_edges = np.asarray(open_edges, float)
+            if self.open_edges.shape[1] > 4 and (self.open_edges[:, 4] > 0).any():
+                # candidate centres up to m past an open edge (its fifth value): a circle
+                # there, measured against the elements alone, is one that one run would
+                # have grown into; only its elements must lie in the region
+                m = float(self.open_edges[:, 4].max())
+                ox = self.open_edges
+                if np.any((ox[:, 0] == ox[:, 2]) & (ox[:, 0] <= bx0)):
+                    bx0 -= m
+                if np.any((ox[:, 0] == ox[:, 2]) & (ox[:, 0] >= bx1)):
+                    bx1 += m
+                if np.any((ox[:, 1] == ox[:, 3]) & (ox[:, 1] <= by0)):
+                    by0 -= m
+                if np.any((ox[:, 1] == ox[:, 3]) & (ox[:, 1] >= by1)):
+                    by1 += m
+                strips = [shapely.buffer(shapely.linestrings([(a, b), (c, d)]), mm, cap_style="flat") for a, b, c, d, mm in ox if mm > 0]
+                self.centre_zone = shapely.union_all([region.geometry, *strips])
+                shapely.prepare(self.centre_zone)
+            self.open_edges = self.open_edges[:, :4]
         if resolution is None:
             # cells of half the minimum radius, between 256 and 2048 along the longer side
             resolution = int(np.clip(np.ceil(size / (0.5 * min_radius)), 256, 2048))
@@ -403,8 +430,18 @@ class _Grower:
         # GEOS's vectorised point test, not the shared scanline (strew._kernels.raster):
         # a centre on the boundary stays outside, and it costs 1-2% of a growth
         inside = shapely.contains_xy(region.prepared, gx.ravel(), gy.ravel()).reshape(rows, cols)
+        # a tiled world's halo edges that face a later tile (issue 19.4, strew.tiles
+        # ._open_edges): segments (x0, y0, x1, y1) of the region's boundary that stop no
+        # circle (see _open_boundary)
         if periodic is None:
             covered = np.where(inside, 0, 1).astype(np.int8)
+            if self.open_edges is not None:
+                oc = _open_cells(region, self.open_edges, gx, gy, inside, size)
+                covered[oc] = 4
+                if self.centre_zone is not None:
+                    # cells past an open edge within m are candidates
+                    z = shapely.contains_xy(self.centre_zone, gx.ravel(), gy.ravel()).reshape(rows, cols)
+                    covered[oc & z] = 0
             if thin_boundary:
                 # Around context (issue 19.4): the region is the panel less the context's
                 # footprint, whose thin parts (willow's stems, a hair wide) hold no cell
@@ -429,7 +466,8 @@ class _Grower:
         self.covered = covered
         # -- initial distance transform (the MAT's values) ------------------------------
         if periodic is None:
-            d, (ii, jj) = ndimage.distance_transform_edt(covered == 0, return_indices=True)
+            # (cells past an open edge, bit 4, are no obstacle: only not candidates)
+            d, (ii, jj) = ndimage.distance_transform_edt((covered & 3) == 0, return_indices=True)
             self.dist_all = d.astype(np.float64)
             self.near_all = (ii.astype(np.int64) * cols + jj).astype(np.int64)
         else:  # nothing covered yet: the seeds' waves set every distance
@@ -478,6 +516,9 @@ class _Grower:
             ring = np.vstack([p.points, p.points[:1]])
             rings.append(np.c_[ring[:-1], ring[1:]])
         self.boundary_segs = np.ascontiguousarray(np.vstack(rings), dtype=np.float64)
+        self.closed_boundary = region.boundary
+        if self.open_edges is not None:
+            self.boundary_segs, self.closed_boundary = _closed_part(region, self.open_edges, size)
         if periodic is not None:
             self.boundary_segs = np.zeros((0, 4))
         self.region_cover = shapely.buffer(region.geometry, 1e-7 * max(1.0, size))
@@ -775,6 +816,8 @@ class _Grower:
         if self.periodic is not None:
             x0, y0, w, h = self.periodic
             ok = x0 - self.margin / 2 <= x <= x0 + w + self.margin / 2 and y0 - self.margin / 2 <= y <= y0 + h + self.margin / 2
+        elif self.centre_zone is not None:
+            ok = bool(shapely.contains_xy(self.centre_zone, x, y))
         else:
             ok = bool(self.region.contains(np.array([[x, y]]))[0])
         if v > rho and ok:
@@ -939,6 +982,48 @@ class _Grower:
         return False
 
 
+def _open_cells(region: Region, open_edges: np.ndarray, gx: np.ndarray, gy: np.ndarray, inside: np.ndarray, size: float) -> np.ndarray:
+    """(rows, cols) bool: the raster cells outside ``region`` whose centre lies nearer an
+    open edge (:func:`_closed_part`) than the rest of the boundary: they stop no circle."""
+    out = np.zeros(inside.shape, bool)
+    ii, jj = np.nonzero(~inside)
+    if not len(ii):
+        return out
+    pts = shapely.points(gx[ii, jj], gy[ii, jj])
+    lines = shapely.multilinestrings([[(a, b), (c, d)] for a, b, c, d in open_edges])
+    _, closed = _closed_part(region, open_edges, size)
+    d_open = shapely.distance(lines, pts)
+    d_closed = shapely.distance(closed, pts) if not shapely.is_empty(closed) else np.full(len(ii), np.inf)
+    out[ii, jj] = d_open < d_closed
+    return out
+
+
+def _closed_part(region: Region, open_edges: np.ndarray, size: float) -> tuple[np.ndarray, Any]:
+    """The segments ``(m, 4)`` and the linework of ``region``'s boundary less its open
+    edges ``(k, 4)``.
+
+    Why (issue 19.4, hierarchy): a tiled world's tile grows in its rectangle widened by
+    the halo, and §4.1 discards a circle the boundary stops before it reaches an
+    element. Where the halo's edge faces a tile that runs later, the world goes on
+    there: one run would have measured that circle against the elements alone. A
+    finished tile's vines phase (circles of radius >= 8, halo 12-17 at tiles 48-68)
+    lost every circle centred past half the halo and squeezed its vines into the first
+    half (1.82 and 3.06 times the interior's rate; benchmarks/hie15_halo.py). Departure
+    from §4.1: these edges are no boundary; the region still bounds the circle's centre
+    and the elements grown (``inside``).
+    """
+    tol = 1e-7 * max(1.0, size)
+    lines = shapely.multilinestrings([[(a, b), (c, d)] for a, b, c, d in open_edges])
+    closed = shapely.difference(region.boundary, shapely.buffer(lines, tol, cap_style="flat"))
+    segs = []
+    for part in shapely.get_parts(shapely.line_merge(closed) if not shapely.is_empty(closed) else closed):
+        xy = shapely.get_coordinates(part)
+        if len(xy) >= 2:
+            segs.append(np.c_[xy[:-1], xy[1:]])
+    arr = np.vstack(segs) if segs else np.zeros((0, 4))
+    return np.ascontiguousarray(arr, dtype=np.float64), closed
+
+
 def _holes_in(holes: Sequence[Sequence[Any]] | None, bounds: tuple[float, float, float, float]) -> tuple[np.ndarray | None, np.ndarray | None]:
     """The handed-over circles ``(m, 3)`` that reach into ``bounds`` (None for none), and
     the phase each was grown in (``(m,)`` object; None where no circle has one)."""
@@ -997,6 +1082,7 @@ def grow_elements(
     _thin_boundary: bool = False,
     _context: list[Element] | None = None,
     _holes: Sequence[Sequence[Any]] | None = None,
+    _open: Sequence[Sequence[float]] | None = None,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
@@ -1047,7 +1133,7 @@ def grow_elements(
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile,
-                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else [list(v) for v in _holes])
+                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else [list(v) for v in _holes], open_edges=_open)
     g.run()
     rep.done(len(g.elements) - g.n_seeds - g.n_context)
     stats = dict(g.stats)

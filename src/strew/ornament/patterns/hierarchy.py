@@ -52,6 +52,12 @@ pattern = Pattern(
     draw_order=["vine", "twig", "leaf", "flower", "quote"],
 )
 
+# a tiled world (strew.tiles) keeps each tile's vines (the first phase) up to half a halo
+# past its border, with the halo's edges towards later tiles open, so that the vine
+# structure near a border is one run's, grown before any flower (strew.tiles
+# ._first_phase_rows; not in the paper, which grows one panel in one run)
+pattern.tile_keeps_first_phase = True
+
 pattern.element("seed", Point)
 # s0, s1: the vine's depth along the vine structure at its two ends (a child starts at its
 # parent's depth where it branches off), which sets its width when drawn, so that the
