@@ -296,6 +296,9 @@ class GrowParams:
     #: below their median that a placement may come nearer than their smallest (see
     #: ``_Grower.pair_close``)
     close_spread: float = 0.5
+    #: kinds of several sizes: the share of that spread the largest kind may come
+    #: nearer its own kind than the reference's smallest distance (None: as any kind)
+    top_close_spread: float | None = None
     #: fixed mode: an element is not placed nearer (outline to outline) one of a kind
     #: than this share of the reference's smallest outline gap between the two kinds,
     #: nor a void nearer a visible element than the bounding discs' least gap less
@@ -311,6 +314,12 @@ class GrowParams:
     canopy_quantile: float | None = 1.0
     #: the reach of that try's fitted position, in mean edge lengths
     canopy_reach: float = 1.0
+    #: a seed becomes a larger kind it misses only while that kind's share of the settled
+    #: elements (behind the growth front, away from the region's edge) is under this
+    #: factor times the reference's (see ``_Place.canopy_full``); None: always
+    canopy_share: float | None = 1.0
+    #: the sampling spread allowed above that share, in binomial standard deviations
+    canopy_share_z: float = 1.0
     #: torus: rounds of :meth:`_Grower.refill` after the growth stops (0: none)
     refill_rounds: int = 2
     #: fixed mode, exemplars with void kinds: after the growth, empty circles of the
@@ -531,6 +540,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                     spread *= p.close_spread
                 if k1 == k2 and p.own_kind_close is None:
                     spread = max(spread, 0.05 * lo)  # saturated discs have almost none
+                if k1 == k2 and p.top_close_spread is not None and self.size_level[k1] == self.size_level.max() > self.size_level.min():
+                    spread = p.top_close_spread * (med - lo)
                 self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - spread)
         self.pair_close = np.maximum(self.pair_close, self.pair_close.T)
         self.pair_close_max = self.pair_close.max(axis=1)
@@ -629,6 +640,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         ]
         self.kind_radius = np.array([max(ex.shapes[k].radius, 0.0) for k in ex.kinds])
         self.areal = [not g.is_empty and g.area > 0 for g in self.local_geom]
+        self._canopy_share_setup(ex, p)
         #: per pair of kinds: the least outline gap (shapely distance between the two
         #: outlines) a placement keeps, ``pair_gap`` times the reference's smallest gap
         #: between elements of the two kinds; 0: only the overlap test (see
@@ -1300,6 +1312,51 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.origin = start
         self.s0 = self.new_object(start[0], start[1], p.start_kind)
         self.first = True
+
+    def _canopy_share_setup(self, ex: Arrangement, p: GrowParams) -> None:
+        """The reference's share of each kind for the canopy's gate (see _Place.canopy_full).
+
+        Kind shares are counted by minus sampling, as the fidelity judge counts them
+        (:func:`strew._fidelity._wall_reach`): where the exemplar's frame is a wall that
+        elements of several sizes are kept wholly inside, the band along it holds only the
+        smaller kinds, and the whole frame's shares under-count the large ones (the suite's
+        three sizes: 5.90 large per 1e4 over the frame, 7.06 in its interior).
+        """
+        #: (n_kinds,) the reference's share of each visible kind; None: no gate
+        self.canopy_ref_share: np.ndarray | None = None
+        #: how far in from the region's edge an element counts towards the shares
+        self.canopy_wall = 0.0
+        #: how far behind the seed (towards the initial seed) the elements are settled
+        self.canopy_settle = 0.0
+        self._settle_seen = 0
+        self._settle_n = 0
+        self._settle_r = np.zeros(256)
+        self._settle_k = np.zeros(256, dtype=np.int64)
+        if not self.canopy or p.canopy_share is None or p.tile is not None or p.spray is not None or len(ex) == 0:
+            return
+        vcol = ex.columns.get("void")
+        vis = ~(np.asarray(vcol, dtype=bool) if vcol is not None else np.zeros(len(ex), dtype=bool))
+        counted = vis.copy()
+        if ex.region is not None:
+            from .._fidelity import _wall_reach
+
+            geom = ex.region.geometry
+            rad = self.kind_radius[self.ex_kind] * np.abs(np.asarray(ex.scale, dtype=float))
+            wall = _wall_reach(ex.xy[vis], self.ex_kind[vis], rad[vis], geom)
+            # a small exemplar keeps a quarter of its frame to count kinds in (as the judge)
+            while wall > 0 and geom.buffer(-wall).area < 0.25 * geom.area:
+                wall *= 0.8
+            to_frame = shapely.distance(geom.boundary, shapely.points(ex.xy))
+            counted &= to_frame >= wall
+            self.canopy_wall = float(wall)
+        cnt = np.bincount(self.ex_kind[counted], minlength=self.n_kinds)[: self.n_kinds].astype(float)
+        if cnt.sum() <= 0:
+            return
+        self.canopy_ref_share = cnt / cnt.sum()
+        finite = self.reach_larger[np.isfinite(self.reach_larger)]
+        # the front is ragged by the priority wait of §5.1 (5 l) and a seed's larger
+        # neighbour may still come within its reach
+        self.canopy_settle = 5 * self.l + (float(finite.max()) if len(finite) else 0.0)
 
     def _torus_margin(self) -> None:
         """How far beyond the tile ghosts are kept: the farthest any lookup of the growth
