@@ -300,7 +300,7 @@ class _Place:
             return False
         n = self._settle_n
         k = self._settle_k[:n][self._settle_r[:n] <= r]
-        if len(k) * ref[b] < 10:
+        if len(k) * ref[b] < 2:
             return False
         # the sample's own spread (binomial, ``canopy_share_z`` standard deviations) is
         # allowed: near the initial seed the first few hundred elements drew shares of
