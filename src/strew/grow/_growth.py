@@ -88,6 +88,10 @@ from ._void_holes import fill_void_holes, small_fill
 
 __all__ = ["GrowParams", "grow_reference"]
 
+#: the fewest elements of a kind the reference must count for the canopy's share gate
+#: (see ``_Grower._canopy_share_setup``)
+CANOPY_MIN_REF = 15
+
 #: exemplars whose nearest-neighbour distances vary by less than this share of their
 #: mean are lattice-like: no per-pair gap rule (see ``_Grower._pair_gaps``)
 GAP_LATTICE_CV = 0.06
@@ -1322,7 +1326,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         smaller kinds, and the whole frame's shares under-count the large ones (the suite's
         three sizes: 5.90 large per 1e4 over the frame, 7.06 in its interior).
         """
-        #: (n_kinds,) the reference's share of each visible kind; None: no gate
+        #: (n_kinds,) the reference's share of each visible kind (NaN: too few counted to
+        #: gate); None: no gate
         self.canopy_ref_share: np.ndarray | None = None
         #: how far in from the region's edge an element counts towards the shares
         self.canopy_wall = 0.0
@@ -1352,7 +1357,13 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         cnt = np.bincount(self.ex_kind[counted], minlength=self.n_kinds)[: self.n_kinds].astype(float)
         if cnt.sum() <= 0:
             return
-        self.canopy_ref_share = cnt / cnt.sum()
+        share = cnt / cnt.sum()
+        # a kind the reference counts fewer than CANOPY_MIN_REF of has a share known to no
+        # better than a quarter (binomial): no gate for it (NaN). Three sizes 1:2.5:4
+        # (--harder h4, variant 14: 11 large stones counted) and 400:15:15 (h12s14: 11)
+        # held at their exemplars' share lost nn[small>large] (0.31/0.306, 0.22/0.207)
+        share[cnt < CANOPY_MIN_REF] = np.nan
+        self.canopy_ref_share = share
         finite = self.reach_larger[np.isfinite(self.reach_larger)]
         # the front is ragged by the priority wait of §5.1 (5 l) and a seed's larger
         # neighbour may still come within its reach

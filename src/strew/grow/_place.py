@@ -288,7 +288,8 @@ class _Place:
         at the front the larger kinds, which grow first (§5.1), are over-represented)
         and at least :attr:`canopy_wall` from the region's edge, against the reference's
         by the same minus sampling (:meth:`_canopy_share_setup`); until that sample
-        should hold 10 of kind ``b`` the seed converts as before.
+        should hold 2 of kind ``b``, or where the reference counts too few of ``b`` to
+        know its share (``CANOPY_MIN_REF``), the seed converts as before.
         """
         ref = self.canopy_ref_share
         if ref is None or not ref[b] > 0:
