@@ -300,9 +300,6 @@ class GrowParams:
     #: below their median that a placement may come nearer than their smallest (see
     #: ``_Grower.pair_close``)
     close_spread: float = 0.5
-    #: kinds of several sizes: the share of that spread the largest kind may come
-    #: nearer its own kind than the reference's smallest distance (None: as any kind)
-    top_close_spread: float | None = None
     #: fixed mode: an element is not placed nearer (outline to outline) one of a kind
     #: than this share of the reference's smallest outline gap between the two kinds,
     #: nor a void nearer a visible element than the bounding discs' least gap less
@@ -544,8 +541,6 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                     spread *= p.close_spread
                 if k1 == k2 and p.own_kind_close is None:
                     spread = max(spread, 0.05 * lo)  # saturated discs have almost none
-                if k1 == k2 and p.top_close_spread is not None and self.size_level[k1] == self.size_level.max() > self.size_level.min():
-                    spread = p.top_close_spread * (med - lo)
                 self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - spread)
         self.pair_close = np.maximum(self.pair_close, self.pair_close.T)
         self.pair_close_max = self.pair_close.max(axis=1)
