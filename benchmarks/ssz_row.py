@@ -14,7 +14,7 @@ import time
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
 import numpy as np
 from grow_variants import _harder_suite
-from syn13z_rows import nnq
+from syn13z_rows import counts, nnq
 from synth_variants import _harder, run
 
 from strew.io import save
@@ -51,6 +51,7 @@ for name, i, v, ex, seed in rows:
     fails = [f"{k}={m.value:.3g}/{m.tolerance:.3g}" for k, m in rep.metrics.items() if m.applicable and not m.passed]
     hi = i if i.startswith("p") else f"h{i}"
     print(f"{name} {hi}s{v} seed {seed}: {'pass' if rep.faithful else 'FAIL'} n={len(out)} cpu {dt:.1f} {' '.join(fails)}")
+    print(f"  per 1e4: exemplar {counts(ex, 0)} output (20 from the edge) {counts(out, 20)}")
     for k, m in rep.metrics.items():
         if k.startswith("density"):
             print(f"  {k}: out/ex {m.result / m.exemplar:.3f}  value {m.value:.3f} tol {m.tolerance:.3f}")

@@ -834,7 +834,7 @@ scaled 0.9-1.1, so kinds drawn 1.5 apart (``--harder`` three_sizes h11, ratios 1
 4.5) have medians 1.44-1.64 apart, and a step of 1.5 split the ladder at some variant
 seeds and not at others. Merged (h11s11: 1.46, h11s13: 1.445), the medium stones were
 placed with the large ones rather than after them and took their places: at 3.5x,
-seeds 1-6 of h11s11, large 0.84-0.86x their density, medium 1.24-1.31x, nn[medium>large]
+seeds 1-6 of h11s11, large 0.83-0.86x their density, medium 1.24-1.31x, nn[medium>large]
 failing at 4 of 6 seeds (0.084-0.119 against 0.0829). Split: large 0.94-0.95x, medium
 0.91-0.95x, nn[medium>large] 0.057-0.095 (2 of 6 failing), as the generator's own draws
 at that size (0.067-0.082). ``benchmarks/ssz_row.py``; ``benchmarks/ssz_scope.py`` lists
