@@ -1201,7 +1201,28 @@ def owed_classes(state: SynthState) -> np.ndarray:
         rare = margin > MIDDLE_RARE * share
         rare[[0, -1]] = False
         margin[rare] = 0.0
+        if margin[-1] > LARGEST_RARE * share[-1]:
+            margin[-1] = 0.0  # a largest class of a handful (see LARGEST_RARE)
     return out / out.sum() < share + margin
+
+
+LARGEST_RARE = 0.75
+"""The largest size class of an exemplar of three classes or more whose ``SHARE_MARGIN``
+standard errors exceed this part of its share (six elements or fewer) is owed only below
+the exemplar's share (:func:`owed_classes`, margin 0).
+
+Extension of §5.1 for several sizes (§7), helper ssz (issue 13 point 1). Two errors of a
+class of 5 among 265 are 0.89 of its share, so the bound let the large stones of three
+sizes 200:60:5 (--harder h13) grow to 1.5x the generator's count (1.68-1.70 per 1e4
+against the exemplar's 1.13, right after growth): h13s13 failed density[large] at seeds
+1, 2 (1.25 / 1.22 against 0.939). Capping the margin at 0.5 of the share passed seed 1
+only (2.09 at seed 2); with none, 0.70 / 0.81, and h13 at variant seeds 7-14 and h5
+(200:40:6) at 7-14 pass seeds 1 and 2 (31 of 32; h5s8 seed 2 fails nn[small>large] as
+on main, 0.642 / 0.476; sm: that exemplar is an outlier of its generator). Among the
+audits' exemplars only h5 and h13 have so rare a largest class (the suite's 26 large
+stones: 0.38; h0, h8: 10 large, 0.62; EDGE p3: 8, 0.70): the others are unchanged.
+``benchmarks/results/ssz_unfinished_largest_rare_*.txt`` (``benchmarks/ssz_row.py``).
+"""
 
 
 MIDDLE_RARE = 0.25
