@@ -188,3 +188,28 @@ def synth_inner_density_ratios(ex, rng: int = 1, scale: float = 2.0) -> dict[str
     xy, kind = np.asarray(out.xy), np.asarray(out.kind)
     inside = shapely.contains_xy(inner, xy[:, 0], xy[:, 1])
     return {nm: np.count_nonzero(inside & (kind == k)) / inner.area / dens[k] for k, nm in enumerate(names)}
+
+
+def grow_like_the_audit(ex, seed: int, *, mode: str = "fixed", times: int = 10):
+    """Grow ``ex`` as ``benchmarks/grow_variants.py`` does: at 3.5x the frame's side, and once
+    more on a larger square where that gives fewer than ``times`` x the exemplar's elements.
+
+    Returns
+    -------
+    region : Region
+    out : Arrangement
+    """
+    import math
+
+    from strew import Region
+    from strew.grow import grow
+
+    x0, y0, x1, y1 = ex.region.bounds
+    scale = 3.5
+    for _ in range(2):
+        region = Region.rectangle(scale * (x1 - x0), scale * (y1 - y0))
+        out = grow(ex, region=region, mode=mode, rng=seed)
+        if len(out) >= times * len(ex):
+            break
+        scale *= 1.05 * math.sqrt(times * len(ex) / max(len(out), 1))
+    return region, out

@@ -12,18 +12,13 @@ exemplars failed g[hub,hub], density and empty_circle on every seed
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite, grow_like_the_audit
 
-from strew import Region
-from strew.grow import grow
 from strew.grow._growth import GrowParams
 from strew.metrics import fidelity
-
-from strew_testing import fidelity_suite
 
 make_exemplar = fidelity_suite().make_exemplar
 
@@ -33,18 +28,6 @@ CASES = [
     (dict(tiles=6, radius=11.0, hub=4.0, spacing=32.0), 12),
     (dict(tiles=8, hub=6.0), 14),
 ]
-
-
-def _grow_like_the_audit(ex, seed):
-    x0, y0, x1, y1 = ex.region.bounds
-    scale = 3.5
-    for _ in range(2):
-        region = Region.rectangle(scale * (x1 - x0), scale * (y1 - y0))
-        out = grow(ex, region=region, rng=seed)
-        if len(out) >= 10 * len(ex):
-            break
-        scale *= 1.05 * math.sqrt(10 * len(ex) / max(len(out), 1))
-    return region, out
 
 
 def _hub_nn(arr):
@@ -62,7 +45,7 @@ def test_paper_default_relaxes_every_pair():
 def test_held_out_rings_keep_their_hub_spacing(kw, variant):
     ex = make_exemplar("rings", rng=variant, **kw)
     least = float(_hub_nn(ex).min())
-    region, out = _grow_like_the_audit(ex, 1)
+    region, out = grow_like_the_audit(ex, 1)
     assert np.all(region.contains_geometry(out.geometry, tolerance=1e-9))
     # no two hubs nearer than 0.95 of the exemplar's least hub distance (main: 24-28
     # against 31.3 on the rings of six)

@@ -14,10 +14,9 @@ import math
 
 import numpy as np
 import pytest
-from strew_testing import fidelity_suite
+from strew_testing import fidelity_suite, grow_like_the_audit
 
-from strew import Region
-from strew.grow import analyze, grow
+from strew.grow import analyze
 from strew.grow._growth import GrowParams, _Grower
 from strew.metrics import fidelity
 
@@ -49,14 +48,7 @@ def test_flat_scales_keep_their_rows_in_rotation_mode():
     # regularity at seeds 1-2, the audit's run (3.5x the frame): at 79a8da8 0.0722,
     # 0.0641 against 0.05; with the bound 0.0438, 0.0355
     ex = make_exemplar("scales", rng=13, **FLAT)
-    x0, y0, x1, y1 = ex.region.bounds
     for seed in (1, 2):
-        scale = 3.5
-        for _ in range(2):
-            region = Region.rectangle(scale * (x1 - x0), scale * (y1 - y0))
-            out = grow(ex, region=region, mode="rotate", rng=seed)
-            if len(out) >= 10 * len(ex):
-                break
-            scale *= 1.05 * math.sqrt(10 * len(ex) / max(len(out), 1))
+        _, out = grow_like_the_audit(ex, seed, mode="rotate")
         m = fidelity(ex, out, eq5=False, local=False).metrics["regularity"]
         assert m.passed, (seed, m.value, m.tolerance)
