@@ -122,7 +122,8 @@ def main() -> None:
     out: dict = {"worlds": names, "kinds": kinds, "inner_s": INNER, "overlaps": [rec[n]["overlaps"] for n in names],
                  "elements": [rec[n]["n"] for n in names], "pooled": {}}
     print(f"{len(names)} worlds; elements tiled/control {out['elements']}; overlaps {out['overlaps']}")
-    show = ["density"] + list(kinds) + ["vine_goal_r", "twig_goal_r"]
+    # (a pattern without twigs, the vase: its vine share instead; helper wv2)
+    show = ["density"] + list(kinds) + [lab for lab in ("vine_share", "vine_goal_r", "twig_goal_r") if lab in labels and (lab != "vine_share" or "twig" not in kinds)]
     for wd in (1.0, 2.0):
         for sd in SIDES:
             T = np.array([rec[n][(wd, sd)][0] for n in names])
