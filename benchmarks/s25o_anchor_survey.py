@@ -10,8 +10,8 @@ sets and the HARDER sets at the given variant seeds.
 import sys
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
-import numpy as np
 import _variants
+import numpy as np
 from _runner import fidelity_suite
 from grow_variants import _harder_suite
 from scipy.spatial import cKDTree
@@ -24,7 +24,6 @@ from strew.synth._prepare import prepare
 def row(label, ex):
     prep = prepare(as_selection(ex))
     sk, par = prep.skind, prep.parent
-    names = list(ex.kind_names) if hasattr(ex, "kind_names") else None
     out = []
     for a in np.unique(sk):
         kids = np.flatnonzero(par >= 0)
