@@ -341,6 +341,15 @@ class GrowParams:
     #: offset for the others, as for edges the ring did not make); None: every pair.
     #: Set for the hubs' growth of clustered exemplars (:mod:`strew.grow._clusters`)
     ring_target_far: float | None = None
+    #: rotation mode: ``ring_target_far`` where that is None. Helper g25o: on a near-square
+    #: lattice (wide flat scales, ``_variants.EDGE`` scales p2) the reference's Delaunay
+    #: rings (§4) hold the row neighbours and not the column ones; a seed whose placed
+    #: neighbours include a column neighbour must pair it with a ring slot (§5.2, no
+    #: skipping), the nearest being a diagonal one 6-10 units off, and Eq. 5 then pulled
+    #: that pair from the lattice's 18.5 to the diagonal's 13: column pairs 14-16 apart,
+    #: closer than any of the exemplar's (17.5), regularity 0.933-0.957 against its 1.0
+    #: (``benchmarks/g25o_pairs.py``). Departs from §5.5 as ``ring_target_far`` does.
+    rotate_target_far: float | None = 0.5
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None

@@ -563,6 +563,8 @@ class _Place:
         tgt = {}
         rel_l = rel.tolist()
         far = p.ring_target_far
+        if far is None and self.mode_code == 1:
+            far = p.rotate_target_far
         for o, j in slot_of.items():
             if o in self.adj[s]:
                 rx, ry = rel_l[j]
