@@ -3,7 +3,12 @@ rotate mode): each output pair nearer than the judge's reach (1.3 s) that is not
 the exemplar's pattern offsets, with its distance when its later element was placed
 (before any relaxation moved either) and at the end.
 
-    PYTHONPATH=src python benchmarks/g25o_pairs.py [CLASS:LABEL=scales:p2s10] [SEED=1] [MODE=rotate]
+    PYTHONPATH=src python benchmarks/g25o_pairs.py [CLASS:LABEL=scales:p2s10] [SEED=1] [MODE=rotate] [--plot] [--dump]
+
+Also printed: which close pairs are growth edges, the Eq. 5 targets (r_ji) of their two
+ends (none, shorter than 15: a diagonal slot, or about the pair's own length), and how
+many lie along a row or column. ``--plot`` draws them (/tmp/g25o/), ``--dump`` lists the
+targets of some. The judge's s (12.55) is scales p2's: other exemplars need its own.
 """
 import math
 import os
@@ -39,9 +44,7 @@ def init(self, *a, **k):
 def place(self, s, *a, **k):
     ok = orig_place(self, s, *a, **k)
     if ok:
-        placed[s] = (tuple(self.xy[s]), {o: tuple(self.xy[o]) for o in range(len(self.xy)) if False})
-        # positions of every element at this moment are too many to keep: keep the step
-        placed[s] = (len(placed), tuple(self.xy[s]))
+        placed[s] = (len(placed), tuple(self.xy[s]))  # growth step, position at placement
     return ok
 
 
@@ -54,8 +57,6 @@ els = [i for i in range(len(g.xy)) if g.state[i] == ELEMENT]
 xy = np.array([g.xy[i] for i in els])
 p0 = np.array([placed[i][1] if i in placed else g.xy[i] for i in els])
 step = np.array([placed[i][0] if i in placed else -1 for i in els])
-from strew.metrics import fidelity
-s = float(np.median(cKDTree(ex.xy).query(ex.xy, k=2)[0][:, 1]))
 reach = 1.3 * 12.55  # the judge's s for scales p2 (g25o_reg_diag prints it)
 t = cKDTree(xy)
 pairs = t.query_pairs(reach, output_type="ndarray")
@@ -83,7 +84,6 @@ gi = np.array(els)
 edge = np.array([int(gi[b]) in g.adj[int(gi[a])] for a, b in pairs], bool)
 close0 = d0 < reach
 print(f"   close pairs joined by a growth edge (adjacency) at the end: {int(edge.sum())} of {len(pairs)}; of those close at placement {int(edge[close0].sum())} of {int(close0.sum())}")
-from strew.grow._analysis import analyze  # noqa
 kinds = {"none": 0, "short": 0, "ok": 0, "long": 0}
 lens = []
 for a, b in pairs:
