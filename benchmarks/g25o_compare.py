@@ -6,7 +6,7 @@ import json
 import sys
 
 a, b = (json.load(open(p))["rows"] for p in sys.argv[1:3])
-key = lambda r: (r["case"], r["variant"], r["seed"])  # noqa: E731
+key = lambda r: (r["case"], r["variant"], r["seed"])
 ra = {key(r): r for r in a if "faithful" in r}
 rb = {key(r): r for r in b if "faithful" in r}
 same = changed = 0

@@ -12,8 +12,8 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fresh17_rows import exemplar
 from _runner import fidelity_suite
+from fresh17_rows import exemplar
 
 from strew import Region, _fidelity
 from strew.grow import grow

@@ -25,7 +25,7 @@ from strew.metrics import fidelity
 make_exemplar = fidelity_suite().make_exemplar
 
 # the audit's edge set "wide flat scales, wider gaps, noisier" (benchmarks/_variants.py EDGE)
-FLAT = dict(width=16.0, length=7.0, gap=2.5, noise=0.06)
+FLAT = {"width": 16.0, "length": 7.0, "gap": 2.5, "noise": 0.06}
 
 
 def _axial(arr) -> np.ndarray:
