@@ -8,7 +8,13 @@ exemplar the sum and mean of the shares, the worst, how many rose and fell, and 
 import json
 import sys
 
-a, b = (json.load(open(f)) for f in sys.argv[1:3])
+
+def _load(path: str) -> dict:
+    with open(path) as f:
+        return json.load(f)
+
+
+a, b = _load(sys.argv[1]), _load(sys.argv[2])
 for kind in ("hex", "scales"):
     ks = [k for k in b if k.startswith(kind + ":") and k in a]
     if not ks:

@@ -62,7 +62,10 @@ cases = a.cases.split(";")
 if a.cases in ("all", "hex", "scales"):
     kinds = ["hex", "scales"] if a.cases == "all" else [a.cases]
     cases = [
-        f"{k}:{n}:{s}" for k in kinds for n in (16, 20, 24) for s in ("c", "2,2", f"{n - 2},{n - 2}", f"2,{n - 2}", f"{n - 2},2")
+        f"{k}:{n}:{s}"
+        for k in kinds
+        for n in (16, 20, 24)
+        for s in ("c", "2,2", f"{n - 2},{n - 2}", f"2,{n - 2}", f"{n - 2},2")
     ]
 th = np.linspace(0, np.pi / 2, 30)
 res = {}
@@ -72,17 +75,36 @@ for case in cases:
     ex, sp = exemplar(kind)
     aa = n * sp
     region = Region.rectangle(aa, aa)
-    af = flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (aa / 3, aa * 5 / 6)])
+    af = flow_field(
+        [np.c_[r * np.cos(th), r * np.sin(th)] for r in (aa / 3, aa * 5 / 6)]
+    )
     s = None if st == "c" else tuple(float(v) * sp for v in st.split(","))
     t0 = time.process_time()
     out = grow(ex, region=region, mode="flow", flow=af, rng=a.rng, start=s, **PARAMS)
     dt = time.process_time() - t0
     inner = region.distance_to_boundary(out.xy) > 2 * sp
     x0, y0, x1, y1 = region.bounds
-    grid = np.mgrid[x0 + 2 * sp : x1 - 2 * sp : 3.0, y0 + 2 * sp : y1 - 2 * sp : 3.0].reshape(2, -1).T
+    grid = (
+        np.mgrid[x0 + 2 * sp : x1 - 2 * sp : 3.0, y0 + 2 * sp : y1 - 2 * sp : 3.0]
+        .reshape(2, -1)
+        .T
+    )
     d = gb.lattice_defects(out.xy, sp, inner, grid)
-    across = int((~np.asarray(region.contains_geometry(out.geometry, tolerance=1e-9), dtype=bool)).sum())
-    res[case] = dict(n=len(out), six=gb.hex_share(out.xy, sp, inner), cpu=dt, across=across, **d, **gb.field_misalignment(ex, out.xy, sp, inner, af))
+    across = int(
+        (
+            ~np.asarray(
+                region.contains_geometry(out.geometry, tolerance=1e-9), dtype=bool
+            )
+        ).sum()
+    )
+    res[case] = dict(
+        n=len(out),
+        six=gb.hex_share(out.xy, sp, inner),
+        cpu=dt,
+        across=across,
+        **d,
+        **gb.field_misalignment(ex, out.xy, sp, inner, af),
+    )
     print(
         f"{case:16s} n={len(out)} six={res[case]['six']:.4f} holes={d['holes']} lg={d['largest_defect_group']} iso={d['isolated_defect_share']:.2f} across={across} p90={res[case]['misalign_deg_p90']:.1f} cpu={dt:.1f}",
         flush=True,
