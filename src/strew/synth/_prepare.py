@@ -45,9 +45,8 @@ class Prepared:
         Class of each element: its kind within its exemplar.
     min_dist : (S, S) float
         0.95 times the closest approach of two classes in the exemplar (0 across
-        exemplars; the full closest approach of two cluster centres, see
-        :func:`centre_spacing`): no new element comes closer than that to an element
-        (spacing learned from the exemplar, on top of the bounding discs).
+        exemplars): no new element comes closer than that to an element (spacing learned
+        from the exemplar, on top of the bounding discs).
     overlap_free : bool
         No two exemplar elements overlap (their shapes, not their discs).
     size_class : (n,) int
@@ -520,9 +519,9 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     if len(idx):
         owner = np.repeat(np.arange(len(arr)), np.diff(ptr))
         factor = float(min(1.0, 0.95 * (np.hypot(off[:, 0], off[:, 1]) / (r[owner] + r[idx])).min()))
-    approach = closest_approach(pos, skind, sources)
+    min_dist = closest_approach(pos, skind, sources)
     # classes of different exemplars, or a class with one element: no constraint beyond r
-    min_dist = np.where(np.isfinite(approach), 0.95 * approach, 0.0)
+    min_dist = np.where(np.isfinite(min_dist), 0.95 * min_dist, 0.0)
     columns = {k_: np.asarray(v) for k_, v in arr.columns.items() if k_ not in ("radius", "neighborhood_radius", "void", "exemplar")}
     prep = Prepared(
         names=names,
@@ -565,7 +564,6 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         follow=follow,
     )
     prep._anchors = anchor  # _grow.anchors: the same mask, with the centres (_stand_around)
-    centre_spacing(prep.min_dist, approach, pos, skind, anchor, prep.parent, follow)
     prep._area_r = area_radii(arr)  # _grow._larger_in_class: a kind's size by area as well
     prep.set_selection(selection)
     return prep
@@ -921,75 +919,6 @@ def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np
                 rare = np.array([k_ for k_ in rare if np.median(size[sub[skind[sub] == k_]]) > top
                                  or _stand_around(pos[sub[skind[sub] == k_]], pos[others])], np.int64)
             out[sub[np.isin(skind[sub], rare)]] = 1
-    return out
-
-
-CENTRE_FOLLOW = 0.9
-"""Least share of the elements leaning on a class that follow it (ring it: it is their
-only larger Delaunay neighbour) for that class to be a class of cluster centres (see
-:func:`centre_spacing`). Clusters' discs: 0.93-1.0 over the audit exemplars; two sizes'
-stones 0.0-0.78."""
-
-CENTRE_THIRD = 1.085
-"""Least median ratio of an element's third-nearest to its nearest neighbour of its own
-class for a class of cluster centres (see :func:`centre_spacing`): a lattice's neighbours
-stand at one distance (rings' hubs: 1.016-1.071 over the audit exemplars), dart-thrown
-centres' do not (clusters' discs: 1.10-1.55)."""
-
-
-def centre_spacing(min_dist: np.ndarray, approach: np.ndarray, pos: np.ndarray, skind: np.ndarray, anchor: np.ndarray,
-                   parent: np.ndarray, follow: np.ndarray) -> list[int]:
-    """Keep cluster centres (clusters' discs) at least their full closest approach in the
-    exemplar apart (``min_dist``, in place), instead of 0.95 of it.
-
-    Extension of §5.1 (helper s25o, issue 13 point 2): ``min_dist`` lets two classes come
-    within 0.95 of their closest approach, slack that keeps small kinds from jamming. A
-    class that nearly all of its leaning elements ring (:data:`CENTRE_FOLLOW`), that is
-    no anchor within a larger size class (a ring's hub) and whose own neighbours are not
-    a lattice's (:data:`CENTRE_THIRD`), is a hard-core pattern of centres (the clusters
-    generator dart-throws discs ``cluster_spacing`` apart, so the exemplar's closest
-    approach is that minimum). At 0.95, growth packed discs up to 5 % closer than the
-    generator ever does: at 50x, 2.28 discs per 10^4 against the generator's 2.17-2.21,
-    and one window in 144 with 25 discs where the exemplar's area holds 19-21
-    (``benchmarks/results/c50_findings.txt``, ``s25o_*``). Rings' hubs keep 0.95: a
-    hub lattice held at its sample's closest approach jams and leaves holes of a
-    missing ring.
-
-    Parameters
-    ----------
-    min_dist : (S, S) float
-        Learned spacing of every two classes, changed in place on the diagonal.
-    approach : (S, S) float
-        The exemplar's closest approach of every two classes (:func:`closest_approach`).
-    pos : (n, 2) float
-    skind : (n,) int
-        Class of each exemplar element.
-    anchor : (n,) int
-        Anchor elements (:func:`anchor_mask`).
-    parent : (n,) int
-        The element each leans on (:func:`parents`), -1 and below for none.
-    follow : (n,) bool
-        Elements whose parent is their only larger Delaunay neighbour.
-
-    Returns
-    -------
-    list of int
-        The classes of cluster centres.
-    """
-    out = []
-    lean = np.flatnonzero(parent >= 0)
-    for a in np.unique(skind):
-        kids = lean[skind[parent[lean]] == a]
-        mine = np.flatnonzero(skind == a)
-        if not len(kids) or follow[kids].mean() < CENTRE_FOLLOW or np.any(anchor[mine] > 0) or len(mine) < 4:
-            continue
-        if not np.isfinite(approach[a, a]):
-            continue
-        d, _ = cKDTree(pos[mine]).query(pos[mine], k=4)
-        if float(np.median(d[:, 3] / d[:, 1])) < CENTRE_THIRD:
-            continue
-        min_dist[a, a] = approach[a, a]
-        out.append(int(a))
     return out
 
 
