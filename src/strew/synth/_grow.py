@@ -1492,14 +1492,15 @@ def _mean_basis(basis: np.ndarray, ids: np.ndarray, pool: np.ndarray) -> None:
     each, turned to its sign.
 
     An anchor's shortest offset is the least of its six lattice offsets, and so short of
-    the lattice's spacing by the jitter: over the rings of ``benchmarks/synth_variants.py
-    --varied`` p2 and ``--harder`` h0, h2, h3, h4 (variant seeds 15, 16) the first
-    basis offsets average 0.98-0.99 of the mean offset (p2s16: 51.48 against 52.06,
-    ``benchmarks/s25r_hubs.py``). Carried from hub to hub, the output's hub lattice
-    shrank (p2s16 seed 1: inner hubs' six nearest 51.58 apart, the generator's 51.98),
-    fewer hubs fitted and the tiles of neighbouring rings came too near a hub
-    (g[tile,hub] 0.271 against 0.231). The mean over the exemplar is the lattice's own
-    offset, jitter averaged out.
+    the lattice's spacing by the jitter: over rings exemplars (default v7, v8;
+    ``benchmarks/synth_variants.py --varied`` p2s15, p2s16; ``--harder`` h0s15, h2s15,
+    h2s16, h3s16, h4s16) the first basis offsets average 0.985-0.99 of the mean offset
+    (p2s16: 51.48 against 52.06). Carried from hub to hub, the output's hub lattice
+    shrank (p2s16 seed 1: inner hubs' six nearest 51.58 apart, the generator's 51.98,
+    ``benchmarks/s25r_hubs.py``) and the tiles of neighbouring rings came too near a
+    hub (g[tile,hub] 0.271 against 0.231). The mean over the exemplar is the lattice's
+    own offset, jitter averaged out. (The paper has no lattice, see
+    :func:`_snap_anchors_to_lattice`.)
     """
     if len(ids) == 0 or len(pool) == 0:
         return
