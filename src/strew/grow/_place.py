@@ -289,10 +289,17 @@ class _Place:
         and at least :attr:`canopy_wall` from the region's edge, against the reference's
         by the same minus sampling (:meth:`_canopy_share_setup`); until that sample
         should hold 2 of kind ``b``, or where the reference counts too few of ``b`` to
-        know its share (``CANOPY_MIN_REF``), the seed converts as before.
+        know its share (``CANOPY_MIN_REF``), the seed converts as before, unless
+        ``canopy_few_z`` gates such a kind at an upper bound of its share
+        (:attr:`canopy_few_share`).
         """
         ref = self.canopy_ref_share
-        if ref is None or not ref[b] > 0:
+        if ref is None:
+            return False
+        if not ref[b] > 0 and self.canopy_few_share is not None:
+            # a kind counted too few of to know its share: its share's upper bound
+            ref = self.canopy_few_share
+        if not ref[b] > 0:
             return False
         self._settle_update()
         x, y = self.xy[s]
