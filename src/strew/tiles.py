@@ -628,7 +628,7 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     _, inv = np.unique(np.asarray(arr[col]), return_inverse=True)
     w = np.ones(len(arr))
     x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
-    tips = None
+    tips = anchored = None
     if _GROUP_AT == "parents" and PROXIES_COLUMN in arr.columns:
         # a success's growing tip: the mean of its rows of a type some rule grows from
         # (parent_rows), all rows where a success has none
@@ -647,7 +647,7 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         anchors = anchor_rows(job.input, arr[PROXIES_COLUMN]).astype(float)
         na = np.bincount(inv, weights=anchors, minlength=len(mx))
         if na.any():
-            has = na > 0
+            has = anchored = na > 0
             mx = np.where(has, np.bincount(inv, weights=anchors * x, minlength=len(mx)) / np.maximum(na, 1), mx)
             my = np.where(has, np.bincount(inv, weights=anchors * y, minlength=len(my)) / np.maximum(na, 1), my)
     o = _owner(mx, my, job)
@@ -664,6 +664,11 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         # the later phases' elements (flowers' buds) near a later tile are left to it
         placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
     first_rows = _first_phase_rows(arr, t, job) if later else None
+    if first_rows is not None and anchored is not None and _FIRST_ANCHORED:
+        # a success placed at its tile anchors (the vase's flowers, on the world's grid) is
+        # the anchor's owner's, kept first phase or not: the tile holding the grid point
+        # delivers its flower (anchor_rows)
+        first_rows &= ~anchored[inv] | ok[inv]
     if first_rows is not None:
         placed |= first_rows
     parent = _parent_rows(arr)
@@ -766,6 +771,9 @@ _LATE_BAND = 0.5
 # in the region), and how far past its rectangle (in halos) a tile keeps its first phase
 _OPEN_REACH = 1.0
 _KEEP_FIRST_REACH = 0.5
+# whether a kept first phase's success placed at its tile anchors goes with the anchors'
+# owner (_keep_groups; 0: kept by the rows' own distance, as a success without anchors)
+_FIRST_ANCHORED = 1
 # how many rounds of strew.ornament._context.cut_touching _keep_groups runs at most
 _CUT_ROUNDS = 1
 # how near a later tile (in halos) the successes of cut_touching lie

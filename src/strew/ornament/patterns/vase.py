@@ -51,6 +51,13 @@ pattern = Pattern(
 # strew.ornament._context; not in the paper, which grows one panel in one run)
 pattern.tile_anchors = ("lotus", "peony")
 
+# a tiled world (strew.tiles) keeps each tile's vines phase (vines and the flowers they
+# deliver) up to half a halo past its border, with the halo's edges towards later tiles
+# open, so that the vine structure near a border is one run's, grown before any hook
+# (strew.tiles._first_phase_rows, as hierarchy; not in the paper, which grows one panel
+# in one run)
+pattern.tile_keeps_first_phase = True
+
 pattern.element("seed", Point)
 pattern.element("vine", Bezier, depth=0)
 pattern.element("lotus", Circle)
