@@ -108,8 +108,70 @@ def _free_grid_point(ctx, near, start=None):
     return best
 
 
+def _grid_points_in_panel(ctx, near, start):
+    """The free grid points within the vine's reach of ``start`` (farther than
+    :data:`MIN_VINE`, up to :data:`REACH`) whose flower lies inside the panel, nearest
+    ``near`` first, as :func:`_free_grid_point`'s tuples.
+
+    For an empty circle C whose centre lies past the panel (a tiled world's open halo
+    edges, strew.tiles._open_edges; never in one run, where §4.1 discards a circle the
+    boundary stops). Not in §5, whose C always lies in the panel: the grid points nearest
+    such a C lie past the panel's edge or within a flower's radius of it, so its flower
+    failed ``ctx.inside`` and C went on the exclude list. A first-phase tile of a tiled
+    vase whose four halo edges are all open (every neighbour later) found every vines-phase
+    C past an edge, the largest first (radius 48, 12 past the edge, at tile 48): its seed
+    grew no vine and no flower, and the later tiles around it none either (helper wv2,
+    tile 48's tile 10: 21 of 64 grid points empty). C still touches the seed (§4.1), so the
+    grid points in its neighbourhood within the vine's reach are the ones to deliver to.
+    """
+    lo = np.floor((start - REACH) / GRID).astype(int)
+    hi = np.ceil((start + REACH) / GRID).astype(int)
+    out = []
+    for i in range(lo[0], hi[0] + 1):
+        for j in range(lo[1], hi[1] + 1):
+            if (i, j) in ctx.state.flowers:
+                continue
+            p = np.array([i * GRID, j * GRID])
+            if not MIN_VINE < float(np.hypot(*(p - start))) <= REACH:
+                continue
+            if not ctx.inside(Circle().set(p, FLOWER_RADIUS)):
+                continue
+            out.append((float(np.hypot(*(p - near))), (i, j), p))
+    out.sort(key=lambda f: f[0])
+    return out
+
+
+def _over_free_grid_point(ctx, vine, ij):
+    """Whether ``vine`` passes within a flower's radius of a free grid point other than
+    its own ``ij``: no flower fits there once it does."""
+    pts = vine.proxy.point_at(np.linspace(0.0, 1.0, 21))
+    lo = np.floor((pts.min(axis=0) - FLOWER_RADIUS) / GRID).astype(int)
+    hi = np.ceil((pts.max(axis=0) + FLOWER_RADIUS) / GRID).astype(int)
+    for i in range(lo[0], hi[0] + 1):
+        for j in range(lo[1], hi[1] + 1):
+            if (i, j) == ij or (i, j) in ctx.state.flowers:
+                continue
+            if float(np.hypot(*(pts - np.array([i * GRID, j * GRID])).T).min()) < FLOWER_RADIUS:
+                return True
+    return False
+
+
+# whether a vine towards a C past the panel may not pass over a free grid point (w25)
+_AVOID_OVER = True
+
+
 def grow_vine(ctx, parent, start, tangent, depth):
     g, rho = ctx.goal.center, ctx.goal.radius
+    if ctx.boundary_distance(g) <= 0:
+        # C's centre lies past the panel (a tiled world's open halo edges): the grid
+        # points in the panel within reach, nearest C's centre first, until one takes its
+        # vine; a vine that would pass over another free grid point is refused, as the
+        # grid point would stay empty for good (tile 60's tile 0: its seed's vine towards
+        # a C past the open edge crossed (44, 44), which no flower reached after)
+        for found in _grid_points_in_panel(ctx, g, start):
+            if _deliver(ctx, parent, start, tangent, depth, found, _AVOID_OVER):
+                return SUCCESS
+        return FAILURE
     # the free grid point nearest C's centre that the vine can reach. Nearest C's centre
     # alone, the seed's first vine failed in a panel whose largest circles lie farther
     # from the seed than REACH (§4.1: C touches the seed, centred its radius away): the
@@ -125,6 +187,13 @@ def grow_vine(ctx, parent, start, tangent, depth):
         found = _free_grid_point(ctx, start + (REACH - GRID) / far * to_c, start)
     if found is None:
         return FAILURE
+    return _deliver(ctx, parent, start, tangent, depth, found, False)
+
+
+def _deliver(ctx, parent, start, tangent, depth, found, avoid):
+    """Grow the vine from ``start`` to the flower at grid point ``found`` (a tuple of
+    :func:`_free_grid_point`); ``avoid``: refuse a vine over another free grid point."""
+    g, rho = ctx.goal.center, ctx.goal.radius
     _, ij, p = found
     # the grid point must lie in C's neighbourhood, and within the vine's reach
     if float(np.hypot(*(p - g))) > rho + 0.5 * GRID or float(np.hypot(*(p - start))) > REACH:
@@ -146,7 +215,7 @@ def grow_vine(ctx, parent, start, tangent, depth):
     a = angle_of(chord) + side * 0.5
     vine = ctx.new_child("vine", depth=depth)
     vine.proxy.set_points(start, start + 0.4 * length * t_a, end - 0.4 * length * np.array([math.cos(a), math.sin(a)]), end)
-    if ctx.intersects(vine, ignore=[parent]) or not ctx.inside(vine):
+    if ctx.intersects(vine, ignore=[parent]) or not ctx.inside(vine) or (avoid and _over_free_grid_point(ctx, vine, ij)):
         ctx.dynamic.remove(flower)
         ctx.dynamic.remove(vine)
         return FAILURE
