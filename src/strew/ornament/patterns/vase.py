@@ -161,7 +161,7 @@ _AVOID_OVER = True
 
 
 def grow_vine(ctx, parent, start, tangent, depth):
-    g, rho = ctx.goal.center, ctx.goal.radius
+    g = ctx.goal.center
     if ctx.boundary_distance(g) <= 0:
         # C's centre lies past the panel (a tiled world's open halo edges): the grid
         # points in the panel within reach, nearest C's centre first, until one takes its
