@@ -680,7 +680,13 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
             # and, for a pattern that keeps its first phase, where it is one of those
             # (_first_phase_rows): a vine does not go for its parent's sake
             far = far | first_rows
-        placed = keep_ancestors(arr["element"], parent, arr[col], placed, far)
+        barred = None
+        if not _ANCHORED_KEEP_LATE_IN_LATER and _has_tile_anchors(job):
+            # a pattern with tile anchors (the vase's grid flowers) keeps no later phase's
+            # ancestor inside a later tile: there it covered grid points whose flowers that
+            # tile had yet to deliver (keep_ancestors)
+            barred = (d <= 0.0) & late_phase(job.input, arr["phase"])
+        placed = keep_ancestors(arr["element"], parent, arr[col], placed, far, barred)
     kept = keep_whole(arr["element"], parent, arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
         # the successes whose empty circle an element dropped here had bounded are left to
@@ -774,6 +780,9 @@ _KEEP_FIRST_REACH = 0.5
 # whether a kept first phase's success placed at its tile anchors goes with the anchors'
 # owner (_keep_groups; 0: kept by the rows' own distance, as a success without anchors)
 _FIRST_ANCHORED = 1
+# for a pattern with tile anchors: whether keep_ancestors may keep a later phase's
+# ancestor rows inside a later tile (1: as up to h/w25; 0: barred, _keep_groups)
+_ANCHORED_KEEP_LATE_IN_LATER = 0
 # how many rounds of strew.ornament._context.cut_touching _keep_groups runs at most
 _CUT_ROUNDS = 1
 # how near a later tile (in halos) the successes of cut_touching lie
@@ -812,6 +821,20 @@ def _reach(job: _Job) -> float:
     if job.method not in _HANDS_OVER_BY_RAMP:
         return h
     return max(h, min(1.25 * h, (min(job.tile) - h) / 2.0))
+
+
+def _has_tile_anchors(job: _Job) -> bool:
+    """Whether ``job`` grows an ornament pattern with tile anchors (its ``tile_anchors``
+    attribute: the vase's grid flowers; strew.ornament._context.anchor_rows)."""
+    if job.method != "ornament":
+        return False
+    from .ornament._pattern import load_pattern
+
+    try:
+        pat = load_pattern(job.input)
+    except Exception:  # not a pattern (the method reports it itself)
+        return False
+    return bool(getattr(pat, "tile_anchors", ()) or ())
 
 
 def _keeps_first_phase(job: _Job) -> str | None:

@@ -169,7 +169,9 @@ def keep_whole(element: Any, parent: Any, group: Any, placed: np.ndarray) -> np.
     return ok[inv]
 
 
-def keep_ancestors(element: Any, parent: Any, group: Any, placed: np.ndarray, far: np.ndarray) -> np.ndarray:
+def keep_ancestors(
+    element: Any, parent: Any, group: Any, placed: np.ndarray, far: np.ndarray, barred: np.ndarray | None = None
+) -> np.ndarray:
     """(n,) bool: ``placed`` with the rows of every ancestor of a lost success set, so that
     :func:`keep_whole` keeps that success. A success is lost where :func:`keep_whole`
     drops it only for an ancestor's sake (its own rows vote it placed) and one of its rows
@@ -184,6 +186,16 @@ def keep_ancestors(element: Any, parent: Any, group: Any, placed: np.ndarray, fa
     more from every later tile at tile 72 and 162 at tile 84, holes in the tiles' cores
     (benchmarks/vas19v_vines.py). Departure from the paper: the hand-over between runs is
     ours.
+
+    ``barred`` (per row, optional) marks rows never kept as an ancestor: a lost success
+    whose chain of ancestors holds a barred row that ``placed`` does not keep stays lost,
+    and none of that chain is kept for it. strew.tiles._keep_groups bars, for a pattern
+    with tile anchors (the vase's grid flowers), the later phases' rows inside a later
+    tile: with the halo's open edges the hooks grew chains from past the border back into
+    the tile, and their ancestors, kept 8 units into the later tile, covered grid points
+    whose flowers that tile (its vines phase, §5) had not delivered yet (world seeds 15,
+    16, tile 48: 5 of 128 grid points empty; benchmarks/w25_keep.py). Departure from the
+    paper (§4.1, §5: one run delivers every grid flower before any hook): ours.
     """
     element = np.asarray(element, np.int64)
     parent = np.asarray(parent, np.int64)
@@ -202,12 +214,19 @@ def keep_ancestors(element: Any, parent: Any, group: Any, placed: np.ndarray, fa
     group_of = dict(zip(element.tolist(), inv.tolist()))
     par = np.full(len(ids), -1, np.int64)
     par[inv] = parent
+    bar_g = np.zeros(len(ids), bool)
+    if barred is not None:
+        # a group is barred where one of its rows is barred and not placed by itself
+        bar_g[inv[np.asarray(barred, bool) & ~placed]] = True
     keep_g = np.zeros(len(ids), bool)
     for g in np.flatnonzero(lost):
+        chain = []
         p = group_of.get(int(par[g]), -1) if par[g] >= 0 else -1
-        while p >= 0 and p != g and not keep_g[p]:
-            keep_g[p] = True
+        while p >= 0 and p != g and not keep_g[p] and p not in chain:
+            chain.append(p)
             g, p = p, (group_of.get(int(par[p]), -1) if par[p] >= 0 else -1)
+        if not bar_g[chain].any():
+            keep_g[chain] = True
     return placed | keep_g[inv]
 
 
