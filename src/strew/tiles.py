@@ -683,9 +683,14 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         barred = None
         if not _ANCHORED_KEEP_LATE_IN_LATER and _has_tile_anchors(job):
             # a pattern with tile anchors (the vase's grid flowers) keeps no later phase's
-            # ancestor inside a later tile: there it covered grid points whose flowers that
-            # tile had yet to deliver (keep_ancestors)
+            # ancestor inside a later tile over a grid point: there it covered grid points
+            # whose flowers that tile had yet to deliver (keep_ancestors)
             barred = (d <= 0.0) & late_phase(job.input, arr["phase"])
+            if _ANCHORED_BAR == "grid" and PROXIES_COLUMN in arr.columns:
+                # only those over a grid point, where the later tile delivers a flower
+                from .ornament._context import covers_anchor_grid
+
+                barred &= covers_anchor_grid(job.input, arr[PROXIES_COLUMN], barred)
         placed = keep_ancestors(arr["element"], parent, arr[col], placed, far, barred)
     kept = keep_whole(arr["element"], parent, arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
@@ -783,6 +788,9 @@ _FIRST_ANCHORED = 1
 # for a pattern with tile anchors: whether keep_ancestors may keep a later phase's
 # ancestor rows inside a later tile (1: as up to h/w25; 0: barred, _keep_groups)
 _ANCHORED_KEEP_LATE_IN_LATER = 0
+# which of those rows are barred: "inside", all; "grid", those over a grid point of the
+# pattern's ``tile_anchor_grid`` (strew.ornament._context.covers_anchor_grid)
+_ANCHORED_BAR = "grid"
 # how many rounds of strew.ornament._context.cut_touching _keep_groups runs at most
 _CUT_ROUNDS = 1
 # how near a later tile (in halos) the successes of cut_touching lie

@@ -6,7 +6,9 @@ keep_ancestors kept the ancestors, past the border, of a hook kept deep in the t
 8 units into the later tile, over grid points whose flowers that tile's vines phase had
 not delivered yet, so those grid points stayed empty for good (world seeds 15 and 16,
 tile 48: 5 of 128 grid points; benchmarks/w25_keep.py). For a pattern with tile anchors
-(the vase's grid flowers) such an ancestor is barred; hierarchy and the rest keep theirs.
+(the vase's grid flowers) an ancestor inside a later tile within a flower's radius of a
+grid point is barred (strew.ornament._context.covers_anchor_grid); hierarchy and the rest
+keep theirs.
 """
 
 from __future__ import annotations
@@ -14,12 +16,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from strew_testing import TileRows
 
 import strew.tiles as T
 from strew.ornament._context import element_record, keep_ancestors
 from strew.ornament._pattern import Element, load_pattern
-
-from strew_testing import TileRows
 
 
 def _hook_records(pat, segs):
@@ -36,10 +37,10 @@ def _hook_records(pat, segs):
 def _vase_rows():
     """Tile 0 of a 200 x 200 vase world in tiles of 100 (halo 25): four hooks-phase
     successes, one hook each: A inside the tile, B grown from A across the border x = 100
-    (its centre 10 units into tile 1), C grown from B back into the tile, D from C, 40
-    units or more from every later tile."""
+    (its centre 10 units into tile 1, 2 units from the grid point (110, 44)), C grown from
+    B back into the tile, D from C, 40 units or more from every later tile."""
     pat = load_pattern("vase")
-    segs = [((60.0, 50.0), (90.0, 50.0)), ((100.0, 50.0), (120.0, 50.0)), ((100.0, 55.0), (70.0, 70.0)), ((70.0, 70.0), (40.0, 60.0))]
+    segs = [((60.0, 46.0), (90.0, 46.0)), ((100.0, 46.0), (120.0, 46.0)), ((100.0, 55.0), (70.0, 70.0)), ((70.0, 70.0), (40.0, 60.0))]
     goal = np.empty(4, dtype=object)
     goal[:] = [(math.nan, math.nan, math.nan)] * 4
     rows = TileRows({"x": [0.5 * (a[0] + b[0]) for a, b in segs], "y": [0.5 * (a[1] + b[1]) for a, b in segs],
@@ -50,15 +51,23 @@ def _vase_rows():
     return rows, tiles[0], job
 
 
-def test_vase_tile_keeps_no_hook_ancestor_inside_a_later_tile():
+def test_vase_tile_keeps_no_hook_ancestor_over_a_later_tiles_grid_point():
     rows, t, job = _vase_rows()
     kept = T._keep_groups(rows, np.ones(4, bool), t, job, {})
-    # B lies inside tile 1, whose vines phase has yet to deliver the grid flowers there:
-    # not kept for D's sake, and so neither C nor D (h/w25: [True, True, True, True])
+    # B lies inside tile 1 over its grid point (110, 44), whose flower that tile's vines
+    # phase has yet to deliver: not kept for D's sake, and so neither C nor D (h/w25:
+    # [True, True, True, True])
     assert kept.tolist() == [True, False, False, False]
     later = [r for r in T._later_rects(t, job)]
     inside = [any(x0 <= x <= x1 and y0 <= y <= y1 for x0, y0, x1, y1 in later) for x, y in zip(rows.x, rows.y)]
     assert not (kept & np.array(inside)).any()
+    # B moved 8 units off the grid row y = 44 (its nearest grid point 8 away, past a
+    # flower's radius 6): it covers no grid point and is kept for D's sake, with C
+    rows.y[1] = 52.0
+    pat = load_pattern("vase")
+    rows.columns["ornament_proxies"][1] = _hook_records(pat, [((100.0, 52.0), (120.0, 52.0))])[0]
+    kept = T._keep_groups(rows, np.ones(4, bool), t, job, {})
+    assert kept.tolist() == [True, True, True, True]
 
 
 def test_keep_ancestors_leaves_a_chain_with_a_barred_row():

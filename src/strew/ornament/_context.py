@@ -191,7 +191,7 @@ def keep_ancestors(
     whose chain of ancestors holds a barred row that ``placed`` does not keep stays lost,
     and none of that chain is kept for it. strew.tiles._keep_groups bars, for a pattern
     with tile anchors (the vase's grid flowers), the later phases' rows inside a later
-    tile: with the halo's open edges the hooks grew chains from past the border back into
+    tile that come within a flower's radius of a grid point (covers_anchor_grid): with the halo's open edges the hooks grew chains from past the border back into
     the tile, and their ancestors, kept 8 units into the later tile, covered grid points
     whose flowers that tile (its vines phase, §5) had not delivered yet (world seeds 15,
     16, tile 48: 5 of 128 grid points empty; benchmarks/w25_keep.py). Departure from the
@@ -282,6 +282,33 @@ def anchor_rows(pattern: Any, records: Any) -> np.ndarray:
     if not names:
         return np.zeros(len(records), bool)
     return _rows_of(records, names)
+
+
+def covers_anchor_grid(pattern: Any, records: Any, rows: np.ndarray) -> np.ndarray:
+    """(n,) bool: of ``rows``, those whose elements come within the anchor's radius of a
+    point of the pattern's anchor grid (``tile_anchor_grid = (spacing, radius)``: the
+    vase's flower grid, fixed in the world, §5); all False without one."""
+    import shapely
+
+    from ._pattern import load_pattern
+
+    pat = load_pattern(pattern)
+    out = np.zeros(len(records), bool)
+    grid = getattr(pat, "tile_anchor_grid", None)
+    if grid is None:
+        return out
+    g, r = float(grid[0]), float(grid[1])
+    for i in np.flatnonzero(rows):
+        for el in elements_from([records[i]], pat):
+            for pr in el.proxies:
+                geo = pr.geometry
+                x0, y0, x1, y1 = geo.bounds
+                ii = np.arange(np.floor((x0 - r) / g), np.ceil((x1 + r) / g) + 1)
+                jj = np.arange(np.floor((y0 - r) / g), np.ceil((y1 + r) / g) + 1)
+                pts = shapely.points(*(np.stack(np.meshgrid(ii * g, jj * g), -1).reshape(-1, 2).T))
+                if (shapely.distance(geo, pts) < r).any():
+                    out[i] = True
+    return out
 
 
 def late_phase(pattern: Any, phase: Any) -> np.ndarray:

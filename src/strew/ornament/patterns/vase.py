@@ -50,6 +50,8 @@ pattern = Pattern(
 # grid fixed in the world: the tile holding the grid point owns it (anchor_rows in
 # strew.ornament._context; not in the paper, which grows one panel in one run)
 pattern.tile_anchors = ("lotus", "peony")
+# the anchors' grid (spacing, flower radius): strew.ornament._context.covers_anchor_grid
+pattern.tile_anchor_grid = (GRID, FLOWER_RADIUS)
 
 # a tiled world (strew.tiles) keeps each tile's vines phase (vines and the flowers they
 # deliver) up to half a halo past its border, with the halo's edges towards later tiles
