@@ -10,14 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.synth import synthesize
 from strew.synth._api import as_selection
 from strew.synth._grow import anchor_lattice
 from strew.synth._prepare import prepare
-
-from strew_testing import fidelity_suite
 
 suite = fidelity_suite()
 
