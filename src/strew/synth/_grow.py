@@ -346,57 +346,6 @@ count (over the same area), for :func:`fill_room` to act on the kind: above it t
 exemplar leaves the kind room on purpose (clusters' discs: 0.9-1.8)."""
 
 
-ROOM_SHARE_SMALLEST = np.inf
-"""Most rooms for one more of a kind of the exemplar's smallest size class, as a share
-of its count, for :func:`fill_room` to act on the kind (:data:`ROOM_SHARE` for the
-other passes that ask :func:`_room_rate` with ``smallest``). Extension of §5.1 for
-several sizes (§7): the smallest class is capped at its exemplar's density
-(:func:`_room_cap`) and takes only the output's rooms beyond the exemplar's rate, so a
-sparse exemplar's room needs no share test while no larger kind is short of its
-density (:func:`_larger_short`; then the room is that kind's, and the share test
-stays: three sizes --harder h10s15, medium stones at 0.84 and large at 1.33 of their
-density, took 70 small stones far from every medium one, nn[small>medium]
-0.074-0.081 against 0.0625 on seeds 1-3). Helper s25h: three sizes --harder h2s15
-(60:30:40; the exemplar's rooms for a small stone 0.57 of its count) left small
-stones at 0.80 of their inner density after growth and 0.84 at the end (568 against
-the generator's 735 at the output's size), nn[small>small] 0.293 against 0.259, and
-fill_room, which left small out (0.57 > ``ROOM_SHARE``), saw rooms for 62 more small
-stones beyond the exemplar's rate (``python benchmarks/s25h_small_rooms.py
-three_sizes:2:15:1``)."""
-
-
-def _larger_short(state: SynthState) -> bool:
-    """Whether a kind above its exemplar's smallest size class stands in the output
-    below its exemplar's density by more than one standard error of its exemplar count
-    (elements per area away from the frame, as ``_displace.fill_displaced`` counts
-    them; one exemplar only, else True). Where one is, the room the output leaves is
-    that kind's, not the smallest class's (see :data:`ROOM_SHARE_SMALLEST`)."""
-    from ._displace import _inner_density  # (lazy: _displace imports this module)
-
-    prep = state.prep
-    if np.count_nonzero(prep.selected) != 1 or state.region is None:
-        return True
-    margin = 2.0 * float(prep.rc.max())
-    dens = _inner_density(prep, margin)
-    s = int(np.flatnonzero(prep.selected)[0])
-    inner_ex = prep.domains[s].buffer(-margin)
-    inner = state.region.geometry.buffer(-margin)
-    if inner.is_empty or inner_ex.is_empty:
-        return True
-    sel = prep.selected_elements & ~prep.void
-    S = len(dens)
-    cls_of = np.full(S, -1, np.int64)
-    cls_of[prep.skind[sel]] = prep.size_class[sel]
-    v = np.flatnonzero(~prep.void[state.src])
-    v = v[shapely.contains_xy(inner, state.pos[v, 0], state.pos[v, 1])]
-    have = np.bincount(prep.skind[state.src[v]], minlength=S)[:S] / float(inner.area)
-    for k in np.flatnonzero((cls_of > cls_of[cls_of >= 0].min()) & np.isfinite(dens)):
-        n_ex = dens[k] * float(inner_ex.area)
-        if n_ex > 0 and have[k] < dens[k] * (1.0 - 1.0 / np.sqrt(n_ex)):
-            return True
-    return False
-
-
 def _greedy_rooms(cen: np.ndarray, rad: np.ndarray, sep: float) -> np.ndarray:
     """Indices of circles taken largest first, no two centres closer than ``sep``."""
     taken: list[int] = []
@@ -413,7 +362,7 @@ def _greedy_rooms(cen: np.ndarray, rad: np.ndarray, sep: float) -> np.ndarray:
     return np.asarray(taken, np.int64)
 
 
-def _room_rate(prep, smallest: bool = False, share: float | None = None) -> np.ndarray:
+def _room_rate(prep, smallest: bool = False) -> np.ndarray:
     """(S,) float per kind-in-exemplar class (``Prepared.skind``): the exemplar's room
     for one more of the kind per unit of its domain's area (inf: no rule). The room is
     its open circles (Delaunay circumcircles of its visible centres, wholly inside its
@@ -421,11 +370,9 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None) -> np.n
     ``max(rc_p + rc_q, min_dist)``, counted greedily two collision radii apart. Only
     kinds above their exemplar's smallest size class, with 10 elements or more; with
     ``smallest``, only the kinds of that smallest class instead (see
-    :data:`ROOM_SMALLEST`). ``share``: the most rooms as a share of the kind's count
-    (default :data:`ROOM_SHARE`). Computed once per ``prep`` and ``share``."""
-    share = ROOM_SHARE if share is None else float(share)
-    key = (len(prep.kind), np.asarray(prep.selected_elements).tobytes(), share)
-    attr = ("_room_rate_smallest" if smallest else "_room_rate") + ("" if share == ROOM_SHARE else f"_{share}")
+    :data:`ROOM_SMALLEST`). Computed once per ``prep``."""
+    key = (len(prep.kind), np.asarray(prep.selected_elements).tobytes())
+    attr = "_room_rate_smallest" if smallest else "_room_rate"
     got = getattr(prep, attr, None)
     if got is not None and got[0] == key:
         return got[1]
@@ -456,20 +403,19 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None) -> np.n
             need = np.maximum(rc[m] + rc[tri], prep.min_dist[k, sk[tri]]).max(axis=1)
             fit = np.flatnonzero(inside & (rad >= need))
             rooms = len(_greedy_rooms(cen[fit], rad[fit], 2.0 * rc[m]))
-            if rooms <= share * len(mine) * inner.area / dom.area:
+            if rooms <= ROOM_SHARE * len(mine) * inner.area / dom.area:
                 out[k] = rooms / float(inner.area)
     setattr(prep, attr, (key, out))
     return out
 
 
-def _saturated_candidates(prep, smallest: bool = False, share: float | None = None) -> np.ndarray:
+def _saturated_candidates(prep, smallest: bool = False) -> np.ndarray:
     """(k,) int64 sorted exemplar elements that may fill room for their kind: selected,
     visible, interior to their exemplar, of a kind the exemplar leaves saturated
     (:func:`_room_rate` finite; with ``smallest``, of its smallest size class) and no
-    anchor (shared by :func:`fill_room` and ``_displace.fill_displaced``); ``share``
-    as :func:`_room_rate`'s."""
+    anchor (shared by :func:`fill_room` and ``_displace.fill_displaced``)."""
     sel = prep.selected_elements & ~prep.void
-    tight = np.isfinite(_room_rate(prep, smallest, share)[prep.skind])
+    tight = np.isfinite(_room_rate(prep, smallest)[prep.skind])
     cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
     cand = np.unique(np.asarray(cand, np.int64))
     cand = cand[sel[cand] & tight[cand]]
@@ -561,10 +507,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     cand = _saturated_candidates(prep)
     if ROOM_SMALLEST:
         # the smallest size class's saturated kinds too, capped at their density (_room_cap)
-        # (any share of rooms while no larger kind is short: see ROOM_SHARE_SMALLEST)
-        share = ROOM_SHARE_SMALLEST if not _larger_short(state) else ROOM_SHARE
-        rate = np.where(np.isfinite(rate), rate, _room_rate(prep, smallest=True, share=share))
-        cand = np.union1d(cand, _saturated_candidates(prep, smallest=True, share=share))
+        rate = np.where(np.isfinite(rate), rate, _room_rate(prep, smallest=True))
+        cand = np.union1d(cand, _saturated_candidates(prep, smallest=True))
     cand = cand[prep.parent[cand] != -3]
     if len(cand) == 0:
         return 0
