@@ -213,3 +213,24 @@ def grow_like_the_audit(ex, seed: int, *, mode: str = "fixed", times: int = 10):
             break
         scale *= 1.05 * math.sqrt(times * len(ex) / max(len(out), 1))
     return region, out
+
+
+def grow_keeping_grower(ex, **kw):
+    """``strew.grow.grow(ex, **kw)`` and the first ``_Grower`` it made, to read its set-up
+    (the canopy's shares, ...): ``(arrangement, grower)``."""
+    import strew.grow._growth as G
+    from strew.grow import grow
+
+    made = []
+    init = G._Grower.__init__
+
+    def keep(self, *a, **k):
+        init(self, *a, **k)
+        made.append(self)
+
+    G._Grower.__init__ = keep
+    try:
+        out = grow(ex, **kw)
+    finally:
+        G._Grower.__init__ = init
+    return out, made[0]

@@ -831,32 +831,31 @@ def _reach(job: _Job) -> float:
     return max(h, min(1.25 * h, (min(job.tile) - h) / 2.0))
 
 
-def _has_tile_anchors(job: _Job) -> bool:
-    """Whether ``job`` grows an ornament pattern with tile anchors (its ``tile_anchors``
-    attribute: the vase's grid flowers; strew.ornament._context.anchor_rows)."""
+def _ornament_pattern(job: _Job) -> Any:
+    """The ornament pattern ``job`` grows, or None (another method, or an input that is
+    no pattern: the method reports that itself)."""
     if job.method != "ornament":
-        return False
+        return None
     from .ornament._pattern import load_pattern
 
     try:
-        pat = load_pattern(job.input)
+        return load_pattern(job.input)
     except Exception:  # not a pattern (the method reports it itself)
-        return False
-    return bool(getattr(pat, "tile_anchors", ()) or ())
+        return None
+
+
+def _has_tile_anchors(job: _Job) -> bool:
+    """Whether ``job`` grows an ornament pattern with tile anchors (its ``tile_anchors``
+    attribute: the vase's grid flowers; strew.ornament._context.anchor_rows)."""
+    pat = _ornament_pattern(job)
+    return pat is not None and bool(getattr(pat, "tile_anchors", ()) or ())
 
 
 def _keeps_first_phase(job: _Job) -> str | None:
     """The name of the first phase of an ornament pattern that keeps it across borders
     (its ``tile_keeps_first_phase`` attribute, hierarchy's vines), else None."""
-    if job.method != "ornament":
-        return None
-    from .ornament._pattern import load_pattern
-
-    try:
-        pat = load_pattern(job.input)
-    except Exception:  # not a pattern (the method reports it itself)
-        return None
-    if not getattr(pat, "tile_keeps_first_phase", False) or not pat.phases:
+    pat = _ornament_pattern(job)
+    if pat is None or not getattr(pat, "tile_keeps_first_phase", False) or not pat.phases:
         return None
     return str(pat.phases[0].name)
 

@@ -11,31 +11,17 @@ density[large] failed (1.14 against 0.939).
 from __future__ import annotations
 
 import numpy as np
-from strew_testing import fidelity_suite
+from strew_testing import fidelity_suite, grow_keeping_grower
 
-import strew.grow._growth as G
 from strew import Region
-from strew.grow import grow
 from strew.metrics import fidelity
 
 
 def test_canopy_gates_a_kind_counted_few_at_an_upper_bound():
     ex = fidelity_suite().make_exemplar("three_sizes", rng=13, counts=(200, 60, 5))
     x0, y0, x1, y1 = ex.region.bounds
-    cap = {}
-    init = G._Grower.__init__
-
-    def keep(self, *a, **k):
-        init(self, *a, **k)
-        cap.setdefault("g", self)
-
-    G._Grower.__init__ = keep
-    try:
-        # the audit's 3.5x: the gate counts only the elements behind the growth front
-        out = grow(ex, region=Region.rectangle(3.5 * (x1 - x0), 3.5 * (y1 - y0)), rng=1)
-    finally:
-        G._Grower.__init__ = init
-    g = cap["g"]
+    # the audit's 3.5x: the gate counts only the elements behind the growth front
+    out, g = grow_keeping_grower(ex, region=Region.rectangle(3.5 * (x1 - x0), 3.5 * (y1 - y0)), rng=1)
     rep = fidelity(ex, out, eq5=False, local=False)
     # main at integ25 (ea61ad8): density[large] 1.14 against 0.939; gated 0.5 sd: passes
     d = rep.metrics["density[large]"]

@@ -15,9 +15,8 @@ wall's reach), not over the frame; and a kind it counts too few of to know its s
 from __future__ import annotations
 
 import numpy as np
-from strew_testing import fidelity_suite
+from strew_testing import fidelity_suite, grow_keeping_grower
 
-import strew.grow._growth as G
 from strew import Region
 from strew.grow import grow
 from strew.metrics import fidelity
@@ -47,19 +46,7 @@ def test_canopy_does_not_over_produce_large_stones():
 
 def test_canopy_reference_share_counts_as_the_judge():
     ex = fidelity_suite().make_exemplar("three_sizes", rng=0)
-    cap = {}
-    init = G._Grower.__init__
-
-    def keep(self, *a, **k):
-        init(self, *a, **k)
-        cap.setdefault("g", self)
-
-    G._Grower.__init__ = keep
-    try:
-        out = grow(ex, region=Region.rectangle(1.2 * ex.region.bounds[2], 1.2 * ex.region.bounds[3]), rng=1)
-    finally:
-        G._Grower.__init__ = init
-    g = cap["g"]
+    out, g = grow_keeping_grower(ex, region=Region.rectangle(1.2 * ex.region.bounds[2], 1.2 * ex.region.bounds[3]), rng=1)
     rep = fidelity(ex, out, eq5=False, local=False)
     # the frame is a wall (large stones keep about their radius off it): minus sampling
     assert g.canopy_wall > 0
