@@ -800,6 +800,9 @@ def size_classes(r: np.ndarray, area_r: np.ndarray | None = None, kind: np.ndarr
                 _, cls = np.unique(top[inv], return_inverse=True)
             if len(kinds) >= KIND_SPLIT_MIN and area_r is not None:
                 cls = _split_kinds(cls, inv, np.asarray(area_r, float))
+        elif ONE_KIND_CONTINUUM and _continuum(r):
+            # One kind whose sizes are a continuum: one class (see ONE_KIND_GAP)
+            cls = np.zeros(len(r), np.int64)
         return cls
     if area_r is not None and len(r):
         r = np.asarray(r, float)
@@ -823,6 +826,24 @@ def size_classes(r: np.ndarray, area_r: np.ndarray | None = None, kind: np.ndarr
     return cls_of[np.searchsorted(u, r)]
 
 
+ONE_KIND_CONTINUUM = True
+"""One kind whose sorted bounding radii never step by :data:`ONE_KIND_GAP` is one size class."""
+
+ONE_KIND_GAP = 1.25
+"""Step between consecutive sorted bounding radii of one kind that marks two sizes, not a continuum.
+
+Extension of the §7 split (helper s26o, issue 13 point 1). The split (:data:`SIZE_STEP`, 2x
+from the smallest) cuts a continuum of sizes at an arbitrary radius: stones of one outline
+scaled 0.65-1.35 (``--harder`` stones h2) put the 1-9 largest of 74-108 stones in a class of
+their own, whichever happened to reach twice the smallest. Placed first and leant on
+(``parents``), a lone large stone stalled growth: h2s17 (one stone in class 1) grew 326
+stones at 3.5x where its generator gives 1095-1291 (``benchmarks/syn18_oracle.py``), seeds
+1-3 all failing, density 0.46-0.56 off. Consecutive steps of the audits' one-kind continua
+stay under 1.12 (``benchmarks/s26o_size_class_survey.py``); two sizes of one kind step by
+about their ratio, and keep the split.
+"""
+
+
 KIND_SPLIT_MIN = 3
 """Exemplars of at least this many kinds split a class by kind (:func:`_split_kinds`)."""
 
@@ -840,6 +861,13 @@ failing at 4 of 6 seeds (0.084-0.119 against 0.0829). Split: large 0.94-0.95x, m
 at that size (0.067-0.082). ``benchmarks/ssz_row.py``; ``benchmarks/ssz_scope.py`` lists
 the exemplars of the audits it changes (6 of 148 three_sizes draws).
 """
+
+
+def _continuum(r: np.ndarray) -> bool:
+    """Whether the sorted radii ``r`` (n,) never step by :data:`ONE_KIND_GAP` or more."""
+    r = np.sort(np.asarray(r, float))
+    r = r[r > 0]
+    return len(r) < 2 or bool(np.all(r[1:] < ONE_KIND_GAP * r[:-1]))
 
 
 def _split_kinds(cls: np.ndarray, inv: np.ndarray, area_r: np.ndarray) -> np.ndarray:
