@@ -788,8 +788,9 @@ def size_classes(r: np.ndarray, area_r: np.ndarray | None = None, kind: np.ndarr
         # pebbles (benchmarks/_variants.py EDGE p3) had 12 or 25 of 36-40 stones in a
         # class of their own and the rest in the pebbles' class: stones 0.77-0.89x
         # their density, pebbles up to 1.18x, nn[stone>stone] 0.088-0.115 against
-        # 0.063-0.075 on all 4 runs; with whole kinds all 4 pass. The one-kind stones
-        # keep per-element classes (their sizes are a continuum, not kinds).
+        # 0.063-0.075 on all 4 runs; with whole kinds all 4 pass. One kind keeps
+        # per-element classes only where its sizes step (ONE_KIND_GAP); a continuum of
+        # sizes is one class.
         cls = size_classes(r, area_r)
         kind = np.asarray(kind, np.int64)
         kinds, inv = np.unique(kind, return_inverse=True)
