@@ -36,6 +36,7 @@ from ..arrangement import Arrangement
 
 if TYPE_CHECKING:  # pragma: no cover
     from .._progress import Reporter
+    from ._analysis import Reference
     from ._growth import GrowParams
 
 __all__ = ["Satellites", "satellite_structure", "grow_clusters"]
@@ -234,6 +235,35 @@ def _pick_ring(rings: RingPhases, complete: np.ndarray, th: float, x: float, y: 
     return int(complete[int(np.argmin(cost))])
 
 
+def hub_reference(hx: Arrangement) -> Reference | None:
+    """The hubs' reference set (§4 on the hub kind alone), or None when no hub is interior
+    even with every Delaunay triangle kept.
+
+    §4 drops the Delaunay triangles with an angle above 2/3 pi, and an element whose fan
+    a dropped triangle opens is a boundary element. A handful of hubs (clusters far
+    apart: 7 or 8 in the frame) often keeps just one interior hub, and one skewed
+    triangle beside it leaves none (``_variants.EDGE`` clusters p2 at variant seed 18:
+    the one closed fan, gaps 37-121 degrees, lost a triangle with an angle of 124
+    degrees). The exemplar was then grown as one pattern through the 1-ring of discs and
+    dots together, which filled the gaps between clusters with chains of dots: 14 dots a
+    disc against the exemplar's 6.3, density[dot] 1.76-1.87 against a tolerance of 0.55
+    and nn[dot>disc] 1.17-1.29 against 0.05 on seeds 1-3 (helper g26o,
+    ``benchmarks/g26o_clusters_probe.py``). Departs from §4 only there: where the
+    skew rule leaves no interior hub, the hubs' connectivity is the whole Delaunay
+    triangulation.
+    """
+    from ._analysis import analyze, delaunay_edges
+
+    try:
+        return analyze(hx)
+    except InputError:
+        pass
+    try:
+        return analyze(hx, edges=delaunay_edges(hx.xy, skew_angle=math.pi))
+    except InputError:
+        return None
+
+
 def hub_hole(hx: Arrangement) -> float:
     """The radius above which an empty circle of grown hubs is a hole: the widest empty
     circle of the exemplar's hubs (Delaunay circumcircles wholly inside its frame, as
@@ -301,16 +331,14 @@ def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.
     """
     from scipy.spatial import cKDTree
 
-    from ._analysis import analyze
     from ._growth import ELEMENT, _Grower
     from ._void_holes import fill_void_holes
 
     hx = ex.select(ex.kind == sat.hub)
-    try:
-        href = analyze(hx)
-    except InputError:
-        # a few hubs, all on the boundary of their connectivity (§4 keeps no interior
-        # one): the caller grows the exemplar as one pattern instead
+    href = hub_reference(hx)
+    if href is None:
+        # a few hubs, all on the boundary of their connectivity even with §4's skewed
+        # triangles kept: the caller grows the exemplar as one pattern instead
         return None
     hp = replace(params, count=None, priority={}, own_kind_close=True, ring_target_far=HUB_TARGET_FAR, start_kind=params.start_kind if params.start_kind in (-1, sat.hub) else sat.hub)
     g = _Grower(href, hp, rng)
