@@ -4,7 +4,7 @@ apart, EDGE set p2 at variant seed 18, failed density[dot] 1.76-1.87 against 0.5
 nn[dot>disc] 1.17-1.29 against 0.05 on seeds 1-3).
 
 Seven discs in the frame; the one closed fan among them lost a triangle with an angle of
-124 degrees (§4 drops those over 120), :func:`strew.grow._analysis.analyze` found no
+121.3 degrees (§4 drops those over 120), :func:`strew.grow._analysis.analyze` found no
 interior hub, and the exemplar was grown as one pattern: chains of dots between the
 clusters (``benchmarks/g26o_clusters_probe.py``).
 """

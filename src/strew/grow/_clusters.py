@@ -243,7 +243,7 @@ def hub_reference(hx: Arrangement) -> Reference | None:
     a dropped triangle opens is a boundary element. A handful of hubs (clusters far
     apart: 7 or 8 in the frame) often keeps just one interior hub, and one skewed
     triangle beside it leaves none (``_variants.EDGE`` clusters p2 at variant seed 18:
-    the one closed fan, gaps 37-121 degrees, lost a triangle with an angle of 124
+    the one closed fan, gaps 37-121 degrees, lost a triangle with an angle of 121.3
     degrees). The exemplar was then grown as one pattern through the 1-ring of discs and
     dots together, which filled the gaps between clusters with chains of dots: 14 dots a
     disc against the exemplar's 6.3, density[dot] 1.76-1.87 against a tolerance of 0.55
