@@ -3,7 +3,6 @@ rotation mode has as rotate_target_far, g25o): regularity and failing metrics pe
 
     PYTHONPATH=src python benchmarks/g26o_scales_far_probe.py [CLASS:LABEL=scales:p2s18] [SEEDS=1,2,3] [FAR=0.5|none]
 """
-import dataclasses
 import math
 import os
 import sys
