@@ -346,6 +346,116 @@ count (over the same area), for :func:`fill_room` to act on the kind: above it t
 exemplar leaves the kind room on purpose (clusters' discs: 0.9-1.8)."""
 
 
+ROOM_SHARE_SMALLEST = np.inf
+"""Most rooms for one more of a kind of the exemplar's smallest size class, as a share
+of its count, for :func:`fill_room` to act on the kind (:data:`ROOM_SHARE` for the
+other passes that ask :func:`_room_rate` with ``smallest``). Extension of §5.1 for
+several sizes (§7): the smallest class is capped at its exemplar's density
+(:func:`_room_cap`) and takes only the output's rooms beyond the exemplar's rate, so a
+sparse exemplar's room needs no share test while no larger kind is short of its
+density (:func:`_larger_short`; then the room is that kind's, and the share test
+stays: three sizes --harder h10s15, medium stones at 0.84 and large at 1.33 of their
+density, took 70 small stones far from every medium one, nn[small>medium]
+0.074-0.081 against 0.0625 on seeds 1-3). Helper s25h: three sizes --harder h2s15
+(60:30:40; the exemplar's rooms for a small stone 0.57 of its count) left small
+stones at 0.80 of their inner density after growth and 0.84 at the end (568 against
+the generator's 735 at the output's size), nn[small>small] 0.293 against 0.259, and
+fill_room, which left small out (0.57 > ``ROOM_SHARE``), saw rooms for 62 more small
+stones beyond the exemplar's rate (``python benchmarks/s25h_small_rooms.py
+three_sizes:2:15:1``). Helper s26t: only in rooms within the exemplar's reach of
+the next size class and of the kind (:data:`SMALLEST_REACH_Q`; s25h's unbounded rooms
+lost --harder h2s8 and h7s7, seeds 1 and 3)."""
+
+
+def _larger_short(state: SynthState) -> bool:
+    """Whether a kind above its exemplar's smallest size class stands in the output
+    below its exemplar's density by more than one standard error of its exemplar count
+    (elements per area away from the frame, as ``_displace.fill_displaced`` counts
+    them; one exemplar only, else True). Where one is, the room the output leaves is
+    that kind's, not the smallest class's (see :data:`ROOM_SHARE_SMALLEST`)."""
+    from ._displace import _inner_density  # (lazy: _displace imports this module)
+
+    prep = state.prep
+    if np.count_nonzero(prep.selected) != 1 or state.region is None:
+        return True
+    margin = 2.0 * float(prep.rc.max())
+    dens = _inner_density(prep, margin)
+    s = int(np.flatnonzero(prep.selected)[0])
+    inner_ex = prep.domains[s].buffer(-margin)
+    inner = state.region.geometry.buffer(-margin)
+    if inner.is_empty or inner_ex.is_empty:
+        return True
+    sel = prep.selected_elements & ~prep.void
+    S = len(dens)
+    cls_of = np.full(S, -1, np.int64)
+    cls_of[prep.skind[sel]] = prep.size_class[sel]
+    v = np.flatnonzero(~prep.void[state.src])
+    v = v[shapely.contains_xy(inner, state.pos[v, 0], state.pos[v, 1])]
+    have = np.bincount(prep.skind[state.src[v]], minlength=S)[:S] / float(inner.area)
+    for k in np.flatnonzero((cls_of > cls_of[cls_of >= 0].min()) & np.isfinite(dens)):
+        n_ex = dens[k] * float(inner_ex.area)
+        if n_ex > 0 and have[k] < dens[k] * (1.0 - 1.0 / np.sqrt(n_ex)):
+            return True
+    return False
+
+
+SMALLEST_REACH_Q = 0.75
+"""Quantile of an exemplar's distances from each interior element of a kind of its
+smallest size class to the nearest element of the next size class, and to the nearest
+other element of the kind, beyond which :func:`fill_room` gives the kind no room that
+only :data:`ROOM_SHARE_SMALLEST` lets it take (see :func:`_smallest_reach`); inf: no
+bound.
+
+Helper s26t (``python benchmarks/ssz_row.py three_sizes:2:8:1+three_sizes:7:7:1,3+...
+--set _grow.SMALLEST_REACH_Q=q``, seed 1): next class only, q 0.5 and 0.75 kept h2s8
+(nn[small>medium] 0.263 / 0.264 against 0.278) and h7s7 (0.040 / 0.0425 against 0.0509)
+and gained h2s16, h10s16; 0.9 lost h2s8 again (0.281). The kind's own reach as well: at
+variant seed 17 (held out) h3s17 took 206 small stones into rooms far from other small
+ones under the next-class bound alone and failed nn[small>small] (0.0919 / 0.0874, main
+0.081); with both it is left as on main."""
+
+
+def _smallest_reach(prep) -> np.ndarray:
+    """(S, 2) float per kind-in-exemplar class (``Prepared.skind``): for the kinds of an
+    exemplar's smallest size class, the ``SMALLEST_REACH_Q`` quantile of the distances
+    from the exemplar's interior elements of the kind to their nearest element of the
+    exemplar's next size class (column 0) and to their nearest other element of the kind
+    (column 1); inf: no bound (other kinds, or fewer than 5 interior elements). Computed
+    once per ``prep``.
+
+    Extension of §5.1 for several sizes (§7), helper s26t: the rooms the output leaves
+    the smallest class beyond its exemplar's room rate lie in the gaps between copies,
+    mostly far from the larger stones; taken all (helper s25h, ``ROOM_SHARE_SMALLEST``
+    unbounded), the small stones they took stood too far from their nearest medium one
+    (three sizes --harder h2s8 nn[small>medium] 0.289 / 0.278, h7s7 0.0518 / 0.0509), or
+    from their nearest small one (h3s17, see :data:`SMALLEST_REACH_Q`). The paper's
+    generation (§5.1) copies whole neighbourhoods and has no such pass."""
+    key = (len(prep.kind), SMALLEST_REACH_Q, np.asarray(prep.selected_elements).tobytes())
+    got = getattr(prep, "_smallest_reach", None)
+    if got is not None and got[0] == key:
+        return got[1]
+    S = int(prep.skind.max()) + 1 if len(prep.skind) else 0
+    out = np.full((S, 2), np.inf)
+    sel = prep.selected_elements & ~prep.void
+    for s in range(len(prep.names)):
+        mine = np.flatnonzero(sel & (prep.source == s))
+        cls = np.unique(prep.size_class[mine])
+        if len(cls) < 2 or not np.isfinite(SMALLEST_REACH_Q) or s >= len(prep.interior):
+            continue
+        nxt = mine[prep.size_class[mine] == cls[1]]
+        inner = np.intersect1d(prep.interior[s], mine[prep.size_class[mine] == cls[0]])
+        for k in np.unique(prep.skind[inner]):
+            ik = inner[prep.skind[inner] == k]
+            if len(ik) < 5:
+                continue
+            d = cKDTree(prep.pos[nxt]).query(prep.pos[ik])[0]
+            out[k, 0] = float(np.quantile(d, SMALLEST_REACH_Q))
+            d = cKDTree(prep.pos[mine[prep.skind[mine] == k]]).query(prep.pos[ik], k=2)[0][:, 1]
+            out[k, 1] = float(np.quantile(d, SMALLEST_REACH_Q))
+    prep._smallest_reach = (key, out)
+    return out
+
+
 def _greedy_rooms(cen: np.ndarray, rad: np.ndarray, sep: float) -> np.ndarray:
     """Indices of circles taken largest first, no two centres closer than ``sep``."""
     taken: list[int] = []
@@ -362,7 +472,7 @@ def _greedy_rooms(cen: np.ndarray, rad: np.ndarray, sep: float) -> np.ndarray:
     return np.asarray(taken, np.int64)
 
 
-def _room_rate(prep, smallest: bool = False) -> np.ndarray:
+def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: bool = False) -> np.ndarray:
     """(S,) float per kind-in-exemplar class (``Prepared.skind``): the exemplar's room
     for one more of the kind per unit of its domain's area (inf: no rule). The room is
     its open circles (Delaunay circumcircles of its visible centres, wholly inside its
@@ -370,9 +480,15 @@ def _room_rate(prep, smallest: bool = False) -> np.ndarray:
     ``max(rc_p + rc_q, min_dist)``, counted greedily two collision radii apart. Only
     kinds above their exemplar's smallest size class, with 10 elements or more; with
     ``smallest``, only the kinds of that smallest class instead (see
-    :data:`ROOM_SMALLEST`). Computed once per ``prep``."""
-    key = (len(prep.kind), np.asarray(prep.selected_elements).tobytes())
-    attr = "_room_rate_smallest" if smallest else "_room_rate"
+    :data:`ROOM_SMALLEST`). ``share``: the most rooms as a share of the kind's count
+    (default :data:`ROOM_SHARE`). With ``reach``, only the open circles centred within
+    :func:`_smallest_reach` of an element of the exemplar's next size class and of one
+    of the kind count (as :func:`fill_room` counts the output's). Computed once per ``prep``, ``share`` and
+    ``reach``."""
+    share = ROOM_SHARE if share is None else float(share)
+    bound = _smallest_reach(prep) if reach else None
+    key = (len(prep.kind), np.asarray(prep.selected_elements).tobytes(), share, None if bound is None else bound.tobytes())
+    attr = ("_room_rate_smallest" if smallest else "_room_rate") + ("" if share == ROOM_SHARE else f"_{share}") + ("_reach" if reach else "")
     got = getattr(prep, attr, None)
     if got is not None and got[0] == key:
         return got[1]
@@ -395,27 +511,34 @@ def _room_rate(prep, smallest: bool = False) -> np.ndarray:
             continue
         inside = shapely.contains_xy(inner, cen[:, 0], cen[:, 1])
         inside[inside] = shapely.distance(dom.exterior, shapely.points(cen[inside])) >= rad[inside] + margin
+        next_d = np.full(len(cen), np.inf)
+        if bound is not None:
+            next_d = cKDTree(prep.pos[ids[cls == np.unique(cls)[1]]]).query(cen)[0]
         for k in np.unique(sk[cls == cls.min()] if smallest else sk[cls > cls.min()]):
             mine = np.flatnonzero(sk == k)
             if len(mine) < 10:
                 continue
             m = mine[np.argmin(rc[mine])]
             need = np.maximum(rc[m] + rc[tri], prep.min_dist[k, sk[tri]]).max(axis=1)
-            fit = np.flatnonzero(inside & (rad >= need))
+            ok = inside & (rad >= need)
+            if bound is not None and np.isfinite(bound[k]).all():
+                ok &= (next_d <= bound[k, 0]) & (cKDTree(prep.pos[ids[mine]]).query(cen)[0] <= bound[k, 1])
+            fit = np.flatnonzero(ok)
             rooms = len(_greedy_rooms(cen[fit], rad[fit], 2.0 * rc[m]))
-            if rooms <= ROOM_SHARE * len(mine) * inner.area / dom.area:
+            if rooms <= share * len(mine) * inner.area / dom.area:
                 out[k] = rooms / float(inner.area)
     setattr(prep, attr, (key, out))
     return out
 
 
-def _saturated_candidates(prep, smallest: bool = False) -> np.ndarray:
+def _saturated_candidates(prep, smallest: bool = False, share: float | None = None) -> np.ndarray:
     """(k,) int64 sorted exemplar elements that may fill room for their kind: selected,
     visible, interior to their exemplar, of a kind the exemplar leaves saturated
     (:func:`_room_rate` finite; with ``smallest``, of its smallest size class) and no
-    anchor (shared by :func:`fill_room` and ``_displace.fill_displaced``)."""
+    anchor (shared by :func:`fill_room` and ``_displace.fill_displaced``); ``share``
+    as :func:`_room_rate`'s."""
     sel = prep.selected_elements & ~prep.void
-    tight = np.isfinite(_room_rate(prep, smallest)[prep.skind])
+    tight = np.isfinite(_room_rate(prep, smallest, share)[prep.skind])
     cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
     cand = np.unique(np.asarray(cand, np.int64))
     cand = cand[sel[cand] & tight[cand]]
@@ -505,10 +628,20 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         return 0
     rate = _room_rate(prep)
     cand = _saturated_candidates(prep)
+    far = np.full((len(rate), 2), np.inf)  # a smallest kind's reach (_smallest_reach)
     if ROOM_SMALLEST:
         # the smallest size class's saturated kinds too, capped at their density (_room_cap)
-        rate = np.where(np.isfinite(rate), rate, _room_rate(prep, smallest=True))
-        cand = np.union1d(cand, _saturated_candidates(prep, smallest=True))
+        # (any share of rooms while no larger kind is short: see ROOM_SHARE_SMALLEST)
+        share = ROOM_SHARE_SMALLEST if not _larger_short(state) else ROOM_SHARE
+        own = _room_rate(prep, smallest=True)
+        wide = _room_rate(prep, smallest=True, share=share)
+        # kinds that only the wider share lets in: rooms within the exemplar's reach of
+        # the next size class and of the kind only, in the exemplar and the output
+        # (_smallest_reach)
+        far = np.where((np.isfinite(wide) & ~np.isfinite(own))[:, None], _smallest_reach(prep), np.inf)
+        wide = np.where(np.isfinite(far).all(axis=1), _room_rate(prep, smallest=True, share=share, reach=True), wide)
+        rate = np.where(np.isfinite(rate), rate, wide)
+        cand = np.union1d(cand, _saturated_candidates(prep, smallest=True, share=share))
     cand = cand[prep.parent[cand] != -3]
     if len(cand) == 0:
         return 0
@@ -516,6 +649,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     par_d = np.where(par >= 0, np.hypot(*(prep.pos[cand] - prep.pos[np.maximum(par, 0)]).T) + prep.r[cand], np.inf)
     need = np.maximum(prep.rc[:, None] + prep.rc[cand][None, :], prep.min_dist[prep.skind[:, None], prep.skind[cand][None, :]]).min(axis=1)
     rbar = float(prep.rbar[cand].max())
+    far[~np.isfinite(far).all(axis=1)] = np.inf
+    bound = far[prep.skind[cand]]  # (len(cand), 2)
     reach = max(2.0 * float(prep.rc.max()), float(prep.min_dist.max()))
     boundary = state.region.geometry.boundary if state.region is not None else None
     shape_test = shape_test_needed(prep)
@@ -525,6 +660,19 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     cen, rad, tri = _room_circles(state, vis, need, since)
     if len(cen) == 0:
         return 0
+    # each circle's centre to the nearest output element of the next class, and of each
+    # bounded kind (_smallest_reach)
+    next_d = np.full(len(cen), np.inf)
+    own_d = np.full((len(cen), len(rate)), np.inf)
+    if np.isfinite(bound).any():
+        cls = prep.size_class[prep.selected_elements & ~prep.void]
+        nxt = vis[prep.size_class[state.src[vis]] == np.unique(cls)[1]]
+        if len(nxt):
+            next_d = cKDTree(state.pos[nxt]).query(cen)[0]
+        for k in np.flatnonzero(np.isfinite(far[:, 1])):
+            mine = vis[prep.skind[state.src[vis]] == k]
+            if len(mine):
+                own_d[:, k] = cKDTree(state.pos[mine]).query(cen)[0]
     # each kind's budget: the output's rooms for it beyond the exemplar's rate
     s_tri = state.src[vis[tri]]
     area = float(state.region.geometry.area)
@@ -535,7 +683,7 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         m = cand[prep.skind[cand] == k]
         m = m[np.argmin(prep.rc[m])]
         nk = np.maximum(prep.rc[m] + prep.rc[s_tri], prep.min_dist[k, prep.skind[s_tri]]).max(axis=1)
-        fit = np.flatnonzero(rad >= nk)
+        fit = np.flatnonzero((rad >= nk) & (next_d <= far[k, 0]) & (own_d[:, k] <= far[k, 1]))
         budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
         cap = _room_cap(state, int(k)) if budget[k] > 0 else None
         if cap is not None:
@@ -551,8 +699,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         # rooms do, and the exemplar's pebbles stand in groups (h12s7: grouped share 0.72;
         # largest rooms first left 0.55-0.58, the rooms between stones taken singly)
         first = np.argsort(~beside, kind="stable")
-        cen, rad, some = cen[first], rad[first], some[first]
-    cen, rad = cen[some], rad[some]
+        cen, rad, some, next_d, own_d = cen[first], rad[first], some[first], next_d[first], own_d[first]
+    cen, rad, next_d, own_d = cen[some], rad[some], next_d[some], own_d[some]
     wall = shapely.distance(boundary, shapely.points(cen)) if boundary is not None else np.full(len(cen), np.inf)
     n0 = state.n
     tree = cKDTree(state.pos)
@@ -569,6 +717,10 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         s_ = state.src[near]
         lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
         fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h]) & (budget[prep.skind[cand]] > 0)
+        if np.isfinite(bound).any():
+            # within reach of the next class and of the kind's own elements, those this pass added too
+            own = np.minimum(own_d[h, prep.skind[cand]], np.where(prep.skind[s_][None, :] == prep.skind[cand][:, None], dist[None, :], np.inf).min(axis=1, initial=np.inf))
+            fits &= (next_d[h] <= bound[:, 0]) & (own <= bound[:, 1])
         ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar)
         for best in order:
             if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
