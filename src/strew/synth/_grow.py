@@ -363,7 +363,7 @@ the generator's 735 at the output's size), nn[small>small] 0.293 against 0.259, 
 fill_room, which left small out (0.57 > ``ROOM_SHARE``), saw rooms for 62 more small
 stones beyond the exemplar's rate (``python benchmarks/s25h_small_rooms.py
 three_sizes:2:15:1``). Helper s26t: only in rooms within the exemplar's reach of
-the next size class and of the kind (:data:`SMALLEST_REACH_Q`; s25h's unbounded rooms
+each larger size class and of the kind (:data:`SMALLEST_REACH_Q`; s25h's unbounded rooms
 lost --harder h2s8 and h7s7, seeds 1 and 3)."""
 
 
@@ -401,7 +401,7 @@ def _larger_short(state: SynthState) -> bool:
 
 SMALLEST_REACH_Q = 0.75
 """Quantile of an exemplar's distances from each interior element of a kind of its
-smallest size class to the nearest element of the next size class, and to the nearest
+smallest size class to the nearest element of each larger size class, and to the nearest
 other element of the kind, beyond which :func:`fill_room` gives the kind no room that
 only :data:`ROOM_SHARE_SMALLEST` lets it take (see :func:`_smallest_reach`); inf: no
 bound.
@@ -412,16 +412,19 @@ Helper s26t (``python benchmarks/ssz_row.py three_sizes:2:8:1+three_sizes:7:7:1,
 and gained h2s16, h10s16; 0.9 lost h2s8 again (0.281). The kind's own reach as well: at
 variant seed 17 (held out) h3s17 took 206 small stones into rooms far from other small
 ones under the next-class bound alone and failed nn[small>small] (0.0919 / 0.0874, main
-0.081); with both it is left as on main."""
+0.081); with both it is left as on main. Every larger class, not the next only: at variant
+seed 12, h7s12 (20:120:20) took 16 small stones far from every large one and failed
+nn[small>large] (0.165 / 0.146); with each class's reach it is left as on main."""
 
 
 def _smallest_reach(prep) -> np.ndarray:
-    """(S, 2) float per kind-in-exemplar class (``Prepared.skind``): for the kinds of an
-    exemplar's smallest size class, the ``SMALLEST_REACH_Q`` quantile of the distances
-    from the exemplar's interior elements of the kind to their nearest element of the
-    exemplar's next size class (column 0) and to their nearest other element of the kind
-    (column 1); inf: no bound (other kinds, or fewer than 5 interior elements). Computed
-    once per ``prep``.
+    """(S, classes + 1) float per kind-in-exemplar class (``Prepared.skind``): for the
+    kinds of an exemplar's smallest size class, the ``SMALLEST_REACH_Q`` quantile of the
+    distances from the exemplar's interior elements of the kind to their nearest element
+    of each larger size class of the exemplar (column c: size class c; inf for the
+    smallest class and classes the exemplar lacks) and to their nearest other element of
+    the kind (last column); a last column of inf: no bound (other kinds, or fewer than 5
+    interior elements). Computed once per ``prep``.
 
     Extension of §5.1 for several sizes (§7), helper s26t: the rooms the output leaves
     the smallest class beyond its exemplar's room rate lie in the gaps between copies,
@@ -435,23 +438,24 @@ def _smallest_reach(prep) -> np.ndarray:
     if got is not None and got[0] == key:
         return got[1]
     S = int(prep.skind.max()) + 1 if len(prep.skind) else 0
-    out = np.full((S, 2), np.inf)
+    C = int(prep.size_class.max()) + 1 if len(prep.size_class) else 1
+    out = np.full((S, C + 1), np.inf)
     sel = prep.selected_elements & ~prep.void
     for s in range(len(prep.names)):
         mine = np.flatnonzero(sel & (prep.source == s))
         cls = np.unique(prep.size_class[mine])
         if len(cls) < 2 or not np.isfinite(SMALLEST_REACH_Q) or s >= len(prep.interior):
             continue
-        nxt = mine[prep.size_class[mine] == cls[1]]
         inner = np.intersect1d(prep.interior[s], mine[prep.size_class[mine] == cls[0]])
         for k in np.unique(prep.skind[inner]):
             ik = inner[prep.skind[inner] == k]
             if len(ik) < 5:
                 continue
-            d = cKDTree(prep.pos[nxt]).query(prep.pos[ik])[0]
-            out[k, 0] = float(np.quantile(d, SMALLEST_REACH_Q))
+            for c in cls[1:]:
+                d = cKDTree(prep.pos[mine[prep.size_class[mine] == c]]).query(prep.pos[ik])[0]
+                out[k, c] = float(np.quantile(d, SMALLEST_REACH_Q))
             d = cKDTree(prep.pos[mine[prep.skind[mine] == k]]).query(prep.pos[ik], k=2)[0][:, 1]
-            out[k, 1] = float(np.quantile(d, SMALLEST_REACH_Q))
+            out[k, C] = float(np.quantile(d, SMALLEST_REACH_Q))
     prep._smallest_reach = (key, out)
     return out
 
@@ -482,8 +486,8 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: 
     ``smallest``, only the kinds of that smallest class instead (see
     :data:`ROOM_SMALLEST`). ``share``: the most rooms as a share of the kind's count
     (default :data:`ROOM_SHARE`). With ``reach``, only the open circles centred within
-    :func:`_smallest_reach` of an element of the exemplar's next size class and of one
-    of the kind count (as :func:`fill_room` counts the output's). Computed once per ``prep``, ``share`` and
+    :func:`_smallest_reach` of an element of each larger size class of the exemplar and
+    of one of the kind count (as :func:`fill_room` counts the output's). Computed once per ``prep``, ``share`` and
     ``reach``."""
     share = ROOM_SHARE if share is None else float(share)
     bound = _smallest_reach(prep) if reach else None
@@ -511,9 +515,10 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: 
             continue
         inside = shapely.contains_xy(inner, cen[:, 0], cen[:, 1])
         inside[inside] = shapely.distance(dom.exterior, shapely.points(cen[inside])) >= rad[inside] + margin
-        next_d = np.full(len(cen), np.inf)
+        cls_d = np.full((len(cen), bound.shape[1] - 1 if bound is not None else 0), np.inf)
         if bound is not None:
-            next_d = cKDTree(prep.pos[ids[cls == np.unique(cls)[1]]]).query(cen)[0]
+            for c in np.unique(cls)[1:]:
+                cls_d[:, c] = cKDTree(prep.pos[ids[cls == c]]).query(cen)[0]
         for k in np.unique(sk[cls == cls.min()] if smallest else sk[cls > cls.min()]):
             mine = np.flatnonzero(sk == k)
             if len(mine) < 10:
@@ -521,8 +526,8 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: 
             m = mine[np.argmin(rc[mine])]
             need = np.maximum(rc[m] + rc[tri], prep.min_dist[k, sk[tri]]).max(axis=1)
             ok = inside & (rad >= need)
-            if bound is not None and np.isfinite(bound[k]).all():
-                ok &= (next_d <= bound[k, 0]) & (cKDTree(prep.pos[ids[mine]]).query(cen)[0] <= bound[k, 1])
+            if bound is not None and np.isfinite(bound[k, -1]):
+                ok &= (cls_d <= bound[k, :-1]).all(axis=1) & (cKDTree(prep.pos[ids[mine]]).query(cen)[0] <= bound[k, -1])
             fit = np.flatnonzero(ok)
             rooms = len(_greedy_rooms(cen[fit], rad[fit], 2.0 * rc[m]))
             if rooms <= share * len(mine) * inner.area / dom.area:
@@ -628,7 +633,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         return 0
     rate = _room_rate(prep)
     cand = _saturated_candidates(prep)
-    far = np.full((len(rate), 2), np.inf)  # a smallest kind's reach (_smallest_reach)
+    ncls = int(prep.size_class.max()) + 1 if len(prep.size_class) else 1
+    far = np.full((len(rate), ncls + 1), np.inf)  # a smallest kind's reach (_smallest_reach)
     if ROOM_SMALLEST:
         # the smallest size class's saturated kinds too, capped at their density (_room_cap)
         # (any share of rooms while no larger kind is short: see ROOM_SHARE_SMALLEST)
@@ -636,10 +642,10 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         own = _room_rate(prep, smallest=True)
         wide = _room_rate(prep, smallest=True, share=share)
         # kinds that only the wider share lets in: rooms within the exemplar's reach of
-        # the next size class and of the kind only, in the exemplar and the output
+        # each larger size class and of the kind only, in the exemplar and the output
         # (_smallest_reach)
         far = np.where((np.isfinite(wide) & ~np.isfinite(own))[:, None], _smallest_reach(prep), np.inf)
-        wide = np.where(np.isfinite(far).all(axis=1), _room_rate(prep, smallest=True, share=share, reach=True), wide)
+        wide = np.where(np.isfinite(far[:, -1]), _room_rate(prep, smallest=True, share=share, reach=True), wide)
         rate = np.where(np.isfinite(rate), rate, wide)
         cand = np.union1d(cand, _saturated_candidates(prep, smallest=True, share=share))
     cand = cand[prep.parent[cand] != -3]
@@ -649,8 +655,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     par_d = np.where(par >= 0, np.hypot(*(prep.pos[cand] - prep.pos[np.maximum(par, 0)]).T) + prep.r[cand], np.inf)
     need = np.maximum(prep.rc[:, None] + prep.rc[cand][None, :], prep.min_dist[prep.skind[:, None], prep.skind[cand][None, :]]).min(axis=1)
     rbar = float(prep.rbar[cand].max())
-    far[~np.isfinite(far).all(axis=1)] = np.inf
-    bound = far[prep.skind[cand]]  # (len(cand), 2)
+    far[~np.isfinite(far[:, -1])] = np.inf
+    bound = far[prep.skind[cand]]  # (len(cand), classes + 1)
     reach = max(2.0 * float(prep.rc.max()), float(prep.min_dist.max()))
     boundary = state.region.geometry.boundary if state.region is not None else None
     shape_test = shape_test_needed(prep)
@@ -660,16 +666,16 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     cen, rad, tri = _room_circles(state, vis, need, since)
     if len(cen) == 0:
         return 0
-    # each circle's centre to the nearest output element of the next class, and of each
-    # bounded kind (_smallest_reach)
-    next_d = np.full(len(cen), np.inf)
+    # each circle's centre to the nearest output element of each larger class, and of
+    # each bounded kind (_smallest_reach)
+    next_d = np.full((len(cen), ncls), np.inf)
     own_d = np.full((len(cen), len(rate)), np.inf)
     if np.isfinite(bound).any():
-        cls = prep.size_class[prep.selected_elements & ~prep.void]
-        nxt = vis[prep.size_class[state.src[vis]] == np.unique(cls)[1]]
-        if len(nxt):
-            next_d = cKDTree(state.pos[nxt]).query(cen)[0]
-        for k in np.flatnonzero(np.isfinite(far[:, 1])):
+        for c in range(1, ncls):
+            nxt = vis[prep.size_class[state.src[vis]] == c]
+            if len(nxt):
+                next_d[:, c] = cKDTree(state.pos[nxt]).query(cen)[0]
+        for k in np.flatnonzero(np.isfinite(far[:, -1])):
             mine = vis[prep.skind[state.src[vis]] == k]
             if len(mine):
                 own_d[:, k] = cKDTree(state.pos[mine]).query(cen)[0]
@@ -683,7 +689,7 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         m = cand[prep.skind[cand] == k]
         m = m[np.argmin(prep.rc[m])]
         nk = np.maximum(prep.rc[m] + prep.rc[s_tri], prep.min_dist[k, prep.skind[s_tri]]).max(axis=1)
-        fit = np.flatnonzero((rad >= nk) & (next_d <= far[k, 0]) & (own_d[:, k] <= far[k, 1]))
+        fit = np.flatnonzero((rad >= nk) & (next_d <= far[k, :-1]).all(axis=1) & (own_d[:, k] <= far[k, -1]))
         budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
         cap = _room_cap(state, int(k)) if budget[k] > 0 else None
         if cap is not None:
@@ -718,9 +724,9 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
         fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h]) & (budget[prep.skind[cand]] > 0)
         if np.isfinite(bound).any():
-            # within reach of the next class and of the kind's own elements, those this pass added too
+            # within reach of each larger class and of the kind's own elements, those this pass added too
             own = np.minimum(own_d[h, prep.skind[cand]], np.where(prep.skind[s_][None, :] == prep.skind[cand][:, None], dist[None, :], np.inf).min(axis=1, initial=np.inf))
-            fits &= (next_d[h] <= bound[:, 0]) & (own <= bound[:, 1])
+            fits &= (next_d[h][None, :] <= bound[:, :-1]).all(axis=1) & (own <= bound[:, -1])
         ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar)
         for best in order:
             if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
