@@ -325,6 +325,11 @@ class GrowParams:
     #: share its count plus this many Poisson standard deviations would give (an upper
     #: bound on the share, see ``_Grower._canopy_share_setup``); None: not gated
     canopy_few_z: float | None = 0.5
+    #: a seed of the smallest kind whose conversion to the largest kind the placement
+    #: checks refused dies where no element of the largest kind lies within this factor
+    #: times the reference's reach between the two (see ``_Place.try_larger``); None:
+    #: it is placed as its own kind
+    canopy_refuse: float | None = 1.0
     #: torus: rounds of :meth:`_Grower.refill` after the growth stops (0: none)
     refill_rounds: int = 2
     #: fixed mode, exemplars with void kinds: after the growth, empty circles of the
@@ -710,6 +715,9 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         #: the deferred seeds on the grid of cells ``hcell`` wide (see release_deferred)
         self.dgrid: dict[tuple[int, int], set[int]] = {}
         self._out_of_domain = False  # the last place() refused an element across the domain's edge
+        #: the last try_larger refused the largest kind to a seed of the smallest beyond
+        #: the reference's reach of every large element (``GrowParams.canopy_refuse``)
+        self._refused_far = False
         #: the largest reference ring a seed of each kind (-1: any) can be matched to
         self._ring_max: dict[int, int] = {}
         #: flow mode: the field's angle at each element where it was placed
@@ -1444,6 +1452,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 self._defer(s)
                 continue
             if not (self.canopy and self.try_larger(s)):
+                if self._refused_far:
+                    self.kill(s)
+                    self.release_deferred(s)
+                    continue
                 pick = self.choose(s)
                 self._out_of_domain = False
                 if (pick is None or not self.place(s, *pick)) and not (self._out_of_domain and self.try_smaller(s)):

@@ -350,7 +350,12 @@ class _Place:
         self._settle_n = n + m
 
     def try_larger(self, s: int) -> bool:
-        """Place seed ``s`` as a larger kind it misses (:meth:`missing_larger`); True when placed."""
+        """Place seed ``s`` as a larger kind it misses (:meth:`missing_larger`); True when placed.
+
+        Sets :attr:`_refused_far` where a seed of the smallest kind should die instead
+        (``GrowParams.canopy_refuse``).
+        """
+        self._refused_far = False
         kinds = self.missing_larger(s)
         if not kinds:
             return False
@@ -366,6 +371,22 @@ class _Place:
             self.kind[s] = own
             if self.xy[s] != (ox, oy):
                 self._move(s, ox, oy)
+            f = self.p.canopy_refuse
+            if (f is not None and own >= 0 and self.size_level[b] == self.top_level
+                    and self.size_level[own] == self.size_level.min()):
+                # Not in the paper (§5.4 places the seed as its own kind). The largest
+                # kind's lattice had a hole here that small stones filled before a large
+                # seed came, and a large one then no longer fitted (too_close_in_kind):
+                # small stones beyond the reference's reach of every large one (three
+                # sizes h6s13: 103 of 818, 97 from refused conversions). The small seed
+                # dies and leaves the hole open: a later seed there (a neighbour's ring
+                # proposes one) may become the large stone. Only the smallest kind: with
+                # the middle kind too, rows whose reference counts few of it lost it
+                # (density[medium], nn[medium>large]; benchmarks/results/g26t_canopy_refuse.md).
+                r = f * float(self.reach_larger[own, b])
+                if not any(int(self.kind[o]) == b and self.state[o] == ELEMENT
+                           and (self.xy[o][0] - ox) ** 2 + (self.xy[o][1] - oy) ** 2 <= r * r for o in self.near(ox, oy, r)):
+                    self._refused_far = True
         return False
 
     def try_smaller(self, s: int) -> bool:
