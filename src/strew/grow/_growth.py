@@ -325,7 +325,8 @@ class GrowParams:
     #: share its count plus this many Poisson standard deviations would give (an upper
     #: bound on the share, see ``_Grower._canopy_share_setup``); None: not gated
     canopy_few_z: float | None = 0.5
-    #: a seed of the smallest kind whose conversion to the largest kind the placement
+    #: a seed of the smallest kind whose conversion to the largest kind (counted at least
+    #: ``CANOPY_MIN_REF`` times in the reference) the placement
     #: checks refused dies where no element of the largest kind lies within this factor
     #: times the reference's reach between the two (see ``_Place.try_larger``); None:
     #: it is placed as its own kind

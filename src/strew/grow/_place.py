@@ -372,8 +372,9 @@ class _Place:
             if self.xy[s] != (ox, oy):
                 self._move(s, ox, oy)
             f = self.p.canopy_refuse
+            known = self.canopy_ref_share
             if (f is not None and own >= 0 and self.size_level[b] == self.top_level
-                    and self.size_level[own] == self.size_level.min()):
+                    and self.size_level[own] == self.size_level.min() and known is not None and known[b] > 0):
                 # Not in the paper (§5.4 places the seed as its own kind). The largest
                 # kind's lattice had a hole here that small stones filled before a large
                 # seed came, and a large one then no longer fitted (too_close_in_kind):
@@ -383,6 +384,10 @@ class _Place:
                 # proposes one) may become the large stone. Only the smallest kind: with
                 # the middle kind too, rows whose reference counts few of it lost it
                 # (density[medium], nn[medium>large]; benchmarks/results/g26t_canopy_refuse.md).
+                # Only where the reference counts enough large stones to know their share
+                # (CANOPY_MIN_REF, see canopy_full): with 15 counted (h12s17) the holes
+                # left became large stones on top of a share already above the
+                # reference's, and nn[large>small] failed (2 of 3 seeds).
                 r = f * float(self.reach_larger[own, b])
                 if not any(int(self.kind[o]) == b and self.state[o] == ELEMENT
                            and (self.xy[o][0] - ox) ** 2 + (self.xy[o][1] - oy) ** 2 <= r * r for o in self.near(ox, oy, r)):
