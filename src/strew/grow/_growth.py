@@ -326,7 +326,7 @@ class GrowParams:
     #: bound on the share, see ``_Grower._canopy_share_setup``); None: not gated
     canopy_few_z: float | None = 0.5
     #: a seed of the smallest kind whose conversion to the largest kind (counted at least
-    #: ``CANOPY_MIN_REF`` times in the reference) the placement
+    #: ``CANOPY_MIN_REF`` times over the reference's frame) the placement
     #: checks refused dies where no element of the largest kind lies within this factor
     #: times the reference's reach between the two (see ``_Place.try_larger``); None:
     #: it is placed as its own kind
@@ -1357,11 +1357,15 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self._settle_n = 0
         self._settle_r = np.zeros(256)
         self._settle_k = np.zeros(256, dtype=np.int64)
+        #: (n_kinds,) bool: kinds the reference counts at least CANOPY_MIN_REF of over its
+        #: whole frame (GrowParams.canopy_refuse); None: no canopy gate
+        self.canopy_refuse_ok: np.ndarray | None = None
         if not self.canopy or p.canopy_share is None or p.tile is not None or p.spray is not None or len(ex) == 0:
             return
         vcol = ex.columns.get("void")
         vis = ~(np.asarray(vcol, dtype=bool) if vcol is not None else np.zeros(len(ex), dtype=bool))
         counted = vis.copy()
+        self.canopy_refuse_ok = np.bincount(self.ex_kind[vis], minlength=self.n_kinds)[: self.n_kinds] >= CANOPY_MIN_REF
         if ex.region is not None:
             from .._fidelity import _wall_reach
 

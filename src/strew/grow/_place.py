@@ -372,9 +372,9 @@ class _Place:
             if self.xy[s] != (ox, oy):
                 self._move(s, ox, oy)
             f = self.p.canopy_refuse
-            known = self.canopy_ref_share
+            known = self.canopy_refuse_ok
             if (f is not None and own >= 0 and self.size_level[b] == self.top_level
-                    and self.size_level[own] == self.size_level.min() and known is not None and known[b] > 0):
+                    and self.size_level[own] == self.size_level.min() and known is not None and known[b]):
                 # Not in the paper (§5.4 places the seed as its own kind). The largest
                 # kind's lattice had a hole here that small stones filled before a large
                 # seed came, and a large one then no longer fitted (too_close_in_kind):
@@ -384,8 +384,9 @@ class _Place:
                 # proposes one) may become the large stone. Only the smallest kind: with
                 # the middle kind too, rows whose reference counts few of it lost it
                 # (density[medium], nn[medium>large]; benchmarks/results/g26t_canopy_refuse.md).
-                # Only where the reference counts enough large stones to know their share
-                # (CANOPY_MIN_REF, see canopy_full): with 15 counted (h12s17) the holes
+                # Only where the reference counts enough large stones over its frame
+                # (CANOPY_MIN_REF; h6s13 counts 24, fewer than 20 beyond the wall reach
+                # that canopy_full counts in): with 15 (h12s17) the holes
                 # left became large stones on top of a share already above the
                 # reference's, and nn[large>small] failed (2 of 3 seeds).
                 r = f * float(self.reach_larger[own, b])
