@@ -12,9 +12,9 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import _variants
 import numpy as np
-from scipy.spatial import cKDTree
 from _runner import fidelity_suite
 from fresh17_rows import exemplar
+from scipy.spatial import cKDTree
 from synth_variants import run
 
 from strew.metrics import fidelity
@@ -31,9 +31,10 @@ def ring_stats(a, tag, radius):
     inner = (hub[:, 0] > x0 + 60) & (hub[:, 0] < x1 - 60) & (hub[:, 1] > y0 + 60) & (hub[:, 1] < y1 - 60)
     k = np.bincount(j[~off], minlength=len(hub))[inner]
     hist = np.bincount(k)
+    counts = {i: int(c) for i, c in enumerate(hist) if c}
     print(f"   {tag}: hubs {len(hub)} tiles {len(tile)} ({len(tile) / len(hub):.2f}/hub); off-ring tiles {off.sum()}"
           f" (inner {(off & innert).sum()}: near {(off & innert & (d < radius)).sum()}, far {(off & innert & (d > radius)).sum()})"
-          f"; inner hubs {inner.sum()} ring-tile counts {dict((i, int(c)) for i, c in enumerate(hist) if c)}"
+          f"; inner hubs {inner.sum()} ring-tile counts {counts}"
           f"; tile-hub d q01/q50/q99 {np.quantile(d, 0.01):.2f}/{np.median(d):.2f}/{np.quantile(d, 0.99):.2f}", flush=True)
     if (off & innert).any():
         print("      inner off-ring tile d:", np.round(np.sort(d[off & innert]), 1)[:30])

@@ -16,7 +16,7 @@ from strew.synth import synthesize
 
 suite = fidelity_suite()
 
-LARGE_RINGS = dict(tiles=14, radius=20.0, hub=8.0, spacing=52.0)
+LARGE_RINGS = {"tiles": 14, "radius": 20.0, "hub": 8.0, "spacing": 52.0}
 
 
 def _edge_gaps(arr):
