@@ -336,7 +336,12 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     if job.method == "ornament" and _keeps_first_phase(job) is not None:
         # the halo's edges that face a later tile stop no circle (_open_edges)
         synth_kw = {"_open": [e + [_OPEN_REACH * job.halo] for e in _open_edges(t, job, grown)]}
-    arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **_HANDS_ON.get(job.method, ({},))[0], **synth_kw, **job.params)
+    params = job.params
+    cells = _ornament_cells(job, grown)
+    if cells is not None:  # the world's raster cell (_ornament_cells)
+        params = {k: v for k, v in params.items() if k not in ("cells", "resolution")}
+        synth_kw = {**synth_kw, "cells": cells}
+    arr = fn(job.input, region, context=context, rng=tile_rng(job.seed, t.index), **_HANDS_ON.get(job.method, ({},))[0], **synth_kw, **params)
     owner = _owner(arr.x, arr.y, job)
     keep = (owner == t.index) | np.isin(owner, np.fromiter(links, np.int64, len(links)))
     if job.method in _GROWS_FROM_CONTEXT and len(arr):
@@ -842,6 +847,42 @@ def _ornament_pattern(job: _Job) -> Any:
         return load_pattern(job.input)
     except Exception:  # not a pattern (the method reports it itself)
         return None
+
+
+def _ornament_cells(job: _Job, grown: tuple[float, float, float, float]) -> int | None:
+    """The raster cells an ornament tile's run uses along its region's longer side: as
+    many as give the cell of one run over the whole world, or None (another method; a
+    ``cells`` the caller set is scaled the same way).
+
+    Why (issue 19.4, helper w26b). strew.ornament's default raster has cells of half the
+    minimum radius, but at least 256 along the region's longer side (§4.1's raster
+    buffer). A tile's region (the tile and its halo, 60-72 units for the vase at tile
+    48) fell under that floor and grew on cells 2.7 times finer than the untiled world's
+    (192 units: 256 cells of 0.75), and the vase grows fewer elements on a finer raster
+    (72 x 72 panel, rng 1 and 2: 968 and 964 elements on the default 256 cells, 1,062
+    and 1,032 on 96 cells of 0.75; benchmarks/w26b_cells.py). The tiled
+    vase worlds were ~3.5 % short of the untiled control in every tile phase
+    (benchmarks/results/w26_summary.txt). Given the world's cell, every tile places as
+    one run over the whole world would. Departure from the paper: §4.1 sizes the raster
+    for one panel; this hand-over of its cell between runs is ours.
+    """
+    if job.method != "ornament":
+        return None
+    size = max(float(job.size[0]), float(job.size[1]))
+    cells = job.params.get("cells", job.params.get("resolution"))
+    if cells is None:
+        pat = _ornament_pattern(job)
+        if pat is None:
+            return None
+        mr = job.params.get("min_radius")
+        mr = float(pat.min_radius if mr is None else mr)
+        if not (mr > 0 and np.isfinite(mr)):
+            return None  # the method reports it itself
+        # strew.ornament._engine._Grower's default, for the whole world
+        cells = int(np.clip(np.ceil(size / (0.5 * mr)), 256, 2048))
+    cell = size / float(cells)
+    side = max(grown[2] - grown[0], grown[3] - grown[1])
+    return int(np.clip(np.ceil(side / cell - 1e-9), 8, 8192))
 
 
 def _has_tile_anchors(job: _Job) -> bool:
