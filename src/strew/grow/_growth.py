@@ -360,6 +360,19 @@ class GrowParams:
     #: closer than any of the exemplar's (17.5), regularity 0.933-0.957 against its 1.0
     #: (``benchmarks/g25o_pairs.py``). Departs from §5.5 as ``ring_target_far`` does.
     rotate_target_far: float | None = 0.5
+    #: fixed mode, lattice-like exemplars (:func:`lattice_like`): §5.4's Fig. 6e extra
+    #: seed (on the bisector of two neighbours of a new element more than 1.5 times
+    #: their ring edge apart) only for two neighbours that its ring's slots paired, not
+    #: for a pair the ring did not make (compared with the ring's longest edge). Helper
+    #: g26s: on a near-square lattice (wide flat scales, ``_variants.EDGE`` scales p2,
+    #: variant seed 18) such pairs across the growth front's wide gaps (124-178 degrees
+    #: at the element) made 36 extra seeds at seed 1 (p2s17: none); the bisector is no
+    #: lattice site, 16 of 27 extra seeds grew off the lattice and half of the interior
+    #: vacancies were extra seeds that died there: dislocation lines, regularity
+    #: 0.929/0.914/0.932 at seeds 1-3 against the exemplar's 1.0 (0.985/0.953/0.971
+    #: with the rule; ``benchmarks/g26s_deaths.py``, ``g26s_rows.py``). Departs from
+    #: Fig. 6e (§5.4) there. False: every pair, as the paper
+    extra_ring_only: bool = True
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None
@@ -483,6 +496,12 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             t = exemplar_turn(ex)
             if 0.0 < t < self.max_turn:
                 self.max_turn = t
+        # GrowParams.extra_ring_only: fixed mode, lattice-like exemplars only
+        self.extra_ring_only = False
+        if self.mode_code == 0 and p.extra_ring_only and len(ex) >= 2:
+            from scipy.spatial import cKDTree
+
+            self.extra_ring_only = lattice_like(cKDTree(ex.xy).query(ex.xy, k=2)[0][:, 1])
         # half the smallest centre distance between elements of two kinds in the
         # reference (see too_close_in_kind), at least l_short
         self.pair_short = np.full((self.n_kinds, self.n_kinds), self.l_short)

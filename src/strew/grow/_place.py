@@ -831,7 +831,9 @@ class _Place:
                 # long and short edges has, e.g. between clusters)
                 orig = float(self.ring_edge_max[a])
             L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
-            if L > 1.5 * orig:
+            if L > 1.5 * orig and not (self.extra_ring_only and (ja is None or jb is None)):
+                # (GrowParams.extra_ring_only: on lattices in fixed mode, only pairs this
+                # ring made get the extra seed; departs from Fig. 6e, §5.4)
                 # (e) l_long = 1.5 * original length: an extra seed on the bisector, at the
                 # average length of the two adjacent edges, without a symbol id
                 mid = angs[ia] + 0.5 * gap
