@@ -84,6 +84,18 @@ def kill(self, s):
 
 
 G.place, G.choose, G.kill = place, choose, kill
+extra = set()  # seeds made by Fig. 6e (an extra seed on a long edge, _ring_edges)
+orings = G._ring_edges
+
+
+def ring_edges(self, *a, **k):
+    n0 = len(self.xy)
+    r = orings(self, *a, **k)
+    extra.update(range(n0, len(self.xy)))
+    return r
+
+
+G._ring_edges = ring_edges
 x0, y0, x1, y1 = ex.region.bounds
 W, H = 3.5 * (x1 - x0), 3.5 * (y1 - y0)
 out = grow(ex, region=Region.rectangle(W, H), rng=seed)
@@ -107,6 +119,8 @@ for v in sorted(vac.values(), key=lambda v: v[4][0]):
 print(f"   interior killed with no element within 6.5 at the end (vacancies): {len(vac)} "
       f"{dict(collections.Counter(r for _, r, _, _, _ in vac.values()))}; placed neighbours at death "
       f"{dict(collections.Counter(n for _, _, n, _, _ in vac.values()))}")
+print(f"   Fig. 6e extra seeds made: {len(extra)}; placed {sum(1 for i in extra if i < len(g.state) and g.state[i] == ELEMENT)}; "
+      f"among the interior killed {sum(1 for q in inner if q in extra)} of {len(inner)}, among the vacancies {sum(1 for q in vac if q in extra)} of {len(vac)}")
 calls = []
 orig_lm = _fidelity._lattice_match
 

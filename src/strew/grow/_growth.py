@@ -362,8 +362,9 @@ class GrowParams:
     rotate_target_far: float | None = 0.5
     #: fixed mode, lattice-like exemplars (:func:`lattice_like`): §5.4's Fig. 6e extra
     #: seed (on the bisector of two neighbours of a new element more than 1.5 times
-    #: their ring edge apart) only for two neighbours that its ring's slots paired, not
-    #: for a pair the ring did not make (compared with the ring's longest edge). Helper
+    #: their ring edge apart) not for two neighbours that no slot of its ring paired
+    #: (compared with the ring's longest edge) across a gap wider than §4's skew angle
+    #: (120 degrees) at the element. Helper
     #: g26s: on a near-square lattice (wide flat scales, ``_variants.EDGE`` scales p2,
     #: variant seed 18) such pairs across the growth front's wide gaps (124-178 degrees
     #: at the element) made 36 extra seeds at seed 1 (p2s17: none); the bisector is no

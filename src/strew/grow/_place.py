@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 import shapely
 
+from ._analysis import SKEW_ANGLE
 from ._match import match_references, order_target
 from ._objects import (
     ELEMENT,
@@ -831,9 +832,10 @@ class _Place:
                 # long and short edges has, e.g. between clusters)
                 orig = float(self.ring_edge_max[a])
             L = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
-            if L > 1.5 * orig and not (self.extra_ring_only and (ja is None or jb is None)):
-                # (GrowParams.extra_ring_only: on lattices in fixed mode, only pairs this
-                # ring made get the extra seed; departs from Fig. 6e, §5.4)
+            if L > 1.5 * orig and not (self.extra_ring_only and (ja is None or jb is None) and gap > SKEW_ANGLE + 1e-6):
+                # (GrowParams.extra_ring_only: on lattices in fixed mode, a pair this ring
+                # did not make across a gap wider than §4's skew angle gets no extra
+                # seed; departs from Fig. 6e, §5.4)
                 # (e) l_long = 1.5 * original length: an extra seed on the bisector, at the
                 # average length of the two adjacent edges, without a symbol id
                 mid = angs[ia] + 0.5 * gap
