@@ -367,8 +367,9 @@ class GrowParams:
     #: (120 degrees) at the element. Helper
     #: g26s: on a near-square lattice (wide flat scales, ``_variants.EDGE`` scales p2,
     #: variant seed 18) such pairs across the growth front's wide gaps (124-178 degrees
-    #: at the element) made 36 extra seeds at seed 1 (p2s17: none); the bisector is no
-    #: lattice site, 16 of 27 extra seeds grew off the lattice and half of the interior
+    #: at the element) were 36 of the 47 long-edge cases at seed 1; of the 27 extra
+    #: seeds made (p2s17: none), the bisector being no lattice site, 16 grew off the
+    #: lattice and half of the interior
     #: vacancies were extra seeds that died there: dislocation lines, regularity
     #: 0.929/0.914/0.932 at seeds 1-3 against the exemplar's 1.0 (0.985/0.953/0.971
     #: with the rule; ``benchmarks/g26s_deaths.py``, ``g26s_rows.py``). Departs from
