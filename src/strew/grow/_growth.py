@@ -325,8 +325,8 @@ class GrowParams:
     #: share its count plus this many Poisson standard deviations would give (an upper
     #: bound on the share, see ``_Grower._canopy_share_setup``); None: not gated
     canopy_few_z: float | None = 0.5
-    #: a seed of the smallest kind whose conversion to the largest kind (counted at least
-    #: ``CANOPY_MIN_REF`` times over the reference's frame) the placement
+    #: with three or more sizes, a seed of the smallest kind whose conversion to the
+    #: largest kind (counted at least ``CANOPY_MIN_REF`` times over the reference's frame) the placement
     #: checks refused dies where no element of the largest kind lies within this factor
     #: times the reference's reach between the two (see ``_Place.try_larger``); None:
     #: it is placed as its own kind
@@ -1387,6 +1387,12 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         vis = ~(np.asarray(vcol, dtype=bool) if vcol is not None else np.zeros(len(ex), dtype=bool))
         counted = vis.copy()
         self.canopy_refuse_ok = np.bincount(self.ex_kind[vis], minlength=self.n_kinds)[: self.n_kinds] >= CANOPY_MIN_REF
+        if len(np.unique(self.size_level[~self.void_kind])) < 3:
+            # only with a middle size between the smallest and the largest kind: with
+            # two sizes, --harder two_sizes h11s15 failed empty_circle at seeds 1 and 3
+            # of 1-4 (0.103 and 0.112 against 0.1; 4/4 pass without the rule). Its cause
+            # there was not measured, so the rule stays where it was (three sizes)
+            self.canopy_refuse_ok[:] = False
         if ex.region is not None:
             from .._fidelity import _wall_reach
 
