@@ -39,5 +39,5 @@ print(f"T{tile:g} seed {seed}: per tile (rows dropped for a barred chain, barred
 print("rows dropped for a barred chain, all tiles:", sum(a for a, _ in log), "; barred rows:", sum(b for _, b in log))
 kinds = np.asarray(arr.kinds, dtype=object)[np.asarray(arr.kind, np.int64)]
 fl = np.isin(kinds, ["lotus", "peony"])
-pts = {(int(round(x / V.GRID)), int(round(y / V.GRID))) for x, y in zip(np.asarray(arr.x)[fl], np.asarray(arr.y)[fl])}
+pts = {(round(x / V.GRID), round(y / V.GRID)) for x, y in zip(np.asarray(arr.x)[fl], np.asarray(arr.y)[fl])}
 print("elements", len(arr), "grid flowers", len(pts))

@@ -4,7 +4,10 @@ summed over seeds (helper w26).
 
 ``python benchmarks/w26_phase_bins.py TAG,TAG,... SEED,SEED,...``
 """
-import numpy as np, sys
+import sys
+
+import numpy as np
+
 R='benchmarks/results/orn19m_%s.npz'
 bins=[0,4,8,12,16,20,25]
 for tag in sys.argv[1].split(','):

@@ -12,7 +12,6 @@ tile phase. strew.tiles._ornament_cells hands each tile the world's cell.
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
 
 import strew
