@@ -207,6 +207,27 @@ class Shape:
         return paths_to_polygon(self.paths)
 
     @cached_property
+    def has_area(self) -> bool:
+        """True when :attr:`area_geometry` is not empty, mostly without building it.
+
+        One valid ring of positive area, or one whose area exceeds the others' together
+        (the even-odd area is then at least the difference), settles it; anything else
+        (invalid rings, rings that might cancel) asks :attr:`area_geometry` itself.
+        """
+        if "area_geometry" in self.__dict__:
+            return not self.area_geometry.is_empty
+        rings = [p.points for p in self.paths if p.closed and len(p.points) >= 3]
+        if not rings:
+            return False
+        polys = shapely.polygons([shapely.linearrings(r) for r in rings])
+        if not shapely.is_valid(polys).all():
+            return not self.area_geometry.is_empty
+        area = shapely.area(polys)
+        if area.max() > 0 and area.max() > area.sum() - area.max():
+            return True
+        return not self.area_geometry.is_empty
+
+    @cached_property
     def line_geometry(self) -> shapely.Geometry:
         """Open paths as a (Multi)LineString; empty if there is none."""
         lines = [shapely.LineString(p.points) for p in self.paths if not p.closed and len(p.points) >= 2]

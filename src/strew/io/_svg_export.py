@@ -73,7 +73,7 @@ def kind_id(name: str, index: int) -> str:
 
 
 def _style_attrs(shape: Shape, *, inherit_fill: bool, stroke_width: float) -> str:
-    has_area = not shape.area_geometry.is_empty
+    has_area = shape.has_area
     style = dict(DEFAULT_AREA_STYLE if has_area else DEFAULT_LINE_STYLE)
     style["stroke_width"] = stroke_width
     style.update(shape.style)
