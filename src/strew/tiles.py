@@ -676,6 +676,12 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         first_rows &= ~anchored[inv] | ok[inv]
     if first_rows is not None:
         placed |= first_rows
+    beyond = None
+    if first_rows is not None and not _has_tile_anchors(job):
+        # and none of the first phase deeper in a later tile, placed at its parent
+        # (_at_parent) or an ancestor of a kept vine (_first_phase_beyond)
+        beyond = _first_phase_beyond(arr, t, job) & (d <= 0.0)
+        placed &= ~beyond
     parent = _parent_rows(arr)
     if later:
         # a success this tile keeps by its own rows is not dropped for a dropped ancestor's
@@ -696,6 +702,8 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
                 from .ornament._context import covers_anchor_grid
 
                 barred &= covers_anchor_grid(job.input, arr[PROXIES_COLUMN], barred)
+        elif beyond is not None:
+            barred = beyond
         placed = keep_ancestors(arr["element"], parent, arr[col], placed, far, barred)
     kept = keep_whole(arr["element"], parent, arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
@@ -866,10 +874,7 @@ def _ornament_cells(job: _Job, grown: tuple[float, float, float, float]) -> int 
     one run over the whole world would. Departure from the paper: §4.1 sizes the raster
     for one panel; this hand-over of its cell between runs is ours.
     """
-    if job.method != "ornament" or not _has_tile_anchors(job):
-        # the vase only (tile anchors): hierarchy's tiled worlds on the world's cell
-        # overlapped at tile 24 (tests/worlds/test_tiles_wide_context.py) and kept vines
-        # 7.7 units past the border (test_wv_hierarchy_first_phase.py); not measured
+    if job.method != "ornament":
         return None
     size = max(float(job.size[0]), float(job.size[1]))
     cells = job.params.get("cells", job.params.get("resolution"))
@@ -936,6 +941,35 @@ def _first_phase_rows(arr: Any, t: Tile, job: _Job) -> np.ndarray | None:
     depth = np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0))
     ph = np.array([p == first for p in np.asarray(arr["phase"], dtype=object)], bool)
     return ph & (depth <= _KEEP_FIRST_REACH * job.halo)
+
+
+def _first_phase_beyond(arr: Any, t: Tile, job: _Job) -> np.ndarray:
+    """(n,) bool: the first phase's rows (:func:`_keeps_first_phase`) more than
+    ``_KEEP_FIRST_REACH`` halos past ``t``'s rectangle. For a pattern without tile
+    anchors (hierarchy) _keep_groups keeps none of them inside a later tile: neither
+    placed at its parent (_at_parent) nor as a kept vine's ancestor
+    (strew.ornament._context.keep_ancestors' ``barred``).
+
+    Why (issue 19.4, helper w27h). _first_phase_rows keeps the vines within half a halo
+    of the border; past it the open edge's pile-up begins and the vines are the later
+    tile's. But a vine is placed where its parent is drawn (_at_parent, every vine row
+    parents a rule), and a kept vine keeps its ancestors (keep_ancestors), so a vine
+    grown from the tile reached as deep as its chord: on the world's raster cell
+    (_ornament_cells; world 192, tile 48, seed 1, corner tile) a vine 7.7 units past the
+    border was kept, placed at its parent inside the tile, with a kept child 2.5 units
+    past. Now it, and the vines grown from it, go to the later tile, which grows its own
+    vines there. Departure from the paper: Wong et al. grow one panel in one run (§4.1,
+    §5); this hand-over is ours.
+    """
+    first = _keeps_first_phase(job)
+    n = len(arr)
+    if first is None or "phase" not in arr.columns or not n:
+        return np.zeros(n, bool)
+    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
+    x0, y0, x1, y1 = t.rect
+    depth = np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0))
+    ph = np.array([p == first for p in np.asarray(arr["phase"], dtype=object)], bool)
+    return ph & (depth > _KEEP_FIRST_REACH * job.halo)
 
 
 def _open_edges(t: Tile, job: _Job, grown: tuple[float, float, float, float]) -> list[list[float]]:

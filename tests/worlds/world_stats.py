@@ -45,6 +45,31 @@ def border_strips(arr, size, tile_size: float, width: float, margin: float):
     return inside & near, inside & ~near, (gin & gnear).sum() * cell, (gin & ~gnear).sum() * cell
 
 
+def drawn_radii(arr) -> np.ndarray:
+    """(n,) float: each element's bounding radius about its centre from its own drawn
+    parts (the ``parts`` column: ornament's one-off curves), times its largest |scale|;
+    the kind's shape radius where a row has no parts.
+
+    strew.tiles._radii reads the kind's shape, which for ornament is a stand-in (the first
+    drawn element of the kind, strew.ornament._render): a vine or leaf may reach twice as
+    far as its kind's stand-in.
+    """
+    from strew.tiles import _radii
+
+    out = np.asarray(_radii(arr), float).copy()
+    if "parts" not in arr.columns:
+        return out
+    scale = np.max(np.abs(np.asarray(arr.scale, float).reshape(len(arr), -1)), axis=1)
+    for i, parts in enumerate(arr["parts"]):
+        if not parts:
+            continue
+        pts = [np.asarray(q["points"] if isinstance(q, dict) else q.points, float) for p in parts for q in (p["paths"] if isinstance(p, dict) else p.paths)]
+        pts = [q for q in pts if len(q)]
+        if pts:
+            out[i] = float(np.hypot(*np.vstack(pts).T).max()) * scale[i]
+    return out
+
+
 def overlapping_pairs_across(arr, groups, tol: float = 1e-9) -> int:
     """Pairs of elements of different ``groups`` (e.g. the ``tile`` column) whose areas
     overlap by more than ``tol``."""
