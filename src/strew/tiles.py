@@ -677,7 +677,7 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     if first_rows is not None:
         placed |= first_rows
     beyond = None
-    if first_rows is not None and not _has_tile_anchors(job):
+    if _FIRST_BEYOND and first_rows is not None and not _has_tile_anchors(job):
         # and none of the first phase deeper in a later tile, placed at its parent
         # (_at_parent) or an ancestor of a kept vine (_first_phase_beyond)
         beyond = _first_phase_beyond(arr, t, job) & (d <= 0.0)
@@ -795,6 +795,9 @@ _LATE_BAND = 0.5
 # in the region), and how far past its rectangle (in halos) a tile keeps its first phase
 _OPEN_REACH = 1.0
 _KEEP_FIRST_REACH = 0.5
+# whether _keep_groups keeps no first-phase row deeper than that in a later tile, for a
+# pattern without tile anchors (_first_phase_beyond; 0: as up to h/w27h, for measurement)
+_FIRST_BEYOND = 1
 # whether a kept first phase's success placed at its tile anchors goes with the anchors'
 # owner (_keep_groups; 0: kept by the rows' own distance, as a success without anchors)
 _FIRST_ANCHORED = 1
