@@ -678,10 +678,8 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
         placed |= first_rows
     beyond = None
     if _FIRST_BEYOND and first_rows is not None and not _has_tile_anchors(job):
-        # and none of the first phase deeper in a later tile, placed at its parent
-        # (_at_parent) or an ancestor of a kept vine (_first_phase_beyond)
+        # the first phase's rows deeper in a later tile (_first_phase_beyond)
         beyond = _first_phase_beyond(arr, t, job) & (d <= 0.0)
-        placed &= ~beyond
     parent = _parent_rows(arr)
     if later:
         # a success this tile keeps by its own rows is not dropped for a dropped ancestor's
@@ -702,9 +700,21 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
                 from .ornament._context import covers_anchor_grid
 
                 barred &= covers_anchor_grid(job.input, arr[PROXIES_COLUMN], barred)
-        elif beyond is not None:
-            barred = beyond
-        placed = keep_ancestors(arr["element"], parent, arr[col], placed, far, barred)
+        kept_placed = keep_ancestors(arr["element"], parent, arr[col], placed, far, barred)
+        if beyond is not None and beyond.any():
+            # one by one, a vine deeper than half a halo in a later tile goes to it (placed
+            # at its parent, _at_parent, or a kept vine's ancestor, keep_ancestors), unless
+            # a row lost with it lies past the later tile's reach (a hole no tile refills;
+            # _first_phase_beyond)
+            kept = keep_whole(arr["element"], parent, arr[col], kept_placed)
+            bar = np.zeros(len(arr), bool)
+            for g in np.unique(inv[beyond & kept]):
+                b2 = bar | (beyond & (inv == g))
+                p2 = keep_ancestors(arr["element"], parent, arr[col], placed & ~b2, far, b2)
+                k2 = keep_whole(arr["element"], parent, arr[col], p2)
+                if (d[kept & ~k2] < _CUT_REACH * job.halo).all():
+                    bar, kept_placed, kept = b2, p2, k2
+        placed = kept_placed
     kept = keep_whole(arr["element"], parent, arr[col], placed)
     if later and GOAL_COLUMN in arr.columns and PROXIES_COLUMN in arr.columns:
         # the successes whose empty circle an element dropped here had bounded are left to
@@ -795,8 +805,8 @@ _LATE_BAND = 0.5
 # in the region), and how far past its rectangle (in halos) a tile keeps its first phase
 _OPEN_REACH = 1.0
 _KEEP_FIRST_REACH = 0.5
-# whether _keep_groups keeps no first-phase row deeper than that in a later tile, for a
-# pattern without tile anchors (_first_phase_beyond; 0: as up to h/w27h, for measurement)
+# whether _keep_groups leaves the first phase's rows deeper than that in a later tile to
+# it, for a pattern without tile anchors (_first_phase_beyond; 0: kept, for measurement)
 _FIRST_BEYOND = 1
 # whether a kept first phase's success placed at its tile anchors goes with the anchors'
 # owner (_keep_groups; 0: kept by the rows' own distance, as a success without anchors)
@@ -949,9 +959,9 @@ def _first_phase_rows(arr: Any, t: Tile, job: _Job) -> np.ndarray | None:
 def _first_phase_beyond(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     """(n,) bool: the first phase's rows (:func:`_keeps_first_phase`) more than
     ``_KEEP_FIRST_REACH`` halos past ``t``'s rectangle. For a pattern without tile
-    anchors (hierarchy) _keep_groups keeps none of them inside a later tile: neither
-    placed at its parent (_at_parent) nor as a kept vine's ancestor
-    (strew.ornament._context.keep_ancestors' ``barred``).
+    anchors (hierarchy) _keep_groups leaves those inside a later tile to it, placed at
+    their parent (_at_parent) or kept as a vine's ancestor (strew.ornament._context
+    .keep_ancestors' ``barred``), where that leaves no hole.
 
     Why (issue 19.4, helper w27h). _first_phase_rows keeps the vines within half a halo
     of the border; past it the open edge's pile-up begins and the vines are the later
@@ -960,9 +970,14 @@ def _first_phase_beyond(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     grown from the tile reached as deep as its chord: on the world's raster cell
     (_ornament_cells; world 192, tile 48, seed 1, corner tile) a vine 7.7 units past the
     border was kept, placed at its parent inside the tile, with a kept child 2.5 units
-    past. Now it, and the vines grown from it, go to the later tile, which grows its own
-    vines there. Departure from the paper: Wong et al. grow one panel in one run (§4.1,
-    §5); this hand-over is ours.
+    past. Now such a vine, and what grew from it, goes to the later tile, which grows its
+    own vines there, where every row lost with it lies within the later tile's reach
+    (``_CUT_REACH`` halos, as _keep_groups' cut rounds; the later tile refills them).
+    Dropped without that condition (every such vine, its subtree with it), the tiled
+    world at tile 48 (seed 19) held 2,383 elements against the control's 2,537 (2,551
+    kept), the holes 12-20 units inside the finished tiles (benchmarks/w26_phase_bins.py
+    w27hnobar,w27hnew,w27hctl 19; benchmarks/results/w27h_summary.txt). Departure from
+    the paper: Wong et al. grow one panel in one run (§4.1, §5); this hand-over is ours.
     """
     first = _keeps_first_phase(job)
     n = len(arr)
