@@ -4,5 +4,5 @@
 S=${1:-19}; T=${2:-48}
 cd "$(dirname "$0")/.."
 PYTHONPATH=/work/main/src python benchmarks/hie15_make.py --tag w27hbase --tiles $T --seeds $S --pattern hierarchy
-PYTHONPATH=src python benchmarks/hie15_make.py --tag w27hnew --tiles $T --seeds $S --pattern hierarchy
+PYTHONPATH=src python benchmarks/hie15_make.py --tag w27hC --tiles $T --seeds $S --pattern hierarchy
 PYTHONPATH=/work/main/src python benchmarks/hie15_make.py --tag w27hctl --tiles $T --seeds $S --pattern hierarchy --untiled

@@ -887,7 +887,10 @@ def _ornament_cells(job: _Job, grown: tuple[float, float, float, float]) -> int 
     one run over the whole world would. Departure from the paper: §4.1 sizes the raster
     for one panel; this hand-over of its cell between runs is ours.
     """
-    if job.method != "ornament":
+    if job.method != "ornament" or (not _has_tile_anchors(job) and _keeps_first_phase(job) is None):
+        # the vase (tile anchors) and hierarchy (keeps its first phase), measured (w26b,
+        # w27h); the other patterns' tuned tile rules (willow's _at_parent: test_orn19m_
+        # willow_at_parent) assume the tile's own raster and were not measured on this one
         return None
     size = max(float(job.size[0]), float(job.size[1]))
     cells = job.params.get("cells", job.params.get("resolution"))
