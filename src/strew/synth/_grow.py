@@ -1821,6 +1821,117 @@ def _ring_kids(prep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return prep._ring_kids
 
 
+RING_PHASE_SPREAD = True
+"""A ring grown beside a ring copied from the same exemplar ring takes another exemplar
+ring's slots where they are clear (:func:`_spread_ring_sources`); off: every ring keeps
+the exemplar ring its hub was copied as."""
+
+
+def _spread_ring_sources(state: SynthState, hubs: np.ndarray, cptr: np.ndarray, cidx: np.ndarray) -> int:
+    """Give each new output anchor ``hubs`` that was copied as the same exemplar anchor
+    as an output anchor beside it (within 1.5 lattice spacings, :func:`anchor_lattice`)
+    another exemplar anchor of its exemplar and kind with as many children, one that no
+    anchor beside it was copied as, drawn from ``rng``, and turn its ring's children
+    onto that anchor's slots, where every moved child clears every element but its own
+    ring (in place). Returns the number of anchors given another exemplar anchor.
+
+    Extension of §5.1 for structured exemplars (§7). A ring's phase (the angle of its
+    tiles about its hub, modulo the tile step) is that of the exemplar ring its hub
+    was copied as (:func:`_complete_anchor_rings` puts the tiles on its slots), and
+    k-coherence copies (§5.1) took the few hubs with whole neighbourhoods in the
+    exemplar's middle over and over, beside each other: rings (seed 5, 9x the area,
+    ``benchmarks/s27p_phase.py``) 144 hubs from 12 of the exemplar's 16, two of them
+    (phases 0.08 and 0.09 of the tile step apart) 21 and 17 times; 13.9% of
+    neighbouring hubs were copies of one exemplar hub (the copies' frequencies alone
+    give 10.3%), and the phase difference of a hub to its 6 nearest averaged 0.210
+    tile steps with 30% below 0.1 (the exemplar's own 0.267 and 17%; uniform 0.25 and
+    20%). At 50x the area such a patch turned its rings in lockstep and failed the
+    local map's orientation.relative (``benchmarks/seam17_all50.py``, s27e). The paper
+    copies the matched neighbourhood's element as it is; here only the exemplar ring
+    the new hub stands for is drawn again, among rings its neighbours do not repeat.
+    """
+    prep = state.prep
+    on, _basis, spacing = anchor_lattice(prep)
+    if not np.isfinite(spacing) or len(hubs) == 0:
+        return 0
+    nk = np.diff(cptr)
+    src = state.src
+    n = state.n
+    pos = state.pos  # a view: moves below write through
+    every = np.flatnonzero(nk[src[:n]] > 0)
+    pool_all = np.flatnonzero((nk > 0) & on & ~prep.void)
+    if len(every) < 2 or len(pool_all) < 2:
+        return 0
+    htree = cKDTree(pos[every].copy())
+    tree = cKDTree(pos[:n].copy())
+    rc_max = float(prep.rc.max())
+    cut = max(2.0 * rc_max, float(prep.min_dist.max()))
+    child_kind = np.zeros(len(prep.kind), bool)
+    child_kind[cidx] = True
+    changed = 0
+    for h in hubs:
+        o = int(src[h])
+        if nk[o] == 0:
+            continue
+        near = every[np.asarray(htree.query_ball_point(pos[h], 1.5 * spacing), np.int64)]
+        near = near[near != h]
+        used = set(src[near].tolist())
+        if o not in used:
+            continue
+        pool = pool_all[(prep.source[pool_all] == prep.source[o]) & (prep.skind[pool_all] == prep.skind[o]) & (nk[pool_all] == nk[o])]
+        pool = np.array([e for e in pool if e not in used], np.int64)
+        if len(pool) == 0:
+            continue
+        kids_o = cidx[cptr[o] : cptr[o + 1]]
+        r_slot = np.hypot(*(prep.pos[kids_o] - prep.pos[o]).T)
+        # the ring's children: children standing on this hub's ring, nearer it than any other hub
+        cand = np.asarray(tree.query_ball_point(pos[h], float(r_slot.max()) + rc_max), np.int64)
+        cand = cand[child_kind[src[cand]] & ~state.fixed[cand]]
+        if len(cand):
+            dh = np.hypot(*(pos[cand] - pos[h]).T)
+            ring = np.abs(dh - np.median(r_slot)) <= prep.rc[src[cand]]
+            dn, jn = htree.query(pos[cand])
+            ring &= every[jn] == h
+            cand = cand[ring]
+        for e in state.rng.permutation(pool):
+            kids = cidx[cptr[e] : cptr[e + 1]]
+            slots = pos[h] + map_offsets(np.broadcast_to(pos[h], (len(kids), 2)), prep.pos[kids] - prep.pos[e])
+            if len(cand) > len(kids):
+                break
+            d = np.hypot(slots[None, :, 0] - pos[cand, None, 0], slots[None, :, 1] - pos[cand, None, 1])
+            d = np.where(prep.skind[kids][None, :] == prep.skind[src[cand]][:, None], d, np.inf)
+            to = np.full(len(cand), -1)
+            taken = np.zeros(len(kids), bool)
+            for flat in np.argsort(d, axis=None, kind="stable"):
+                a, b = divmod(int(flat), len(kids))
+                if not np.isfinite(d[a, b]):
+                    break
+                if to[a] < 0 and not taken[b]:
+                    to[a], taken[b] = b, True
+            if (to < 0).any():
+                continue
+            mine = set(cand.tolist()) | {int(h)}
+            fine = True
+            for a, b in enumerate(to):
+                nb = np.asarray(tree.query_ball_point(slots[b], cut + 2.0 * rc_max + float(r_slot.max())), np.int64)
+                nb = np.array([q for q in nb if q not in mine], np.int64)
+                if len(nb) == 0:
+                    continue
+                lim = np.maximum(prep.rc[kids[b]] + prep.rc[src[nb]], prep.min_dist[prep.skind[kids[b]], prep.skind[src[nb]]])
+                if np.any(np.hypot(*(pos[nb] - slots[b]).T) < lim):
+                    fine = False
+                    break
+            if not fine:
+                continue
+            state.reassign(np.array([h]), np.array([e]))
+            if len(cand):
+                pos[cand] = slots[to]
+                state.reassign(cand, kids[to])
+            changed += 1
+            break
+    return changed
+
+
 def _complete_anchor_rings(state: SynthState, room: int | None = None) -> int:
     """Put the children of each output anchor grown in this :func:`grow` call back on the
     slots of the exemplar ring that anchor was copied as, and fill its empty slots
@@ -1859,6 +1970,8 @@ def _complete_anchor_rings(state: SynthState, room: int | None = None) -> int:
     hubs = np.flatnonzero((cptr[src + 1] > cptr[src]) & (state.born >= state.grow_start) & ~state.fixed)
     if len(hubs) == 0:
         return 0
+    if RING_PHASE_SPREAD:
+        _spread_ring_sources(state, hubs, *anchor_children(prep)[1:])
     kid_all = cidx
     reach = 1.0 + float(np.hypot(*(prep.pos[kid_all] - prep.pos[prep.parent[kid_all]]).T).max())
     rc_max = float(prep.rc.max())
