@@ -7,7 +7,7 @@ output which stage added each hub (caller of ``SynthState.add``) and its exempla
 how many neighbouring output hubs are copies of the same exemplar hub, and the phase
 differences of the neighbours' source hubs (what ``_complete_anchor_rings`` puts their slots by).
 
-    PYTHONPATH=src python benchmarks/s27p_phase.py [--scale 7.07] [--seed 5]
+    PYTHONPATH=src python benchmarks/s27p_phase.py [--scale 7.07] [--seed 5] [--off]
 """
 import argparse
 import collections
@@ -27,7 +27,12 @@ ap = argparse.ArgumentParser()
 ap.add_argument("--scale", type=float, default=7.07)
 ap.add_argument("--seed", type=int, default=5)
 ap.add_argument("--name", default="rings")
+ap.add_argument("--off", action="store_true", help="RING_PHASE_SPREAD off (main's behaviour)")
 a = ap.parse_args()
+if a.off:
+    import strew.synth._grow as G
+
+    G.RING_PHASE_SPREAD = False
 
 _orig_add, _orig_re, _orig_arr = SynthState.add, SynthState.reassign, SynthState.to_arrangement
 born_by = {}   # output index -> (stage, src at birth)
