@@ -53,7 +53,10 @@ proposed beside an output anchor takes the slot of the exemplar ring that anchor
 copied as (one phase per ring), and anchors whose children the frame cut off are not
 copied beside a candidate (``_grow.anchors``, ``_prepare.parents``); at the end of a
 growth each new anchor's children are put back on its exemplar ring's slots and its
-empty slots filled where nothing is in the way (``_grow._complete_anchor_rings``).
+empty slots filled where nothing is in the way (``_grow._complete_anchor_rings``); a new
+anchor beside a copy of its own exemplar anchor first takes another exemplar anchor of as
+many children that none beside it repeats, its ring turned onto that anchor's slots where
+they are clear, so neighbouring rings do not turn in lockstep (``_spread_ring_sources``).
 A growth ends by putting into each empty circle of the output wider than the
 exemplar's largest the exemplar element that fits there and whose neighbourhood matches
 best (Eq. 1 over the whole selection; ``_grow.fill_holes``).
