@@ -1890,7 +1890,7 @@ def _spread_ring_sources(state: SynthState, hubs: np.ndarray, cptr: np.ndarray, 
         if len(cand):
             dh = np.hypot(*(pos[cand] - pos[h]).T)
             ring = np.abs(dh - np.median(r_slot)) <= prep.rc[src[cand]]
-            dn, jn = htree.query(pos[cand])
+            _, jn = htree.query(pos[cand])
             ring &= every[jn] == h
             cand = cand[ring]
         for e in state.rng.permutation(pool):
