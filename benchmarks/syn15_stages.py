@@ -1,4 +1,4 @@
-"""Helper syn15: syn13a_stages.py for any --harder set of synth (synth_variants._harder: stripes, rings, clusters ...), per kind and per stage of grow(), elements per area away from the edge over the exemplar's inner-frame density.
+"""Helper syn15: syn13a_stages.py (rows as ``CLASS:H:V:SEEDS`` or, helper s27k, as fresh17_rows.py labels ``CLASS:LABEL:SEEDS``, e.g. ``clusters:p2s20:1,2``) for any --harder set of synth (synth_variants._harder: stripes, rings, clusters ...), per kind and per stage of grow(), elements per area away from the edge over the exemplar's inner-frame density.
 
     PYTHONPATH=TREE/src:benchmarks python benchmarks/syn15_stages.py CLASS:H:V:SEEDS [--set G.LARGER_IN_CLASS=99]
 """
@@ -112,9 +112,16 @@ for kv in args.set:
     print("set", name, val)
 mk = _harder_suite()
 for spec in args.specs:
-    cls, h, v, seeds = spec.split(":")
-    kw = {} if h == "suite" else HARDER[cls][int(h)]
-    ex = mk.make_exemplar(cls, rng=int(v), **kw) if h != "suite" else mk.make_exemplar(cls)
+    parts = spec.split(":")
+    if len(parts) == 3:  # a fresh17_rows.py label (``clusters:p2s20:SEEDS``, helper s27k)
+        from fresh17_rows import exemplar as _fresh_exemplar
+
+        cls, label, seeds = parts
+        ex = _fresh_exemplar(mk, cls, label)
+    else:
+        cls, h, v, seeds = parts
+        kw = {} if h == "suite" else HARDER[cls][int(h)]
+        ex = mk.make_exemplar(cls, rng=int(v), **kw) if h != "suite" else mk.make_exemplar(cls)
     x0, y0, x1, y1 = ex.region.bounds
     print(f"== {spec} exemplar counts", {k: int(np.sum(ex.kind == i)) for i, k in enumerate(ex.kinds)}, "inner dens", DP._inner_density(__import__("strew.synth._prepare", fromlist=["x"]).prepare(ex) if False else None, 0) if False else "")
     from strew.synth._prepare import prepare as _pp  # noqa: F401
