@@ -1,50 +1,15 @@
 """Flow mode: the last pass of the bond network, each bond pulled only into the band
 0.9-1.12 mean edges near the sites without six neighbours (issue 14 point 2;
-:func:`strew.grow._flow_net.relax_network` with ``band``).
-
-The hexagonal lattice grown from the corner (2, 18) spacings of a region 30 x 20
-spacings along a field turning 90 degrees (``benchmarks/grow.py --structure
---flow-only``, "flow turning 90 deg, 30x20 spacings, start 2,18 spacings") kept at
-61d61c7 0.764 of its interior elements with six neighbours at the spacing (+-15%),
-every failing site stretched (fewer than six within 1.15 spacings), the largest group
-of failing sites 54. With the band's pass: 0.828, the largest group 19; the same
-elements (the pass only moves them), no hole, nothing across the edge, no overlap.
+:func:`strew.grow._flow_net.relax_network` with ``band``): its bonds, and a way to grow
+without it. Its effect on the bent lattice is tested in ``test_grow_flow_bent_lattice``
+(one growth for the three passes).
 """
 
 from __future__ import annotations
 
 import numpy as np
-import pytest
 
-from strew import Region
 from strew.grow._flow_net import _delaunay_bonds
-from strew.grow._growth import GrowParams, grow_reference
-
-from test_grow_flow14d_stretch import hex_ref  # noqa: E402, F401 (a fixture)
-from test_grow_flow14g_retry import _turning_90  # noqa: E402
-from test_grow_flow14k_densify import _defect_groups  # noqa: E402
-from test_grow_flow_gaps import SP, _holes, _inside_without_overlap, _shares  # noqa: E402
-
-
-@pytest.mark.slow
-def test_flow_band_pass_lifts_the_stretched_sites_of_the_bent_lattice(hex_ref):
-    w = 30 * SP
-    region = Region.rectangle(w, 20 * SP)
-    kw = dict(region=region, mode="flow", flow=_turning_90(w), start=(2 * SP, 18 * SP))
-    out = grow_reference(hex_ref, GrowParams(**kw), rng=1)
-    _inside_without_overlap(out, region)
-    assert _holes(out.xy, region) == 0
-    six, stretched = _shares(out.xy, region)
-    _, largest = _defect_groups(out.xy, region)
-    assert six >= 0.80  # 0.828 here; 0.764 at 61d61c7
-    assert stretched <= 0.20  # 0.17; 0.24 at 61d61c7
-    assert largest <= 35  # 19; 54 at 61d61c7
-    # the pass moves elements only, within the 10 degree turn from the field (hexagons:
-    # modulo 60 degrees) that the passes before keep: none turned past 12 degrees more
-    # than the 2 that the passes before leave here
-    v = kw["flow"](out.xy)
-    d = np.degrees(np.mod(out.rotation - np.arctan2(v[:, 1], v[:, 0]), np.pi / 3))
-    assert int((np.minimum(d, 60 - d) > 12.0).sum()) <= 2
 
 
 def test_delaunay_bonds_are_the_triangles_sides_once_in_order():
