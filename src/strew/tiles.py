@@ -668,7 +668,8 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     if later and band > 0:
         # the later phases' elements (flowers' buds) near a later tile are left to it
         placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
-    first_rows = _first_phase_rows(arr, t, job) if later else None
+    first = _first_phase_depth(arr, t, job) if later else None
+    first_rows = _first_phase_rows(first, job) if first is not None else None
     if first_rows is not None and anchored is not None and _FIRST_ANCHORED:
         # a success placed at its tile anchors (the vase's flowers, on the world's grid) is
         # the anchor's owner's, kept first phase or not: the tile holding the grid point
@@ -677,9 +678,9 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     if first_rows is not None:
         placed |= first_rows
     beyond = None
-    if _FIRST_BEYOND and first_rows is not None and not _has_tile_anchors(job):
+    if _FIRST_BEYOND and first is not None and not _has_tile_anchors(job):
         # the first phase's rows deeper in a later tile (_first_phase_beyond)
-        beyond = _first_phase_beyond(arr, t, job) & (d <= 0.0)
+        beyond = _first_phase_beyond(first, job) & (d <= 0.0)
     parent = _parent_rows(arr)
     if later:
         # a success this tile keeps by its own rows is not dropped for a dropped ancestor's
@@ -925,11 +926,10 @@ def _keeps_first_phase(job: _Job) -> str | None:
     return str(pat.phases[0].name)
 
 
-def _first_phase_rows(arr: Any, t: Tile, job: _Job) -> np.ndarray | None:
-    """(n,) bool: for a pattern that keeps its first phase (:func:`_keeps_first_phase`),
-    the rows of that phase within ``_KEEP_FIRST_REACH`` halos of ``t``'s rectangle,
-    which ``t`` keeps (with their ancestors: _keep_groups) even where they lie in a later
-    tile; None for the others.
+def _first_phase_rows(first: tuple[np.ndarray, np.ndarray], job: _Job) -> np.ndarray:
+    """(n,) bool: of the first phase's rows (``first``: :func:`_first_phase_depth`), those
+    within ``_KEEP_FIRST_REACH`` halos of the tile's rectangle, which the tile keeps (with
+    their ancestors: _keep_groups) even where they lie in a later tile.
 
     Why (issue 19.4, hierarchy). Wong et al. grow the whole vine structure before any
     flower (§5, Fig. 10: "the pattern starts from the seed points by growing the vines",
@@ -949,6 +949,14 @@ def _first_phase_rows(arr: Any, t: Tile, job: _Job) -> np.ndarray | None:
     those are left to the later tile. Departure from the paper: it grows one panel in
     one run; this hand-over between runs is ours.
     """
+    ph, depth = first
+    return ph & (depth <= _KEEP_FIRST_REACH * job.halo)
+
+
+def _first_phase_depth(arr: Any, t: Tile, job: _Job) -> tuple[np.ndarray, np.ndarray] | None:
+    """For a pattern that keeps its first phase (:func:`_keeps_first_phase`): (n,) bool,
+    the rows of that phase, and (n,) float, each row's distance past ``t``'s rectangle
+    (0 inside); None for the other patterns (or no rows)."""
     first = _keeps_first_phase(job)
     if first is None or "phase" not in arr.columns or not len(arr):
         return None
@@ -956,12 +964,12 @@ def _first_phase_rows(arr: Any, t: Tile, job: _Job) -> np.ndarray | None:
     x0, y0, x1, y1 = t.rect
     depth = np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0))
     ph = np.array([p == first for p in np.asarray(arr["phase"], dtype=object)], bool)
-    return ph & (depth <= _KEEP_FIRST_REACH * job.halo)
+    return ph, depth
 
 
-def _first_phase_beyond(arr: Any, t: Tile, job: _Job) -> np.ndarray:
-    """(n,) bool: the first phase's rows (:func:`_keeps_first_phase`) more than
-    ``_KEEP_FIRST_REACH`` halos past ``t``'s rectangle. For a pattern without tile
+def _first_phase_beyond(first: tuple[np.ndarray, np.ndarray], job: _Job) -> np.ndarray:
+    """(n,) bool: of the first phase's rows (``first``: :func:`_first_phase_depth`), those
+    more than ``_KEEP_FIRST_REACH`` halos past the tile's rectangle. For a pattern without tile
     anchors (hierarchy) _keep_groups leaves those inside a later tile to it, placed at
     their parent (_at_parent) or kept as a vine's ancestor (strew.ornament._context
     .keep_ancestors' ``barred``), where that leaves no hole.
@@ -982,14 +990,7 @@ def _first_phase_beyond(arr: Any, t: Tile, job: _Job) -> np.ndarray:
     w27hnobar,w27hnew,w27hctl 19; benchmarks/results/w27h_summary.txt). Departure from
     the paper: Wong et al. grow one panel in one run (§4.1, §5); this hand-over is ours.
     """
-    first = _keeps_first_phase(job)
-    n = len(arr)
-    if first is None or "phase" not in arr.columns or not n:
-        return np.zeros(n, bool)
-    x, y = np.asarray(arr.x, float), np.asarray(arr.y, float)
-    x0, y0, x1, y1 = t.rect
-    depth = np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0))
-    ph = np.array([p == first for p in np.asarray(arr["phase"], dtype=object)], bool)
+    ph, depth = first
     return ph & (depth > _KEEP_FIRST_REACH * job.halo)
 
 
