@@ -1801,6 +1801,25 @@ def _ring_kids(prep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return prep._ring_kids
 
 
+def _nearest_pairs(d: np.ndarray, cap: np.ndarray, used: np.ndarray, taken: np.ndarray) -> list[tuple[int, int]]:
+    """Greedy nearest pairing of rows (children) with columns (slots) of the distances
+    ``d`` (m, k): in ascending order of distance (stable), a pair whose row and column
+    are both free is taken, until a distance is not finite or exceeds its column's
+    ``cap`` (k,). ``used`` (m,) and ``taken`` (k,) are updated in place; returns the
+    pairs ``(row, column)`` in the order taken."""
+    k = d.shape[1]
+    pairs = []
+    for flat in np.argsort(d, axis=None, kind="stable"):
+        a, b = divmod(int(flat), k)
+        if not np.isfinite(d[a, b]) or d[a, b] > cap[b]:
+            break
+        if used[a] or taken[b]:
+            continue
+        used[a] = taken[b] = True
+        pairs.append((a, b))
+    return pairs
+
+
 RING_PHASE_SPREAD = True
 """A ring grown beside a ring copied from the same exemplar ring takes another exemplar
 ring's slots where they are clear (:func:`_spread_ring_sources`); off: every ring keeps
@@ -1881,13 +1900,8 @@ def _spread_ring_sources(state: SynthState, hubs: np.ndarray, cptr: np.ndarray, 
             d = np.hypot(slots[None, :, 0] - pos[cand, None, 0], slots[None, :, 1] - pos[cand, None, 1])
             d = np.where(prep.skind[kids][None, :] == prep.skind[src[cand]][:, None], d, np.inf)
             to = np.full(len(cand), -1)
-            taken = np.zeros(len(kids), bool)
-            for flat in np.argsort(d, axis=None, kind="stable"):
-                a, b = divmod(int(flat), len(kids))
-                if not np.isfinite(d[a, b]):
-                    break
-                if to[a] < 0 and not taken[b]:
-                    to[a], taken[b] = b, True
+            for a, b in _nearest_pairs(d, np.full(len(kids), np.inf), np.zeros(len(cand), bool), np.zeros(len(kids), bool)):
+                to[a] = b
             if (to < 0).any():
                 continue
             mine = set(cand.tolist()) | {int(h)}
@@ -1987,15 +2001,7 @@ def _complete_anchor_rings(state: SynthState, room: int | None = None) -> int:
             d = np.hypot(slots[None, :, 0] - pos[near, None, 0], slots[None, :, 1] - pos[near, None, 1])
             d = np.where(prep.skind[kids][None, :] == prep.skind[state.src[near]][:, None], d, np.inf)
             used = np.zeros(len(near), bool)
-            pairs = []
-            for flat in np.argsort(d, axis=None, kind="stable"):
-                a, b = divmod(int(flat), len(kids))
-                if not np.isfinite(d[a, b]) or d[a, b] > grab[b]:
-                    break
-                if used[a] or taken[b]:
-                    continue
-                used[a] = taken[b] = True
-                pairs.append((int(near[a]), b))
+            pairs = [(int(near[a]), b) for a, b in _nearest_pairs(d, grab, used, taken)]
             if len(kids) > 1 and not used.all() and not taken.all():
                 # a second round (seam17; like the first, an extension of §5.1 for §7's
                 # structured exemplars, see the docstring): a child left over ON this ring (its distance
@@ -2012,14 +2018,7 @@ def _complete_anchor_rings(state: SynthState, room: int | None = None) -> int:
                 sn = state.src[near]
                 lim = np.maximum(prep.rc[kids][None, :] + prep.rc[sn][:, None], prep.min_dist[prep.skind[sn][:, None], prep.skind[kids][None, :]])
                 d2 = np.where(used[:, None] | taken[None, :] | (rad > prep.rc[kids][None, :]) | (d >= lim), np.inf, d)
-                for flat in np.argsort(d2, axis=None, kind="stable"):
-                    a, b = divmod(int(flat), len(kids))
-                    if not np.isfinite(d2[a, b]) or d2[a, b] > 2.0 * grab[b]:
-                        break
-                    if used[a] or taken[b]:
-                        continue
-                    used[a] = taken[b] = True
-                    pairs.append((int(near[a]), b))
+                pairs += [(int(near[a]), b) for a, b in _nearest_pairs(d2, 2.0 * grab, used, taken)]
             # a ring turned as a whole is a chain: each move waits for its neighbour's
             todo = [(j, b) for j, b in pairs if np.hypot(*(pos[j] - slots[b])) > 1e-9]
             while todo:
