@@ -340,6 +340,19 @@ decile (nn[pebble>pebble] 0.14-0.17 against 0.086 and 0.154), rooms for 113-125 
 pebbles left in the output against the exemplar's 23 per the same area."""
 
 
+ROOM_ONE_CLASS = True
+"""An exemplar of one size class whose kind it leaves saturated (rooms for at most
+:data:`ROOM_SHARE` of its count more) takes part in :func:`fill_room` as a smallest class
+does (:data:`ROOM_SMALLEST`), up to its exemplar's density (:func:`_room_cap`).
+
+Extension of §5.1 (helper s27o, issue 13 point 1): growth fills a gap only through a
+copy whose free-space point lands in it, so a dart-thrown one-kind texture came out
+short: --harder stones h3 (radius 8, 300 asked, saturated) at variant seeds 19 and 20,
+seeds 1-3, density 0.91-0.93 and nn[stone>stone] too far at every decile (+0.02 to
++0.12 s), failing 5 of 5 runs, while the generator drawn at the output size passes
+(``benchmarks/svar13i_oracle.py``). :func:`_room_rate` had no rule for one size class."""
+
+
 ROOM_SHARE = 0.25
 """Most rooms for one more of a kind (:func:`_room_rate`), as a share of the kind's
 count (over the same area), for :func:`fill_room` to act on the kind: above it the
@@ -476,7 +489,7 @@ def _greedy_rooms(cen: np.ndarray, rad: np.ndarray, sep: float) -> np.ndarray:
     return np.asarray(taken, np.int64)
 
 
-def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: bool = False) -> np.ndarray:
+def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: bool = False, one_class: bool = False) -> np.ndarray:
     """(S,) float per kind-in-exemplar class (``Prepared.skind``): the exemplar's room
     for one more of the kind per unit of its domain's area (inf: no rule). The room is
     its open circles (Delaunay circumcircles of its visible centres, wholly inside its
@@ -487,12 +500,14 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: 
     :data:`ROOM_SMALLEST`). ``share``: the most rooms as a share of the kind's count
     (default :data:`ROOM_SHARE`). With ``reach``, only the open circles centred within
     :func:`_smallest_reach` of an element of each larger size class of the exemplar and
-    of one of the kind count (as :func:`fill_room` counts the output's). Computed once per ``prep``, ``share`` and
-    ``reach``."""
+    of one of the kind count (as :func:`fill_room` counts the output's). With ``one_class`` and
+    ``smallest``, exemplars of one size class count too (see :data:`ROOM_ONE_CLASS`). Computed once per
+    ``prep``, ``share``, ``reach`` and ``one_class``."""
     share = ROOM_SHARE if share is None else float(share)
     bound = _smallest_reach(prep) if reach else None
     key = (len(prep.kind), np.asarray(prep.selected_elements).tobytes(), share, None if bound is None else bound.tobytes())
-    attr = ("_room_rate_smallest" if smallest else "_room_rate") + ("" if share == ROOM_SHARE else f"_{share}") + ("_reach" if reach else "")
+    one_class = bool(one_class and smallest)
+    attr = ("_room_rate_smallest" if smallest else "_room_rate") + ("" if share == ROOM_SHARE else f"_{share}") + ("_reach" if reach else "") + ("_one" if one_class else "")
     got = getattr(prep, attr, None)
     if got is not None and got[0] == key:
         return got[1]
@@ -502,7 +517,7 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: 
     for s, dom in enumerate(prep.domains):
         ids = np.flatnonzero(sel & (prep.source == s))
         cls = prep.size_class[ids]
-        if len(ids) < 3 or len(np.unique(cls)) < 2 or dom.area <= 0:
+        if len(ids) < 3 or (len(np.unique(cls)) < 2 and not one_class) or dom.area <= 0:
             continue
         cen, rad, tri = circumcircles(prep.pos[ids])
         if len(rad) == 0:
@@ -536,14 +551,14 @@ def _room_rate(prep, smallest: bool = False, share: float | None = None, reach: 
     return out
 
 
-def _saturated_candidates(prep, smallest: bool = False, share: float | None = None) -> np.ndarray:
+def _saturated_candidates(prep, smallest: bool = False, share: float | None = None, one_class: bool = False) -> np.ndarray:
     """(k,) int64 sorted exemplar elements that may fill room for their kind: selected,
     visible, interior to their exemplar, of a kind the exemplar leaves saturated
     (:func:`_room_rate` finite; with ``smallest``, of its smallest size class) and no
     anchor (shared by :func:`fill_room` and ``_displace.fill_displaced``); ``share``
-    as :func:`_room_rate`'s."""
+    and ``one_class`` as :func:`_room_rate`'s."""
     sel = prep.selected_elements & ~prep.void
-    tight = np.isfinite(_room_rate(prep, smallest, share)[prep.skind])
+    tight = np.isfinite(_room_rate(prep, smallest, share, one_class=one_class)[prep.skind])
     cand = np.concatenate([prep.interior[i] for i in np.flatnonzero(prep.selected)]) if np.any(prep.selected) else np.zeros(0, np.int64)
     cand = np.unique(np.asarray(cand, np.int64))
     cand = cand[sel[cand] & tight[cand]]
@@ -639,8 +654,11 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         # the smallest size class's saturated kinds too, capped at their density (_room_cap)
         # (any share of rooms while no larger kind is short: see ROOM_SHARE_SMALLEST)
         share = ROOM_SHARE_SMALLEST if not _larger_short(state) else ROOM_SHARE
-        own = _room_rate(prep, smallest=True)
+        own = _room_rate(prep, smallest=True, one_class=ROOM_ONE_CLASS)
         wide = _room_rate(prep, smallest=True, share=share)
+        # an exemplar of one size class counts at its own share only (ROOM_ONE_CLASS);
+        # elsewhere a finite own rate equals the wider one (the share only gates)
+        wide = np.where(np.isfinite(own), own, wide)
         # kinds that only the wider share lets in: rooms within the exemplar's reach of
         # each larger size class and of the kind only, in the exemplar and the output
         # (_smallest_reach)
@@ -648,6 +666,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         wide = np.where(np.isfinite(far[:, -1]), _room_rate(prep, smallest=True, share=share, reach=True), wide)
         rate = np.where(np.isfinite(rate), rate, wide)
         cand = np.union1d(cand, _saturated_candidates(prep, smallest=True, share=share))
+        if ROOM_ONE_CLASS:
+            cand = np.union1d(cand, _saturated_candidates(prep, smallest=True, one_class=True))
     cand = cand[prep.parent[cand] != -3]
     if len(cand) == 0:
         return 0
