@@ -350,7 +350,19 @@ copy whose free-space point lands in it, so a dart-thrown one-kind texture came 
 short: --harder stones h3 (radius 8, 300 asked, saturated) at variant seeds 19 and 20,
 seeds 1-3, density 0.91-0.93 and nn[stone>stone] too far at every decile (+0.02 to
 +0.12 s), failing 5 of 5 runs, while the generator drawn at the output size passes
-(``benchmarks/svar13i_oracle.py``). :func:`_room_rate` had no rule for one size class."""
+(``benchmarks/svar13i_oracle.py``). :func:`_room_rate` had no rule for one size class.
+
+Only on finished growth (no horizon element open; helper s28o): a studio brush segment
+grown a bounded number of iterations (``strew.studio._session.BRUSH_ITERATIONS``, §5.4
+painting) left the rule room at its growth front. On the tiles exemplar (one size class)
+it put 1-3 elements per stroke there, each 0.46-0.59 r-bar from an element whose free
+space was still open, and none on the fully grown path; the test stroke then finished at
+158 against 169 grown fully (0.935; 162 without the rule). Session seeds 0-7: the rule
+added only while the front was open (``python benchmarks/s28o_brush_trace.py``). So
+the rule waits until growth has finished, and then takes the rooms of every element
+added since the first grow() call left unfinished (``SynthState.room_since``): the
+stroke's end sees the whole stroke's rooms, as a stroke grown fully at every segment
+saw each segment's."""
 
 
 ROOM_SHARE = 0.25
@@ -654,7 +666,19 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         # the smallest size class's saturated kinds too, capped at their density (_room_cap)
         # (any share of rooms while no larger kind is short: see ROOM_SHARE_SMALLEST)
         share = ROOM_SHARE_SMALLEST if not _larger_short(state) else ROOM_SHARE
-        own = _room_rate(prep, smallest=True, one_class=ROOM_ONE_CLASS)
+        # one size class: only once growth has finished (no horizon element left open;
+        # see ROOM_ONE_CLASS): a brush segment grown a bounded number of iterations
+        # (§5.4, ``max_iterations``) leaves open circles at its growth front that growth
+        # fills when the stroke ends
+        one_class = ROOM_ONE_CLASS and not state.horizon.any()
+        own = _room_rate(prep, smallest=True, one_class=one_class)
+        if one_class and state.room_since is not None:
+            # growth left unfinished earlier (a brush stroke's segments) has finished:
+            # its rooms count too, as if each part had been grown to the end
+            if (np.isfinite(own) & ~np.isfinite(_room_rate(prep, smallest=True))).any():
+                late = np.flatnonzero(state.born >= state.room_since)
+                since = min(since, int(late[0]) if len(late) else state.n)
+            state.room_since = None
         wide = _room_rate(prep, smallest=True, share=share)
         # an exemplar of one size class counts at its own share only (ROOM_ONE_CLASS);
         # elsewhere a finite own rate equals the wider one (the share only gates)
@@ -666,7 +690,7 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         wide = np.where(np.isfinite(far[:, -1]), _room_rate(prep, smallest=True, share=share, reach=True), wide)
         rate = np.where(np.isfinite(rate), rate, wide)
         cand = np.union1d(cand, _saturated_candidates(prep, smallest=True, share=share))
-        if ROOM_ONE_CLASS:
+        if one_class:
             cand = np.union1d(cand, _saturated_candidates(prep, smallest=True, one_class=True))
     cand = cand[prep.parent[cand] != -3]
     if len(cand) == 0:
@@ -2516,7 +2540,9 @@ def grow(
         state.wrap()
         fill_beside_far_small(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
         state.unwrap()
-    if state.n > start_n and ROOM_FILL:
+    if state.n > start_n and state.horizon.any() and state.room_since is None:
+        state.room_since = state.grow_start  # unfinished: fill_room sees it once finished
+    if (state.n > start_n or state.room_since is not None) and ROOM_FILL:
         state.wrap()
         fill_room(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
         state.unwrap()

@@ -176,6 +176,9 @@ class SynthState:
         self._ghost = np.zeros(cap, bool)  # periodic: wrapped images of elements near the tile's edges
         self.tile: tuple[float, float, float, float] | None = None
         self.grow_start = 0  # first iteration of the running grow() call
+        # first iteration of a grow() call left unfinished (horizon open) whose rooms
+        # _grow.fill_room has not seen on finished growth yet (None: none; ROOM_ONE_CLASS)
+        self.room_since: int | None = None
         self._flags_n = 0
         self._alive = np.zeros(1024, bool)
         self._fails = np.zeros(1024, np.int16)
