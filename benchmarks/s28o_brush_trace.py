@@ -30,7 +30,7 @@ def main() -> None:
     args = sys.argv[1:]
     while args and args[0] == "--set":
         name, val = args[1].split("=")
-        mod, attr = name.split(".")
+        _mod, attr = name.split(".")
         setattr(_grow, attr, eval(val))
         args = args[2:]
     seeds, quiet = [3], False
