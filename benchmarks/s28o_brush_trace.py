@@ -7,7 +7,7 @@ fully at every segment), and prints per segment the state's count and what each
 ``_grow.fill_room`` call added (with whether the horizon was still open, i.e. growth
 unfinished).
 
-    PYTHONPATH=src python benchmarks/s28o_brush_trace.py [--set _grow.ROOM_ONE_CLASS=False] [--seeds 3,4] [--quiet]
+    PYTHONPATH=src python benchmarks/s28o_brush_trace.py [--set _grow.ROOM_ONE_CLASS=False] [--seeds 3,4] [--quiet] [--example stones.svg]
 
 ``--seeds``: the session seeds (the test's is 3); ``--quiet``: one line per seed.
 """
@@ -23,6 +23,7 @@ import strew.studio._session as session_module
 from strew.studio._session import Session
 from strew.synth import _grow
 
+EXAMPLE = "tiles.svg"  # --example NAME.svg
 LINE = [(100.0 + 20 * i, 200.0) for i in range(16)]
 
 
@@ -37,6 +38,10 @@ def main() -> None:
     while args:
         if args[0] == "--seeds":
             seeds = [int(x) for x in args[1].split(",")]
+            args = args[2:]
+        elif args[0] == "--example":
+            global EXAMPLE
+            EXAMPLE = args[1]
             args = args[2:]
         elif args[0] == "--quiet":
             quiet = True
@@ -76,7 +81,7 @@ def paint(seed, iters, log, quiet):
     session_module.BRUSH_ITERATIONS = iters
     with tempfile.TemporaryDirectory() as d:
         s = Session(d, seed=seed, size=(600.0, 400.0))
-        s.handle({"type": "load_exemplar", "example": "tiles.svg"})
+        s.handle({"type": "load_exemplar", "example": EXAMPLE})
         log.clear()
         s.handle({"type": "stroke_start", "tool": "brush", "radius": 100.0, "points": [list(LINE[0])]})
         seg = [(0, s.state.n, list(log))]
