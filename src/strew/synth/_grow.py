@@ -2296,6 +2296,51 @@ def _larger_in_class(prep) -> np.ndarray:
     return out
 
 
+COPYABLE_ONLY = True
+"""Generation asks only of proposals that can be copied whether a candidate can
+generate (:func:`copyable`); off: every proposal that passed the static checks counts."""
+
+
+def copyable(ok: np.ndarray, pslot: np.ndarray, parent_free: np.ndarray) -> np.ndarray:
+    """The proposals of ``ok`` that :func:`_kernels.place_proposals` can copy: not an
+    orphan (``pslot == -2``: its parent lies outside the candidate's neighbourhood), and
+    whose parent proposal, if any, is itself copyable or lies beyond the region's edge
+    (``parent_free``).
+
+    Extension of §5.1 (the ratio test: "if e_0 cannot generate elements, e_i is
+    considered"), for the parent rule of ``_prepare.parents``: a candidate counted as
+    able to generate when some proposal passed the static checks, even when every such
+    proposal was an orphan that the placement never copies. Its seed then gave up, and
+    the candidates behind it within the ratio test were never tried. Far-apart clusters
+    (clusters EDGE p2s20, ``benchmarks/synth_variants.py --varied-variants 19,20``: discs
+    91-121 apart, r-bar 88.9) lost growth this way: a disc's best candidate (cost 0.7)
+    offered only the dots of a cluster whose disc lay beyond its neighbourhood, the
+    next one (cost 467 within the bound 512) two discs with their rings, and growth
+    stopped at 48 elements, 0.07-0.09 of the exemplar's density
+    (``benchmarks/s27k_growth_trace.py clusters p2s20 1 --detail``).
+
+    Parameters
+    ----------
+    ok : (P,) bool
+        Proposals that passed the static checks.
+    pslot : (P,) int
+        Parent proposal of each (``_kernels.generate_proposals``).
+    parent_free : (P,) bool
+
+    Returns
+    -------
+    (P,) bool
+    """
+    ok = ok & (pslot != -2)
+    while True:
+        has = np.flatnonzero(ok & (pslot >= 0))
+        par = pslot[has]
+        drop = has[~ok[par] & ~parent_free[par]]
+        if len(drop) == 0:
+            return ok
+        ok[drop] = False
+
+
 def _evict(state: SynthState, new: np.ndarray, *, voids: bool) -> None:
     """Remove the elements of O that intersect the new visible elements ``new``: void
     elements (§5.6 extension, see ``grow``) and horizon elements of smaller size classes that yielded
@@ -2465,6 +2510,10 @@ def grow(
                 # an exemplar's largest class comes only from the copy of the nearest
                 # seed (departure from §5.1, see _not_owned; >= OWN_CLASSES size classes)
                 okp &= ~_not_owned(prep, seed_pos, seed_of, ppos, exv)
+            if COPYABLE_ONLY:
+                # a candidate whose passing proposals are all orphans cannot generate (see
+                # copyable)
+                okp = copyable(okp, pslot, parent_free)
             # larger size classes first, and within a class the anchors (see anchors),
             # then its clearly larger kinds (see _larger_in_class)
             order_key = 2 * prep.size_class[exv] + anchors(prep)[exv] + _larger_in_class(prep)[exv]
