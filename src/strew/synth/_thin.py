@@ -241,3 +241,116 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
     keep = np.ones(state.n, bool)
     keep[np.concatenate(drop)] = False
     return state.remove(~keep)
+
+
+THIN_CROWDED = True
+""":func:`grow` takes out the surplus of children beside their parent's copy where their
+kind is still denser than its exemplar after :func:`thin_orphans` (see
+:func:`thin_crowded`)."""
+
+
+CROWDED_PARENTS = 0.9
+"""Share of their exemplar density below which a parent kind's shortfall stops
+:func:`thin_crowded` for its children's kind."""
+
+
+def thin_crowded(state: SynthState, since: int = 0) -> int:
+    """Remove output children of a leaf kind that stand beside a copy of their exemplar
+    parent, where the kind is still denser than its exemplar after :func:`thin_orphans`,
+    those nearest another element of their kind first, until the kind's density is the
+    exemplar's; returns the number removed.
+
+    Extension of §5.1 (growth never removes an element it kept; this pass does). Where
+    growth copies more whole clusters (``_grow.copyable``: a seed whose best candidate
+    offered only orphans now tries the next), the children's kind ends denser than the
+    exemplar's although few are orphans. Measured first (clusters h3s9 at 2x, fresh
+    held-out exemplar, seed 1, with ``_grow.copyable``; ``python
+    benchmarks/s27t_diag.py``): the dots reach 1.144 of the exemplar's density,
+    :func:`thin_orphans` takes 120 out and leaves 1.033
+    (``tests/synth/test_synth_syc16_orphans.py`` bounds it by 1.01; the discs 1.025). No
+    copy of a disc holds more dots than its exemplar disc: the surplus is more rings,
+    not fuller ones, so the children taken are the most crowded, as
+    :func:`thin_orphans` takes its orphans (there measured against taking as many at
+    random: nn[dot>dot] 0.031-0.035 against 0.050-0.054). A child stands beside its
+    parent's copy as :func:`thin_orphans` asks (a copy of its parent within 1.2 times
+    its exemplar offset plus its radius). Densities as :func:`thin_orphans` counts them;
+    one exemplar; leaf kinds only; ring tiles stay; only elements added since ``since``;
+    no random choice. Taking the children farthest from their slot on the parent's copy
+    first instead gave the same density and a faithful judge on seeds 1-2
+    (``python benchmarks/s27t_order.py``, before this choice). Candidates are ordered
+    the orphans :func:`thin_orphans` left (not squeezed) first. Not where a parent kind
+    holds less than :data:`CROWDED_PARENTS` of its exemplar density: far clusters (FAR
+    at variant seed 7, ``tests/synth/test_synth_far_clusters.py``) have discs at 0.80 and
+    dots at 1.30, and taking the dots to 1.00 left the region at 0.835 of the exemplar's
+    count (the test asks 0.85). Nor more than the kind's surplus over the whole region
+    against the exemplar's whole density: GRIT at variant seed 8 (same test) had dots at
+    1.15 inside but an underfilled edge band, and taking the inner surplus left the
+    region at 0.840 of the exemplar's count.
+    """
+    from ._displace import _inner_density  # (lazy: _displace imports _grow)
+    from ._grow import _ring_kids
+
+    prep = state.prep
+    if not THIN_CROWDED or np.count_nonzero(prep.selected) != 1 or state.region is None or state.n <= since:
+        return 0
+    margin = 2.0 * float(prep.rc.max())
+    inner = state.region.geometry.buffer(-margin)
+    if inner.is_empty or inner.area <= 0.25 * state.region.geometry.area:
+        return 0
+    dens = _inner_density(prep, margin)
+    src = state.src[: state.n]
+    vis = np.flatnonzero(~prep.void[src])
+    if len(vis) < 2:
+        return 0
+    pos = state.pos[vis]
+    kind = prep.skind[src[vis]]
+    ins = shapely.contains_xy(inner, pos[:, 0], pos[:, 1])
+    ring = _ring_kids(prep)[0]
+    s = int(np.flatnonzero(prep.selected)[0])
+    selv = prep.selected_elements & ~prep.void & (prep.source == s)
+    kids = selv & (prep.parent >= 0)
+    parents = np.unique(prep.parent[kids])
+    drop = []
+    tree = cKDTree(pos)
+    par = prep.parent[src[vis]]
+    for k in np.unique(prep.skind[kids]):
+        if not np.isfinite(dens[k]) or np.any(prep.skind[parents] == k):
+            continue  # leaf kinds only, as thin_orphans
+        # how many children of kind k each exemplar parent holds
+        held_ex = np.bincount(prep.parent[kids & (prep.skind == k)], minlength=len(prep.pos))
+        of_k = kind == k
+        surplus = int(np.count_nonzero(of_k & ins)) - int(np.floor(dens[k] * float(inner.area)))
+        # nor more than the whole region holds above the exemplar's whole density: a region
+        # whose edge band is underfilled keeps its inner surplus
+        whole = np.count_nonzero(selv & (prep.skind == k)) / float(prep.domains[s].area)
+        surplus = min(surplus, int(np.count_nonzero(of_k)) - int(np.floor(whole * float(state.region.geometry.area))))
+        mine = np.flatnonzero(of_k & (par >= 0))
+        if surplus <= 0 or len(mine) < 2:
+            continue
+        # where the parents' kinds fall short of their exemplar density, the region is
+        # underfilled and the children's surplus stands in for missing clusters: leave it
+        pk = np.unique(prep.skind[prep.parent[kids & (prep.skind == k)]])
+        held_p = np.array([np.count_nonzero((kind == q) & ins) for q in pk], float)
+        if np.any(held_p < CROWDED_PARENTS * dens[pk] * float(inner.area)):
+            continue
+        # each child's owner: the nearest copy of its exemplar parent within thin_orphans' reach
+        owner = np.full(len(mine), -1, np.int64)
+        for j, c in enumerate(mine):
+            p = par[c]
+            off = float(np.hypot(*(prep.pos[src[vis[c]]] - prep.pos[p])))
+            near = np.asarray(tree.query_ball_point(pos[c], 1.2 * off + float(prep.r[src[vis[c]]])), np.int64)
+            near = near[src[vis[near]] == p]
+            if len(near):
+                owner[j] = near[np.argmin(np.hypot(*(pos[near] - pos[c]).T))]
+        free = (vis[mine] >= since) & ins[mine] & ~ring[src[vis[mine]]]
+        crowd = cKDTree(pos[of_k]).query(pos[mine], 2)[0][:, 1]
+        cand = np.flatnonzero(free)
+        # the orphans thin_orphans left (not squeezed) first, then the children beside their
+        # parent's copy; within each, those nearest another of their kind first
+        order = np.lexsort((crowd[cand], owner[cand] >= 0))
+        drop.append(vis[mine[cand[order[:surplus]]]])
+    if not drop:
+        return 0
+    keep = np.ones(state.n, bool)
+    keep[np.concatenate(drop)] = False
+    return state.remove(~keep)
