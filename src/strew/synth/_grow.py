@@ -2301,6 +2301,33 @@ COPYABLE_ONLY = True
 generate (:func:`copyable`); off: every proposal that passed the static checks counts."""
 
 
+COPYABLE_SEEDS = "largest"
+"""Seeds whose candidates :func:`copyable` screens: ``"largest"`` those of their
+exemplar's largest size class (see :func:`_seed_largest`), ``"all"`` every seed."""
+
+
+COPYABLE_EDGE = True
+
+
+def _copyable_seeds(prep, seed_src: np.ndarray) -> np.ndarray:
+    """(ns,) bool: the seeds whose candidates :func:`copyable` screens (see
+    :data:`COPYABLE_SEEDS`): in exemplars of fewer than :data:`OWN_CLASSES` size classes
+    (visible selected elements), with ``"largest"`` only seeds of the exemplar's largest
+    size class."""
+    sel = prep.selected_elements & ~prep.void
+    top = np.full(len(prep.names), -1, np.int64)
+    np.maximum.at(top, prep.source[sel], prep.size_class[sel])
+    ncls = np.zeros(len(prep.names), np.int64)
+    for s_ in np.unique(prep.source[sel]):
+        ncls[s_] = len(np.unique(prep.size_class[sel & (prep.source == s_)]))
+    few = ncls < OWN_CLASSES if OWN_CLASSES > 0 else np.ones(len(prep.names), bool)
+    src = prep.source[seed_src]
+    out = few[src]
+    if COPYABLE_SEEDS == "largest":
+        return out & (prep.size_class[seed_src] == top[src]), out
+    return out, out
+
+
 def copyable(ok: np.ndarray, pslot: np.ndarray, parent_free: np.ndarray) -> np.ndarray:
     """The proposals of ``ok`` that :func:`_kernels.place_proposals` can copy: not an
     orphan (``pslot == -2``: its parent lies outside the candidate's neighbourhood), and
@@ -2510,20 +2537,29 @@ def grow(
                 # an exemplar's largest class comes only from the copy of the nearest
                 # seed (departure from §5.1, see _not_owned; >= OWN_CLASSES size classes)
                 okp &= ~_not_owned(prep, seed_pos, seed_of, ppos, exv)
+            gen = okp
             if COPYABLE_ONLY:
                 # a candidate whose passing proposals are all orphans cannot generate (see
                 # copyable); a child whose parent lies beyond the region's edge does not count
                 # either (s27t: counting it, such candidates were taken and the edge band
                 # grew dots without discs: clusters variants 1/3 at 2x, seed 2, dots within
                 # 1.3 ring radii of a disc 0.885/0.864 against main's 0.92/0.93, where
-                # test_untuned_cluster_variants_are_faithful asks > 0.9; without it 0.939/0.906)
-                okp = copyable(okp, pslot, np.zeros_like(parent_free))
+                # test_untuned_cluster_variants_are_faithful asks > 0.9). Only the choice of
+                # the candidate asks this: the chosen one's proposals are copied as before,
+                # a child of a parent beyond the edge too (s28k: dropping those from the
+                # copy left a seam against a context, test_synth_context's density 1.19)
+                gen = copyable(okp, pslot, np.zeros_like(parent_free))
+                screened, few = _copyable_seeds(prep, src[seeds])
+                other = okp
+                if COPYABLE_EDGE:
+                    other = okp & ~((pslot >= 0) & parent_free[np.maximum(pslot, 0)] & few[seed_of])
+                gen = np.where(screened[seed_of], gen, other)
             # larger size classes first, and within a class the anchors (see anchors),
             # then its clearly larger kinds (see _larger_in_class)
             order_key = 2 * prep.size_class[exv] + anchors(prep)[exv] + _larger_in_class(prep)[exv]
             if phase == 0:
                 _prefer_near_large(state, seeds, cands, costs, slack, prm.c, okp, exv, out_ptr)
-            placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, 1.0, cell, pslot, parent_free, order_key)
+            placed, s_ok = K.place_proposals(costs, slack, out_ptr, count, ppos, pr, prep.skind[exv], prep.min_dist, okp, prm.c, 1.0, cell, pslot, parent_free, order_key, gen)
             new_idx = np.flatnonzero(placed)
             if phase == 0 and shape_test and len(new_idx):
                 # shapes, not only shrunk discs, must not overlap (see _shapes.shape_clashes);
@@ -2624,6 +2660,7 @@ def grow(
         if _thin.THIN_ORPHANS:
             _thin.thin_orphans(state, since=start_n)
         _thin.thin_crowded(state, since=start_n)
+        _thin.thin_edge_strays(state, since=start_n)
     rep.done(state.n - start_n)
     return state.n - start_n
 

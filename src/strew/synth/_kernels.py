@@ -435,7 +435,7 @@ def snap_to_slots(targets, anchor_pos, anchor_src, cptr, cidx, e_pos, rc, ex, po
 
 
 @numba.njit(cache=True, nogil=True)
-def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell, pslot, parent_free, prop_cls):
+def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min_dist, prop_ok, c_ratio, factor, cell, pslot, parent_free, prop_cls, prop_gen):
     """Generation over seeds (Algorithm 1, §5.1), larger elements first.
 
     For each seed, candidates are visited by increasing distance; the best one ``e_0``
@@ -444,6 +444,11 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
     ``|n(s) - n(e_i)| <= c |n(s) - n(e_0)| + slack`` (the ratio test of §5.1); a seed whose
     candidates all fail is abandoned. The chosen candidates' elements are then copied
     unless they intersect elements copied earlier in this step.
+
+    Extension of §5.1: whether a candidate "can generate" is asked of ``prop_gen`` (a
+    subset of ``prop_ok``: the proposals :func:`_grow.copyable` counts), while the
+    chosen candidate's elements copied are all of its ``prop_ok`` ones (as before). With
+    ``prop_gen = prop_ok`` this is the paper's rule.
 
     Departure (§4.1, §7 "significant differences in element size ... are not
     supported"): the copies of all seeds are placed in order of decreasing size class
@@ -483,6 +488,9 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
     parent_free : (P,) bool
     prop_cls : (P,) int
         Size class of each proposal.
+    prop_gen : (P,) bool
+        Proposals that make their candidate count as able to generate (within
+        ``prop_ok``).
 
     Returns
     -------
@@ -511,14 +519,19 @@ def place_proposals(costs, slack, out_ptr, count, prop_pos, prop_r, prop_sk, min
             if cj == INF or cj > c_ratio * d0 + slack[i]:
                 break  # bad suggestion: abandon the seed (§5.1)
             w = out_ptr[i * k + j]
-            m0 = m
+            gen = False
+            for t in range(w, w + count[i * k + j]):
+                if prop_gen[t]:
+                    gen = True
+                    break
+            if not gen:
+                continue
             for t in range(w, w + count[i * k + j]):
                 if prop_ok[t]:
                     sel[m] = t
                     owner[m] = i
                     m += 1
-            if m > m0:
-                break
+            break
     if m == 0:
         return placed, seed_ok
     x0 = INF
