@@ -2302,18 +2302,36 @@ generate (:func:`copyable`); off: every proposal that passed the static checks c
 
 
 COPYABLE_SEEDS = "largest"
-"""Seeds whose candidates :func:`copyable` screens: ``"largest"`` those of their
-exemplar's largest size class (see :func:`_seed_largest`), ``"all"`` every seed."""
+"""Seeds whose candidates :func:`copyable` screens, in exemplars of fewer than
+:data:`OWN_CLASSES` size classes (see :func:`_copyable_seeds`): ``"largest"`` those of
+the exemplar's largest size class, ``"all"`` every seed.
+
+s28k, with the copy of the chosen candidate left as before: every seed screened, two
+sizes h5s11 at 3.5x (``tests/synth/test_synth_sp_sized_scatter.py``, ``python
+benchmarks/s28k_h5s11.py all``) failed nn[pebble>pebble] 0.0646/0.061 at seed 1 (main
+0.0576; ``"largest"`` 0.0472): a pebble seed whose best candidate offered only orphan
+pebbles took the next one instead of giving up, and pebbles crowded pebbles. Far
+clusters need only the disc seeds screened (s27k: a dot seed's candidates had no
+copyable proposal at all). In exemplars of three classes or more, with every seed
+screened, three sizes' rare middle class and large stones grew past their shares
+(``test_synth_sm_middle_share.py`` [12] 1.205 > 1.2, ``test_synth_ssz_kind_ladder.py``
+[9] large 1.55 > 1.35), where :func:`_not_owned` and the owed classes set the largest
+class's growth."""
 
 
 COPYABLE_EDGE = True
+"""Seeds :func:`copyable` does not screen (in exemplars of fewer than
+:data:`OWN_CLASSES` size classes) pass over a candidate whose passing proposals are all
+children of parents beyond the region's edge (``parent_free``); the chosen candidate's
+such children are still copied. Measured on one draw only (clusters variant 1 at 2x,
+seed 2, dots near a disc 0.893 -> 0.896, ``python benchmarks/s28k_untuned.py largest
+1 0|1 2``)."""
 
 
-def _copyable_seeds(prep, seed_src: np.ndarray) -> np.ndarray:
-    """(ns,) bool: the seeds whose candidates :func:`copyable` screens (see
-    :data:`COPYABLE_SEEDS`): in exemplars of fewer than :data:`OWN_CLASSES` size classes
-    (visible selected elements), with ``"largest"`` only seeds of the exemplar's largest
-    size class."""
+def _copyable_seeds(prep, seed_src: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The seeds whose candidates :func:`copyable` screens (see :data:`COPYABLE_SEEDS`)
+    and the seeds of exemplars of fewer than :data:`OWN_CLASSES` size classes (visible
+    selected elements), each (ns,) bool."""
     sel = prep.selected_elements & ~prep.void
     top = np.full(len(prep.names), -1, np.int64)
     np.maximum.at(top, prep.source[sel], prep.size_class[sel])
@@ -2547,7 +2565,10 @@ def grow(
                 # test_untuned_cluster_variants_are_faithful asks > 0.9). Only the choice of
                 # the candidate asks this: the chosen one's proposals are copied as before,
                 # a child of a parent beyond the edge too (s28k: dropping those from the
-                # copy left a seam against a context, test_synth_context's density 1.19)
+                # copy left a seam against a context, test_synth_context's density 1.19).
+                # Only seeds of the largest class of exemplars of one or two size classes
+                # (see COPYABLE_SEEDS); the other seeds there pass over candidates offering
+                # only children of parents beyond the edge (see COPYABLE_EDGE)
                 gen = copyable(okp, pslot, np.zeros_like(parent_free))
                 screened, few = _copyable_seeds(prep, src[seeds])
                 other = okp
