@@ -94,8 +94,8 @@ def _gp(*a):
     return r
 
 
-def _pp(costs, slack, out_ptr, count, ppos, pr, psk, md, ok, c, f, cell, pslot, pfree, okey):
-    placed, sok = _pp0(costs, slack, out_ptr, count, ppos, pr, psk, md, ok, c, f, cell, pslot, pfree, okey)
+def _pp(costs, slack, out_ptr, count, ppos, pr, psk, md, ok, c, f, cell, pslot, pfree, okey, gen):
+    placed, sok = _pp0(costs, slack, out_ptr, count, ppos, pr, psk, md, ok, c, f, cell, pslot, pfree, okey, gen)
     st = CAP.get("state")
     ex = CAP["ex"]
     prep = CAP["prep"]

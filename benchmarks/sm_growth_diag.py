@@ -50,8 +50,8 @@ G._not_owned = not_owned
 _pp = K.place_proposals
 
 
-def place(costs, slack, out_ptr, count, ppos, pr, skind, md, okp, c, w, cell, pslot, pfree, order_key):
-    placed, s_ok = _pp(costs, slack, out_ptr, count, ppos, pr, skind, md, okp, c, w, cell, pslot, pfree, order_key)
+def place(costs, slack, out_ptr, count, ppos, pr, skind, md, okp, c, w, cell, pslot, pfree, order_key, gen):
+    placed, s_ok = _pp(costs, slack, out_ptr, count, ppos, pr, skind, md, okp, c, w, cell, pslot, pfree, order_key, gen)
     CUR["placed"] = placed.copy()
     CUR["okp"] = okp.copy()
     return placed, s_ok
