@@ -7,13 +7,12 @@ growth stopped at 0.07-0.09 of the exemplar's density."""
 from __future__ import annotations
 
 import numpy as np
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.metrics import fidelity
 from strew.synth import synthesize
 from strew.synth._grow import copyable
-
-from strew_testing import fidelity_suite
 
 suite = fidelity_suite()
 

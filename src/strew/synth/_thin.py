@@ -316,8 +316,6 @@ def thin_crowded(state: SynthState, since: int = 0) -> int:
     for k in np.unique(prep.skind[kids]):
         if not np.isfinite(dens[k]) or np.any(prep.skind[parents] == k):
             continue  # leaf kinds only, as thin_orphans
-        # how many children of kind k each exemplar parent holds
-        held_ex = np.bincount(prep.parent[kids & (prep.skind == k)], minlength=len(prep.pos))
         of_k = kind == k
         surplus = int(np.count_nonzero(of_k & ins)) - int(np.floor(dens[k] * float(inner.area)))
         # nor more than the whole region holds above the exemplar's whole density: a region
