@@ -162,6 +162,36 @@ THIN_ORPHANS = True
 (see :func:`thin_orphans`)."""
 
 
+def _parent_copies_near(state: SynthState, vis: np.ndarray, tree: cKDTree, c: int) -> np.ndarray:
+    """Copies of output element ``vis[c]``'s exemplar parent within the orphan tests' reach.
+
+    Parameters
+    ----------
+    state : SynthState
+    vis : (m,) int array
+        Output indices of the visible elements; ``tree`` is built on ``state.pos[vis]``.
+    tree : cKDTree
+    c : int
+        Index into ``vis`` of a child (its exemplar parent is ``>= 0``).
+
+    Returns
+    -------
+    (q,) int64 array
+        Indices into ``vis`` of the parent's copies within 1.2 times the exemplar's
+        parent-child offset plus the child's radius.
+    """
+    prep, src = state.prep, state.src
+    e = src[vis[c]]
+    off = float(np.hypot(*(prep.pos[e] - prep.pos[prep.parent[e]])))
+    near = np.asarray(tree.query_ball_point(state.pos[vis[c]], 1.2 * off + float(prep.r[e])), np.int64)
+    return near[src[vis[near]] == prep.parent[e]]
+
+
+def _q10(prep, mine: np.ndarray) -> float:
+    """Tenth percentile of the nearest same-kind distance among exemplar elements ``mine`` (n,)."""
+    return float(np.quantile(cKDTree(prep.pos[mine]).query(prep.pos[mine], 2)[0][:, 1], 0.1))
+
+
 def thin_orphans(state: SynthState, since: int = 0) -> int:
     """Remove output children (``_prepare.parents``: a smaller element leaning on a
     parent) that stand without a copy of their exemplar parent beside them, where their
@@ -219,10 +249,7 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
         cand = np.flatnonzero(of_k & ins & (par >= 0) & (vis >= since) & ~ring[src[vis]])
         orphan = np.zeros(len(cand), bool)
         for j, c in enumerate(cand):
-            p = par[c]
-            off = float(np.hypot(*(prep.pos[src[vis[c]]] - prep.pos[p])))
-            near = tree.query_ball_point(state.pos[vis[c]], 1.2 * off + float(prep.r[src[vis[c]]]))
-            orphan[j] = not np.any(src[vis[near]] == p)
+            orphan[j] = not len(_parent_copies_near(state, vis, tree, c))
         cand = cand[orphan]
         if not len(cand):
             continue
@@ -232,7 +259,7 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
         mine = np.flatnonzero(prep.selected_elements & ~prep.void & (prep.skind == k))
         if len(mine) < 2:
             continue
-        q10 = float(np.quantile(cKDTree(prep.pos[mine]).query(prep.pos[mine], 2)[0][:, 1], 0.1))
+        q10 = _q10(prep, mine)
         sq = dd < q10
         cand, dd = cand[sq], dd[sq]
         drop.append(vis[cand[np.argsort(dd, kind="stable")[:surplus]]])
@@ -334,10 +361,7 @@ def thin_crowded(state: SynthState, since: int = 0) -> int:
         # each child's owner: the nearest copy of its exemplar parent within thin_orphans' reach
         owner = np.full(len(mine), -1, np.int64)
         for j, c in enumerate(mine):
-            p = par[c]
-            off = float(np.hypot(*(prep.pos[src[vis[c]]] - prep.pos[p])))
-            near = np.asarray(tree.query_ball_point(pos[c], 1.2 * off + float(prep.r[src[vis[c]]])), np.int64)
-            near = near[src[vis[near]] == p]
+            near = _parent_copies_near(state, vis, tree, c)
             if len(near):
                 owner[j] = near[np.argmin(np.hypot(*(pos[near] - pos[c]).T))]
         free = (vis[mine] >= since) & ins[mine] & ~ring[src[vis[mine]]]
@@ -409,14 +433,11 @@ def thin_edge_strays(state: SynthState, since: int = 0) -> int:
             continue
         orphan = np.zeros(len(cand), bool)
         for j, c in enumerate(cand):
-            p = par[c]
-            off = float(np.hypot(*(prep.pos[src[vis[c]]] - prep.pos[p])))
-            near = tree.query_ball_point(state.pos[vis[c]], 1.2 * off + float(prep.r[src[vis[c]]]))
-            orphan[j] = not np.any(src[vis[near]] == p)
+            orphan[j] = not len(_parent_copies_near(state, vis, tree, c))
         cand = cand[orphan]
         if not len(cand):
             continue
-        q10 = float(np.quantile(cKDTree(prep.pos[mine]).query(prep.pos[mine], 2)[0][:, 1], 0.1))
+        q10 = _q10(prep, mine)
         kt = cKDTree(state.pos[vis[of_k]])
         dd = kt.query(state.pos[vis[cand]], 2)[0][:, 1]
         # of two squeezed strays, one goes: each taken in order of squeeze, the other kept
