@@ -24,6 +24,10 @@ MIDDLE_WHOLE = True
 at least its whole-frame density in :func:`_inner_density` (off: the inner frame's
 count alone)."""
 
+MIDDLE_WHOLE_SE = 2.0
+"""... where its inner frame's count falls this many binomial standard errors below the
+frame's share of the kind's whole count (:func:`_inner_density`)."""
+
 
 def _inner_density(prep, margin: float) -> np.ndarray:
     """(S,) float per kind-in-exemplar class (``Prepared.skind``): visible selected
@@ -64,8 +68,13 @@ def _inner_density(prep, margin: float) -> np.ndarray:
             lo, hi = prep.size_class[mine].min(), prep.size_class[mine].max()
             mid = np.unique(prep.skind[mine & (prep.size_class > lo) & (prep.size_class < hi)])
             if len(mid):
-                whole = np.bincount(prep.skind[mine], minlength=S)[mid] / float(dom.area)
-                out[mid] = np.maximum(out[mid], whole)
+                # only where the inner frame holds fewer than its share of the kind by
+                # more than two binomial standard errors (the frame's edge took them)
+                n_all = np.bincount(prep.skind[mine], minlength=S)[mid].astype(float)
+                n_in = np.bincount(prep.skind[ids], minlength=S)[mid].astype(float)
+                p = float(inner.area) / float(dom.area)
+                short = n_in < p * n_all - MIDDLE_WHOLE_SE * np.sqrt(n_all * p * (1.0 - p))
+                out[mid] = np.where(short, np.maximum(out[mid], n_all / float(dom.area)), out[mid])
     return out
 
 
