@@ -162,6 +162,26 @@ THIN_ORPHANS = True
 (see :func:`thin_orphans`)."""
 
 
+def _inner_region(state: SynthState):
+    """The region eroded by two of the exemplar's largest collision radii, where the
+    thinning passes compare densities; ``(margin, None)`` where too little of it is left
+    (a quarter of the region's area or less)."""
+    margin = 2.0 * float(state.prep.rc.max())
+    inner = state.region.geometry.buffer(-margin)
+    if inner.is_empty or inner.area <= 0.25 * state.region.geometry.area:
+        return margin, None
+    return margin, inner
+
+
+def _remove_dropped(state: SynthState, drop: list) -> int:
+    """Remove the output elements listed in the arrays ``drop``; returns how many went."""
+    if not drop:
+        return 0
+    keep = np.ones(state.n, bool)
+    keep[np.concatenate(drop)] = False
+    return state.remove(~keep)
+
+
 def _parent_copies_near(state: SynthState, vis: np.ndarray, tree: cKDTree, c: int) -> np.ndarray:
     """Copies of output element ``vis[c]``'s exemplar parent within the orphan tests' reach.
 
@@ -217,9 +237,8 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
     prep = state.prep
     if np.count_nonzero(prep.selected) != 1 or state.region is None or state.n <= since:
         return 0
-    margin = 2.0 * float(prep.rc.max())
-    inner = state.region.geometry.buffer(-margin)
-    if inner.is_empty or inner.area <= 0.25 * state.region.geometry.area:
+    margin, inner = _inner_region(state)
+    if inner is None:
         return 0
     dens = _inner_density(prep, margin)
     src = state.src
@@ -263,11 +282,7 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
         sq = dd < q10
         cand, dd = cand[sq], dd[sq]
         drop.append(vis[cand[np.argsort(dd, kind="stable")[:surplus]]])
-    if not drop:
-        return 0
-    keep = np.ones(state.n, bool)
-    keep[np.concatenate(drop)] = False
-    return state.remove(~keep)
+    return _remove_dropped(state, drop)
 
 
 THIN_CROWDED = True
@@ -320,9 +335,8 @@ def thin_crowded(state: SynthState, since: int = 0) -> int:
     prep = state.prep
     if not THIN_CROWDED or np.count_nonzero(prep.selected) != 1 or state.region is None or state.n <= since:
         return 0
-    margin = 2.0 * float(prep.rc.max())
-    inner = state.region.geometry.buffer(-margin)
-    if inner.is_empty or inner.area <= 0.25 * state.region.geometry.area:
+    margin, inner = _inner_region(state)
+    if inner is None:
         return 0
     dens = _inner_density(prep, margin)
     src = state.src[: state.n]
@@ -371,11 +385,7 @@ def thin_crowded(state: SynthState, since: int = 0) -> int:
         # parent's copy; within each, those nearest another of their kind first
         order = np.lexsort((crowd[cand], owner[cand] >= 0))
         drop.append(vis[mine[cand[order[:surplus]]]])
-    if not drop:
-        return 0
-    keep = np.ones(state.n, bool)
-    keep[np.concatenate(drop)] = False
-    return state.remove(~keep)
+    return _remove_dropped(state, drop)
 
 
 THIN_EDGE_STRAYS = True
@@ -406,9 +416,8 @@ def thin_edge_strays(state: SynthState, since: int = 0) -> int:
     prep = state.prep
     if not THIN_EDGE_STRAYS or np.count_nonzero(prep.selected) != 1 or state.region is None or state.n <= since:
         return 0
-    margin = 2.0 * float(prep.rc.max())
-    inner = state.region.geometry.buffer(-margin)
-    if inner.is_empty or inner.area <= 0.25 * state.region.geometry.area:
+    _, inner = _inner_region(state)
+    if inner is None:
         return 0
     src = state.src
     vis = np.flatnonzero(~prep.void[src[: state.n]])
@@ -451,8 +460,4 @@ def thin_edge_strays(state: SynthState, since: int = 0) -> int:
             if np.any(~gone[near[near != c]]):
                 gone[c] = True
         drop.append(np.flatnonzero(gone))
-    if not drop:
-        return 0
-    keep = np.ones(state.n, bool)
-    keep[np.concatenate(drop)] = False
-    return state.remove(~keep)
+    return _remove_dropped(state, drop)
