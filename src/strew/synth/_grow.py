@@ -2645,6 +2645,11 @@ def grow(
         state.wrap()
         trade_far_small(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
         state.unwrap()
+        from ._farmix import trade_far_top  # (lazy: it imports this module)
+
+        state.wrap()
+        trade_far_top(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
+        state.unwrap()
         from ._shell import fill_beside_far_small  # (lazy: it imports this module)
 
         state.wrap()
