@@ -14,7 +14,7 @@ from strew_testing import fidelity_suite
 from strew import Region
 from strew.synth import synthesize
 
-H6 = dict(size=150.0, counts=(80, 20, 30))
+H6 = {"size": 150.0, "counts": (80, 20, 30)}
 
 
 def _far_large(arr, far: float) -> float:

@@ -82,7 +82,7 @@ def _trade_at(
     mask[gone] = True
     state.remove(mask)
     state.add(ids[rank[0] : rank[0] + 1], p[None], horizon=False)
-    return int(len(gone))
+    return len(gone)
 
 
 def trade_far_small(state: SynthState, room: int | None = None, since: int = 0) -> int:
