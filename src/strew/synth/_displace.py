@@ -82,6 +82,40 @@ def _inner_density(prep, margin: float) -> np.ndarray:
     return out
 
 
+
+def _inner_deficit(state: SynthState, kinds: np.ndarray):
+    """Each kind's shortfall inside the region against the exemplar's inner density.
+
+    Parameters
+    ----------
+    state : SynthState
+    kinds : (m,) int array
+        Exemplar kinds (``prep.skind`` values) to budget; others get 0.
+
+    Returns
+    -------
+    tuple or None
+        ``(inner, vis, budget)``: the region eroded by two of the largest collision
+        radii (a shapely geometry), the output indices of visible elements ``(v,)``, and
+        per kind the number of elements short of the exemplar's inner density ``(S,)``;
+        ``None`` where a quarter of the region's area or less is left inside.
+    """
+    prep = state.prep
+    margin = 2.0 * float(prep.rc.max())
+    dens = _inner_density(prep, margin)
+    geom = state.region.geometry
+    inner = geom.buffer(-margin)
+    if inner.is_empty or inner.area <= 0.25 * geom.area:
+        return None
+    vis = np.flatnonzero(~prep.void[state.src[: state.n]])
+    inn = vis[shapely.contains_xy(inner, state.pos[vis, 0], state.pos[vis, 1])]
+    have = np.bincount(prep.skind[state.src[inn]], minlength=len(dens))
+    budget = np.zeros(len(dens), np.int64)
+    for k in np.unique(kinds):
+        if np.isfinite(dens[k]):
+            budget[k] = max(0, int(np.floor(dens[k] * float(inner.area) - have[k])))
+    return inner, vis, budget
+
 def fill_displaced(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Give a kind its exemplar leaves (nearly) no room for (``_grow._room_rate``: thrown
     to saturation) the places in the output that smaller elements took from it, until

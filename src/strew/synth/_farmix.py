@@ -214,7 +214,7 @@ def trade_far_top(state: SynthState, room: int | None = None, since: int = 0) ->
     exemplars of at least :data:`FAR_CLASSES` size classes, one exemplar filling the
     region, no shape test.
     """
-    from ._displace import _inner_density  # (lazy: _displace imports _grow)
+    from ._displace import _inner_deficit  # (lazy: _displace imports _grow)
     from ._grow import _saturated_candidates  # (lazy: _grow imports this module)
     from ._shell import SHELL_LEVELS
 
@@ -241,21 +241,11 @@ def trade_far_top(state: SynthState, room: int | None = None, since: int = 0) ->
         return 0
     far = float(np.quantile(cKDTree(emid).query(etop)[0], TOP_FAR_Q))
     # budget: the middle kinds' deficit against their exemplar density (as fill_displaced)
-    margin = 2.0 * float(prep.rc.max())
-    dens = _inner_density(prep, margin)
-    geom = state.region.geometry
-    inner = geom.buffer(-margin)
-    if inner.is_empty or inner.area <= 0.25 * geom.area:
+    deficit = _inner_deficit(state, prep.skind[cand])
+    if deficit is None:
         return 0
-    S = len(dens)
-    n = state.n
-    vis = np.flatnonzero(~prep.void[state.src[:n]])
-    inn = vis[shapely.contains_xy(inner, state.pos[vis, 0], state.pos[vis, 1])]
-    have = np.bincount(prep.skind[state.src[inn]], minlength=S)
-    budget = np.zeros(S, np.int64)
-    for k in np.unique(prep.skind[cand]):
-        if np.isfinite(dens[k]):
-            budget[k] = max(0, int(np.floor(dens[k] * float(inner.area) - have[k])))
+    _, vis, budget = deficit
+    geom = state.region.geometry
     cand = cand[budget[prep.skind[cand]] > 0]
     if len(cand) == 0:
         return 0

@@ -231,7 +231,7 @@ def fill_beside_far_small(state: SynthState, room: int | None = None, since: int
     counts it). Only exemplars of at least
     :data:`SHELL_CLASSES` size classes, one exemplar filling the region, no shape test.
     """
-    from ._displace import _inner_density  # (lazy: _displace imports _grow)
+    from ._displace import _inner_deficit  # (lazy: _displace imports _grow)
     from ._grow import (  # (lazy: _grow imports this module)
         _ranked_fits,
         _saturated_candidates,
@@ -261,21 +261,11 @@ def fill_beside_far_small(state: SynthState, room: int | None = None, since: int
     # stones among 34 large, nn[medium>medium] 0.934 -> 1.011)
     far_mm = float(np.quantile(cKDTree(emid).query(emid, k=2)[0][:, 1], MID_FAR_Q))
     # budget: the middle kinds' deficit against their exemplar density (as fill_displaced)
-    margin = 2.0 * float(prep.rc.max())
-    dens = _inner_density(prep, margin)
-    geom = state.region.geometry
-    inner = geom.buffer(-margin)
-    if inner.is_empty or inner.area <= 0.25 * geom.area:
+    deficit = _inner_deficit(state, prep.skind[cand])
+    if deficit is None:
         return 0
-    S = len(dens)
+    _, vis, budget = deficit
     n = state.n
-    vis = np.flatnonzero(~prep.void[state.src[:n]])
-    inn = vis[shapely.contains_xy(inner, state.pos[vis, 0], state.pos[vis, 1])]
-    have = np.bincount(prep.skind[state.src[inn]], minlength=S)
-    budget = np.zeros(S, np.int64)
-    for k in np.unique(prep.skind[cand]):
-        if np.isfinite(dens[k]):
-            budget[k] = max(0, int(np.floor(dens[k] * float(inner.area) - have[k])))
     if room is not None:
         budget = np.minimum(budget, room)
     cand = cand[budget[prep.skind[cand]] > 0]
