@@ -85,6 +85,36 @@ def _trade_at(
     return len(gone)
 
 
+def _far_setup(state: SynthState):
+    """What :func:`trade_far_small` and :func:`trade_far_top` both start from.
+
+    Returns
+    -------
+    tuple or None
+        ``(s, sel, top, mid, low, cand)``: the selected exemplar's index, its visible
+        elements ``(n,)`` bool, its largest, middle and smallest size classes, and the saturated middle-class
+        candidates ``(m,)`` that lean on something; ``None`` where the trades do not apply
+        (fewer than three elements, no region, a shape test, several exemplars, fewer than
+        :data:`FAR_CLASSES` size classes, or no candidate).
+    """
+    from ._grow import _saturated_candidates  # (lazy: _grow imports this module)
+
+    prep = state.prep
+    if state.n < 3 or state.region is None or shape_test_needed(prep) or np.count_nonzero(prep.selected) != 1:
+        return None
+    s = int(np.flatnonzero(prep.selected)[0])
+    sel = prep.selected_elements & ~prep.void & (prep.source == s)
+    ucls = np.unique(prep.size_class[sel])
+    if len(ucls) < FAR_CLASSES:
+        return None
+    top, mid, low = int(ucls.max()), int(ucls[-2]), int(ucls.min())
+    cand = _saturated_candidates(prep)
+    cand = cand[(prep.size_class[cand] == mid) & (prep.parent[cand] != -3)]
+    if len(cand) == 0:
+        return None
+    return s, sel, top, mid, low, cand
+
+
 def trade_far_small(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Where a window of the output (a disc of the exemplar's area) holds more smallest
     stones per middle-class stone far from its largest stones than the exemplar does,
@@ -105,21 +135,12 @@ def trade_far_small(state: SynthState, room: int | None = None, since: int = 0) 
     distances. The candidate whose neighbourhood matches best (Eq. 1,
     ``_grow._ranked_fits``, as ``fill_room``) among those that fit.
     """
-    from ._grow import _saturated_candidates  # (lazy: _grow imports this module)
 
     prep = state.prep
-    if state.n < 3 or state.region is None or shape_test_needed(prep) or np.count_nonzero(prep.selected) != 1:
+    far_setup = _far_setup(state)
+    if far_setup is None:
         return 0
-    s = int(np.flatnonzero(prep.selected)[0])
-    sel = prep.selected_elements & ~prep.void & (prep.source == s)
-    ucls = np.unique(prep.size_class[sel])
-    if len(ucls) < FAR_CLASSES:
-        return 0
-    top, mid, low = int(ucls.max()), int(ucls[-2]), int(ucls.min())
-    cand = _saturated_candidates(prep)
-    cand = cand[(prep.size_class[cand] == mid) & (prep.parent[cand] != -3)]
-    if len(cand) == 0:
-        return 0
+    s, sel, top, mid, low, cand = far_setup
     # the exemplar's far distance and its far smallest : middle ratio
     epos, ecls = prep.pos[sel], prep.size_class[sel]
     ebig = epos[ecls == top]
@@ -215,22 +236,13 @@ def trade_far_top(state: SynthState, room: int | None = None, since: int = 0) ->
     region, no shape test.
     """
     from ._displace import _inner_deficit  # (lazy: _displace imports _grow)
-    from ._grow import _saturated_candidates  # (lazy: _grow imports this module)
     from ._shell import SHELL_LEVELS
 
     prep = state.prep
-    if not TOP_TRADE or state.n < 3 or state.region is None or shape_test_needed(prep) or np.count_nonzero(prep.selected) != 1:
+    far_setup = _far_setup(state) if TOP_TRADE else None
+    if far_setup is None:
         return 0
-    s = int(np.flatnonzero(prep.selected)[0])
-    sel = prep.selected_elements & ~prep.void & (prep.source == s)
-    ucls = np.unique(prep.size_class[sel])
-    if len(ucls) < FAR_CLASSES:
-        return 0
-    top, mid, low = int(ucls.max()), int(ucls[-2]), int(ucls.min())
-    cand = _saturated_candidates(prep)
-    cand = cand[(prep.size_class[cand] == mid) & (prep.parent[cand] != -3)]
-    if len(cand) == 0:
-        return 0
+    _, sel, top, mid, low, cand = far_setup
     etop, emid = prep.pos[sel & (prep.size_class == top)], prep.pos[sel & (prep.size_class == mid)]
     if len(etop) < 3 or len(emid) < 3:
         return 0
