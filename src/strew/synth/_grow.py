@@ -15,7 +15,7 @@ from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
 from ._prepare import OPEN_ROOM, anchor_mask, open_room_share
-from ._shapes import shape_clashes, shape_test_needed
+from ._shapes import element_geometries, shape_clashes, shape_test_needed
 from ._state import SynthState, map_offsets
 
 __all__ = ["grow", "seed_patch", "fill", "brush", "erase", "update_free_space", "texture_regions"]
@@ -1322,6 +1322,110 @@ def neighbour_limits(prep) -> np.ndarray:
     return out
 
 
+SHAPE_CROWD = True
+"""Growth keeps each copy of an elongated kind no more crowded, counted by shape, than
+its exemplar element (see :func:`shape_limits`; off: the shape test alone)."""
+
+
+SHAPE_CROWD_NEIGHBOURS = False
+"""Whether :func:`_shape_crowded` also keeps the copy's output neighbours within their
+limits (on: p0s21 seed 1 fell to 0.81x the exemplar's density)."""
+
+
+def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
+    """Shape-measured neighbour limits for elongated kinds. Computed once per ``prep``.
+
+    Returns ``(lim, reach)``: ``lim`` (n,) int, the most output shapes that may come
+    within ``reach`` (n,) float of a copy of each exemplar element's shape, or -1 for
+    no limit.
+
+    Extension of §4.1 and §5.1 (issue 13): :func:`neighbour_limits` counts neighbours by
+    centres within r-bar, which for sticks says little about room (a stick crossing the
+    disc's edge crowds as much as one whose centre lies inside), so it is off for
+    elongated kinds, and growth fills their exemplar's unsaturated room to near
+    saturation (default and long sticks 9-19 % too dense, benchmarks/results/
+    s29s_findings.txt). Here the room is measured by shape: an element's count is the
+    number of other shapes of its exemplar within ``reach`` of its shape, ``reach``
+    its kind's bounding radius, scaled up by the share of its shape's ``reach``
+    neighbourhood inside the domain (rounded); elements with under half of it inside
+    get no limit. Only one-kind exemplars without voids or overlaps whose collision
+    discs are shrunk (``_shapes.SHRUNK``) take part.
+    """
+    got = getattr(prep, "_shape_limits", None)
+    if got is not None and len(got[0]) == len(prep.kind):
+        return got
+    from ._shapes import SHRUNK
+
+    out = np.full(len(prep.kind), -1, np.int64)
+    reach = np.asarray(prep.r, float).copy()
+    if prep.overlap_free:
+        for s, dom in enumerate(prep.domains):
+            ids = np.flatnonzero(prep.source == s)
+            if len(ids) < 3 or prep.void[ids].any() or len(np.unique(prep.kind[ids])) != 1:
+                continue
+            if not np.all(prep.rc[ids] < SHRUNK * prep.r[ids]):
+                continue
+            g = element_geometries(prep, ids, prep.pos[ids])
+            d = reach[ids]
+            tree = shapely.STRtree(g)
+            a, b = tree.query(g, predicate="dwithin", distance=float(d.max()))
+            keep = a != b
+            a, b = a[keep], b[keep]
+            close = shapely.dwithin(g[a], g[b], d[a])
+            cnt = np.bincount(a[close], minlength=len(ids))
+            zone = shapely.buffer(g, d, quad_segs=8)
+            share = shapely.area(shapely.intersection(zone, dom)) / shapely.area(zone)
+            ok = share >= 0.5
+            out[ids[ok]] = np.round(cnt[ok] / share[ok]).astype(np.int64)
+    prep._shape_limits = (out, reach)
+    return prep._shape_limits
+
+
+def _shape_crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, lim: np.ndarray, reach: np.ndarray) -> np.ndarray:
+    """(m,) bool: copies of ``src`` at ``pts`` that would have, or give a visible output
+    shape within their ``reach``, more shapes within ``reach`` than ``lim`` allows (see
+    :func:`shape_limits`)."""
+    prep = state.prep
+    m = len(pts)
+    out = np.zeros(m, bool)
+    if state.n == 0 or m == 0 or not (lim[src] >= 0).any():
+        return out
+    pts = np.ascontiguousarray(pts, dtype=float)
+    rmax = float(prep.r.max())
+    span = 2.0 * rmax + float(reach.max())
+    # output shapes a copy may come within reach of, and their own neighbours
+    near = np.flatnonzero(K.near_any(np.ascontiguousarray(state.pos), pts, 2.0 * span) & ~prep.void[state.src])
+    if len(near) == 0:
+        return out
+    opos, osrc = state.pos[near], state.src[near]
+    og = element_geometries(prep, osrc, opos)
+    g = element_geometries(prep, src, pts)
+    otree = shapely.STRtree(og)
+    a, b = otree.query(g, predicate="dwithin", distance=float(reach.max()))
+    close = shapely.dwithin(g[a], og[b], reach[src[a]])
+    a, b = a[close], b[close]
+    own = lim[src]
+    cnt = np.bincount(a, minlength=m)
+    out |= (own >= 0) & (cnt > own)
+    if not SHAPE_CROWD_NEIGHBOURS:
+        return out
+    # output shapes within reach of a copy whose neighbourhood is full already (their
+    # centres lie within span of the copy, so all their neighbours are in ``near``)
+    olim = lim[osrc]
+    cand = np.unique(b[olim[b] >= 0])
+    if len(cand) == 0:
+        return out
+    ca, cb = otree.query(og[cand], predicate="dwithin", distance=float(reach.max()))
+    keep = cand[ca] != cb
+    ca, cb = ca[keep], cb[keep]
+    cc = shapely.dwithin(og[cand[ca]], og[cb], reach[osrc[cand[ca]]])
+    ocnt = np.bincount(ca[cc], minlength=len(cand))
+    full = np.zeros(len(og), bool)
+    full[cand[ocnt >= olim[cand]]] = True
+    out |= np.bincount(a[full[b]], minlength=m) > 0
+    return out
+
+
 def _crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, lim: np.ndarray) -> np.ndarray:
     """(m,) bool: copies of ``src`` at ``pts`` that would give themselves, or a visible
     output element within its r-bar of them, more neighbours within r-bar than ``lim``
@@ -2462,6 +2566,9 @@ def grow(
     lim = neighbour_limits(prep) if CROWD_RULE else None
     if lim is not None and not (lim[prep.selected_elements] >= 0).any():
         lim = None
+    slim = shape_limits(prep) if SHAPE_CROWD and shape_test else None
+    if slim is not None and not (slim[0][prep.selected_elements] >= 0).any():
+        slim = None
     for _ in range(max_iterations):
         state.iterations += 1
         hz = np.flatnonzero(state.horizon)
@@ -2546,6 +2653,9 @@ def grow(
                     if lim is not None and not hard.all():
                         rest = np.flatnonzero(~hard)
                         hard[rest] = _crowded(state, ppos[sub[rest]], exv[sub[rest]], lim)
+                    if slim is not None and not hard.all():
+                        rest = np.flatnonzero(~hard)
+                        hard[rest] = _shape_crowded(state, ppos[sub[rest]], exv[sub[rest]], *slim)
                 else:
                     hard = state.conflicts(ppos[sub], exv[sub])
                 okp[sub[hard]] = False
