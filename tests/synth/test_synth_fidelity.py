@@ -245,3 +245,29 @@ def test_elongated_shapes_are_tested_as_shapes_while_growing():
     assert len(state.to_arrangement()) == len(raw)
     rep = fidelity(ex, raw, region)
     assert rep.faithful, rep.failures
+
+
+def test_elongated_copies_are_limited_by_their_shape_neighbourhood():
+    """Sticks are limited by shape, not by centre circles (issue 13, helper s30t): a
+    copy is refused when more output shapes come within its kind's bounding radius of
+    its shape than its exemplar element has there (``_grow.shape_limits``). A copy laid
+    exactly on an output stick has that stick's shape neighbours plus the stick itself."""
+    from strew.synth import fill, _grow
+    from strew.synth._shapes import element_geometries
+
+    ex = suite.make_exemplar("sticks", np.random.default_rng(7))
+    x0, y0, x1, y1 = ex.region.bounds
+    state = new_state(ex, Region.rectangle(1.4 * (x1 - x0), 1.4 * (y1 - y0)), rng=2)
+    fill(state)
+    prep = state.prep
+    lim, reach = _grow.shape_limits(prep)
+    sel = prep.selected_elements
+    assert (lim[sel] >= 0).mean() > 0.5  # one-kind exemplar of shrunk discs: limited
+    idx = np.flatnonzero(lim[state.src] >= 0)
+    g = element_geometries(prep, state.src, state.pos)
+    d = shapely.distance(g[idx][:, None], g[None, :])
+    own = np.count_nonzero(d <= reach[state.src[idx]][:, None], axis=1) - 1
+    got = _grow._shape_crowded(state, state.pos[idx], state.src[idx], lim, reach)
+    want = own + 1 > lim[state.src[idx]]
+    assert want.any() and (~want).any()
+    np.testing.assert_array_equal(got, want)
