@@ -15,7 +15,7 @@ from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
 from ._prepare import OPEN_ROOM, anchor_mask, open_room_share
-from ._shapes import element_geometries, shape_clashes, shape_test_needed
+from ._shapes import element_geometries, local_segments, shape_clashes, shape_test_needed
 from ._state import SynthState, map_offsets
 
 __all__ = ["grow", "seed_patch", "fill", "brush", "erase", "update_free_space", "texture_regions"]
@@ -1327,11 +1327,6 @@ SHAPE_CROWD = True
 its exemplar element (see :func:`shape_limits`; off: the shape test alone)."""
 
 
-SHAPE_CROWD_NEIGHBOURS = False
-"""Whether :func:`_shape_crowded` also keeps the copy's output neighbours within their
-limits (on: p0s21 seed 1 fell to 0.81x the exemplar's density)."""
-
-
 def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
     """Shape-measured neighbour limits for elongated kinds. Computed once per ``prep``.
 
@@ -1351,9 +1346,10 @@ def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
     get no limit. Only one-kind exemplars without voids or overlaps whose collision
     discs are shrunk (``_shapes.SHRUNK``) take part (of the suite: sticks, and the
     saturated scales and rows_noisy, whose fidelity runs kept passing). Only the copy's
-    own count is bounded (``SHAPE_CROWD_NEIGHBOURS``): a copy's shapes already placed
-    are its neighbours so far, and later ones join them, as in the exemplar's sequential
-    placement. Measured (benchmarks/s29s_stages.py, signed density ratio, seeds 1 / 2):
+    own count is bounded: a copy's shapes already placed are its neighbours so far, and
+    later ones join them, as in the exemplar's sequential placement (helper s30t also
+    kept the copy's output neighbours within their limits: p0s21 seed 1 fell to 0.81x
+    the exemplar's density). Measured (benchmarks/s29s_stages.py, signed density ratio, seeds 1 / 2):
     sticks p0s21 1.113 / 1.140 -> 1.024 / 1.022, v19 1.118 / 1.089 -> 1.072 / 1.070;
     short sticks p1s19 0.993 / 1.014 -> 0.982 / 0.986. Growth's CPU time on sticks
     about doubles (shape queries per step).
@@ -1389,48 +1385,24 @@ def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _shape_crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, lim: np.ndarray, reach: np.ndarray) -> np.ndarray:
-    """(m,) bool: copies of ``src`` at ``pts`` that would have, or give a visible output
-    shape within their ``reach``, more shapes within ``reach`` than ``lim`` allows (see
-    :func:`shape_limits`)."""
+    """(m,) bool: copies of ``src`` at ``pts`` that would have more visible output
+    shapes within their ``reach`` than ``lim`` allows (see :func:`shape_limits`).
+
+    Counted by a compiled loop (``_kernels.shape_crowded``): centres within ``reach``
+    count at once (both centres lie in their shapes), centres beyond ``reach`` plus both
+    bounding radii never, and only the pairs between are measured edge by edge.
+    """
     prep = state.prep
     m = len(pts)
-    out = np.zeros(m, bool)
     if state.n == 0 or m == 0 or not (lim[src] >= 0).any():
-        return out
-    pts = np.ascontiguousarray(pts, dtype=float)
-    rmax = float(prep.r.max())
-    span = 2.0 * rmax + float(reach.max())
-    # output shapes a copy may come within reach of, and their own neighbours
-    near = np.flatnonzero(K.near_any(np.ascontiguousarray(state.pos), pts, 2.0 * span) & ~prep.void[state.src])
-    if len(near) == 0:
-        return out
-    opos, osrc = state.pos[near], state.src[near]
-    og = element_geometries(prep, osrc, opos)
-    g = element_geometries(prep, src, pts)
-    otree = shapely.STRtree(og)
-    a, b = otree.query(g, predicate="dwithin", distance=float(reach.max()))
-    close = shapely.dwithin(g[a], og[b], reach[src[a]])
-    a, b = a[close], b[close]
-    own = lim[src]
-    cnt = np.bincount(a, minlength=m)
-    out |= (own >= 0) & (cnt > own)
-    if not SHAPE_CROWD_NEIGHBOURS:
-        return out
-    # output shapes within reach of a copy whose neighbourhood is full already (their
-    # centres lie within span of the copy, so all their neighbours are in ``near``)
-    olim = lim[osrc]
-    cand = np.unique(b[olim[b] >= 0])
-    if len(cand) == 0:
-        return out
-    ca, cb = otree.query(og[cand], predicate="dwithin", distance=float(reach.max()))
-    keep = cand[ca] != cb
-    ca, cb = ca[keep], cb[keep]
-    cc = shapely.dwithin(og[cand[ca]], og[cb], reach[osrc[cand[ca]]])
-    ocnt = np.bincount(ca[cc], minlength=len(cand))
-    full = np.zeros(len(og), bool)
-    full[cand[ocnt >= olim[cand]]] = True
-    out |= np.bincount(a[full[b]], minlength=m) > 0
-    return out
+        return np.zeros(m, bool)
+    seg, kptr, areal, centre_in, krad = local_segments(prep)
+    rot, scale = np.asarray(prep.rotation, float), np.asarray(prep.scale, float)
+    rad = krad[prep.kind] * np.abs(scale)
+    cell = 2.0 * float(rad.max()) + float(reach.max())
+    return K.shape_crowded(np.ascontiguousarray(pts, dtype=float), np.asarray(src, np.int64), lim[src], np.ascontiguousarray(state.pos, dtype=float),
+                           np.asarray(state.src, np.int64), ~prep.void[state.src], np.asarray(prep.kind, np.int64), np.cos(rot) * scale,
+                           np.sin(rot) * scale, rad, reach, seg, kptr, areal, centre_in, cell)
 
 
 def _crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, lim: np.ndarray) -> np.ndarray:

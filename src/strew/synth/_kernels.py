@@ -12,6 +12,8 @@ import numba
 import numpy as np
 
 # the uniform bucket grid over points is the shared one (issue 15 point 5)
+from .._kernels.geometry import seg_dist2 as _seg_dist2
+from .._kernels.geometry import seg_hit as _seg_hit
 from .._kernels.grid import bucket_grid as _bucket_grid
 
 __all__ = [
@@ -1045,4 +1047,151 @@ def nearest_by_kind(pos, sk, query, radius, n_kinds):
         for b in range(n_kinds):
             if out[a, b] < np.inf:
                 out[a, b] = np.sqrt(out[a, b])
+    return out
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _seg_seg_dist2(ax, ay, bx, by, cx, cy, dx, dy):  # pragma: no cover - numba
+    """Squared distance between closed segments ab and cd (0 when they meet)."""
+    if _seg_hit(ax, ay, bx, by, cx, cy, dx, dy):
+        return 0.0
+    return min(min(_seg_dist2(ax, ay, cx, cy, dx, dy), _seg_dist2(bx, by, cx, cy, dx, dy)),
+               min(_seg_dist2(cx, cy, ax, ay, bx, by), _seg_dist2(dx, dy, ax, ay, bx, by)))
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _in_segs(px, py, s, n):  # pragma: no cover - numba
+    """Even-odd: ``(px, py)`` inside the closed rings whose edges are ``s[:n]`` (ax, ay, bx, by)."""
+    ins = False
+    for k in range(n):
+        ay = s[k, 1]
+        by = s[k, 3]
+        if (ay > py) != (by > py):
+            xc = s[k, 0] + (py - ay) * (s[k, 2] - s[k, 0]) / (by - ay)
+            if px < xc:
+                ins = not ins
+    return ins
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _place_segs(seg, k0, k1, x, y, c, s, out):  # pragma: no cover - numba
+    """Local segments ``seg[k0:k1]`` rotated and scaled by ``(c, s)`` and moved to ``(x, y)``, into ``out``."""
+    for k in range(k0, k1):
+        t = k - k0
+        out[t, 0] = x + c * seg[k, 0] - s * seg[k, 1]
+        out[t, 1] = y + s * seg[k, 0] + c * seg[k, 1]
+        out[t, 2] = x + c * seg[k, 2] - s * seg[k, 3]
+        out[t, 3] = y + s * seg[k, 2] + c * seg[k, 3]
+    return k1 - k0
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _pt_shape_dist2(px, py, s, n, areal):  # pragma: no cover - numba
+    """Squared distance from ``(px, py)`` to the shape with edges ``s[:n]`` (0 inside an areal one)."""
+    if areal and _in_segs(px, py, s, n):
+        return 0.0
+    best = np.inf
+    for k in range(n):
+        best = min(best, _seg_dist2(px, py, s[k, 0], s[k, 1], s[k, 2], s[k, 3]))
+    return best
+
+
+@numba.njit(cache=True, nogil=True)
+def _shapes_within(sa, na, areal_a, sb, nb, areal_b, r2):  # pragma: no cover - numba
+    """Whether two shapes (edges ``sa[:na]``, ``sb[:nb]``) come within ``sqrt(r2)``: their
+    edges do, or a vertex of one lies inside the other (areal) one."""
+    for p in range(na):
+        for q in range(nb):
+            if _seg_seg_dist2(sa[p, 0], sa[p, 1], sa[p, 2], sa[p, 3], sb[q, 0], sb[q, 1], sb[q, 2], sb[q, 3]) <= r2:
+                return True
+    if areal_a and nb > 0 and _in_segs(sb[0, 0], sb[0, 1], sa, na):
+        return True
+    return areal_b and na > 0 and _in_segs(sa[0, 0], sa[0, 1], sb, nb)
+
+
+@numba.njit(cache=True, nogil=True)
+def shape_crowded(pts, qsrc, qlim, opos, osrc, ovis, el_kind, el_c, el_s, el_rad, el_reach, seg, kptr, areal, centre_in, cell):  # pragma: no cover - numba
+    """(m,) bool: query copies with more visible output shapes within their reach than
+    their limit (``_grow.shape_limits``).
+
+    Query ``i`` is a copy of exemplar element ``qsrc[i]`` at ``pts[i]``; output element
+    ``j`` one of ``osrc[j]`` at ``opos[j]`` (counted when ``ovis[j]``). An element
+    ``e``'s shape is its kind's local segments ``seg[kptr[k]:kptr[k + 1]]`` (ax, ay, bx,
+    by) turned by ``(el_c[e], el_s[e])`` (cosine and sine of its rotation times its
+    scale); ``el_rad[e]`` its bounding radius (the largest distance of a vertex from its
+    centre), ``areal[k]`` whether its rings bound an area (even-odd), ``centre_in[k]``
+    whether the origin lies in the shape. Two shapes come within ``reach`` when their
+    centres do and both centres lie in their shapes (the shapes are no farther apart
+    than their centres), never when the centres are beyond ``reach`` plus both bounding
+    radii, and otherwise exactly: their edges come within ``reach``, or a vertex of one
+    lies inside the other (the distance is 0). Counting stops at the limit's excess.
+    ``cell``: the grid's cell side (twice the largest bounding radius plus the largest
+    reach, so a query walks about three cells across).
+    """
+    m = pts.shape[0]
+    n = opos.shape[0]
+    out = np.zeros(m, np.bool_)
+    if n == 0 or m == 0:
+        return out
+    ms = 1
+    for k in range(kptr.shape[0] - 1):
+        ms = max(ms, kptr[k + 1] - kptr[k])
+    sa = np.empty((ms, 4))
+    sb = np.empty((ms, 4))
+    rmax = 0.0
+    for j in range(n):
+        if ovis[j]:
+            rmax = max(rmax, el_rad[osrc[j]])
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, np.int64(m), np.bool_(False))
+    for i in range(m):
+        lim = qlim[i]
+        if lim < 0:
+            continue
+        e = qsrc[i]
+        ka = el_kind[e]
+        px = pts[i, 0]
+        py = pts[i, 1]
+        ra = el_rad[e]
+        reach = el_reach[e]
+        r2 = reach * reach
+        na = _place_segs(seg, kptr[ka], kptr[ka + 1], px, py, el_c[e], el_s[e], sa)
+        span = ra + reach + rmax
+        cx0 = max(int((px - span - x0) / cell), 0)
+        cx1 = min(int((px + span - x0) / cell), nx - 1)
+        cy0 = max(int((py - span - y0) / cell), 0)
+        cy1 = min(int((py + span - y0) / cell), ny - 1)
+        cnt = 0
+        for ax in range(cx0, cx1 + 1):
+            for ay in range(cy0, cy1 + 1):
+                j = head[ax * ny + ay]
+                while j >= 0 and cnt <= lim:
+                    if ovis[j]:
+                        f = osrc[j]
+                        kb = el_kind[f]
+                        dx = opos[j, 0] - px
+                        dy = opos[j, 1] - py
+                        d2 = dx * dx + dy * dy
+                        rb = el_rad[f]
+                        far = reach + ra + rb
+                        if d2 <= r2 and centre_in[ka] and centre_in[kb]:
+                            cnt += 1
+                        elif d2 <= far * far:
+                            nb = _place_segs(seg, kptr[kb], kptr[kb + 1], opos[j, 0], opos[j, 1], el_c[f], el_s[f], sb)
+                            # the centre of each against the other's shape: within reach of
+                            # a shape holding its own centre counts, beyond reach plus its
+                            # bounding radius never does
+                            da = _pt_shape_dist2(opos[j, 0], opos[j, 1], sa, na, areal[ka])
+                            db = _pt_shape_dist2(px, py, sb, nb, areal[kb])
+                            ta = reach + rb
+                            tb = reach + ra
+                            if da > ta * ta or db > tb * tb:
+                                hit = False
+                            elif (da <= r2 and centre_in[kb]) or (db <= r2 and centre_in[ka]):
+                                hit = True
+                            else:
+                                hit = _shapes_within(sa, na, areal[ka], sb, nb, areal[kb], r2)
+                            if hit:
+                                cnt += 1
+                    j = nxt[j]
+        out[i] = cnt > lim
     return out

@@ -38,7 +38,7 @@ if TYPE_CHECKING:
     from ._prepare import Prepared
     from ._state import SynthState
 
-__all__ = ["shape_test_needed", "clearance", "element_geometries", "shape_clashes", "shapes_overlapping"]
+__all__ = ["shape_test_needed", "clearance", "element_geometries", "local_segments", "shape_clashes", "shapes_overlapping"]
 
 SHRUNK = 0.9  # a collision disc below this share of the bounding radius needs the shape test
 
@@ -68,6 +68,46 @@ def element_geometries(prep: Prepared, src: np.ndarray, pos: np.ndarray) -> np.n
 
         out[idx] = shapely.transform(np.full(len(idx), local, dtype=object), f)
     return out
+
+
+def local_segments(prep: Prepared) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Each kind's shape as plain segments, for compiled shape tests. Cached on ``prep``.
+
+    Returns ``(seg, kptr, areal, centre_in, krad)``: ``seg`` (s, 4) float, the edges
+    ``ax, ay, bx, by`` of the kinds' local geometries (``prep.shapes`` in kind order;
+    polygons' rings, lines' pieces, a point as a segment of length 0), kind ``k``'s rows
+    ``kptr[k]:kptr[k + 1]``; ``areal`` (kinds,) bool, whether the kind's rings bound an
+    area (even-odd over its edges); ``centre_in`` (kinds,) bool, whether its origin lies
+    in its shape; ``krad`` (kinds,) float, the largest distance of a local vertex from
+    its origin.
+    """
+    got = getattr(prep, "_local_segments", None)
+    if got is not None:
+        return got
+    segs, kptr, areal, centre_in, krad = [], [0], [], [], []
+    for name in prep.shapes:
+        geom = prep.shapes[name].geometry
+        parts = shapely.get_parts(geom)
+        rings = []
+        for p in parts:
+            if isinstance(p, shapely.Polygon):
+                rings.extend([p.exterior, *p.interiors])
+            elif isinstance(p, shapely.Point):
+                xy = shapely.get_coordinates(p)
+                rings.append(np.r_[xy, xy])
+            else:
+                rings.append(p)
+        s = [np.c_[c[:-1], c[1:]] for c in (np.asarray(r.coords if hasattr(r, "coords") else r, float)[:, :2] for r in rings) if len(c) >= 2]
+        s = np.concatenate(s) if s else np.zeros((0, 4))
+        segs.append(s)
+        kptr.append(kptr[-1] + len(s))
+        areal.append(bool(shapely.area(geom) > 0))
+        centre_in.append(bool(shapely.intersects_xy(geom, 0.0, 0.0)))
+        krad.append(float(np.sqrt((np.r_[s[:, :2], s[:, 2:]] ** 2).sum(axis=1)).max()) if len(s) else 0.0)
+    got = (np.ascontiguousarray(np.concatenate(segs) if segs else np.zeros((0, 4)), dtype=float), np.asarray(kptr, np.int64),
+           np.asarray(areal, bool), np.asarray(centre_in, bool), np.asarray(krad, float))
+    prep._local_segments = got
+    return got
 
 
 def clearance(prep: Prepared) -> np.ndarray:
