@@ -1351,8 +1351,10 @@ def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
     kept the copy's output neighbours within their limits: p0s21 seed 1 fell to 0.81x
     the exemplar's density). Measured (benchmarks/s29s_stages.py, signed density ratio, seeds 1 / 2):
     sticks p0s21 1.113 / 1.140 -> 1.024 / 1.022, v19 1.118 / 1.089 -> 1.072 / 1.070;
-    short sticks p1s19 0.993 / 1.014 -> 0.982 / 0.986. Growth's CPU time on sticks
-    about doubles (shape queries per step).
+    short sticks p1s19 0.993 / 1.014 -> 0.982 / 0.986. Counted by shapely (an STRtree
+    query per growing step) it doubled synth's CPU time on sticks; compiled (see
+    :func:`_shape_crowded`) the count takes about 14 % of a sticks fill and 2-4 % of
+    scales' and rows_noisy's (helper s31t, benchmarks/results/s31t_findings.txt).
     """
     got = getattr(prep, "_shape_limits", None)
     if got is not None and len(got[0]) == len(prep.kind):
