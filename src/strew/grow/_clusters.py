@@ -340,7 +340,7 @@ def grow_clusters(ex: Arrangement, sat: Satellites, params: GrowParams, rng: np.
         # a few hubs, all on the boundary of their connectivity even with §4's skewed
         # triangles kept: the caller grows the exemplar as one pattern instead
         return None
-    hp = replace(params, count=None, priority={}, own_kind_close=True, ring_target_far=HUB_TARGET_FAR, start_kind=params.start_kind if params.start_kind in (-1, sat.hub) else sat.hub)
+    hp = replace(params, count=None, priority={}, own_kind_close=True, keep_close=True, ring_target_far=HUB_TARGET_FAR, start_kind=params.start_kind if params.start_kind in (-1, sat.hub) else sat.hub)
     g = _Grower(href, hp, rng)
     g.begin(start)
     complete = np.flatnonzero(sat.complete)

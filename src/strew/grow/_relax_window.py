@@ -151,17 +151,22 @@ class _RelaxWindow:
                 geom[g] = new_geom[g]
                 if torus:
                     self._sync(g)
-        if not self.p.avoid_overlaps:
+        keep = self.p.keep_close
+        if not (self.p.avoid_overlaps or keep):
             return
         # Keep the no-overlap guarantee: elements that now overlap go back to where they
         # were, with those they overlap, until no overlap is left (the positions before
-        # the relaxation had none, so this ends).
+        # the relaxation had none, so this ends). With ``keep_close``, the same for two
+        # elements nearer than ``pair_close`` (see :meth:`keep_close`).
         check = [g for g in moved if self.state[g] == ELEMENT]
         while check:
             back: set[int] = set()
-            for g, hits in self.overlapping_many(check).items():
-                back.add(g)
-                back.update(self.orig_of[h] for h in hits if self.orig_of[h] in old)
+            if self.p.avoid_overlaps:
+                for g, hits in self.overlapping_many(check).items():
+                    back.add(g)
+                    back.update(self.orig_of[h] for h in hits if self.orig_of[h] in old)
+            if keep:
+                back |= self.keep_close([g for g in moved if self.state[g] == ELEMENT and self.xy[g] != old[g][:2]], old)
             back = {g for g in back if self.xy[g] != old[g][:2]}
             if not back:
                 # (nothing went back: the check list below would be empty, and the loop
@@ -174,5 +179,39 @@ class _RelaxWindow:
                     self._sync(g)
             oo = self.orig_of
             check = [g for g in moved if self.state[g] == ELEMENT and g not in back and any(oo[h] in back for h in self.adj[g])] + sorted(back)
+
+    def keep_close(self, moved: list[int], old: dict[int, Any]) -> set[int]:
+        """The moved elements, and the moved elements beside them, that a relaxation
+        window brought nearer each other than ``pair_close`` (``GrowParams.keep_close``).
+
+        Not in the paper: §5.5's Eq. 5 pulls each element's ring toward its reference
+        offsets and keeps no distance between elements that are not ring neighbours.
+        Cluster hubs placed no nearer than the reference's least hub distance (hubs
+        dart-thrown at 48.2, the nearest tenth within 48.3) were squeezed by their
+        windows: a quarter of the hubs ended nearer than the exemplar ever has two,
+        down to 0.93 of it, and g[disc,disc] failed (``benchmarks/_variants.py`` VARIED
+        set 0 at variant seed 22: 0.25-0.30 against 0.244 on seeds 1-3; helper g31r,
+        ``benchmarks/g31r_hubs.py``). Such moves go back, as overlapping ones do.
+        """
+        back: set[int] = set()
+        xy, kinds, state, oo = self.xy, self.kind, self.state, self.orig_of
+        pc, pcm = self.pair_close, self.pair_close_max
+        for g in moved:
+            k = int(kinds[g])
+            r = float(pcm[k])
+            if k < 0 or r <= 0:
+                continue
+            x, y = xy[g]
+            for o in self.index.near(x, y, r, 1 << ELEMENT):
+                h = oo[o]
+                if h == g or state[h] != ELEMENT:
+                    continue
+                px, py = xy[o]
+                d = pc[k, int(kinds[h])]
+                if (px - x) ** 2 + (py - y) ** 2 < d * d:
+                    back.add(g)
+                    if h in old:
+                        back.add(h)
+        return back
 
     # -- main loop --------------------------------------------------------------------------
