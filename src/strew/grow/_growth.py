@@ -296,10 +296,8 @@ class GrowParams:
     #: between two of them, less its spread (see ``_Grower.pair_close``); None: in
     #: fixed mode only
     own_kind_close: bool | None = None
-    #: with ``own_kind_close``: a hard-core kind (the nearest tenth of its own-kind
-    #: distances within :data:`HARD_CORE_FLOOR` of the least) keeps that least distance
-    #: itself, and every relaxation window keeps ``pair_close`` between elements (see
-    #: ``_Grower.pair_close`` and ``_RelaxWindow.keep_close``); cluster hubs only
+    #: relaxation windows keep ``pair_close`` between elements, as placement does (see
+    #: ``_RelaxWindow.keep_close``); set for cluster hubs only
     keep_close: bool = False
     #: kinds of different sizes: the share of the spread of the reference's distances
     #: below their median that a placement may come nearer than their smallest (see
@@ -586,12 +584,6 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                     spread *= p.close_spread
                 if k1 == k2 and p.own_kind_close is None:
                     spread = max(spread, 0.05 * lo)  # saturated discs have almost none
-                if k1 == k2 and p.keep_close and float(np.quantile(m, 0.1)) <= HARD_CORE_FLOOR * lo:
-                    # a hard-core kind (cluster hubs dart-thrown at one distance: the
-                    # nearest tenth within 1 % of the least) has no spread below its
-                    # floor: the floor itself. Not in the paper (§5.4 (b) merges within
-                    # l_short only); see keep_close in _RelaxWindow
-                    spread = 0.0
                 self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - spread)
         self.pair_close = np.maximum(self.pair_close, self.pair_close.T)
         self.pair_close_max = self.pair_close.max(axis=1)
