@@ -16,9 +16,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from types import SimpleNamespace
 
 import numpy as np
+from _runner import fidelity_suite
 from _variants import ints
 from fresh17_rows import exemplar
-from _runner import fidelity_suite
 from grow_variants import run
 from scipy.spatial import cKDTree
 

@@ -3,10 +3,9 @@
     PYTHONPATH=src python benchmarks/g31r_probe.py CLASS:LABEL SEED [--save F.pkl] [--load F.pkl]
 
 Grows the ``--varied`` row as ``grow_variants.py`` does (3.5x, fixed mode), then prints
-the failing metrics and, per kind pair, the exemplar's and output's g(r) curves, nearest
-distances (deciles, in units of the judge's spacing) and, for one-kind rows, each
-element's count of other shapes within its kind's bounding radius (shape distance 0)
-and the shape-to-shape gap quantiles.
+the failing metrics and every density, g and nn metric (value/tolerance; the result's
+and exemplar's statistic where the judge has one) and, for one-kind rows, the quantiles
+of each element's least shape-to-shape gap in the exemplar and the output.
 """
 import os
 import pickle
@@ -17,8 +16,8 @@ from types import SimpleNamespace
 
 import numpy as np
 import shapely
-from fresh17_rows import exemplar
 from _runner import fidelity_suite
+from fresh17_rows import exemplar
 from grow_variants import run
 
 from strew.metrics import fidelity
@@ -27,7 +26,6 @@ from strew.metrics import fidelity
 def shape_stats(arr):
     geo = np.asarray(arr.geometry)
     tree = shapely.STRtree(geo)
-    xy = np.asarray(arr.xy)
     r = np.sqrt(np.max([shapely.area(g) for g in geo[:5]]))
     a, b = tree.query(geo, predicate="dwithin", distance=3 * r)
     keep = a < b
@@ -44,17 +42,19 @@ def main():
     cls, label = spec.split(":")
     ex = exemplar(fidelity_suite(), cls, label)
     if "--load" in sys.argv:
-        out = pickle.load(open(sys.argv[sys.argv.index("--load") + 1], "rb"))
+        with open(sys.argv[sys.argv.index("--load") + 1], "rb") as f:
+            out = pickle.load(f)
     else:
         out, _ = run(ex, 3.5, seed, SimpleNamespace(mode="fixed", times=10.0))
     if "--save" in sys.argv:
-        pickle.dump(out, open(sys.argv[sys.argv.index("--save") + 1], "wb"))
+        with open(sys.argv[sys.argv.index("--save") + 1], "wb") as f:
+            pickle.dump(out, f)
     rep = fidelity(ex, out, eq5=False, local=False)
     print(f"{spec} seed {seed}: n={len(out)} ex n={len(ex)} faithful={rep.faithful}")
     for k, m in rep.metrics.items():
         if not m.applicable:
             continue
-        if (not m.passed) or k.startswith("g[") or k.startswith("density") or k.startswith("nn["):
+        if (not m.passed) or k.startswith(("g[", "density", "nn[")):
             print(f"  {k}: {m.value:.4g}/{m.tolerance:.4g} res={np.asarray(m.result, float) if m.result is not None else None} ex={np.asarray(m.exemplar, float) if m.exemplar is not None else None}")
     if len(set(np.asarray(ex.kind))) == 1:
         for name, a in (("ex", ex), ("out", out)):

@@ -14,13 +14,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.grow import grow
 from strew.grow._clusters import satellite_structure
 from strew.metrics import summary
-
-from strew_testing import fidelity_suite
 
 make_exemplar = fidelity_suite().make_exemplar
 
