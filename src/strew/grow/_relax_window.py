@@ -200,9 +200,9 @@ class _RelaxWindow:
         pc, pcm = self.pair_close, self.pair_close_max
         for g in moved:
             k = int(kinds[g])
-            r = float(pcm[k])
-            if k < 0 or r <= 0:
+            if k < 0 or pcm[k] <= 0:
                 continue
+            r = float(pcm[k])
             x, y = xy[g]
             for o in self.index.near(x, y, r, 1 << ELEMENT):
                 h = oo[o]
