@@ -454,7 +454,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         if inner.sum() < max(k, 4):
             inner = np.zeros(len(ids), bool)
             inner[np.argsort(-depth, kind="stable")[: max(k, 4)]] = True
-        _surround_steps(inner, ids, depth, rbar[ids], cls, ptr, idx, off)
+        _surround_steps(inner, ids, depth, rbar[ids], cls, ptr, idx, off, k)
         interior_mask[ids[inner]] = True
         interior.append(ids[inner])
         center[i] = ids[np.argmax(depth)]
@@ -571,9 +571,11 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
 
 SURROUND_GAP = 0.5 * np.pi  # interior steps of a large class leave no sector this wide empty
 SURROUND_DEPTH = 0.6  # ... using members at least this share of their r-bar inside the domain
+SURROUND_K = True  # ... and, down to the same depth, until the class has k interior members (s31c)
 
 
-def _surround_steps(inner: np.ndarray, ids: np.ndarray, depth: np.ndarray, rbar_c: np.ndarray, cls: np.ndarray, ptr: np.ndarray, idx: np.ndarray, off: np.ndarray) -> None:
+def _surround_steps(inner: np.ndarray, ids: np.ndarray, depth: np.ndarray, rbar_c: np.ndarray, cls: np.ndarray, ptr: np.ndarray, idx: np.ndarray, off: np.ndarray,
+                    k: int = 0) -> None:
     """Add the deepest members of a larger size class to the interior (``inner``, in
     place) until the steps its interior members show to members of their own class
     surround them: no sector of :data:`SURROUND_GAP` without a step. Only members at
@@ -604,7 +606,8 @@ def _surround_steps(inner: np.ndarray, ids: np.ndarray, depth: np.ndarray, rbar_
                 seg = slice(ptr[e], ptr[e + 1])
                 steps.append(off[seg][cls[idx[seg]] == c])
             ang = np.sort(np.arctan2(*np.concatenate(steps)[:, ::-1].T))
-            if len(ang) and np.diff(np.r_[ang, ang[0] + 2.0 * np.pi]).max() < SURROUND_GAP:
+            if len(ang) and np.diff(np.r_[ang, ang[0] + 2.0 * np.pi]).max() < SURROUND_GAP and (
+                    not SURROUND_K or np.count_nonzero(inner[mem]) >= k):
                 break
             inner[m] = True
 
