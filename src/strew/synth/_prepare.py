@@ -571,7 +571,9 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
 
 SURROUND_GAP = 0.5 * np.pi  # interior steps of a large class leave no sector this wide empty
 SURROUND_DEPTH = 0.6  # ... using members at least this share of their r-bar inside the domain
-SURROUND_K = True  # ... and, down to the same depth, until the class has k interior members (s31c)
+SURROUND_K = True
+"""... and, down to the same depth, until the class holds k interior members (see
+:func:`_surround_steps`)."""
 
 
 def _surround_steps(inner: np.ndarray, ids: np.ndarray, depth: np.ndarray, rbar_c: np.ndarray, cls: np.ndarray, ptr: np.ndarray, idx: np.ndarray, off: np.ndarray,
@@ -592,6 +594,20 @@ def _surround_steps(inner: np.ndarray, ids: np.ndarray, depth: np.ndarray, rbar_
     added have neighbourhoods cut by the frame; added down to any depth, or until the
     steps merely leave no half-plane empty, growth stalled where the copies of
     different candidates disagree (p2s7: 4 discs, 220 elements; p2s8: 2 discs, 592).
+
+    With :data:`SURROUND_K`, members down to the same depth are added also until the
+    class holds ``k`` interior members, as §5.1's k-coherence set co(e) holds k
+    candidates: with fewer, every member of the class draws its copies from the same
+    few neighbourhoods, and their spacing to their own class is the output's. Clusters
+    EDGE p4 at variant seed 22 (large discs with full rings, one interior disc) copied
+    every cluster from that disc, the exemplar's sparsest (its nearest disc 1.22
+    cluster spacings away, the exemplar's median 1.08): at 3.5x the discs' median
+    nearest disc lay 1.16-1.20 spacings away (the generator's 1.03-1.04), no disc more
+    fitted, and discs and dots were at 0.84-0.87 of the exemplar's density (seeds 1-2
+    failed density[dot]). With the next two discs (depth 0.88 and 0.70 of r-bar) the
+    median is 1.04-1.05 and the density 0.90-0.97 (``python benchmarks/s31c_where.py
+    clusters:p4s22 1-4``). The depth limit is kept: a candidate's neighbourhood is still
+    at least :data:`SURROUND_DEPTH` of its r-bar inside the frame.
     """
     sc = cls[ids]
     for c in range(1, int(sc.max()) + 1 if len(ids) else 0):
