@@ -1363,6 +1363,7 @@ def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
 
     out = np.full(len(prep.kind), -1, np.int64)
     reach = np.asarray(prep.r, float).copy()
+    seg = None
     if prep.overlap_free:
         for s, dom in enumerate(prep.domains):
             ids = np.flatnonzero(prep.source == s)
@@ -1370,16 +1371,24 @@ def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
                 continue
             if not np.all(prep.rc[ids] < SHRUNK * prep.r[ids]):
                 continue
-            g = element_geometries(prep, ids, prep.pos[ids])
+            if seg is None:
+                seg, kptr, areal, centre_in, krad = local_segments(prep)
+                scale = np.asarray(prep.scale, float)
+                el_c, el_s = np.cos(prep.rotation) * scale, np.sin(prep.rotation) * scale
+                rad = krad[prep.kind] * np.abs(scale)
             d = reach[ids]
-            tree = shapely.STRtree(g)
-            a, b = tree.query(g, predicate="dwithin", distance=float(d.max()))
-            keep = a != b
-            a, b = a[keep], b[keep]
-            close = shapely.dwithin(g[a], g[b], d[a])
-            cnt = np.bincount(a[close], minlength=len(ids))
-            zone = shapely.buffer(g, d, quad_segs=8)
-            share = shapely.area(shapely.intersection(zone, dom)) / shapely.area(zone)
+            pos = np.ascontiguousarray(prep.pos[ids], dtype=float)
+            cnt = K.shape_counts(pos, ids, np.full(len(ids), len(ids), np.int64), np.arange(len(ids), dtype=np.int64), pos, ids, np.ones(len(ids), bool),
+                                 np.asarray(prep.kind, np.int64), el_c, el_s, rad, reach, seg, kptr, areal, centre_in, 2.0 * float(rad[ids].max()) + float(d.max()))
+            # the share of each shape's reach zone inside the domain: 1 where the zone's
+            # bounding disc (centre inside, farther than bounding radius + reach from the
+            # edge) lies inside; shapely's zone (buffer, 8 segments a quarter) only at the edge
+            share = np.ones(len(ids))
+            pts = shapely.points(pos)
+            edge = ~(shapely.contains(dom, pts) & (shapely.distance(pts, dom.boundary) > (rad[ids] + d) * (1.0 + 1e-9)))
+            if edge.any():
+                zone = shapely.buffer(element_geometries(prep, ids[edge], pos[edge]), d[edge], quad_segs=8)
+                share[edge] = shapely.area(shapely.intersection(zone, dom)) / shapely.area(zone)
             ok = share >= 0.5
             out[ids[ok]] = np.round(cnt[ok] / share[ok]).astype(np.int64)
     prep._shape_limits = (out, reach)

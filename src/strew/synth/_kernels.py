@@ -1110,12 +1110,13 @@ def _shapes_within(sa, na, areal_a, sb, nb, areal_b, r2):  # pragma: no cover - 
 
 
 @numba.njit(cache=True, nogil=True)
-def shape_crowded(pts, qsrc, qlim, opos, osrc, ovis, el_kind, el_c, el_s, el_rad, el_reach, seg, kptr, areal, centre_in, cell):  # pragma: no cover - numba
-    """(m,) bool: query copies with more visible output shapes within their reach than
-    their limit (``_grow.shape_limits``).
+def shape_counts(pts, qsrc, qcap, qself, opos, osrc, ovis, el_kind, el_c, el_s, el_rad, el_reach, seg, kptr, areal, centre_in, cell):  # pragma: no cover - numba
+    """(m,) int64: for each query copy, the visible output shapes within its reach
+    (``_grow.shape_limits``), counted up to ``qcap[i] + 1`` (0 where ``qcap[i] < 0``).
 
     Query ``i`` is a copy of exemplar element ``qsrc[i]`` at ``pts[i]``; output element
-    ``j`` one of ``osrc[j]`` at ``opos[j]`` (counted when ``ovis[j]``). An element
+    ``j`` one of ``osrc[j]`` at ``opos[j]`` (counted when ``ovis[j]``, and never when
+    ``j == qself[i]``: an element is not its own neighbour; -1 for none). An element
     ``e``'s shape is its kind's local segments ``seg[kptr[k]:kptr[k + 1]]`` (ax, ay, bx,
     by) turned by ``(el_c[e], el_s[e])`` (cosine and sine of its rotation times its
     scale); ``el_rad[e]`` its bounding radius (the largest distance of a vertex from its
@@ -1124,13 +1125,13 @@ def shape_crowded(pts, qsrc, qlim, opos, osrc, ovis, el_kind, el_c, el_s, el_rad
     centres do and both centres lie in their shapes (the shapes are no farther apart
     than their centres), never when the centres are beyond ``reach`` plus both bounding
     radii, and otherwise exactly: their edges come within ``reach``, or a vertex of one
-    lies inside the other (the distance is 0). Counting stops at the limit's excess.
+    lies inside the other (the distance is 0). Counting stops past the cap.
     ``cell``: the grid's cell side (twice the largest bounding radius plus the largest
     reach, so a query walks about three cells across).
     """
     m = pts.shape[0]
     n = opos.shape[0]
-    out = np.zeros(m, np.bool_)
+    out = np.zeros(m, np.int64)
     if n == 0 or m == 0:
         return out
     ms = 1
@@ -1144,7 +1145,8 @@ def shape_crowded(pts, qsrc, qlim, opos, osrc, ovis, el_kind, el_c, el_s, el_rad
             rmax = max(rmax, el_rad[osrc[j]])
     x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, np.int64(m), np.bool_(False))
     for i in range(m):
-        lim = qlim[i]
+        lim = qcap[i]
+        me = qself[i]
         if lim < 0:
             continue
         e = qsrc[i]
@@ -1165,7 +1167,7 @@ def shape_crowded(pts, qsrc, qlim, opos, osrc, ovis, el_kind, el_c, el_s, el_rad
             for ay in range(cy0, cy1 + 1):
                 j = head[ax * ny + ay]
                 while j >= 0 and cnt <= lim:
-                    if ovis[j]:
+                    if ovis[j] and j != me:
                         f = osrc[j]
                         kb = el_kind[f]
                         dx = opos[j, 0] - px
@@ -1193,5 +1195,14 @@ def shape_crowded(pts, qsrc, qlim, opos, osrc, ovis, el_kind, el_c, el_s, el_rad
                             if hit:
                                 cnt += 1
                     j = nxt[j]
-        out[i] = cnt > lim
+        out[i] = cnt
     return out
+
+
+@numba.njit(cache=True, nogil=True)
+def shape_crowded(pts, qsrc, qlim, opos, osrc, ovis, el_kind, el_c, el_s, el_rad, el_reach, seg, kptr, areal, centre_in, cell):  # pragma: no cover - numba
+    """(m,) bool: query copies with more visible output shapes within their reach than
+    their limit ``qlim`` (-1: none; see :func:`shape_counts`, whose arguments these are)."""
+    qself = np.full(pts.shape[0], -1, np.int64)
+    cnt = shape_counts(pts, qsrc, qlim, qself, opos, osrc, ovis, el_kind, el_c, el_s, el_rad, el_reach, seg, kptr, areal, centre_in, cell)
+    return (cnt > qlim) & (qlim >= 0)
