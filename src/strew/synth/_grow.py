@@ -1354,7 +1354,11 @@ def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
     short sticks p1s19 0.993 / 1.014 -> 0.982 / 0.986. Counted by shapely (an STRtree
     query per growing step) it doubled synth's CPU time on sticks; compiled (see
     :func:`_shape_crowded`) the count takes about 14 % of a sticks fill and 2-4 % of
-    scales' and rows_noisy's (helper s31t, benchmarks/results/s31t_findings.txt).
+    scales' and rows_noisy's (helper s31t, benchmarks/results/s31t_findings.txt). The
+    exemplar's own count here is compiled too (``_kernels.shape_counts``), and the zone's
+    share is measured by shapely only within bounding radius plus reach of the domain's
+    edge (1 elsewhere, exactly as shapely's rounded share): 23 -> 9 ms per exemplar, same
+    limits (helper s32t, benchmarks/s32t_limits_check.py).
     """
     got = getattr(prep, "_shape_limits", None)
     if got is not None and len(got[0]) == len(prep.kind):
