@@ -665,9 +665,19 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
     d = np.full(len(arr), np.inf)
     for x0, y0, x1, y1 in later:
         d = np.minimum(d, np.hypot(np.maximum(np.maximum(x0 - x, x - x1), 0.0), np.maximum(np.maximum(y0 - y, y - y1), 0.0)))
+    # the rows of the phases after the first that a pattern keeping its first phase keeps
+    # up to the border too (_held_phase_rows: hierarchy's flowers)
+    held = _held_phase_rows(arr, job) if later else None
+    if held is not None:
+        # only a success whose every row lies outside every later tile: the rows centred
+        # in a later tile are its own (as every later phase's there)
+        held &= ~np.bincount(inv, weights=(d <= 0.0), minlength=len(mx)).astype(bool)[inv]
     if later and band > 0:
         # the later phases' elements (flowers' buds) near a later tile are left to it
-        placed &= ~((d < band) & late_phase(job.input, arr["phase"]))
+        late = late_phase(job.input, arr["phase"])
+        if held is not None:
+            late &= ~held
+        placed &= ~((d < band) & late)
     first = _first_phase_depth(arr, t, job) if later else None
     first_rows = _first_phase_rows(first, job) if first is not None else None
     if first_rows is not None and anchored is not None and _FIRST_ANCHORED:
@@ -727,6 +737,8 @@ def _keep_groups(arr: Any, keep: np.ndarray, t: Tile, job: _Job, links: Mapping[
             more = near & cut_touching(job.input, arr[PROXIES_COLUMN], arr[col], arr[GOAL_COLUMN], kept)
             if first_rows is not None:
                 more &= ~first_rows  # the kept first phase stays whole (_first_phase_rows)
+            if held is not None:
+                more &= ~held  # and so do the phases held with it (_held_phase_rows)
             if not more.any():
                 break
             trial = placed & ~np.isin(inv, inv[more])  # whole successes
@@ -801,6 +813,9 @@ def _parent_rows(arr: Any) -> Any:
 
 # how near a later tile (in halos) a tile leaves its late-phase elements to it (_keep_groups)
 _LATE_BAND = 0.5
+# for a pattern that keeps its first phase (no tile anchors): how many of its first phases
+# a tile keeps up to its border (_held_phase_rows; 1: the first alone, as before w31h)
+_KEEP_PHASES = 2
 # for a pattern that keeps its first phase (_first_phase_rows): how far past the halo's
 # open edges (in halos) circle centres may lie (strew.ornament._engine: the elements stay
 # in the region), and how far past its rectangle (in halos) a tile keeps its first phase
@@ -951,6 +966,45 @@ def _first_phase_rows(first: tuple[np.ndarray, np.ndarray], job: _Job) -> np.nda
     """
     ph, depth = first
     return ph & (depth <= _KEEP_FIRST_REACH * job.halo)
+
+
+def _held_phase_rows(arr: Any, job: _Job) -> np.ndarray | None:
+    """(n,) bool: the rows of the phases after the first that a tile keeps up to its
+    border, as it grew them: for a pattern that keeps its first phase
+    (:func:`_keeps_first_phase`) without tile anchors, its phases 2 to ``_KEEP_PHASES``
+    where at least one phase follows them; None for the other patterns (or none held).
+    _keep_groups leaves them neither to the late band (``_LATE_BAND``) nor to the cut
+    rounds (strew.ornament._context.cut_touching); they still go with their success's
+    tip and their parent (keep_whole), and only where no row of their success lies in
+    a later tile (_keep_groups).
+
+    Why (issue 19.4, helper w31h). Hierarchy's flowers (its second phase, each on a twig
+    from a vine) were short in the +-2 s strips: twigs 0.78 of the untiled control's
+    share (5 worlds, tiles 40-56, seed 19; benchmarks/results/w28h_summary.txt). No
+    twig was lost: the finished tile grew its flowers up to the border and dropped
+    them (world 160, tile 40, seed 19: of 22 twigs it grew within 1.5 s of a later
+    tile it kept 5; 11 with the late band off, 19 with the cut rounds off too;
+    benchmarks/w31h_trace.py), and the later tile refilled that band from its side:
+    its flowers landed on the border itself, where the emptied band and its own side
+    left circles of a flower's size (radius >= 5), and the band's inner half, narrower
+    than a flower's circle once they stood, got leaves instead (finished side 0.5-1 s,
+    tiles 40, 52, 56: flowers 16 against the control's 32, leaves 85 against 72;
+    benchmarks/w31h_dropped.py). In one run
+    (Wong et al. §5, Fig. 10) every flower grows before any leaf, into the circles the
+    vine structure leaves, and the finished tile's flowers near the border are those:
+    its vines there are one run's (_first_phase_rows). The later tile now grows its own
+    flowers around them, as it grows its vines around the kept vines; the leaves and
+    fillers near the border are still left to it. Departure from the paper: it grows
+    one panel in one run; this hand-over between runs is ours.
+    """
+    if _KEEP_PHASES < 2 or _keeps_first_phase(job) is None or _has_tile_anchors(job) or "phase" not in arr.columns:
+        return None
+    pat = _ornament_pattern(job)
+    if pat is None or len(pat.phases) <= _KEEP_PHASES:
+        return None
+    names = {str(p.name) for p in pat.phases[1:_KEEP_PHASES]}
+    held = np.array([p in names for p in np.asarray(arr["phase"], dtype=object)], bool)
+    return held if held.any() else None
 
 
 def _first_phase_depth(arr: Any, t: Tile, job: _Job) -> tuple[np.ndarray, np.ndarray] | None:
