@@ -102,6 +102,9 @@ HARD_CORE_FLOOR = 1.01
 HARD_CORE_TAIL = 1.1
 #: kinds with less area than this share of their bounding disc are thin: no outline gap
 GAP_THIN = 0.25
+#: a seed of a thin kind whose chosen element overlaps a placed one tries up to this many
+#: next-best references (see ``_Place.place_next``); 0: the seed dies
+THIN_RETRY = 8
 #: grit (a smaller kind that a larger one's hollows hold across): the share of the
 #: reference's least bounding-disc gap it keeps from the larger kind (see
 #: ``_Grower._pair_gaps``)
@@ -682,6 +685,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         ]
         self.kind_radius = np.array([max(ex.shapes[k].radius, 0.0) for k in ex.kinds])
         self.areal = [not g.is_empty and g.area > 0 for g in self.local_geom]
+        #: per kind: thin (area under :data:`GAP_THIN` of its bounding disc: sticks); a
+        #: seed of a thin kind whose chosen element overlaps tries the next references
+        #: (:data:`THIN_RETRY`, ``_Place.place_next``)
+        self.thin = np.array([bool(self.areal[q] and self.local_geom[q].area < GAP_THIN * math.pi * float(self.kind_radius[q]) ** 2) for q in range(self.n_kinds)], dtype=bool)
         self._canopy_share_setup(ex, p)
         #: per pair of kinds: the least outline gap (shapely distance between the two
         #: outlines) a placement keeps, ``pair_gap`` times the reference's smallest gap
@@ -736,6 +743,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.adj: list[set[int]] = self.index.adj
         self.edges: set[tuple[int, int]] = self.index.edges
         self.heap: list[tuple[float, int]] = []
+        self._overlapped = False
         self.deferred: set[int] = set()
         #: the deferred seeds on the grid of cells ``hcell`` wide (see release_deferred)
         self.dgrid: dict[tuple[int, int], set[int]] = {}
@@ -1493,7 +1501,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                     continue
                 pick = self.choose(s)
                 self._out_of_domain = False
-                if (pick is None or not self.place(s, *pick)) and not (self._out_of_domain and self.try_smaller(s)):
+                self._overlapped = False
+                if (pick is None or not (self.place(s, *pick) or self.place_next(s, pick))) and not (self._out_of_domain and self.try_smaller(s)):
                     self.kill(s)
                     self.release_deferred(s)
                     continue
