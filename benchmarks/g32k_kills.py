@@ -6,7 +6,8 @@ nearest-centre quantiles.
 
     PYTHONPATH=src python benchmarks/g32k_kills.py sticks:p0s21 1 [PARAM=VALUE ...]
 
-PARAM=VALUE are GrowParams set on the grower after its setup (None, or a float).
+PARAM=VALUE are GrowParams set on the grower after its setup, or (upper case) ``_growth``
+constants such as THIN_RETRY=4 (None, or a float).
 """
 import collections, sys
 sys.path.insert(0, "benchmarks")
@@ -45,6 +46,8 @@ cls, label = sys.argv[1].split(":")
 ex = exemplar(fidelity_suite(), cls, label)
 x0, y0, x1, y1 = ex.region.bounds
 kw = {k: (None if v == 'None' else float(v)) for k, v in (a.split('=') for a in sys.argv[3:])}
+for kk in [kk for kk in kw if kk.isupper()]:
+    setattr(_growth, kk, int(kw.pop(kk)))  # module constants (THIN_RETRY=4)
 _init = G.__init__
 def init(self, *a, **k):
     _init(self, *a, **k)
