@@ -9,15 +9,13 @@ import numpy as np
 import pytest
 import shapely
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite
 
 from strew import Arrangement, InputError, Region, Shape, save
 from strew.cli import main
 from strew.metrics import fidelity
 from strew.synth import Palette, brush, erase, new_state, synthesize
 from strew.synth._exemplars import grid, stones, stripes
-
-from strew_testing import fidelity_suite
-
 
 suite = fidelity_suite()
 
@@ -252,7 +250,7 @@ def test_elongated_copies_are_limited_by_their_shape_neighbourhood():
     copy is refused when more output shapes come within its kind's bounding radius of
     its shape than its exemplar element has there (``_grow.shape_limits``). A copy laid
     exactly on an output stick has that stick's shape neighbours plus the stick itself."""
-    from strew.synth import fill, _grow
+    from strew.synth import _grow, fill
     from strew.synth._shapes import element_geometries
 
     ex = suite.make_exemplar("sticks", np.random.default_rng(7))

@@ -19,7 +19,7 @@ from strew.synth._prepare import prepare
 
 suite = fidelity_suite()
 
-BIG_RINGS = dict(large=12.0, small=2.0, ring_gap=0.5, ring_min=7, ring_max=9, cluster_spacing=70.0)
+BIG_RINGS = {"large": 12.0, "small": 2.0, "ring_gap": 0.5, "ring_min": 7, "ring_max": 9, "cluster_spacing": 70.0}
 
 
 def test_discs_have_several_candidates():

@@ -9,12 +9,11 @@ reach zone (buffer) inside the domain, rounded; no limit under half a share.
 import numpy as np
 import pytest
 import shapely
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.synth import _grow, new_state
 from strew.synth._shapes import element_geometries
-
-from strew_testing import fidelity_suite
 
 suite = fidelity_suite()
 

@@ -15,7 +15,12 @@ from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
 from ._prepare import OPEN_ROOM, anchor_mask, open_room_share
-from ._shapes import element_geometries, local_segments, shape_clashes, shape_test_needed
+from ._shapes import (
+    element_geometries,
+    local_segments,
+    shape_clashes,
+    shape_test_needed,
+)
 from ._state import SynthState, map_offsets
 
 __all__ = ["grow", "seed_patch", "fill", "brush", "erase", "update_free_space", "texture_regions"]
