@@ -103,8 +103,12 @@ HARD_CORE_TAIL = 1.1
 #: kinds with less area than this share of their bounding disc are thin: no outline gap
 GAP_THIN = 0.25
 #: a seed of a thin kind whose chosen element overlaps a placed one tries up to this many
-#: next-best references (see ``_Place.place_next``); 0: the seed dies
-THIN_RETRY = 8
+#: next-best references (see ``_Place.place_next``); 0: the seed dies. Density[stick]
+#: error on the default and long sticks of variant seeds 19-24 (12 rows, seed 1), main
+#: (0) / 2 / 8: worst 0.124 (fails) / 0.064 / 0.125; 8 overfilled rows main had right
+#: (p0s24 0.044 -> 0.092 of 0.1), 2 brings 10 of 12 rows under 0.04
+#: (benchmarks/results/g32k_retry2_density.txt)
+THIN_RETRY = 2
 #: grit (a smaller kind that a larger one's hollows hold across): the share of the
 #: reference's least bounding-disc gap it keeps from the larger kind (see
 #: ``_Grower._pair_gaps``)
