@@ -1397,7 +1397,9 @@ def shape_limits(prep) -> tuple[np.ndarray, np.ndarray]:
             edge = ~(shapely.contains(dom, pts) & (shapely.distance(pts, dom.boundary) > (rad[ids] + d) * (1.0 + 1e-9)))
             if edge.any():
                 zone = shapely.buffer(element_geometries(prep, ids[edge], pos[edge]), d[edge], quad_segs=8)
-                share[edge] = shapely.area(shapely.intersection(zone, dom)) / shapely.area(zone)
+                za = shapely.area(zone)
+                # a zone of no area (a degenerate shape with no reach): no share, no limit
+                share[edge] = np.divide(shapely.area(shapely.intersection(zone, dom)), za, out=np.zeros(len(za)), where=za > 0)
             ok = share >= 0.5
             out[ids[ok]] = np.round(cnt[ok] / share[ok]).astype(np.int64)
     prep._shape_limits = (out, reach)
