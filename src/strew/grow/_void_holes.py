@@ -14,7 +14,12 @@ wider than any the exemplar's visible elements leave (its interior circles, whol
 inside its frame, as the judge measures them) has its voids taken out and a seed of
 the visible kind around it put at its centre; the seed is matched (§5.2) and placed
 (§5.4) as any other, and its ring's void seeds grow back with the rest of the growth.
-If the placement is refused, the voids are put back as they were.
+If the placement is refused, the voids are put back as they were. The holes are
+filled widest first and only until the result has the exemplar's visible density
+(:func:`void_budget`; §5 asks no density): filling every one overshot where grow's
+result keeps more wide holes than the class's own process (fresh draw 23, spacing 24:
+100 holes filled, 1.16 x the exemplar's apples), and a gate on the exemplar's count of
+whole circles (30) left a 24-apple exemplar with 29 unfilled (0.87 x).
 
 The same pass runs on irregular exemplars without voids (``GrowParams.open_holes``,
 ``_Grower._irregular``: long thin sticks grew holes wider than any of the exemplar's,
@@ -249,7 +254,8 @@ def small_fill(g) -> tuple[int, np.ndarray] | None:
 def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
     """A visible element put at the centre of each empty circle of the placed visible
     elements wider than ``lim`` (default :func:`reference_visible_gap`), in place of
-    the voids there; how many (see the module docstring). Without void kinds it fills
+    the voids there, widest first; how many (see the module docstring). With void
+    kinds and the default ``lim``, at most :func:`void_budget` of them. Without void kinds it fills
     the empty circles of all placed elements (the hubs of clustered exemplars,
     :func:`strew.grow._clusters.grow_clusters`), and with ``bare`` an element whose
     placement at its fitted position is refused is tried at the circle's centre. With
