@@ -29,6 +29,7 @@ x0, y0, x1, y1 = ex.region.bounds
 for seed in seeds:
     st = new_state(ex, Region.rectangle(3.5 * (x1 - x0), 3.5 * (y1 - y0)), rng=seed)
     p = st.prep
+    assert np.allclose(p.pos, xy), "prep order differs from the exemplar's"
     if seed == seeds[0]:
         names = list(p.shapes) if not hasattr(p, "kind_names") else p.kind_names
         print("exemplar counts", {k: int((kn == k).sum()) for k in sorted(set(kn))})

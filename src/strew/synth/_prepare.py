@@ -980,28 +980,32 @@ def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np
 
 
 SCATTERED_FREE = True
-"""A scattered kind keeps no closest approach to itself beyond its collision radii
-(:func:`_free_scattered`); False: the exemplar's, as for every other pair."""
+"""A scattered kind keeps to itself at most the closest approach of its size class's
+most numerous kind (:func:`_free_scattered`); False: its own, as every other pair."""
 
 
 def _free_scattered(min_dist: np.ndarray, skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np.ndarray,
                     anchor: np.ndarray) -> None:
-    """Drop, in place (to inf, later read as no constraint beyond r), the closest
-    approach of a scattered kind to itself.
+    """Cap, in place, the closest approach of a scattered kind to itself at that of its
+    size class's most numerous kind to itself (raw exemplar distances).
 
     A kind is scattered when it lies wholly within one size class, is rare there (the
     class's most numerous kind has at least :data:`ANCHOR_RATIO` times its count) and is
     no anchor (:func:`anchor_mask`: nothing stands around it). Its elements lie apart
-    among the common kind's, so its nearest same-kind distances are far apart and few,
-    and their minimum is a sample minimum, not a spacing the texture keeps.
+    among the common kind's, so its nearest same-kind distances are few and far, and
+    their minimum is a sample minimum, not a spacing the texture keeps; how close two
+    elements of that size come is shown by the class's common kind.
 
     Extension of §5.1 (the closest approach learned over the whole exemplar, see
     :func:`closest_approach`; §4.1's radii give the collision bound): two sizes with
     pebbles 0.85 of the stones (``synth_variants.py --harder`` two_sizes h9s24) has 5
-    pebbles among 40 stones; their closest approach, 81 (collision bound 22), made every
-    two output pebbles keep 77 apart, and growth, near jamming at that spacing, placed
-    0.65 of the pebbles per stone (nn[stone>pebble] failing on seeds 1-3, 0.58-0.65
-    against 0.53). The class's common kind and every pair of two kinds keep theirs.
+    pebbles among 40 stones; their closest approach, 81 (collision bound 22, stones'
+    26), made every two output pebbles keep 77 apart, and growth, near jamming at that
+    spacing, placed 0.56 of the exemplar's pebbles per stone (nn[stone>pebble] failing
+    on seeds 1-3, 0.58-0.65 against 0.53). Dropping the pebbles' self spacing down to
+    their radii instead (no cap) over-produced them on h9s19 (density[pebble] 0.93 and
+    1.07 against 0.93 at seeds 1 and 3, main 0.63-0.73). Every pair of two kinds keeps
+    the exemplar's closest approach.
     """
     vis = ~np.asarray(void, bool)
     for s_ in np.unique(source):
@@ -1009,13 +1013,14 @@ def _free_scattered(min_dist: np.ndarray, skind: np.ndarray, source: np.ndarray,
         for c in np.unique(cls[ids]):
             sub = ids[cls[ids] == c]
             kinds, cnt = np.unique(skind[sub], return_counts=True)
+            top = kinds[np.argmax(cnt)]
             for k_, n_ in zip(kinds, cnt):
                 if n_ * ANCHOR_RATIO > cnt.max():
                     continue
                 mine = ids[skind[ids] == k_]
                 if np.any(cls[mine] != c) or np.any(anchor[mine] > 0):
                     continue
-                min_dist[k_, k_] = np.inf
+                min_dist[k_, k_] = min(min_dist[k_, k_], min_dist[top, top])
 
 
 ANCHOR_AROUND = 0.15
