@@ -237,7 +237,8 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
     """
     nq, k = cands.shape
     out = np.full((nq, k), INF)
-    pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
+    pair, used, _ = _pairing_scratch(q_ptr, e_ptr)
+    elen_all = _segment_lengths(e_off)  # once, not per (query, candidate) (helper s34v)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         s = q_src[i]
@@ -246,7 +247,7 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, INF)
+            cost = _pair_cost_lengths(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen_all[ea:eb], INF)
             for t in range(eb - ea):
                 if not used[t] and not _inside_convex(hp[s], hp_n[s], q_pos[i, 0] + e_off[ea + t, 0], q_pos[i, 1] + e_off[ea + t, 1]):
                     cost -= e_d[ea + t] * e_d[ea + t]
@@ -762,36 +763,47 @@ def dbscan_labels(points, eps, min_samples):
     skey = np.empty(n, np.int64)
     for t in range(n):
         skey[t] = key[order[t]]
-    # sweep 0 counts each point's neighbours, sweep 1 joins core neighbours; the 3 x 3
-    # cells around a point: one bisection per column
+    # every pair once: from each point, the later points of its own cell and of the
+    # cell above it (contiguous in key order), and the three cells of the next column
+    pi = np.empty(max(16, 4 * n), np.int64)
+    pj = np.empty(max(16, 4 * n), np.int64)
+    npair = 0
+    for t in range(n):
+        i = order[t]
+        xi = points[i, 0]
+        yi = points[i, 1]
+        k = skey[t]
+        lo2 = k + ny - 1
+        a2 = np.searchsorted(skey, lo2)
+        for part in range(2):
+            a = t + 1 if part == 0 else a2
+            hi = k + 1 if part == 0 else lo2 + 2
+            for u in range(a, n):
+                if skey[u] > hi:
+                    break
+                j = order[u]
+                ddx = xi - points[j, 0]
+                ddy = yi - points[j, 1]
+                if ddx * ddx + ddy * ddy <= e2:
+                    if npair == pi.shape[0]:
+                        pi = np.concatenate((pi, np.empty(npair, np.int64)))
+                        pj = np.concatenate((pj, np.empty(npair, np.int64)))
+                    pi[npair] = i
+                    pj[npair] = j
+                    npair += 1
     deg = np.ones(n, np.int64)
+    for p in range(npair):
+        deg[pi[p]] += 1
+        deg[pj[p]] += 1
     parent = np.arange(n)
-    for sweep in range(2):
-        for i in range(n):
-            if sweep == 1 and deg[i] < min_samples:
-                continue
-            xi = points[i, 0]
-            yi = points[i, 1]
-            for dx in range(-1, 2):
-                lo = (cx[i] + 1 + dx) * ny + cy[i]  # cells cy - 1 .. cy + 1 of the column
-                hi = lo + 2
-                a = np.searchsorted(skey, lo)
-                for t in range(a, n):
-                    if skey[t] > hi:
-                        break
-                    j = order[t]
-                    if j == i:
-                        continue
-                    ddx = xi - points[j, 0]
-                    ddy = yi - points[j, 1]
-                    if ddx * ddx + ddy * ddy <= e2:
-                        if sweep == 0:
-                            deg[i] += 1
-                        elif deg[j] >= min_samples:
-                            ri = _uf_find(parent, i)
-                            rj = _uf_find(parent, j)
-                            if ri != rj:
-                                parent[max(ri, rj)] = min(ri, rj)
+    for p in range(npair):
+        i = pi[p]
+        j = pj[p]
+        if deg[i] >= min_samples and deg[j] >= min_samples:
+            ri = _uf_find(parent, i)
+            rj = _uf_find(parent, j)
+            if ri != rj:
+                parent[max(ri, rj)] = min(ri, rj)
     nl = 0
     root_label = np.full(n, -1, np.int64)
     for i in range(n):
@@ -802,30 +814,18 @@ def dbscan_labels(points, eps, min_samples):
                 nl += 1
             labels[i] = root_label[r]
     ambiguous = False
-    for i in range(n):
-        if deg[i] >= min_samples:
+    for p in range(npair):
+        i = pi[p]
+        j = pj[p]
+        ci = deg[i] >= min_samples
+        cj = deg[j] >= min_samples
+        if ci == cj:
             continue
-        xi = points[i, 0]
-        yi = points[i, 1]
-        got = -1
-        for dx in range(-1, 2):
-            lo = (cx[i] + 1 + dx) * ny + cy[i]
-            hi = lo + 2
-            a = np.searchsorted(skey, lo)
-            for t in range(a, n):
-                if skey[t] > hi:
-                    break
-                j = order[t]
-                if j == i or deg[j] < min_samples:
-                    continue
-                ddx = xi - points[j, 0]
-                ddy = yi - points[j, 1]
-                if ddx * ddx + ddy * ddy <= e2:
-                    if got < 0:
-                        got = labels[j]
-                    elif labels[j] != got:
-                        ambiguous = True
-        labels[i] = got
+        b, c = (j, i) if ci else (i, j)
+        if labels[b] < 0:
+            labels[b] = labels[c]
+        elif labels[b] != labels[c]:
+            ambiguous = True
     return labels, ambiguous
 
 
