@@ -76,7 +76,11 @@ def prediction_weights(target: np.ndarray, pred: np.ndarray, eps: np.ndarray) ->
     """
     if len(target) == 0:
         return np.zeros(0)
-    u, g = np.unique(target, return_inverse=True)
+    # g: the rank of each target among the distinct ones (np.unique's inverse), by a
+    # table over the indices rather than a sort (helper s34v)
+    seen = np.zeros(int(target.max()) + 1, bool)
+    seen[target] = True
+    g = (np.cumsum(seen) - 1)[target]
     cnt = np.bincount(g).astype(float)
     mx = np.bincount(g, pred[:, 0]) / cnt
     my = np.bincount(g, pred[:, 1]) / cnt
@@ -501,6 +505,42 @@ def _soft_threshold(step: np.ndarray, spread: np.ndarray, cap: np.ndarray) -> np
     return step * keep[:, None]
 
 
+def _constraint_matrix(nc: int, na: int, rows_b: np.ndarray, rows_h: np.ndarray, vp: np.ndarray, vh: np.ndarray, sw: np.ndarray, anchor_sw: np.ndarray) -> sp.csr_matrix:
+    """(nc + na, na) CSR: the rows of the least-squares system of :func:`optimize`.
+
+    Row ``t`` of ``rows_b`` holds ``sw[t]`` at column ``vp[t]`` and ``-sw[t]`` at
+    ``vh[t]`` (``vp != vh``: an element is not its own neighbour), row ``t`` of
+    ``rows_h`` ``-sw[t]`` at ``vh[t]``, row ``nc + k`` ``anchor_sw[k]`` at ``k``. Built
+    in canonical form (columns sorted in each row, no duplicates), the arrays the COO
+    constructor gives for the same triplets, without its sort (helper s34v).
+    """
+    nrow = nc + na
+    cnt = np.zeros(nrow, np.int64)
+    cnt[rows_b] = 2
+    cnt[rows_h] = 1
+    cnt[nc:] = 1
+    idx_dtype = np.int32 if max(nrow, na, int(cnt.sum())) < np.iinfo(np.int32).max else np.int64
+    indptr = np.zeros(nrow + 1, idx_dtype)
+    np.cumsum(cnt, out=indptr[1:])
+    nnz = int(indptr[-1])
+    indices = np.empty(nnz, idx_dtype)
+    data = np.empty(nnz)
+    at = indptr[rows_b]
+    p, h = vp[rows_b], vh[rows_b]
+    first = p < h
+    indices[at] = np.where(first, p, h)
+    indices[at + 1] = np.where(first, h, p)
+    data[at] = np.where(first, sw[rows_b], -sw[rows_b])
+    data[at + 1] = np.where(first, -sw[rows_b], sw[rows_b])
+    at = indptr[rows_h]
+    indices[at] = vh[rows_h]
+    data[at] = -sw[rows_h]
+    at = indptr[nc:nrow]
+    indices[at] = np.arange(na)
+    data[at] = anchor_sw
+    return sp.csr_matrix((data, indices, indptr), shape=(nrow, na))
+
+
 def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDTree | None = None) -> float:
     """One optimisation step of the expanded horizon (``horizon=None``: every element).
 
@@ -561,10 +601,7 @@ def optimize(state: SynthState, horizon: np.ndarray | None = None, *, tree: cKDT
     rows_h = np.flatnonzero(only_h)
     anchor_w = np.where(in_h[hbar], prm.horizon_anchor, prm.frozen_weight)
     na = len(hbar)
-    r_idx = np.concatenate([rows_b, rows_b, rows_h, nc + np.arange(na)])
-    c_idx = np.concatenate([vp[rows_b], vh[rows_b], vh[rows_h], np.arange(na)])
-    vals = np.concatenate([sw[rows_b], -sw[rows_b], -sw[rows_h], np.sqrt(anchor_w)])
-    A = sp.csr_matrix((vals, (r_idx, c_idx)), shape=(nc + na, na))
+    A = _constraint_matrix(nc, na, rows_b, rows_h, vp, vh, sw, np.sqrt(anchor_w))
     b = np.zeros((nc + na, 2))
     b[rows_b] = sw[rows_b, None] * target[rows_b]
     b[rows_h] = sw[rows_h, None] * (target[rows_h] - pos[hp[rows_h]])
