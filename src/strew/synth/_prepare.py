@@ -285,7 +285,10 @@ def dbscan(points: np.ndarray, eps: float, min_samples: int) -> np.ndarray:
     # helper s34v: the same labels from a grid in numba (a tenth of synth's CPU time on
     # grid went to the k-d tree's pairs); the pairs' order decides only a border point
     # between two clusters, and there the k-d tree's pairs below decide as before
-    labels, ambiguous = K.dbscan_labels(np.ascontiguousarray(points, np.float64), float(eps), int(min_samples))
+    pts = np.ascontiguousarray(points, np.float64)
+    if not (eps > 0 and np.isfinite(pts).all() and float(np.ptp(pts, axis=0).max()) < 2.0**40 * eps):
+        return _dbscan_kdtree(points, eps, min_samples)  # no grid of side eps over these
+    labels, ambiguous = K.dbscan_labels(pts, float(eps), int(min_samples))
     if not ambiguous:
         return labels
     return _dbscan_kdtree(points, eps, min_samples)
