@@ -675,9 +675,11 @@ def own_jitter(h, center, hp, off, src, source, nb_ptr, nb_idx, nb_off, jit, pos
     """Prediction vectors with the jitter of the output elements they relate (the loop of
     ``_optimize._own_jitter``, which documents it; the same operations in the same order).
 
-    For each pair the exemplar element ``e'`` of ``n(center)`` at exactly ``off`` is the
-    first such row of the neighbourhood (as the stable hash lookup of
-    ``_optimize._paired_element`` finds it).
+    For each pair the exemplar element ``e'`` of ``n(center)`` at exactly ``off`` (a
+    full pair's prediction vector is a copy of one of ``center``'s neighbourhood
+    offsets) is the first such row of the neighbourhood (the sorted hash lookup that
+    found it before, main at bae7e74, took the first row of equal hash, so the same);
+    pairs without one keep ``off``.
 
     Returns
     -------

@@ -338,34 +338,6 @@ def jittered_lattice(prep: Prepared) -> np.ndarray:
     return prep._lattice
 
 
-def _offset_hash(center: np.ndarray, off: np.ndarray) -> np.ndarray:
-    """(c,) uint64: a hash of each (exemplar element, exact offset) pair."""
-    bits = np.ascontiguousarray(off, np.float64).view(np.uint64).reshape(-1, 2)
-    with np.errstate(over="ignore"):
-        return (center.astype(np.uint64) * np.uint64(0x9E3779B97F4A7C15)) ^ (bits[:, 0] * np.uint64(0xC2B2AE3D27D4EB4F)) ^ (bits[:, 1] * np.uint64(0x165667B19E3779F9))
-
-
-def _paired_element(prep: Prepared, center: np.ndarray, off: np.ndarray) -> np.ndarray:
-    """(c,) int: the exemplar element ``e'`` of ``n(center)`` at offset ``off`` (a full
-    pair's prediction vector is a copy of one of ``center``'s neighbourhood offsets), -1
-    where none is."""
-    got = getattr(prep, "_nb_hash", None)
-    if got is None or len(got[0]) != len(prep.nb_idx):
-        owner = np.repeat(np.arange(len(prep.nb_ptr) - 1), np.diff(prep.nb_ptr))
-        hv = _offset_hash(owner, prep.nb_off)
-        order = np.argsort(hv, kind="stable")
-        got = (hv[order], order, owner)
-        prep._nb_hash = got
-    hs, order, owner = got
-    if len(hs) == 0:
-        return np.full(len(center), -1, np.int64)
-    q = _offset_hash(center, off)
-    at = np.minimum(np.searchsorted(hs, q), len(hs) - 1)
-    k = order[at]
-    ok = (hs[at] == q) & (owner[k] == center) & np.all(prep.nb_off[k] == off, axis=1)
-    return np.where(ok, prep.nb_idx[k], -1)
-
-
 def _own_jitter(state: SynthState, h: np.ndarray, center: np.ndarray, hp: np.ndarray, off: np.ndarray) -> np.ndarray:
     """(c, 2) float: prediction vectors ``p_e' - p_e`` that carry the jitter of the output
     elements ``h``, ``h'`` they relate, not that of the exemplar elements ``e``, ``e'``
@@ -399,7 +371,7 @@ def _own_jitter(state: SynthState, h: np.ndarray, center: np.ndarray, hp: np.nda
     # 2.4, a diagonal neighbour within the lattice's reach; 2 windows failed on
     # regularity, 1.2x). Its relative jitter is kept within the exemplar's own bonds'
     # (RELATIVE_JITTER_QUANTILE): 0 windows on seeds 1-4, worst 0.55.
-    # The pair's e' (:func:`_paired_element`), the source test, the seam cap and the
+    # The pair's e' (the element of n(center) at exactly ``off``), the source test, the seam cap and the
     # trade of jitters run in one loop (helper s34v: the array expressions took a
     # tenth of synth's CPU time on grid).
     bound, spacing = relative_jitter_bound(prep)
