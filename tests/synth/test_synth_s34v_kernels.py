@@ -114,3 +114,30 @@ def test_own_jitter_kernel_matches_the_array_code(seed):
     want = _own_jitter_arrays(*args)
     assert np.array_equal(got, want)
     assert not np.array_equal(got, off)  # the test reaches the trade of jitters
+
+
+def test_rectangle_contains_by_comparisons_is_geos_answer():
+    """``Region.contains`` of an axis-aligned rectangle compares coordinates (synth's
+    ``in_domain`` asks it every iteration): the same answer as GEOS's, boundary
+    excluded, for points on, just inside and just outside every edge."""
+    import shapely
+
+    from strew import Region
+
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        w, h = rng.uniform(0.1, 500.0, 2)
+        x0, y0 = rng.uniform(-100.0, 100.0, 2)
+        r = Region.rectangle(w, h, x0, y0)
+        assert r._axis_box is not None
+        b = r.bounds
+        xs = np.r_[rng.uniform(b[0] - 1, b[2] + 1, 40), [b[0], b[2], (b[0] + b[2]) / 2]]
+        ys = np.r_[rng.uniform(b[1] - 1, b[3] + 1, 40), [b[1], b[3], (b[1] + b[3]) / 2]]
+        xs = np.r_[xs, np.nextafter(b[0], [-np.inf, np.inf]), np.nextafter(b[2], [-np.inf, np.inf])]
+        ys = np.r_[ys, np.nextafter(b[1], [-np.inf, np.inf]), np.nextafter(b[3], [-np.inf, np.inf])]
+        X, Y = np.meshgrid(xs, ys)
+        pts = np.c_[X.ravel(), Y.ravel()]
+        np.testing.assert_array_equal(r.contains(pts), shapely.contains_xy(r.prepared, pts[:, 0], pts[:, 1]))
+    tilted = Region(shapely.Polygon([(0, 0), (4, 1), (3, 5), (-1, 4)]))
+    assert tilted._axis_box is None
+    assert tilted.contains([[1.5, 2.5], [4, 4]]).tolist() == [True, False]
