@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import time
 from collections.abc import Callable
 
@@ -2713,7 +2714,7 @@ def grow(
         failed_pos = seed_pos[failed]
         if len(failed_pos):
             lists = cKDTree(fpos).query_ball_point(failed_pos, r=rbar_seeds[failed])
-            hit = np.fromiter((j for v in lists for j in v), dtype=np.int64)
+            hit = np.fromiter(itertools.chain.from_iterable(lists), dtype=np.int64)
             if len(hit):
                 hit = np.unique(hit)
                 fl = flag[hit]

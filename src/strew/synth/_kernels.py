@@ -85,11 +85,30 @@ def pair_cost(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, 
     float
         Sum over full pairs of ``|dp|^2 + omega``, plus ``d^2`` per partial pair.
     """
+    q = e_off.shape[0]
+    for j in range(q):
+        elen[j] = np.sqrt(e_off[j, 0] * e_off[j, 0] + e_off[j, 1] * e_off[j, 1])
+    return _pair_cost_lengths(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used, elen, bound)
+
+
+@numba.njit(cache=True, nogil=True)
+def _segment_lengths(off):
+    """(N,) float: the length of each offset row, as :func:`pair_cost` computes it."""
+    out = np.empty(off.shape[0])
+    for j in range(off.shape[0]):
+        out[j] = np.sqrt(off[j, 0] * off[j, 0] + off[j, 1] * off[j, 1])
+    return out
+
+
+@numba.njit(cache=True, nogil=True)
+def _pair_cost_lengths(o_off, o_kind, o_d, e_off, e_kind, e_d, kind_cost, rim, pair_out, used, elen, bound):
+    """:func:`pair_cost` with the lengths of ``e_off`` given in ``elen`` (read only):
+    a search over many candidates computes them once per exemplar neighbourhood, not
+    once per (query, candidate) (helper s34v)."""
     m = o_off.shape[0]
     q = e_off.shape[0]
     for j in range(q):
         used[j] = False
-        elen[j] = np.sqrt(e_off[j, 0] * e_off[j, 0] + e_off[j, 1] * e_off[j, 1])
     cost = 0.0
     for i in range(m):
         dd = o_d[i] * o_d[i]
@@ -218,7 +237,8 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
     """
     nq, k = cands.shape
     out = np.full((nq, k), INF)
-    pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
+    pair, used, _ = _pairing_scratch(q_ptr, e_ptr)
+    elen_all = _segment_lengths(e_off)  # once, not per (query, candidate) (helper s34v)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         s = q_src[i]
@@ -227,7 +247,7 @@ def candidate_costs_in_domain(q_ptr, q_off, q_kind, q_d, q_rbar, q_center_kind, 
             if c < 0:
                 continue
             ea, eb = e_ptr[c], e_ptr[c + 1]
-            cost = pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, INF)
+            cost = _pair_cost_lengths(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen_all[ea:eb], INF)
             for t in range(eb - ea):
                 if not used[t] and not _inside_convex(hp[s], hp_n[s], q_pos[i, 0] + e_off[ea + t, 0], q_pos[i, 1] + e_off[ea + t, 1]):
                     cost -= e_d[ea + t] * e_d[ea + t]
@@ -606,7 +626,12 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
     nq, k = cands.shape
     best = np.full(nq, -1, np.int64)
     bcost = np.full(nq, INF)
-    pair, used, elen = _pairing_scratch(q_ptr, e_ptr)
+    pair, used, _ = _pairing_scratch(q_ptr, e_ptr)
+    # helper s34v: the lengths of every exemplar offset once, and the pairs of each
+    # query's best candidate kept as it is found (not paired again afterwards); the
+    # same pairs and costs as pair_cost gives
+    elen_all = _segment_lengths(e_off)
+    bpair = np.empty(q_ptr[nq], np.int64)
     for i in range(nq):
         a, b = q_ptr[i], q_ptr[i + 1]
         for j in range(k):
@@ -616,10 +641,12 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
             ea, eb = e_ptr[c], e_ptr[c + 1]
             cc = _center_cost(q_center_kind[i], ex_kind[c], q_center_d[i], kind_cost)
             # branch and bound: a candidate is dropped as soon as it cannot beat the best
-            cost = cc + pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, bcost[i] - cc)
+            cost = cc + _pair_cost_lengths(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen_all[ea:eb], bcost[i] - cc)
             if cost < bcost[i]:
                 bcost[i] = cost
                 best[i] = c
+                for t in range(b - a):
+                    bpair[a + t] = pair[t]
     total = 0
     for i in range(nq):
         total += q_ptr[i + 1] - q_ptr[i]
@@ -632,16 +659,176 @@ def best_matches(q_ptr, q_idx, q_off, q_kind, q_d, q_rbar, q_center_kind, q_cent
         if c < 0:
             continue
         a, b = q_ptr[i], q_ptr[i + 1]
-        ea, eb = e_ptr[c], e_ptr[c + 1]
-        pair_cost(q_off[a:b], q_kind[a:b], q_d[a:b], e_off[ea:eb], e_kind[ea:eb], e_d[ea:eb], kind_cost, q_rbar[i], pair, used, elen, INF)
+        ea = e_ptr[c]
         for t in range(b - a):
-            if pair[t] >= 0:
+            if bpair[a + t] >= 0:
                 con_q[n] = i
                 con_o[n] = q_idx[a + t]
-                con_off[n, 0] = e_off[ea + pair[t], 0]
-                con_off[n, 1] = e_off[ea + pair[t], 1]
+                con_off[n, 0] = e_off[ea + bpair[a + t], 0]
+                con_off[n, 1] = e_off[ea + bpair[a + t], 1]
                 n += 1
     return best, bcost, con_q[:n], con_o[:n], con_off[:n]
+
+
+@numba.njit(cache=True, nogil=True)
+def own_jitter(h, center, hp, off, src, source, nb_ptr, nb_idx, nb_off, jit, pos, bound, spacing, seam_offset):
+    """Prediction vectors with the jitter of the output elements they relate (the loop of
+    ``_optimize._own_jitter``, which documents it; the same operations in the same order).
+
+    For each pair the exemplar element ``e'`` of ``n(center)`` at exactly ``off`` (a
+    full pair's prediction vector is a copy of one of ``center``'s neighbourhood
+    offsets) is the first such row of the neighbourhood (the sorted hash lookup that
+    found it before, main at bae7e74, took the first row of equal hash, so the same);
+    pairs without one keep ``off``.
+
+    Returns
+    -------
+    (c, 2) float
+    """
+    c = off.shape[0]
+    out = off.copy()
+    for t in range(c):
+        e = center[t]
+        ox = off[t, 0]
+        oy = off[t, 1]
+        e2 = -1
+        for r in range(nb_ptr[e], nb_ptr[e + 1]):
+            if nb_off[r, 0] == ox and nb_off[r, 1] == oy:
+                e2 = nb_idx[r]
+                break
+        if e2 < 0:
+            continue
+        a = src[h[t]]
+        b = src[hp[t]]
+        if source[b] != source[e] or source[a] != source[e]:
+            continue
+        wx = jit[b, 0] - jit[a, 0]
+        wy = jit[b, 1] - jit[a, 1]
+        # a seam pair: its relative jitter kept within the exemplar's own bonds'
+        if np.hypot((pos[b, 0] - pos[a, 0]) - ox, (pos[b, 1] - pos[a, 1]) - oy) > seam_offset * spacing[a]:
+            m = np.hypot(wx, wy)
+            f = min(m, bound[a]) / max(m, 1e-300)
+            wx *= f
+            wy *= f
+        out[t, 0] = ox + (wx - (jit[e2, 0] - jit[e, 0]))
+        out[t, 1] = oy + (wy - (jit[e2, 1] - jit[e, 1]))
+    return out
+
+
+@numba.njit(cache=True, nogil=True)
+def _uf_find(parent, i):
+    while parent[i] != i:
+        parent[i] = parent[parent[i]]
+        i = parent[i]
+    return i
+
+
+@numba.njit(cache=True, nogil=True)
+def dbscan_labels(points, eps, min_samples):
+    """DBSCAN over the pairs within ``eps`` (``|p - q|^2 <= eps^2``), as
+    ``_prepare.dbscan`` defines it: a core point has at least ``min_samples`` points
+    (itself included) within ``eps``; clusters are the connected components of the core
+    points, numbered by their lowest core index; a border point joins the cluster of its
+    core neighbours. Points are bucketed on a grid of side ``eps`` whose occupied cells
+    are found by bisection in the sorted cell keys (the points may spread far along x).
+
+    Returns
+    -------
+    labels : (n,) int
+        -1 for noise.
+    ambiguous : bool
+        Some border point has core neighbours in two clusters (which one it joins then
+        depends on the order of the pairs: the caller decides).
+    """
+    n = points.shape[0]
+    labels = np.full(n, -1, np.int64)
+    if n == 0:
+        return labels, False
+    e2 = eps * eps
+    cell = eps * (1.0 + 1e-9)  # pairs within eps lie in neighbouring cells despite rounding
+    x0 = points[0, 0]
+    y0 = points[0, 1]
+    for i in range(n):
+        x0 = min(x0, points[i, 0])
+        y0 = min(y0, points[i, 1])
+    cy = np.empty(n, np.int64)
+    cx = np.empty(n, np.int64)
+    ny = 1
+    for i in range(n):
+        cx[i] = int((points[i, 0] - x0) / cell)
+        cy[i] = int((points[i, 1] - y0) / cell)
+        ny = max(ny, cy[i] + 3)
+    key = np.empty(n, np.int64)
+    for i in range(n):
+        key[i] = (cx[i] + 1) * ny + cy[i] + 1
+    order = np.argsort(key, kind="mergesort")
+    skey = np.empty(n, np.int64)
+    for t in range(n):
+        skey[t] = key[order[t]]
+    # every pair once: from each point, the later points of its own cell and of the
+    # cell above it (contiguous in key order), and the three cells of the next column
+    pi = np.empty(max(16, 4 * n), np.int64)
+    pj = np.empty(max(16, 4 * n), np.int64)
+    npair = 0
+    for t in range(n):
+        i = order[t]
+        xi = points[i, 0]
+        yi = points[i, 1]
+        k = skey[t]
+        lo2 = k + ny - 1
+        a2 = np.searchsorted(skey, lo2)
+        for part in range(2):
+            a = t + 1 if part == 0 else a2
+            hi = k + 1 if part == 0 else lo2 + 2
+            for u in range(a, n):
+                if skey[u] > hi:
+                    break
+                j = order[u]
+                ddx = xi - points[j, 0]
+                ddy = yi - points[j, 1]
+                if ddx * ddx + ddy * ddy <= e2:
+                    if npair == pi.shape[0]:
+                        pi = np.concatenate((pi, np.empty(npair, np.int64)))
+                        pj = np.concatenate((pj, np.empty(npair, np.int64)))
+                    pi[npair] = i
+                    pj[npair] = j
+                    npair += 1
+    deg = np.ones(n, np.int64)
+    for p in range(npair):
+        deg[pi[p]] += 1
+        deg[pj[p]] += 1
+    parent = np.arange(n)
+    for p in range(npair):
+        i = pi[p]
+        j = pj[p]
+        if deg[i] >= min_samples and deg[j] >= min_samples:
+            ri = _uf_find(parent, i)
+            rj = _uf_find(parent, j)
+            if ri != rj:
+                parent[max(ri, rj)] = min(ri, rj)
+    nl = 0
+    root_label = np.full(n, -1, np.int64)
+    for i in range(n):
+        if deg[i] >= min_samples:
+            r = _uf_find(parent, i)
+            if root_label[r] < 0:
+                root_label[r] = nl
+                nl += 1
+            labels[i] = root_label[r]
+    ambiguous = False
+    for p in range(npair):
+        i = pi[p]
+        j = pj[p]
+        ci = deg[i] >= min_samples
+        cj = deg[j] >= min_samples
+        if ci == cj:
+            continue
+        b, c = (j, i) if ci else (i, j)
+        if labels[b] < 0:
+            labels[b] = labels[c]
+        elif labels[b] != labels[c]:
+            ambiguous = True
+    return labels, ambiguous
 
 
 @numba.njit(cache=True, nogil=True)
