@@ -355,6 +355,7 @@ class _Grower:
         context: list[Element] | None = None,
         holes: Sequence[Sequence[Any]] | None = None,
         open_edges: Sequence[Sequence[float]] | None = None,
+        zone: tuple[Any, int] | None = None,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -462,6 +463,21 @@ class _Grower:
         # diagonal, so that none slips between cell centres. Raster distances therefore
         # overestimate the exact ones near circles and the boundary, and underestimate
         # them by at most that half diagonal near lines (see `slack` in `run`).
+        # a tiled world's first phases' zone (issue 19.4, strew.tiles._first_zone): (geometry,
+        # k); in the first k phases only cells whose centre lies in it are candidates (bit 8,
+        # no obstacle: the rest of the region stops no circle), and every new element's
+        # anchor (the mean of its proxies' outline points, where a tile measures it) lies in
+        # it (_in_zone); the later phases use the whole region
+        self.zone = None
+        self.zone_phases = 0
+        self._zone_out = None
+        if zone is not None and periodic is None and int(zone[1]) > 0:
+            self.zone = zone[0]
+            shapely.prepare(self.zone)
+            self.zone_phases = int(zone[1])
+            zin = shapely.contains_xy(self.zone, gx.ravel(), gy.ravel()).reshape(rows, cols)
+            self._zone_out = (covered == 0) & ~zin
+            covered[self._zone_out] |= 8
         self.has_lines = False
         self.covered = covered
         # -- initial distance transform (the MAT's values) ------------------------------
@@ -820,9 +836,29 @@ class _Grower:
             ok = bool(shapely.contains_xy(self.centre_zone, x, y))
         else:
             ok = bool(self.region.contains(np.array([[x, y]]))[0])
+        if ok and self._zone_on():
+            ok = bool(shapely.contains_xy(self.zone, x, y))
         if v > rho and ok:
             return np.array([x, y]), float(v)
         return c, rho
+
+    def _zone_on(self) -> bool:
+        """Whether the current phase is one of the zone's (``zone``, strew.tiles._first_zone)."""
+        if self.zone is None:
+            return False
+        phases = self.pattern.phases
+        names = [p.name for p in phases[: self.zone_phases]] if phases else []
+        return self.state.phase in names
+
+    def _in_zone(self, new: Sequence[Element]) -> bool:
+        """Whether every element of ``new`` has its anchor, the mean of its proxies' outline
+        points (as strew.ornament._render places a row), in ``zone``."""
+        for el in new:
+            pts = np.vstack([pr.polyline() for pr in el.proxies])
+            m = pts.mean(axis=0)
+            if not shapely.contains_xy(self.zone, float(m[0]), float(m[1])):
+                return False
+        return True
 
     # -- main loop (§4.1) -----------------------------------------------------------------
     def _phase_threshold(self, k: int) -> float:
@@ -856,6 +892,10 @@ class _Grower:
                     self.state.phase = self.pattern.phases[phase_k].name
                     threshold = self._phase_threshold(phase_k)
                     self.clear_exclude_all()
+                    if self._zone_out is not None and phase_k == self.zone_phases:
+                        # the zone's phases are over: the whole region's cells are candidates
+                        self.covered[self._zone_out] &= np.int8(~8)
+                        self._mark_all()
                     continue
                 largest = max(0.0, v * h) if v >= 0 else 0.0
                 break
@@ -971,6 +1011,9 @@ class _Grower:
                 if new and not self.inside([pr for ch in new for pr in ch.proxies]):
                     self.stats["outside"] += 1
                     continue
+                if new and self._zone_on() and not self._in_zone(new):
+                    self.stats["outside"] += 1
+                    continue
                 self._commit(parent, new)
                 for ch in new:
                     # the empty circle C it grew into, in the panel's frame: a tiled world
@@ -1083,6 +1126,7 @@ def grow_elements(
     _context: list[Element] | None = None,
     _holes: Sequence[Sequence[Any]] | None = None,
     _open: Sequence[Sequence[float]] | None = None,
+    _zone: tuple[Any, int] | None = None,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
@@ -1133,7 +1177,8 @@ def grow_elements(
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile,
-                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else [list(v) for v in _holes], open_edges=_open)
+                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else [list(v) for v in _holes], open_edges=_open,
+                zone=_zone)
     g.run()
     rep.done(len(g.elements) - g.n_seeds - g.n_context)
     stats = dict(g.stats)
