@@ -338,7 +338,9 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
         synth_kw = {"_open": [e + [_OPEN_REACH * job.halo] for e in _open_edges(t, job, grown)]}
         zone = _first_zone(t, job, grown)
         if zone is not None:  # the first phase grows only where the tile keeps it
-            synth_kw["_zone"] = (zone, _FIRST_ZONE_PHASES)
+            centres = None if _FIRST_ZONE_CENTRES >= _KEEP_FIRST_REACH else _first_zone(t, job, grown, _FIRST_ZONE_CENTRES)
+            wall = _first_zone(t, job, grown, _FIRST_ZONE_WALL) if _FIRST_ZONE_WALL > 0 else None
+            synth_kw["_zone"] = (zone, _FIRST_ZONE_PHASES, centres, wall)
     params = job.params
     cells = _ornament_cells(job, grown)
     if cells is not None:  # the world's raster cell (_ornament_cells)
@@ -828,6 +830,11 @@ _KEEP_FIRST_REACH = 0.5
 # phases grow only within _KEEP_FIRST_REACH halos past the border with a later tile
 # (_first_zone; 0: in the whole region, as before w34h)
 _FIRST_ZONE_PHASES = 1
+# how far past that border (in halos) their circle centres may lie (at most _KEEP_FIRST_REACH)
+_FIRST_ZONE_CENTRES = 0.5
+# how far past that border (in halos) a wall stops their circles as an element does (0:
+# none, the region's edges there open as the halo's open edges)
+_FIRST_ZONE_WALL = 0.0
 # whether _keep_groups leaves the first phase's rows deeper than that in a later tile to
 # it, for a pattern without tile anchors (_first_phase_beyond; 0: kept, for measurement)
 _FIRST_BEYOND = 1
@@ -1055,7 +1062,7 @@ def _first_phase_beyond(first: tuple[np.ndarray, np.ndarray], job: _Job) -> np.n
     return ph & (depth > _KEEP_FIRST_REACH * job.halo)
 
 
-def _first_zone(t: Tile, job: _Job, grown: tuple[float, float, float, float]) -> Any:
+def _first_zone(t: Tile, job: _Job, grown: tuple[float, float, float, float], reach: float | None = None) -> Any:
     """The zone of ``t``'s grown rectangle in which its first ``_FIRST_ZONE_PHASES`` phases
     grow (strew.ornament._engine: candidate circle centres and every new element's
     anchor), a shapely geometry: the grown rectangle less the parts of its later
@@ -1085,7 +1092,9 @@ def _first_zone(t: Tile, job: _Job, grown: tuple[float, float, float, float]) ->
     import shapely
 
     box = shapely.box(*grown)
-    keep = shapely.buffer(shapely.box(*t.rect), _KEEP_FIRST_REACH * job.halo, quad_segs=16)
+    reach = _KEEP_FIRST_REACH if reach is None else reach
+    rect = shapely.box(*t.rect)
+    keep = shapely.buffer(rect, reach * job.halo, quad_segs=16) if reach > 0 else rect
     far = shapely.difference(shapely.union_all([shapely.box(*r) for r in later]), keep)
     zone = shapely.difference(box, far)
     return None if zone.is_empty or zone.equals(box) else zone
