@@ -336,11 +336,6 @@ def run_tile(job: _Job, t: Tile, *neighbours: Any) -> Any:
     if job.method == "ornament" and _keeps_first_phase(job) is not None:
         # the halo's edges that face a later tile stop no circle (_open_edges)
         synth_kw = {"_open": [e + [_OPEN_REACH * job.halo] for e in _open_edges(t, job, grown)]}
-        zone = _first_zone(t, job, grown)
-        if zone is not None:  # the first phase grows only where the tile keeps it
-            centres = None if _FIRST_ZONE_CENTRES >= _KEEP_FIRST_REACH else _first_zone(t, job, grown, _FIRST_ZONE_CENTRES)
-            wall = _first_zone(t, job, grown, _FIRST_ZONE_WALL) if _FIRST_ZONE_WALL > 0 else None
-            synth_kw["_zone"] = (zone, _FIRST_ZONE_PHASES, centres, wall)
     params = job.params
     cells = _ornament_cells(job, grown)
     if cells is not None:  # the world's raster cell (_ornament_cells)
@@ -826,15 +821,6 @@ _KEEP_PHASES = 2
 # in the region), and how far past its rectangle (in halos) a tile keeps its first phase
 _OPEN_REACH = 1.0
 _KEEP_FIRST_REACH = 0.5
-# for a pattern that keeps its first phase without tile anchors: how many of its first
-# phases grow only within _KEEP_FIRST_REACH halos past the border with a later tile
-# (_first_zone; 0: in the whole region, as before w34h)
-_FIRST_ZONE_PHASES = 1
-# how far past that border (in halos) their circle centres may lie (at most _KEEP_FIRST_REACH)
-_FIRST_ZONE_CENTRES = 0.5
-# how far past that border (in halos) a wall stops their circles as an element does (0:
-# none, the region's edges there open as the halo's open edges)
-_FIRST_ZONE_WALL = 0.0
 # whether _keep_groups leaves the first phase's rows deeper than that in a later tile to
 # it, for a pattern without tile anchors (_first_phase_beyond; 0: kept, for measurement)
 _FIRST_BEYOND = 1
@@ -1060,44 +1046,6 @@ def _first_phase_beyond(first: tuple[np.ndarray, np.ndarray], job: _Job) -> np.n
     """
     ph, depth = first
     return ph & (depth > _KEEP_FIRST_REACH * job.halo)
-
-
-def _first_zone(t: Tile, job: _Job, grown: tuple[float, float, float, float], reach: float | None = None) -> Any:
-    """The zone of ``t``'s grown rectangle in which its first ``_FIRST_ZONE_PHASES`` phases
-    grow (strew.ornament._engine: candidate circle centres and every new element's
-    anchor), a shapely geometry: the grown rectangle less the parts of its later
-    neighbours farther than ``_KEEP_FIRST_REACH`` halos from ``t``'s rectangle; None for
-    a pattern that does not keep its first phase, one with tile anchors, or a tile with
-    no later neighbour. The zone's edge inside a later tile stops no circle (the circles
-    there are measured against the elements alone, as at the open edges, _open_edges).
-
-    Why (issue 19.4, helper w34h). The finished tile kept its vines up to half a halo
-    past its border (_first_phase_rows) but grew them up to a halo past it, and more of
-    them there than on its own side near the border (71-132 per world against 39-59,
-    5 worlds, tiles 40-56, seed 19), and earlier: the open edge measures those circles
-    against the elements alone, so they stay large, and §4.1 fills the largest circle
-    first. Standing while the tile filled its own side, they made its circles near the
-    border smaller (mean radius 1 s inside, tile 44: 12.0 against the untiled control's
-    18.1), so its vines there were more, shorter and set back (-6..-3 s: 182 against
-    146; -2..0 s: 279 against 313), and then they were cut (benchmarks/results/
-    w32h_interior_vines.txt). Grown only where it keeps them, the first phase grows no
-    vine it will cut. Departure from the paper: Wong et al. grow one panel in one run
-    (§4.1, §5); this phase-dependent region is ours.
-    """
-    if _FIRST_ZONE_PHASES < 1 or _keeps_first_phase(job) is None or _has_tile_anchors(job):
-        return None
-    later = _later_rects(t, job)
-    if not later:
-        return None
-    import shapely
-
-    box = shapely.box(*grown)
-    reach = _KEEP_FIRST_REACH if reach is None else reach
-    rect = shapely.box(*t.rect)
-    keep = shapely.buffer(rect, reach * job.halo, quad_segs=16) if reach > 0 else rect
-    far = shapely.difference(shapely.union_all([shapely.box(*r) for r in later]), keep)
-    zone = shapely.difference(box, far)
-    return None if zone.is_empty or zone.equals(box) else zone
 
 
 def _open_edges(t: Tile, job: _Job, grown: tuple[float, float, float, float]) -> list[list[float]]:

@@ -134,7 +134,6 @@ def grow_ornament(
     should_cancel: Callable[[], bool] | None = None,
     _tiled: bool = False,
     _open: Any = None,
-    _zone: Any = None,
     **params: Any,
 ) -> Arrangement:
     """Grow adaptive clip art in a region and render it (Wong et al. 1998).
@@ -253,7 +252,6 @@ def grow_ornament(
             _context=parents,
             _holes=ctx.meta.get("ornament_holes") if _tiled and ctx is not None else None,  # strew.tiles._ornament_holes
             _open=_open if _tiled else None,  # the halo edges facing a later tile (strew.tiles._open_edges)
-            _zone=_zone if _tiled else None,  # the first phases' zone (strew.tiles._first_zone)
         )
         if _tiled:
             from ._render import render_ornament

@@ -355,7 +355,6 @@ class _Grower:
         context: list[Element] | None = None,
         holes: Sequence[Sequence[Any]] | None = None,
         open_edges: Sequence[Sequence[float]] | None = None,
-        zone: tuple[Any, ...] | None = None,
     ) -> None:
         # incremental=False recomputes the whole distance transform after every placement
         # instead of the lower wave: the baseline of benchmarks/ornament.py
@@ -463,41 +462,12 @@ class _Grower:
         # diagonal, so that none slips between cell centres. Raster distances therefore
         # overestimate the exact ones near circles and the boundary, and underestimate
         # them by at most that half diagonal near lines (see `slack` in `run`).
-        # a tiled world's first phases' zone (issue 19.4, strew.tiles._first_zone): (geometry,
-        # k); in the first k phases only cells whose centre lies in it are candidates (bit 8,
-        # no obstacle: the rest of the region stops no circle), and every new element's
-        # anchor (the mean of its proxies' outline points, where a tile measures it) lies in
-        # it (_in_zone); the later phases use the whole region
-        # (a third value, a geometry: the candidate centres' zone, where it differs)
-        self.zone = self.zone_centres = None
-        self.wall_segs = None
-        self._wall_geom = None
-        self._wall_cells = None
-        self.zone_phases = 0
-        self._zone_out = None
-        if zone is not None and periodic is None and int(zone[1]) > 0:
-            self.zone = zone[0]
-            shapely.prepare(self.zone)
-            self.zone_centres = zone[2] if len(zone) > 2 and zone[2] is not None else self.zone
-            shapely.prepare(self.zone_centres)
-            self.zone_phases = int(zone[1])
-            zin = shapely.contains_xy(self.zone_centres, gx.ravel(), gy.ravel()).reshape(rows, cols)
-            self._zone_out = (covered == 0) & ~zin
-            covered[self._zone_out] |= 8
-            if len(zone) > 3 and zone[3] is not None:
-                # a fourth value, a geometry: in those phases its edge inside the region's open
-                # part is a wall, measured as an element is (a circle it stops is kept, of its
-                # radius; _measure), as the later tile's own growth would bound the circles
-                self._wall_geom = zone[3]
-                win = shapely.contains_xy(self._wall_geom, gx.ravel(), gy.ravel()).reshape(rows, cols)
-                self._wall_cells = ~win & ((covered & 3) == 0)
         self.has_lines = False
         self.covered = covered
         # -- initial distance transform (the MAT's values) ------------------------------
         if periodic is None:
             # (cells past an open edge, bit 4, are no obstacle: only not candidates)
-            wall = self._wall_cells if self._wall_cells is not None else np.zeros((rows, cols), bool)
-            d, (ii, jj) = ndimage.distance_transform_edt(((covered & 3) == 0) & ~wall, return_indices=True)
+            d, (ii, jj) = ndimage.distance_transform_edt((covered & 3) == 0, return_indices=True)
             self.dist_all = d.astype(np.float64)
             self.near_all = (ii.astype(np.int64) * cols + jj).astype(np.int64)
         else:  # nothing covered yet: the seeds' waves set every distance
@@ -505,10 +475,6 @@ class _Grower:
             self.near_all = np.full((rows, cols), -1, np.int64)
         self.dist_el = np.full((rows, cols), np.inf)
         self.near_el = np.full((rows, cols), -1, np.int64)
-        if self._wall_cells is not None and self._wall_cells.any():
-            d, (ii, jj) = ndimage.distance_transform_edt(~self._wall_cells, return_indices=True)
-            self.dist_el = d.astype(np.float64)
-            self.near_el = (ii.astype(np.int64) * cols + jj).astype(np.int64)
         self.skip = np.zeros((rows, cols), bool)
         # On a torus the waves of the dist_all field stop where the distance exceeds the
         # largest empty circle still in the tile (plus slack): no tile cell's nearest
@@ -555,15 +521,6 @@ class _Grower:
             self.boundary_segs, self.closed_boundary = _closed_part(region, self.open_edges, size)
         if periodic is not None:
             self.boundary_segs = np.zeros((0, 4))
-        if self._wall_geom is not None:
-            tol = 1e-7 * max(1.0, size)
-            wall = shapely.difference(self._wall_geom.boundary, shapely.buffer(self.closed_boundary, tol))
-            segs = []
-            for part in shapely.get_parts(shapely.line_merge(wall) if not shapely.is_empty(wall) else wall):
-                xy = shapely.get_coordinates(part)
-                if len(xy) >= 2:
-                    segs.append(np.c_[xy[:-1], xy[1:]])
-            self.wall_segs = np.ascontiguousarray(np.vstack(segs), dtype=np.float64) if segs else np.zeros((0, 4))
         self.region_cover = shapely.buffer(region.geometry, 1e-7 * max(1.0, size))
         shapely.prepare(self.region_cover)
         self.stats: dict[str, Any] = dict(iterations=0, successes=0, failures=0, rejected=0, outside=0)
@@ -840,8 +797,6 @@ class _Grower:
         idx = self.placed.near(c[0], c[1], reach)
         dists = self.placed.distances(idx, c[0], c[1]) if len(idx) else np.empty(0)
         d_e = float(dists.min()) if len(dists) else math.inf
-        if self.wall_segs is not None:  # the zone's wall stops a circle as an element does
-            d_e = min(d_e, float(segments_distance(float(c[0]), float(c[1]), self.wall_segs)))
         return min(d_b, d_e), d_b, d_e, idx, dists
 
     def _climb(self, c: np.ndarray, rho: float, reach: float, target: float) -> tuple[np.ndarray, float]:
@@ -856,8 +811,6 @@ class _Grower:
         hi = np.maximum(b[:, :2], b[:, 2:])
         gap = np.maximum(np.maximum(lo - c, c - hi), 0)
         segs.append(b[np.hypot(gap[:, 0], gap[:, 1]) <= reach])
-        if self.wall_segs is not None:
-            segs.append(self.wall_segs)
         allsegs = np.ascontiguousarray(np.vstack(segs))
         x, y, v = climb(float(c[0]), float(c[1]), np.ascontiguousarray(circ), allsegs, 0.5 * self.h, 0.02 * self.h, target)
         if self.periodic is not None:
@@ -867,29 +820,9 @@ class _Grower:
             ok = bool(shapely.contains_xy(self.centre_zone, x, y))
         else:
             ok = bool(self.region.contains(np.array([[x, y]]))[0])
-        if ok and self._zone_on():
-            ok = bool(shapely.contains_xy(self.zone_centres, x, y))
         if v > rho and ok:
             return np.array([x, y]), float(v)
         return c, rho
-
-    def _zone_on(self) -> bool:
-        """Whether the current phase is one of the zone's (``zone``, strew.tiles._first_zone)."""
-        if self.zone is None:
-            return False
-        phases = self.pattern.phases
-        names = [p.name for p in phases[: self.zone_phases]] if phases else []
-        return self.state.phase in names
-
-    def _in_zone(self, new: Sequence[Element]) -> bool:
-        """Whether every element of ``new`` has its anchor, the mean of its proxies' outline
-        points (as strew.ornament._render places a row), in ``zone``."""
-        for el in new:
-            pts = np.vstack([pr.polyline() for pr in el.proxies])
-            m = pts.mean(axis=0)
-            if not shapely.contains_xy(self.zone, float(m[0]), float(m[1])):
-                return False
-        return True
 
     # -- main loop (§4.1) -----------------------------------------------------------------
     def _phase_threshold(self, k: int) -> float:
@@ -923,19 +856,6 @@ class _Grower:
                     self.state.phase = self.pattern.phases[phase_k].name
                     threshold = self._phase_threshold(phase_k)
                     self.clear_exclude_all()
-                    if self._zone_out is not None and phase_k == self.zone_phases:
-                        # the zone's phases are over: the whole region's cells are candidates
-                        self.covered[self._zone_out] &= np.int8(~8)
-                        if self._wall_cells is not None:  # and the wall is gone
-                            self.wall_segs = self._wall_cells = None
-                            d, (ii, jj) = ndimage.distance_transform_edt((self.covered & 3) == 0, return_indices=True)
-                            changed = d != self.dist_all
-                            self.dist_all, self.near_all = d, ii.astype(np.int64) * self.cols + jj
-                            d, (ii, jj) = ndimage.distance_transform_edt((self.covered & 2) == 0, return_indices=True)
-                            changed |= d != self.dist_el
-                            self.dist_el, self.near_el = d, ii.astype(np.int64) * self.cols + jj
-                            self.skip &= ~changed
-                        self._mark_all()
                     continue
                 largest = max(0.0, v * h) if v >= 0 else 0.0
                 break
@@ -1051,9 +971,6 @@ class _Grower:
                 if new and not self.inside([pr for ch in new for pr in ch.proxies]):
                     self.stats["outside"] += 1
                     continue
-                if new and self._zone_on() and not self._in_zone(new):
-                    self.stats["outside"] += 1
-                    continue
                 self._commit(parent, new)
                 for ch in new:
                     # the empty circle C it grew into, in the panel's frame: a tiled world
@@ -1166,7 +1083,6 @@ def grow_elements(
     _context: list[Element] | None = None,
     _holes: Sequence[Sequence[Any]] | None = None,
     _open: Sequence[Sequence[float]] | None = None,
-    _zone: tuple[Any, ...] | None = None,
 ) -> Ornament:
     """Grow a pattern in a region; returns the elements and their proxies (no rendering).
 
@@ -1217,8 +1133,7 @@ def grow_elements(
     rep = Reporter(progress, should_cancel, message="growing")
     t0 = time.perf_counter()
     g = _Grower(pat, region, pts, as_rng(rng), resolution, mr, delta, epsilon, max_elements, rep, periodic=tile,
-                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else [list(v) for v in _holes], open_edges=_open,
-                zone=_zone)
+                thin_boundary=_thin_boundary, context=_context, holes=None if _holes is None else [list(v) for v in _holes], open_edges=_open)
     g.run()
     rep.done(len(g.elements) - g.n_seeds - g.n_context)
     stats = dict(g.stats)
