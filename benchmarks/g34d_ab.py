@@ -5,7 +5,9 @@
 VARIANT ``main`` (unpatched) or ``nnF`` / ``nnFu``: monkeypatched placement refusal when a
 placed element lies nearer than F times the larger of the two elements' reference
 nearest-neighbour distances in the exemplar (``u``: only elements the new one's matching
-did not pair, i.e. not in w(e_tar)). Run and judged as the audit (fresh17_rows: 3.5x,
+did not pair, i.e. not in w(e_tar)). The tree's own rule (strew.grow._spacing, h/g34d) is
+turned off here (``reference_nn`` patched to None), so ``main`` is main's growth and
+``nn1.0`` the same rule forced on every exemplar. Run and judged as the audit (fresh17_rows: 3.5x,
 eq5 and local off). Prints density ratio, empty_circle and the failing metrics.
 """
 import os
@@ -55,6 +57,8 @@ def tc(self, x, y, kind, s, states=None, placing=False):
 
 
 gr._Grower.__init__, gr._Grower.place, gr._Grower.too_close_in_kind = init, place, tc
+if hasattr(gr, "reference_nn"):
+    gr.reference_nn = lambda *a, **k: None
 
 
 def main():

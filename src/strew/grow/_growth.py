@@ -32,8 +32,8 @@ Departures from the paper (each explained where it is made):
   the reference's widest get a visible element in place of their voids
   (:mod:`strew.grow._void_holes`);
 - where the exemplar leaves room for more elements (a sparse dart throw of one kind),
-  an element is not placed nearer a placed one than the larger of their reference
-  elements' nearest distances (§5.4 (b) merges within ``l_short`` alone;
+  an element is not placed nearer a placed one than 0.85 of the larger of their
+  reference elements' nearest distances (§5.4 (b) merges within ``l_short`` alone;
   :mod:`strew.grow._spacing`);
 - clustered exemplars (hubs ringed by satellites) grow their hubs alone and copy a
   whole reference cluster around each (:mod:`strew.grow._clusters`, §5.1 after Wong);

@@ -21,6 +21,7 @@ from ._objects import (
     SEED,
 )
 from ._place_kernels import slot_probe
+from ._spacing import KEEP_SHARE
 
 
 def _skewed(p: Sequence[float], q: Sequence[float], r: Sequence[float]) -> bool:
@@ -660,7 +661,7 @@ class _Place:
 
     def crowds_reference_nn(self, x: float, y: float, s: int, r: int) -> bool:
         """Would reference element ``r`` at (x, y) lie nearer a placed element than the
-        larger of their two reference elements' nearest-neighbour distances?
+        larger of their two reference elements' nearest-neighbour distances, times ``KEEP_SHARE``?
 
         Not in the paper: unsaturated exemplars only (:mod:`strew.grow._spacing`; §5.4 (b)
         merges within ``l_short`` alone, and a ring slot in the empty part of a
@@ -672,7 +673,7 @@ class _Place:
         for o in self.near(x, y, self.ref_nn_max, (ELEMENT,)):
             if orig_of[o] == s:
                 continue
-            d = max(rs, float(nn[sub[orig_of[o]]]))
+            d = KEEP_SHARE * max(rs, float(nn[sub[orig_of[o]]]))
             ox, oy = xy[o]
             if (ox - x) ** 2 + (oy - y) ** 2 < d * d:
                 return True
