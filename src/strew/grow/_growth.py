@@ -31,6 +31,10 @@ Departures from the paper (each explained where it is made):
   (``small_outside``); after the growth, holes among the visible elements wider than
   the reference's widest get a visible element in place of their voids
   (:mod:`strew.grow._void_holes`);
+- where the exemplar leaves room for more elements (a sparse dart throw of one kind),
+  an element is not placed nearer a placed one than 0.85 of the larger of their
+  reference elements' nearest distances (§5.4 (b) merges within ``l_short`` alone;
+  :mod:`strew.grow._spacing`);
 - clustered exemplars (hubs ringed by satellites) grow their hubs alone and copy a
   whole reference cluster around each (:mod:`strew.grow._clusters`, §5.1 after Wong);
 - elements lie wholly inside the region and off boundary strokes, and never overlap;
@@ -83,6 +87,7 @@ from ._objects import (
     _Objects,
 )
 from ._place import _Place
+from ._spacing import reference_nn
 from ._relax_window import _RelaxWindow
 from ._void_holes import fill_void_holes, small_fill
 
@@ -385,6 +390,12 @@ class GrowParams:
     #: with the rule; ``benchmarks/g26s_deaths.py``, ``g26s_rows.py``). Departs from
     #: Fig. 6e (§5.4) there. False: every pair, as the paper
     extra_ring_only: bool = True
+    #: an element is not placed nearer a placed one than the larger of their reference
+    #: elements' nearest-neighbour distances in the exemplar (not in the paper; see
+    #: :mod:`strew.grow._spacing`). None: where the exemplar leaves room for more
+    #: elements (one kind, fixed mode, :func:`strew.grow._spacing.free_share` at least
+    #: ``FREE_MIN``); True / False: always / never
+    keep_nn: bool | None = None
     #: a repeat tile ``(x0, y0, W, H)``: grow on the torus (issue 18; see the module
     #: docstring); None grows in the plane
     tile: tuple[float, float, float, float] | None = None
@@ -501,6 +512,10 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.l = ref.mean_edge
         self.l_short = 0.5 * ref.shortest_edge  # §5.4: half of the shortest reference edge
         self.mode_code = MODES[p.mode]
+        # unsaturated exemplars: each element's reference nearest distance, kept at
+        # placement (GrowParams.keep_nn; not in the paper, see strew.grow._spacing)
+        self.ref_nn = reference_nn(ex, p.mode, p.keep_nn)
+        self.ref_nn_max = float(self.ref_nn.max()) if self.ref_nn is not None else 0.0
         #: rotation mode: the largest turn of an element's frame from its neighbours'
         #: (``max_turn``, at most the exemplar's own turns: see :func:`exemplar_turn`)
         self.max_turn = float(p.max_turn)

@@ -21,6 +21,7 @@ from ._objects import (
     SEED,
 )
 from ._place_kernels import slot_probe
+from ._spacing import KEEP_SHARE
 
 
 def _skewed(p: Sequence[float], q: Sequence[float], r: Sequence[float]) -> bool:
@@ -491,6 +492,8 @@ class _Place:
         # has them is refused, like the seeds of too_close_in_kind
         if self.too_close_in_kind(x, y, kind, s, (ELEMENT,), placing=True):
             return False
+        if self.ref_nn is not None and self.crowds_reference_nn(x, y, s, r):
+            return False
         if self.gap_ratio[kind] > 0 and self.crowds_own_kind(x, y, kind, scale, s):
             return False
         if self.several_sizes and not self.lean_ok(s, a, k, th, x, y, kind):
@@ -655,6 +658,26 @@ class _Place:
         self.target[s] = tgt
         self.ring_n[s] = n_ring
         return True
+
+    def crowds_reference_nn(self, x: float, y: float, s: int, r: int) -> bool:
+        """Would reference element ``r`` at (x, y) lie nearer a placed element than the
+        larger of their two reference elements' nearest-neighbour distances, times ``KEEP_SHARE``?
+
+        Not in the paper: unsaturated exemplars only (:mod:`strew.grow._spacing`; §5.4 (b)
+        merges within ``l_short`` alone, and a ring slot in the empty part of a
+        neighbour's ring was placed there: the sparse stones came 22 % denser).
+        """
+        nn = self.ref_nn
+        rs = float(nn[r])
+        xy, sub, orig_of = self.xy, self.sub, self.orig_of
+        for o in self.near(x, y, self.ref_nn_max, (ELEMENT,)):
+            if orig_of[o] == s:
+                continue
+            d = KEEP_SHARE * max(rs, float(nn[sub[orig_of[o]]]))
+            ox, oy = xy[o]
+            if (ox - x) ** 2 + (oy - y) ** 2 < d * d:
+                return True
+        return False
 
     def crowds_own_kind(self, x: float, y: float, kind: int, scale: float, s: int) -> bool:
         """Would an element of ``kind`` and ``scale`` at (x, y) come nearer one of its kind
