@@ -185,7 +185,17 @@ HOLE_SPREAD = 2.0
 """After :data:`HOLE_PASSES` passes, :func:`fill_holes` goes on (up to
 :data:`HOLE_PASSES_MAX` passes) while an empty circle it found is wider than this many
 times the exemplar's largest: a part of the region that growth never reached, not a
-gap greedy growth left between copies (0: never)."""
+gap greedy growth left between copies (0: never). Extension of §5.1, as
+:func:`fill_holes`: growth ends when its free space dies, wherever that leaves the
+output. Far-apart clusters in a small frame (clusters EDGE set 0 of
+``benchmarks/_variants.py`` at variant seed 25: 8 discs about 100 apart in 300 x 300)
+have two discs with a whole neighbourhood, and these show one step to another disc
+(r-bar is capped at the deepest disc's depth, and the third disc lies 0.57 of r-bar
+deep, below ``_prepare.SURROUND_DEPTH``): growth copied a one-sided chain of six
+clusters and stopped, and three passes left a third of the region empty at 3.5x the
+frame (306 elements, failing on seeds 1-3; with the spread passes 558-600, passing).
+Where no circle over twice the exemplar's largest is left after :data:`HOLE_PASSES`
+passes, the output is as before."""
 
 HOLE_PASSES_MAX = 200
 """At most this many passes of :func:`fill_holes` in all."""
