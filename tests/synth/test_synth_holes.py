@@ -59,3 +59,31 @@ def test_three_sizes_leaves_no_hole_an_element_fits():
     ex = fidelity_suite().make_exemplar("three_sizes")
     open_, holes = _open_holes(ex, 2)
     assert open_ == 0, f"{open_} of {holes} wide empty circles have room for an element"
+
+
+@pytest.mark.parametrize("seed, scale", [(1, 2.0), (2, 2.5)])
+def test_far_clusters_fill_the_region_growth_left(seed, scale):
+    """Far-apart clusters in a small frame (clusters EDGE set 0 of
+    ``benchmarks/_variants.py`` at variant seed 25: 8 discs about 100 apart in 300 x 300,
+    rings of 6-7 dots): only two discs have a whole neighbourhood and they show one step
+    to another disc, so growth copied a one-sided chain of clusters and stopped (47
+    elements at 3.5x the frame). ``fill_holes`` then filled three layers of the empty
+    circles it left and stopped with a third of the region empty (discs at 0.44 of the
+    exemplar's density at 3.5x, 0.56 and 0.54 in these two cases; with
+    ``_grow.HOLE_SPREAD`` passes go on while a circle is more than twice the exemplar's
+    largest: 0.97 and 0.94). The discs come with their rings: dots per disc as the
+    exemplar's, within a quarter."""
+    ex = fidelity_suite().make_exemplar("clusters", rng=25, cluster_spacing=90.0, ring_gap=3.0, ring_min=6, ring_max=7)
+    x0, y0, x1, y1 = ex.region.bounds
+    w, h = scale * (x1 - x0), scale * (y1 - y0)
+    st = new_state(ex, Region.rectangle(w, h), rng=seed)
+    fill(st)
+    out = st.to_arrangement()
+    kinds = np.asarray(out.kind_names)
+    ex_kinds = np.asarray(ex.kind_names)
+    discs = (kinds == "disc").sum() / (w * h)
+    ex_discs = (ex_kinds == "disc").sum() / ((x1 - x0) * (y1 - y0))
+    assert discs >= 0.8 * ex_discs, f"discs at {discs / ex_discs:.2f} of the exemplar's density"
+    per = (kinds == "dot").sum() / (kinds == "disc").sum()
+    ex_per = (ex_kinds == "dot").sum() / (ex_kinds == "disc").sum()
+    assert abs(per / ex_per - 1.0) < 0.25, f"{per:.2f} dots per disc, exemplar {ex_per:.2f}"
