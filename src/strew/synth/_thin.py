@@ -162,6 +162,24 @@ THIN_ORPHANS = True
 (see :func:`thin_orphans`)."""
 
 
+WHOLE_BOUND = True
+""":func:`thin_orphans` takes out no more than the kind's surplus over the whole region
+against the exemplar's whole density, as :func:`thin_crowded` (off: the inner surplus
+alone).
+
+Extension of §5.1 (helper s35t, issue 13 point 1). A drawn exemplar's inner frame is a
+small sample, and a smallest kind gathers in its frame band (gaps the edge leaves between
+the larger elements). Two sizes --harder h7s26 (ratio 0.4, 44 stones, 60 pebbles, 25 of
+them within 15 of the frame; fresh draw): about 30 pebbles inside the margin, 11.3 per
+1e4 against the generator's 12.3 drawn at the output's size; the output's edge band held
+6.6-7.1 pebbles per 1e4 against the exemplar's 20. Thinning orphans to the inner count
+took 34-47 pebbles (those nearest another pebble first), left 10.6-10.8 per 1e4 over the
+region (the exemplar 12.4) and nn[pebble>pebble] too far from the fourth decile up:
+0.127 / 0.118 / 0.119 against 0.102 at seeds 1-3 (``python benchmarks/s35t_passes.py
+two_sizes:7:26 1,2``; ``syn13z_rows.py two_sizes:7:26:1,2,3``). With the bound: no pebble
+taken, 0.090 / 0.073 / 0.079."""
+
+
 def _inner_region(state: SynthState):
     """The region eroded by two of the exemplar's largest collision radii, where the
     thinning passes compare densities; ``(margin, None)`` where too little of it is left
@@ -231,6 +249,8 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
     another element of their kind than the exemplar's tenth percentile of that
     distance: without these limits ``synth_variants.py --harder`` lost 4 rows (three
     sizes h5s7, h9s7 s1/s2, two sizes h7s8; ``syc16_rejected_harder_all_cmp.txt``).
+    Nor more than the kind's surplus over the whole region against the exemplar's whole
+    density (:data:`WHOLE_BOUND`, helper s35t).
     """
     from ._displace import _inner_density  # (lazy: _displace imports _grow)
 
@@ -261,6 +281,12 @@ def thin_orphans(state: SynthState, since: int = 0) -> int:
             continue
         of_k = prep.skind[src[vis]] == k
         surplus = int(np.count_nonzero(of_k & ins)) - int(np.floor(dens[k] * float(inner.area)))
+        # nor more than the whole region holds above the exemplar's whole density (as
+        # thin_crowded): a region whose edge band is underfilled keeps its inner surplus
+        if WHOLE_BOUND:
+            s_ = int(np.flatnonzero(prep.selected)[0])
+            whole = np.count_nonzero(selv & (prep.source == s_) & (prep.skind == k)) / float(prep.domains[s_].area)
+            surplus = min(surplus, int(np.count_nonzero(of_k)) - int(np.floor(whole * float(state.region.geometry.area))))
         if surplus <= 0:
             continue
         # ring tiles stay (seam17): a ring's tile copied with another hub's exemplar ring has
