@@ -255,7 +255,8 @@ def small_fill(g) -> tuple[int, np.ndarray] | None:
     (:data:`SMALL_DECILE`, border-corrected as the judge): the default two sizes pack
     their pebbles 8.5-11 apart, narrower than their holes, and a pebble alone in the
     middle of one lengthened the pebbles' upper nearest-pebble deciles
-    (``nn[pebble>pebble]`` failed 8 of 8 seeds, 0.066-0.077 against 0.0646).
+    (``nn[pebble>pebble]`` failed 8 of 8 seeds, 0.066-0.077 against 0.0646). Another
+    kind's reach under a hole's radius is not asked there (:func:`_askable`).
     """
     cached = getattr(g, "_small_fill", False)
     if cached is not False:
