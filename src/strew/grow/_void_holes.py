@@ -255,8 +255,7 @@ def small_fill(g) -> tuple[int, np.ndarray] | None:
     (:data:`SMALL_DECILE`, border-corrected as the judge): the default two sizes pack
     their pebbles 8.5-11 apart, narrower than their holes, and a pebble alone in the
     middle of one lengthened the pebbles' upper nearest-pebble deciles
-    (``nn[pebble>pebble]`` failed 8 of 8 seeds, 0.066-0.077 against 0.0646). Another
-    kind's reach under a hole's radius is not asked there (:func:`_askable`).
+    (``nn[pebble>pebble]`` failed 8 of 8 seeds, 0.066-0.077 against 0.0646).
     """
     cached = getattr(g, "_small_fill", False)
     if cached is not False:
@@ -343,7 +342,7 @@ def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
             continue
         if sf is not None:
             kind = sf[0]
-            if not _kinds_near(g, cx, cy, _askable(sf[1], kind, float(r[q]))):
+            if not _kinds_near(g, cx, cy, sf[1]):
                 continue
         else:
             tri_kinds = [int(g.kind[els[v]]) for v in s[q].tolist()]
@@ -356,25 +355,6 @@ def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
     if filled:
         reseed_voids(g, filled)
     return made
-
-
-def _askable(reach: np.ndarray, small: int, rad: float) -> np.ndarray:
-    """The reaches :func:`_kinds_near` asks at the centre of a hole of radius ``rad``:
-    another kind's reach under ``rad`` is not asked (inf).
-
-    No element stands nearer the centre of an empty circle than its radius, so such a
-    test can never pass there, though the element put there is fitted to its ring
-    (§5.4) and relaxed (§5.5) against the elements around. Three sizes whose smallest
-    kind sits snug against the largest (``--harder`` three_sizes h9s25: the small
-    stones' nearest large one within 1.21 s at the upper decile, the exemplar's widest
-    circle 1.24 s) never filled a hole (124 of 124 refused by that test) and kept empty
-    circles 10-11 % wider than the exemplar's at q95 (empty_circle 0.107 / 0.098 /
-    0.103 against 0.1, seeds 1-3). The smallest kind's own reach is always asked: a
-    lone pebble in a hole lengthens the pebbles' nearest-pebble deciles
-    (:func:`small_fill`). Not in the paper (§5.4 never returns to a place).
-    """
-    other = np.arange(len(reach)) != small
-    return np.where(other & (reach < rad), np.inf, reach)
 
 
 def _kinds_near(g, cx: float, cy: float, reach: np.ndarray) -> bool:
