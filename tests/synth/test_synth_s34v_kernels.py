@@ -59,7 +59,7 @@ def test_dbscan_border_between_two_clusters_keeps_the_kd_tree_answer():
     left = [(0.0, 0.0), (-0.1, 0.0), (-0.2, 0.0), (-0.3, 0.0)]
     right = [(2.0, 0.0), (2.1, 0.0), (2.2, 0.0), (2.3, 0.0)]
     pts = np.array(left + [(1.0, 0.0)] + right)
-    labels, ambiguous = K.dbscan_labels(pts, 1.0, 4)
+    _labels, ambiguous = K.dbscan_labels(pts, 1.0, 4)
     assert ambiguous
     got = dbscan(pts, 1.0, 4)
     np.testing.assert_array_equal(got, _dbscan_kdtree(pts, 1.0, 4))

@@ -10,7 +10,7 @@ from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.metrics import fidelity
-from strew.synth import _thin, new_state, fill, synthesize
+from strew.synth import _thin, fill, new_state, synthesize
 
 
 def _frame_pebbles():

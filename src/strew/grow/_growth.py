@@ -87,8 +87,8 @@ from ._objects import (
     _Objects,
 )
 from ._place import _Place
-from ._spacing import reference_nn
 from ._relax_window import _RelaxWindow
+from ._spacing import reference_nn
 from ._void_holes import fill_void_holes, small_fill
 
 __all__ = ["GrowParams", "grow_reference"]

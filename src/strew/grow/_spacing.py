@@ -88,8 +88,8 @@ def reference_nn(ex: Arrangement, mode: str, keep: bool | None) -> np.ndarray | 
     """
     if keep is False or len(ex) < 2:
         return None
-    if keep is None:
-        if mode != "fixed" or len(ex.kinds) != 1 or "void" in ex.columns or free_share(ex) < FREE_MIN:
-            return None
+    if keep is None and (mode != "fixed" or len(ex.kinds) != 1 or "void" in ex.columns
+                         or free_share(ex) < FREE_MIN):
+        return None
     xy = np.asarray(ex.xy, dtype=float)
     return cKDTree(xy).query(xy, k=2)[0][:, 1]

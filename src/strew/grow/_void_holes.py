@@ -58,6 +58,36 @@ def _visible(g, kinds: np.ndarray) -> np.ndarray:
     return ~g.void_kind[kinds]
 
 
+def _whole_circles(g) -> tuple[np.ndarray, np.ndarray] | None:
+    """The empty circles of the exemplar's visible elements (circumcircles of their
+    Delaunay triangles, the non-degenerate ones): radii, shape (m,), and whether each
+    lies wholly inside the exemplar's frame, bool (m,) (all, without a frame). None with
+    fewer than 4 visible elements or a degenerate set. Cached on ``g``."""
+    cached = getattr(g, "_ref_whole_circles", False)
+    if cached is not False:
+        return cached
+    from scipy.spatial import Delaunay, QhullError
+
+    ex = g.ref.exemplar
+    pts = ex.xy[_visible(g, g.ex_kind)]
+    out = None
+    if len(pts) >= 4:
+        try:
+            tri = Delaunay(pts)
+        except QhullError:
+            tri = None
+        if tri is not None:
+            a, b, c = (pts[tri.simplices[:, q]] for q in range(3))
+            cen, rr, _ = circumcircles(a, b, c)
+            if ex.region is not None and len(cen):
+                inner = ex.region.contains(cen) & (ex.region.distance_to_boundary(cen) >= rr)
+            else:
+                inner = np.ones(len(cen), dtype=bool)
+            out = (rr, inner)
+    g._ref_whole_circles = out
+    return out
+
+
 def reference_visible_gap(g) -> float:
     """The widest empty circle (radius) of the exemplar's visible elements whose circle
     lies wholly inside its frame (as ``strew.metrics.fidelity``'s ``empty_circle``),
@@ -71,24 +101,12 @@ def reference_visible_gap(g) -> float:
     cached = getattr(g, "_ref_visible_gap", None)
     if cached is not None:
         return cached
-    from scipy.spatial import Delaunay, QhullError
-
-    ex = g.ref.exemplar
-    vis = _visible(g, g.ex_kind)
-    pts = ex.xy[vis]
+    pts = g.ref.exemplar.xy[_visible(g, g.ex_kind)]
     out = 0.0
     if len(pts) >= 4:
-        try:
-            tri = Delaunay(pts)
-        except QhullError:
-            tri = None
-        if tri is not None:
-            a, b, c = (pts[tri.simplices[:, q]] for q in range(3))
-            cen, rr, _ = circumcircles(a, b, c)  # (the non-degenerate triangles)
-            if ex.region is not None and len(cen):
-                inner = ex.region.contains(cen) & (ex.region.distance_to_boundary(cen) >= rr)
-            else:
-                inner = np.ones(len(cen), dtype=bool)
+        circles = _whole_circles(g)
+        if circles is not None:
+            rr, inner = circles
             # the widest circle is told only by enough whole circles (30, as the
             # fidelity judge's quantiles need): with fewer the exemplar does not say
             # how wide its holes are, and nothing is filled (sparse apples at default
@@ -182,21 +200,8 @@ def reference_tells_holes(g) -> bool:
     cached = getattr(g, "_ref_tells_holes", None)
     if cached is not None:
         return cached
-    from scipy.spatial import Delaunay, QhullError
-
-    ex = g.ref.exemplar
-    pts = ex.xy[_visible(g, g.ex_kind)]
-    out = False
-    if len(pts) >= 4 and ex.region is not None:
-        try:
-            tri = Delaunay(pts)
-        except QhullError:
-            tri = None
-        if tri is not None:
-            a, b, c = (pts[tri.simplices[:, q]] for q in range(3))
-            cen, rr, _ = circumcircles(a, b, c)
-            inner = ex.region.contains(cen) & (ex.region.distance_to_boundary(cen) >= rr)
-            out = int(inner.sum()) >= 2 * MIN_CIRCLES
+    circles = _whole_circles(g) if g.ref.exemplar.region is not None else None
+    out = circles is not None and int(circles[1].sum()) >= 2 * MIN_CIRCLES
     g._ref_tells_holes = out
     return out
 
@@ -231,7 +236,7 @@ def void_budget(g) -> int:
         d_out = visible_density(xy, None, (*g.pos[placed].min(axis=0), *g.pos[placed].max(axis=0)))
     if not math.isfinite(d_out) or d_out <= 0:
         return 0
-    return max(0, int(math.floor((d_ex / d_out - 1.0) * len(xy))))
+    return max(0, math.floor((d_ex / d_out - 1.0) * len(xy)))
 
 
 def small_fill(g) -> tuple[int, np.ndarray] | None:

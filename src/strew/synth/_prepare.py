@@ -957,6 +957,20 @@ ANCHOR_RATIO = 3.0
 has at least this many times its count (see :func:`anchor_mask`)."""
 
 
+def _class_kinds(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np.ndarray):
+    """The visible elements of each size class of each exemplar (``source``): yields
+    ``(ids, c, sub, kinds, counts)``, ``ids`` the visible elements of the exemplar,
+    int (n,), ``c`` the class, ``sub`` its elements, int (m,), and the kinds in it with
+    their counts, int (k,) each."""
+    vis = ~np.asarray(void, bool)
+    for s_ in np.unique(source):
+        ids = np.flatnonzero((source == s_) & vis)
+        for c in np.unique(cls[ids]):
+            sub = ids[cls[ids] == c]
+            kinds, cnt = np.unique(skind[sub], return_counts=True)
+            yield ids, c, sub, kinds, cnt
+
+
 def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np.ndarray, pos: np.ndarray | None = None,
                 size: np.ndarray | None = None) -> np.ndarray:
     """(n,) int: 1 for exemplar elements of an anchor kind, else 0.
@@ -980,19 +994,14 @@ def anchor_mask(skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np
         where the others of its class stand around it (:func:`_stand_around`).
     """
     out = np.zeros(len(skind), np.int64)
-    vis = ~np.asarray(void, bool)
-    for s_ in np.unique(source):
-        ids = np.flatnonzero((source == s_) & vis)
-        for c in np.unique(cls[ids]):
-            sub = ids[cls[ids] == c]
-            kinds, cnt = np.unique(skind[sub], return_counts=True)
-            rare = kinds[cnt * ANCHOR_RATIO <= cnt.max()]
-            if pos is not None and size is not None and len(rare):
-                others = sub[~np.isin(skind[sub], rare)]
-                top = np.median(size[sub[skind[sub] == kinds[np.argmax(cnt)]]])
-                rare = np.array([k_ for k_ in rare if np.median(size[sub[skind[sub] == k_]]) > top
-                                 or _stand_around(pos[sub[skind[sub] == k_]], pos[others])], np.int64)
-            out[sub[np.isin(skind[sub], rare)]] = 1
+    for _ids, _c, sub, kinds, cnt in _class_kinds(skind, source, cls, void):
+        rare = kinds[cnt * ANCHOR_RATIO <= cnt.max()]
+        if pos is not None and size is not None and len(rare):
+            others = sub[~np.isin(skind[sub], rare)]
+            top = np.median(size[sub[skind[sub] == kinds[np.argmax(cnt)]]])
+            rare = np.array([k_ for k_ in rare if np.median(size[sub[skind[sub] == k_]]) > top
+                             or _stand_around(pos[sub[skind[sub] == k_]], pos[others])], np.int64)
+        out[sub[np.isin(skind[sub], rare)]] = 1
     return out
 
 
@@ -1024,20 +1033,15 @@ def _free_scattered(min_dist: np.ndarray, skind: np.ndarray, source: np.ndarray,
     1.07 against 0.93 at seeds 1 and 3, main 0.63-0.73). Every pair of two kinds keeps
     the exemplar's closest approach.
     """
-    vis = ~np.asarray(void, bool)
-    for s_ in np.unique(source):
-        ids = np.flatnonzero((source == s_) & vis)
-        for c in np.unique(cls[ids]):
-            sub = ids[cls[ids] == c]
-            kinds, cnt = np.unique(skind[sub], return_counts=True)
-            top = kinds[np.argmax(cnt)]
-            for k_, n_ in zip(kinds, cnt):
-                if n_ * ANCHOR_RATIO > cnt.max():
-                    continue
-                mine = ids[skind[ids] == k_]
-                if np.any(cls[mine] != c) or np.any(anchor[mine] > 0):
-                    continue
-                min_dist[k_, k_] = min(min_dist[k_, k_], min_dist[top, top])
+    for ids, c, _sub, kinds, cnt in _class_kinds(skind, source, cls, void):
+        top = kinds[np.argmax(cnt)]
+        for k_, n_ in zip(kinds, cnt):
+            if n_ * ANCHOR_RATIO > cnt.max():
+                continue
+            mine = ids[skind[ids] == k_]
+            if np.any(cls[mine] != c) or np.any(anchor[mine] > 0):
+                continue
+            min_dist[k_, k_] = min(min_dist[k_, k_], min_dist[top, top])
 
 
 ANCHOR_AROUND = 0.15
