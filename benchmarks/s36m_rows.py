@@ -3,7 +3,6 @@
 
     PYTHONPATH=src:benchmarks python benchmarks/s36m_rows.py on|off CLASS:H:V:SEEDS[:A:B] ...
 """
-"""
 import sys
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
