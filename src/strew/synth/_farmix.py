@@ -215,14 +215,15 @@ h6s19, 80:20:30 at size 150): the raw q90 is 38.9, the border-method q90 20.3 (e
 largest stone the metric sees touches a medium one); the stones along the frame whose
 medium lies beyond it made the raw quantile twice the real one."""
 
-TOP_BUDGET_SE = 2.0
+TOP_BUDGET_SE = 1.0
 """:func:`trade_far_top` may bring each middle kind up to its exemplar's count over the
 whole frame plus this many Poisson standard errors of that count, per unit area (where
 above the inner-density budget; 0: the inner-density budget alone). Helper s37h: with the
 border-method far distance alone h6s19's nn[large>medium] went 0.287 / 0.184 / 0.222 ->
 0.269 / 0.197 / 0.240 (seeds 1-3 at 3.5x), the inner-density budget (5.4 medium per 1e4,
 the exemplar's 14 over its frame are 6.2, its generator drawn at the output's size 8.9)
-spent; with this cap 0.041 / 0.027 / 0.050 (medium 7.2-7.8 per 1e4)."""
+spent; with this cap 0.051 / 0.039 / 0.073 (2.0: 0.041 / 0.027 / 0.050, but the varied
+three_sizes v25 (65 medium stones) then failed density[medium] 0.254 against 0.238)."""
 
 TOP_ANGLES = 24
 """Sites laid out around a far largest stone, per collision radius level."""
