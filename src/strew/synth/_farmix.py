@@ -207,17 +207,41 @@ TOP_STEPS = (1.0, 1.1, 1.2, 1.35, 1.5)
 where within the exemplar's far distance). Measured (h6s19 seeds 1-3, nn[large>medium]):
 (1,) 0.305/0.191/0.250, (1, 1.15, 1.3) 0.271/0.177/0.229, these 0.258/0.177/0.212."""
 
+TOP_FAR_BORDER = True
+"""Measure the exemplar's far distance by the nearest-neighbour border method: over the
+largest stones nearer a middle-class stone than the frame, as the fidelity metric's nn
+counts them (helper s37h; off: over every largest stone). Measured (--harder three_sizes
+h6s19, 80:20:30 at size 150): the raw q90 is 38.9, the border-method q90 20.3 (every
+largest stone the metric sees touches a medium one); the stones along the frame whose
+medium lies beyond it made the raw quantile twice the real one."""
+
+TOP_BUDGET_SE = 1.0
+""":func:`trade_far_top` may bring each middle kind up to its exemplar's count over the
+whole frame plus this many Poisson standard errors of that count, per unit area (where
+above the inner-density budget; 0: the inner-density budget alone). Helper s37h: with the
+border-method far distance alone h6s19's nn[large>medium] went 0.287 / 0.184 / 0.222 ->
+0.269 / 0.197 / 0.240 (seeds 1-3 at 3.5x), the inner-density budget (5.4 medium per 1e4,
+the exemplar's 14 over its frame are 6.2, its generator drawn at the output's size 8.9)
+spent; with this cap 0.051 / 0.039 / 0.073 (2.0: 0.041 / 0.027 / 0.050, but the varied
+three_sizes v25 (65 medium stones) then failed density[medium] 0.254 against 0.238)."""
+
+TOP_BUDGET_SHARE = 0.1
+"""Least share of the exemplar's visible elements a middle kind holds for the
+:data:`TOP_BUDGET_SE` cap (h6s19: 14 of 109; --harder h12 400:15:15: 15 of 430, kept to
+its share by tests/synth/test_synth_sm_middle_share.py)."""
+
 TOP_ANGLES = 24
 """Sites laid out around a far largest stone, per collision radius level."""
 
 
 def trade_far_top(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Where an output largest stone lies farther from every middle-class stone than the
-    exemplar's :data:`TOP_FAR_Q` quantile of largest-to-middle nearest distances, put a
-    middle-class stone snug against it in the place of at most :data:`FAR_TAKE` smallest
-    stones added since ``since`` (:func:`_trade_at`), while the middle kinds stay below
-    their exemplar density (counted as ``_displace.fill_displaced`` counts it); returns
-    the net number added (in place).
+    exemplar's :data:`TOP_FAR_Q` quantile of largest-to-middle nearest distances (by the
+    border method, :data:`TOP_FAR_BORDER`), put a middle-class stone snug against it in
+    the place of at most :data:`FAR_TAKE` smallest stones added since ``since``
+    (:func:`_trade_at`), while the middle kinds stay below their exemplar density (counted
+    as ``_displace.fill_displaced`` counts it, or their whole frame's count plus its
+    noise, :data:`TOP_BUDGET_SE`); returns the net number added (in place).
 
     Extension of §5.1 for several sizes (§7). Measured first (helper s29m, three sizes
     --harder h6s19, ``benchmarks/results/s29m_findings.txt``): nn[large>medium] fails
@@ -242,7 +266,7 @@ def trade_far_top(state: SynthState, room: int | None = None, since: int = 0) ->
     far_setup = _far_setup(state) if TOP_TRADE else None
     if far_setup is None:
         return 0
-    _, sel, top, mid, low, cand = far_setup
+    s, sel, top, mid, low, cand = far_setup
     etop, emid = prep.pos[sel & (prep.size_class == top)], prep.pos[sel & (prep.size_class == mid)]
     if len(etop) < 3 or len(emid) < 3:
         return 0
@@ -251,12 +275,34 @@ def trade_far_top(state: SynthState, room: int | None = None, since: int = 0) ->
         # kind (--harder h7s22, small 4.5 per 1e4 against medium 26.8: nn[medium>small] 0.32
         # -> 0.348 FAIL at seed 1 when traded)
         return 0
-    far = float(np.quantile(cKDTree(emid).query(etop)[0], TOP_FAR_Q))
+    dtop = cKDTree(emid).query(etop)[0]
+    if TOP_FAR_BORDER:
+        # the nearest-neighbour border method (as the fidelity metric's nn): a largest
+        # stone nearer the frame than every middle one is left out (its nearest may lie
+        # beyond the frame); the raw quantile counts them as far
+        seen = dtop <= shapely.distance(prep.domains[s].boundary, shapely.points(etop))
+        if np.count_nonzero(seen) >= 3:
+            dtop = dtop[seen]
+    far = float(np.quantile(dtop, TOP_FAR_Q))
     # budget: the middle kinds' deficit against their exemplar density (as fill_displaced)
     deficit = _inner_deficit(state, prep.skind[cand])
     if deficit is None:
         return 0
-    _, vis, budget = deficit
+    inner, vis, budget = deficit
+    if TOP_BUDGET_SE > 0:
+        # the exemplar's count of each middle kind over its whole frame, plus its
+        # sampling noise (Poisson standard errors), per unit area: a rare middle class
+        # (14 stones) is a noisy sample of its density, and the trade acts only where a
+        # largest stone lacks the middle neighbour the exemplar gives them all
+        mine = np.bincount(prep.skind[sel], minlength=len(budget)).astype(float)
+        cap = (mine + TOP_BUDGET_SE * np.sqrt(mine)) / float(prep.domains[s].area) * float(inner.area)
+        inn = vis[shapely.contains_xy(inner, state.pos[vis, 0], state.pos[vis, 1])]
+        have = np.bincount(prep.skind[state.src[inn]], minlength=len(budget))
+        kk = np.unique(prep.skind[cand])
+        # not for a rare middle class (helper sm: it takes its share, not the share plus
+        # its sampling error; three sizes 400:15:15 medium 1.257x its share with the cap)
+        kk = kk[mine[kk] >= TOP_BUDGET_SHARE * mine.sum()]
+        budget[kk] = np.maximum(budget[kk], np.floor(cap[kk] - have[kk]).astype(np.int64))
     geom = state.region.geometry
     cand = cand[budget[prep.skind[cand]] > 0]
     if len(cand) == 0:
