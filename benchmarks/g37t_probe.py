@@ -10,16 +10,14 @@ figures of the smallest kind (result and exemplar), and the second round's budge
 import os
 import sys
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from grow_variants import HARDER, _harder_suite  # noqa: E402
+from grow_variants import HARDER, _harder_suite
 
-import strew.grow._growth as gr  # noqa: E402
-import strew.grow._void_holes as vh  # noqa: E402
-from strew import Region  # noqa: E402
-from strew.grow import grow  # noqa: E402
-from strew.metrics import fidelity  # noqa: E402
+import strew.grow._growth as gr
+import strew.grow._void_holes as vh
+from strew import Region
+from strew.grow import grow
+from strew.metrics import fidelity
 
 orig = vh.fill_void_holes
 log = []
