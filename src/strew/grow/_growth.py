@@ -1210,6 +1210,15 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 if len(self.order) >= target or not reseed_lone_kin(self):
                     break
                 self.advance(rep, target)
+        if self.mode_code == 0 and self.tile is None and p.open_holes and self.boundary is None and self.spray_area is None and small_fill(self) is not None:
+            # the holes of kinds of several sizes whose centre has some kind farther than
+            # the reference's small elements have it, filled with the smallest kind at a
+            # spot toward that kind, after the passes above (not in the paper; see
+            # :func:`strew.grow._void_holes._toward_kinds`)
+            for _ in range(p.refill_rounds):
+                if len(self.order) >= target or not fill_void_holes(self, toward=True):
+                    break
+                self.advance(rep, target)
         if self.mode_code == 2 and self.tile is None:
             # flow mode: the gaps a bent lattice leaves (issue 14 point 2; not in the
             # paper), with draws from a stream jumped off ``rng``: a caller's later draws

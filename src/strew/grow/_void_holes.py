@@ -41,7 +41,7 @@ import numpy as np
 from .._kernels.geometry import circumcircles
 from ._objects import DEAD, ELEMENT, SEED
 
-__all__ = ["reference_visible_gap", "reference_visible_density", "visible_density", "void_budget", "fill_void_holes", "reseed_voids", "small_fill"]
+__all__ = ["reference_visible_gap", "reference_visible_density", "visible_density", "void_budget", "small_budget", "fill_void_holes", "reseed_voids", "small_fill"]
 
 #: the fewest whole empty circles of the exemplar's visible elements that tell its widest
 MIN_CIRCLES = 30
@@ -49,6 +49,9 @@ MIN_CIRCLES = 30
 #: distances to each kind that a hole's centre must have an element of that kind within
 #: (the fidelity judge's highest decile; see :func:`small_fill`)
 SMALL_DECILE = 0.9
+#: the hole pass's second round (``toward``, :func:`_toward_kinds`): the farthest a
+#: small element's spot moves from a hole's centre, a fraction of the hole's radius
+TOWARD_CAP = 0.5
 #: the fewest reference elements of the smallest kind that see their nearest one of a
 #: kind within the frame, for that kind's reach to be told (else it asks nothing)
 MIN_SMALL = 10
@@ -137,20 +140,30 @@ def visible_density(xy: np.ndarray, region, box=None) -> float:
     of voids only: the visible count over the frame's area is 0.80-1.00 of the
     interior's). ``region`` the frame (a :class:`strew.Region`), or None and ``box``
     (x0, y0, x1, y1); nan when no cell counts."""
+    counted = _counted_cells(xy, region, box)
+    if counted is None:
+        return float("nan")
+    ok, area = counted
+    return int(ok.sum()) / area if area > 0 else float("nan")
+
+
+def _counted_cells(xy: np.ndarray, region, box=None) -> tuple[np.ndarray, float] | None:
+    """Which elements' Voronoi cells count (:func:`visible_density`), bool (n,), and
+    those cells' total area; None with fewer than 4 elements or a degenerate set."""
     import shapely
     from scipy.spatial import QhullError, Voronoi
 
     xy = np.asarray(xy, dtype=float)
     if len(xy) < 4:
-        return float("nan")
+        return None
     try:
         vor = Voronoi(xy)
     except QhullError:
-        return float("nan")
+        return None
     geom = region.geometry if region is not None else shapely.box(*box)
     vv = vor.vertices
     vd = np.where(shapely.contains_xy(geom, vv[:, 0], vv[:, 1]), shapely.distance(geom.boundary, shapely.points(vv)), -1.0)
-    n_ok = 0
+    ok = np.zeros(len(xy), dtype=bool)
     area = 0.0
     for i, ri in enumerate(vor.point_region.tolist()):
         reg = vor.regions[ri]
@@ -163,8 +176,8 @@ def visible_density(xy: np.ndarray, region, box=None) -> float:
         c = p.mean(axis=0)
         p = p[np.argsort(np.arctan2(p[:, 1] - c[1], p[:, 0] - c[0]), kind="stable")]
         area += 0.5 * abs(float(np.dot(p[:, 0], np.roll(p[:, 1], -1)) - np.dot(p[:, 1], np.roll(p[:, 0], -1))))
-        n_ok += 1
-    return n_ok / area if area > 0 else float("nan")
+        ok[i] = True
+    return ok, area
 
 
 def reference_visible_density(g) -> float:
@@ -239,6 +252,56 @@ def void_budget(g) -> int:
     return max(0, math.floor((d_ex / d_out - 1.0) * len(xy)))
 
 
+def _kind_density(xy: np.ndarray, kinds: np.ndarray, k: int, region, box=None) -> float:
+    """Elements of kind ``k`` per unit area of all elements' counted Voronoi cells
+    (:func:`visible_density`), as the fidelity judge's ``density[k]`` (the kind's share
+    of the counted cells times their density); nan when no cell counts."""
+    counted = _counted_cells(xy, region, box)
+    if counted is None or counted[1] <= 0:
+        return float("nan")
+    ok, area = counted
+    return int(np.count_nonzero(ok & (np.asarray(kinds) == k))) / area
+
+
+def small_budget(g) -> int:
+    """Kinds of several sizes (:func:`small_fill`): how many holes the second round
+    (``fill_void_holes(toward=True)``) may fill, the elements of the smallest kind the
+    result lacks to have the exemplar's density of that kind (:func:`_kind_density`,
+    the result's placed elements in its region); 0 when it has as many or either
+    density is not told.
+
+    Not in the paper (§5 grows until the seeds run out, with no density asked), as
+    :func:`void_budget` for voids. Filling every hole the second round can reach
+    overshot where the growth had already put small stones enough: ``--harder``
+    three_sizes h7s23 (counts 20:120:20, seed 1) had 1.15 x the exemplar's small
+    stones before the round and 1.23 x after its 18 fills, which pushed their nearest
+    medium stone out at the upper deciles (``nn[small>medium]`` 0.049 -> 0.062 against
+    0.052), where h9s25 (seed 1, 0.96 x before) lacks them (helper g37t,
+    ``benchmarks/g37t_probe.py``).
+    """
+    sf = small_fill(g)
+    if sf is None:
+        return 0
+    a = sf[0]
+    ex = g.ref.exemplar
+    d_ex = getattr(g, "_ref_small_density", None)
+    if d_ex is None:
+        d_ex = g._ref_small_density = _kind_density(ex.xy, g.ex_kind, a, ex.region)
+    if not math.isfinite(d_ex) or d_ex <= 0:
+        return 0
+    placed = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.int64)
+    if len(placed) < 4:
+        return 0
+    xy, kinds = g.pos[placed], g.kind[placed]
+    if g.region is not None:
+        d_out = _kind_density(xy, kinds, a, g.region)
+    else:
+        d_out = _kind_density(xy, kinds, a, None, (*xy.min(axis=0), *xy.max(axis=0)))
+    if not math.isfinite(d_out) or d_out <= 0:
+        return 0
+    return max(0, math.floor((d_ex / d_out - 1.0) * int(np.count_nonzero(kinds == a))))
+
+
 def small_fill(g) -> tuple[int, np.ndarray] | None:
     """Kinds of several sizes without void kinds (fixed mode): the smallest kind, which
     the holes are filled with, and per kind the reach within which a hole's centre must
@@ -291,7 +354,7 @@ def small_fill(g) -> tuple[int, np.ndarray] | None:
     return out
 
 
-def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
+def fill_void_holes(g, lim: float | None = None, bare: bool = False, toward: bool = False) -> int:
     """A visible element put at the centre of each empty circle of the placed visible
     elements wider than ``lim`` (default :func:`reference_visible_gap`), in place of
     the voids there, widest first; how many (see the module docstring). With void
@@ -300,10 +363,18 @@ def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
     :func:`strew.grow._clusters.grow_clusters`), and with ``bare`` an element whose
     placement at its fitted position is refused is tried at the circle's centre. With
     kinds of several sizes the element is of the smallest kind, where each kind is
-    near enough (:func:`small_fill`)."""
+    near enough (:func:`small_fill`) at the circle's centre, or with ``toward`` (kinds of
+    several sizes only) at a spot of the hole moved toward them (:func:`_toward_kinds`),
+    and again where the fit to its ring (§5.4) puts it."""
     from scipy.spatial import Delaunay, QhullError
 
     budget = None
+    if toward:
+        # the second round fills only the smallest kind's deficit against the
+        # exemplar's density (:func:`small_budget`; not in the paper, §5)
+        budget = small_budget(g)
+        if budget <= 0:
+            return 0
     if lim is None:
         lim = reference_visible_gap(g)
         if bool(g.void_kind.any()) and not reference_tells_holes(g):
@@ -345,14 +416,23 @@ def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
         cx, cy = float(cen[q, 0]), float(cen[q, 1])
         if not g.in_domain(cx, cy):
             continue
+        reach = at = None
         if sf is not None:
             kind = sf[0]
-            if not _kinds_near(g, cx, cy, sf[1]):
-                continue
+            if not toward:
+                if not _kinds_near(g, cx, cy, sf[1]):
+                    continue
+            else:
+                # (each kind's reach asked where the element stands, :func:`_toward_kinds`
+                # and :func:`_fill_one`, not at the circle's centre)
+                reach = sf[1]
+                at = _toward_kinds(g, cx, cy, float(r[q]), reach)
+                if at is None:
+                    continue
         else:
             tri_kinds = [int(g.kind[els[v]]) for v in s[q].tolist()]
             kind = max(sorted(set(tri_kinds)), key=tri_kinds.count)
-        if _fill_one(g, cx, cy, float(r[q]), lim, kind, removed_all, bare):
+        if _fill_one(g, cx, cy, float(r[q]), lim, kind, removed_all, bare, reach, at):
             made += 1
             filled.append((cx, cy, float(r[q])))
     if removed_all:
@@ -360,6 +440,46 @@ def fill_void_holes(g, lim: float | None = None, bare: bool = False) -> int:
     if filled:
         reseed_voids(g, filled)
     return made
+
+
+def _toward_kinds(g, cx: float, cy: float, rad: float, reach: np.ndarray) -> tuple[float, float] | None:
+    """Where in the hole centred at (cx, cy) the smallest kind's element goes: the
+    centre, moved straight toward the nearest element of each kind farther than its
+    ``reach`` until it is within it (a kind at a time, at most once each), no farther
+    from the centre than §5.4's fit may move a seed (``fit_reach * l_short``); None
+    where no such spot has every kind within its reach.
+
+    Not in the paper (§5.4 never returns to a place). No element is nearer an empty
+    circle's centre than its radius, so a kind whose reach is under the radius was
+    never near the centre: three sizes whose smallest kind sits snug against the
+    largest (``--harder`` three_sizes h9s25: the small stones' nearest large one within
+    1.21 s at the upper decile, holes 1.24-1.5 s) had every hole refused (124 of 124,
+    seeds 1-3) and kept empty circles 3-7 % wider than the exemplar's widest at q95.
+    """
+    x, y = cx, cy
+    cap = TOWARD_CAP * rad
+    for _ in range(int(np.isfinite(reach).sum()) + 1):
+        miss = None
+        for b in np.flatnonzero(np.isfinite(reach)).tolist():
+            best = None
+            for o in g.near(x, y, float(reach[b]) + 2.0 * rad, (ELEMENT,)):
+                if int(g.kind[o]) == b:
+                    d = math.hypot(g.xy[o][0] - x, g.xy[o][1] - y)
+                    if best is None or d < best[0]:
+                        best = (d, o)
+            if best is None:
+                return None
+            if best[0] > reach[b]:
+                miss = (b, best)
+                break
+        if miss is None:
+            return x, y
+        b, (d, o) = miss
+        t = (d - float(reach[b]) * (1.0 - 1e-6)) / d
+        x, y = x + t * (g.xy[o][0] - x), y + t * (g.xy[o][1] - y)
+        if math.hypot(x - cx, y - cy) > cap:
+            return None
+    return None
 
 
 def _kinds_near(g, cx: float, cy: float, reach: np.ndarray) -> bool:
@@ -370,7 +490,25 @@ def _kinds_near(g, cx: float, cy: float, reach: np.ndarray) -> bool:
     return True
 
 
-def _fill_one(g, cx: float, cy: float, rad: float, lim: float, kind: int, removed_all: set[int], bare: bool = False) -> bool:
+def _fitted_xy(g, s: int, pick: tuple[int, int, float]) -> tuple[float, float]:
+    """Where seed ``s`` stands once §5.4's placement fits the chosen ring ``pick``
+    (:meth:`_Grower.choose`'s answer) to its placed neighbours, as :meth:`_Grower.place`
+    fits it (``_fit_position``); the seed is left where it was."""
+    a, k, th = pick
+    nb = g._last_nb
+    x0, y0 = g.xy[s]
+    if len(nb) < 2:
+        return x0, y0
+    rel = g.rings["rel"][a, : int(g.rings["n"][a])]
+    g._fit_position(s, nb, rel, k, math.cos(th), math.sin(th))
+    x, y = g.xy[s]
+    if (x, y) != (x0, y0):
+        g._move(s, x0, y0)
+    return x, y
+
+
+def _fill_one(g, cx: float, cy: float, rad: float, lim: float, kind: int, removed_all: set[int], bare: bool = False,
+              reach: np.ndarray | None = None, at: tuple[float, float] | None = None) -> bool:
     # still a hole (an earlier fill may have closed it)?
     near = g.near(cx, cy, rad, (ELEMENT, SEED))
     if any(int(g.kind[o]) >= 0 and not g.void_kind[int(g.kind[o])] and math.hypot(g.xy[o][0] - cx, g.xy[o][1] - cy) < lim for o in near):
@@ -389,12 +527,18 @@ def _fill_one(g, cx: float, cy: float, rad: float, lim: float, kind: int, remove
         g.state[o] = DEAD
         g.index.remove(o)
     ring = sorted(o for o in g.near(cx, cy, rad + 0.5 * g.l, (ELEMENT,)) if g.orig_of[o] == o)
-    s = g.new_object(cx, cy, kind)
+    sx, sy = (cx, cy) if at is None else at
+    s = g.new_object(sx, sy, kind)
     for o in ring:
-        if not g.crosses_edges(s, (cx, cy), o, g.xy[o]):
+        if not g.crosses_edges(s, (sx, sy), o, g.xy[o]):
             g.add_edge(s, o)
     g._out_of_domain = False
     pick = g.choose(s)
+    if pick is not None and reach is not None and not _kinds_near(g, *_fitted_xy(g, s, pick), reach):
+        # kinds of several sizes (:func:`small_fill`): each kind's reach is asked where
+        # the element stands after the fit to its ring (§5.4), not at the circle's
+        # centre, which no element is nearer than the circle's radius
+        pick = None
     if pick is not None and g.place(s, *pick):
         # the voids the new element leaves room for come back (the growth does not
         # return to the hole: without this the result's void share fell from 0.76 to 0.58)
