@@ -10,8 +10,8 @@ other hub against their reach). Where it does not, n(e) and every synthesis are 
 import sys
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
-import numpy as np
 import _variants
+import numpy as np
 from _runner import fidelity_suite
 from grow_variants import _harder_suite
 from synth_variants import _harder

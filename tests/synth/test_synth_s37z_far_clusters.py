@@ -11,12 +11,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.metrics import overlaps
 from strew.synth import synthesize
-
-from strew_testing import fidelity_suite
 
 suite = fidelity_suite()
 
