@@ -1217,25 +1217,62 @@ def anchor_reach(pos: np.ndarray, reach: np.ndarray, kind: np.ndarray, source: n
     the seed beside a hub paired up to 2 r away, and 37 % of the tiles stood off any
     hub's ring (doubled, shifted rings; h3s7 seed 1). The hub's own ring is copied
     from the hub once it is placed. With ``size`` (area radii), the anchors are those of
-    :func:`anchor_mask` given the centres and sizes.
+    :func:`anchor_mask` given the centres and sizes. An exemplar without two anchors
+    has its largest size class for hubs where most of them see no other (far-apart
+    clusters' discs, :func:`_far_hubs`), and every visible element sees them.
     """
     reach = np.asarray(reach, float)
+    void = np.asarray(void, bool)
     skind = np.unique(np.c_[source, kind], axis=0, return_inverse=True)[1].ravel()
     anchor = anchor_mask(skind, source, cls, void, pos, size) > 0
     out, far = reach, None
     for s_ in np.unique(source):
         a = np.flatnonzero(anchor & (source == s_))
-        if len(a) < 2:
-            continue
-        members = np.flatnonzero((source == s_) & ~np.asarray(void, bool) & np.isin(cls, cls[a]))
-        d, _ = cKDTree(pos[a]).query(pos[members], k=2)
-        if np.any(d[:, 1] <= reach[members]):  # some neighbourhood already holds a foreign anchor
-            continue
+        members = np.flatnonzero((source == s_) & ~void & np.isin(cls, cls[a]))
+        if len(a) >= 2:
+            d, _ = cKDTree(pos[a]).query(pos[members], k=2)
+            if np.any(d[:, 1] <= reach[members]):  # some neighbourhood already holds a foreign anchor
+                continue
+        else:
+            a, members = _far_hubs(pos, reach, cls, (source == s_) & ~void)
+            if len(a) < 2:
+                continue
+            d, _ = cKDTree(pos[a]).query(pos[members], k=2)
         if out is reach:
             out, far = reach.copy(), np.zeros(len(reach), bool)
         out[members] = np.maximum(reach[members], ANCHOR_CROSS * d[:, 1])  # each member's nearest foreign anchor
         far[a] = True
     return out, far
+
+
+def _far_hubs(pos: np.ndarray, reach: np.ndarray, cls: np.ndarray, own: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The hubs of one exemplar without anchors for :func:`anchor_reach` and the
+    elements that must see them: the members of its largest size class (the elements
+    the smaller classes lean on, :func:`parents`) and every element of ``own`` (its
+    visible elements), where most hubs' neighbourhoods hold no other hub; else empty.
+
+    Extension of §5.1, as :func:`anchor_reach` for anchors: far-apart clusters (discs
+    90 apart in a 300 x 300 frame, ``synth_variants.py --varied`` clusters p2s27 and
+    p2s28) get a disc r-bar capped at the depth of their deepest disc (56-74, see
+    ``_palette.element_parameters``), so that one disc is interior, and a reach
+    (r-bar + 2 r_max) below the next disc: no disc's n(e) held another (p2s28), or two
+    of eight did (p2s27), and synthesis stopped after the seed patch (7 elements
+    against about 600; 2 seeds an iteration, all dots, whose neighbourhoods hold their
+    own ring only). Here every element sees its second nearest hub (a hub the nearest
+    other one, a dot the next disc but its own) times :data:`ANCHOR_CROSS`, so that any
+    seed, dot or disc, can copy the step to the next cluster. The test is on most hubs,
+    not any: one close pair of discs (90.1 apart, reach 90.2) does not make growth cross.
+    """
+    ids = np.flatnonzero(own)
+    if len(ids) < 3 or cls[ids].min() == cls[ids].max():
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    a = ids[cls[ids] == cls[ids].max()]
+    if len(a) < 2:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    d, _ = cKDTree(pos[a]).query(pos[a], k=2)
+    if np.mean(d[:, 1] <= reach[a]) >= 0.5:  # most hubs already see another
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    return a, ids
 
 
 def parents(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, void: np.ndarray, depth: np.ndarray | None = None,
