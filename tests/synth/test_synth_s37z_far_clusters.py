@@ -37,14 +37,3 @@ def test_far_clusters_grow_past_the_seed_patch(variant):
     assert np.sum(out.kind == out.kinds.index("disc")) >= 3 * np.sum(ex.kind == ex.kinds.index("disc"))
     assert len(overlaps(out)[0]) == 0
 
-
-def test_far_clusters_dots_stay_on_their_rings():
-    """Lone dots take partners on a disc's ring only (``_pebbles.fill_partners``)."""
-    ex, out = _far(28)
-    assert len(out) >= 3 * len(ex)
-    disc = out.xy[out.kind == out.kinds.index("disc")]
-    dot = out.xy[out.kind == out.kinds.index("dot")]
-    exd = ex.xy[ex.kind == ex.kinds.index("disc")]
-    exdot = ex.xy[ex.kind == ex.kinds.index("dot")]
-    ring = cKDTree(exd).query(exdot)[0].max()
-    assert np.mean(cKDTree(disc).query(dot)[0] <= ring + 1.0) >= 0.95

@@ -22,20 +22,6 @@ PARTNER_Q = 0.9
 frame) beyond which an element stands alone (:func:`fill_partners`)."""
 
 
-PARTNER_FOLLOW = 0.75
-"""A kind at least this share of whose exemplar elements follow their parent
-(``Prepared.follow``: a dot whose only larger Delaunay neighbour is its disc) takes
-partners on a ring only: within its kind's farthest parent distance (x 1.05) of an
-element of a parent kind (:func:`fill_partners`). The share, on the suite's exemplars
-and ``_variants.VARIED`` + ``EDGE`` sets at variant seeds 7 and 27: clusters p2
-0.92-1.00 (the only clusters set whose dots fill_partners sees), two sizes 0.06-0.41,
-three sizes 0.15-0.35 (pebbles in the gaps of several stones). Measured
-(``benchmarks/fresh17_rows.py synth``, seeds 1-3, clusters p2): s17 0/3 -> 3/3
-(nn[dot>disc] 0.080-0.088 against 0.05: partners off every ring), s23 2/3 -> 1/3
-(empty_circle 0.201 against 0.188 at seed 1: main's off-ring partners had shrunk the
-holes between clusters), s13, s15, s24 3/3 both."""
-
-
 def fill_partners(state: SynthState, room: int | None = None) -> int:
     """Give lone elements of a kind of the exemplar's smallest size class that the
     exemplar leaves saturated (``_grow._room_rate(smallest=True)`` finite) a partner,
@@ -102,21 +88,6 @@ def fill_partners(state: SynthState, room: int | None = None) -> int:
             # a partner beside a lone one is a stray tile (rings h2s7 of --harder, seed
             # 2: 3089 -> 3132 elements, regularity 0.086 against 0.05)
             continue
-        ring = None
-        if np.mean(prep.follow[mine]) >= PARTNER_FOLLOW:
-            # dots ringing their disc (Prepared.follow) take partners on a ring only:
-            # within their kind's farthest parent distance of an element of a parent
-            # kind. A disc's ring of six dots, copied from the exemplar's one interior
-            # disc, is lone to the quantile of rings of six and seven, and partners
-            # stood off every ring (clusters p2s27 of synth_variants.py --varied, seed
-            # 1: 131 dots added, 122 of them over 20 from a disc against 7;
-            # nn[dot>disc] 0.088 against 0.05)
-            par = prep.parent[mine]
-            par = par[par >= 0]
-            if not len(par):
-                continue
-            ring = (float(np.hypot(*(prep.pos[par] - prep.pos[mine][prep.parent[mine] >= 0]).T).max()) * 1.05,
-                    np.unique(prep.skind[par]))
         exy = prep.pos[mine]
         ein = shapely.contains_xy(ex_inner, exy[:, 0], exy[:, 1])
         if ein.sum() < 5:
@@ -163,9 +134,6 @@ def fill_partners(state: SynthState, room: int | None = None) -> int:
                 f = f[state.in_domain(c[f])]
             if len(f):
                 f = f[shapely.distance(boundary, shapely.points(c[f])) >= prep.r[part[f]]]
-            if len(f) and ring is not None:
-                hub = near[np.isin(prep.skind[state.src[near]], ring[1])]
-                f = f[np.hypot(c[f, None, 0] - state.pos[hub][None, :, 0], c[f, None, 1] - state.pos[hub][None, :, 1]).min(axis=1, initial=np.inf) <= ring[0]]
             if not len(f):
                 continue
             for b in f[state.rng.permutation(len(f))]:
