@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy.spatial import cKDTree
 from strew_testing import fidelity_suite
 
 from strew import Region
@@ -19,7 +18,7 @@ from strew.synth import synthesize
 
 suite = fidelity_suite()
 
-FAR_CLUSTERS = dict(cluster_spacing=90.0, ring_gap=3.0, ring_min=6, ring_max=7)
+FAR_CLUSTERS = {"cluster_spacing": 90.0, "ring_gap": 3.0, "ring_min": 6, "ring_max": 7}
 
 
 def _far(variant):
