@@ -10,7 +10,9 @@ import sys
 
 def rows(path, only):
     out = {}
-    for line in open(path):
+    with open(path) as f:
+        lines = f.readlines()
+    for line in lines:
         m = re.match(r"\s+(\S+)\s+(\S+)\s+seed (\d+): (pass|FAIL) n=(\d+).*?cpu ?(.*)$", line)
         if m and (not only or m.group(1) in only):
             out[(m.group(1), m.group(2), m.group(3))] = (m.group(4), int(m.group(5)), m.group(6).strip())

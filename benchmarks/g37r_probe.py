@@ -8,16 +8,15 @@ exemplar's q95 classed by where they are: distance to the frame, the hubs within
 reach (a missing hub: a hub-sized hole among the hubs), the nearest hub's satellites.
 """
 import sys
-
-import numpy as np
-import shapely
-from scipy.spatial import Delaunay, cKDTree
+from types import SimpleNamespace
 
 import _variants  # noqa: F401
+import numpy as np
+import shapely
 from _runner import fidelity_suite
 from fresh17_rows import exemplar
-from types import SimpleNamespace
 from grow_variants import run
+from scipy.spatial import Delaunay, cKDTree
 
 from strew.metrics import fidelity
 
@@ -78,7 +77,6 @@ def main():
         edh, _ = cKDTree(eh).query(ec[ebig])
         print(f"   nearest hub dist of big circles: out pct10/50/90 {np.percentile(dh, [10, 50, 90]).round(1)}, ex {np.percentile(edh, [10, 50, 90]).round(1)}")
         # hub holes: largest empty circles among hubs alone
-        hc = Delaunay(hx)
         top = np.argsort(-orr)[:8]
         for t in top:
             print(f"     r={orr[t]:.2f} at ({oc[t, 0]:.0f},{oc[t, 1]:.0f}) to frame {shapely.distance(reg.boundary, shapely.Point(*oc[t])):.0f} nearest hub {ht.query(oc[t])[0]:.1f} verts kinds {out.kind[simp[t]].tolist()}")

@@ -27,7 +27,7 @@ from strew.grow._clusters import hub_hole
 from strew.metrics import fidelity
 
 # the default rings and the audit's EDGE set p2 (``benchmarks/_variants.py``)
-CASES = {"default": {}, "large_rings": dict(tiles=14, radius=20.0, hub=8.0, spacing=52.0)}
+CASES = {"default": {}, "large_rings": {"tiles": 14, "radius": 20.0, "hub": 8.0, "spacing": 52.0}}
 
 
 def _whole_circles(p, region):

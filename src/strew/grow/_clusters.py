@@ -289,9 +289,10 @@ def hub_hole(hx: Arrangement, close: float | None = None) -> float:
     nearer than the exemplar's least distance. A hole of radius between ``close`` and
     that least distance holds a hub that growth itself would have placed, had a seed
     been proposed at its centre (seeds die where the fit to their ring moves them 3-9
-    off it, towards a neighbour), yet was kept empty: rings at variant seed 27 left 3-5
-    such holes of 37.0-37.7 (``close`` 37.5, least 38.5; each an empty circle of the
-    whole result about 23 where the exemplar's q95 is 8.8), empty_circle 0.102-0.132
+    off it, towards a neighbour), yet was kept empty: default rings at variant seed 27
+    left three such holes of 37.6-37.7 at seed 1 (``close`` 37.5, least 38.5; each an
+    empty circle of the whole result about 23 where the exemplar's q95 is 8.8; filled,
+    and grown on from, they gave 5 hubs more), empty_circle 0.102-0.132
     against 0.1 on the three parameter sets, while the class's generator drawn at the
     output's size passes 3 of 3 (``benchmarks/g37r_rows.py``). Where the exemplar's
     least distance is nearer (``close`` None or larger), the limit is as before.
