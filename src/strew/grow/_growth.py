@@ -1175,10 +1175,7 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         target = p.count if p.count is not None else p.max_elements
         self.advance(rep, target)
         if self.tile is not None or self.boundary is not None:
-            for _ in range(p.refill_rounds):
-                if len(self.order) >= target or not self.refill():
-                    break
-                self.advance(rep, target)
+            self._rounds(self.refill, rep, target)
         if self.mode_code == 0 and self.tile is None and ((p.void_holes and bool(self.void_kind.any())) or (
                 p.open_holes and self.boundary is None and self.spray_area is None and (self._irregular() or small_fill(self) is not None))):
             # holes of voids where visible elements belong, holes of irregular exemplars
@@ -1186,39 +1183,24 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
             # smallest (not in the paper; see :mod:`strew.grow._void_holes`; not with
             # boundary strokes or the spray tool: beyond a closed stroke or off the
             # sprayed path a gap is no hole)
-            for _ in range(p.refill_rounds):
-                if len(self.order) >= target or not fill_void_holes(self):
-                    break
-                self.advance(rep, target)
+            self._rounds(lambda: fill_void_holes(self), rep, target)
         if self.mode_code == 0 and self.tile is None and self.boundary is None and self.spray_area is None and self.n_kinds > 1 and lone_kinds(self):
             # larger elements with no smaller one as near as the reference always has
             # one (not in the paper; see :mod:`strew.grow._lone_larger`)
-            for _ in range(p.refill_rounds):
-                if len(self.order) >= target or not swap_lone_larger(self):
-                    break
-                self.advance(rep, target)
+            self._rounds(lambda: swap_lone_larger(self), rep, target)
             # smaller elements farther from a larger kind than the reference has them
             # (not in the paper; see :mod:`strew.grow._lone_smaller`)
-            for _ in range(p.refill_rounds):
-                if len(self.order) >= target or not move_lone_smaller(self):
-                    break
-                self.advance(rep, target)
+            self._rounds(lambda: move_lone_smaller(self), rep, target)
             # elements farther from their own kind than the reference has them, given
             # one of their kind beside them (not in the paper; see
             # :mod:`strew.grow._lone_kin`)
-            for _ in range(p.refill_rounds):
-                if len(self.order) >= target or not reseed_lone_kin(self):
-                    break
-                self.advance(rep, target)
+            self._rounds(lambda: reseed_lone_kin(self), rep, target)
         if self.mode_code == 0 and self.tile is None and p.open_holes and self.boundary is None and self.spray_area is None and small_fill(self) is not None:
             # the holes of kinds of several sizes whose centre has some kind farther than
             # the reference's small elements have it, filled with the smallest kind at a
             # spot toward that kind, after the passes above (not in the paper; see
             # :func:`strew.grow._void_holes._toward_kinds`)
-            for _ in range(p.refill_rounds):
-                if len(self.order) >= target or not fill_void_holes(self, toward=True):
-                    break
-                self.advance(rep, target)
+            self._rounds(lambda: fill_void_holes(self, toward=True), rep, target)
         if self.mode_code == 2 and self.tile is None:
             # flow mode: the gaps a bent lattice leaves (issue 14 point 2; not in the
             # paper), with draws from a stream jumped off ``rng``: a caller's later draws
@@ -1495,6 +1477,15 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 f"{self.margin:.4g} (about {self.margin / max(self.l, 1e-300):.1f} element spacings); give a tile at least "
                 f"{self.margin:.4g} wide and high"
             )
+
+    def _rounds(self, one_pass, rep: Reporter, target: int) -> None:
+        """Up to ``refill_rounds`` rounds of a pass after growth: ``one_pass()`` (True
+        when it changed anything), then growth from what it left, until ``target``
+        elements or a pass changes nothing."""
+        for _ in range(self.p.refill_rounds):
+            if len(self.order) >= target or not one_pass():
+                break
+            self.advance(rep, target)
 
     def advance(self, rep: Reporter, target: int, pause: int | None = None) -> bool:
         """Growth steps until ``target`` elements or no seed can grow.

@@ -157,6 +157,17 @@ def circumcircles(xy: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return centre, radius, tri.simplices[ok].astype(np.int64)
 
 
+def circles_within(geom, cen: np.ndarray, rad: np.ndarray, edge=None) -> np.ndarray:
+    """(t,) bool: circles (centres (t, 2), radii (t,)) centred in ``geom`` and no
+    nearer its ``edge`` (default its boundary) than their radius, as
+    ``strew.metrics.fidelity`` counts empty circles."""
+    ins = shapely.contains_xy(geom, cen[:, 0], cen[:, 1])
+    if ins.any():
+        edge = geom.boundary if edge is None else edge
+        ins[ins] = shapely.distance(edge, shapely.points(cen[ins])) >= rad[ins]
+    return ins
+
+
 def largest_empty_circles(prep) -> np.ndarray:
     """(exemplars,) float: radius of each exemplar's largest empty circle (a Delaunay
     circumcircle of its visible elements' centres lying wholly inside its domain; inf
@@ -170,8 +181,7 @@ def largest_empty_circles(prep) -> np.ndarray:
         cen, rad, _ = circumcircles(prep.pos[ids])
         if len(rad) == 0:
             continue
-        inside = shapely.contains_xy(dom, cen[:, 0], cen[:, 1])
-        inside[inside] = shapely.distance(dom.exterior, shapely.points(cen[inside])) >= rad[inside]
+        inside = circles_within(dom, cen, rad, dom.exterior)
         if inside.any():
             out[i] = float(rad[inside].max())
     prep._lec = out

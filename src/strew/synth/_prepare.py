@@ -1326,9 +1326,7 @@ def open_room_share(prep: Prepared) -> np.ndarray:
     got = getattr(prep, "_open_room", None)
     if got is not None and len(got) == len(prep.names):
         return got
-    import shapely
-
-    from ._grow import circumcircles
+    from ._grow import circles_within, circumcircles
 
     out = np.zeros(len(prep.names))
     for s, dom in enumerate(prep.domains):
@@ -1344,8 +1342,7 @@ def open_room_share(prep: Prepared) -> np.ndarray:
         sm = int(np.argmin(rc))
         need = np.maximum(rc[sm] + rc[tri], prep.min_dist[sk[sm], sk[tri]]).max(axis=1)
         room = rad >= need
-        room[room] = shapely.contains_xy(dom, cen[room, 0], cen[room, 1])
-        room[room] = shapely.distance(dom.boundary, shapely.points(cen[room])) >= rad[room]  # holes and parts too
+        room[room] = circles_within(dom, cen[room], rad[room])  # holes and parts too
         c = cen[room]
         if len(c) == 0:
             continue

@@ -193,7 +193,10 @@ def _opened_circle(pos: np.ndarray, vis: np.ndarray, alive: np.ndarray, tree: cK
     and wholly inside it, as ``strew.metrics.fidelity`` counts them) that removing
     element ``r`` would open among the alive visible elements: the circumcircles of
     its nearest alive neighbours' triangulation that hold ``r`` (0: none)."""
-    from ._grow import circumcircles  # (lazy: _grow imports this module)
+    from ._grow import (  # (lazy: _grow imports this module)
+        circles_within,
+        circumcircles,
+    )
 
     k = min(24, len(vis))
     jj = vis[np.atleast_1d(tree.query(pos[r], k=k)[1])]
@@ -203,8 +206,7 @@ def _opened_circle(pos: np.ndarray, vis: np.ndarray, alive: np.ndarray, tree: cK
     if not hit.any():
         return 0.0
     cen, rad = cen[hit], rad[hit]
-    ins = shapely.contains_xy(geom, cen[:, 0], cen[:, 1])
-    ins[ins] = shapely.distance(geom.boundary, shapely.points(cen[ins])) >= rad[ins]
+    ins = circles_within(geom, cen, rad)
     return float(rad[ins].max()) if ins.any() else 0.0
 
 
