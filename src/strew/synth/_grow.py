@@ -2434,6 +2434,67 @@ def _larger_in_class(prep) -> np.ndarray:
     return out
 
 
+#: The generation step's candidate choice does not count, in |n(s) - n(e)| (Eq. 1), the
+#: right-partial pairs of the candidate's own ring children that the copy would place on
+#: free space (see _free_children_discount); False restores the paper's rule
+FREE_CHILDREN = True
+
+
+def _free_children_discount(prep, seeds: np.ndarray, seed_pos: np.ndarray, rbar_seeds: np.ndarray, cands: np.ndarray, out_ptr: np.ndarray,
+                            count: np.ndarray, ex: np.ndarray, ppos: np.ndarray, free: np.ndarray) -> np.ndarray:
+    """Cost of the right-partial pairs of each (seed, candidate) that are the candidate's own
+    ring children (``Prepared.follow``) landing on free space.
+
+    Departure from §5.1 (Algorithm 1: ``e <- min_e |n(s) - n(e)|``). A right-partial pair
+    ``(0, e')`` costs ``d_e'^2`` (§4), also where ``e'`` falls on free space, where the copy
+    is to generate it. A seed whose ring is not there yet (a disc copied across the gap
+    between clusters) then prefers the candidate with the fewest ring children: clusters
+    p2s27 (rings of 6 and 7, four each) copied 104 of 114 rings with 6 dots, and the
+    partner fills added the missing dots as strays between clusters (g[disc,dot] 3.04 /
+    0.842). The children that the copy places on free space are what it generates, not a
+    difference between the neighbourhoods, so they are not counted; the ring children that
+    fall where the output is settled still are. Only children that follow their parent
+    (a dot ringing its disc, see ``_prepare.parents``) of the candidate itself.
+
+    Parameters
+    ----------
+    prep : Prepared
+    seeds : (ns,) int
+    seed_pos : (ns, 2) float
+    rbar_seeds : (ns,) float
+        The seeds' neighbourhood radii (the rim of Eq. 1's right-partial pairs).
+    cands : (ns, k) int
+    out_ptr, count : proposal layout from ``generate_proposals``.
+    ex : (P,) int
+        Exemplar element of each proposal (-1 for none).
+    ppos : (P, 2) float
+    free : (P,) bool
+        Proposals that overlap a free-space point.
+
+    Returns
+    -------
+    (ns, k) float
+        The cost to subtract from each candidate's ``|n(s) - n(e)|``.
+    """
+    ns, k = cands.shape
+    if ns == 0 or not prep.follow.any() or len(ex) == 0:
+        return np.zeros((ns, k))
+    slot = np.repeat(np.arange(ns * k), np.diff(out_ptr))
+    first = out_ptr[:-1][slot]
+    live = (np.arange(len(ex)) - first < count[slot]) & (ex >= 0) & free
+    t = np.flatnonzero(live)
+    if len(t) == 0:
+        return np.zeros((ns, k))
+    e = ex[t]
+    s = slot[t]
+    own = prep.follow[e] & (prep.parent[e] == cands.ravel()[s])
+    de = 2.0 * prep.r[e]
+    lim = rbar_seeds[s // k] - 0.5 * de
+    own &= np.hypot(*(ppos[t] - seed_pos[s // k]).T) <= lim
+    flat = np.bincount(s[own], weights=de[own] ** 2, minlength=ns * k)
+    return flat.reshape(ns, k)
+
+
 COPYABLE_ONLY = True
 """Generation asks only of proposals that can be copied whether a candidate can
 generate (:func:`copyable`); off: every proposal that passed the static checks counts."""
@@ -2652,6 +2713,10 @@ def grow(
         if ok.any():
             # candidates must overlap a free-space point (Algorithm 1) ...
             ok[ok] = K.overlaps_any(np.ascontiguousarray(ppos[ok]), pr[ok], np.ascontiguousarray(fpos), np.ascontiguousarray(fc, dtype=float))
+        if FREE_CHILDREN:
+            # ring children the copy generates on free space are no difference (see
+            # _free_children_discount; departure from §5.1)
+            costs = np.where(np.isfinite(costs), np.maximum(costs - _free_children_discount(prep, seeds, pos[seeds], rbar[seeds], cands, out_ptr, count, ex, ppos, ok), 0.0), costs)
         # a parent beyond the region's edge does not hold its children back
         parent_free = np.zeros(len(ex), bool)
         ref = np.unique(pslot[ok & (pslot >= 0)])
