@@ -2439,11 +2439,33 @@ def _larger_in_class(prep) -> np.ndarray:
 #: free space (see _free_children_discount); False restores the paper's rule
 FREE_CHILDREN = True
 
+#: ... children of a kind of which at least this share follows its parent (a ring kind:
+#: clusters' dots 0.84-1.0 at variant seed 27, ``--harder`` h1 0.41; rings' tiles
+#: 0.92-0.99; two sizes' pebbles 0-0.48, three sizes' smaller stones 0-0.55, stones and
+#: the other classes none; ``benchmarks/s42c_follow_census.py``)
+FREE_CHILDREN_SHARE = 0.75
+
+
+def _ring_kind_children(prep) -> np.ndarray:
+    """(n,) bool: exemplar elements that follow their parent (``Prepared.follow``) in a
+    kind of their exemplar (``Prepared.skind``) that does so in at least
+    :data:`FREE_CHILDREN_SHARE` of its elements. Cached on ``prep``."""
+    got = getattr(prep, "_ring_kind_children", None)
+    if got is not None and len(got) == len(prep.kind):
+        return got
+    sk = prep.skind
+    n_k = np.bincount(sk, minlength=int(sk.max()) + 1 if len(sk) else 0)
+    f_k = np.bincount(sk, weights=prep.follow.astype(float), minlength=len(n_k))
+    share = np.divide(f_k, n_k, out=np.zeros(len(n_k)), where=n_k > 0)
+    out = prep.follow & (share[sk] >= FREE_CHILDREN_SHARE)
+    prep._ring_kind_children = out
+    return out
+
 
 def _free_children_discount(prep, seeds: np.ndarray, seed_pos: np.ndarray, rbar_seeds: np.ndarray, cands: np.ndarray, out_ptr: np.ndarray,
                             count: np.ndarray, ex: np.ndarray, ppos: np.ndarray, free: np.ndarray) -> np.ndarray:
     """Cost of the right-partial pairs of each (seed, candidate) that are the candidate's own
-    ring children (``Prepared.follow``) landing on free space.
+    ring children (:func:`_ring_kind_children`) landing on free space.
 
     Departure from §5.1 (Algorithm 1: ``e <- min_e |n(s) - n(e)|``). A right-partial pair
     ``(0, e')`` costs ``d_e'^2`` (§4), also where ``e'`` falls on free space, where the copy
@@ -2453,8 +2475,10 @@ def _free_children_discount(prep, seeds: np.ndarray, seed_pos: np.ndarray, rbar_
     partner fills added the missing dots as strays between clusters (g[disc,dot] 3.04 /
     0.842). The children that the copy places on free space are what it generates, not a
     difference between the neighbourhoods, so they are not counted; the ring children that
-    fall where the output is settled still are. Only children that follow their parent
-    (a dot ringing its disc, see ``_prepare.parents``) of the candidate itself.
+    fall where the output is settled still are. Only children of the candidate itself,
+    of a kind that follows its parent as a rule (a dot ringing its disc, see
+    ``_prepare.parents``; pebbles beside a stone are not: two and three sizes are left
+    as in the paper).
 
     Parameters
     ----------
@@ -2477,7 +2501,8 @@ def _free_children_discount(prep, seeds: np.ndarray, seed_pos: np.ndarray, rbar_
         The cost to subtract from each candidate's ``|n(s) - n(e)|``.
     """
     ns, k = cands.shape
-    if ns == 0 or not prep.follow.any() or len(ex) == 0:
+    ring = _ring_kind_children(prep)
+    if ns == 0 or not ring.any() or len(ex) == 0:
         return np.zeros((ns, k))
     slot = np.repeat(np.arange(ns * k), np.diff(out_ptr))
     first = out_ptr[:-1][slot]
@@ -2487,7 +2512,7 @@ def _free_children_discount(prep, seeds: np.ndarray, seed_pos: np.ndarray, rbar_
         return np.zeros((ns, k))
     e = ex[t]
     s = slot[t]
-    own = prep.follow[e] & (prep.parent[e] == cands.ravel()[s])
+    own = ring[e] & (prep.parent[e] == cands.ravel()[s])
     de = 2.0 * prep.r[e]
     lim = rbar_seeds[s // k] - 0.5 * de
     own &= np.hypot(*(ppos[t] - seed_pos[s // k]).T) <= lim
