@@ -40,3 +40,14 @@ for a in range(len(P)):
         if b not in used and np.hypot(*(P[a] - P[b])) < 3 * sp and B[a] @ B[b] < -np.cos(np.radians(30)):
             used |= {a, b}; dip += 1; break
 print("cores", len(P), "net |sum b|", round(float(np.hypot(*B.sum(0))) if len(B) else 0.0, 2), "dipoles within 3 spacings", dip)
+
+# each core: where (spacings; polar about the field's centre, the origin) and the angle of its
+# Burgers vector to the field's direction there (+-180: the sign along the rows)
+if len(sys.argv) > 4:
+    from strew.fields import flow_field
+    th = np.linspace(0, np.pi / 2, 30); aa = n * sp
+    af = flow_field([np.c_[r * np.cos(th), r * np.sin(th)] for r in (aa / 3, aa * 5 / 6)])
+    f = np.asarray(af(P)) if len(P) else np.zeros((0, 2))
+    for (x, y), b, fd in sorted(zip(P / sp, B, f), key=lambda t: np.arctan2(t[0][1], t[0][0])):
+        a = np.degrees(np.arctan2(fd[0] * b[1] - fd[1] * b[0], fd @ b))
+        print(f"  core at ({x:5.1f},{y:5.1f}) r {np.hypot(x, y):5.1f} phi {np.degrees(np.arctan2(y, x)):5.1f}  b to field {a:7.1f}")
