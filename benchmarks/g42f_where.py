@@ -34,4 +34,5 @@ for case in sys.argv[1].split(';'):
     print(' bad by (hi,lo):',dict(zip(*np.unique([f"{a},{b}" for a,b in zip(hi[bad],lo[bad])],return_counts=True))))
     print(' bad delaunay degree:',dict(zip(*np.unique(deg[bad],return_counts=True))))
     print(' bad with delaunay deg 6:',((deg==6)&bad).sum(),' their max bond (sp) q:',np.round(np.quantile(mx[(deg==6)&bad],[0,.25,.5,.75,1]),3) if ((deg==6)&bad).any() else None)
+    import os; os.makedirs('/tmp/g42f', exist_ok=True)
     np.save(f'/tmp/g42f/out_{case.replace(":","_").replace(",","_")}.npy',xy)
