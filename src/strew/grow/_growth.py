@@ -88,7 +88,7 @@ from ._objects import (
 )
 from ._place import _Place
 from ._relax_window import _RelaxWindow
-from ._spacing import reference_nn
+from ._spacing import reference_nn, thin_to_holes
 from ._void_holes import fill_void_holes, small_fill
 
 __all__ = ["GrowParams", "grow_reference"]
@@ -361,6 +361,11 @@ class GrowParams:
     #: leave get an element (of the smallest kind, with several sizes) at their centre
     #: (:mod:`strew.grow._void_holes`); False: not
     open_holes: bool = True
+    #: fixed mode, unsaturated exemplars (``keep_nn``, :mod:`strew.grow._spacing`):
+    #: last, elements taken out until the result's whole empty circles are as often as
+    #: wide as the exemplar's upper decile (:func:`strew.grow._spacing.thin_to_holes`);
+    #: False: not
+    thin_holes: bool = True
     #: §5.5's ring targets r_ji only for the neighbours that stand within this share of
     #: the slot's length of the slot they are paired with (Eq. 5 takes the current
     #: offset for the others, as for edges the ring did not make); None: every pair.
@@ -1214,6 +1219,12 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                 close_gaps(self)
             self.rng = main
         self.settle()
+        if (self.mode_code == 0 and self.tile is None and self.boundary is None and self.spray_area is None
+                and p.thin_holes and self.ref_nn is not None):
+            # unsaturated exemplars: the holes a dart throw stopped at a count leaves,
+            # which the growth fills (not in the paper; see
+            # :func:`strew.grow._spacing.thin_to_holes`)
+            thin_to_holes(self)
         if self.mode_code == 2 and self.tile is None and p.flow_hole_min is not None:
             # flow mode: the holes left, closed after the last relaxation (nothing moves
             # them back); draws from the side stream as above
