@@ -73,16 +73,39 @@ except ImportError:  # pragma: no cover - shapely < 2.1
         return shapely.distance(a, b) <= d
 
 
+#: most outlines :meth:`_Collide.turned_ring` keeps
+TURNED_KEEP = 1024
+
+
 class _Collide:
     """Overlap, domain and closeness tests on candidate elements."""
 
     def element_geometry(self, kind: int, x: float, y: float, rot: float, scale: float) -> Any:
+        if self.local_ring[kind] is not None:  # a simple polygon: the same coordinates, built directly
+            return _polygon(self.turned_ring(kind, rot, scale) + np.array([x, y]))
         m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
         t = np.array([x, y])
-        ring = self.local_ring[kind]
-        if ring is not None:  # a simple polygon: the same coordinates, built directly
-            return _polygon(ring @ m.T + t)
         return shapely.transform(self.local_geom[kind], lambda q: q @ m.T + t)
+
+    def turned_ring(self, kind: int, rot: float, scale: float) -> np.ndarray:
+        """The outline of ``kind`` (a simple polygon) turned by ``rot`` and scaled by
+        ``scale`` about its centre, (n, 2): ``local_ring[kind] @ m.T``.
+
+        Kept per (kind, rot, scale): in fixed mode an element takes its reference's
+        rotation and scale, so a growth turns the same few outlines thousands of times
+        (the same products, once; issue 14 point 5). At most :data:`TURNED_KEEP` are kept.
+        """
+        key = (kind, rot, scale)
+        cache = self._turned
+        base = cache.get(key)
+        if base is None:
+            m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
+            base = self.local_ring[kind] @ m.T
+            base.flags.writeable = False
+            if len(cache) >= TURNED_KEEP:
+                cache.clear()  # (rotation mode: every element its own angle)
+            cache[key] = base
+        return base
 
     def element_geometries(self, idx: Sequence[int], xy: np.ndarray) -> list[Any]:
         """Outlines of elements ``idx`` moved to ``xy`` (m, 2), batched by kind."""

@@ -707,6 +707,8 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         self.local_ring = [
             shapely.get_coordinates(g.exterior) if g.geom_type == "Polygon" and len(g.interiors) == 0 and not g.has_z else None for g in self.local_geom
         ]
+        #: outlines turned and scaled, per (kind, rot, scale) (_Collide.turned_ring)
+        self._turned: dict[tuple[int, float, float], np.ndarray] = {}
         self.kind_radius = np.array([max(ex.shapes[k].radius, 0.0) for k in ex.kinds])
         self.areal = [not g.is_empty and g.area > 0 for g in self.local_geom]
         #: per kind: thin (area under :data:`GAP_THIN` of its bounding disc: sticks); a

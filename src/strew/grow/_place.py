@@ -787,11 +787,7 @@ class _Place:
         # (the outline's coordinates about its centre once, as element_geometry computes
         # them, and the objects any of the offsets can touch once: the same tests, fewer
         # lookups)
-        ring = self.local_ring[kind]
-        base = None
-        if ring is not None:
-            m = np.array([[math.cos(rot) * scale, -math.sin(rot) * scale], [math.sin(rot) * scale, math.cos(rot) * scale]])
-            base = ring @ m.T
+        base = self.turned_ring(kind, rot, scale) if self.local_ring[kind] is not None else None
         pool = self.overlap_pool(kind, x, y, scale, reach)
         nbrs = [(o, self.xy[o]) for o in self.adj[s]]
         for f in (0.25, 0.5, 0.75, 1.0):
@@ -880,6 +876,7 @@ class _Place:
         angs = [math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) for o in nbrs]
         order = sorted(range(len(nbrs)), key=lambda q: angs[q])
         m = len(order)
+        rel_l = None
         for q in range(m):
             ia, ib = order[q], order[(q + 1) % m]
             oa, ob = nbrs[ia], nbrs[ib]
@@ -892,7 +889,11 @@ class _Place:
             pb = self.xy[ob]
             ja, jb = slot_of.get(oa), slot_of.get(ob)
             if ja is not None and jb is not None:
-                orig = float(np.hypot(*(rel[ja] - rel[jb])))
+                # (the same value as np.hypot(*(rel[ja] - rel[jb])), without the arrays)
+                if rel_l is None:
+                    rel_l = rel.tolist()
+                (xa, ya), (xb, yb) = rel_l[ja], rel_l[jb]
+                orig = float(np.hypot(xa - xb, ya - yb))
             else:
                 # Fig. 6e compares with the corresponding edge of the reference ring; a
                 # pair that does not come from this ring has none: take the ring's
