@@ -1519,7 +1519,15 @@ def hub_floors(prep) -> np.ndarray:
     every output hub beside it, is kept at least as far as in the exemplar's most
     crowded hub. The floors come from a few hubs (8 in a 300 x 300 frame) and the
     frame cuts off some of their neighbours, so they are the minima over all hubs, and
-    k stops at :data:`HUB_FLOOR_K`.
+    k stops at :data:`HUB_FLOOR_K`. p2s27 seed 1: 100 discs (11,025 per disc), 2nd and
+    3rd nearest at 92.9 and 104.4; seeds 1-6 0/6 -> 3/6 faithful, p2s28 3/6 -> 6/6.
+
+    Growth only: :func:`fill_holes` then puts discs into the holes wider than the
+    exemplar's largest empty circle as before (on p2s27 seed 1, 37 of the 100). Kept
+    there too, the minima of eight hubs were too strict for the generator's spacing:
+    12,800-14,300 per disc, g[disc,dot] and empty_circle failing (p2s27 and p2s28
+    seeds 1-2, benchmarks/results/s43c_holes_rejected.txt). Copies placed in the same
+    growing step do not see one another here.
     """
     got = getattr(prep, "_hub_floor", None)
     if got is not None and len(got) == len(prep.kind):
