@@ -1493,6 +1493,101 @@ def _crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, lim: np.ndarra
     return out
 
 
+HUB_FLOORS = True
+"""Growth keeps far hubs' copies no closer to their k nearest output hubs than the
+exemplar's hubs come (see :func:`hub_floors`)."""
+HUB_FLOOR_K = 3
+"""The floors cover a hub's first this many nearest hubs (fewer where the exemplar has
+fewer hubs but one)."""
+
+
+def hub_floors(prep) -> np.ndarray:
+    """(n, HUB_FLOOR_K) float: for each far hub of an exemplar without anchors
+    (``_prepare._far_hubs``: far-apart clusters' discs), the least distance of the
+    k-th nearest other hub of its exemplar, over the exemplar's hubs (k = 1, 2, ...);
+    0 elsewhere (no floor). Computed once per ``prep``.
+
+    Extension of §5.1 (a departure from the paper's growth, where only overlap and
+    free space hold a copy back): a far hub's n(e) holds its nearest hubs across the
+    gap (``_prepare.anchor_reach``), and every copy places them at the exemplar's
+    offsets. Copies from several sides thus put hubs at the exemplar's closest hub
+    distance on every side (a lattice of contacts), which the exemplar's random
+    spacing never does: ``synth_variants.py --varied`` clusters p2s27 seed 1 held 116
+    discs in 1050 x 1050 (9,500 per disc against the exemplar's 11,250), their 2nd and
+    3rd nearest disc at median 91.7 and 93.4 against 105.8 and 148.8 (helper s42c,
+    benchmarks/results/s43c_findings.txt). Here the k-th nearest hub of a copy, and of
+    every output hub beside it, is kept at least as far as in the exemplar's most
+    crowded hub. The floors come from a few hubs (8 in a 300 x 300 frame) and the
+    frame cuts off some of their neighbours, so they are the minima over all hubs, and
+    k stops at :data:`HUB_FLOOR_K`. p2s27 seed 1: 100 discs (11,025 per disc), 2nd and
+    3rd nearest at 92.9 and 104.4; seeds 1-6 0/6 -> 3/6 faithful, p2s28 3/6 -> 6/6.
+
+    Growth only: :func:`fill_holes` then puts discs into the holes wider than the
+    exemplar's largest empty circle as before (on p2s27 seed 1, 37 of the 100). Kept
+    there too, the minima of eight hubs were too strict for the generator's spacing:
+    12,800-14,300 per disc, g[disc,dot] and empty_circle failing (p2s27 and p2s28
+    seeds 1-2, benchmarks/results/s43c_holes_rejected.txt). Copies placed in the same
+    growing step do not see one another here.
+    """
+    got = getattr(prep, "_hub_floor", None)
+    if got is not None and len(got) == len(prep.kind):
+        return got
+    out = np.zeros((len(prep.kind), HUB_FLOOR_K))
+    far = getattr(prep, "_far_hubs", None)
+    if far is not None and far.any():
+        for s in np.unique(prep.source[far]):
+            a = np.flatnonzero(far & (prep.source == s))
+            k = min(HUB_FLOOR_K, len(a) - 1)
+            if k < 1:
+                continue
+            d, _ = cKDTree(prep.pos[a]).query(prep.pos[a], k=k + 1)
+            out[a, :k] = d[:, 1:].min(axis=0)
+    prep._hub_floor = out
+    return out
+
+
+def _hub_crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, floors: np.ndarray) -> np.ndarray:
+    """(m,) bool: copies of far hubs ``src`` at ``pts`` that would stand, or put an
+    output hub beside them, nearer its k-th nearest hub than ``floors`` allows (see
+    :func:`hub_floors`)."""
+    out = np.zeros(len(pts), bool)
+    fl = floors[src]
+    q = np.flatnonzero(fl[:, 0] > 0)
+    if len(q) == 0 or state.n == 0:
+        return out
+    far = state.prep._far_hubs[state.src]
+    hubs = np.flatnonzero(far)
+    if len(hubs) == 0:
+        return out
+    hp = state.pos[hubs]
+    hf = floors[state.src[hubs]]
+    tree = cKDTree(hp)
+    reach = float(floors.max())
+    # each output hub's count of other hubs within each of its floors
+    near = tree.query_ball_point(pts[q], reach)
+    for j, i in enumerate(q):
+        nb = np.asarray(near[j], np.int64)
+        if len(nb) == 0:
+            continue
+        d = np.hypot(*(hp[nb] - pts[i]).T)
+        # the copy itself: its k-th nearest hub no nearer than its floor
+        kk = min(len(d), fl.shape[1])
+        if np.any(np.sort(d)[:kk] < fl[i, :kk]):
+            out[i] = True
+            continue
+        # the hubs beside it: one more hub within d of them
+        for h, dh in zip(nb, d):
+            lim = hf[h]
+            ks = np.flatnonzero((lim > 0) & (dh < lim))
+            if len(ks) == 0:
+                continue
+            cnt = tree.query_ball_point(np.repeat(hp[h][None], len(ks), axis=0), lim[ks], return_length=True) - 1  # others within each floor
+            if np.any(cnt >= ks):  # with the copy, the (k+1)-th nearest would come within floor k+1
+                out[i] = True
+                break
+    return out
+
+
 def _yield_from(state: SynthState) -> int:
     """First iteration whose elements still yield (see :func:`_split_conflicts`)."""
     return max(state.grow_start, state.iterations - state.params.yield_window)
@@ -2689,6 +2784,9 @@ def grow(
     slim = shape_limits(prep) if SHAPE_CROWD and shape_test else None
     if slim is not None and not (slim[0][prep.selected_elements] >= 0).any():
         slim = None
+    hfl = hub_floors(prep) if HUB_FLOORS else None
+    if hfl is not None and not (hfl[prep.selected_elements, 0] > 0).any():
+        hfl = None
     for _ in range(max_iterations):
         state.iterations += 1
         hz = np.flatnonzero(state.horizon)
@@ -2780,6 +2878,9 @@ def grow(
                     if slim is not None and not hard.all():
                         rest = np.flatnonzero(~hard)
                         hard[rest] = _shape_crowded(state, ppos[sub[rest]], exv[sub[rest]], *slim)
+                    if hfl is not None and not hard.all():
+                        rest = np.flatnonzero(~hard)
+                        hard[rest] = _hub_crowded(state, ppos[sub[rest]], exv[sub[rest]], hfl)
                 else:
                     hard = state.conflicts(ppos[sub], exv[sub])
                 okp[sub[hard]] = False

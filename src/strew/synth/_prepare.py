@@ -588,6 +588,9 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         follow=follow,
     )
     prep._anchors = anchor  # _grow.anchors: the same mask, with the centres (_stand_around)
+    # hubs that n(e) reaches across the gap in exemplars without anchors (_far_hubs):
+    # _grow.hub_floors keeps their copies as far apart as the exemplar's hubs
+    prep._far_hubs = np.zeros(len(arr), bool) if far is None else far & ~(anchor > 0)
     prep._area_r = area_radii(arr)  # _grow._larger_in_class: a kind's size by area as well
     prep.set_selection(selection)
     return prep
