@@ -14,8 +14,8 @@ Sharp: the held-out quarter circles over 16 spacings (``benchmarks/flow14p_heldo
 ``qc16_2,2``; Nye bound 0.834): the bend is taken up by 5-7 dislocation cores (nine on
 main), no hole, nothing across the edge. That the cores are isolated is not asserted:
 here no two are within two spacings and the sites without six neighbours group in
-twos at most, but on 13 of the 15 sharp held-out hexagon cases (16-24 spacings, five
-starts) some cores are (``benchmarks/results/g43f_sharp_hex_r1.txt``).
+twos at most, but on 10 of the 13 sharp held-out hexagon cases measured (16-24
+spacings, five starts) some cores are (``benchmarks/results/g43f_sharp_hex_r1.txt``).
 
 Both hold on main (src unchanged by g43f): a guard on what point 2 asks that main
 meets, not the test of a change.
