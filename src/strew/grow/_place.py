@@ -143,7 +143,9 @@ class _Place:
         lost nn[medium>small], 5/6 -> 1/6 seeds.)"""
         a = int(self.kind[i])
         ref = self.canopy_ref_share
-        if a < 0 or ref is None or not ref[a] > 0:
+        if a < 0 or ref is None or not ref[a] > 0 or self.size_level[a] <= float(self.size_level.min()):
+            # a middle kind only: small stones let past the large seeds where they are
+            # short still lost h0s27 (nn[medium>small] at seeds 2-4 of 1-4)
             return False
         self._settle_update()
         x, y = self.xy[i]
