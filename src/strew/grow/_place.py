@@ -121,7 +121,8 @@ class _Place:
         0.89-0.97, as the generator at the output's size (1.06 and 0.91), but the
         small-stone majorities (300:20:10) lost their larger kinds. Gated at the share
         the canopy gates its conversions at (``canopy_share``, ``canopy_share_z``,
-        ``canopy_few_z``), a kind keeps its priority only while it is under it.
+        ``canopy_few_z``), the largest kind keeps its priority over a seed of a middle
+        kind short of its own share (:meth:`_kind_short`) only while it is under it.
         (helper g43m, ``benchmarks/g43m_kinds.py``)
         """
         if b < 0 or self.size_level[b] != self.top_level:
