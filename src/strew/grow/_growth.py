@@ -353,6 +353,11 @@ class GrowParams:
     #: times the reference's reach between the two (see ``_Place.try_larger``); None:
     #: it is placed as its own kind
     canopy_refuse: float | None = 1.0
+    #: kinds of several sizes: a seed of a higher priority (§5.1) holds the seeds of
+    #: lower ones back only while its kind's share of the settled elements is under the
+    #: reference's, as the canopy's gate counts it (see ``_Place._prio_full``); False:
+    #: always (§5.1)
+    priority_share: bool = True
     #: torus: rounds of :meth:`_Grower.refill` after the growth stops (0: none)
     refill_rounds: int = 2
     #: fixed mode, exemplars with void kinds: after the growth, empty circles of the
