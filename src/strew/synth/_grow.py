@@ -247,6 +247,53 @@ def _ranked_fits(prep, cand: np.ndarray, fits: np.ndarray, par: np.ndarray, par_
     return ids, order[np.isfinite(costs[0, order])]
 
 
+def _drop_clipped(state: SynthState, since: int = 0) -> int:
+    """Remove the elements added since ``since`` whose shape crosses the region's edge
+    (in place); returns how many went.
+
+    Not in the paper (§5.1 grows copies whose centres fall in the domain). The output
+    (:meth:`SynthState.to_arrangement`) leaves out every element not wholly inside the
+    region; removed only there, they left gaps at the edge that :func:`fill_holes` never
+    saw (two_sizes at 50x the exemplar's area, seed 6: 193 of 8,805 elements clipped,
+    an empty circle 1.76x the exemplar's largest at the left edge). Removed before it,
+    their gaps take candidates wholly inside. Context, void and periodic states are
+    left alone (a periodic state clips by centre).
+
+    Parameters
+    ----------
+    state : SynthState
+        The output; its elements ``since`` onwards are tested.
+    since : int
+        First element that may go.
+
+    Returns
+    -------
+    int
+        The number of elements removed.
+    """
+    if state.region is None or state.tile is not None or state.n <= since:
+        return 0
+    prep = state.prep
+    idx = np.arange(since, state.n)
+    idx = idx[~prep.void[state.src[idx]] & ~state.fixed[idx]]
+    if len(idx) == 0:
+        return 0
+    pos = state.pos[idx]
+    out = ~state.region.contains(pos)
+    # centres deeper than their bounding radius are wholly inside; the rest get the exact
+    # test, with the clip's tolerance
+    elems = state.elements(idx)
+    near = np.flatnonzero(~out & (state.region.distance_to_boundary(pos) <= elems.radii))
+    if len(near):
+        tol = 1e-9 * max(1.0, *map(abs, state.region.bounds))
+        out[near[~state.region.contains_geometry(elems.select(near).geometry, tolerance=tol)]] = True
+    if not out.any():
+        return 0
+    mask = np.zeros(state.n, bool)
+    mask[idx[out]] = True
+    return state.remove(mask)
+
+
 def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element into each empty circle of the output that is wider than
     every empty circle of the exemplar (in place); returns the number added.
@@ -2817,6 +2864,7 @@ def grow(
         fill_swapped(state)
         state.unwrap()
     if state.n > start_n and FILL_HOLES:
+        _drop_clipped(state, since=start_n)
         state.wrap()  # a periodic state: the holes across the tile's edges are seen
         fill_holes(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
         state.unwrap()
