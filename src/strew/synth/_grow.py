@@ -705,6 +705,43 @@ def _room_cap(state: SynthState, k: int) -> int | None:
     return max(0, int(np.floor(dens * float(inner.area))) - have)
 
 
+def _own_area(state: SynthState, cells: int = 40000) -> float:
+    """The area of the part of the region nearer an output element than a context
+    element (``SynthState.fixed``), estimated on a grid of about ``cells`` points; the
+    region's area without context elements.
+
+    Parameters
+    ----------
+    state : SynthState
+        The output, with its context elements.
+    cells : int
+        About how many grid points cover the region's bounding box.
+
+    Returns
+    -------
+    float
+        The own part's area.
+    """
+    geom = state.region.geometry
+    area = float(geom.area)
+    fixed = state.fixed
+    if not fixed.any() or fixed.all() or area <= 0:
+        return area
+    x0, y0, x1, y1 = geom.bounds
+    step = float(np.sqrt((x1 - x0) * (y1 - y0) / cells))
+    gx = np.arange(x0 + 0.5 * step, x1, step)
+    gy = np.arange(y0 + 0.5 * step, y1, step)
+    xx, yy = np.meshgrid(gx, gy)
+    xx, yy = xx.ravel(), yy.ravel()
+    inside = shapely.contains_xy(geom, xx, yy)
+    if not inside.any():
+        return area
+    pts = np.c_[xx[inside], yy[inside]]
+    d_own = cKDTree(state.pos[~fixed]).query(pts)[0]
+    d_ctx = cKDTree(state.pos[fixed]).query(pts)[0]
+    return area * float(np.count_nonzero(d_own < d_ctx)) / len(pts)
+
+
 def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element of a kind its exemplar leaves (nearly) no room for
     (:func:`_room_rate`) into empty circles of the output where one fits, until the
@@ -811,6 +848,16 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     # each kind's budget: the output's rooms for it beyond the exemplar's rate
     s_tri = state.src[vis[tri]]
     area = float(state.region.geometry.area)
+    ctx = np.flatnonzero(state.fixed)
+    near_ctx = np.zeros(len(cen), bool)
+    if len(ctx):
+        # grown against a context (departs from §5.1, which has none; s39w): the rate
+        # counts over the output's own part of the region only, and a capped kind takes
+        # no room along the context, where the exemplar's frame margin (_room_cap) does
+        # not shrink the region
+        area = _own_area(state)
+        near_ctx = cKDTree(state.pos[ctx]).query(cen)[0] < 2.0 * float(prep.rc[state.src[ctx]].max())
+    capped = np.zeros(len(rate), bool)
     budget = np.zeros(len(rate), np.int64)
     some = np.zeros(len(cen), bool)  # circles some kind with a budget fits (a cheap pre-test)
     beside = np.zeros(len(cen), bool)  # circles beside an element of a capped kind with a budget
@@ -822,6 +869,10 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
         cap = _room_cap(state, int(k)) if budget[k] > 0 else None
         if cap is not None:
+            if near_ctx.any():
+                capped[k] = True
+                fit = fit[~near_ctx[fit]]
+                budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
             budget[k] = min(budget[k], cap)
             if budget[k] > 0:
                 beside |= (prep.skind[s_tri] == k).any(axis=1)
@@ -834,8 +885,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         # rooms do, and the exemplar's pebbles stand in groups (h12s7: grouped share 0.72;
         # largest rooms first left 0.55-0.58, the rooms between stones taken singly)
         first = np.argsort(~beside, kind="stable")
-        cen, rad, some, next_d, own_d = cen[first], rad[first], some[first], next_d[first], own_d[first]
-    cen, rad, next_d, own_d = cen[some], rad[some], next_d[some], own_d[some]
+        cen, rad, some, next_d, own_d, near_ctx = cen[first], rad[first], some[first], next_d[first], own_d[first], near_ctx[first]
+    cen, rad, next_d, own_d, near_ctx = cen[some], rad[some], next_d[some], own_d[some], near_ctx[some]
     wall = shapely.distance(boundary, shapely.points(cen)) if boundary is not None else np.full(len(cen), np.inf)
     n0 = state.n
     tree = cKDTree(state.pos)
@@ -852,6 +903,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         s_ = state.src[near]
         lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
         fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h]) & (budget[prep.skind[cand]] > 0)
+        if near_ctx[h]:
+            fits &= ~capped[prep.skind[cand]]
         if np.isfinite(bound).any():
             # within reach of each larger class and of the kind's own elements, those this pass added too
             own = np.minimum(own_d[h, prep.skind[cand]], np.where(prep.skind[s_][None, :] == prep.skind[cand][:, None], dist[None, :], np.inf).min(axis=1, initial=np.inf))
