@@ -3079,6 +3079,10 @@ def fill(state: SynthState, point: tuple[float, float] | None = None, **kwargs) 
             raise InputError(f"fill: point {p[0]:g},{p[1]:g} is outside the region")
         seed_patch(state, p)
         grow(state, **kwargs)
+        # the seed patch's elements, which grow() does not count as its own: one crossing
+        # the edge would stay in the state only to be clipped from the output, holding a
+        # place that a later fill cannot take (see _drop_clipped)
+        _drop_clipped(state, since=before)
     return state.n - before
 
 
