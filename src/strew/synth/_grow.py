@@ -294,6 +294,55 @@ def _drop_clipped(state: SynthState, since: int = 0) -> int:
     return state.remove(mask)
 
 
+EDGE_HOLES = True
+""":func:`fill_holes` also sees the gaps bounded by the region's edge
+(:func:`_edge_circles`; off: only Delaunay circumcircles, whose centres at an empty
+corner lie outside the region)."""
+
+
+def _edge_points(state: SynthState, r_min: float, limit: float) -> np.ndarray | None:
+    """(e, 2) points along the region's boundary inset by ``r_min`` (where the smallest
+    candidate of :func:`fill_holes` lies wholly inside), every ``limit / 4`` and at every
+    vertex of the inset rings (the corners); None for a periodic state, one without a
+    region, or a region the inset leaves empty."""
+    if state.region is None or state.tile is not None:
+        return None
+    inset = shapely.buffer(state.region.geometry, -(r_min * (1.0 + 1e-6) + 1e-9), join_style="mitre")
+    if inset.is_empty:
+        return None
+    ring = inset.boundary
+    verts = shapely.get_coordinates(ring)
+    pts = shapely.get_coordinates(shapely.segmentize(ring, max(limit / 4.0, 1e-9)))
+    return np.unique(np.r_[verts, pts], axis=0)
+
+
+def _edge_circles(state: SynthState, vis: np.ndarray, pts: np.ndarray, limit: float, need: np.ndarray,
+                  since: int) -> tuple[np.ndarray, np.ndarray]:
+    """The gaps at the region's edge for :func:`fill_holes`: centres (h, 2) among the
+    inset boundary points ``pts`` (:func:`_edge_points`) and radii (h,), each the
+    distance to the nearest visible output element (``vis``), kept where it exceeds
+    ``limit`` (the exemplar's largest empty circle) and that element was added since
+    ``since`` and would not keep a candidate out (``need``).
+
+    Extension of §5.1 (helper s43w, issue 13 point 2), beside :func:`fill_holes`' own:
+    a Delaunay circumcircle of the output's centres lies wholly inside the region only
+    where elements surround it, so a gap against the region's edge, an empty corner
+    above all, is centred outside the region and never seen (stones in 200 x 200 at
+    seed 2, with its edge-crossing stones dropped by :func:`_drop_clipped`: the corner
+    (200, 0) 38.7 from any stone centre against the exemplar's largest empty circle of
+    24.6). An exemplar's interior has no point further than its largest empty circle
+    from every element; a place at the output's edge where a candidate lies wholly
+    inside and is further than that from every element is such a gap.
+    """
+    if len(pts) == 0:
+        return np.zeros((0, 2)), np.zeros(0)
+    d, j = cKDTree(state.pos[vis]).query(pts)
+    nb = vis[j]
+    keep = (d > limit) & (nb >= since) & (d >= need[state.src[nb]])
+    keep[keep] = state.in_domain(pts[keep])
+    return pts[keep], d[keep]
+
+
 def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element into each empty circle of the output that is wider than
     every empty circle of the exemplar (in place); returns the number added.
@@ -339,12 +388,14 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     kids_of = kid[np.argsort(prep.parent[kid], kind="stable")]
     kid_ptr = np.zeros(len(prep.parent) + 1, np.int64)
     np.cumsum(np.bincount(prep.parent[kid], minlength=len(prep.parent)), out=kid_ptr[1:])
+    edge_pts = _edge_points(state, float(prep.r[cand].min()), limit) if EDGE_HOLES else None
     added = 0
     for npass in range(max(HOLE_PASSES, HOLE_PASSES_MAX if HOLE_SPREAD > 0 else 0)):
         vis = np.flatnonzero(~prep.void[state.src])
         new = vis[vis >= since]
         if len(new) == 0:
             break
+        all_vis = vis
         if len(new) < len(vis):
             # only the output about the new elements: a circle through one of them that
             # also holds an element further than 4 limits away is wider than 2 limits,
@@ -355,12 +406,16 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
         keep = (rad > limit) & (vis[tri] >= since).any(axis=1) & (rad >= need[state.src[vis[tri]]].max(axis=1))
         keep[keep] = state.in_domain(cen[keep])
         cen, rad = cen[keep], rad[keep]
+        at_edge = np.zeros(len(cen), bool)
+        if edge_pts is not None:
+            ec, er = _edge_circles(state, all_vis, edge_pts, limit, need, since)
+            cen, rad, at_edge = np.r_[cen, ec], np.r_[rad, er], np.r_[at_edge, np.ones(len(ec), bool)]
         if len(cen) == 0:
             break
         if npass >= HOLE_PASSES and not rad.max() > HOLE_SPREAD * limit:
             break  # only gaps between copies are left (see HOLE_SPREAD)
         order = np.argsort(-rad, kind="stable")
-        cen, rad = cen[order], rad[order]
+        cen, rad, at_edge = cen[order], rad[order], at_edge[order]
         wall = shapely.distance(boundary, shapely.points(cen)) if boundary is not None else np.full(len(cen), np.inf)
         n0 = state.n
         tree = cKDTree(state.pos)
@@ -378,7 +433,10 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h])
             ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar)
             for best in order:
-                if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
+                # an edge gap is as narrow as the exemplar's widest empty circle, not
+                # wider: its shapes are tested whatever the kinds' collision radii (grid
+                # squares at an empty corner turned across their lattice neighbours)
+                if (shape_test or at_edge[h]) and shape_clashes(state, ids[best : best + 1], c[None])[0]:
                     continue
                 # the element comes with the smaller elements that lean on it (its
                 # children, ``_prepare.parents``), at their exemplar offsets, or not at
@@ -395,7 +453,7 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
                         continue
                     if boundary is not None and np.any(shapely.distance(boundary, shapely.points(kp)) < prep.r[kids]):
                         continue
-                    if shape_test and shape_clashes(state, kids, kp).any():
+                    if (shape_test or at_edge[h]) and shape_clashes(state, kids, kp).any():
                         continue
                 state.add(ids[best : best + 1], c[None], horizon=False)
                 if len(kids):
