@@ -148,14 +148,8 @@ class _Place:
             # a middle kind only: small stones let past the large seeds where they are
             # short still lost h0s27 (nn[medium>small] at seeds 2-4 of 1-4)
             return False
-        self._settle_update()
-        x, y = self.xy[i]
-        r = math.hypot(x - self.origin[0], y - self.origin[1]) - self.canopy_settle
-        if r <= 0:
-            return False
-        n = self._settle_n
-        k = self._settle_k[:n][self._settle_r[:n] <= r]
-        m = len(k)
+        k = self._settled_behind(i)
+        m = 0 if k is None else len(k)
         if m * ref[a] < 2:
             return False
         q = float(ref[a])
@@ -403,14 +397,8 @@ class _Place:
             ref = self.canopy_few_share
         if not ref[b] > 0:
             return False
-        self._settle_update()
-        x, y = self.xy[s]
-        r = math.hypot(x - self.origin[0], y - self.origin[1]) - self.canopy_settle
-        if r <= 0:
-            return False
-        n = self._settle_n
-        k = self._settle_k[:n][self._settle_r[:n] <= r]
-        if len(k) * ref[b] < 2:
+        k = self._settled_behind(s)
+        if k is None or len(k) * ref[b] < 2:
             return False
         # the sample's own spread (binomial, ``canopy_share_z`` standard deviations) is
         # allowed: near the initial seed the first few hundred elements drew shares of
@@ -420,6 +408,17 @@ class _Place:
         q = ref[b]
         n = len(k)
         return bool(np.count_nonzero(k == b) >= n * (self.p.canopy_share * q + self.p.canopy_share_z * math.sqrt(q * (1 - q) / n)))
+
+    def _settled_behind(self, s: int) -> np.ndarray | None:
+        """Kinds of the canopy's settled sample behind seed ``s`` (nearer the initial seed
+        by :attr:`canopy_settle`), shape (m,); None where ``s`` is within that distance."""
+        self._settle_update()
+        x, y = self.xy[s]
+        r = math.hypot(x - self.origin[0], y - self.origin[1]) - self.canopy_settle
+        if r <= 0:
+            return None
+        n = self._settle_n
+        return self._settle_k[:n][self._settle_r[:n] <= r]
 
     def _settle_update(self) -> None:
         """Append the elements placed since the last call to the canopy's settled sample."""
