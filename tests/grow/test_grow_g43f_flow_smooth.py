@@ -25,13 +25,12 @@ from __future__ import annotations
 
 import numpy as np
 from scipy.spatial import Delaunay, cKDTree
+from test_grow_flow14d_stretch import hex_ref
+from test_grow_flow_gaps import SP, _holes, _quarter_circles, _shares
 
 from strew import Region
 from strew.fields import flow_field
 from strew.grow._growth import GrowParams, grow_reference
-
-from test_grow_flow14d_stretch import hex_ref  # noqa: E402, F401 (a fixture)
-from test_grow_flow_gaps import SP, _holes, _quarter_circles, _shares  # noqa: E402
 
 
 def _arc(a: float):

@@ -12,13 +12,12 @@ from __future__ import annotations
 
 import shapely
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.synth import fill, new_state
 from strew.synth._api import as_selection
 from strew.synth._prepare import _spacing, exemplar_domain, prepare
-
-from strew_testing import fidelity_suite
 
 
 def test_stripes_cover_radius_is_not_stretched_by_the_frame():

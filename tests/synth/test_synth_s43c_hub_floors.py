@@ -9,11 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 from scipy.spatial import cKDTree
+from strew_testing import fidelity_suite
 
 from strew import Region
 from strew.synth import new_state, synthesize
-
-from strew_testing import fidelity_suite
 
 suite = fidelity_suite()
 
