@@ -536,16 +536,12 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     if len(idx):
         owner = np.repeat(np.arange(len(arr)), np.diff(ptr))
         factor = float(min(1.0, 0.95 * (np.hypot(off[:, 0], off[:, 1]) / (r[owner] + r[idx])).min()))
-    min_dist, second = closest_approach(pos, skind, sources, second=True)
-    raw = min_dist.copy()
+    min_dist = closest_approach(pos, skind, sources)
     anchor = anchor_mask(skind, sources, cls, void, pos, area_radii(arr))
     if SCATTERED_FREE:
         _free_scattered(min_dist, skind, sources, cls, void, anchor)
-    # the endpoint bound only between classes of plain scatters (approach_bound)
-    plain = _plain_scatter(pos, skind, sources, cls, void, anchor, raw)
-    second = np.where((min_dist == raw) & plain[:, None] & plain[None, :], second, np.inf)
     # classes of different exemplars, or a class with one element: no constraint beyond r
-    min_dist = np.where(np.isfinite(min_dist), approach_bound(min_dist, second), 0.0)
+    min_dist = np.where(np.isfinite(min_dist), 0.95 * min_dist, 0.0)
     columns = {k_: np.asarray(v) for k_, v in arr.columns.items() if k_ not in ("radius", "neighborhood_radius", "void", "exemplar")}
     prep = Prepared(
         names=names,
@@ -781,115 +777,7 @@ def collision_radii(arr, pos: np.ndarray, r: np.ndarray, cls: np.ndarray, ptr: n
     return rc
 
 
-APPROACH_SLACK = 0.95
-"""Least share of the exemplar's closest approach of two classes that the output keeps
-(see :func:`approach_bound`)."""
-
-
-def approach_bound(first: np.ndarray, second: np.ndarray) -> np.ndarray:
-    """The least distance two classes keep in the output: ``max(APPROACH_SLACK x1,
-    2 x1 - x2)``, with ``x1``, ``x2`` the two smallest distances between distinct
-    pairs of them in the exemplar (:func:`closest_approach`; ``x2`` inf: one pair).
-
-    Extension of §4.1 / §5.1 (spacing learned from the exemplar on top of the bounding
-    discs). ``x1`` is a sample minimum: the texture's least spacing lies at or below it,
-    and the gap to the next order statistic, ``x2 - x1``, measures how far below
-    (``2 x1 - x2`` is the usual estimate of a distribution's lower endpoint from its two
-    smallest values). A fixed 0.95 of ``x1`` assumed that gap is large. In a hard-core
-    scatter near jamming (stripes: dart-thrown discs of one radius, both kinds; the
-    generator stops with 133-139 of the 220 it asks for) the two smallest distances lie
-    within a fraction of a per cent of each other, and 0.95 of ``x1`` let growth pack
-    the output beyond the exemplar's hard core: every one of 28 ``--varied`` stripes
-    rows (variant seeds 19-28, seed 1) came out denser in dots than its exemplar
-    (density ratio 1.00-1.13, mean 1.07), stripes v20 failing density[dot] at
-    seeds 1 and 2 (0.132 against 0.127). Where the two smallest distances lie further
-    apart than 5 % (few elements, soft spacing) the bound stays 0.95 of ``x1``.
-    ``prepare`` applies it only to plain scatters (:func:`_plain_scatter`).
-    """
-    first, second = np.asarray(first, float), np.asarray(second, float)
-    ok = np.isfinite(first) & np.isfinite(second)
-    end = np.full(first.shape, -np.inf)
-    end[ok] = 2.0 * first[ok] - second[ok]
-    return np.maximum(APPROACH_SLACK * first, end)
-
-
-SCATTER_THIRD = 1.085
-"""Least median ratio of the third to the first nearest-neighbour distance of a plain
-scatter's elements (see :func:`_plain_scatter`): a lattice's neighbours lie at about one
-distance (hex lattice 1.0, most bricks 1.01-1.06), a hard-core scatter's do not
-(stripes 1.19-1.27, stones 1.21-1.55, sticks 1.39-1.90 over the ``--varied`` rows at
-variant seeds 27, 28)."""
-
-
-SHARED_CORE = 1.1
-"""Largest ratio between the closest approaches of two pairs of kinds of a plain scatter
-(see :func:`_plain_scatter`)."""
-
-
-JAMMED_CORE = 1.02
-"""Largest ratio of the lowest decile of a plain scatter's nearest-neighbour distances to
-the least of them (see :func:`_plain_scatter`): a jammed hard-core scatter has a tenth of
-its elements at its hard core (stripes 1.002-1.016 on all 110 ``--varied`` rows at
-variant seeds 7-28), a saturated one of round stones mostly does not (``--harder``
-stones h3 1.018-1.115; h3s26 1.085). Of the 1,342 ``--varied`` rows at variant seeds
-7-28 the bound acts on 136 (stripes 110, scales p0 19, stones 7), against 325 without
-this gate (``benchmarks/s42k_census.py``)."""
-
-
-def _plain_scatter(pos: np.ndarray, skind: np.ndarray, source: np.ndarray, cls: np.ndarray, void: np.ndarray,
-                   anchor: np.ndarray, approach: np.ndarray) -> np.ndarray:
-    """(S,) bool per class (kind within its exemplar): its exemplar is a plain scatter,
-    so :func:`approach_bound` may tighten its spacing: one size class, no void, no
-    rare kind (:data:`ANCHOR_RATIO`: anchors and scattered kinds, :func:`anchor_mask`,
-    :func:`_free_scattered`), no lattice (:data:`SCATTER_THIRD`), and one hard core
-    shared by every pair of kinds (closest approaches ``approach`` (S, S) within
-    :data:`SHARED_CORE` of each other: stripes' dots and bars 11.70-11.82), jammed at
-    that core (:data:`JAMMED_CORE`).
-
-    Where an exemplar has larger elements or anchors, their closest approach is the
-    spacing of a structure (cluster centres, ring hubs) that growth copies around;
-    keeping 1.0 of it lost rows (clusters with 8-10 discs, empty_circle; rings' hubs at
-    50x the area: commits d6e3d56, cf08de4). In a lattice every neighbour stands at
-    about the closest approach, and jittered copies held to it leave holes: hex lattice
-    lost 6 of its 10 ``--varied`` rows at variant seeds 27, 28 (regularity,
-    empty_circle). A kind scattered among another of its size class (two sizes with
-    pebbles 0.85 of the stones, 5 among 40) sets how near the rare kind may come to the
-    common one; with the bound, nn[stone>pebble] of that row failed (0.678 against 0.531,
-    ``tests/synth/test_synth_s34p_scattered_kind.py``); where the kinds keep different
-    spacings (two sizes, pebbles near the stones' size) the bound lost two_sizes h8s28
-    (--harder, density[stone] 0.176 against 0.132). Those keep 0.95 of it.
-
-    The bound reads the gap between the two closest pairs as the distance from the
-    sample minimum to the hard core; that holds where the scatter is jammed, with many
-    pairs at the core. In a saturated scatter of round stones (``--harder`` stones h3:
-    radius 8, 300 in the frame) the two closest pairs are close (16.30, 16.60: the bound
-    0.982 of ``x1``) but the lowest decile of the nearest-neighbour distances lies 1.085
-    of ``x1`` away: few pairs touch the core, and holding the output to 0.982 of it
-    shifted its nearest distances below the exemplar's (nn[stone>stone] failed at seeds
-    1, 3, 5, 6 of h3s26, 0.0594-0.0624 against 0.0592, where 0.95 passes 6/6). So the
-    bound acts only where the lowest nn decile lies within :data:`JAMMED_CORE` of the
-    least nn distance (stripes; sticks and rows_noisy, whose bound is 0.95 anyway, and
-    saturated stones keep 0.95)."""
-    ns = int(skind.max()) + 1 if len(skind) else 0
-    out = np.zeros(ns, bool)
-    for s in np.unique(source):
-        mine = np.flatnonzero(source == s)
-        ks, cnt = np.unique(skind[mine], return_counts=True)
-        if len(mine) < 4 or len(np.unique(cls[mine])) > 1 or void[mine].any() or anchor[mine].any() or cnt.min() * ANCHOR_RATIO <= cnt.max():
-            continue
-        ca = approach[np.ix_(ks, ks)]
-        ca = ca[np.isfinite(ca)]
-        if len(ca) and ca.max() > SHARED_CORE * ca.min():  # no one hard core shared by every kind
-            continue
-        d = cKDTree(pos[mine]).query(pos[mine], k=4)[0]
-        if np.quantile(d[:, 1], 0.1) > JAMMED_CORE * d[:, 1].min():  # not jammed at its core
-            continue
-        if np.median(d[:, 3]) >= SCATTER_THIRD * np.median(d[:, 1]):
-            out[np.unique(skind[mine])] = True
-    return out
-
-
-def closest_approach(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, *, second: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
+def closest_approach(pos: np.ndarray, cls: np.ndarray, source: np.ndarray) -> np.ndarray:
     """Closest approach of every two classes within one exemplar (k-d trees).
 
     Measured over the whole exemplar, not only within neighbourhoods: two classes that
@@ -904,21 +792,14 @@ def closest_approach(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, *, se
         Class of each element (its kind within its exemplar), 0 .. S-1.
     source : (n,) int
 
-    second : bool
-        Also return the second smallest distance between distinct pairs of the two
-        classes (see :func:`approach_bound`).
-
     Returns
     -------
     (S, S) float
         inf for classes of different exemplars and for a class with one element paired
         with itself.
-    (S, S) float, only with ``second``
-        inf where there is no second pair.
     """
     ns = int(cls.max()) + 1 if len(cls) else 0
     out = np.full((ns, ns), np.inf)
-    nxt = np.full((ns, ns), np.inf)
     members = [np.flatnonzero(cls == a) for a in range(ns)]
     trees = [cKDTree(pos[m]) if len(m) else None for m in members]
     for a in range(ns):
@@ -931,27 +812,10 @@ def closest_approach(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, *, se
                     continue
                 d, _ = trees[a].query(pos[ma], k=2)
                 out[a, a] = float(d[:, 1].min())
-                if second and len(ma) > 2:
-                    # the two closest pairs: each pair's far member is among its near
-                    # member's two nearest others
-                    d, j = trees[a].query(pos[ma], k=3)
-                    i, jj = np.repeat(np.arange(len(ma)), 2), j[:, 1:].ravel()
-                    pair = np.minimum(i, jj) * len(ma) + np.maximum(i, jj)
-                    _, first = np.unique(pair, return_index=True)  # each pair once
-                    nxt[a, a] = _second_smallest(d[:, 1:].ravel()[first])
             else:
-                d, _ = trees[b].query(pos[ma], k=min(2, len(mb)))
-                d = d.reshape(len(ma), -1)
-                out[a, b] = out[b, a] = float(d[:, 0].min())
-                if second:
-                    nxt[a, b] = nxt[b, a] = _second_smallest(d.ravel())
-    return (out, nxt) if second else out
-
-
-def _second_smallest(d: np.ndarray) -> float:
-    """The second smallest of ``d`` (inf for fewer than two finite values)."""
-    d = d[np.isfinite(d)]
-    return float(np.partition(d, 1)[1]) if len(d) > 1 else float("inf")
+                d, _ = trees[b].query(pos[ma], k=1)
+                out[a, b] = out[b, a] = float(d.min())
+    return out
 
 
 SIZE_STEP = K.SIZE_STEP  # bounding radii this many times apart are of different sizes
