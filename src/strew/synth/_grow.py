@@ -247,102 +247,6 @@ def _ranked_fits(prep, cand: np.ndarray, fits: np.ndarray, par: np.ndarray, par_
     return ids, order[np.isfinite(costs[0, order])]
 
 
-def _drop_clipped(state: SynthState, since: int = 0) -> int:
-    """Remove the elements added since ``since`` whose shape crosses the region's edge
-    (in place); returns how many went.
-
-    Not in the paper (§5.1 grows copies whose centres fall in the domain). The output
-    (:meth:`SynthState.to_arrangement`) leaves out every element not wholly inside the
-    region; removed only there, they left gaps at the edge that :func:`fill_holes` never
-    saw (two_sizes at 50x the exemplar's area, seed 6: 193 of 8,805 elements clipped,
-    an empty circle 1.76x the exemplar's largest at the left edge). Removed before it,
-    their gaps take candidates wholly inside. Context, void and periodic states are
-    left alone (a periodic state clips by centre).
-
-    Parameters
-    ----------
-    state : SynthState
-        The output; its elements ``since`` onwards are tested.
-    since : int
-        First element that may go.
-
-    Returns
-    -------
-    int
-        The number of elements removed.
-    """
-    if state.region is None or state.tile is not None or state.n <= since:
-        return 0
-    prep = state.prep
-    idx = np.arange(since, state.n)
-    idx = idx[~prep.void[state.src[idx]] & ~state.fixed[idx]]
-    if len(idx) == 0:
-        return 0
-    pos = state.pos[idx]
-    out = ~state.region.contains(pos)
-    # centres deeper than their bounding radius are wholly inside; the rest get the exact
-    # test, with the clip's tolerance
-    elems = state.elements(idx)
-    near = np.flatnonzero(~out & (state.region.distance_to_boundary(pos) <= elems.radii))
-    if len(near):
-        tol = 1e-9 * max(1.0, *map(abs, state.region.bounds))
-        out[near[~state.region.contains_geometry(elems.select(near).geometry, tolerance=tol)]] = True
-    if not out.any():
-        return 0
-    mask = np.zeros(state.n, bool)
-    mask[idx[out]] = True
-    return state.remove(mask)
-
-
-EDGE_HOLES = True
-""":func:`fill_holes` also sees the gaps bounded by the region's edge
-(:func:`_edge_circles`; off: only Delaunay circumcircles, whose centres at an empty
-corner lie outside the region)."""
-
-
-def _edge_points(state: SynthState, r_min: float, limit: float) -> np.ndarray | None:
-    """(e, 2) points along the region's boundary inset by ``r_min`` (where the smallest
-    candidate of :func:`fill_holes` lies wholly inside), every ``limit / 4`` and at every
-    vertex of the inset rings (the corners); None for a periodic state, one without a
-    region, or a region the inset leaves empty."""
-    if state.region is None or state.tile is not None:
-        return None
-    inset = shapely.buffer(state.region.geometry, -(r_min * (1.0 + 1e-6) + 1e-9), join_style="mitre")
-    if inset.is_empty:
-        return None
-    ring = inset.boundary
-    verts = shapely.get_coordinates(ring)
-    pts = shapely.get_coordinates(shapely.segmentize(ring, max(limit / 4.0, 1e-9)))
-    return np.unique(np.r_[verts, pts], axis=0)
-
-
-def _edge_circles(state: SynthState, vis: np.ndarray, pts: np.ndarray, limit: float, need: np.ndarray,
-                  since: int) -> tuple[np.ndarray, np.ndarray]:
-    """The gaps at the region's edge for :func:`fill_holes`: centres (h, 2) among the
-    inset boundary points ``pts`` (:func:`_edge_points`) and radii (h,), each the
-    distance to the nearest visible output element (``vis``), kept where it exceeds
-    ``limit`` (the exemplar's largest empty circle) and that element was added since
-    ``since`` and would not keep a candidate out (``need``).
-
-    Extension of §5.1 (helper s43w, issue 13 point 2), beside :func:`fill_holes`' own:
-    a Delaunay circumcircle of the output's centres lies wholly inside the region only
-    where elements surround it, so a gap against the region's edge, an empty corner
-    above all, is centred outside the region and never seen (stones in 200 x 200 at
-    seed 2, with its edge-crossing stones dropped by :func:`_drop_clipped`: the corner
-    (200, 0) 38.7 from any stone centre against the exemplar's largest empty circle of
-    24.6). An exemplar's interior has no point further than its largest empty circle
-    from every element; a place at the output's edge where a candidate lies wholly
-    inside and is further than that from every element is such a gap.
-    """
-    if len(pts) == 0:
-        return np.zeros((0, 2)), np.zeros(0)
-    d, j = cKDTree(state.pos[vis]).query(pts)
-    nb = vis[j]
-    keep = (d > limit) & (nb >= since) & (d >= need[state.src[nb]])
-    keep[keep] = state.in_domain(pts[keep])
-    return pts[keep], d[keep]
-
-
 def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element into each empty circle of the output that is wider than
     every empty circle of the exemplar (in place); returns the number added.
@@ -388,14 +292,12 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     kids_of = kid[np.argsort(prep.parent[kid], kind="stable")]
     kid_ptr = np.zeros(len(prep.parent) + 1, np.int64)
     np.cumsum(np.bincount(prep.parent[kid], minlength=len(prep.parent)), out=kid_ptr[1:])
-    edge_pts = _edge_points(state, float(prep.r[cand].min()), limit) if EDGE_HOLES else None
     added = 0
     for npass in range(max(HOLE_PASSES, HOLE_PASSES_MAX if HOLE_SPREAD > 0 else 0)):
         vis = np.flatnonzero(~prep.void[state.src])
         new = vis[vis >= since]
         if len(new) == 0:
             break
-        all_vis = vis
         if len(new) < len(vis):
             # only the output about the new elements: a circle through one of them that
             # also holds an element further than 4 limits away is wider than 2 limits,
@@ -406,16 +308,12 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
         keep = (rad > limit) & (vis[tri] >= since).any(axis=1) & (rad >= need[state.src[vis[tri]]].max(axis=1))
         keep[keep] = state.in_domain(cen[keep])
         cen, rad = cen[keep], rad[keep]
-        at_edge = np.zeros(len(cen), bool)
-        if edge_pts is not None:
-            ec, er = _edge_circles(state, all_vis, edge_pts, limit, need, since)
-            cen, rad, at_edge = np.r_[cen, ec], np.r_[rad, er], np.r_[at_edge, np.ones(len(ec), bool)]
         if len(cen) == 0:
             break
         if npass >= HOLE_PASSES and not rad.max() > HOLE_SPREAD * limit:
             break  # only gaps between copies are left (see HOLE_SPREAD)
         order = np.argsort(-rad, kind="stable")
-        cen, rad, at_edge = cen[order], rad[order], at_edge[order]
+        cen, rad = cen[order], rad[order]
         wall = shapely.distance(boundary, shapely.points(cen)) if boundary is not None else np.full(len(cen), np.inf)
         n0 = state.n
         tree = cKDTree(state.pos)
@@ -433,10 +331,7 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h])
             ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar)
             for best in order:
-                # an edge gap is as narrow as the exemplar's widest empty circle, not
-                # wider: its shapes are tested whatever the kinds' collision radii (grid
-                # squares at an empty corner turned across their lattice neighbours)
-                if (shape_test or at_edge[h]) and shape_clashes(state, ids[best : best + 1], c[None])[0]:
+                if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
                     continue
                 # the element comes with the smaller elements that lean on it (its
                 # children, ``_prepare.parents``), at their exemplar offsets, or not at
@@ -453,7 +348,7 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
                         continue
                     if boundary is not None and np.any(shapely.distance(boundary, shapely.points(kp)) < prep.r[kids]):
                         continue
-                    if (shape_test or at_edge[h]) and shape_clashes(state, kids, kp).any():
+                    if shape_test and shape_clashes(state, kids, kp).any():
                         continue
                 state.add(ids[best : best + 1], c[None], horizon=False)
                 if len(kids):
@@ -781,43 +676,6 @@ def _room_cap(state: SynthState, k: int, any_class: bool = False) -> int | None:
     return max(0, int(np.floor(dens * float(inner.area))) - have)
 
 
-def _own_area(state: SynthState, cells: int = 40000) -> float:
-    """The area of the part of the region nearer an output element than a context
-    element (``SynthState.fixed``), estimated on a grid of about ``cells`` points; the
-    region's area without context elements.
-
-    Parameters
-    ----------
-    state : SynthState
-        The output, with its context elements.
-    cells : int
-        About how many grid points cover the region's bounding box.
-
-    Returns
-    -------
-    float
-        The own part's area.
-    """
-    geom = state.region.geometry
-    area = float(geom.area)
-    fixed = state.fixed
-    if not fixed.any() or fixed.all() or area <= 0:
-        return area
-    x0, y0, x1, y1 = geom.bounds
-    step = float(np.sqrt((x1 - x0) * (y1 - y0) / cells))
-    gx = np.arange(x0 + 0.5 * step, x1, step)
-    gy = np.arange(y0 + 0.5 * step, y1, step)
-    xx, yy = np.meshgrid(gx, gy)
-    xx, yy = xx.ravel(), yy.ravel()
-    inside = shapely.contains_xy(geom, xx, yy)
-    if not inside.any():
-        return area
-    pts = np.c_[xx[inside], yy[inside]]
-    d_own = cKDTree(state.pos[~fixed]).query(pts)[0]
-    d_ctx = cKDTree(state.pos[fixed]).query(pts)[0]
-    return area * float(np.count_nonzero(d_own < d_ctx)) / len(pts)
-
-
 def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int:
     """Put an exemplar element of a kind its exemplar leaves (nearly) no room for
     (:func:`_room_rate`) into empty circles of the output where one fits, until the
@@ -924,16 +782,6 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     # each kind's budget: the output's rooms for it beyond the exemplar's rate
     s_tri = state.src[vis[tri]]
     area = float(state.region.geometry.area)
-    ctx = np.flatnonzero(state.fixed)
-    near_ctx = np.zeros(len(cen), bool)
-    if len(ctx):
-        # grown against a context (departs from §5.1, which has none; s39w): the rate
-        # counts over the output's own part of the region only, and a capped kind takes
-        # no room along the context, where the exemplar's frame margin (_room_cap) does
-        # not shrink the region
-        area = _own_area(state)
-        near_ctx = cKDTree(state.pos[ctx]).query(cen)[0] < 2.0 * float(prep.rc[state.src[ctx]].max())
-    capped = np.zeros(len(rate), bool)
     budget = np.zeros(len(rate), np.int64)
     some = np.zeros(len(cen), bool)  # circles some kind with a budget fits (a cheap pre-test)
     beside = np.zeros(len(cen), bool)  # circles beside an element of a capped kind with a budget
@@ -945,10 +793,6 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
         cap = _room_cap(state, int(k)) if budget[k] > 0 else None
         if cap is not None:
-            if near_ctx.any():
-                capped[k] = True
-                fit = fit[~near_ctx[fit]]
-                budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
             budget[k] = min(budget[k], cap)
             if budget[k] > 0:
                 beside |= (prep.skind[s_tri] == k).any(axis=1)
@@ -965,8 +809,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         # rooms do, and the exemplar's pebbles stand in groups (h12s7: grouped share 0.72;
         # largest rooms first left 0.55-0.58, the rooms between stones taken singly)
         first = np.argsort(~beside, kind="stable")
-        cen, rad, some, next_d, own_d, near_ctx = cen[first], rad[first], some[first], next_d[first], own_d[first], near_ctx[first]
-    cen, rad, next_d, own_d, near_ctx = cen[some], rad[some], next_d[some], own_d[some], near_ctx[some]
+        cen, rad, some, next_d, own_d = cen[first], rad[first], some[first], next_d[first], own_d[first]
+    cen, rad, next_d, own_d = cen[some], rad[some], next_d[some], own_d[some]
     wall = shapely.distance(boundary, shapely.points(cen)) if boundary is not None else np.full(len(cen), np.inf)
     n0 = state.n
     tree = cKDTree(state.pos)
@@ -983,8 +827,6 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         s_ = state.src[near]
         lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
         fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h]) & (budget[prep.skind[cand]] > 0)
-        if near_ctx[h]:
-            fits &= ~capped[prep.skind[cand]]
         if np.isfinite(bound).any():
             # within reach of each larger class and of the kind's own elements, those this pass added too
             own = np.minimum(own_d[h, prep.skind[cand]], np.where(prep.skind[s_][None, :] == prep.skind[cand][:, None], dist[None, :], np.inf).min(axis=1, initial=np.inf))
@@ -3188,7 +3030,6 @@ def grow(
         fill_swapped(state)
         state.unwrap()
     if state.n > start_n and FILL_HOLES:
-        _drop_clipped(state, since=start_n)
         state.wrap()  # a periodic state: the holes across the tile's edges are seen
         fill_holes(state, None if max_elements is None else max(0, max_elements - state.n), since=start_n)
         state.unwrap()
@@ -3350,10 +3191,6 @@ def fill(state: SynthState, point: tuple[float, float] | None = None, **kwargs) 
             raise InputError(f"fill: point {p[0]:g},{p[1]:g} is outside the region")
         seed_patch(state, p)
         grow(state, **kwargs)
-        # the seed patch's elements, which grow() does not count as its own: one crossing
-        # the edge would stay in the state only to be clipped from the output, holding a
-        # place that a later fill cannot take (see _drop_clipped)
-        _drop_clipped(state, since=before)
     return state.n - before
 
 
