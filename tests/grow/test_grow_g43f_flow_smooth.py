@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 from scipy.spatial import Delaunay, cKDTree
-from test_grow_flow14d_stretch import hex_ref
+from test_grow_flow14d_stretch import hex_ref  # noqa: F401 (a fixture)
 from test_grow_flow_gaps import SP, _holes, _quarter_circles, _shares
 
 from strew import Region

@@ -17,7 +17,7 @@ from strew.synth import new_state, synthesize
 suite = fidelity_suite()
 
 # benchmarks/_variants.py EDGE["clusters"][0] (far apart, full rings)
-FAR = dict(cluster_spacing=90.0, ring_gap=3.0, ring_min=6, ring_max=7)
+FAR = {"cluster_spacing": 90.0, "ring_gap": 3.0, "ring_min": 6, "ring_max": 7}
 
 
 def _discs(arr):

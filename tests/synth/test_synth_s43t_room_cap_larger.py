@@ -18,7 +18,7 @@ from strew.metrics import overlaps
 from strew.synth import synthesize
 from strew.synth._displace import _inner_density
 
-H13 = dict(counts=(200, 60, 5))
+H13 = {"counts": (200, 60, 5)}
 
 
 def test_fill_room_gives_a_middle_class_at_its_density_no_rooms(monkeypatch):

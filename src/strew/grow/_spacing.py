@@ -198,7 +198,7 @@ def thin_to_holes(g, tries: int = 32) -> int:
     taken = 0
     while True:
         _, rr = _circles(pts[alive], g.region)
-        missing = int(math.ceil(share * len(rr))) - int(np.count_nonzero(rr > lo))
+        missing = math.ceil(share * len(rr)) - int(np.count_nonzero(rr > lo))
         if not len(rr) or missing <= 0:
             break
         batch, made, refused = max(1, missing // 4), 0, 0
