@@ -214,19 +214,181 @@ HOLE_PASSES_MAX = 200
 FILL_HOLES = True
 """:func:`grow` ends with :func:`fill_holes` (off: the paper's growth alone)."""
 
+HOLE_RING_REBATE = True
+""":func:`fill_holes` does not charge a candidate for its own ring children, which it
+places with it (:func:`_own_ring_rebate`); False: Eq. 1 as the paper has it."""
+
+
+def _own_ring_rebate(prep, cand: np.ndarray, kids_of: np.ndarray, kid_ptr: np.ndarray, rbar: float) -> np.ndarray:
+    """(m,) float: for each :func:`fill_holes` candidate ``cand`` (m,), the Eq. 1 cost of
+    its own ring children (:func:`_ring_kind_children`) within its neighbourhood radius
+    ``rbar``, the right-partial pairs ``(0, e')`` at ``d_e'^2`` each (§4).
+
+    Departure from §5.1 (Eq. 1), as :func:`_free_children_discount` in growth (helper
+    s42c): a hole is empty wider than any empty circle of the exemplar, and a candidate
+    comes into it with all its children, clear of every output element, or not at all,
+    so its ring is what the copy generates, not a difference between neighbourhoods.
+    Charged, it made the candidate with the fewest ring children win every hole: clusters
+    ``--varied`` p2s27 (rings of 6 and 7, four each; interior discs of 7 and 6) put 37
+    discs into holes at seed 1, all copies of the 6-ring disc, and p2s29's rings drifted
+    back to 6 (``python benchmarks/s43c_fill_holes_discs.py p2s27 1``). Zero for
+    candidates without ring children (two and three sizes' pebbles beside a stone do not
+    follow their parent as a rule; rings' hubs are anchors, never candidates here).
+
+    Parameters
+    ----------
+    prep : Prepared
+    cand : (m,) int
+    kids_of, kid_ptr : each exemplar element's children, as CSR
+    rbar : float
+        The neighbourhood radius :func:`_ranked_fits` compares within.
+    """
+    ring = _ring_kind_children(prep)
+    out = np.zeros(len(cand))
+    for j, c in enumerate(cand):
+        kids = kids_of[kid_ptr[c] : kid_ptr[c + 1]]
+        kids = kids[ring[kids]]
+        if len(kids):
+            de = 2.0 * prep.r[kids]
+            inside = np.hypot(*(prep.pos[kids] - prep.pos[c]).T) <= rbar - 0.5 * de
+            out[j] = float(np.sum(de[inside] ** 2))
+    return out
+
+
+HOLE_HUB_CAP = True
+""":func:`fill_holes` puts far hubs into holes only up to their exemplar's density
+(:func:`_far_hub_room`); False: into every hole that takes one."""
+
+
+def _far_hub_room(state: SynthState) -> np.ndarray | None:
+    """(S,) int per kind-in-exemplar (``Prepared.skind``): how many more far hubs of the
+    kind (``_prepare._far_hubs``, the discs of far-apart clusters, where
+    :func:`hub_floors` holds growth back) the output takes before it holds the kind's
+    count per area of its exemplar's whole frame over the region's area; a large
+    number for other kinds. None where there are no far hubs, no region or several
+    exemplars.
+
+    Extension of §5.1, with :func:`hub_floors`: the floors stop growth early and
+    :func:`fill_holes` places a third to a half of the discs, into every hole wider
+    than the exemplar's largest empty circle. With eight discs in the frame that
+    largest circle is a small sample, and the holes took discs past the exemplar's
+    density: clusters ``--varied`` p2s27 (11,250 per disc in the exemplar) held
+    10,200-10,800 per disc at seeds 1-4, and g[disc,dot], whose ring peak scales with
+    the area per disc, failed at 3 of 6 seeds (0.92-1.37 / 0.842; ``python
+    benchmarks/s44c_gdd.py p2s27 1,4``). Kept at the floors in the holes too, the
+    output was too sparse (12,800-14,300, helper s43c). Counted over the whole frame,
+    as the fidelity metric counts density (the inner frame of a far-clusters exemplar
+    holds two or three of its eight discs)."""
+    prep = state.prep
+    far = getattr(prep, "_far_hubs", None)
+    if far is None or state.region is None or np.count_nonzero(prep.selected) != 1:
+        return None
+    far = far & prep.selected_elements & ~prep.void
+    if not far.any():
+        return None
+    S = int(prep.skind.max()) + 1
+    left = np.full(S, np.iinfo(np.int64).max // 4, np.int64)
+    s = int(np.flatnonzero(prep.selected)[0])
+    frame = prep.palette[prep.names[s]].region
+    area = float(state.region.geometry.area) / float(frame.geometry.area if frame is not None else prep.domains[s].area)
+    v = np.flatnonzero(~prep.void[state.src])
+    have = np.bincount(prep.skind[state.src[v]], minlength=S)[:S]
+    for k in np.unique(prep.skind[far]):
+        left[k] = max(0, int(np.round(np.count_nonzero(far & (prep.skind == k)) * area)) - int(have[k]))
+    return left
+
+
+HOLE_RING_SIZES = True
+""":func:`fill_holes` draws the ring size of each hub it puts into a hole from its
+exemplar's whole rings (:func:`_ring_size_first`); False: the best Eq. 1 match's."""
+
+
+def _ring_size_shares(prep) -> tuple[np.ndarray, np.ndarray | None]:
+    """Ring sizes of an exemplar's hubs: ``(ring_n, share)``, ``ring_n`` (n,) int the
+    number of ring children (:func:`_ring_kind_children`) of each exemplar element, and
+    ``share`` (n, m) float, for each hub, the share of each ring size 0..m-1 among the
+    whole rings of its kind in its exemplar (None where no kind has two ring sizes).
+    A ring is whole where its hub lies deeper in its exemplar's domain than the widest
+    ring of its kind reaches (the centre of its farthest child), so that the frame cut
+    none of its children. Cached on ``prep``."""
+    got = getattr(prep, "_ring_size_shares", None)
+    if got is not None and len(got[0]) == len(prep.kind):
+        return got
+    ring = _ring_kind_children(prep)
+    kid = np.flatnonzero(ring & (prep.parent >= 0) & ~prep.void)
+    n = len(prep.kind)
+    ring_n = np.bincount(prep.parent[kid], minlength=n)[:n]
+    hubs = np.flatnonzero(ring_n > 0)
+    share = None
+    if len(hubs):
+        far = np.zeros(n)
+        np.maximum.at(far, prep.parent[kid], np.hypot(*(prep.pos[kid] - prep.pos[prep.parent[kid]]).T))
+        depth = np.array([shapely.distance(prep.domains[prep.source[h]].exterior, shapely.Point(prep.pos[h])) for h in hubs])
+        m = int(ring_n.max()) + 1
+        share = np.zeros((n, m))
+        two = False
+        for s, k in {(int(prep.source[h]), int(prep.skind[h])) for h in hubs}:
+            mine = hubs[(prep.source[hubs] == s) & (prep.skind[hubs] == k)]
+            whole = mine[depth[np.searchsorted(hubs, mine)] >= far[mine].max()]
+            if len(whole) == 0:
+                continue
+            cnt = np.bincount(ring_n[whole], minlength=m).astype(float)
+            share[mine] = cnt / cnt.sum()
+            two |= np.count_nonzero(cnt) > 1
+        if not two:
+            share = None
+    prep._ring_size_shares = (ring_n, share)
+    return prep._ring_size_shares
+
+
+def _ring_size_first(rng: np.random.Generator, ring_n: np.ndarray, share: np.ndarray, ids: np.ndarray, order: np.ndarray) -> np.ndarray:
+    """``order`` (indices into ``ids``, best Eq. 1 match first) with the hubs of one ring
+    size first: the size drawn from the shares of the best hub's kind among its
+    exemplar's whole rings (:func:`_ring_size_shares`), over the sizes the ranked hubs of
+    that kind offer; each group keeps its Eq. 1 order. Unchanged where the best
+    candidate is no hub or its kind's hubs here offer one ring size only.
+
+    Departure from §5.1 (Algorithm 1 copies the best match): a hole of
+    :func:`fill_holes` is wider than every empty circle of the exemplar, so its
+    surroundings lie beyond the hub's ring and Eq. 1 ranks the candidates by their
+    neighbour hubs, the same one for every hole; copied each time, it gave every hub
+    filled into a hole its ring size (clusters ``--varied`` p2s28, rings of 6 and 7,
+    four each: 39 of 39 rings of 6 at seed 1; p2s29 46 of 46). A copy brings its
+    exemplar neighbourhood (§5.1); here the ring a hub brings is drawn as the exemplar's
+    whole rings have their sizes.
+    """
+    if len(order) < 2:
+        return order
+    best = ids[order[0]]
+    if ring_n[best] == 0:
+        return order
+    p = share[best]
+    sizes = ring_n[ids[order]]
+    same = np.flatnonzero(sizes > 0)
+    offered = np.unique(sizes[same])
+    offered = offered[(offered < len(p)) & (p[np.minimum(offered, len(p) - 1)] > 0)]
+    if len(offered) < 2:
+        return order
+    w = p[offered]
+    m = int(offered[rng.choice(len(offered), p=w / w.sum())])
+    first = sizes == m
+    return np.r_[order[first], order[~first]]
+
 
 def _ranked_fits(prep, cand: np.ndarray, fits: np.ndarray, par: np.ndarray, par_d: np.ndarray, near: np.ndarray, off: np.ndarray,
-                 dist: np.ndarray, s_: np.ndarray, rbar: float) -> tuple[np.ndarray, np.ndarray]:
+                 dist: np.ndarray, s_: np.ndarray, rbar: float, rebate: np.ndarray | None = None,
+                 top: int = 5) -> tuple[np.ndarray, np.ndarray]:
     """The candidates ``cand`` (m,) that fit a hole (``fits``, (m,) bool) and their order,
     best Eq. 1 match to the output around the hole's centre first: ``(ids, order)``,
-    ``ids[order]`` at most five with a finite cost (:func:`fill_holes`, :func:`fill_room`).
+    ``ids[order]`` at most ``top`` with a finite cost (:func:`fill_holes`, :func:`fill_room`).
 
     ``near`` (k,) the output elements around the centre, ``off`` (k, 2) their offsets from
     it, ``dist`` (k,) their distances, ``s_`` (k,) their exemplar elements; ``par``/``par_d``
     (m,) each candidate's parent (-1: none) and its reach. An element that leans on a
     larger one (or on an anchor) comes only beside an output element of its parent's
     kind, within its exemplar distance to the parent plus its radius (no stray tiles
-    between rings).
+    between rings). ``rebate`` (m,), optional: cost taken off each candidate's (see
+    :func:`_own_ring_rebate`).
     """
     fits = fits.copy()
     lean = fits & (par >= 0)
@@ -242,7 +404,9 @@ def _ranked_fits(prep, cand: np.ndarray, fits: np.ndarray, par: np.ndarray, par_
     costs = K.candidate_costs(q_ptr, np.ascontiguousarray(off[nb]), prep.kind[s_[nb]], 2.0 * prep.r[s_[nb]], np.array([rbar]),
                               np.array([-1]), np.array([0.0]), ids[None, :], prep.nb_ptr, prep.nb_off, prep.nb_kind,
                               prep.nb_d, prep.kind, prep.kind_cost)
-    order = np.argsort(costs[0], kind="stable")[:5]
+    if rebate is not None:
+        costs[0] = np.where(np.isfinite(costs[0]), np.maximum(costs[0] - rebate[fits], 0.0), costs[0])
+    order = np.argsort(costs[0], kind="stable")[:top]
     # (ascending: the first infinite cost ends the finite ones)
     return ids, order[np.isfinite(costs[0, order])]
 
@@ -292,6 +456,11 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     kids_of = kid[np.argsort(prep.parent[kid], kind="stable")]
     kid_ptr = np.zeros(len(prep.parent) + 1, np.int64)
     np.cumsum(np.bincount(prep.parent[kid], minlength=len(prep.parent)), out=kid_ptr[1:])
+    rebate = _own_ring_rebate(prep, cand, kids_of, kid_ptr, rbar) if HOLE_RING_REBATE else None
+    ring_n, ring_p = _ring_size_shares(prep) if HOLE_RING_SIZES else (None, None)
+    if ring_p is not None and not (ring_n[cand] > 0).any():
+        ring_p = None
+    hub_left = _far_hub_room(state) if HOLE_HUB_CAP else None
     added = 0
     for npass in range(max(HOLE_PASSES, HOLE_PASSES_MAX if HOLE_SPREAD > 0 else 0)):
         vis = np.flatnonzero(~prep.void[state.src])
@@ -329,7 +498,11 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             s_ = state.src[near]
             lim = np.maximum(prep.rc[cand][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[cand][:, None], prep.skind[s_][None, :]])
             fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h])
-            ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar)
+            if hub_left is not None:
+                fits &= hub_left[prep.skind[cand]] > 0
+            ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar, rebate, top=len(cand) if ring_p is not None else 5)
+            if ring_p is not None:
+                order = _ring_size_first(state.rng, ring_n, ring_p, ids, order)
             for best in order:
                 if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
                     continue
@@ -353,6 +526,8 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
                 state.add(ids[best : best + 1], c[None], horizon=False)
                 if len(kids):
                     state.add(kids, kp, horizon=False)
+                if hub_left is not None:
+                    hub_left[prep.skind[ids[best]]] -= 1
                 added += 1 + len(kids)
                 got += 1
                 break
