@@ -18,7 +18,7 @@ from strew.metrics import fidelity
 
 ex = exemplar(fidelity_suite(), "clusters", sys.argv[1])
 s = _median_nn(ex.xy)
-nb = int(round(R_MAX / BIN))
+nb = round(R_MAX / BIN)
 
 
 def desc(a):

@@ -341,7 +341,8 @@ def _ring_size_shares(prep) -> tuple[np.ndarray, np.ndarray | None]:
     return prep._ring_size_shares
 
 
-def _ring_size_first(rng: np.random.Generator, ring_n: np.ndarray, share: np.ndarray, ids: np.ndarray, order: np.ndarray) -> np.ndarray:
+def _ring_size_first(rng: np.random.Generator, ring_n: np.ndarray, share: np.ndarray, prep_skind: np.ndarray, ids: np.ndarray,
+                     order: np.ndarray) -> np.ndarray:
     """``order`` (indices into ``ids``, best Eq. 1 match first) with the hubs of one ring
     size first: the size drawn from the shares of the best hub's kind among its
     exemplar's whole rings (:func:`_ring_size_shares`), over the sizes the ranked hubs of
@@ -355,7 +356,8 @@ def _ring_size_first(rng: np.random.Generator, ring_n: np.ndarray, share: np.nda
     filled into a hole its ring size (clusters ``--varied`` p2s28, rings of 6 and 7,
     four each: 39 of 39 rings of 6 at seed 1; p2s29 46 of 46). A copy brings its
     exemplar neighbourhood (§5.1); here the ring a hub brings is drawn as the exemplar's
-    whole rings have their sizes.
+    whole rings have their sizes. ``prep_skind`` (n,): ``Prepared.skind``. One draw from
+    ``rng`` where two sizes or more are offered, none otherwise.
     """
     if len(order) < 2:
         return order
@@ -363,9 +365,8 @@ def _ring_size_first(rng: np.random.Generator, ring_n: np.ndarray, share: np.nda
     if ring_n[best] == 0:
         return order
     p = share[best]
-    sizes = ring_n[ids[order]]
-    same = np.flatnonzero(sizes > 0)
-    offered = np.unique(sizes[same])
+    sizes = np.where(prep_skind[ids[order]] == prep_skind[best], ring_n[ids[order]], 0)
+    offered = np.unique(sizes[sizes > 0])
     offered = offered[(offered < len(p)) & (p[np.minimum(offered, len(p) - 1)] > 0)]
     if len(offered) < 2:
         return order
@@ -428,6 +429,11 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
     the centre (clear of every element by ``max(rc_p + rc_q, min_dist)``, and wholly
     in the region). Only circles touching an element added since ``since`` count, so
     what earlier tools made is left alone. At most ``room`` elements are added.
+
+    Hubs with rings (clusters' discs) depart from Eq. 1's best match (helper s44c): a
+    candidate is not charged for its own ring (:func:`_own_ring_rebate`), the ring size
+    is drawn from the exemplar's whole rings (:func:`_ring_size_first`), and far hubs
+    stop at their exemplar's density (:func:`_far_hub_room`).
     """
     prep = state.prep
     sel = prep.selected_elements & ~prep.void
@@ -500,9 +506,11 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[cand] <= wall[h])
             if hub_left is not None:
                 fits &= hub_left[prep.skind[cand]] > 0
+            # every fitting candidate ranked where hubs' ring sizes are drawn, so that each
+            # size the exemplar has is offered (not the best five only)
             ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar, rebate, top=len(cand) if ring_p is not None else 5)
             if ring_p is not None:
-                order = _ring_size_first(state.rng, ring_n, ring_p, ids, order)
+                order = _ring_size_first(state.rng, ring_n, ring_p, prep.skind, ids, order)
             for best in order:
                 if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
                     continue
@@ -1720,7 +1728,8 @@ def hub_floors(prep) -> np.ndarray:
     3rd nearest at 92.9 and 104.4; seeds 1-6 0/6 -> 3/6 faithful, p2s28 3/6 -> 6/6.
 
     Growth only: :func:`fill_holes` then puts discs into the holes wider than the
-    exemplar's largest empty circle as before (on p2s27 seed 1, 37 of the 100). Kept
+    exemplar's largest empty circle as before (on p2s27 seed 1, 37 of the 100), up to
+    the exemplar's density (:func:`_far_hub_room`, helper s44c). Kept
     there too, the minima of eight hubs were too strict for the generator's spacing:
     12,800-14,300 per disc, g[disc,dot] and empty_circle failing (p2s27 and p2s28
     seeds 1-2, benchmarks/results/s43c_holes_rejected.txt). Copies placed in the same
