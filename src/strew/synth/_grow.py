@@ -245,6 +245,8 @@ def _own_ring_rebate(prep, cand: np.ndarray, kids_of: np.ndarray, kid_ptr: np.nd
     """
     ring = _ring_kind_children(prep)
     out = np.zeros(len(cand))
+    if not ring.any():
+        return out
     for j, c in enumerate(cand):
         kids = kids_of[kid_ptr[c] : kid_ptr[c + 1]]
         kids = kids[ring[kids]]
