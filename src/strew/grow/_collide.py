@@ -356,15 +356,14 @@ class _Collide:
         gs = np.array([self.geom[j] for j in others], dtype=object)
         # (shapely's compiled functions without their Python wrappers: the same calls,
         # and this runs for every element a relaxation pass moves)
-        hit = np.flatnonzero(_intersects(geom, gs))
-        out = []
-        for q in hit.tolist():
-            j = others[q]
-            if not (self.areal[kind] and self.areal[self.kind[j]]):
-                out.append(j)
-            elif _area(_intersection(geom, gs[q])) > 1e-9 * max(geom.area, 1e-300):
-                out.append(j)
-        return out
+        hit = np.flatnonzero(_intersects(geom, gs)).tolist()
+        if not hit:
+            return []
+        areal, kinds = self.areal, self.kind
+        # the overlap test of the areal pairs in one call (_big_overlaps: the same answers)
+        both = [q for q in hit if areal[kind] and areal[kinds[others[q]]]]
+        big = dict(zip(both, _big_overlaps(geom, gs[both]).tolist())) if both else {}
+        return [others[q] for q in hit if big.get(q, True)]
 
     def overlapping_many(self, check: Sequence[int]) -> dict[int, list[int]]:
         """:meth:`overlapping` for several elements, with one vectorised shapely call.
