@@ -34,7 +34,7 @@ def _pairs(seed, m):
             b = shapely.affinity.translate(a, float(rng.uniform(-2, 2)), 0.0)  # a copy beside or over it
         elif k < 0.3:
             # touching: a copy of its bounding box's neighbour (area 0, contact only)
-            x0, y0, x1, y1 = a.bounds
+            _, y0, x1, y1 = a.bounds
             b = shapely.box(x1, y0, x1 + 1.0, y1)
         else:
             b = _star(rng, int(rng.integers(3, 16)), *rng.uniform(-1.8, 1.8, 2), float(rng.uniform(0.05, 1.3)))
