@@ -40,5 +40,5 @@ for cls in only:
             continue
         keep[f"{cls}:{label}"] = nn
     print(cls, n_all, len(keep), flush=True)
-np.savez_compressed(out, **keep)
+    np.savez_compressed(out, **keep)  # after each class: a long survey can be read as it goes
 print(f"{n_all} exemplars, {len(keep)} under the spread test")

@@ -163,7 +163,9 @@ def swap_lone_larger(g) -> int:
     far, q, share, top, unit = lone_reach(g)
     pairs = [(int(b), int(a)) for b, a in zip(*np.nonzero(np.isfinite(far)))]
     # (an earlier swap may have put an ``a`` element within the reach: then it is left)
-    return lone_pass(g, lone_candidates(g, pairs, far, q, share, top, unit), far, lambda o, a: not _orphans(g, o) and not _lone_kin(g, o, a) and _swap_one(g, o, a))
+    long_kin = kin_long(g)
+    return lone_pass(g, lone_candidates(g, pairs, far, q, share, top, unit), far,
+                     lambda o, a: not _orphans(g, o) and not (long_kin[a] and _lone_kin(g, o, a)) and _swap_one(g, o, a))
 
 
 #: a swap is skipped where taking the larger element out would leave an element of a
@@ -254,6 +256,37 @@ def kin_far(g) -> np.ndarray:
                 far[a] = float(LONE_KIN) * float(d.max())
     g._lone_kin_far = far
     return far
+
+
+def kin_long(g) -> np.ndarray:
+    """Per kind ``a`` ((n_kinds,) bool): are the output's upper deciles of nearest-``a``
+    distances from elements of ``a`` long against the reference's, by
+    :data:`._lone_kin.KIN_TRIGGER` of its median nearest-neighbour distance on average
+    (:data:`._lone_kin.KIN_TOP`, the elements that see their nearest one inside the
+    region, as :func:`._lone_kin.reseed_lone_kin` reads them)? There the swap's lone
+    elements of ``a`` would lengthen them further (:func:`_lone_kin`)."""
+    from scipy.spatial import cKDTree
+
+    from ._lone_kin import KIN_TOP, KIN_TRIGGER, kin_reach
+
+    out = np.zeros(g.n_kinds, dtype=bool)
+    if LONE_KIN is None:
+        return out
+    _, top, unit = kin_reach(g)
+    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.int64)
+    if len(els) < 4 or unit <= 0:
+        return out
+    kinds, pos = g.kind[els], g.pos[els]
+    for a in np.flatnonzero(np.isfinite(top[:, 0])).tolist():
+        pa = pos[kinds == a]
+        if len(pa) < MIN_LONE:
+            continue
+        d = cKDTree(pa).query(pa, k=2)[0][:, 1]
+        if g.region is not None:
+            d = d[d <= np.asarray(g.region.distance_to_boundary(pa), dtype=float)]
+        if len(d) >= MIN_LONE:
+            out[a] = float(np.mean(np.quantile(d, KIN_TOP) - top[a])) / unit >= KIN_TRIGGER
+    return out
 
 
 def _lone_kin(g, o: int, a: int) -> bool:
