@@ -163,9 +163,7 @@ def swap_lone_larger(g) -> int:
     far, q, share, top, unit = lone_reach(g)
     pairs = [(int(b), int(a)) for b, a in zip(*np.nonzero(np.isfinite(far)))]
     # (an earlier swap may have put an ``a`` element within the reach: then it is left)
-    long_kin = kin_long(g)
-    return lone_pass(g, lone_candidates(g, pairs, far, q, share, top, unit), far,
-                     lambda o, a: not _orphans(g, o) and not (long_kin[a] and _lone_kin(g, o, a)) and _swap_one(g, o, a))
+    return lone_pass(g, lone_candidates(g, pairs, far, q, share, top, unit), far, lambda o, a: not _orphans(g, o) and _swap_one(g, o, a))
 
 
 #: a swap is skipped where taking the larger element out would leave an element of a
@@ -224,88 +222,6 @@ def _orphans(g, o: int) -> bool:
         if not any(j != o and int(g.kind[j]) == b and (g.xy[j][0] - kx) ** 2 + (g.xy[j][1] - ky) ** 2 <= rc * rc for j in g.near(kx, ky, rc, (ELEMENT,))):
             return True
     return False
-
-
-#: a swap is skipped where the smaller element put in the hole would have no element of
-#: its own kind within the reference's farthest nearest-own-kind distance, times this
-#: (see :func:`_lone_kin`); None: never skipped
-LONE_KIN: float | None = 1.0
-
-
-def kin_far(g) -> np.ndarray:
-    """Per visible kind ``a``, over the reference's elements of ``a`` that see their
-    nearest one of ``a`` within the frame (the judge's edge rule, at least
-    :data:`MIN_LONE` of them): the farthest such distance times :data:`LONE_KIN`
-    ((n_kinds,) float; inf where not told)."""
-    cached = getattr(g, "_lone_kin_far", None)
-    if cached is not None:
-        return cached
-    from scipy.spatial import cKDTree
-
-    far = np.full(g.n_kinds, np.inf)
-    ex = g.ref.exemplar
-    if LONE_KIN is not None and ex.region is not None:
-        to_edge = np.asarray(ex.region.distance_to_boundary(ex.xy), dtype=float)
-        for a in range(g.n_kinds):
-            sa = np.flatnonzero(g.ex_kind == a)
-            if len(sa) < 2 or g.void_kind[a]:
-                continue
-            d = cKDTree(ex.xy[sa]).query(ex.xy[sa], k=2)[0][:, 1]
-            d = d[d <= to_edge[sa]]
-            if len(d) >= MIN_LONE:
-                far[a] = float(LONE_KIN) * float(d.max())
-    g._lone_kin_far = far
-    return far
-
-
-def kin_long(g) -> np.ndarray:
-    """Per kind ``a`` ((n_kinds,) bool): are the output's upper deciles of nearest-``a``
-    distances from elements of ``a`` long against the reference's, by
-    :data:`._lone_kin.KIN_TRIGGER` of its median nearest-neighbour distance on average
-    (:data:`._lone_kin.KIN_TOP`, the elements that see their nearest one inside the
-    region, as :func:`._lone_kin.reseed_lone_kin` reads them)? There the swap's lone
-    elements of ``a`` would lengthen them further (:func:`_lone_kin`)."""
-    from scipy.spatial import cKDTree
-
-    from ._lone_kin import KIN_TOP, KIN_TRIGGER, kin_reach
-
-    out = np.zeros(g.n_kinds, dtype=bool)
-    if LONE_KIN is None:
-        return out
-    _, top, unit = kin_reach(g)
-    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.int64)
-    if len(els) < 4 or unit <= 0:
-        return out
-    kinds, pos = g.kind[els], g.pos[els]
-    for a in np.flatnonzero(np.isfinite(top[:, 0])).tolist():
-        pa = pos[kinds == a]
-        if len(pa) < MIN_LONE:
-            continue
-        d = cKDTree(pa).query(pa, k=2)[0][:, 1]
-        if g.region is not None:
-            d = d[d <= np.asarray(g.region.distance_to_boundary(pa), dtype=float)]
-        if len(d) >= MIN_LONE:
-            out[a] = float(np.mean(np.quantile(d, KIN_TOP) - top[a])) / unit >= KIN_TRIGGER
-    return out
-
-
-def _lone_kin(g, o: int, a: int) -> bool:
-    """Would an element of kind ``a`` put where element ``o`` is have no other of its
-    kind within :func:`kin_far` ``[a]``?
-
-    Not in the paper (the swap is not either). The swap trades the larger kind's
-    nearness to the smaller for the smaller kind's nearness to its own: stripes (dots and
-    bars dart-thrown at one radius, the kind by band; the default parameters at variant
-    seed 29, seed 1) swapped 26 bars in the middle of bar bands for dots that then had
-    no dot near them, and the dots' nearest dot at the upper decile went from 1.22 to
-    1.30 s against the reference's 1.06 (nn[dot>dot] 0.0504 against 0.05; 0.040
-    without those swaps; ``benchmarks/g44r_swap_kin.py``).
-    """
-    r = float(kin_far(g)[a])
-    if not np.isfinite(r):
-        return False
-    x, y = g.xy[o]
-    return not any(k != o and int(g.kind[k]) == a and (g.xy[k][0] - x) ** 2 + (g.xy[k][1] - y) ** 2 <= r * r for k in g.near(x, y, r, (ELEMENT,)))
 
 
 def lone_candidates(g, pairs, lim, q, share, top, unit) -> list[tuple[float, int, int]]:
