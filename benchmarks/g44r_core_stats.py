@@ -38,6 +38,8 @@ print(f"read as hard-core (new): {[r[:2] for r in rows if r[9]]}")
 t = R[:, 1] >= 10.0 - 1e-9
 hc = t & (R[:, 2] <= 0.1)
 # margins: with the tail test, the hard-core group (floor/tail <= 0.1) and the lattices beside it
+if not hc.any():
+    sys.exit(0)  # no hard-core exemplar here: no margins to print
 print("\nwith a tail of 10 % or more:")
 for name, col in (("floor %", 0), ("floor/tail", 2)):
     a, b = R[hc, col].max(), R[t & ~hc, col].min()
