@@ -3,6 +3,8 @@ own-kind guard (``LONE_KIN``) on chosen ``--varied`` rows: swaps made, swaps the
 skipped, the smaller kind's nearest-own-kind deciles, the row's nn metrics and verdict.
 
     PYTHONPATH=src:benchmarks python benchmarks/g44r_swap_kin.py CLASS:LABEL[,...] SEEDS
+
+Needs the guard: ``git apply benchmarks/results/g44r_rejected_swap_kin.patch`` (rejected, not in src).
 """
 import os
 import sys
