@@ -448,6 +448,14 @@ each larger size class and of the kind (:data:`SMALLEST_REACH_Q`; s25h's unbound
 lost --harder h2s8 and h7s7, seeds 1 and 3)."""
 
 
+ROOM_SPARSE_SHARE: float | None = 1.0
+"""Rooms for one more of a kind of the exemplar's smallest size class, as a share of
+its count (:func:`_room_rate`), above which the exemplar is far from saturation for
+the kind and :func:`fill_room` gives the kind every room the output leaves it within
+the exemplar's reach (:func:`_smallest_reach`) up to its density (:func:`_room_cap`),
+not only the rooms beyond the exemplar's rate; None: off. See :func:`fill_room`."""
+
+
 def _larger_short(state: SynthState) -> bool:
     """Whether a kind above its exemplar's smallest size class stands in the output
     below its exemplar's density by more than one standard error of its exemplar count
@@ -782,6 +790,7 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     # each kind's budget: the output's rooms for it beyond the exemplar's rate
     s_tri = state.src[vis[tri]]
     area = float(state.region.geometry.area)
+    sparse = ~np.isfinite(_room_rate(prep, smallest=True, share=ROOM_SPARSE_SHARE)) if ROOM_SPARSE_SHARE is not None else None
     budget = np.zeros(len(rate), np.int64)
     some = np.zeros(len(cen), bool)  # circles some kind with a budget fits (a cheap pre-test)
     beside = np.zeros(len(cen), bool)  # circles beside an element of a capped kind with a budget
@@ -790,7 +799,12 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
         m = m[np.argmin(prep.rc[m])]
         nk = np.maximum(prep.rc[m] + prep.rc[s_tri], prep.min_dist[k, prep.skind[s_tri]]).max(axis=1)
         fit = np.flatnonzero((rad >= nk) & (next_d <= far[k, :-1]).all(axis=1) & (own_d[:, k] <= far[k, -1]))
-        budget[k] = max(0, len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m])) - int(round(rate[k] * area)))
+        rooms = len(_greedy_rooms(cen[fit], rad[fit], 2.0 * prep.rc[m]))
+        budget[k] = max(0, rooms - int(round(rate[k] * area)))
+        if ROOM_SPARSE_SHARE is not None and np.isfinite(far[k, -1]) and sparse[k]:
+            # an exemplar far from saturation for the kind (ROOM_SPARSE_SHARE): the
+            # kind's shortfall from its density is not a packing one; any room in reach
+            budget[k] = max(budget[k], rooms)
         cap = _room_cap(state, int(k)) if budget[k] > 0 else None
         if cap is not None:
             budget[k] = min(budget[k], cap)
