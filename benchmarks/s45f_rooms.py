@@ -11,10 +11,10 @@ from scipy.spatial import cKDTree
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
 import _variants
-from _runner import fidelity_suite
 import shapely
-import strew.synth._displace as DP
+from _runner import fidelity_suite
 
+import strew.synth._displace as DP
 import strew.synth._grow as G
 from strew.metrics import fidelity
 
