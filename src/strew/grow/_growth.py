@@ -1430,13 +1430,16 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         #: (n_kinds,) bool: kinds the reference counts at least CANOPY_MIN_REF of over its
         #: whole frame (GrowParams.canopy_refuse); None: no canopy gate
         self.canopy_refuse_ok: np.ndarray | None = None
+        self.n_size_levels = 0
         if not self.canopy or p.canopy_share is None or p.tile is not None or p.spray is not None or len(ex) == 0:
             return
         vcol = ex.columns.get("void")
         vis = ~(np.asarray(vcol, dtype=bool) if vcol is not None else np.zeros(len(ex), dtype=bool))
         counted = vis.copy()
         self.canopy_refuse_ok = np.bincount(self.ex_kind[vis], minlength=self.n_kinds)[: self.n_kinds] >= CANOPY_MIN_REF
-        if len(np.unique(self.size_level[~self.void_kind])) < 3:
+        #: how many sizes the visible kinds come in (``_Place._kind_short``)
+        self.n_size_levels = len(np.unique(self.size_level[~self.void_kind]))
+        if self.n_size_levels < 3:
             # only with a middle size between the smallest and the largest kind: with
             # two sizes, --harder two_sizes h11s15 failed empty_circle at seeds 1 and 3
             # of 1-4 (0.103 and 0.112 against 0.1; 4/4 pass without the rule). Its cause
