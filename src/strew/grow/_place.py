@@ -145,10 +145,11 @@ class _Place:
         a full larger kind's seeds, :meth:`_prio_full`: where the small stones are the
         majority (300:20:10, ``--harder`` h0s27) letting every kind past the large seeds
         lost nn[medium>small], 5/6 -> 1/6 seeds. With two sizes, where there is no
-        middle kind, the smallest kind's seeds are asked too.)"""
+        middle kind, the smallest kind's seeds are asked too, unless they are grit:
+        ``small_past``.)"""
         a = int(self.kind[i])
         ref = self.canopy_ref_share
-        if a < 0 or ref is None or not ref[a] > 0 or (self.size_level[a] <= float(self.size_level.min()) and self.n_size_levels != 2):
+        if a < 0 or ref is None or not ref[a] > 0 or (self.size_level[a] <= float(self.size_level.min()) and not self.small_past):
             # a middle kind only: small stones let past the large seeds where they are
             # short still lost h0s27 (nn[medium>small] at seeds 2-4 of 1-4). With two
             # sizes the smallest kind is let past too (helper g45f): the stones' seeds
@@ -157,7 +158,10 @@ class _Place:
             # 0.47-0.49 (--harder two_sizes h0s32: fraction[stone] 0.0735-0.0833 against
             # 0.0596, 0/6 seeds; the large kind over the reference's share on most h0
             # draws at variants 7-30, benchmarks/results/g45f_bias_h0_*.txt). There is
-            # no middle kind for the small ones to crowd.
+            # no middle kind for the small ones to crowd. Not where the small kind is grit
+            # (under SMALL_PAST_RATIO of the large radius, ``small_past``): there the
+            # priority is what fills the stones' gaps, and grit let past took the
+            # stones' places (EDGE two_sizes p2s27, p2s30).
             return False
         k = self._settled_behind(i)
         m = 0 if k is None else len(k)
