@@ -123,7 +123,10 @@ class _Place:
         the canopy gates its conversions at (``canopy_share``, ``canopy_share_z``,
         ``canopy_few_z``), the largest kind keeps its priority over a seed of a middle
         kind short of its own share (:meth:`_kind_short`) only while it is under it.
-        (helper g43m, ``benchmarks/g43m_kinds.py``)
+        (helper g43m, ``benchmarks/g43m_kinds.py``.) With two sizes the small kind's
+        seeds are gated so too (helper g45f, ``benchmarks/g45f_steps.py``: the stones'
+        surplus was made by the priority itself, in the growth steps before any hole
+        fill, and with no priority at all the share was the reference's).
         """
         if b < 0 or self.size_level[b] != self.top_level:
             # only the largest kind (as _over_smaller_seeds): gating the middle kind let
@@ -141,12 +144,24 @@ class _Place:
         ``canopy_share_z`` binomial standard deviations? (Only such a seed is let past
         a full larger kind's seeds, :meth:`_prio_full`: where the small stones are the
         majority (300:20:10, ``--harder`` h0s27) letting every kind past the large seeds
-        lost nn[medium>small], 5/6 -> 1/6 seeds.)"""
+        lost nn[medium>small], 5/6 -> 1/6 seeds. With two sizes, where there is no
+        middle kind, the smallest kind's seeds are asked too, unless they are grit:
+        ``small_past``.)"""
         a = int(self.kind[i])
         ref = self.canopy_ref_share
-        if a < 0 or ref is None or not ref[a] > 0 or self.size_level[a] <= float(self.size_level.min()):
+        if a < 0 or ref is None or not ref[a] > 0 or (self.size_level[a] <= float(self.size_level.min()) and not self.small_past):
             # a middle kind only: small stones let past the large seeds where they are
-            # short still lost h0s27 (nn[medium>small] at seeds 2-4 of 1-4)
+            # short still lost h0s27 (nn[medium>small] at seeds 2-4 of 1-4). With two
+            # sizes the smallest kind is let past too (helper g45f): the stones' seeds
+            # took every place their rings proposed before the pebbles' seeds there, and
+            # the growth made 0.53-0.55 stones behind its front where the reference has
+            # 0.47-0.49 (--harder two_sizes h0s32: fraction[stone] 0.0735-0.0833 against
+            # 0.0596, 0/6 seeds; the large kind over the reference's share on most h0
+            # draws at variants 7-30, benchmarks/results/g45f_bias_h0_*.txt). There is
+            # no middle kind for the small ones to crowd. Not where the small kind is grit
+            # (under SMALL_PAST_RATIO of the large radius, ``small_past``): there the
+            # priority is what fills the stones' gaps, and grit let past took the
+            # stones' places (EDGE two_sizes p2s27, p2s30).
             return False
         k = self._settled_behind(i)
         m = 0 if k is None else len(k)
