@@ -53,7 +53,10 @@ for n in ("fill_void_holes", "swap_lone_larger", "move_lone_smaller", "reseed_lo
     wrap_fn(n)
 for n in ("advance", "settle"):
     wrap_meth(n)
-import json, os, collections
+import collections
+import json
+import os
+
 OVR = json.loads(os.environ.get("OVR", "{}"))
 CNT = collections.Counter()
 _tl = G._Grower.try_larger

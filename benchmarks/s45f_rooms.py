@@ -67,7 +67,6 @@ def diag(state, room=None, since=0):
               f"(at share {share}: {G._room_rate(prep, smallest=True, share=share)[k]*area:.1f})", flush=True)
         print(f"    output rooms: plain {plain} reach {reach}; cap {G._room_cap(state, int(k))}; "
               f"saturated cands {len(G._saturated_candidates(prep, smallest=True, share=share))}", flush=True)
-    n0 = state.n
     got = ORIG(state, room, since)
     print(f"  fill_room added {got}; ratios {np.round(r0, 3)} -> {np.round(ratios(state), 3)}", flush=True)
     return got
