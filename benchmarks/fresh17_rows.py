@@ -1,4 +1,4 @@
-"""Helper fresh17: chosen ``--varied`` rows (any variant seed) at more seeds, grow or synth.
+"""Helper fresh17: chosen ``--varied`` rows (any variant seed) at more seeds, grow or synth (``SHOW=metric,...`` also prints those metrics where they pass; helper g45f).
 
     PYTHONPATH=src python benchmarks/fresh17_rows.py METHOD CLASS:LABEL[,CLASS:LABEL...] 1-6
 
@@ -44,7 +44,7 @@ def main():
         for seed in seeds:
             out, _ = run(ex, 3.5, seed, args)
             rep = fidelity(ex, out, eq5=False, local=False)
-            fails = [f"{k}={m.value:.3g}/{m.tolerance:.3g}" for k, m in rep.metrics.items() if m.applicable and not m.passed]
+            fails = [f"{k}={m.value:.3g}/{m.tolerance:.3g}" for k, m in rep.metrics.items() if m.applicable and (not m.passed or k in os.environ.get("SHOW", "").split(","))]
             res.append(int(rep.faithful))
             print(f"  {method} {spec} seed {seed}: {'pass' if rep.faithful else 'FAIL'} n={len(out)} {' '.join(fails)}", flush=True)
         print(f"{method} {spec} {sum(res)}/{len(res)}", flush=True)

@@ -25,6 +25,8 @@ import math
 import numba
 import numpy as np
 
+from .._kernels.geometry import seg_dist2 as _seg_dist2
+
 #: the bound must exceed the threshold (1e-9 of the first polygon's area) this many times
 CERTAIN_MARGIN = 4.0
 
@@ -36,23 +38,6 @@ def _ring_area(c, a, b):  # pragma: no cover - numba
     for i in range(a, b - 1):
         s += c[i, 0] * c[i + 1, 1] - c[i + 1, 0] * c[i, 1]
     return 0.5 * s
-
-
-@numba.njit(cache=True, nogil=True)
-def _seg_dist2(px, py, ax, ay, bx, by):  # pragma: no cover - numba
-    """Squared distance from point p to segment ab."""
-    dx, dy = bx - ax, by - ay
-    L = dx * dx + dy * dy
-    t = 0.0
-    if L > 0.0:
-        t = ((px - ax) * dx + (py - ay) * dy) / L
-        if t < 0.0:
-            t = 0.0
-        elif t > 1.0:
-            t = 1.0
-    qx, qy = ax + t * dx - px, ay + t * dy - py
-    return qx * qx + qy * qy
-
 
 @numba.njit(cache=True, nogil=True)
 def _inside_depth2(px, py, c, a, b):  # pragma: no cover - numba
