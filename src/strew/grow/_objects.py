@@ -13,8 +13,6 @@ from collections.abc import Sequence
 
 import shapely
 
-from .._kernels.grid import hash_cross
-
 DEAD, SEED, ELEMENT = 0, 1, 2
 #: A smaller kind leans on larger ones (see ``_Grower.lean_ok``) when 90% of its elements
 #: have their nearest larger element within this factor of the median distance to it.
@@ -239,14 +237,7 @@ class _Objects:
         """
         oo = self.orig_of
         if self.tile is None:
-            # GrowIndex.crosses_plane inlined (the same call of the kernel; the growth
-            # asks this for every new seed and edge: issue 14 point 5)
-            ix = self.index
-            ec = ix.edge_cells
-            if ec.n == 0:
-                return False
-            return hash_cross(float(pa[0]), float(pa[1]), float(pb[0]), float(pb[1]), -2 if a is None else oo[a], -2 if b is None else oo[b],
-                              ix.cell, ec.head, ec.ent, ec.cur, ec.ext, ix.ends, ix.pos)
+            return self.index.crosses_plane(-2 if a is None else oo[a], pa, -2 if b is None else oo[b], pb)
         return self.index.crosses(-2 if a is None else oo[a], pa, -2 if b is None else oo[b], pb, self.tile, self.margin)
 
     def crosses_boundary(self, pa: Sequence[float], pb: Sequence[float]) -> bool:
