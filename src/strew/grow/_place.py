@@ -881,12 +881,12 @@ class _Place:
         base = self.turned_ring(kind, rot, scale) if self.local_ring[kind] is not None else None
         pool = self.overlap_pool(kind, x, y, scale, reach)
         nbrs = [(o, self.xy[o]) for o in self.adj[s]]
+        # the offsets at every distance that pass the point tests, nearest first; then
+        # their outlines in one shapely call, the region test in another and the overlap
+        # tests in a third (the tests are pure: the first offset that passes them all is
+        # the one the distance-by-distance loop took; issue 14 point 5)
+        pts = []
         for f in (0.25, 0.5, 0.75, 1.0):
-            # the offsets at this distance that pass the point tests, in order; then
-            # their outlines in one shapely call and the region test in another (the
-            # tests are pure: the first offset that passes them all is the one the
-            # offset-by-offset loop took; issue 14 point 5)
-            pts = []
             for q in range(4):
                 t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
                 nx, ny = x + f * reach * math.cos(t), y + f * reach * math.sin(t)
@@ -899,24 +899,22 @@ class _Place:
                 if self.too_close_in_kind(nx, ny, kind, s, (ELEMENT,), placing=True):
                     continue
                 pts.append((nx, ny))
-            if not pts:
+        if not pts:
+            return None
+        if base is not None:
+            # (the same sums as base + np.array([nx, ny]) offset by offset)
+            gs = list(shapely.polygons(base[None, :, :] + np.array(pts)[:, None, :]))
+        else:
+            gs = [self.element_geometry(kind, nx, ny, rot, scale) for nx, ny in pts]
+        fits = self.fits_domain_many(gs).tolist()
+        ok = [q for q, fit in enumerate(fits) if fit]
+        hits = self.overlaps_pool_many([gs[q] for q in ok], kind, [pts[q] for q in ok], scale, pool)
+        for q, hit in zip(ok, hits):
+            if hit:
                 continue
-            if base is not None:
-                # (the same sums as base + np.array([nx, ny]) offset by offset)
-                gs = list(shapely.polygons(base[None, :, :] + np.array(pts)[:, None, :]))
-            else:
-                gs = [self.element_geometry(kind, nx, ny, rot, scale) for nx, ny in pts]
-            fits = self.fits_domain_many(gs).tolist()
-            # the overlap tests of the offsets that fit, in one shapely call (the same
-            # answers as overlaps_pool offset by offset; issue 14 point 5)
-            ok = [q for q, fit in enumerate(fits) if fit]
-            hits = self.overlaps_pool_many([gs[q] for q in ok], kind, [pts[q] for q in ok], scale, pool)
-            for q, hit in zip(ok, hits):
-                if hit:
-                    continue
-                nx, ny = pts[q]
-                self._move(s, nx, ny)
-                return nx, ny, gs[q]
+            nx, ny = pts[q]
+            self._move(s, nx, ny)
+            return nx, ny, gs[q]
         return None
 
     def _fit_position(self, s: int, nb: np.ndarray, rel: np.ndarray, k: int, c: float, sn: float, reach: float | None = None) -> None:
