@@ -638,9 +638,18 @@ class _Place:
         gap_min = self.ring_gap_min[a]
         plane = self.tile is None
         if plane:
-            index = self.index
             over_on, l_short, top_level = bool(self.over_smaller), float(self.l_short), float(self.top_level)
             size_level, pair_short, pair_short_max = self.size_level, self.pair_short, self.pair_short_max
+        xy = self.xy
+        ang_of: dict[int, float] = {}
+        fixed = self.mode_code == 0
+        two_pi = 2 * math.pi
+        # (crosses_boundary without a boundary is False, and crosses_edges in the plane
+        # is GrowIndex.crosses_plane: called directly in the loops below, which run for
+        # every slot of every placed element; the same answers, issue 14 point 5)
+        bnd = self.boundary is not None
+        index = self.index
+        oo = self.orig_of
         # New seeds (Fig. 2g) with the heuristics of Fig. 6 (b)-(d).
         for j in range(n_ring):
             if j in paired:
@@ -648,7 +657,7 @@ class _Place:
             cx, cy = ring_xy[j]
             if not self.in_domain(cx, cy):
                 continue
-            if self.crosses_boundary((x, y), (cx, cy)):
+            if bnd and self.crosses_boundary((x, y), (cx, cy)):
                 self.fixed[s] = True  # Eq. 6: elements at user boundaries are constrained
                 continue
             # (b) merge with an object within l_short
@@ -673,7 +682,8 @@ class _Place:
             if close:
                 if not self.has_edge(s, o):
                     po = self.xy[o]
-                    if not self.crosses_edges(s, (x, y), o, po) and not self.crosses_boundary((x, y), po):
+                    if (not (index.crosses_plane(oo[s], (x, y), oo[o], po) if plane else self.crosses_edges(s, (x, y), o, po))
+                            and not (bnd and self.crosses_boundary((x, y), po))):
                         self.add_edge(s, o)
                         slot_of.setdefault(o, j)
                 continue
@@ -694,18 +704,24 @@ class _Place:
             # tolerance of 0.127), and fixed bricks passed without it.
             ang = math.atan2(cy - y, cx - x)
             too_close = False
-            fixed = self.mode_code == 0
+            half = 0.5 * gap_min[j]
             for o in self.adj[s]:
-                po = self.xy[o]
-                d = abs(math.atan2(po[1] - y, po[0] - x) - ang)
-                d = min(d, 2 * math.pi - d)
-                if d < 0.5 * gap_min[j] and (fixed or o in slot_of or _skewed((x, y), (cx, cy), po)):
+                # (each neighbour's angle about s once per placement: the slots ask the
+                # same neighbours in turn, and no object moves in this loop; the same
+                # values, issue 14 point 5)
+                a_o = ang_of.get(o)
+                if a_o is None:
+                    po = xy[o]
+                    a_o = ang_of[o] = math.atan2(po[1] - y, po[0] - x)
+                d = abs(a_o - ang)
+                d = min(d, two_pi - d)
+                if d < half and (fixed or o in slot_of or _skewed((x, y), (cx, cy), xy[o])):
                     too_close = True
                     break
             if too_close:
                 continue
             # (d) edge collision
-            if self.crosses_edges(s, (x, y), None, (cx, cy)):
+            if index.crosses_plane(oo[s], (x, y), -2, (cx, cy)) if plane else self.crosses_edges(s, (x, y), None, (cx, cy)):
                 continue
             t = self.new_object(cx, cy, ring_kind[j])
             self.add_edge(s, t)
@@ -865,12 +881,12 @@ class _Place:
         base = self.turned_ring(kind, rot, scale) if self.local_ring[kind] is not None else None
         pool = self.overlap_pool(kind, x, y, scale, reach)
         nbrs = [(o, self.xy[o]) for o in self.adj[s]]
+        # the offsets at every distance that pass the point tests, nearest first; then
+        # their outlines in one shapely call, the region test in another and the overlap
+        # tests in a third (the tests are pure: the first offset that passes them all is
+        # the one the distance-by-distance loop took; issue 14 point 5)
+        pts = []
         for f in (0.25, 0.5, 0.75, 1.0):
-            # the offsets at this distance that pass the point tests, in order; then
-            # their outlines in one shapely call and the region test in another (the
-            # tests are pure: the first offset that passes them all is the one the
-            # offset-by-offset loop took; issue 14 point 5)
-            pts = []
             for q in range(4):
                 t = 0.5 * math.pi * q + 0.25 * math.pi * (f * 4 % 2)
                 nx, ny = x + f * reach * math.cos(t), y + f * reach * math.sin(t)
@@ -883,24 +899,22 @@ class _Place:
                 if self.too_close_in_kind(nx, ny, kind, s, (ELEMENT,), placing=True):
                     continue
                 pts.append((nx, ny))
-            if not pts:
+        if not pts:
+            return None
+        if base is not None:
+            # (the same sums as base + np.array([nx, ny]) offset by offset)
+            gs = list(shapely.polygons(base[None, :, :] + np.array(pts)[:, None, :]))
+        else:
+            gs = [self.element_geometry(kind, nx, ny, rot, scale) for nx, ny in pts]
+        fits = self.fits_domain_many(gs).tolist()
+        ok = [q for q, fit in enumerate(fits) if fit]
+        hits = self.overlaps_pool_many([gs[q] for q in ok], kind, [pts[q] for q in ok], scale, pool)
+        for q, hit in zip(ok, hits):
+            if hit:
                 continue
-            if base is not None:
-                # (the same sums as base + np.array([nx, ny]) offset by offset)
-                gs = list(shapely.polygons(base[None, :, :] + np.array(pts)[:, None, :]))
-            else:
-                gs = [self.element_geometry(kind, nx, ny, rot, scale) for nx, ny in pts]
-            fits = self.fits_domain_many(gs).tolist()
-            # the overlap tests of the offsets that fit, in one shapely call (the same
-            # answers as overlaps_pool offset by offset; issue 14 point 5)
-            ok = [q for q, fit in enumerate(fits) if fit]
-            hits = self.overlaps_pool_many([gs[q] for q in ok], kind, [pts[q] for q in ok], scale, pool)
-            for q, hit in zip(ok, hits):
-                if hit:
-                    continue
-                nx, ny = pts[q]
-                self._move(s, nx, ny)
-                return nx, ny, gs[q]
+            nx, ny = pts[q]
+            self._move(s, nx, ny)
+            return nx, ny, gs[q]
         return None
 
     def _fit_position(self, s: int, nb: np.ndarray, rel: np.ndarray, k: int, c: float, sn: float, reach: float | None = None) -> None:
@@ -938,30 +952,39 @@ class _Place:
             return
         if self.spray_area is not None and not shapely.contains_xy(self.spray_area, fx, fy):
             return
+        plane, bnd, oo = self.tile is None, self.boundary is not None, self.orig_of
         for o in self.adj[s]:
-            if self.crosses_edges(s, (fx, fy), o, self.xy[o]) or self.crosses_boundary((fx, fy), self.xy[o]):
+            po = xy[o]
+            if ((self.index.crosses_plane(oo[s], (fx, fy), oo[o], po) if plane else self.crosses_edges(s, (fx, fy), o, po))
+                    or (bnd and self.crosses_boundary((fx, fy), po))):
                 return
         self._move(s, fx, fy)
 
     def _ring_edges(self, s: int, a: int, slot_of: dict[int, int], rel: np.ndarray, c: float, sn: float) -> None:
-        x, y = self.xy[s]
-        nbrs = list(self.adj[s])
+        xy = self.xy
+        x, y = xy[s]
+        adj = self.adj
+        nbrs = list(adj[s])
         if len(nbrs) < 2:
             return
-        angs = [math.atan2(self.xy[o][1] - y, self.xy[o][0] - x) for o in nbrs]
-        order = sorted(range(len(nbrs)), key=lambda q: angs[q])
+        angs = [math.atan2(xy[o][1] - y, xy[o][0] - x) for o in nbrs]
+        order = sorted(range(len(nbrs)), key=angs.__getitem__)
         m = len(order)
         rel_l = None
+        # (has_edge in the plane, inlined: this loop runs for every pair of neighbours
+        # of every placed element; issue 14 point 5)
+        plane = self.tile is None
+        bnd, oo = self.boundary is not None, self.orig_of
         for q in range(m):
             ia, ib = order[q], order[(q + 1) % m]
             oa, ob = nbrs[ia], nbrs[ib]
             gap = (angs[ib] - angs[ia]) % (2 * math.pi)
             if m == 2 and q == 1:
                 break
-            if gap <= 1e-9 or gap >= math.pi - 1e-9 or self.has_edge(oa, ob):
+            if gap <= 1e-9 or gap >= math.pi - 1e-9 or (ob in adj[oa] if plane else self.has_edge(oa, ob)):
                 continue
-            pa = self.xy[oa]
-            pb = self.xy[ob]
+            pa = xy[oa]
+            pb = xy[ob]
             ja, jb = slot_of.get(oa), slot_of.get(ob)
             if ja is not None and jb is not None:
                 # (the same value as np.hypot(*(rel[ja] - rel[jb])), without the arrays)
@@ -1003,5 +1026,6 @@ class _Place:
                         self.add_edge(o, t)
             elif not _skewed((x, y), pa, pb):
                 # the new edge closes triangle (s, a, b); like §4 we keep no skewed triangle
-                if not self.crosses_edges(oa, pa, ob, pb) and not self.crosses_boundary(pa, pb):
+                if (not (self.index.crosses_plane(oo[oa], pa, oo[ob], pb) if plane else self.crosses_edges(oa, pa, ob, pb))
+                        and not (bnd and self.crosses_boundary(pa, pb))):
                     self.add_edge(oa, ob)
