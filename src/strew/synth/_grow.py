@@ -2615,10 +2615,11 @@ def _split_conflicts(state: SynthState, pts: np.ndarray, src: np.ndarray, visibl
     return hard
 
 
-YIELD_STEP = 1.75
-"""In exemplars of at least ``YIELD_CLASSES`` size classes, a horizon element yields
-only to a class whose median bounding radius is at least this many times its own class's
-(see :func:`_yields_below`); 0: to every larger class."""
+YIELD_STEP = 1.85
+"""In exemplars of at least ``YIELD_CLASSES`` size classes, a horizon element of the
+smallest class yields only to a class whose median area radius (``_prepare.area_radii``)
+is at least this many times its own class's (see :func:`_yields_below`); 0: to every
+larger class."""
 
 YIELD_CLASSES = 3
 
@@ -2644,12 +2645,16 @@ def _yields_below(prep) -> np.ndarray:
     p2s34 failed nn[small>small] at 0/6 seeds (p2s32 at 3/6). Kinds that close stay in
     order of generation (the split) but compete as one size in conflicts, as §5.1's
     collision test has it. With the step: small 0.82-0.91 after growth, p2s34 and p2s32
-    6/6 seeds. The step 1.75 lies between the p2 ladders (1.45-1.69 in median bounding
-    radius at variant seeds 25-34) and the 1 : 2 : 4 sets (1.92-2.11); only the smallest
-    class takes it (``YIELD_SMALLEST``; the medium stones yielding to the large ones
-    at 1.6x are no cause: with the step on every class p2s34 came out the same or
-    worse, nn[small>small] 0.106 against 0.090 at seed 1). Exemplars of two classes keep
-    the plain rule (two sizes 1 : 1.7, EDGE p3, needs the stones to win).
+    6/6 seeds. Sizes by area radius, not bounding radius: the stones' outlines are drawn
+    once per kind, and their bounding radii put p2 at 1.45-1.99 (variant seeds 25-34)
+    against 1.75 and up for the 1 : 2 : 4 sets; by area p2 and the --harder 1 : 1.5 : 3
+    (h3) lie at 1.47-1.83 and every 1 : 2 : 4 set at 1.88 and up (p4s34 1.89, h2s32
+    1.88; ``benchmarks/s47p_where.py 7-34 three_sizes``), and the step 1.85 lies
+    between: a narrow gap, as the outlines' draw spreads each kind's size. Only the smallest class takes it
+    (``YIELD_SMALLEST``; with the step on every class, medium stones no longer yielding
+    to large ones 1.6x their size, p2s34 came out no better: nn[small>small] 0.106
+    against 0.090 at seed 1). Exemplars of two classes keep the plain rule (two sizes
+    1 : 1.7, EDGE p3, needs its stones to win).
     """
     got = getattr(prep, "_yield_below", None)
     ncls = int(prep.size_class.max()) + 1 if len(prep.size_class) else 1
@@ -2658,7 +2663,9 @@ def _yields_below(prep) -> np.ndarray:
     out = np.arange(ncls, dtype=np.int64)  # the rule without a step: class c yields to every class above c
     if YIELD_STEP > 0 and ncls >= YIELD_CLASSES:
         sel = prep.selected_elements & ~prep.void
-        med = np.array([float(np.median(prep.r[sel & (prep.size_class == c)])) if np.any(sel & (prep.size_class == c)) else np.nan for c in range(ncls)])
+        ar = getattr(prep, "_area_r", None)
+        ar = prep.r if ar is None or len(ar) != len(prep.r) else ar
+        med = np.array([float(np.median(ar[sel & (prep.size_class == c)])) if np.any(sel & (prep.size_class == c)) else np.nan for c in range(ncls)])
         for c in range(1 if YIELD_SMALLEST else ncls):
             if not np.isfinite(med[c]):
                 continue
