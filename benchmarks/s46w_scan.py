@@ -22,7 +22,7 @@ only = sys.argv[2].split(",") if len(sys.argv) > 2 else None
 
 
 def key(prep):
-    return np.r_[prep.free_off.ravel(), prep.free_cover, prep.free_r]
+    return np.r_[prep.free_ptr, prep.free_off.ravel(), prep.free_cover, prep.free_r]
 
 
 def changed(ex):
