@@ -1,6 +1,10 @@
 """s46w: which part of s44w's (a) (_prepare._uncut_nn) moves a case.
 
-S46W_OFF=eps,cover switches the eps / cover part off (raw nn there).
+S46W_OFF=eps,cover switches the eps / cover part off (raw nn there); S46W_KINDS=1,2
+limits it to those kinds. ``fs3`` reruns test_synth_free_support's variant 3. The
+figures in benchmarks/results/s46w_fs3_parts.txt were taken on s44w's ungated (a)
+(before prepare applied it to one-size-class exemplars only); with the gate three
+sizes never calls _uncut_nn, so fs3 gives the raw result whatever S46W_OFF says.
 Usage: python benchmarks/s46w_parts.py [explain|fs3]
 """
 from __future__ import annotations
