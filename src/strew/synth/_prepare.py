@@ -485,12 +485,19 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     # DBSCAN core points need vectors from about FREE_SUPPORT of the k neighbourhoods
     # (see FREE_SUPPORT): k = 5 -> 3, k = 1 -> 1 (every vector kept, as before)
     min_samples = max(1, int(np.ceil(FREE_SUPPORT * k)))
-    # cover radius: 3/4 of the nearest-neighbour distance of each element in its exemplar
+    # cover radius and DBSCAN eps: 3/4 of the nearest-neighbour distance of each element
+    # in its exemplar, with the frame's stretch taken out (_uncut_nn: the cover bounded by
+    # the kind's longest uncut distance, the eps set to its median)
+    # (one size class only: with several, a long cut nn is the exemplar's own spacing
+    # around larger elements; s46w)
     half_nn = np.zeros(len(arr))
+    half_eps = np.zeros(len(arr))
     for i in range(len(tagged)):
         ids = np.flatnonzero(sources == i)
         d, _ = cKDTree(pos[ids]).query(pos[ids], k=2)
-        half_nn[ids] = 0.75 * d[:, 1]
+        uncut = UNCUT_NN and len(np.unique(cls[ids])) == 1
+        half_nn[ids] = 0.75 * (_uncut_nn(d[:, 1], depth_all[ids], kind[ids], upper=True) if uncut else d[:, 1])
+        half_eps[ids] = 0.75 * (_uncut_nn(d[:, 1], depth_all[ids], kind[ids]) if uncut else d[:, 1])
     # all elements at once: each element's vectors scaled by its eps and moved far apart,
     # so one DBSCAN pass clusters every free(e) separately
     n = len(arr)
@@ -502,7 +509,7 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
     owner = np.repeat(own, seg)
     first = np.repeat(rank == 0, seg)
     rows = np.repeat(ptr[cs], seg) + (np.arange(int(seg.sum())) - np.repeat(np.cumsum(seg) - seg, seg))
-    eps = 0.33 * half_nn[owner]
+    eps = 0.33 * half_eps[owner]
     pts = off[rows] / eps[:, None]
     span = float(np.abs(pts).max()) * 2 + 10.0 if len(pts) else 1.0
     pts[:, 0] += owner * span
@@ -599,6 +606,76 @@ SURROUND_K = True
 :func:`_surround_steps`), in exemplars of fewer than :data:`SURROUND_K_CLASSES` size
 classes."""
 SURROUND_K_CLASSES = 3
+
+
+UNCUT_NN = True
+"""Take the frame's stretch out of the nearest-neighbour distances behind the free-space
+cover radius and DBSCAN eps (:func:`_uncut_nn`), in exemplars of one size class only
+(:func:`size_classes`; s46w, see there)."""
+
+
+def _uncut_nn(nn: np.ndarray, depth: np.ndarray, kind: np.ndarray, upper: bool = False) -> np.ndarray:
+    """Nearest-neighbour distances with the frame's stretch taken out, for the free-space
+    cover radius and DBSCAN eps (departs from §5.1).
+
+    §5.1 sets the cover radius of free space and the DBSCAN eps that clusters free(e)
+    from each element's nearest-neighbour distance in its exemplar. An element the frame
+    cut off from its nearest neighbour (its nn farther than its depth inside the domain,
+    Hanisch's test, as the fidelity judge's own border correction) has a stretched nn:
+    at 50x the area stripes failed nn[bar>bar] at seeds 3, 6, 11, 14, 16 of
+    ``benchmarks/seam17_all50.py``.
+
+    A cut element's observed nn is only an upper bound on its true one. Where it lies
+    within the range its kind's uncut elements show, it is kept; only a distance beyond
+    every uncut one of its kind, which the frame alone explains, is replaced (stripes: 6
+    of 32 cut elements): by the kind's uncut median for the eps (the typical distance),
+    by the kind's longest uncut distance for the cover (``upper``; the bound, no more).
+    Unchanged where a kind has none uncut. Helper s44w: s42w set every cut nn above the
+    kind's median to the median, for both (20 of 22 cut small stones of ``--harder``
+    three sizes h6s29), and lost h6s29 (nn[medium>small], seeds 1-6 main 6/6) and
+    ``--varied`` p4s29; with only the beyond-range elements, at the median, the cover
+    still lost h6s29 seeds 2 and 6. The eps at the median and the cover at the longest
+    uncut distance pass stripes 50x where the eps alone left s14 failing, and leave
+    h6s29 seeds 2, 6 and p4s29 seed 4 as without the cap.
+
+    Applied (by :func:`prepare`) only to an exemplar whose elements are all of one size
+    class (:func:`size_classes`; stripes' dots and bars are one). Helper s46w: with
+    several classes an element's nn is often to another class, and a long one is the
+    exemplar's own spacing around larger elements, not the frame's: in three sizes
+    (suite draw 3) the one large stone it changed (nn 18.43 to a small stone, depth
+    17.99, longest uncut 17.87) took the median 16.37 for its eps, and the output's small
+    fraction failed (``test_synth_free_support``, variant 3 at 3.5x, FREE_SUPPORT 0.6),
+    as did ``--harder`` three sizes h7s28 at seed 1. Multi-class exemplars keep the raw
+    nn, as before s44w.
+
+    Parameters
+    ----------
+    nn : (n,) float array
+        Each element's nearest-neighbour distance within its exemplar.
+    depth : (n,) float array
+        Each element's distance to the exemplar domain's boundary.
+    kind : (n,) int array
+        Each element's kind.
+    upper : bool
+        Replace by the kind's longest uncut distance (the cover) instead of its median
+        (the eps).
+
+    Returns
+    -------
+    (n,) float array
+        ``nn`` with the cut distances beyond their kind's uncut range replaced.
+    """
+    out = np.asarray(nn, float).copy()
+    cut = out > depth
+    if not cut.any():
+        return out
+    for k in np.unique(kind[cut]):
+        whole = (kind == k) & ~cut
+        if whole.any():
+            top = float(out[whole].max())
+            sel = (kind == k) & cut & (out > top)
+            out[sel] = top if upper else float(np.median(out[whole]))
+    return out
 
 
 def _surround_steps(inner: np.ndarray, ids: np.ndarray, depth: np.ndarray, rbar_c: np.ndarray, cls: np.ndarray, ptr: np.ndarray, idx: np.ndarray, off: np.ndarray,
