@@ -101,6 +101,11 @@ __all__ = ["GrowParams", "grow_reference"]
 #: (p2s27 nn[pebble>stone] 0.090 -> 0.159, p2s30 6/6 -> 5/6 seeds); the --harder sets
 #: (0.4-0.85) gained (h0s32 0/6 -> 6/6, h2s27 2/6 -> 6/6)
 SMALL_PAST_RATIO = 1.0 / 3.0
+#: the large kind of two sizes: the quantile of its reference's nearest own-kind
+#: distances whose excess over the least one is the spread a placement may come below
+#: that least distance (``_Grower.pair_close``; the median's excess elsewhere). None: the
+#: median's (helper g47f)
+OWN_TAIL_Q: float | None = 0.1
 
 #: the fewest elements of a kind the reference must count for the canopy's share gate
 #: (see ``_Grower._canopy_share_setup``)
@@ -618,6 +623,18 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
         among_voids = np.zeros(self.n_kinds, dtype=bool)
         if vcol0.any():
             among_voids = np.bincount(self.ex_kind[vcol0], minlength=self.n_kinds)[: self.n_kinds] == 0
+        # two visible kinds on two size levels, the small one grit (under
+        # SMALL_PAST_RATIO of the large radius): the large one's own-kind spread below
+        # (OWN_TAIL_Q). (Not where the small kind is a pebble near the stones' size:
+        # close sizes, ratio 0.6, lost a pebble beside 3 % of the stones,
+        # test_grow_gvar14g seed 2, against 2 % allowed)
+        vis_kinds = np.flatnonzero(np.bincount(self.ex_kind[~vcol0], minlength=self.n_kinds)[: self.n_kinds] > 0)
+        two_large = bool(p.mode == "fixed" and OWN_TAIL_Q is not None and len(vis_kinds) == 2
+                         and self.size_level[vis_kinds[0]] != self.size_level[vis_kinds[1]])
+        large_kind = int(vis_kinds[np.argmax(self.size_level[vis_kinds])]) if two_large else -1
+        if two_large:
+            rad = np.array([max(float(ex.shapes[k].radius), 0.0) for k in ex.kinds])[vis_kinds]
+            two_large = bool(rad.min() < SMALL_PAST_RATIO * rad.max())
         for k1, k2 in np.ndindex(self.n_kinds, self.n_kinds):
             if (k1 != k2 and self.size_level[k1] == self.size_level[k2]) or not dist_to[k2]:
                 continue
@@ -640,6 +657,19 @@ class _Grower(_Objects, _Collide, _Place, _RelaxWindow):
                     spread *= p.close_spread
                 if k1 == k2 and p.own_kind_close is None:
                     spread = max(spread, 0.05 * lo)  # saturated discs have almost none
+                    if two_large and k1 == large_kind:
+                        # the large kind of two sizes, thrown to saturation: its
+                        # distances pile up at the least one and the median says
+                        # nothing of how far below it the pattern ever goes; the
+                        # spread is that of its lowest tail (OWN_TAIL_Q). Not in the
+                        # paper, as the rule itself (§5.4 (b) merges only within
+                        # l_short). EDGE two_sizes p2s33 (least 25.8, 10 % 28.1,
+                        # median 29.7): the median's excess let stones to 21.9, and
+                        # 16-17 % of them came under 0.95 of the least distance:
+                        # nn[stone>stone] 0.26-0.31 / 0.26, 2/6 seeds; 6/6 with the
+                        # tail's (helper g47f, benchmarks/g47f_steps.py: all in the
+                        # growth pass, no later pass moved a stone)
+                        spread = max(float(np.quantile(m, OWN_TAIL_Q)) - lo, 0.05 * lo)
                 self.pair_close[k1, k2] = max(self.pair_short[k1, k2], lo - spread)
         self.pair_close = np.maximum(self.pair_close, self.pair_close.T)
         self.pair_close_max = self.pair_close.max(axis=1)
