@@ -149,6 +149,53 @@ def bootstrap_ratio(arrays, fn, boot: int, rng) -> dict:
     return {"value": value, "ci": [float(v) for v in np.nanpercentile(draws, [2.5, 97.5])]}
 
 
+def strip_ratios_against_control(tiled: dict, control: dict, boot: int, rng) -> dict:
+    """Strip against interior, tiled against its untiled control on the same lines.
+
+    ``tiled`` and ``control``: :func:`strip_units` dicts of two worlds measured on the same
+    tile lines (or the rows of several such worlds concatenated in the same order), row k of
+    one the same unit as row k of the other. A strip-to-interior ratio of one world mixes
+    the seams with what the lines themselves see where no border exists: a world that is
+    not stationary at the tile's scale (hierarchy grown from its first-phase tiles' seed
+    points; issue 19.4, helper w60d: at tiles of 32-48 the interior >= 3 s from every
+    border is only each tile's centre) has a strip ratio off 1 untiled too. The double
+    ratio (tiled ratio / control ratio) keeps only what the tiles add: 1 for a world
+    without seams whatever the lines' bias. Returns ``{"density": {"tiled", "control",
+    "tiled_over_control"}, "kind_share": [{...} per kind]}``, each ``{"value", "ci"}``: the
+    ratios of the summed counts and their 95 % percentile intervals over ``boot`` paired
+    resamples of the rows (a draw takes a row's tiled and control counts together).
+    """
+    n = len(tiled["strip"])
+    if len(control["strip"]) != n:
+        raise ValueError("tiled and control must have the same units")
+    nk = tiled["strip_kind"].shape[1]
+
+    def ratios(u, rows):
+        s, i = u["strip"][rows].sum(), u["inner"][rows].sum()
+        sa, ia = u["strip_area"][rows].sum(), u["inner_area"][rows].sum()
+        sk, ik = u["strip_kind"][rows].sum(0), u["inner_kind"][rows].sum(0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.concatenate([[(s / sa) / (i / ia)], (sk / s) / (ik / i)])
+
+    every = np.arange(n)
+    rt, rc = ratios(tiled, every), ratios(control, every)
+    draws = np.empty((boot, 3, nk + 1))
+    for b in range(boot):
+        pick = rng.integers(0, n, n)
+        t, c = ratios(tiled, pick), ratios(control, pick)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            draws[b] = (t, c, t / c)
+    lo, hi = np.nanpercentile(draws, [2.5, 97.5], axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        point = (rt, rc, rt / rc)
+
+    def entry(j):
+        return {name: {"value": float(point[m][j]), "ci": [float(lo[m, j]), float(hi[m, j])]}
+                for m, name in enumerate(("tiled", "control", "tiled_over_control"))}
+
+    return {"density": entry(0), "kind_share": [entry(k + 1) for k in range(nk)]}
+
+
 def folded_profile(arr, size, tile_size: float, spacing: float) -> dict:
     """The centres' density across the tile borders folded modulo the tile size.
 
