@@ -73,6 +73,7 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=19)
     ap.add_argument("--boot", type=int, default=4000)
     ap.add_argument("--json", default=None)
+    ap.add_argument("--control-only", action="store_true", help="the controls alone (every tile size that has one)")
     args = ap.parse_args()
     import orn19m_willow as W
 
@@ -80,11 +81,14 @@ def main() -> None:
     worlds = []
     for tile in args.tiles.split(","):
         p, q = RES / f"orn19m_{tt}_s{args.seed}_T{tile}.npz", RES / f"orn19m_{ct}_s{args.seed}_T{tile}.npz"
-        if p.exists() and q.exists():
-            worlds.append((tile, W._world(p), W._world(q), int(np.load(p)["overlaps"]), int(np.load(q)["overlaps"])))
+        if q.exists() and (p.exists() or args.control_only):
+            worlds.append((tile, W._world(p) if p.exists() and not args.control_only else None, W._world(q),
+                           int(np.load(p)["overlaps"]) if p.exists() and not args.control_only else -1, int(np.load(q)["overlaps"])))
         else:
             print(f"T{tile}: missing {'tiled' if not p.exists() else 'control'}: skipped")
-    kinds = worlds[0][1]["kinds"]
+    if args.control_only:  # the control stands in for the tiled world: tiled = control, only the control's columns mean anything
+        worlds = [(t, c, c, -1, oc) for t, _, c, _, oc in worlds]
+    kinds = worlds[0][2]["kinds"]
     nk = len(kinds)
     labels = ["density"] + [f"{k}_share" for k in kinds]
     rng = np.random.default_rng(0)
@@ -148,6 +152,71 @@ def main() -> None:
     if args.json:
         Path(args.json).write_text(json.dumps(out, indent=1) + "\n")
         print(f"wrote {args.json}")
+
+
+
+def offsets_main() -> None:
+    """``python benchmarks/w60d_bias.py offsets CONTROL --tiles ... [--seed 19]``: the control's strip
+    measure (own3, +-2 s and +-1 s) on lines shifted by o T (o = 0, 1/4, 1/2, 3/4: the lines x, y = o T + k T
+    inside the world): a stationary world gives 1 on any lines; a world whose structure is tied to the seed
+    points (hierarchy grown from the first-phase tiles' seeds, at 0.625 T and 2.5 T) gives ratios that move
+    with o."""
+    ap = argparse.ArgumentParser()
+    ap.add_argument("cmd")
+    ap.add_argument("control")
+    ap.add_argument("--tiles", required=True)
+    ap.add_argument("--seed", type=int, default=19)
+    ap.add_argument("--boot", type=int, default=2000)
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args()
+    rng = np.random.default_rng(0)
+    res: dict = {}
+    zs = []
+    for tile in args.tiles.split(","):
+        q = RES / f"orn19m_{args.control}_s{args.seed}_T{tile}.npz"
+        if q.exists():
+            zs.append(np.load(q))
+    kinds = [str(k) for k in zs[0]["kinds"]]
+    nk = len(kinds)
+    for o in (0.0, 0.25, 0.5, 0.75):
+        for width in (2.0, 1.0):
+            rows = []
+            for z in zs:
+                side, tile, halo, _ = z["meta"]
+                x, y, kind = z["x"], z["y"], z["kind"].astype(np.int64)
+                s = side / np.sqrt(len(x))
+                margin = max(halo, 3.0 * s)
+                lines = o * tile + tile * np.arange(0, 5)
+                lines = lines[(lines > 0) & (lines < side)]
+
+                def dist(a, b):
+                    return np.minimum(np.min(np.abs(a[:, None] - lines), 1), np.min(np.abs(b[:, None] - lines), 1))
+
+                ins = (x >= margin) & (x <= side - margin) & (y >= margin) & (y <= side - margin)
+                d = dist(x, y) / s
+                g = np.arange(0.125, side, 0.25)
+                gx, gy = (v.ravel() for v in np.meshgrid(g, g))
+                gok = (gx >= margin) & (gx <= side - margin) & (gy >= margin) & (gy <= side - margin)
+                gd = dist(gx[gok], gy[gok]) / s
+                st, it = ins & (d < width), ins & (d >= INNER)
+                rows.append(np.concatenate([[(gd < width).sum() * 0.0625, (gd >= INNER).sum() * 0.0625, st.sum(), it.sum()],
+                                            np.bincount(kind[st], minlength=nk), np.bincount(kind[it], minlength=nk)]))
+            C = np.array(rows, float)
+            est = ratios(C.sum(0), nk)
+            b = np.array([ratios(C[k].sum(0), nk) for k in rng.integers(0, len(C), (args.boot, len(C)))])
+            lo, hi = np.nanpercentile(b, [2.5, 97.5], axis=0)
+            labels = ["density"] + [f"{k}_share" for k in kinds]
+            res[f"o{o:g}_{width:g}s"] = {lab: [float(est[j]), float(lo[j]), float(hi[j])] for j, lab in enumerate(labels)}
+            print(f"control lines at ({o:g} + k) T, +-{width:g}s / >= 3 s, {len(C)} worlds: "
+                  + "; ".join(f"{lab} {est[j]:.3f} [{lo[j]:.3f}, {hi[j]:.3f}]" for j, lab in enumerate(labels)))
+    if args.json:
+        Path(args.json).write_text(json.dumps(res, indent=1) + "\n")
+        print(f"wrote {args.json}")
+
+
+if __name__ == "__main__" and len(sys.argv) > 1 and sys.argv[1] == "offsets":
+    offsets_main()
+    sys.exit(0)
 
 
 if __name__ == "__main__":
