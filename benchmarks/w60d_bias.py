@@ -95,6 +95,8 @@ def main() -> None:
     out: dict = {"tiles": [w[0] for w in worlds], "kinds": kinds, "inner_s": INNER,
                  "elements": {w[0]: [len(w[1]["x"]), len(w[2]["x"])] for w in worlds},
                  "overlaps": {w[0]: [w[3], w[4]] for w in worlds}, "measures": {}, "per_world": {}}
+    if args.control_only:
+        print("control only: the 'tiled' columns repeat the control; tiled elements and overlaps read -1 / the control's")
     print(f"{len(worlds)} worlds (tiles {', '.join(out['tiles'])}); elements tiled/control "
           f"{sum(v[0] for v in out['elements'].values())}/{sum(v[1] for v in out['elements'].values())}; "
           f"overlaps tiled {sum(v[0] for v in out['overlaps'].values())}, control {sum(v[1] for v in out['overlaps'].values())}")
