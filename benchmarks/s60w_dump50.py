@@ -5,16 +5,20 @@ keep the output (npz: xy, kind, rotation, radius) with the local map, for window
 """
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, "benchmarks")
-from _runner import fidelity_suite
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _runner import SKIPPED, fidelity_suite
 
 from strew import Region
 from strew.metrics import fidelity
 from strew.synth import synthesize
 
+if "--quick" in sys.argv[1:] or len(sys.argv) < 4:
+    print("s60w_dump50.py: skipped: 50x canvases (minutes); usage: NAME SEED OUT.npz")
+    sys.exit(SKIPPED)
 name, seed, path = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 mk = fidelity_suite()
 ex = mk.make_exemplar(name)

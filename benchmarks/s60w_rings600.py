@@ -13,21 +13,25 @@ the fidelity's global verdict and worst window (suite rings only).
 import argparse
 import json
 import sys
+from pathlib import Path
 
 import numpy as np
 from scipy.spatial import cKDTree
 
-sys.path.insert(0, "benchmarks")
-from _runner import fidelity_suite
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _runner import SKIPPED, fidelity_suite
 
 from strew import Region
 from strew.metrics import fidelity
 from strew.synth import synthesize
 from strew.synth._exemplars import rings as demo_rings
 
+if "--quick" in sys.argv[1:]:
+    print("s60w_rings600: skipped: six 600 x 500 canvases (minutes)")
+    sys.exit(SKIPPED)
 ap = argparse.ArgumentParser()
 ap.add_argument("--seeds", default="1,2,3")
-ap.add_argument("--json", default="benchmarks/results/s60w_rings600.json")
+ap.add_argument("--json", default=str(Path(__file__).resolve().parent / "results" / "s60w_rings600.json"))
 a = ap.parse_args()
 W, H = 600.0, 500.0
 cases = {"suite": (fidelity_suite().make_exemplar("rings"), 15.0, 10), "demo": (demo_rings(), 16.0, 12)}
@@ -48,9 +52,9 @@ for name, (ex, rad, ntile) in cases.items():
         grid = np.zeros((4, 4), int)
         for p in np.r_[broken, hubless]:
             grid[min(3, int(p[1] / H * 4)), min(3, int(p[0] / W * 4))] += 1
-        r = dict(exemplar=name, seed=seed, n=len(out), hubs=int(hub.sum()), interior_hubs=int(hi.sum()), whole=round(float(np.mean(cnt == ntile)), 3),
-                 over=int(np.sum(cnt > ntile)), hubless_tiles=int(len(hubless)), counts=np.bincount(cnt).tolist(), where_rows_bottom_up=grid.tolist(),
-                 broken_xy=np.round(broken, 1).tolist(), hubless_xy=np.round(hubless, 1).tolist())
+        r = {"exemplar": name, "seed": seed, "n": len(out), "hubs": int(hub.sum()), "interior_hubs": int(hi.sum()), "whole": round(float(np.mean(cnt == ntile)), 3),
+                 "over": int(np.sum(cnt > ntile)), "hubless_tiles": len(hubless), "counts": np.bincount(cnt).tolist(), "where_rows_bottom_up": grid.tolist(),
+                 "broken_xy": np.round(broken, 1).tolist(), "hubless_xy": np.round(hubless, 1).tolist()}
         if name == "suite":
             rep = fidelity(ex, out, region, eq5=False)
             S = np.asarray(rep.local["score"], float)
@@ -58,4 +62,4 @@ for name, (ex, rad, ntile) in cases.items():
                      worst=round(float(rep.local["worst"]["score"]), 3), worst_metric=rep.local["worst"]["metric"])
         rows.append(r)
         print({k: v for k, v in r.items() if k not in ("broken_xy", "hubless_xy")}, flush=True)
-        json.dump(rows, open(a.json, "w"), indent=1)
+        Path(a.json).write_text(json.dumps(rows, indent=1))

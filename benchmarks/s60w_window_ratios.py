@@ -7,18 +7,22 @@ of each metric over windows compares synth with the generator, not only the wors
     python benchmarks/s60w_window_ratios.py generator SEED NAME RES.npz
 """
 import sys
+from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, "benchmarks")
-import seam17_all50 as S17  # noqa: F401  (installs the oracle's fast dart)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 import fidelity_calibration as FC
 import seam13m_oracle50 as O
-from _runner import fidelity_suite
+import seam17_all50 as S17
+from _runner import SKIPPED, fidelity_suite
 
 import strew._fidelity as F
 from strew import Arrangement, Region
 
+if "--quick" in sys.argv[1:] or len(sys.argv) < 5:
+    print("s60w_window_ratios.py: skipped: 50x canvases (minutes); usage: synth OUT.npz NAME RES.npz | generator SEED NAME RES.npz")
+    sys.exit(SKIPPED)
 src, arg, name, path = sys.argv[1:5]
 ex = fidelity_suite().make_exemplar(name)
 if src == "synth":
