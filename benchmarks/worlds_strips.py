@@ -26,6 +26,12 @@ Definitions (the same for every method):
   inside one tile; per class the median window score, the mean score and the share of
   failing windows (score > 1), their ratios with bootstrap intervals over the tiles
   holding the windows' centres;
+- tiled / untiled: each ratio above over the untiled control's on the same lines (the
+  tiles of a tiled world and of its control paired by seed, tile size and position; the
+  interval from paired resamples). A strip ratio off 1 in the control is what the lines
+  see where no border exists (a world not stationary at the tile's scale, e.g. ornament's
+  hierarchy grown from the first-phase tiles' seed points); the double ratio is what the
+  seams add (world_stats.strip_ratios_against_control; helper w60d);
 - overlaps: pairs of elements whose intersection has area > 1e-9 (shapely, exact
   polygons), all pairs and those across tiles;
 - grid: the centres' density folded modulo the tile size across the borders (x and y
@@ -69,6 +75,7 @@ from world_stats import (  # noqa: E402
     overview_profile,
     profile_test,
     signed_profile,
+    strip_ratios_against_control,
     strip_units,
 )
 
@@ -401,6 +408,30 @@ def report(method: str, mode: str, s: dict) -> None:
               f"{f['failing']['difference_ci'][1]:+.3f}]); faithful {s['faithful']}", flush=True)
 
 
+def against_control(per: dict, kinds: list[str], boot: int, rng: np.random.Generator) -> dict:
+    """Per strip width: the strip-to-interior ratios of the tiled worlds over the untiled
+    controls' on the same lines (world_stats.strip_ratios_against_control), the units
+    (tiles) paired by world (seed and tile size) and position; worlds without a partner
+    (a seed counted once, --dedupe) are left out."""
+    ctl = {tuple(w.get("world", [0, 0])): w for w in per["untiled"]}
+    pairs = [(w, ctl[tuple(w.get("world", [0, 0]))]) for w in per["tiled"] if tuple(w.get("world", [0, 0])) in ctl]
+    out: dict = {"worlds": len(pairs)}
+    for key in [k for k in per["tiled"][0] if k.startswith("units_")]:
+        cat = [{f: np.concatenate([p[i][key][f] for p in pairs]) for f in ("strip", "inner", "strip_area", "inner_area", "strip_kind", "inner_kind")}
+               for i in (0, 1)]
+        r = strip_ratios_against_control(cat[0], cat[1], boot, rng)
+        out[key] = {"density": r["density"], "kind_share": dict(zip(kinds, r["kind_share"]))}
+    return out
+
+
+def report_against_control(method: str, r: dict) -> None:
+    for key in [k for k in r if k.startswith("units_")]:
+        v = r[key]
+        rows = [("density", v["density"])] + list(v["kind_share"].items())
+        print(f"  {method:8s} strips +-{key[6:]}, tiled / untiled on the same lines ({r['worlds']} world pairs): "
+              + "; ".join(f"{n} {_fmt(e['tiled'])} / {_fmt(e['control'])} = {_fmt(e['tiled_over_control'])}" for n, e in rows), flush=True)
+
+
 def _summarize_method(result: dict, method: str, meta: dict, per: dict, args: argparse.Namespace, out_path: Path, t_all: float) -> None:
     rng = np.random.default_rng(0)
     mres = {"world": meta}
@@ -410,6 +441,9 @@ def _summarize_method(result: dict, method: str, meta: dict, per: dict, args: ar
         s["cpu_s"] = [w["cpu_s"] for w in per[mode]]
         mres[mode] = s
         report(method, mode, s)
+    if "tiled" in per and "untiled" in per:  # the same lines in both: what the seams add (issue 19.4, w60d)
+        mres["tiled_over_untiled"] = against_control(per, meta["kinds"], args.boot, rng)
+        report_against_control(method, mres["tiled_over_untiled"])
     result["methods"][method] = mres
     result["total_s"] = time.perf_counter() - t_all
     out_path.write_text(json.dumps(result, indent=1, default=float) + "\n")  # after each method
