@@ -300,6 +300,107 @@ def _far_hub_room(state: SynthState) -> np.ndarray | None:
     return left
 
 
+FAR_HUB_ROOMS = 1.0
+""":func:`fill_holes` ends by putting far hubs with their rings into the rooms their
+output leaves at least this many times their exemplar's closest hub spacing wide
+(:func:`fill_far_hub_rooms`), up to :func:`_far_hub_room`; 0: off."""
+
+
+def fill_far_hub_rooms(state: SynthState, hub_left: np.ndarray, cand: np.ndarray, kids_of: np.ndarray, kid_ptr: np.ndarray,
+                       rebate: np.ndarray | None, ring: tuple[np.ndarray, np.ndarray | None], room: int | None = None,
+                       since: int = 0) -> int:
+    """Put a far hub (``_prepare._far_hubs``, far-apart clusters' discs) with its ring
+    into each room the output's hubs of its kind leave for one, while
+    :func:`_far_hub_room` (``hub_left``, (S,) int, decremented in place) allows; returns
+    the number of elements added. ``cand``, ``kids_of``/``kid_ptr``, ``rebate`` and
+    ``ring`` (``_ring_size_shares``) as :func:`fill_holes` has them.
+
+    Extension of §5.1, as :func:`fill_holes` (helper s61c, issue 13 point 1). A room is
+    a Delaunay circumcircle of the output's hubs of the kind, centred in the domain, at
+    least :data:`FAR_HUB_ROOMS` times the exemplar's closest hub-to-hub spacing wide,
+    beside a hub added since ``since``. Such a room holds a whole cluster, but its empty
+    circle among all elements is the room less the ring's reach, narrower than the
+    exemplar's largest empty circle, so :func:`fill_holes` passes it by: clusters
+    ``--varied`` p2s36 (8 discs 91.6-100 apart in 300 x 300, largest empty circle 74.9)
+    stopped at 84 discs at seed 1 (seeds 4 and 5 the same), 14 below the exemplar's
+    count over the region, with rooms up to 110 wide among them, and density[disc]
+    failed at 0.375 / 0.324 (``python benchmarks/s61c_rooms.py p2s36 1,2,3``). Rooms are
+    taken widest first; each takes the hub that fits at its centre and matches its
+    surroundings best, as :func:`fill_holes` chooses, with its ring children at their
+    exemplar offsets, or nothing.
+    """
+    prep = state.prep
+    far = getattr(prep, "_far_hubs", None)
+    if not FAR_HUB_ROOMS > 0 or far is None or state.region is None or state.n < 3:
+        return 0
+    far = far & prep.selected_elements & ~prep.void
+    ring_n, ring_p = ring
+    boundary = state.region.geometry.boundary
+    shape_test = shape_test_needed(prep)
+    reach = max(2.0 * float(prep.rc.max()), float(prep.min_dist.max()))
+    added = 0
+    for k in np.unique(prep.skind[far]):
+        mine_ex = np.flatnonzero(far & (prep.skind == k))
+        hk = cand[(prep.skind[cand] == k) & far[cand]]
+        if len(mine_ex) < 2 or len(hk) == 0 or hub_left[k] <= 0:
+            continue
+        p = prep.pos[mine_ex]
+        spacing = FAR_HUB_ROOMS * float(cKDTree(p).query(p, 2)[0][:, 1].min())
+        mine = np.flatnonzero((prep.skind[state.src] == k) & ~prep.void[state.src])
+        if len(mine) < 3 or not (mine >= since).any():
+            continue
+        cen, rad, tri = circumcircles(state.pos[mine])
+        keep = (rad >= spacing) & (mine[tri] >= since).any(axis=1)
+        keep[keep] = state.in_domain(cen[keep])
+        order = np.argsort(-rad[keep], kind="stable")
+        cen = cen[keep][order]
+        if len(cen) == 0:
+            continue
+        par = prep.parent[hk]
+        par_d = np.where(par >= 0, np.hypot(*(prep.pos[hk] - prep.pos[np.maximum(par, 0)]).T) + prep.r[hk], np.inf)
+        rbar = float(prep.rbar[hk].max())
+        reb = None if rebate is None else rebate[np.searchsorted(cand, hk)]
+        wall = shapely.distance(boundary, shapely.points(cen))
+        n0 = state.n
+        tree = cKDTree(state.pos)
+        for h in range(len(cen)):
+            if hub_left[k] <= 0 or (room is not None and added >= room):
+                break
+            c = cen[h]
+            near = np.r_[np.asarray(tree.query_ball_point(c, max(rbar, reach, spacing)), np.int64), np.arange(n0, state.n)]
+            off = state.pos[near] - c
+            dist = np.hypot(off[:, 0], off[:, 1])
+            s_ = state.src[near]
+            if np.any(dist[(prep.skind[s_] == k) & ~prep.void[s_]] < spacing):
+                continue  # a hub put into a nearby room took it
+            lim = np.maximum(prep.rc[hk][:, None] + prep.rc[s_][None, :], prep.min_dist[prep.skind[hk][:, None], prep.skind[s_][None, :]])
+            fits = np.all(dist[None, :] >= lim, axis=1) & (prep.r[hk] <= wall[h])
+            ids, rank = _ranked_fits(prep, hk, fits, par, par_d, near, off, dist, s_, rbar, reb, top=len(hk) if ring_p is not None else 5)
+            if ring_p is not None:
+                rank = _ring_size_first(state.rng, ring_n, ring_p, prep.skind, ids, rank)
+            for best in rank:
+                if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
+                    continue
+                kids = kids_of[kid_ptr[ids[best]] : kid_ptr[ids[best] + 1]]
+                if room is not None and added + 1 + len(kids) > room:
+                    continue
+                if len(kids):
+                    kp = c + map_offsets(np.broadcast_to(c, (len(kids), 2)), prep.pos[kids] - prep.pos[ids[best]])
+                    if not state.in_domain(kp).all() or state.conflicts(kp, kids).any():
+                        continue
+                    if np.any(shapely.distance(boundary, shapely.points(kp)) < prep.r[kids]):
+                        continue
+                    if shape_test and shape_clashes(state, kids, kp).any():
+                        continue
+                state.add(ids[best : best + 1], c[None], horizon=False)
+                if len(kids):
+                    state.add(kids, kp, horizon=False)
+                hub_left[k] -= 1
+                added += 1 + len(kids)
+                break
+    return added
+
+
 HOLE_RING_SIZES = True
 """:func:`fill_holes` draws the ring size of each hub it puts into a hole from its
 exemplar's whole rings (:func:`_ring_size_first`); False: the best Eq. 1 match's."""
@@ -543,6 +644,9 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
                 break
         if got == 0:
             break
+    if hub_left is not None:
+        added += fill_far_hub_rooms(state, hub_left, cand, kids_of, kid_ptr, rebate, (ring_n, ring_p) if ring_p is not None else (None, None),
+                                    None if room is None else room - added, since)
     return added
 
 
