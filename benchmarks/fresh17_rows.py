@@ -20,6 +20,11 @@ from strew.metrics import fidelity
 def exemplar(mk, cls, label):
     if label.startswith("v"):
         return mk.make_exemplar(cls, rng=int(label[1:]))
+    if not label.startswith("p"):
+        # an ``h`` label (``--harder``) used to be read as the --varied set of that index
+        # (helper s62d): refuse it, --harder rows have their own scripts (syn13z_rows.py,
+        # grw14y_rows.py, s62d_rows.py)
+        sys.exit(f"fresh17_rows.py reads only v and p labels, not {label!r}: use syn13z_rows.py / grw14y_rows.py for --harder rows")
     i, _, v = label[1:].partition("s")
     sets = _variants.VARIED.get(cls, []) + _variants.EDGE.get(cls, [])
     return mk.make_exemplar(cls, rng=int(v), **sets[int(i)])
