@@ -1,6 +1,8 @@
 """Helper s62d: counterfactuals (diagnosis only, not a change) on --harder synth rows: MODE=noswap
 (``_swap.SWAP = False``) or MODE=whole (``_displace._inner_density`` takes the whole frame's count for a kind of
-one size class whose inner frame holds fewer than its share by more than one binomial standard error).
+one size class whose inner frame holds fewer than its share by more than one binomial standard error), MODE=window
+(where the metric's test finds the exemplar's frame a window, wall reach 0, every kind's target is the whole frame's
+count), MODE=swapwindow (the same, for fill_swapped only).
 
     MODE=noswap PYTHONPATH=src:benchmarks python benchmarks/s62d_counter.py two_sizes:h8s36,two_sizes:h9s36 1-6
 """
@@ -35,7 +37,7 @@ elif mode == "whole":
         return out
 
     DP._inner_density = whole
-elif mode == "window":
+elif mode in ("window", "swapwindow"):
     # where the metric's own test finds the exemplar's frame a window, not a wall (_fidelity._wall_reach = 0),
     # every kind's target is its whole frame's count (the reach is set per exemplar by the rows script: REACH)
     _orig = DP._inner_density
@@ -43,7 +45,7 @@ elif mode == "window":
 
     def window(prep, margin):
         out = _orig(prep, margin)
-        if REACH["v"] != 0.0:
+        if REACH["v"] != 0.0 or (mode == "swapwindow" and not ACTIVE[0]):
             return out
         for s, dom in enumerate(prep.domains):
             if not prep.selected[s]:
@@ -56,6 +58,18 @@ elif mode == "window":
         return out
 
     DP._inner_density = window
+    ACTIVE = [False]
+    if mode == "swapwindow":  # only fill_swapped's target (it reads _displace._inner_density at call time)
+        _fs = SW.fill_swapped
+
+        def fs(state):
+            ACTIVE[0] = True
+            try:
+                return _fs(state)
+            finally:
+                ACTIVE[0] = False
+
+        SW.fill_swapped = fs
     import strew._fidelity as F
     _wr = F._wall_reach
 print("MODE", mode, flush=True)
