@@ -306,6 +306,43 @@ output leaves at least this many times their exemplar's closest hub spacing wide
 (:func:`fill_far_hub_rooms`), up to :func:`_far_hub_room`; 0: off."""
 
 
+def _put_with_children(state: SynthState, c: np.ndarray, ids: np.ndarray, order, kids_of: np.ndarray, kid_ptr: np.ndarray,
+                       boundary, shape_test: bool, room_left: int | None) -> tuple[int, int]:
+    """Put the first of ``ids[order]`` that fits at ``c`` (shape (2,)) into ``state``, with
+    the smaller elements that lean on it (its children, ``_prepare.parents``) at their
+    exemplar offsets, or nothing; returns (the exemplar element put, or -1; the number of
+    elements added). A candidate whose children would leave the domain, collide, cross
+    ``boundary`` (a region's edge, or None) or take more than ``room_left`` elements is
+    passed over. Shared by :func:`fill_holes`, :func:`fill_far_hub_rooms` and
+    :func:`fill_hub_rooms`.
+
+    The element comes with its children or not at all: a copy of its exemplar
+    neighbourhood's structure (§5.1), not a bare parent (clusters at 50x the exemplar's
+    area: 42 of the 47 discs put into holes stood without their ring of dots, and every
+    window failing the local map failed nn[disc>dot], up to 6.5x its tolerance).
+    """
+    prep = state.prep
+    for best in order:
+        if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
+            continue
+        kids = kids_of[kid_ptr[ids[best]] : kid_ptr[ids[best] + 1]]
+        if room_left is not None and 1 + len(kids) > room_left:
+            continue
+        if len(kids):
+            kp = c + map_offsets(np.broadcast_to(c, (len(kids), 2)), prep.pos[kids] - prep.pos[ids[best]])
+            if not state.in_domain(kp).all() or state.conflicts(kp, kids).any():
+                continue
+            if boundary is not None and np.any(shapely.distance(boundary, shapely.points(kp)) < prep.r[kids]):
+                continue
+            if shape_test and shape_clashes(state, kids, kp).any():
+                continue
+        state.add(ids[best : best + 1], c[None], horizon=False)
+        if len(kids):
+            state.add(kids, kp, horizon=False)
+        return int(ids[best]), 1 + len(kids)
+    return -1, 0
+
+
 def fill_far_hub_rooms(state: SynthState, hub_left: np.ndarray, cand: np.ndarray, kids_of: np.ndarray, kid_ptr: np.ndarray,
                        rebate: np.ndarray | None, ring: tuple[np.ndarray, np.ndarray | None], room: int | None = None,
                        since: int = 0) -> int:
@@ -378,26 +415,11 @@ def fill_far_hub_rooms(state: SynthState, hub_left: np.ndarray, cand: np.ndarray
             ids, rank = _ranked_fits(prep, hk, fits, par, par_d, near, off, dist, s_, rbar, reb, top=len(hk) if ring_p is not None else 5)
             if ring_p is not None:
                 rank = _ring_size_first(state.rng, ring_n, ring_p, prep.skind, ids, rank)
-            for best in rank:
-                if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
-                    continue
-                kids = kids_of[kid_ptr[ids[best]] : kid_ptr[ids[best] + 1]]
-                if room is not None and added + 1 + len(kids) > room:
-                    continue
-                if len(kids):
-                    kp = c + map_offsets(np.broadcast_to(c, (len(kids), 2)), prep.pos[kids] - prep.pos[ids[best]])
-                    if not state.in_domain(kp).all() or state.conflicts(kp, kids).any():
-                        continue
-                    if np.any(shapely.distance(boundary, shapely.points(kp)) < prep.r[kids]):
-                        continue
-                    if shape_test and shape_clashes(state, kids, kp).any():
-                        continue
-                state.add(ids[best : best + 1], c[None], horizon=False)
-                if len(kids):
-                    state.add(kids, kp, horizon=False)
+            placed, n_add = _put_with_children(state, c, ids, rank, kids_of, kid_ptr, boundary, shape_test,
+                                               None if room is None else room - added)
+            if placed >= 0:
                 hub_left[k] -= 1
-                added += 1 + len(kids)
-                break
+                added += n_add
     return added
 
 
@@ -614,34 +636,14 @@ def fill_holes(state: SynthState, room: int | None = None, since: int = 0) -> in
             ids, order = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar, rebate, top=len(cand) if ring_p is not None else 5)
             if ring_p is not None:
                 order = _ring_size_first(state.rng, ring_n, ring_p, prep.skind, ids, order)
-            for best in order:
-                if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
-                    continue
-                # the element comes with the smaller elements that lean on it (its
-                # children, ``_prepare.parents``), at their exemplar offsets, or not at
-                # all: a copy of its exemplar neighbourhood's structure (§5.1), not a
-                # bare parent (clusters at 50x the exemplar's area: 42 of the 47 discs
-                # put into holes stood without their ring of dots, and every window
-                # failing the local map failed nn[disc>dot], up to 6.5x its tolerance)
-                kids = kids_of[kid_ptr[ids[best]] : kid_ptr[ids[best] + 1]]
-                if room is not None and added + 1 + len(kids) > room:
-                    continue
-                if len(kids):
-                    kp = c + map_offsets(np.broadcast_to(c, (len(kids), 2)), prep.pos[kids] - prep.pos[ids[best]])
-                    if not state.in_domain(kp).all() or state.conflicts(kp, kids).any():
-                        continue
-                    if boundary is not None and np.any(shapely.distance(boundary, shapely.points(kp)) < prep.r[kids]):
-                        continue
-                    if shape_test and shape_clashes(state, kids, kp).any():
-                        continue
-                state.add(ids[best : best + 1], c[None], horizon=False)
-                if len(kids):
-                    state.add(kids, kp, horizon=False)
+            # the element comes with its children or not at all (see _put_with_children)
+            placed, n_add = _put_with_children(state, c, ids, order, kids_of, kid_ptr, boundary, shape_test,
+                                               None if room is None else room - added)
+            if placed >= 0:
                 if hub_left is not None:
-                    hub_left[prep.skind[ids[best]]] -= 1
-                added += 1 + len(kids)
+                    hub_left[prep.skind[placed]] -= 1
+                added += n_add
                 got += 1
-                break
         if got == 0:
             break
     if hub_left is not None:
@@ -774,26 +776,11 @@ def fill_hub_rooms(state: SynthState, room: int | None = None, since: int = 0) -
             ids, rank = _ranked_fits(prep, cand, fits, par, par_d, near, off, dist, s_, rbar, rebate, top=len(cand) if ring_p is not None else 5)
             if ring_p is not None:
                 rank = _ring_size_first(state.rng, ring_n, ring_p, prep.skind, ids, rank)
-            for best in rank:
-                if shape_test and shape_clashes(state, ids[best : best + 1], c[None])[0]:
-                    continue
-                kids = kids_of[kid_ptr[ids[best]] : kid_ptr[ids[best] + 1]]
-                if room is not None and added + 1 + len(kids) > room:
-                    continue
-                if len(kids):
-                    kp = c + map_offsets(np.broadcast_to(c, (len(kids), 2)), prep.pos[kids] - prep.pos[ids[best]])
-                    if not state.in_domain(kp).all() or state.conflicts(kp, kids).any():
-                        continue
-                    if np.any(shapely.distance(boundary, shapely.points(kp)) < prep.r[kids]):
-                        continue
-                    if shape_test and shape_clashes(state, kids, kp).any():
-                        continue
-                state.add(ids[best : best + 1], c[None], horizon=False)
-                if len(kids):
-                    state.add(kids, kp, horizon=False)
-                added += 1 + len(kids)
+            placed, n_add = _put_with_children(state, c, ids, rank, kids_of, kid_ptr, boundary, shape_test,
+                                               None if room is None else room - added)
+            if placed >= 0:
+                added += n_add
                 left -= 1
-                break
     return added
 
 
