@@ -343,6 +343,23 @@ def _put_with_children(state: SynthState, c: np.ndarray, ids: np.ndarray, order,
     return -1, 0
 
 
+def _hub_room_centres(state: SynthState, k: int, spacing: float, since: int) -> np.ndarray:
+    """Rooms for one more hub of kind ``k`` (``Prepared.skind``) in the output: centres of
+    the Delaunay circumcircles of its hubs at least ``spacing`` wide (Voronoi vertices
+    that far from every hub), in the domain, beside a hub added since ``since``, widest
+    first; shape (m, 2), m = 0 where the kind has fewer than 3 hubs or none new.
+    Shared by :func:`fill_far_hub_rooms` and :func:`fill_hub_rooms`."""
+    prep = state.prep
+    mine = np.flatnonzero((prep.skind[state.src] == k) & ~prep.void[state.src])
+    if len(mine) < 3 or not (mine >= since).any():
+        return np.empty((0, 2))
+    cen, rad, tri = circumcircles(state.pos[mine])
+    keep = (rad >= spacing) & (mine[tri] >= since).any(axis=1)
+    keep[keep] = state.in_domain(cen[keep])
+    order = np.argsort(-rad[keep], kind="stable")
+    return cen[keep][order]
+
+
 def fill_far_hub_rooms(state: SynthState, hub_left: np.ndarray, cand: np.ndarray, kids_of: np.ndarray, kid_ptr: np.ndarray,
                        rebate: np.ndarray | None, ring: tuple[np.ndarray, np.ndarray | None], room: int | None = None,
                        since: int = 0) -> int:
@@ -383,14 +400,7 @@ def fill_far_hub_rooms(state: SynthState, hub_left: np.ndarray, cand: np.ndarray
             continue
         p = prep.pos[mine_ex]
         spacing = FAR_HUB_ROOMS * float(cKDTree(p).query(p, 2)[0][:, 1].min())
-        mine = np.flatnonzero((prep.skind[state.src] == k) & ~prep.void[state.src])
-        if len(mine) < 3 or not (mine >= since).any():
-            continue
-        cen, rad, tri = circumcircles(state.pos[mine])
-        keep = (rad >= spacing) & (mine[tri] >= since).any(axis=1)
-        keep[keep] = state.in_domain(cen[keep])
-        order = np.argsort(-rad[keep], kind="stable")
-        cen = cen[keep][order]
+        cen = _hub_room_centres(state, k, spacing, since)
         if len(cen) == 0:
             continue
         par = prep.parent[hk]
@@ -746,14 +756,7 @@ def fill_hub_rooms(state: SynthState, room: int | None = None, since: int = 0) -
         par_d = np.where(par >= 0, np.hypot(*(prep.pos[cand] - prep.pos[np.maximum(par, 0)]).T) + prep.r[cand], np.inf)
         rbar = float(prep.rbar[cand].max())
         rebate = _own_ring_rebate(prep, cand, kids_of, kid_ptr, rbar) if HOLE_RING_REBATE else None
-        mine = np.flatnonzero((prep.skind[state.src] == k) & ~prep.void[state.src])
-        if len(mine) < 3 or not (mine >= since).any():
-            continue
-        cen, rad, tri = circumcircles(state.pos[mine])
-        keep = (rad >= spacing) & (mine[tri] >= since).any(axis=1)
-        keep[keep] = state.in_domain(cen[keep])
-        order = np.argsort(-rad[keep], kind="stable")
-        cen = cen[keep][order]
+        cen = _hub_room_centres(state, k, spacing, since)
         if len(cen) == 0:
             continue
         wall = shapely.distance(boundary, shapely.points(cen))
