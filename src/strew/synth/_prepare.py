@@ -69,6 +69,10 @@ class Prepared:
     rc : (n,) float
         Collision radius of each element (see :func:`collision_radii`): r_e where the
         exemplar gives radii, else r_e shrunk per kind to the exemplar's spacing.
+    frame_window : (exemplars,) bool
+        The exemplar's frame (its region) is a window on a larger texture, not a wall
+        that biases its kind shares (see :func:`frame_is_window`); False for an
+        exemplar without a region.
     """
 
     names: tuple[str, ...]
@@ -110,6 +114,7 @@ class Prepared:
     follow: np.ndarray = field(default_factory=lambda: np.zeros(0, bool))
     selection: Selection | None = None
     shape_clearance: np.ndarray | None = None  # (kinds, kinds), see _shapes.clearance
+    frame_window: np.ndarray = field(default_factory=lambda: np.zeros(0, bool))
 
     def __len__(self) -> int:
         return len(self.kind)
@@ -589,6 +594,8 @@ def prepare(selection: Selection, *, k: int = 5, kind_cost: float = 1.0) -> Prep
         parent=parents(pos, cls, sources, void, depth_all, kind, follow=(follow := np.zeros(len(arr), bool)),
                        anchor=anchor),
         follow=follow,
+        frame_window=np.array([ex.region is not None and frame_is_window(pos[ids], kind[ids], r[ids], ex.region.geometry)
+                               for ex, ids in ((ex, np.flatnonzero((sources == i) & ~void)) for i, ex in enumerate(exemplars))], bool),
     )
     prep._anchors = anchor  # _grow.anchors: the same mask, with the centres (_stand_around)
     # hubs that n(e) reaches across the gap in exemplars without anchors (_far_hubs):
@@ -1362,6 +1369,83 @@ def parents(pos: np.ndarray, cls: np.ndarray, source: np.ndarray, void: np.ndarr
                     cut_anchor = mine & (nkids < most) & (depth[ids] < 1.25 * far)
                     out[ids[cut_anchor]] = -3
     return out
+
+
+WALL_HELD = 0.75
+"""A kind is held inside its exemplar's frame by its size where none of its centres
+comes nearer the frame than this share of its largest bounding radius (see
+:func:`frame_is_window`)."""
+
+WALL_SPREAD = 1.25
+"""Kinds keep off their exemplar's frame by different distances where the farthest
+kept is at least this many times the nearest (see :func:`frame_is_window`)."""
+
+
+def frame_is_window(pos: np.ndarray, kind: np.ndarray, r: np.ndarray, frame) -> bool:
+    """Whether an exemplar's frame is a window on a larger texture rather than a wall
+    that sorts its kinds by size along it.
+
+    Extension of §5.1 (§7: mixes of sizes); the paper's exemplars have no frame of
+    their own. A frame that keeps every element wholly inside it keeps each kind's
+    centres off it by about the kind's radius: where the kinds differ in size, the band
+    between the nearest approaches of the smaller and the larger kinds holds only the
+    smaller ones, and the frame's inner part (shrunk by a margin, as
+    ``_displace._inner_density`` counts) is the unbiased sample of the kind mix. Where
+    the kinds keep off by about the same distance (sizes within a quarter of each
+    other), or some kind crosses the frame as a crop's elements do, no band is sorted
+    and the whole frame is the sample, and the bigger one.
+
+    With ``m_k`` the least distance of kind k's centres to the frame's boundary (0 for a
+    centre outside it) and ``r_k`` its largest bounding radius, the frame is a wall when
+    there are two kinds or more, each is held inside by its size (``m_k >=``
+    :data:`WALL_HELD` ``r_k``) and they keep off by different distances (``max m >=``
+    :data:`WALL_SPREAD` ``min m``); otherwise a window. (The fidelity metric decides
+    which of its exemplar's elements it counts kinds over by the same reading of a
+    frame: helper s62d, ``benchmarks/results/s62d_notes.md``.)
+
+    Parameters
+    ----------
+    pos : (n, 2) float
+        Centres of the exemplar's visible elements.
+    kind : (n,) int
+    r : (n,) float
+        Bounding radii.
+    frame : shapely Polygon
+        The exemplar's region.
+
+    Returns
+    -------
+    bool
+        True for a window (also for one kind, or none: no kind is kept off more than
+        another), False for a wall.
+
+    Examples
+    --------
+    Stones of radius 10 and pebbles of radius 4, each kept off the frame by its radius:
+    a wall. Pebbles of radius 9 kept off by 9: a window.
+
+    >>> import numpy as np, shapely
+    >>> box = shapely.box(0, 0, 100, 100)
+    >>> kind = np.array([0, 0, 1, 1])
+    >>> pos = np.array([[10.0, 50], [50, 10], [4, 30], [30, 4]])
+    >>> frame_is_window(pos, kind, np.array([10.0, 10, 4, 4]), box)
+    False
+    >>> pos = np.array([[10.0, 50], [50, 10], [9, 30], [30, 9]])
+    >>> frame_is_window(pos, kind, np.array([10.0, 10, 9, 9]), box)
+    True
+    """
+    import shapely
+
+    kind = np.asarray(kind)
+    kinds = np.unique(kind)
+    if len(kinds) < 2:
+        return True
+    pts = shapely.points(np.asarray(pos, float))
+    depth = np.where(shapely.contains(frame, pts), shapely.distance(frame.boundary, pts), 0.0)
+    m = np.array([depth[kind == k].min() for k in kinds])
+    rk = np.array([np.asarray(r, float)[kind == k].max() for k in kinds])
+    wall = bool(np.all(m >= WALL_HELD * rk) and m.max() >= WALL_SPREAD * m.min())
+    return not wall
 
 
 def _spacing(p: np.ndarray) -> float:

@@ -19,6 +19,44 @@ SWAP = True
 """:func:`grow` swaps elements of a kind above its exemplar density for a kind of the
 same size class below it (see :func:`fill_swapped`)."""
 
+WINDOW_WHOLE = True
+""":func:`fill_swapped` takes the whole frame's count per kind as its target where the
+exemplar's frame is a window (``Prepared.frame_window``; see :func:`_swap_density`)."""
+
+
+def _swap_density(prep, margin: float, s: int) -> np.ndarray:
+    """(S,) float: the density per kind that :func:`fill_swapped` brings exemplar ``s``'s
+    kinds to: :func:`~strew.synth._displace._inner_density`, except where the exemplar's
+    frame is a window (``Prepared.frame_window``, :func:`~strew.synth._prepare.frame_is_window`),
+    where each kind's count over the whole domain per unit of its area.
+
+    Extension of §5.1 (§7: mixes of sizes): the paper has no density target per kind
+    (its growth copies neighbourhoods and the kind mix follows). The inner frame (the
+    domain shrunk by ``margin``) leaves out the band along a wall where only the smaller
+    kinds reach. Along a window there is no such band, and the inner frame is only the
+    smaller sample: in a tiny exemplar with a rare kind it can be short by chance.
+    Measured (helper s62d, issue 13 point 1; ``benchmarks/results/s62d_notes.md``):
+    two sizes of one size class, ratio 0.75 and 0.85 (--harder h8 and h9, variant seed
+    36, 3.5x), 43 stones and 16 pebbles, 40 and 15: the inner frame holds 6 of 16 and 6 of
+    15 pebbles (0.64 and 0.69 of the whole frame's count per area), fill_swapped turned
+    the output's pebbles into stones down to that count, and 17-36 % too few pebbles
+    were left, stones without a pebble beside them (nn[stone>pebble] failing on 4 and 5
+    of 6 seeds; no swap pass at all: 6/6 on both). Walls keep the inner count: two sizes
+    ratio 0.7 (h3s8, h10s8), the rows fill_swapped was made for, whose pebbles keep
+    nearer the frame than the stones (h10s8's inner frame is as pebble-poor: 8 of 20,
+    yet the whole-frame count there loses nn[stone>stone]). Only this pass reads it:
+    the whole count for every caller of ``_inner_density`` moved single-kind stones and
+    clusters, whose frames are windows too.
+    """
+    from ._displace import _inner_density  # (lazy: _displace imports _grow)
+
+    dens = _inner_density(prep, margin)
+    if WINDOW_WHOLE and len(prep.frame_window) > s and prep.frame_window[s]:
+        mine = prep.selected_elements & ~prep.void & (prep.source == s)
+        kinds = np.unique(prep.skind[mine])
+        dens[kinds] = np.bincount(prep.skind[mine], minlength=len(dens))[kinds] / float(prep.domains[s].area)
+    return dens
+
 
 def fill_swapped(state: SynthState) -> int:
     """Turn output elements of a kind above its exemplar's density into elements of a
@@ -38,14 +76,14 @@ def fill_swapped(state: SynthState) -> int:
     472-475 stones against 571, 192-199 pebbles against 152.
 
     Single exemplar only; kinds with 10 elements or more. Elements of a kind above its
-    density (inside the region shrunk by two of the largest collision radii), visited
+    density (:func:`_swap_density`: the exemplar's inner frame, or its whole frame where
+    that is a window; counted inside the region shrunk by two of the largest collision
+    radii), visited
     in the ``rng``'s order, take the exemplar element of a kind below its density
     (drawn in the ``rng``'s order among those that fit) that clears every element by
     ``max(rc_p + rc_q, min_dist)``, until either count reaches its density. Exemplars
     whose shapes need testing (``shape_test_needed``) are left alone.
     """
-    from ._displace import _inner_density  # (lazy: _displace imports _grow)
-
     prep = state.prep
     if not SWAP or state.n < 3 or state.region is None or np.count_nonzero(prep.selected) != 1 or shape_test_needed(prep):
         # discs only: a swapped element's shape would be tested against itself
@@ -60,7 +98,7 @@ def fill_swapped(state: SynthState) -> int:
     if len(kinds) < 2:
         return 0
     margin = 2.0 * float(prep.rc.max())
-    dens = _inner_density(prep, margin)
+    dens = _swap_density(prep, margin, s)
     inner = state.region.geometry.buffer(-margin)
     if inner.is_empty or inner.area <= 0.25 * state.region.geometry.area or not np.all(np.isfinite(dens[kinds])):
         return 0
