@@ -78,8 +78,7 @@ def fill_swapped(state: SynthState) -> int:
     Single exemplar only; kinds with 10 elements or more. Elements of a kind above its
     density (:func:`_swap_density`: the exemplar's inner frame, or its whole frame where
     that is a window; counted inside the region shrunk by two of the largest collision
-    radii), visited
-    in the ``rng``'s order, take the exemplar element of a kind below its density
+    radii), visited in the ``rng``'s order, take the exemplar element of a kind below its density
     (drawn in the ``rng``'s order among those that fit) that clears every element by
     ``max(rc_p + rc_q, min_dist)``, until either count reaches its density. Exemplars
     whose shapes need testing (``shape_test_needed``) are left alone.
