@@ -12,7 +12,8 @@ In each process the first growth is the smallest width's (W = the least of
 apart as ``first``; the timed growth follows, warm. Printed per size: CPU seconds per
 1,000 elements (the best of ``--repeat``), and over all sizes the exponent ``b`` of
 ``CPU s ~ n^b`` (least squares on the logs; 1.0 is linear) and, with ``--against``,
-each size's CPU ratio this/REV. ``--profile`` runs cProfile around the timed growth
+each size's CPU ratio this/REV and whether the two outputs' digests (positions and
+outlines' WKB, as ``benchmarks/grow_hashes.py``) are equal. ``--profile`` runs cProfile around the timed growth
 (one run, its CPU seconds not used for the figures) and prints the share of the growth
 of each function in :data:`WATCH` at each size, so what grows faster than the count
 shows up. The figures go to ``benchmarks/results/g63v_flow_scaling.json`` (``--json``).
@@ -86,7 +87,11 @@ else:
     c = time.process_time()
     out = one(W)
     g = time.process_time() - c
-print(json.dumps({"cpu": g, "n": len(out), "first_cpu": first_s, "first_n": len(first), "shares": shares}))
+import hashlib, shapely
+h = hashlib.sha256()
+h.update(np.ascontiguousarray(out.xy, dtype=float).tobytes())
+h.update(b"".join(shapely.to_wkb(np.asarray(out.geometry))))
+print(json.dumps({"cpu": g, "n": len(out), "first_cpu": first_s, "first_n": len(first), "shares": shares, "digest": h.hexdigest()[:16]}))
 """
 
 
@@ -128,16 +133,18 @@ def main() -> None:
                 for k, src in trees.items():
                     got[k][W].append(run(src, W, W0, args.profile))
                     r = got[k][W][-1]
-                    print(f"  {k} W={W:g}: {r['n']} el, {r['cpu']:.2f} CPU s; first (W={W0:g}, {r['first_n']} el) {r['first_cpu']:.2f} CPU s", flush=True)
+                    print(f"  {k} W={W:g}: {r['n']} el, {r['cpu']:.2f} CPU s, digest {r['digest']}; first (W={W0:g}, {r['first_n']} el) {r['first_cpu']:.2f} CPU s", flush=True)
         best = {k: {W: min(got[k][W], key=lambda r: r["cpu"]) for W in widths} for k in trees}
         for k in trees:
             ns = [best[k][W]["n"] for W in widths]
             cpus = [best[k][W]["cpu"] for W in widths]
             for W, n, c in zip(widths, ns, cpus):
                 row = dict(n=n, cpu_s=c, cpu_s_per_1000=1000.0 * c / n, el_per_cpu_s=n / c,
-                           first_cpu_s=min(r["first_cpu"] for r in got[k][W]), all_cpu_s=[round(r["cpu"], 3) for r in got[k][W]])
+                           first_cpu_s=min(r["first_cpu"] for r in got[k][W]), all_cpu_s=[round(r["cpu"], 3) for r in got[k][W]],
+                           digest=got[k][W][0]["digest"])
                 if args.against and k == "this":
                     row["cpu_ratio"] = (c / n) / (best[args.against][W]["cpu"] / best[args.against][W]["n"])
+                    row["same_digest"] = got[k][W][0]["digest"] == got[args.against][W][0]["digest"]
                 bench.row(f"{k} W={W:g}", **row)
             bench.row(f"{k} exponent", exponent=exponent(ns, cpus), per_1000_growth=(cpus[-1] / ns[-1]) / (cpus[0] / ns[0]), n_growth=ns[-1] / ns[0])
         if args.profile:

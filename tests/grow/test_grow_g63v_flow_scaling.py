@@ -13,6 +13,9 @@ replaces, on every call of a hexagonal lattice grown along a field turning 90 de
   shapely call per kind; g60v's of stop 60) places every element where
   :func:`~strew.grow._flow_net._place` one by one does: the same positions, outlines
   (WKB), rotations and steps;
+- :func:`strew.grow._flow_net.triangulation` (the last triangulation kept, for the same
+  positions) gives the simplices and neighbour lists a fresh ``Delaunay`` gives, and
+  is kept at least once;
 - :meth:`strew.grow._collide._Collide.turned_ring` keeps as many outlines as a flow
   growth of several thousand elements turns (each its own rotation), and every kept
   outline is the product made afresh.
@@ -104,6 +107,22 @@ def test_network_pass_trims_answer_as_what_they_replace(monkeypatch):
         seen["settled"] += len(moves)
         return out
 
+    real_tri = FN.triangulation
+
+    def tri(pts, g=None):
+        from scipy.spatial import Delaunay
+
+        was = FN._LAST_TRI.get(g) if g is not None else None
+        got = real_tri(pts, g)
+        fresh = Delaunay(pts)
+        assert np.array_equal(got.simplices, fresh.simplices)
+        for a, b in zip(got.vertex_neighbor_vertices, fresh.vertex_neighbor_vertices):
+            assert np.array_equal(a, b)
+        if was is not None and got is was[1]:
+            seen["kept"] = seen.get("kept", 0) + 1
+        return got
+
+    monkeypatch.setattr(FN, "triangulation", tri)
     monkeypatch.setattr(FN, "placed", placed)
     monkeypatch.setattr(FD, "placed", placed)
     monkeypatch.setattr(FN, "fitted_moves", fitted)
@@ -112,6 +131,7 @@ def test_network_pass_trims_answer_as_what_they_replace(monkeypatch):
     monkeypatch.setattr(FN, "_place_all", place_all)
     _hexflow()
     assert seen["placed"] > 10 and seen["fitted"] > 2 and seen["moved"] > 50 and seen["place_all"] > 2 and seen["settled"] > 50, seen
+    assert seen.get("kept", 0) > 0, seen
 
 
 def test_turned_ring_keeps_a_flow_growths_outlines(monkeypatch):
