@@ -21,7 +21,7 @@ shows up. The figures go to ``benchmarks/results/g63v_flow_scaling.json`` (``--j
 The machine may be shared: compare only the ratios and exponents of one run.
 
 Run: ``PYTHONPATH=src:benchmarks python benchmarks/g63v_flow_scaling.py [--against main]
-[--widths 20,36,63] [--repeat 1] [--profile]``.
+[--widths 20,36,63] [--repeat 1] [--profile] [--src DIR]``.
 """
 
 from __future__ import annotations
@@ -114,6 +114,7 @@ def main() -> None:
         p.add_argument("--against", metavar="REV", default=None, help="also time the tree at git revision REV")
         p.add_argument("--widths", default="20,36,63", help="region widths in spacings (comma-separated)")
         p.add_argument("--profile", action="store_true", help="cProfile shares per size (one run, no timings)")
+        p.add_argument("--src", default=None, help="the src folder timed as this tree (default: this checkout's)")
 
     args = parse_args(__doc__, extra)
     widths = [float(v) for v in args.widths.split(",")]
@@ -121,7 +122,7 @@ def main() -> None:
     root = Path(__file__).resolve().parents[1]
     json_path = args.json or str(root / "benchmarks" / "results" / ("g63v_flow_scaling_profile.json" if args.profile else "g63v_flow_scaling.json"))
     with tempfile.TemporaryDirectory() as tmp:
-        trees = {"this": str(root / "src")}
+        trees = {"this": str(Path(args.src).resolve() if args.src else root / "src")}
         if args.against:
             archive = subprocess.run(["git", "archive", args.against, "src"], cwd=root, capture_output=True, check=True).stdout
             subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
