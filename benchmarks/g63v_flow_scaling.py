@@ -43,6 +43,8 @@ WATCH = (
     "advance", "relax_network", "_relax_once", "_band_passes", "insert_stretched", "reshape_shear",
     "close_holes", "densify", "_settle_steps", "_push_apart", "_resolve", "_undo_worse", "_undo_gaps",
     "_undo_circles", "_undo_turn", "_six_share", "_turns", "_far_points", "_six_sites", "_far_circles",
+    "_far_circles_at", "triangulation", "_place_all", "_place", "placed", "turned_ring", "element_geometry",
+    "regrow_sheared", "_regrow", "factorized",
     "_contact_lengths", "memo", "_key", "_delaunay_bonds", "fitted_moves", "saved_moves", "undo_moves",
     "overlapping_many", "snapshot", "restore", "place", "choose", "relax_window", "flow_respace",
     "close_gaps", "fill_holes", "settle", "_relax_around", "relax_positions",
@@ -80,7 +82,7 @@ if prof:
     st = pstats.Stats(pr).stats
     total = max(v[3] for v in st.values())
     for (f, line, name), v in st.items():
-        if "strew" in f:
+        if "strew" in f or name == "factorized":
             key = name
             shares[key] = shares.get(key, 0.0) + v[3] / total
 else:

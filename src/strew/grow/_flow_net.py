@@ -133,7 +133,7 @@ def triangulation(pts: np.ndarray, g=None):
     (:func:`_far_circles`), and the next pass starts from the positions whose empty
     circles the last one measured; on the hexagonal lattice along the 90 degree field
     over 63 x 42 spacings, 418 triangulations of 2,980 elements made 12% of the
-    growth's time, ``benchmarks/g63v_flow_scaling.py --profile``.)"""
+    growth's time under cProfile, ``benchmarks/results/g63v_profile_main_shares.txt``.)"""
     from scipy.spatial import Delaunay
 
     if g is None:
