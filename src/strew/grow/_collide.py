@@ -130,8 +130,18 @@ def _big_overlaps(A: Any, B: np.ndarray) -> np.ndarray:
     return out
 
 
-#: most outlines :meth:`_Collide.turned_ring` keeps
-TURNED_KEEP = 1024
+#: most outlines :meth:`_Collide.turned_ring` keeps. In flow mode every element has
+#: its own rotation, and the network passes (:mod:`strew.grow._flow_net`) put every
+#: moved element's outline again at each step: with 1,024 kept, a flow growth of
+#: more elements than that cleared the store before the next pass came back to an
+#: element, so it missed from about 1,000 elements on (the hexagonal lattice along
+#: the 90 degree field, 63 x 42 spacings, 2,980 elements: 181,318 calls at 64
+#: microseconds each under cProfile, against 16 at 281 elements, where all were
+#: kept): a cost per element that grew with the count (issue 14 point 5,
+#: ``benchmarks/g63v_flow_scaling.py``). An outline of a few corners is some 300
+#: bytes with its key, so this many is about 20 MB at most (the same products either
+#: way: byte-identical output).
+TURNED_KEEP = 1 << 16
 
 
 class _Collide:

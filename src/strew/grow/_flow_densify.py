@@ -50,7 +50,7 @@ import numpy as np
 
 from ._flow_holes import close_ring, open_ring
 from ._flow_kernels import boundary_distance
-from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, relax_network, six_spacing
+from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, placed, relax_network, six_spacing
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
 from ._near_kernels import ball_counts
@@ -113,7 +113,7 @@ def _score(g, grid: np.ndarray | None) -> tuple[float, float, int]:
     from scipy.spatial import cKDTree
 
     L = g.l
-    xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+    xy = g.pos[placed(g)]
     q = xy[boundary_distance(g.region, xy) > 2.0 * L] if g.region is not None else xy
     if not len(q):
         return 0.0, 1.0, 0
@@ -166,7 +166,7 @@ def _round(g, target: int, skip, box: list) -> tuple[int, np.ndarray]:
 
     p = g.p
     L = g.l
-    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.intp)
+    els = placed(g)
     if len(els) < 7 or len(g.order) >= target:
         return 0, np.zeros((0, 2))
     pts0 = g.pos[els].copy()

@@ -85,6 +85,7 @@ it), bond lengths rather than the matched ring offsets as the targets, iterated.
 from __future__ import annotations
 
 import math
+import weakref
 
 import numpy as np
 
@@ -116,12 +117,43 @@ def hexagonal_reference(ref) -> bool:
     return bool((deg[inner] == 6).mean() >= 0.9 and float(ln.std()) <= 0.1 * float(ln.mean()))
 
 
-def _delaunay_bonds(pts: np.ndarray, cut: float) -> np.ndarray:
+#: grower -> (the positions' bytes, their triangulation): the last Delaunay
+#: triangulation made by :func:`triangulation` (kept outside the grower's state, so
+#: :func:`strew.grow._flow_retry.snapshot` does not copy it)
+_LAST_TRI: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def triangulation(pts: np.ndarray, g=None):
+    """``scipy.spatial.Delaunay(pts)``; with the grower ``g``, the one made last for
+    it where ``pts`` holds the same values (compared by bytes: the same input, so the
+    same triangulation).
+
+    (Issue 14 point 5: a band pass triangulates the positions it starts from twice,
+    for its bonds (:func:`_delaunay_bonds`) and for the empty circles
+    (:func:`_far_circles`), and the next pass starts from the positions whose empty
+    circles the last one measured; on the hexagonal lattice along the 90 degree field
+    over 63 x 42 spacings, 418 triangulations of 2,980 elements made 12% of the
+    growth's time under cProfile, ``benchmarks/results/g63v_profile_main_shares.txt``.)"""
     from scipy.spatial import Delaunay
 
+    if g is None:
+        return Delaunay(pts)
+    key = (np.shape(pts), np.ascontiguousarray(pts, dtype=float).tobytes())
+    try:
+        got = _LAST_TRI.get(g)
+    except TypeError:  # (a stand-in that takes no weak reference)
+        return Delaunay(pts)
+    if got is not None and got[0] == key:
+        return got[1]
+    tri = Delaunay(pts)
+    _LAST_TRI[g] = (key, tri)
+    return tri
+
+
+def _delaunay_bonds(pts: np.ndarray, cut: float, g=None) -> np.ndarray:
     # (the triangulation's neighbour lists, each pair once and in order: the same
     # bonds as the simplices' edges made unique, with no sort of all three sides)
-    ip, ix = Delaunay(pts).vertex_neighbor_vertices
+    ip, ix = triangulation(pts, g).vertex_neighbor_vertices
     n = len(pts)
     i = np.repeat(np.arange(n, dtype=np.int64), np.diff(ip))
     j = ix.astype(np.int64)
@@ -130,6 +162,15 @@ def _delaunay_bonds(pts: np.ndarray, cut: float) -> np.ndarray:
     e = np.c_[k // n, k % n]
     ln = np.hypot(*(pts[e[:, 1]] - pts[e[:, 0]]).T)
     return e[ln < cut]
+
+
+def placed(g) -> np.ndarray:
+    """The placed elements in ``g.order``'s order, (n,) intp: ``[i for i in g.order if
+    g.state[i] == ELEMENT]`` as an array, with one comparison over all of them (the
+    passes ask it at every measure, and the list's loop over each element's state cost
+    some 6 ms at 3,000 elements; issue 14 point 5)."""
+    order = np.fromiter(g.order, dtype=np.intp, count=len(g.order))
+    return order[g.state[order] == ELEMENT]
 
 
 def relax_network(g, band: tuple[float, float] | None = None) -> int:
@@ -177,7 +218,7 @@ def _band_passes(g, turn0: float, band: tuple[float, float]) -> int:
     and 0.884), but on the quarter circles 45 x 45 spacings from the centre the run
     without them keeps more (0.907 against 0.890 and 0.900), so it stays the third
     run. The band's passes only move elements, so a run's moves are put back exactly.)"""
-    start = saved_moves(g, [o for o in g.order if g.state[o] == ELEMENT])
+    start = saved_moves(g, placed(g).tolist())
     best = None
     for k, (one_side, contact) in enumerate(BAND_RUNS):
         if k:
@@ -217,12 +258,12 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
     p = g.p
     rounds = int(p.flow_net_rounds or 0)
     L = g.l
-    els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.intp)
+    els = placed(g)
     n = len(els)
     if rounds <= 0 or n < 7:
         return 0
     pts0 = g.pos[els].copy()
-    held = np.asarray([bool(g.fixed[o]) for o in els.tolist()], dtype=bool)
+    held = g.fixed[els].astype(bool)
     hold = float(p.flow_net_hold)
     rg = g.region
     pts = pts0.copy()
@@ -244,7 +285,7 @@ def _relax_once(g, turn0: float, band: tuple[float, float] | None = None) -> int
         if band is None or solve is None:
             # (the band's pass keeps the bonds of its first round: an elastic network,
             # no bond flips to a new neighbour while it is fitted)
-            e = memo(g, "bonds", (pts, 1.4 * L), lambda pts=pts: _delaunay_bonds(pts, 1.4 * L))  # (the same bonds: _flow_memo)
+            e = memo(g, "bonds", (pts, 1.4 * L), lambda pts=pts: _delaunay_bonds(pts, 1.4 * L, g))  # (the same bonds: _flow_memo)
             m = len(e)
             if m == 0:
                 return 0
@@ -434,7 +475,7 @@ def _settle_steps(g, moves: dict, old: dict, first: int = 0) -> dict:
     left (the positions before had none, so this ends). Nothing turns (§5.3). Returns
     each element's step (an index into :data:`_STEPS`; all from ``first``)."""
     level = {o: first for o in moves}
-    check = [o for o in moves if _place(g, o, moves, old, level)]
+    check = _place_all(g, moves, old, level)
     if getattr(g, "flow_net_contact", False):
         check = _push_apart(g, moves, old, level, check)
     _resolve(g, moves, old, level, check)
@@ -509,6 +550,55 @@ PUSH_MARGIN = 0.002
 
 #: how many times :func:`_push_apart` pushes the pairs still overlapping
 PUSH_ROUNDS = 8
+
+
+def _place_all(g, moves: dict, old: dict, level: dict, turns: dict | None = None) -> list:
+    """:func:`_place` of every element of ``moves`` in turn; the elements (all placed).
+
+    The same placements, with the outlines at each element's first step made in one
+    shapely call per kind and tested against the domain in one more (issue 14 point 5):
+    an outline, the region and the boundary strokes do not depend on the other
+    elements, so only the moves are made one by one (an element whose outline at that
+    step does not fit, or that has no simple outline, is placed by :func:`_place`;
+    g60v's batching of stop 60, its patch not landed then: the share of these outlines
+    grows with the count, benchmarks/g63v_flow_scaling.py)."""
+    import shapely
+
+    pre: dict = {}
+    if g.boundary is None:  # (crosses_boundary is then False)
+        groups: dict = {}
+        scl, kinds, local_ring = g.scl, g.kind, g.local_ring
+        for o, (tx, ty) in moves.items():
+            f = _STEPS[level[o]]
+            if f == 0.0:
+                continue
+            ox, oy, _, rot0 = old[o]
+            turn = turns.get(o) if turns else None
+            x, y = ox + f * (tx - ox), oy + f * (ty - oy)
+            rot = rot0 + f * (turn - rot0) if turn is not None else rot0
+            kind = int(kinds[o])
+            if local_ring[kind] is None or not g.in_domain(x, y):
+                continue
+            base = g.turned_ring(kind, rot, float(scl[o]))
+            groups.setdefault((kind, base.shape[0]), []).append((o, x, y, rot, base))
+        for items in groups.values():
+            # (the same sums as element_geometry's ``turned_ring + np.array([x, y])``)
+            coords = np.stack([it[4] for it in items]) + np.array([(it[1], it[2]) for it in items])[:, None, :]
+            gs = shapely.polygons(coords)
+            for it, gg, ok in zip(items, gs, g.fits_domain_many(gs).tolist()):
+                if ok:
+                    pre[it[0]] = (it[1], it[2], it[3], gg)
+    for o in moves:
+        got = pre.get(o)
+        if got is None:
+            _place(g, o, moves, old, level, turns)
+            continue
+        x, y, rot, gg = got
+        g._move(o, x, y)
+        g.geom[o] = gg
+        if turns is not None:
+            g.rot[o] = rot
+    return list(moves)
 
 
 def _place(g, o: int, moves: dict, old: dict, level: dict, turns: dict | None = None) -> bool:
@@ -598,7 +688,7 @@ def _six_share(g, xy: np.ndarray | None = None) -> float:
     mean edges inside the region with six elements at 0.85-1.15 spacings
     (:func:`six_spacing`) and none nearer (``six_nbr_share`` of ``benchmarks/grow.py``)."""
     if xy is None:
-        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+        xy = g.pos[placed(g)]
     return memo(g, "six_share", (xy,), lambda: _six_share_at(g, xy))  # (measured once: _flow_memo)
 
 
@@ -647,7 +737,7 @@ def _turns(g, xy: np.ndarray | None = None) -> np.ndarray:
     :func:`_misalignment` (degrees, absolute), NaN for those within two mean edges of
     the region's edge, (n,); empty where no element or no exemplar site is inside."""
     if xy is None:
-        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+        xy = g.pos[placed(g)]
     return memo(g, "turns", (xy,), lambda: _turns_at(g, xy))  # (measured once: _flow_memo)
 
 
@@ -681,7 +771,7 @@ def _grid(g) -> np.ndarray:
             return got
         x0, y0, x1, y1 = (float(v) for v in rg.bounds)
     else:
-        xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+        xy = g.pos[placed(g)]
         (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
     grid = np.mgrid[x0 + 2 * L : x1 - 2 * L : 0.25 * L, y0 + 2 * L : y1 - 2 * L : 0.25 * L].reshape(2, -1).T
     if rg is not None and len(grid):
@@ -697,7 +787,7 @@ def _far_points(g, grid: np.ndarray) -> np.ndarray:
     """The points of ``grid`` farther than 0.75 mean edges from every placed element."""
     if not len(grid):
         return grid
-    xy = g.pos[[i for i in g.order if g.state[i] == ELEMENT]]
+    xy = g.pos[placed(g)]
     return memo(g, "far_points", (xy, grid), lambda: _far_points_at(g, xy, grid))  # (measured once: _flow_memo)
 
 
@@ -818,10 +908,8 @@ def _far_circles(g, xy: np.ndarray) -> np.ndarray:
 
 def _far_circles_at(g, xy: np.ndarray) -> np.ndarray:
     """:func:`_far_circles`, measured."""
-    from scipy.spatial import Delaunay
-
     L = g.l
-    s = Delaunay(xy).simplices
+    s = triangulation(xy, g).simplices
     a, b, c = xy[s[:, 0]], xy[s[:, 1]], xy[s[:, 2]]
     cc, r, ok = _circumcentres(a, b, c, L)
     cc = cc[ok & (r > 0.74 * L)]

@@ -124,13 +124,21 @@ def fitted_moves(g, els: np.ndarray, pts: np.ndarray, qs) -> tuple[dict[int, tup
     moves: dict[int, tuple[float, float]] = {}
     old: dict[int, tuple] = {}
     tiny = 1e-9 * g.l
-    for q in qs:
+    qa = np.asarray(qs, dtype=np.intp) if isinstance(qs, np.ndarray) else np.fromiter(qs, dtype=np.intp)
+    if not len(qa):
+        return moves, old
+    # (which moved farther than ``tiny``, over all of them at once: the same float64
+    # sums and comparison as one element at a time, ``g.pos`` holding ``g.xy``'s
+    # values; the network passes ask this of every element at each pass, issue 14
+    # point 5)
+    cur = g.pos[els[qa]]
+    fit = pts[qa]
+    far = np.abs(fit[:, 0] - cur[:, 0]) + np.abs(fit[:, 1] - cur[:, 1]) > tiny
+    for q in qa[far].tolist():
         o = int(els[q])
-        nx, ny = float(pts[q, 0]), float(pts[q, 1])
         ox, oy = g.xy[o]
-        if abs(nx - ox) + abs(ny - oy) > tiny:
-            moves[o] = (nx, ny)
-            old[o] = (ox, oy, g.geom[o], float(g.rot[o]))
+        moves[o] = (float(pts[q, 0]), float(pts[q, 1]))
+        old[o] = (ox, oy, g.geom[o], float(g.rot[o]))
     return moves, old
 
 
