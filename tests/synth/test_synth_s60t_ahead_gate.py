@@ -46,7 +46,7 @@ def test_no_ownership_on_noise_where_large_stones_are_not_ahead(monkeypatch):
     assert rep.faithful, [(k, m.value, m.tolerance) for k, m in rep.metrics.items() if m.applicable and not m.passed]
 
 
-def test_gate_bound_is_the_larger_of_slack_and_poisson_margin():
+def test_gate_bound_is_slack_plus_noise_margin():
     # the numbers of the calls above and of three sizes 60:60:26 (p4s27), whose large
     # stones run ahead (1.24 of their density after growth on main)
     def acts(have, want):
@@ -55,5 +55,8 @@ def test_gate_bound_is_the_larger_of_slack_and_poisson_margin():
     assert not acts(17, 16.0)  # p0s32's first closed area: noise
     assert acts(31, 23.7)  # p4s27 seed 1's first: 1.5 standard errors
     assert acts(221, 195.7)  # p4s27 later: 1.8 standard errors
-    # where many are asked the slack decides (one standard error is under 5 %)
-    assert G._ahead_bound(1000.0) == pytest.approx(G.OWN_AHEAD_SLACK * 1000.0)
+    # where many are asked the slack no longer decides alone (s63t: the margin is added to
+    # it; s60t took the larger of the two, here 1050)
+    assert G._ahead_bound(1000.0) == pytest.approx(G.OWN_AHEAD_SLACK * 1000.0 + G.OWN_AHEAD_Z * 1000.0**0.5)
+    # and the margin is the count's standard error for the exemplar's dispersion
+    assert G._ahead_bound(1000.0, 0.25) == pytest.approx(G.OWN_AHEAD_SLACK * 1000.0 + 0.5 * G.OWN_AHEAD_Z * 1000.0**0.5)

@@ -3066,6 +3066,7 @@ def _top_ahead(state: SynthState) -> np.ndarray:
     if not top.any() or state.n == 0:
         return out
     prep = state.prep
+    fano = _top_spread(prep) if OWN_AHEAD_SPREAD else None
     src = state.src[: state.n]
     vis = prep.selected_elements[src] & ~prep.void[src]
     if OWN_AHEAD_MEASURE:
@@ -3078,7 +3079,7 @@ def _top_ahead(state: SynthState) -> np.ndarray:
             share = np.count_nonzero(here) / max(np.count_nonzero(inside), 1)
             want = rate[s_] * area * share
             have = int(np.count_nonzero(top[src[here]]))
-            if want > 0 and have > _ahead_bound(want):
+            if want > 0 and have > _ahead_bound(want, fano[s_] if OWN_AHEAD_SPREAD else 1.0):
                 out[top & (prep.source == s_)] = True
                 state.top_held = True  # (read by _farmix.trade_far_top, TOP_DRAW)
         return out
@@ -3118,18 +3119,109 @@ margin added to the slack at slack 1.0 (s46t): 1 lost p4s27 seed 2, 0.5 left p4s
 Not settled: default three sizes at variant 25 (large 1.06 of its density late in growth,
 z 1.0-1.2) is owned in its last calls and loses seed 1 (density[medium] 0.239 / 0.238; main
 6/6, here 5/6); the bound SLACK x want + Z sqrt(want) leaves it alone (6/6) with p4s27 5/6,
-p4s29 5/6 (``benchmarks/results/s60t_notes.md``)."""
+p4s29 5/6 (``benchmarks/results/s60t_notes.md``). Now (helper s63t) the standard error is
+the exemplar's (:data:`OWN_AHEAD_SPREAD`) and it is added to the slack
+(:data:`OWN_AHEAD_ADD`; ``benchmarks/results/s63t_notes.md``)."""
 
 OWN_AHEAD_MIN_AREA = 1.0
 """... and acts only once that closed area holds at least this many exemplar inner frames."""
 
 
 
-def _ahead_bound(want: float) -> float:
+OWN_AHEAD_SPREAD = True
+"""The noise gate's standard error is the exemplar's own (helper s63t): the count's
+variance is the asked count times the dispersion of the largest class's count in windows
+of the exemplar's inner frame against independent points (:func:`_top_spread`, 0.3-0.45
+on three sizes exemplars), not Poisson's (1; off)."""
+
+OWN_AHEAD_ADD = True
+"""The bound adds the slack (a systematic tolerance for the measured area's bias) and the
+count's noise margin (helper s63t) instead of taking the larger of the two (s60t): the two
+are separate sources of error, and the larger of them alone lets the slack decide for
+every count above ``(Z / (SLACK - 1))**2 * fano`` asked, where the noise of the count is
+then carried by nothing."""
+
+
+def _ahead_bound(want: float, fano: float = 1.0) -> float:
     """The count of the largest class in the closed area above which :func:`_top_ahead`
-    owns it, for ``want`` asked by its density: the larger of :data:`OWN_AHEAD_SLACK`
-    times it and it plus :data:`OWN_AHEAD_Z` Poisson standard errors (the noise gate)."""
-    return max(OWN_AHEAD_SLACK * want, want + OWN_AHEAD_Z * float(np.sqrt(want)))
+    owns it, for ``want`` asked by its density: :data:`OWN_AHEAD_SLACK` times it plus
+    :data:`OWN_AHEAD_Z` standard errors of the count (:data:`OWN_AHEAD_ADD`; off: the
+    larger of the slack and it plus the standard errors), the standard error being
+    ``sqrt(fano * want)`` (``fano`` 1: Poisson's; :func:`_top_spread`: the exemplar's)."""
+    margin = OWN_AHEAD_Z * float(np.sqrt(fano * want))
+    if OWN_AHEAD_ADD:
+        return OWN_AHEAD_SLACK * want + margin
+    return max(OWN_AHEAD_SLACK * want, want + margin)
+
+
+OWN_SPREAD_SIDE = 1.0 / 3.0
+""":func:`_top_spread`'s windows span this share of the exemplar inner frame's width and
+height (a ninth of the frame: about two large stones of a three sizes exemplar each)."""
+
+OWN_SPREAD_STEPS = 31
+"""... placed on this many positions per axis, corner to corner."""
+
+
+def _window_dispersion(side: float, steps: int) -> float:
+    """The expected variance over mean of the count in :func:`_top_spread`'s windows (a
+    share ``side`` of the frame's width and height, ``steps`` positions per axis) for
+    points drawn uniformly and independently in the frame: ``1 - mean overlap / a`` over
+    all pairs of window positions (the windows of one frame share its points, so their
+    spread in one frame is less than a Poisson count's; the overlap of two rectangles is
+    the product of the overlaps of their sides)."""
+    u = np.linspace(0.0, 1.0 - side, steps)
+    ov = float(np.clip(side - np.abs(u[:, None] - u[None, :]), 0.0, None).mean())
+    return 1.0 - (ov / side) ** 2
+
+
+def _top_spread(prep) -> np.ndarray:
+    """(exemplars,) float: per exemplar :func:`_own_setup` keeps, the dispersion of its
+    largest class against independent points: the variance over mean of its count in
+    windows of :data:`OWN_SPREAD_SIDE` of its inner frame's width and height (the frame
+    shrunk by two of the largest collision radii, as ``_displace._inner_density``), on
+    :data:`OWN_SPREAD_STEPS` squared positions in the frame's bounds, divided by what the
+    same windows read on uniform independent points (:func:`_window_dispersion`; 1:
+    Poisson's spread); 1.0 where it cannot be measured. Computed once per ``prep`` and
+    selection.
+
+    The hypothesis the gate of :func:`_top_ahead` tests is that the output holds the class
+    as the exemplar does; the count's spread under it is the exemplar's, and hard discs
+    spread less than independent points (three sizes exemplars 0.3-0.45; a hard-core
+    pattern of 20 points at distance 0.16 in a unit frame 0.38, sd 0.07 over draws; uniform
+    points 0.99, sd 0.39: ``benchmarks/results/s63t_fano.txt``). Taking it per unit of
+    the asked count for closed areas of many frames assumes the dispersion does not grow
+    with the window (a hard-core pattern's falls)."""
+    top, _a, cover, _r = _own_setup(prep)
+    key = (len(prep.kind), OWN_SPREAD_SIDE, OWN_SPREAD_STEPS, np.asarray(prep.selected_elements).tobytes())
+    got = getattr(prep, "_top_spread", None)
+    if got is not None and got[0] == key:
+        return got[1]
+    out = np.ones(len(cover))
+    margin = 2.0 * float(prep.rc.max())
+    ref = _window_dispersion(OWN_SPREAD_SIDE, OWN_SPREAD_STEPS)
+    for s_ in np.flatnonzero(cover > 0):
+        inner = prep.domains[s_].buffer(-margin)
+        if inner.is_empty or ref <= 0:
+            continue
+        x0, y0, x1, y1 = inner.bounds
+        w, h = OWN_SPREAD_SIDE * (x1 - x0), OWN_SPREAD_SIDE * (y1 - y0)
+        pts = prep.pos[top & (prep.source == s_)]
+        pts = pts[shapely.contains_xy(inner, pts[:, 0], pts[:, 1])]
+        cx, cy = np.meshgrid(np.linspace(x0, x1 - w, OWN_SPREAD_STEPS), np.linspace(y0, y1 - h, OWN_SPREAD_STEPS))
+        cx, cy = cx.ravel(), cy.ravel()
+        cnt = (
+            (pts[None, :, 0] >= cx[:, None])
+            & (pts[None, :, 0] < cx[:, None] + w)
+            & (pts[None, :, 1] >= cy[:, None])
+            & (pts[None, :, 1] < cy[:, None] + h)
+        ).sum(axis=1)
+        m = float(np.mean(cnt))
+        if m <= 0:
+            continue
+        out[s_] = float(np.var(cnt)) / m / ref
+    prep._top_spread = (key, out)
+    return out
+
 
 def _empty_reach(prep) -> float:
     """The largest distance from a point of an exemplar's inner frame (domain shrunk by
