@@ -1,8 +1,13 @@
+"""Helper s63t: what ``_grow._top_spread``'s windows read (variance over mean of the count,
+divided by ``_grow._window_dispersion``) on 20 independent uniform points in a unit frame and
+on a hard-core pattern of 20 points (no two nearer than 0.16), over draws, for three window
+sides: the reading's mean and its spread over frames.
+
+    PYTHONPATH=src:benchmarks python benchmarks/s63t_spread_sim.py
+"""
 import numpy as np
 rng=np.random.default_rng(0)
-def F0(side,k):
-    u=np.linspace(0,1-side,k); ov=np.clip(side-np.abs(u[:,None]-u[None,:]),0,None).mean()
-    return 1-(ov/side)**2
+from strew.synth._grow import _window_dispersion as F0
 def f(pts, side, k):
     cx,cy=np.meshgrid(np.linspace(0,1-side,k),np.linspace(0,1-side,k)); cx,cy=cx.ravel(),cy.ravel()
     c=((pts[None,:,0]>=cx[:,None])&(pts[None,:,0]<cx[:,None]+side)&(pts[None,:,1]>=cy[:,None])&(pts[None,:,1]<cy[:,None]+side)).sum(1)
