@@ -3139,7 +3139,10 @@ OWN_AHEAD_ADD = True
 count's noise margin (helper s63t) instead of taking the larger of the two (s60t): the two
 are separate sources of error, and the larger of them alone lets the slack decide for
 every count above ``(Z / (SLACK - 1))**2 * fano`` asked, where the noise of the count is
-then carried by nothing."""
+then carried by nothing. Six seeds (``benchmarks/results/s63t_notes.md``; main / s60t's
+Poisson max / this): --varied three sizes p4s27 0/6 / 5/6 / 6/6, p4s29 4/6 / 5/6 / 5/6,
+default three sizes at variant 25 6/6 / 5/6 / 6/6 (owned at 2 seeds of 6, late), p0s32 and
+h6s29 6/6 throughout; with the exemplar's spread but the max (off): p4s29 4/6, v25 6/6."""
 
 
 def _ahead_bound(want: float, fano: float = 1.0) -> float:
