@@ -69,6 +69,13 @@ RING_EVEN = 0.2
 #: ... and two hubs are adjacent (their rings' phase difference is read) within this
 #: factor of the hubs' median nearest-hub distance
 RING_ADJACENT = 1.3
+#: the hubs' reference (:func:`hub_reference`): where the interior hubs' 1-rings together
+#: leave a bearing gap wider than this, each interior ring also gets the point
+#: reflections of its neighbours (:func:`mirror_hub_rings`). Over the ``--varied``
+#: clusters exemplars (labels v, p0-p4) at variant seeds 7-36 the widest such gap is 121
+#: degrees (EDGE p2 at 18), the next 111; only p2 at 37 (177) passes this limit
+#: (helpers g64c, g65c, ``benchmarks/g64c_gaps.py``)
+HUB_MIRROR_GAP = math.radians(150.0)
 
 
 @dataclass(frozen=True)
@@ -251,17 +258,109 @@ def hub_reference(hx: Arrangement) -> Reference | None:
     ``benchmarks/g26o_clusters_probe.py``). Departs from §4 only there: where the
     skew rule leaves no interior hub, the hubs' connectivity is the whole Delaunay
     triangulation.
+
+    Where the interior hubs' rings then all lie on one side (a bearing gap wider than
+    :data:`HUB_MIRROR_GAP`), they also get their neighbours' point reflections (see
+    :func:`mirror_hub_rings`).
     """
     from ._analysis import analyze, delaunay_edges
 
     try:
-        return analyze(hx)
+        ref = analyze(hx)
     except InputError:
-        pass
-    try:
-        return analyze(hx, edges=delaunay_edges(hx.xy, skew_angle=math.pi))
-    except InputError:
-        return None
+        try:
+            ref = analyze(hx, edges=delaunay_edges(hx.xy, skew_angle=math.pi))
+        except InputError:
+            return None
+    return mirror_hub_rings(ref)
+
+
+def _bearings(xy: np.ndarray, i: int, ring: np.ndarray) -> np.ndarray:
+    """(k,) bearings in [0, 2 pi) of the ring members ``ring`` (k,) int around element ``i`` of ``xy`` (n, 2)."""
+    d = xy[np.asarray(ring, dtype=np.intp)] - xy[i]
+    return np.sort(np.mod(np.arctan2(d[:, 1], d[:, 0]), 2.0 * math.pi))
+
+
+def ring_union_gap(ref: Reference) -> float:
+    """The widest bearing gap (radians) of the interior elements' 1-rings taken together:
+    every ring offset of every reference element, as bearings around one point; 2 pi
+    when there is none."""
+    b = np.sort(np.concatenate([_bearings(ref.xy, int(i), ref.rings[i]) for i in ref.reference_ids] + [np.zeros(0)]))
+    if len(b) == 0:
+        return 2.0 * math.pi
+    return float(np.max(np.diff(np.r_[b, b[0] + 2.0 * math.pi])))
+
+
+def mirror_hub_rings(ref: Reference, limit: float = HUB_MIRROR_GAP) -> Reference:
+    """The hubs' reference with each interior ring made point-symmetric where the
+    interior rings together leave a bearing gap wider than ``limit``; else ``ref`` itself.
+
+    Departs from §4 and §5.2, which match a seed only against the reference's own
+    1-rings. The hubs' growth copies the interior rings (§5.4 places a seed at each ring
+    offset of the reference a hub is matched to, and fixed mode does not turn them), so
+    where every interior ring leaves one bearing gap near pi no seed is ever proposed on
+    that side, and the hubs fill only the half-plane of the region on the other side of
+    the start. ``_variants.EDGE`` clusters p2 at variant seed 37 (helper g64c,
+    ``benchmarks/results/g64c_notes.md``): 7 hubs, §4's skew rule keeps no interior hub,
+    the fallback of :func:`hub_reference` keeps one whose ring of 4 has bearings -151,
+    -90, -45 and 133 degrees (a gap of 177, the triangle §4 would drop); every grown hub
+    copied it, the clusters filled the half below the anti-diagonal through the start,
+    and g[disc,dot] failed on every seed (10.4 against 7.65, 0 of 6 seeds). The
+    exemplar's hubs are a stationary, isotropic process (dart-thrown), whose pair
+    statistics are even (g(r) = g(-r)): each neighbour ``j`` of an interior hub ``i``
+    is also seen at ``x_i - (x_j - x_i)``. That point is added as a virtual hub (a copy
+    of ``j`` there: kind, rotation, scale and columns of ``j``), a neighbour of ``i``
+    only and never interior, unless it lies within the hubs' shortest edge of a member
+    of ``i``'s ring (the ring already holds a neighbour on that side). p2 at 37: 2
+    virtual hubs, the ring's bearings 29, 90, 133, 209, 270, 315 degrees, 6 of 6 seeds.
+
+    Parameters
+    ----------
+    ref : Reference
+        The hubs' reference (§4 on the hub kind alone), ``n`` hubs.
+    limit : float
+        Radians: mirror only where :func:`ring_union_gap` exceeds it.
+
+    Returns
+    -------
+    Reference
+        ``ref`` when the gap is within ``limit`` or nothing was added; otherwise a
+        reference over ``n + m`` elements (the ``m`` virtual hubs last): ``edges``
+        (e + m, 2), ``interior`` (n + m,) (the virtual hubs False), ``rings`` with the
+        virtual hubs in each interior ring in counter-clockwise order, ``mean_edge`` and
+        ``shortest_edge`` as ``ref``'s.
+    """
+    from ._analysis import Reference as _Reference
+
+    if ring_union_gap(ref) <= limit:
+        return ref
+    xy = ref.xy
+    least = float(ref.shortest_edge)
+    pts = [p for p in xy]
+    src: list[int] = []  # the ring member each virtual hub copies
+    rings = [list(map(int, r)) for r in ref.rings]
+    edges = [tuple(map(int, e)) for e in np.asarray(ref.edges).tolist()]
+    inter = ref.reference_ids
+    for i in inter.tolist():
+        for j in ref.rings[i].tolist():
+            v = 2.0 * xy[i] - xy[j]
+            if min(float(np.hypot(*(pts[k] - v))) for k in rings[i]) < least:
+                continue
+            pts.append(v)
+            k = len(pts) - 1
+            src.append(int(j))
+            rings[i].append(k)
+            rings.append([int(i)])
+            edges.append((int(i), k))
+        P = np.asarray(pts)
+        rings[i] = sorted(rings[i], key=lambda k: math.atan2(P[k][1] - P[i][1], P[k][0] - P[i][0]))
+    if not src:
+        return ref
+    P = np.asarray(pts)
+    ex = ref.exemplar
+    virt = ex.select(np.asarray(src, dtype=np.intp)).replace(x=P[len(xy) :, 0], y=P[len(xy) :, 1])
+    interior = np.r_[ref.interior, np.zeros(len(src), dtype=bool)]
+    return _Reference(ex.concat(virt), np.asarray(sorted(edges), dtype=np.int64), interior, [np.asarray(r, dtype=np.int64) for r in rings], ref.mean_edge, ref.shortest_edge)
 
 
 def hub_hole(hx: Arrangement, close: float | None = None) -> float:
