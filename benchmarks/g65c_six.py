@@ -7,7 +7,6 @@ so it cannot name g[disc,dot] where that passes).
 import sys
 from types import SimpleNamespace
 
-
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
 import _variants
 from _runner import fidelity_suite
