@@ -72,9 +72,10 @@ RING_ADJACENT = 1.3
 #: the hubs' reference (:func:`hub_reference`): where the interior hubs' 1-rings together
 #: leave a bearing gap wider than this, each interior ring also gets the point
 #: reflections of its neighbours (:func:`mirror_hub_rings`). Over the ``--varied``
-#: clusters exemplars (labels v, p0-p4) at variant seeds 7-36 the widest such gap is 121
-#: degrees (EDGE p2 at 18), the next 111; only p2 at 37 (177) passes this limit
-#: (helpers g64c, g65c, ``benchmarks/g64c_gaps.py``)
+#: clusters exemplars (labels v, p0-p4) at variant seeds 7-38 the widest such gap is 121
+#: degrees (EDGE p2 at 18, which passes as it is), the next 111; only p2 at 37 (177)
+#: passes this limit (helpers g64c, g65c, ``benchmarks/g65c_gaps.py``). §4's skew angle
+#: (120 degrees) would also act on p2 at 18.
 HUB_MIRROR_GAP = math.radians(150.0)
 
 
