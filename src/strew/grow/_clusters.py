@@ -332,6 +332,7 @@ def mirror_hub_rings(ref: Reference, limit: float = HUB_MIRROR_GAP) -> Reference
         ``shortest_edge`` as ``ref``'s.
     """
     from ._analysis import Reference as _Reference
+    from ._analysis import _ccw
 
     if ring_union_gap(ref) <= limit:
         return ref
@@ -354,7 +355,7 @@ def mirror_hub_rings(ref: Reference, limit: float = HUB_MIRROR_GAP) -> Reference
             rings.append([int(i)])
             edges.append((int(i), k))
         P = np.asarray(pts)
-        rings[i] = sorted(rings[i], key=lambda k: math.atan2(P[k][1] - P[i][1], P[k][0] - P[i][0]))
+        rings[i] = _ccw(P[i], P, rings[i])
     if not src:
         return ref
     P = np.asarray(pts)
