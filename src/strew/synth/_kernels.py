@@ -958,6 +958,55 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
 
 
 @numba.njit(cache=True, nogil=True)
+def ring_full(pts, reach, pk, ck, opos, okind, osrc, cap, cell):  # pragma: no cover - numba
+    """(m,) bool: proposals ``pts`` whose nearest output element of kind ``pk[i]``
+    within ``reach[i]`` already has at least ``cap[osrc[h], ck[i]]`` output elements of
+    kind ``ck[i]`` within ``reach[i]`` (see ``_grow._ring_full``). ``cell`` is at least
+    the largest reach, so a uniform grid over ``opos`` answers both from 3 x 3 cells."""
+    m = pts.shape[0]
+    out = np.zeros(m, np.bool_)
+    if m == 0 or opos.shape[0] == 0:
+        return out
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, np.bool_(False))
+    for i in range(m):
+        r2 = reach[i] * reach[i]
+        gx = int(np.floor((pts[i, 0] - x0) / cell))
+        gy = int(np.floor((pts[i, 1] - y0) / cell))
+        best = -1
+        bd = np.inf
+        for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+            for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    if okind[j] == pk[i]:
+                        dx = pts[i, 0] - opos[j, 0]
+                        dy = pts[i, 1] - opos[j, 1]
+                        d2 = dx * dx + dy * dy
+                        if d2 <= r2 and d2 < bd:
+                            bd = d2
+                            best = j
+                    j = nxt[j]
+        if best < 0:
+            continue
+        lim = cap[osrc[best], ck[i]]
+        cnt = 0
+        hx = int(np.floor((opos[best, 0] - x0) / cell))
+        hy = int(np.floor((opos[best, 1] - y0) / cell))
+        for ax in range(max(hx - 1, 0), min(hx + 2, nx)):
+            for ay in range(max(hy - 1, 0), min(hy + 2, ny)):
+                j = head[ax * ny + ay]
+                while j >= 0:
+                    if okind[j] == ck[i]:
+                        dx = opos[best, 0] - opos[j, 0]
+                        dy = opos[best, 1] - opos[j, 1]
+                        if dx * dx + dy * dy <= r2:
+                            cnt += 1
+                    j = nxt[j]
+        out[i] = cnt >= lim
+    return out
+
+
+@numba.njit(cache=True, nogil=True)
 def conflict_split(pts, qr, qsk, qcls, opos, orad, osk, ocls, oyield, min_dist, factor, cell):
     """Like :func:`conflict_check` (with ``use_sk``), telling apart intersections with
     elements that yield to the query: ``oyield[j]`` and a smaller size class,

@@ -1522,3 +1522,95 @@ def open_room_share(prep: Prepared) -> np.ndarray:
         out[s] = float(taken.sum()) / float((cls == cls.min()).sum())
     prep._open_room = out
     return out
+
+
+RING_CAP_CV = 0.05
+"""Children keep one distance to their parent for :func:`ring_caps` when their exemplar
+distances to parents of one kind vary by at most this share of their mean (std / mean).
+Looser than ``_optimize.RING_CV`` (0.005), which also switches on ring projection and
+ring completion; clusters' dots on their discs: 0.020-0.023."""
+
+
+RING_CAP_SHARE = 0.5
+"""... and when those children are at least this share of their kind in their exemplar
+(see :func:`ring_caps`)."""
+
+
+def ring_caps(prep: Prepared) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The data of ``_grow._ring_full``: which children growth caps on their parent's
+    ring, how far from a parent they count, and how many each exemplar element holds.
+    Computed once per ``prep``.
+
+    Returns
+    -------
+    capped : (n,) bool
+        Children of a larger size class (``Prepared.parent``, not voids) whose (kind,
+        parent kind) pair has at least 3 members, at least :data:`RING_CAP_SHARE` of
+        their kind, whose distances to their parents have std / mean at most
+        :data:`RING_CAP_CV` (one distance: a ring).
+    reach : (n,) float
+        1.5 times a capped child's exemplar distance to its parent (0 elsewhere): an
+        output element of the parent's kind within this of a copy is the copy's parent,
+        and the children of the copy's kind within this of that parent are its ring.
+    cap : (n, kinds) int
+        Each exemplar element's count of children of each kind (its ring), or, where
+        the exemplar's frame may cut its ring, the largest such count among the
+        elements of its kind in its exemplar. A frame cuts the ring of an element
+        nearer its domain's edge (holes too) than its farthest child plus that child's
+        collision radius, or than 1.2 times its exemplar's median child distance
+        (which covers an element without a child in the frame).
+
+    Notes
+    -----
+    Helper s65c after s64c's counterfactual (``benchmarks/s64c_stages.py --ring-cap
+    ownincv``, same semantics; the medians and the largest ring are taken per exemplar
+    here, per palette there, and a ring counts children of the copy's kind only, all
+    children there: the same for one exemplar with one child kind). The share is not
+    s64c's: without it a few small stones touching a boulder (their contact distance
+    keeps cv <= 0.05) were capped in ``--varied`` three sizes p0s30 (9 of 140 small
+    stones), p4s20, p4s36 and p4s37 (6, 6, 5 of 60); clusters' dots are 0.82-0.97 of
+    their kind (the rest: dots of rings the frame crops).
+    """
+    got = getattr(prep, "_ring_caps", None)
+    if got is not None and len(got[0]) == len(prep.kind):
+        return got
+    import shapely
+
+    n = len(prep.kind)
+    kinds = int(prep.kind.max()) + 1 if n else 0
+    capped = np.zeros(n, bool)
+    reach = np.zeros(n)
+    cap = np.zeros((n, kinds), np.int64)
+    has = np.flatnonzero((prep.parent >= 0) & ~prep.void)
+    has = has[prep.size_class[prep.parent[has]] != prep.size_class[has]]
+    if len(has):
+        par = prep.parent[has]
+        d = np.hypot(*(prep.pos[has] - prep.pos[par]).T)
+        pair = np.c_[prep.skind[has], prep.skind[par], prep.source[has]]
+        _, inv = np.unique(pair, axis=0, return_inverse=True)
+        inv = inv.ravel()
+        for g in np.unique(inv):
+            m = inv == g
+            kin = np.sum((prep.kind == prep.kind[has[m][0]]) & (prep.source == prep.source[has[m][0]]) & ~prep.void)
+            if m.sum() >= 3 and m.sum() >= RING_CAP_SHARE * kin and d[m].std() <= RING_CAP_CV * d[m].mean():
+                capped[has[m]] = True
+        reach[has] = np.where(capped[has], 1.5 * d, 0.0)
+    if capped.any():
+        kids = np.flatnonzero(prep.parent >= 0)
+        np.add.at(cap, (prep.parent[kids], prep.kind[kids]), 1)
+        dist = np.hypot(*(prep.pos[kids] - prep.pos[prep.parent[kids]]).T)
+        far = np.zeros(n)
+        np.maximum.at(far, prep.parent[kids], dist + prep.rc[kids])
+        for s, dom in enumerate(prep.domains):
+            ids = np.flatnonzero(prep.source == s)
+            own = prep.source[kids] == s
+            if len(ids) == 0 or dom is None:
+                continue
+            r = np.maximum(far[ids], 1.2 * np.median(dist[own]) if own.any() else 0.0)
+            cut = ids[shapely.distance(shapely.boundary(dom), shapely.points(prep.pos[ids])) < r]
+            for k in np.unique(prep.kind[cut]):
+                same = ids[prep.kind[ids] == k]
+                c = cut[prep.kind[cut] == k]
+                cap[c] = cap[same].max(axis=0)
+    prep._ring_caps = (capped, reach, cap)
+    return prep._ring_caps
