@@ -72,17 +72,21 @@ def test_ring_caps_are_the_exemplars_rings():
 def test_p4s38_rings_hold_no_more_dots_than_the_exemplars_largest():
     """3 times the frame's side, seed 1 (s1 of the audit's row, at 3.5x, fails on
     main with nn[dot>dot] 0.126 against 0.067): at most 10 % of the output's discs hold
-    more dots on their ring than the exemplar's largest ring (9), none more than 3 over
-    it, and nn[dot>dot] passes. The slack: copies placed in the same growing step do not
-    see one another (``_grow._ring_full``), which left 4-11 of 53-163 rings over 9 at
-    2-3.5x (largest 12); main: 28 of 121 rings over 9 (largest 13), nn[dot>dot] 0.082
-    against 0.068."""
+    more dots on their ring than the generator's largest ring (``ring_max`` 9, the
+    exemplar's largest too), at most 4 % more than one over it, and nn[dot>dot] passes.
+    The slack: copies placed in the same growing step do not see one another
+    (``_grow._ring_full``). Pinned, 3x, synth seeds 1-12 (helper s67c,
+    benchmarks/results/s67c_rings_out_*_3x.txt): the cap leaves 5.0-10.2 % of rings over 9
+    and 0-1.8 % (0-2 of 110-123) over 10; main 22-47 % and 6.6-27 % (seeds 1-4). s65c's
+    bound on the largest ring (<= 12) is not asserted: the cap's largest ring is 10-12
+    over those seeds, main's 12-13, so it had no margin and hardly tells the trees apart."""
     ex = suite.make_exemplar("clusters", rng=38, **P4)
     x0, y0, x1, y1 = ex.region.bounds
     out = synthesize(ex, Region.rectangle(3.0 * (x1 - x0), 3.0 * (y1 - y0)), rng=1, measure=False)
     largest, radius = _rings(ex)
+    assert largest.max() == P4["ring_max"]
     counts, _ = _rings(out, radius)
-    assert (counts > largest.max()).mean() <= 0.10
-    assert counts.max() <= largest.max() + 3
+    assert (counts > P4["ring_max"]).mean() <= 0.10
+    assert (counts > P4["ring_max"] + 1).mean() <= 0.04
     rep = fidelity(ex, out, eq5=False, local=False)
     assert rep.metrics["nn[dot>dot]"].passed
