@@ -7,13 +7,13 @@ import sys
 
 rows = collections.defaultdict(list)
 for fn in sys.argv[1:]:
-    for line in open(fn):
+    for line in open(fn).read().splitlines():  # noqa: SIM115
         t = line.split()
         if len(t) < 10 or t[0] not in ("varied", "harder"):
             continue
         lab = re.sub(r"s\d+$", "", t[2])
         lab = "v" if lab.startswith("v") else lab
-        g = dict(mean=float(t[t.index("mean") + 1]), med=float(t[t.index("median") + 1]), mx=int(t[t.index("max") + 1]))
+        g = {"mean": float(t[t.index("mean") + 1]), "med": float(t[t.index("median") + 1]), "mx": int(t[t.index("max") + 1])}
         rows[(t[0], t[1], lab, t[3], t[4])].append(g)
 for k in sorted(rows):
     v = rows[k]

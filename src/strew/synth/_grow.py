@@ -2078,8 +2078,10 @@ def _ring_full(state: SynthState, pts: np.ndarray, src: np.ndarray, caps: tuple[
     Extension of §5.1 (a departure from the paper's growth, where only overlap and free
     space hold a copy back), in the family of :func:`_crowded` and :func:`_hub_crowded`.
     For children that keep one distance to a parent of a larger size class
-    (``_prepare.ring_caps``: std / mean of that distance <= 0.05, and at least half
-    their kind), a copy proposed within ``reach`` (1.5 times its exemplar distance to
+    (``_prepare.ring_caps``: std / mean of that distance <= 0.05, at least half
+    their kind, and parents that hold rings: at least 3/4 of those the exemplar's frame
+    leaves whole hold two or more, ``_prepare.RING_CAP_HELD``, helper s67c; one-distance
+    contacts such as medium stones touching large ones are not rings), a copy proposed within ``reach`` (1.5 times its exemplar distance to
     its parent) of an output element of its parent's kind is refused when that element
     (the nearest such) already has ``cap`` elements of the copy's kind within ``reach``: its exemplar element's
     ring count, or the largest ring of its kind where the exemplar's frame cuts that

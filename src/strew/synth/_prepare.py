@@ -1657,7 +1657,9 @@ def ring_groups(prep: Prepared) -> list[dict]:
     least its smallest ring on every parent (clusters: ``ring_min`` dots, 2 to 7 in
     the audits' sets), so every parent with a whole ring holds two or more; a contact
     gives most large stones one. Measured on every exemplar s65c's gates pass (variant
-    seeds 7-40): ``benchmarks/results/s67c_notes.md``.
+    seeds 7-40): every clusters exemplar holds 1.00, the contacts 0.14-0.62
+    (``benchmarks/results/s67c_notes.md``). Part of the departure from §5.1 described
+    at ``_grow._ring_full`` (the paper's growth has no cap).
     """
     has = np.flatnonzero((prep.parent >= 0) & ~prep.void)
     has = has[prep.size_class[prep.parent[has]] != prep.size_class[has]]
