@@ -15,7 +15,7 @@ from .._progress import Reporter
 from . import _kernels as K
 from ._metric import sample_distance
 from ._optimize import match_neighborhoods, optimize
-from ._prepare import OPEN_ROOM, anchor_mask, open_room_share
+from ._prepare import OPEN_ROOM, anchor_mask, open_room_share, ring_caps
 from ._shapes import (
     element_geometries,
     local_segments,
@@ -2066,6 +2066,59 @@ def _hub_crowded(state: SynthState, pts: np.ndarray, src: np.ndarray, floors: np
     return out
 
 
+RING_CAP = True
+"""Growth puts no more children on an output parent's ring than the exemplar element it
+copies holds (see :func:`_ring_full`)."""
+
+
+def _ring_full(state: SynthState, pts: np.ndarray, src: np.ndarray, caps: tuple[np.ndarray, np.ndarray, np.ndarray]) -> np.ndarray:
+    """(m,) bool: copies of ring children ``src`` at ``pts`` beside an output parent
+    whose ring is full already.
+
+    Extension of §5.1 (a departure from the paper's growth, where only overlap and free
+    space hold a copy back), in the family of :func:`_crowded` and :func:`_hub_crowded`.
+    For children that keep one distance to a parent of a larger size class
+    (``_prepare.ring_caps``: std / mean of that distance <= 0.05, at least half
+    their kind, and parents that hold rings: at least 3/4 of those the exemplar's frame
+    leaves whole hold two or more, ``_prepare.RING_CAP_HELD``, helper s67c; one-distance
+    contacts such as medium stones touching large ones are not rings), a copy proposed within ``reach`` (1.5 times its exemplar distance to
+    its parent) of an output element of its parent's kind is refused when that element
+    (the nearest such) already has ``cap`` elements of the copy's kind within ``reach``: its exemplar element's
+    ring count, or the largest ring of its kind where the exemplar's frame cuts that
+    ring. Without it, neighbouring seeds' copies (n(e) of a dot holds its siblings and
+    the next rings) lay dots of other exemplar rings, at other phases and counts, onto
+    a ring already there; dots are small against the slots' spacing, so the collision
+    test lets them sit between the ring's own dots. Built for ``synth_variants.py
+    --varied`` clusters p4s38 (EDGE ``large=12, small=2, ring_gap=0.5, ring_min=7,
+    ring_max=9``): 68 of 158 rings held 10-13 dots (the generator: at most 9) and
+    nn[dot>dot] failed on seeds 1-6 (0.117-0.144 against 0.067; helper s64c,
+    benchmarks/results/s64c_notes.md). Copies placed in the same growing step do not see
+    one another here, so some rings still exceed the cap (4-11 of 53-163 at 2-3.5x the
+    frame). Counted by a compiled loop (``_kernels.ring_full``, about 1 % of grow's
+    time on p4s38 and clusters v35 in a profile).
+
+    Parameters
+    ----------
+    pts : (m, 2) float
+        Proposed positions.
+    src : (m,) int
+        Exemplar elements they copy.
+    caps : tuple of (n,) bool, (n,) float, (n, kinds) int
+        ``_prepare.ring_caps(prep)``.
+    """
+    out = np.zeros(len(pts), bool)
+    capped, reach, cap = caps
+    q = np.flatnonzero(capped[src])
+    if len(q) == 0 or state.n == 0:
+        return out
+    prep = state.prep
+    sq = src[q]
+    rr = np.ascontiguousarray(reach[sq], dtype=float)
+    out[q] = K.ring_full(np.ascontiguousarray(pts[q], dtype=float), rr, np.asarray(prep.kind[prep.parent[sq]], np.int64),
+                         np.asarray(prep.kind[sq], np.int64), np.ascontiguousarray(state.pos, dtype=float),
+                         np.asarray(prep.kind[state.src], np.int64), np.asarray(state.src, np.int64), cap, float(rr.max()))
+    return out
+
 def _yield_from(state: SynthState) -> int:
     """First iteration whose elements still yield (see :func:`_split_conflicts`)."""
     return max(state.grow_start, state.iterations - state.params.yield_window)
@@ -3675,6 +3728,9 @@ def grow(
     hfl = hub_floors(prep) if HUB_FLOORS else None
     if hfl is not None and not (hfl[prep.selected_elements, 0] > 0).any():
         hfl = None
+    rcap = ring_caps(prep) if RING_CAP else None
+    if rcap is not None and not rcap[0][prep.selected_elements].any():
+        rcap = None
     for _ in range(max_iterations):
         state.iterations += 1
         hz = np.flatnonzero(state.horizon)
@@ -3769,6 +3825,9 @@ def grow(
                     if hfl is not None and not hard.all():
                         rest = np.flatnonzero(~hard)
                         hard[rest] = _hub_crowded(state, ppos[sub[rest]], exv[sub[rest]], hfl)
+                    if rcap is not None and not hard.all():
+                        rest = np.flatnonzero(~hard)
+                        hard[rest] = _ring_full(state, ppos[sub[rest]], exv[sub[rest]], rcap)
                 else:
                     hard = state.conflicts(ppos[sub], exv[sub])
                 okp[sub[hard]] = False

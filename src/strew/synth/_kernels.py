@@ -958,6 +958,56 @@ def conflict_check(pts, qr, qsk, qcover, opos, orad, osk, min_dist, factor, use_
 
 
 @numba.njit(cache=True, nogil=True)
+def _kind_near(x, y, kind, r2, opos, okind, x0, y0, cell, nx, ny, head, nxt):  # pragma: no cover - numba
+    """(nearest, count): the output element of kind ``kind`` nearest (x, y) within
+    sqrt(``r2``) (-1 if none; the first met wins a tie) and how many of that kind lie
+    within it, from the 3 x 3 cells of the bucket grid around (x, y) (``cell`` at least
+    sqrt(``r2``)). Both questions of :func:`ring_full`."""
+    gx = int(np.floor((x - x0) / cell))
+    gy = int(np.floor((y - y0) / cell))
+    best = -1
+    bd = np.inf
+    cnt = 0
+    for ax in range(max(gx - 1, 0), min(gx + 2, nx)):
+        for ay in range(max(gy - 1, 0), min(gy + 2, ny)):
+            j = head[ax * ny + ay]
+            while j >= 0:
+                if okind[j] == kind:
+                    dx = x - opos[j, 0]
+                    dy = y - opos[j, 1]
+                    d2 = dx * dx + dy * dy
+                    if d2 <= r2:
+                        cnt += 1
+                        if d2 < bd:
+                            bd = d2
+                            best = j
+                j = nxt[j]
+    return best, cnt
+
+
+@numba.njit(cache=True, nogil=True)
+def ring_full(pts, reach, pk, ck, opos, okind, osrc, cap, cell):  # pragma: no cover - numba
+    """(m,) bool: proposals ``pts`` whose nearest output element of kind ``pk[i]``
+    within ``reach[i]`` already has at least ``cap[osrc[h], ck[i]]`` output elements of
+    kind ``ck[i]`` within ``reach[i]`` (see ``_grow._ring_full``). ``cell`` is at least
+    the largest reach, so a uniform grid over ``opos`` answers both from 3 x 3 cells
+    (:func:`_kind_near`)."""
+    m = pts.shape[0]
+    out = np.zeros(m, np.bool_)
+    if m == 0 or opos.shape[0] == 0:
+        return out
+    x0, y0, cell, nx, ny, head, nxt = _bucket_grid(opos, cell, m, np.bool_(False))
+    for i in range(m):
+        r2 = reach[i] * reach[i]
+        best, _ = _kind_near(pts[i, 0], pts[i, 1], pk[i], r2, opos, okind, x0, y0, cell, nx, ny, head, nxt)
+        if best < 0:
+            continue
+        _, cnt = _kind_near(opos[best, 0], opos[best, 1], ck[i], r2, opos, okind, x0, y0, cell, nx, ny, head, nxt)
+        out[i] = cnt >= cap[osrc[best], ck[i]]
+    return out
+
+
+@numba.njit(cache=True, nogil=True)
 def conflict_split(pts, qr, qsk, qcls, opos, orad, osk, ocls, oyield, min_dist, factor, cell):
     """Like :func:`conflict_check` (with ``use_sk``), telling apart intersections with
     elements that yield to the query: ``oyield[j]`` and a smaller size class,

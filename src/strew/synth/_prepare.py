@@ -1522,3 +1522,165 @@ def open_room_share(prep: Prepared) -> np.ndarray:
         out[s] = float(taken.sum()) / float((cls == cls.min()).sum())
     prep._open_room = out
     return out
+
+
+RING_CAP_CV = 0.05
+"""Children keep one distance to their parent for :func:`ring_caps` when their exemplar
+distances to parents of one kind vary by at most this share of their mean (std / mean).
+Looser than ``_optimize.RING_CV`` (0.005), which also switches on ring projection and
+ring completion; clusters' dots on their discs: 0.020-0.023."""
+
+
+RING_CAP_SHARE = 0.5
+"""... and when those children are at least this share of their kind in their exemplar
+(see :func:`ring_caps`)."""
+
+
+def ring_caps(prep: Prepared) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The data of ``_grow._ring_full``: which children growth caps on their parent's
+    ring, how far from a parent they count, and how many each exemplar element holds.
+    Computed once per ``prep``.
+
+    Returns
+    -------
+    capped : (n,) bool
+        Children of a larger size class (``Prepared.parent``, not voids) whose (kind,
+        parent kind) pair has at least 3 members, at least :data:`RING_CAP_SHARE` of
+        their kind, whose distances to their parents have std / mean at most
+        :data:`RING_CAP_CV` (one distance), and whose parents hold rings: at least
+        :data:`RING_CAP_HELD` of those the frame leaves whole hold two or more of them
+        (:func:`ring_groups`).
+    reach : (n,) float
+        1.5 times a capped child's exemplar distance to its parent (0 elsewhere): an
+        output element of the parent's kind within this of a copy is the copy's parent,
+        and the children of the copy's kind within this of that parent are its ring.
+    cap : (n, kinds) int
+        Each exemplar element's count of children of each kind (its ring), or, where
+        the exemplar's frame may cut its ring, the largest such count among the
+        elements of its kind in its exemplar. A frame cuts the ring of an element
+        nearer its domain's edge (holes too) than its farthest child plus that child's
+        collision radius, or than 1.2 times its exemplar's median child distance
+        (which covers an element without a child in the frame).
+
+    Notes
+    -----
+    Helper s65c after s64c's counterfactual (``benchmarks/s64c_stages.py --ring-cap
+    ownincv``, same semantics; the medians and the largest ring are taken per exemplar
+    here, per palette there, and a ring counts children of the copy's kind only, all
+    children there: the same for one exemplar with one child kind). The share is not
+    s64c's: without it a few small stones touching a boulder (their contact distance
+    keeps cv <= 0.05) were capped in ``--varied`` three sizes p0s30 (9 of 140 small
+    stones), p4s20, p4s36 and p4s37 (6, 6, 5 of 60); clusters' dots are 0.82-0.97 of
+    their kind (the rest: dots of rings the frame crops).
+    """
+    got = getattr(prep, "_ring_caps", None)
+    if got is not None and len(got[0]) == len(prep.kind):
+        return got
+    n = len(prep.kind)
+    kinds = int(prep.kind.max()) + 1 if n else 0
+    capped = np.zeros(n, bool)
+    reach = np.zeros(n)
+    cap = np.zeros((n, kinds), np.int64)
+    groups = ring_groups(prep)
+    for g in groups:
+        if g["gated"] and g["held"] >= RING_CAP_HELD:
+            capped[g["members"]] = True
+    if groups:
+        has = np.concatenate([g["members"] for g in groups])
+        d = np.hypot(*(prep.pos[has] - prep.pos[prep.parent[has]]).T)
+        reach[has] = np.where(capped[has], 1.5 * d, 0.0)
+    if capped.any():
+        kids = np.flatnonzero(prep.parent >= 0)
+        np.add.at(cap, (prep.parent[kids], prep.kind[kids]), 1)
+        cut = frame_cut(prep)
+        for s in range(len(prep.domains)):
+            ids = np.flatnonzero(prep.source == s)
+            c = ids[cut[ids]]
+            for k in np.unique(prep.kind[c]):
+                same = ids[prep.kind[ids] == k]
+                cap[c[prep.kind[c] == k]] = cap[same].max(axis=0)
+    prep._ring_caps = (capped, reach, cap)
+    return prep._ring_caps
+
+
+RING_CAP_HELD = 0.75
+"""... and when at least this share of their parents whose ring the exemplar's frame leaves
+whole hold two or more of them (:func:`ring_groups`' ``held``): a ring, not a contact."""
+
+
+def frame_cut(prep: Prepared) -> np.ndarray:
+    """(n,) bool: exemplar elements whose ring of children the exemplar's frame may cut:
+    nearer their domain's edge (holes too) than their farthest child plus that child's
+    collision radius, or than 1.2 times their exemplar's median child distance (which
+    covers an element without a child in the frame). Computed once per ``prep``."""
+    got = getattr(prep, "_frame_cut", None)
+    if got is not None and len(got) == len(prep.kind):
+        return got
+    import shapely
+
+    n = len(prep.kind)
+    out = np.zeros(n, bool)
+    kids = np.flatnonzero(prep.parent >= 0)
+    dist = np.hypot(*(prep.pos[kids] - prep.pos[prep.parent[kids]]).T)
+    far = np.zeros(n)
+    np.maximum.at(far, prep.parent[kids], dist + prep.rc[kids])
+    for s, dom in enumerate(prep.domains):
+        ids = np.flatnonzero(prep.source == s)
+        own = prep.source[kids] == s
+        if len(ids) == 0 or dom is None:
+            continue
+        r = np.maximum(far[ids], 1.2 * np.median(dist[own]) if own.any() else 0.0)
+        out[ids[shapely.distance(shapely.boundary(dom), shapely.points(prep.pos[ids])) < r]] = True
+    prep._frame_cut = out
+    return out
+
+
+def ring_groups(prep: Prepared) -> list[dict]:
+    """The groups :func:`ring_caps` may cap: children of a larger size class
+    (``Prepared.parent``, not voids) per (kind, parent kind, exemplar), each a dict with
+    ``members`` (element indices), ``share`` (of their kind in their exemplar), ``cv``
+    (std / mean of their distances to their parents), ``gated`` (at least 3 members,
+    share >= :data:`RING_CAP_SHARE`, cv <= :data:`RING_CAP_CV`), ``parents`` (how many
+    elements hold them) and ``held``: the share of those parents that hold two or more
+    of them, among the parents whose ring the frame leaves whole (:func:`frame_cut`;
+    among all of them where the frame cuts every one); computed for gated groups only
+    (nan elsewhere).
+
+    Notes
+    -----
+    The guard ``held >= RING_CAP_HELD`` (helper s67c) keeps the cap to rings. Without
+    it s65c's cap also took one-distance contacts: medium stones touching large ones in
+    ``--harder`` three sizes h6 (size 150, counts 80:20:30; 8 of variant seeds 7-40,
+    h6s19 among them: 12 of 14 medium stones, 8 large stones holding one and 2 holding
+    two, which cost ``tests/synth/test_synth_s30h_far_top.py``), h11 (2 seeds),
+    ``--varied`` three sizes p1s11 and two sizes p3 (3 seeds). A ring generator puts at
+    least its smallest ring on every parent (clusters: ``ring_min`` dots, 2 to 7 in
+    the audits' sets), so every parent with a whole ring holds two or more; a contact
+    gives most large stones one. Measured on every exemplar s65c's gates pass (variant
+    seeds 7-40): every clusters exemplar holds 1.00, the contacts 0.14-0.62
+    (``benchmarks/results/s67c_notes.md``). Part of the departure from §5.1 described
+    at ``_grow._ring_full`` (the paper's growth has no cap).
+    """
+    has = np.flatnonzero((prep.parent >= 0) & ~prep.void)
+    has = has[prep.size_class[prep.parent[has]] != prep.size_class[has]]
+    if not len(has):
+        return []
+    par = prep.parent[has]
+    d = np.hypot(*(prep.pos[has] - prep.pos[par]).T)
+    pair = np.c_[prep.skind[has], prep.skind[par], prep.source[has]]
+    _, inv = np.unique(pair, axis=0, return_inverse=True)
+    inv = inv.ravel()
+    out = []
+    for g in np.unique(inv):
+        m = inv == g
+        c0 = has[m][0]
+        kin = np.sum((prep.kind == prep.kind[c0]) & (prep.source == prep.source[c0]) & ~prep.void)
+        gated = bool(m.sum() >= 3 and m.sum() >= RING_CAP_SHARE * kin and d[m].std() <= RING_CAP_CV * d[m].mean())
+        up, cnt = np.unique(par[m], return_counts=True)
+        held = np.nan
+        if gated:
+            whole = ~frame_cut(prep)[up]
+            held = float(np.mean(cnt[whole] >= 2)) if whole.any() else float(np.mean(cnt >= 2))
+        out.append({"members": has[m], "share": float(m.sum() / kin), "cv": float(d[m].std() / d[m].mean()), "gated": gated,
+                    "parents": len(up), "held": held})
+    return out
