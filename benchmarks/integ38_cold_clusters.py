@@ -1,0 +1,19 @@
+"""Cold first run (empty numba cache) of synth on the fidelity suite's clusters exemplar,
+where s67c's ring cap (``_kernels.ring_full``) compiles and acts.
+
+    NUMBA_CACHE_DIR=$(mktemp -d) PYTHONPATH=TREE/src:tests python benchmarks/integ38_cold_clusters.py
+"""
+
+import sys
+import time
+
+from strew_testing import fidelity_suite
+
+from strew import Region
+from strew.synth import synthesize
+
+t0, c0 = time.perf_counter(), time.process_time()
+ex = fidelity_suite().make_exemplar("clusters", rng=1)
+x0, y0, x1, y1 = ex.region.bounds
+out = synthesize(ex, region=Region.rectangle(3.5 * (x1 - x0), 3.5 * (y1 - y0)), rng=1)
+print(f"clusters cpu {time.process_time() - c0:.1f} wall {time.perf_counter() - t0:.1f} n {len(out)}", file=sys.stdout)
