@@ -859,11 +859,22 @@ of its count, for :func:`fill_room` to act on the kind (:data:`ROOM_SHARE` for t
 other passes that ask :func:`_room_rate` with ``smallest``). Extension of §5.1 for
 several sizes (§7): the smallest class is capped at its exemplar's density
 (:func:`_room_cap`) and takes only the output's rooms beyond the exemplar's rate, so a
-sparse exemplar's room needs no share test while no larger kind is short of its
-density (:func:`_larger_short`; then the room is that kind's, and the share test
-stays: three sizes --harder h10s15, medium stones at 0.84 and large at 1.33 of their
-density, took 70 small stones far from every medium one, nn[small>medium]
-0.074-0.081 against 0.0625 on seeds 1-3). Helper s25h: three sizes --harder h2s15
+sparse exemplar's room needs no share test. While a larger kind is short of its
+density (:func:`_larger_short`) the short kind takes its rooms first, the smallest class
+at :data:`ROOM_SHARE` beside it, and only then the smallest class at this share (a second
+pass of :func:`fill_room`, helper s68r). Helper s25h had the share test stay whenever a
+larger kind was short (three sizes --harder h10s15, medium stones at 0.84 and large at
+1.33 of their density, took 70 small stones far from every medium one, nn[small>medium]
+0.074-0.081 against 0.0625 on seeds 1-3); that came before the reach bound
+(:data:`SMALLEST_REACH_Q`, s26t), which now keeps the smallest class's rooms within the
+exemplar's reach of each larger class. Kept, it switched the smallest class off where
+the larger kind cannot use the room: --harder three sizes h8s41 (100:150:10), medium
+stones at 0.85-0.86 of their inner density but packed (room for one more medium on
+0.03 % of the interior), small at 0.87-0.90 with rooms for 112-134 more up to their
+density, fill_room added none; nn[small>small] 0.17-0.178 against 0.166 failed 4 of
+seeds 1-6 (6 of 6 pass with the second pass; ``benchmarks/results/s67t_notes.md``,
+``s68r_notes.md``). The class: a dart thrower throws the smallest class last,
+count-limited, into the pockets the larger ones leave. Helper s25h: three sizes --harder h2s15
 (60:30:40; the exemplar's rooms for a small stone 0.57 of its count) left small
 stones at 0.80 of their inner density after growth and 0.84 at the end (568 against
 the generator's 735 at the output's size), nn[small>small] 0.293 against 0.259, and
@@ -901,7 +912,9 @@ def _larger_short(state: SynthState) -> bool:
     below its exemplar's density by more than one standard error of its exemplar count
     (elements per area away from the frame, as ``_displace.fill_displaced`` counts
     them; one exemplar only, else True). Where one is, the room the output leaves is
-    that kind's, not the smallest class's (see :data:`ROOM_SHARE_SMALLEST`)."""
+    that kind's first: :func:`fill_room` gives the smallest class its wider share
+    (:data:`ROOM_SHARE_SMALLEST`) only in a second pass, once the short kind has taken
+    the rooms it fits."""
     from ._displace import _inner_density  # (lazy: _displace imports this module)
 
     prep = state.prep
@@ -1125,6 +1138,26 @@ def _room_cap(state: SynthState, k: int, any_class: bool = False) -> int | None:
 
 
 def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int:
+    """:func:`_fill_room` (see there), the smallest size class's kinds at
+    :data:`ROOM_SHARE` while a larger kind is short of its density
+    (:func:`_larger_short`), and then, where one was, once more at
+    :data:`ROOM_SHARE_SMALLEST`: the short larger kinds take the rooms they fit first,
+    the smallest class what they leave (in place); returns the number added.
+
+    Extension of §5.1 for several sizes (§7), helper s68r (issue 13 point 1): a dart
+    thrower throws the smallest class last, count-limited, into the pockets the larger
+    ones leave, so a pocket too small for a larger stone is the smallest class's even
+    while a larger kind is short (see :data:`ROOM_SHARE_SMALLEST`)."""
+    if not ROOM_FILL or state.n < 3 or state.region is None:
+        return 0
+    short = ROOM_SMALLEST and _larger_short(state)
+    added = _fill_room(state, room, since, ROOM_SHARE if short else ROOM_SHARE_SMALLEST)
+    if short and (room is None or added < room):
+        added += _fill_room(state, None if room is None else room - added, since, ROOM_SHARE_SMALLEST)
+    return added
+
+
+def _fill_room(state: SynthState, room: int | None, since: int, share: float) -> int:
     """Put an exemplar element of a kind its exemplar leaves (nearly) no room for
     (:func:`_room_rate`) into empty circles of the output where one fits, until the
     output's room for the kind per area is the exemplar's (in place); returns the
@@ -1168,9 +1201,8 @@ def fill_room(state: SynthState, room: int | None = None, since: int = 0) -> int
     ncls = int(prep.size_class.max()) + 1 if len(prep.size_class) else 1
     far = np.full((len(rate), ncls + 1), np.inf)  # a smallest kind's reach (_smallest_reach)
     if ROOM_SMALLEST:
-        # the smallest size class's saturated kinds too, capped at their density (_room_cap)
-        # (any share of rooms while no larger kind is short: see ROOM_SHARE_SMALLEST)
-        share = ROOM_SHARE_SMALLEST if not _larger_short(state) else ROOM_SHARE
+        # the smallest size class's saturated kinds too, capped at their density (_room_cap),
+        # at most ``share`` of their count in rooms (see fill_room and ROOM_SHARE_SMALLEST)
         # one size class: only once growth has finished (no horizon element left open;
         # see ROOM_ONE_CLASS): a brush segment grown a bounded number of iterations
         # (§5.4, ``max_iterations``) leaves open circles at its growth front that growth
