@@ -1194,8 +1194,6 @@ def _fill_room(state: SynthState, room: int | None, since: int, share: float) ->
     seeds, lost none; full runs in the commit message.
     """
     prep = state.prep
-    if not ROOM_FILL or state.n < 3 or state.region is None:
-        return 0
     rate = _room_rate(prep)
     cand = _saturated_candidates(prep)
     ncls = int(prep.size_class.max()) + 1 if len(prep.size_class) else 1
