@@ -50,7 +50,17 @@ import numpy as np
 
 from ._flow_holes import close_ring, open_ring
 from ._flow_kernels import boundary_distance
-from ._flow_net import _circumcentres, _delaunay_bonds, _phases, _place, _resolve, placed, relax_network, six_spacing
+from ._flow_net import (
+    _circumcentres,
+    _delaunay_bonds,
+    _phases,
+    _place,
+    _resolve,
+    placed,
+    relax_network,
+    six_spacing,
+    triangulation,
+)
 from ._flow_retry import _region_grid, interior_score, restore, snapshot
 from ._flow_shear import fitted_moves, undo_moves
 from ._near_kernels import ball_counts
@@ -133,11 +143,11 @@ def _score(g, grid: np.ndarray | None) -> tuple[float, float, int]:
 def _centre(g, pts: np.ndarray, skip) -> np.ndarray:
     """The circumcentre of the widest interior Delaunay triangle not tried before (see
     the module), (1, 2), or (0, 2) where none is left."""
-    from scipy.spatial import Delaunay, cKDTree
+    from scipy.spatial import cKDTree
 
     p = g.p
     L = g.l
-    s = Delaunay(pts).simplices
+    s = triangulation(pts, g).simplices  # (the one kept where these positions were triangulated: the same)
     a, b, c = pts[s[:, 0]], pts[s[:, 1]], pts[s[:, 2]]
     la, lb, lc = (np.hypot(*(u - v).T) for u, v in ((b, c), (c, a), (a, b)))
     ok = np.maximum(np.maximum(la, lb), lc) < 1.4 * L
@@ -213,7 +223,7 @@ def _fit(g, pts0: np.ndarray, cs: np.ndarray, held: np.ndarray) -> np.ndarray:
     pts = np.r_[pts0, cs]
     rg = g.region
     for _ in range(int(p.flow_densify_fit_rounds)):
-        e = _delaunay_bonds(pts, 1.4 * L)
+        e = _delaunay_bonds(pts, 1.4 * L, g)
         m = len(e)
         dv = pts[e[:, 1]] - pts[e[:, 0]]
         ln = np.maximum(np.hypot(dv[:, 0], dv[:, 1]), 1e-12 * L)

@@ -31,14 +31,16 @@ __all__ = ["close_gaps", "fill_holes", "side_stream"]
 
 def _circumcircles(g):
     """The placed elements, their Delaunay triangles and the triangles' circumradii."""
-    from scipy.spatial import Delaunay, QhullError
+    from scipy.spatial import QhullError
+
+    from ._flow_net import triangulation
 
     els = np.asarray([i for i in g.order if g.state[i] == ELEMENT], dtype=np.int64)
     if len(els) < 4:
         return None
     pts = g.pos[els]
     try:
-        tri = Delaunay(pts)
+        tri = triangulation(pts, g)  # (the one kept where these positions were triangulated: the same)
     except QhullError:  # all on one line: no cell
         return None
     s = tri.simplices

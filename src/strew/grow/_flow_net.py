@@ -117,9 +117,10 @@ def hexagonal_reference(ref) -> bool:
     return bool((deg[inner] == 6).mean() >= 0.9 and float(ln.std()) <= 0.1 * float(ln.mean()))
 
 
-#: grower -> (the positions' bytes, their triangulation): the last Delaunay
-#: triangulation made by :func:`triangulation` (kept outside the grower's state, so
-#: :func:`strew.grow._flow_retry.snapshot` does not copy it)
+#: grower -> [(the positions' bytes, their triangulation), ...]: the last
+#: :data:`TRI_KEEP` Delaunay triangulations made by :func:`triangulation`, the most
+#: recent first (kept outside the grower's state, so
+#: :func:`strew.grow._flow_retry.snapshot` does not copy them)
 _LAST_TRI: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
@@ -143,11 +144,27 @@ def triangulation(pts: np.ndarray, g=None):
         got = _LAST_TRI.get(g)
     except TypeError:  # (a stand-in that takes no weak reference)
         return Delaunay(pts)
-    if got is not None and got[0] == key:
-        return got[1]
+    if got is None:
+        got = _LAST_TRI[g] = []
+    for q, (k, tri) in enumerate(got):
+        if k == key:
+            if q:  # (the most recent first)
+                got.insert(0, got.pop(q))
+            return tri
     tri = Delaunay(pts)
-    _LAST_TRI[g] = (key, tri)
+    got.insert(0, (key, tri))
+    del got[TRI_KEEP:]
     return tri
+
+
+#: how many triangulations :func:`triangulation` keeps per grower, the most recent
+#: first. (g70v, issue 14 point 5: the passes of :mod:`strew.grow._flow_gaps` and
+#: :mod:`strew.grow._flow_densify` triangulate positions that a band pass or another
+#: measure had triangulated a few calls before: 7 of the 38 triangulations of the
+#: hexflow growth were of positions triangulated already, all found with 16 kept, one
+#: missed with 8. The same input, so the same triangulation: byte-identical output. A
+#: triangulation of n points holds some 130 n bytes: 16 of 3,000 elements, 6 MB.)
+TRI_KEEP = 16
 
 
 def _delaunay_bonds(pts: np.ndarray, cut: float, g=None) -> np.ndarray:
@@ -400,6 +417,7 @@ def _touching(g, a: np.ndarray, b: np.ndarray, pa: np.ndarray, pb: np.ndarray, l
     the line between them, within ``lo``-``hi`` (m,), at which the two outlines do not
     intersect, by bisection (``steps`` halvings of ``hi - lo``); ``lo`` where they do
     not at ``lo``, ``inf`` where they still do at ``hi``."""
+    import shapely
     from shapely import get_coordinates, intersects, set_coordinates
 
     L = g.l
@@ -410,13 +428,40 @@ def _touching(g, a: np.ndarray, b: np.ndarray, pa: np.ndarray, pb: np.ndarray, l
     cb, ib = get_coordinates(B, return_index=True)
     rel = cb - pb[ib]  # (each outline about its own centre)
 
-    def hits(t: np.ndarray, k: np.ndarray) -> np.ndarray:
+    def shapely_hits(t: np.ndarray, k: np.ndarray) -> np.ndarray:
         # (the outlines of the pairs ``k``, ``b``'s centre ``t`` from ``a``'s along the line)
         at = np.full(len(a), -1, dtype=np.intp)
         at[k] = np.arange(len(k))
         sel = at[ib] >= 0
         moved = set_coordinates(B[k].copy(), rel[sel] + (pa[k] + t[:, None] * u[k])[at[ib[sel]]])
         return intersects(A[k], moved)
+
+    hits = shapely_hits
+    if len(a) and _simple_polygons(A) and _simple_polygons(B):
+        # (the pairs decided in one compiled call, intersect_certain, with room far
+        # above the coordinates' rounding: shapely's answers; the few it cannot decide,
+        # a vertex within 1e-9 mean edges of the other's boundary, go to shapely as
+        # before. Issue 14 point 5: the bisection's shapely calls were 4 % of the
+        # hexflow growth, benchmarks/results/g70v_profile_main_spy.txt)
+        from ._overlap_kernels import intersect_certain
+
+        ca = get_coordinates(A)
+        oa = np.zeros(len(a) + 1, dtype=np.int64)
+        np.cumsum(shapely.get_num_coordinates(A), out=oa[1:])
+        ob = np.zeros(len(b) + 1, dtype=np.int64)
+        np.cumsum(shapely.get_num_coordinates(B), out=ob[1:])
+        rel_c = np.ascontiguousarray(rel)
+        tol = 1e-9 * L
+
+        def hits(t: np.ndarray, k: np.ndarray) -> np.ndarray:
+            k = np.ascontiguousarray(k, dtype=np.int64)
+            got = np.empty(len(k), dtype=np.int8)
+            intersect_certain(ca, oa, rel_c, ob, k, np.ascontiguousarray(pa[k] + t[:, None] * u[k]), tol, got)
+            out = got > 0
+            unsure = np.flatnonzero(got < 0)
+            if len(unsure):
+                out[unsure] = shapely_hits(t[unsure], k[unsure])
+            return out
 
     lo = np.asarray(lo, dtype=float).copy()
     hi = np.asarray(hi, dtype=float).copy()
@@ -436,6 +481,13 @@ def _touching(g, a: np.ndarray, b: np.ndarray, pa: np.ndarray, pb: np.ndarray, l
         hi[k] = np.where(h, hi[k], t)
     out[k] = hi[k]
     return out
+
+
+def _simple_polygons(gs: np.ndarray) -> bool:
+    """Are all of ``gs`` polygons without holes (each one closed ring of coordinates)?"""
+    import shapely
+
+    return bool(((shapely.get_type_id(gs) == 3) & (shapely.get_num_interior_rings(gs) == 0)).all())
 
 
 def _contact_lengths(g, els: np.ndarray, e: np.ndarray, pts: np.ndarray, held: np.ndarray, shortest: float) -> np.ndarray:
