@@ -342,7 +342,10 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: 
         if not all(g.fits_domain(g.geom[o]) for o in moves):
             undo()
             return None, undo
-        hits = {o: g.overlapping(o) for o in moves}
+        # (the same pairs as g.overlapping(o) for each o, in one query: the lists'
+        # order does not matter below, each pair's weight is multiplied alike)
+        each = g.overlapping_each(list(moves))
+        hits = {o: each.get(o, []) for o in moves}
         if max_hits is not None and sum(1 for h in hits.values() if h) > max_hits:
             # (too crowded a fit to be freed by turns or a refit: given up at once)
             undo()
@@ -350,7 +353,8 @@ def _relax_around(g, cx: float, cy: float, ring: list[int], reach: float, taut: 
         turn_by = float(p.flow_hole_turn if turn is None else turn)
         if any(hits.values()) and turn_by > 0:
             _turn_free(g, hits, turn_by)
-            hits = {o: g.overlapping(o) for o in moves}
+            each = g.overlapping_each(list(moves))
+            hits = {o: each.get(o, []) for o in moves}
         if not any(hits.values()):
             return (float(new[k0, 0]), float(new[k0, 1])), undo
         undo()

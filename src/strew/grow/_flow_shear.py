@@ -199,7 +199,7 @@ def _settle(g, moves: dict, old: dict) -> None:
         g.geom[o] = geom
         check.append(o)
     while check:
-        hits = {o: h for o in check if (h := g.overlapping(o))}
+        hits = g.overlapping_each(check)  # (the same pairs: used as sets)
         back: set[int] = set()
         for o, hs in hits.items():
             back.add(o)

@@ -35,6 +35,13 @@ def _skewed(p: Sequence[float], q: Sequence[float], r: Sequence[float]) -> bool:
 
 
 
+
+#: up to this many values np.mean sums one after another from 0.0 (numpy's pairwise
+#: sum takes eight at a time only from eight on), so a Python sum in order over the
+#: count is np.mean to the bit (``_Place.choose``'s carried frame; checked in
+#: tests/grow/test_grow_g70v_flow_kernels.py)
+_MEAN_EXACT = 7
+
 class _Place:
     """The seed priority (§5.1), matching (§5.2, §5.3) and placement (§5.4)."""
 
@@ -286,15 +293,27 @@ class _Place:
                 # fit): the lattice turns with the field.
                 # the field at each neighbour where it was placed (``_bent_ring``)
                 fa = self._flow_at
-                va = np.array([fa[j] if j in fa else math.nan for j in nb_arr.tolist()])
-                miss = np.isnan(va)
-                if miss.any():
-                    v = np.asarray(self.p.flow(self.pos[nb_arr[miss]]), dtype=float)
-                    va[miss] = np.arctan2(v[:, 1], v[:, 0])
-                # a line field: the neighbours' mean direction with the seed's sign
-                dd = va - flow_theta
-                dd = dd - np.pi * np.round(dd / np.pi)
-                carry = -float(np.mean(dd))
+                got = [fa.get(j) for j in nb_arr.tolist()]
+                if len(got) <= _MEAN_EXACT and None not in got:
+                    # (the same sums in Python floats: np.mean of up to seven values is
+                    # their sum from 0.0 in order over the count, and np.round at no
+                    # decimals rounds half to even as round() does; the numpy calls
+                    # cost more than the sums. Issue 14 point 5, g70v)
+                    tot = 0.0
+                    for v in got:
+                        d = v - flow_theta
+                        tot += d - math.pi * round(d / math.pi)
+                    carry = -(tot / len(got))
+                else:
+                    va = np.array([math.nan if v is None else v for v in got])
+                    miss = np.isnan(va)
+                    if miss.any():
+                        v = np.asarray(self.p.flow(self.pos[nb_arr[miss]]), dtype=float)
+                        va[miss] = np.arctan2(v[:, 1], v[:, 0])
+                    # a line field: the neighbours' mean direction with the seed's sign
+                    dd = va - flow_theta
+                    dd = dd - np.pi * np.round(dd / np.pi)
+                    carry = -float(np.mean(dd))
                 if abs(carry) > 1e-12:
                     cc, ss = math.cos(carry), math.sin(carry)
                     turned = np.empty_like(rel)  # (np.c_ costs more than the turn)
@@ -853,7 +872,7 @@ class _Place:
         a = np.arctan2(v[:, 1], v[:, 0])
         self._flow_at[s] = float(a[0])  # for the frame carried on from s (``choose``)
         d = a[1:] - a[0]
-        d = d - np.pi * np.round(d / np.pi)  # a line field: +-pi/2 (direction sign free)
+        d = d - np.pi * np.rint(d / np.pi)  # a line field: +-pi/2 (direction sign free; np.round's values)
         t = math.atan2(sn, c) + self.p.flow_bend * d
         ct, st = np.cos(t), np.sin(t)
         out = np.empty((len(rel), 2))
