@@ -37,7 +37,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from .._kernels.grid import GONE, HashGrid, hash_cross, hash_near
-from ._index_kernels import edge_insert, near_one
+from ._index_kernels import cross_any, edge_insert, near_one
 
 __all__ = ["GrowIndex"]
 
@@ -190,6 +190,17 @@ class GrowIndex:
         if ec.n == 0:
             return False
         return hash_cross(float(pa[0]), float(pa[1]), float(pb[0]), float(pb[1]), ia, ib, self.cell, ec.head, ec.ent, ec.cur, ec.ext, self.ends, self.pos)
+
+    def crosses_plane_any(self, ia: int, pa: Sequence[float], ibs: Sequence[int], pbs: Sequence[Sequence[float]]) -> bool:
+        """:meth:`crosses_plane` of the segments from ``pa`` to each of ``pbs`` (ends
+        ``ia``, ``ibs[k]``): does any cross an edge? One compiled call for all (the same
+        answers; the tests are pure, so their order does not matter)."""
+        ec = self.edge_cells
+        if ec.n == 0 or not len(pbs):
+            return False
+        qs = np.array(pbs, dtype=np.float64).reshape(-1, 2)
+        tbs = np.array(ibs, dtype=np.int64)
+        return cross_any(float(pa[0]), float(pa[1]), qs, ia, tbs, self.cell, ec.head, ec.ent, ec.cur, ec.ext, self.ends, self.pos)
 
     def crosses(self, ia: int, pa: Sequence[float], ib: int, pb: Sequence[float], tile: tuple[float, float, float, float] | None = None, margin: float = 0.0) -> bool:
         """Edge collision (§5.4, Fig. 6d): does segment pa-pb cross an existing edge at a

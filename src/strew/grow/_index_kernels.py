@@ -24,7 +24,7 @@ import math
 
 import numba
 
-from .._kernels.grid import GONE, HASH_X, HASH_Y, hash_insert_box, hash_span
+from .._kernels.grid import GONE, HASH_X, HASH_Y, hash_cross, hash_insert_box, hash_span
 
 
 @numba.njit(cache=True, nogil=True)
@@ -86,3 +86,14 @@ def near_one(x, y, r, classes, limit, h, head, ent, cur, ext, pos, cls, out_i): 
                             found += 1
                 e = ent[e, 3]
     return found
+
+
+@numba.njit(cache=True, nogil=True)
+def cross_any(px, py, qs, ta, tbs, h, head, ent, cur, ext, ends, pos):  # pragma: no cover - numba
+    """Does any segment from (px, py) to ``qs[k]`` (tagged ``ta``, ``tbs[k]``) cross an
+    edge of the grid (:func:`strew._kernels.grid.hash_cross` for each, in one call:
+    ``GrowIndex.crosses_plane_any``; g70v, issue 14 point 5)?"""
+    for k in range(qs.shape[0]):
+        if hash_cross(px, py, qs[k, 0], qs[k, 1], ta, tbs[k], h, head, ent, cur, ext, ends, pos):
+            return True
+    return False

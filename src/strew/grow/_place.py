@@ -972,6 +972,14 @@ class _Place:
         if self.spray_area is not None and not shapely.contains_xy(self.spray_area, fx, fy):
             return
         plane, bnd, oo = self.tile is None, self.boundary is not None, self.orig_of
+        if plane and not bnd:
+            # (the edge tests of every neighbour in one compiled call: the same answers,
+            # some 4.5 calls fewer per placement; g70v, issue 14 point 5)
+            nbrs = list(self.adj[s])
+            if self.index.crosses_plane_any(oo[s], (fx, fy), [oo[o] for o in nbrs], [xy[o] for o in nbrs]):
+                return
+            self._move(s, fx, fy)
+            return
         for o in self.adj[s]:
             po = xy[o]
             if ((self.index.crosses_plane(oo[s], (fx, fy), oo[o], po) if plane else self.crosses_edges(s, (fx, fy), o, po))
