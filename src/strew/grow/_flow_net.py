@@ -117,17 +117,20 @@ def hexagonal_reference(ref) -> bool:
     return bool((deg[inner] == 6).mean() >= 0.9 and float(ln.std()) <= 0.1 * float(ln.mean()))
 
 
-#: grower -> [(the positions' bytes, their triangulation), ...]: the last
-#: :data:`TRI_KEEP` Delaunay triangulations made by :func:`triangulation`, the most
-#: recent first (kept outside the grower's state, so
-#: :func:`strew.grow._flow_retry.snapshot` does not copy them)
+#: grower -> (the positions' bytes, their triangulation): the last Delaunay
+#: triangulation made by :func:`triangulation` (kept outside the grower's state, so
+#: :func:`strew.grow._flow_retry.snapshot` does not copy it)
 _LAST_TRI: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+#: grower -> [(the positions' bytes, their triangulation), ...]: the
+#: :data:`TRI_KEEP` - 1 triangulations made before the last, the most recent first
+_OLDER_TRI: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def triangulation(pts: np.ndarray, g=None):
-    """``scipy.spatial.Delaunay(pts)``; with the grower ``g``, the one made last for
-    it where ``pts`` holds the same values (compared by bytes: the same input, so the
-    same triangulation).
+    """``scipy.spatial.Delaunay(pts)``; with the grower ``g``, the one made for it
+    where ``pts`` held the same values, if it is among the last :data:`TRI_KEEP`
+    (compared by bytes: the same input, so the same triangulation).
 
     (Issue 14 point 5: a band pass triangulates the positions it starts from twice,
     for its bonds (:func:`_delaunay_bonds`) and for the empty circles
@@ -144,16 +147,24 @@ def triangulation(pts: np.ndarray, g=None):
         got = _LAST_TRI.get(g)
     except TypeError:  # (a stand-in that takes no weak reference)
         return Delaunay(pts)
-    if got is None:
-        got = _LAST_TRI[g] = []
-    for q, (k, tri) in enumerate(got):
+    if got is not None and got[0] == key:
+        return got[1]
+    older = _OLDER_TRI.get(g)
+    if older is None:
+        older = _OLDER_TRI[g] = []
+    for q, (k, tri) in enumerate(older):
         if k == key:
-            if q:  # (the most recent first)
-                got.insert(0, got.pop(q))
+            # (kept from a few triangulations before: the most recent again)
+            older.pop(q)
+            if got is not None:
+                older.insert(0, got)
+            _LAST_TRI[g] = (k, tri)
             return tri
     tri = Delaunay(pts)
-    got.insert(0, (key, tri))
-    del got[TRI_KEEP:]
+    if got is not None:
+        older.insert(0, got)
+        del older[TRI_KEEP - 1 :]
+    _LAST_TRI[g] = (key, tri)
     return tri
 
 
