@@ -42,7 +42,8 @@ def test_hard_core_reads_a_saturated_throw_and_not_a_lattice():
     nn = _stone_nn(g)
     assert not hard_core(nn)
     assert lattice_like(nn)
-    assert not hard_core(np.array([1.0, 1.0]))  # too few
+    assert not hard_core(np.zeros(0))
+    assert not hard_core(np.array([0.0, 1.0, 1.2, 1.3]))  # a least distance of 0
 
 
 def test_saturated_stones_keep_their_least_distance_rule():

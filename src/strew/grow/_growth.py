@@ -548,11 +548,10 @@ def hard_core(nn: np.ndarray) -> bool:
     The test :func:`lattice_like` makes: the nearest tenth of the distances over the
     least one (the floor, q10 / least - 1) by at most :data:`HARD_CORE_SHAPE` of the
     tail beyond it (q90 / q10 - 1), the tail at least :data:`HARD_CORE_TAIL`. False for
-    fewer than 3 distances or a non-positive least one.
+    no distances or a least one of 0.
     """
     nn = np.asarray(nn, dtype=float)
-    nn = nn[np.isfinite(nn)]
-    if len(nn) < 3 or float(nn.min()) <= 0.0:
+    if len(nn) == 0 or float(nn.min()) <= 0.0:
         return False
     lo, q10, q90 = float(nn.min()), float(np.quantile(nn, 0.1)), float(np.quantile(nn, 0.9))
     floor, tail = q10 / lo - 1.0, q90 / q10 - 1.0
