@@ -2233,6 +2233,11 @@ density target needs no such prediction. ``benchmarks/results/s69h_notes.md``.""
 _TWO_CLASS_AREA_SE = 0.0
 """Poisson errors of the exemplar's counted count of the larger class (prototype)."""
 
+_TWO_CLASS_NN_SHARE = 0.25
+"""s70h: where the larger class's share of the exemplar is under this, it is also owed while
+the grown core's smaller elements stand farther (median) from their nearest larger one
+than the exemplar's as the judge reads it (nn[small>large]); 0: off."""
+
 _TWO_CLASS_EMPTY_Q = 0.99
 """Quantile of the exemplar's inner empty-space distances (grid point to nearest centre)
 taken as the reach that covers a grown area (prototype)."""
@@ -2283,7 +2288,11 @@ def _judge_count(prep, s: int, top: int):
     ti = [kinds.index(k) for k in topk]
     dens = float(np.sum(st.density[ti]))
     n = int(np.sum(np.isin(np.array(arr.kinds)[arr.kind[vis]], topk)))
-    return dens, n, max(FD.RESULT_MARGIN * sc, ex.wall)
+    # the exemplar's median distance from a smaller-class element to the nearest larger one
+    # as the judge reads it (nn[small>large], s70h); nan unless each class is one kind
+    low = [kinds.index(k) for k in kinds if k not in topk]
+    nnmed = float(st.nn[low[0], ti[0]][4]) if len(ti) == 1 and len(low) == 1 else float("nan")
+    return dens, n, max(FD.RESULT_MARGIN * sc, ex.wall), nnmed
 
 
 def _two_class_target(prep):
@@ -2318,7 +2327,7 @@ def _two_class_target(prep):
             if _TWO_CLASS_JUDGE:
                 got = _judge_count(prep, s, top)
                 if got is not None:
-                    dens, n_big, wall_m = got
+                    dens, n_big, wall_m, nnmed = got
             # empty-space reach: grid over the inner frame, distance to the nearest centre
             d = cKDTree(xy).query(xy, k=2)[0][:, 1]
             cell = 0.5 * float(np.median(d))
@@ -2328,7 +2337,10 @@ def _two_class_target(prep):
             g = g[shapely.contains_xy(inner, g[:, 0], g[:, 1])]
             emp = cKDTree(xy).query(g)[0] if len(g) else np.zeros(1)
             er = float(np.quantile(emp, _TWO_CLASS_EMPTY_Q))
-            res = (dens, n_big, er, cell, wall_m if got is not None else 0.0)
+            share_top = float(np.mean(cls == top))
+            if got is None or not share_top < _TWO_CLASS_NN_SHARE:
+                nnmed = float("nan")
+            res = (dens, n_big, er, cell, wall_m if got is not None else 0.0, nnmed)
     _AREA_CACHE.clear()
     _AREA_CACHE[key] = (prep, res)
     return res
@@ -2337,24 +2349,72 @@ def _two_class_target(prep):
 def _owed_by_area(state: SynthState):
     """Whether the larger of two classes is owed by count per grown area (prototype,
     :data:`_TWO_CLASS_AREA`); None: fall back to the share bound."""
-    from scipy import ndimage
-
     prep = state.prep
     tgt = _two_class_target(prep)
     if tgt is None or state.region is None or state.n == 0:
         return None
-    dens, n_big, er, cell, wall_m = tgt
+    dens, n_big, er, cell, wall_m, nnmed = tgt
     keep = ~prep.void[state.src] & ~state.ghost[: state.n]
     pos = state.pos[keep]
     cls = prep.size_class[state.src[keep]]
     if len(pos) < 4:
         return None
     geom = state.region.geometry
-    x0, y0, x1, y1 = geom.bounds
-    xs = np.arange(x0 + 0.5 * cell, x1, cell)
-    ys = np.arange(y0 + 0.5 * cell, y1, cell)
-    gx, gy = np.meshgrid(xs, ys)
-    inside = shapely.contains_xy(geom, gx.ravel(), gy.ravel()).reshape(gx.shape)
+    # the core grid is computed once per growth iteration (s70h), not per conflict split;
+    # the region's grid and its distance to the boundary once per region
+    key = (id(state), state.iterations, state.grow_start, id(geom))
+    hit = _CORE_CACHE.get("core")
+    if hit is not None and hit[0] == key and hit[1] is geom:
+        core, x0, y0, xs, ys, area = hit[2]
+    else:
+        core, x0, y0, xs, ys, area = _grown_core(geom, pos, cell, er, wall_m)
+        _CORE_CACHE["core"] = (key, geom, (core, x0, y0, xs, ys, area))
+    if dens * area < 4.0:
+        return None
+    big = cls == int(prep.size_class.max())
+    ix = np.clip(((pos[big, 0] - x0) / cell).astype(int), 0, len(xs) - 1)
+    iy = np.clip(((pos[big, 1] - y0) / cell).astype(int), 0, len(ys) - 1)
+    n_out = int(core[iy, ix].sum())
+    bound = dens * (1.0 + _TWO_CLASS_AREA_SE / np.sqrt(max(n_big, 1)))
+    owed = n_out < bound * area
+    if not owed and np.isfinite(nnmed) and n_out > 0:
+        # a rare larger class: also owed while the grown core's smaller elements stand
+        # farther from their nearest larger one than the exemplar's median (s70h)
+        small = ~big
+        sx = np.clip(((pos[small, 0] - x0) / cell).astype(int), 0, len(xs) - 1)
+        sy = np.clip(((pos[small, 1] - y0) / cell).astype(int), 0, len(ys) - 1)
+        ps = pos[small][core[sy, sx]]
+        if len(ps) >= 20:
+            d = cKDTree(pos[big]).query(ps)[0]
+            owed = bool(np.median(d) > nnmed)
+    if _AREA_LOG is not None:
+        _AREA_LOG.append((state.iterations, state.n, n_out, int(big.sum()), area, float('nan'), dens, bound, owed))
+    return bool(owed)
+
+
+_CORE_CACHE: dict = {}
+
+
+def _grown_core(geom, pos, cell, er, wall_m):
+    """(core, x0, y0, xs, ys, area): the grid of the grown core (see :func:`_owed_by_area`)."""
+    from scipy import ndimage
+
+    rkey = (id(geom), cell, wall_m)
+    rg = _CORE_CACHE.get("region")
+    if rg is not None and rg[0] == rkey and rg[1] is geom:
+        x0, y0, xs, ys, gx, gy, inside, edge_ok = rg[2]
+    else:
+        x0, y0, x1, y1 = geom.bounds
+        xs = np.arange(x0 + 0.5 * cell, x1, cell)
+        ys = np.arange(y0 + 0.5 * cell, y1, cell)
+        gx, gy = np.meshgrid(xs, ys)
+        inside = shapely.contains_xy(geom, gx.ravel(), gy.ravel()).reshape(gx.shape)
+        edge_ok = np.ones_like(inside)
+        if _TWO_CLASS_MARGIN_OUT and wall_m > 0:
+            # the judge counts the result only beyond its margin from the region's boundary
+            edge = shapely.distance(geom.boundary, shapely.points(np.c_[gx.ravel(), gy.ravel()])).reshape(gx.shape)
+            edge_ok = edge > wall_m
+        _CORE_CACHE["region"] = (rkey, geom, (x0, y0, xs, ys, gx, gy, inside, edge_ok))
     dist = cKDTree(pos).query(np.c_[gx.ravel(), gy.ravel()], distance_upper_bound=er)[0].reshape(gx.shape)
     covered = np.isfinite(dist) & inside
     if _TWO_CLASS_FILL:
@@ -2367,21 +2427,9 @@ def _owed_by_area(state: SynthState):
         core = covered
     else:
         core = covered & (ndimage.distance_transform_edt(~free) * cell > er)
-    if _TWO_CLASS_MARGIN_OUT and wall_m > 0:
-        # the judge counts the result only beyond its margin from the region's boundary
-        edge = shapely.distance(geom.boundary, shapely.points(np.c_[gx.ravel(), gy.ravel()])).reshape(gx.shape)
-        core = core & (edge > wall_m)
+    core = core & edge_ok
     area = float(core.sum()) * cell * cell
-    if dens * area < 4.0:
-        return None
-    big = cls == int(prep.size_class.max())
-    ix = np.clip(((pos[big, 0] - x0) / cell).astype(int), 0, len(xs) - 1)
-    iy = np.clip(((pos[big, 1] - y0) / cell).astype(int), 0, len(ys) - 1)
-    n_out = int(core[iy, ix].sum())
-    bound = dens * (1.0 + _TWO_CLASS_AREA_SE / np.sqrt(max(n_big, 1)))
-    if _AREA_LOG is not None:
-        _AREA_LOG.append((state.iterations, state.n, n_out, int(big.sum()), area, float(covered.sum()) * cell * cell, dens, bound, n_out < bound * area))
-    return bool(n_out < bound * area)
+    return core, x0, y0, xs, ys, area
 
 
 _AREA_LOG = None  # a list: (iteration, n, counted larger, all larger, core area, covered area, target, bound, owed) per call (probes)
