@@ -2207,8 +2207,9 @@ def owed_classes(state: SynthState) -> np.ndarray:
     return owed
 
 
-_TWO_CLASS_AREA = False
-"""Prototype (helper s69h, issue 13 point 1; off, not landed): for an exemplar of exactly
+_TWO_CLASS_AREA = True
+"""Helper s69h's rule (issue 13 point 1), on since helper s70h (with :data:`_TWO_CLASS_NN_SHARE`
+and the core cached per growth iteration): for an exemplar of exactly
 two size classes (one selected exemplar), :func:`owed_classes` owes the larger class while
 the output's count of it per grown area is under the exemplar's density of it as the
 fidelity metric counts it (:func:`_judge_count`: ``strew._fidelity``'s own ``_stats`` of
