@@ -2235,9 +2235,17 @@ _TWO_CLASS_AREA_SE = 0.0
 """Poisson errors of the exemplar's counted count of the larger class (prototype)."""
 
 _TWO_CLASS_NN_SHARE = 0.25
-"""s70h: where the larger class's share of the exemplar is under this, it is also owed while
-the grown core's smaller elements stand farther (median) from their nearest larger one
-than the exemplar's as the judge reads it (nn[small>large]); 0: off."""
+"""Helper s70h (issue 13 point 1): where the larger class's share of the exemplar is under
+this, :func:`_owed_by_area` also owes it while the grown core's smaller elements stand
+farther (median) from their nearest larger one than the exemplar's median as the fidelity
+metric reads it (nn[small>large], :func:`_judge_count`); 0: off.
+
+Departure from §5.1 / §7 (placement by copies, one share per class): a second owed test.
+A rare larger class (--varied two_sizes p1/p2, share 0.07-0.14) stopped at the exemplar's
+counted density ends 10-14 % under the count the exemplar's own generator reaches at the
+output's size, and its pebbles stand too far from it (p2s33 nn[pebble>stone] 0.203 / 0.173,
+p2s34 0.196 / 0.125); at that count the stones' placement (their spacing, clumping, the
+pebbles beside them) matches the generator's (``benchmarks/results/s70h_notes.md``)."""
 
 _TWO_CLASS_EMPTY_Q = 0.99
 """Quantile of the exemplar's inner empty-space distances (grid point to nearest centre)
@@ -2297,8 +2305,9 @@ def _judge_count(prep, s: int, top: int):
 
 
 def _two_class_target(prep):
-    """(density, count, reach, cell) of the larger of two classes in the one selected
-    exemplar, counted beyond the judge's wall reach; None when not applicable."""
+    """(density, count, reach, cell, result margin, nn median) of the larger of two classes
+    in the one selected exemplar, counted beyond the judge's wall reach (nn median: nan
+    unless its share is under :data:`_TWO_CLASS_NN_SHARE`); None when not applicable."""
     key = id(prep)
     hit = _AREA_CACHE.get(key)
     if hit is not None and hit[0] is prep:
