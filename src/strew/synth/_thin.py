@@ -223,7 +223,10 @@ Where the exemplar's small kind sits in pairs in the gaps between large ones (tw
 --varied p4s43: pebbles a minority, nearest-pebble deciles 11.6 ... 23.7), taking one of
 each close pair turns pairs into singles: 59 pebbles taken at seed 1, the pebbles'
 nearest-pebble median 16.8 -> 21.6, nn[pebble>pebble] 0.30 / 0.225 (``python
-benchmarks/s70p_stages.py two_sizes:p4s43 1``). The same count is taken either way."""
+benchmarks/s70p_stages.py two_sizes:p4s43 1``). The same count is taken either way, and no
+element whose removal opens an empty circle wider than the exemplar's largest (without
+that guard the choice took fill_holes' lone pebbles and two sizes p4s35, p4s39 failed
+empty_circle 0.156, 0.196 / 0.10)."""
 
 
 def _nn_deciles_counted(pos: np.ndarray, counted: np.ndarray, alive: np.ndarray, nbr: np.ndarray, nbr_d: np.ndarray) -> tuple:
@@ -290,21 +293,46 @@ def _match_nn(state: SynthState, vis: np.ndarray, of_k: np.ndarray, ins: np.ndar
     al[at[chosen]] = False
     if not err(al) > e0:
         return chosen
+    # no removal opens an empty circle wider than the exemplar's largest (the holes
+    # fill_holes has just filled, as THIN_KEEPS_HOLES_FILLED keeps them for thin_small)
+    from ._grow import largest_empty_circles  # (lazy: _grow imports this module)
+
+    prep = state.prep
+    lec = largest_empty_circles(prep)[int(np.flatnonzero(prep.selected)[0])]
+    limit = float(lec) if np.isfinite(lec) else np.inf
+    geom = state.region.geometry
+    vtree = cKDTree(state.pos[vis])
+    on = np.zeros(state.n, bool)
+    on[vis] = True
+
+    def opens(c: int) -> bool:
+        return np.isfinite(limit) and _opened_circle(state.pos, vis, on, vtree, int(vis[kk[c]]), geom) > limit
+
     # candidates in nearest-first order (chosen first, in their order), as ties fall
     rest = cand[~np.isin(cand, chosen)]
-    pool = list(at[np.concatenate([chosen, rest])])
+    pool = [int(c) for c in at[np.concatenate([chosen, rest])] if not opens(int(c))]
     out = []
     for _ in range(len(chosen)):
-        best, be = -1, np.inf
+        if not pool:
+            break
+        es = np.empty(len(pool))
         for j, c in enumerate(pool):
             alive[c] = False
-            e = err(alive)
+            es[j] = err(alive)
             alive[c] = True
-            if e < be - 1e-12:
-                best, be = j, e
-        c = pool.pop(best)
+        took = -1
+        for j in np.argsort(es, kind="stable"):
+            if not opens(pool[j]):
+                took = int(j)
+                break
+        if took < 0:
+            break
+        c = pool.pop(took)
         alive[c] = False
+        on[vis[kk[c]]] = False
         out.append(kk[c])
+    if len(out) < len(chosen):
+        return chosen  # too few may go without opening a wide hole: nearest first, as before
     return np.asarray(out, np.int64)
 
 
