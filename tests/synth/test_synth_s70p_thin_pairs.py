@@ -48,3 +48,17 @@ def test_match_nn_takes_as_many(monkeypatch):
     _, off = _run(1)
     assert on.counts() == off.counts()
     assert not np.array_equal(np.sort(on.xy, axis=0), np.sort(off.xy, axis=0))  # the choice acted here
+
+
+def test_match_nn_work_is_bounded(monkeypatch):
+    """Beyond ``MATCH_NN_WORK`` the passes take nearest first, so the choice's cost (which
+    grows as the cube of the output's size) stays bounded: at 5x the exemplar's side the
+    output equals the one without the choice, byte for byte (before the bound the choice acted
+    there: 78 of 841 candidates scored at every removal, 2.8 s of a 3.9 s synthesis)."""
+    ex = make_exemplar("two_sizes", rng=43, **P4)
+    x0, y0, x1, y1 = ex.region.bounds
+    region = Region.rectangle(5 * (x1 - x0), 5 * (y1 - y0))
+    on = synthesize(ex, region, rng=1, measure=False)
+    monkeypatch.setattr(TH, "THIN_MATCH_NN", False)
+    off = synthesize(ex, region, rng=1, measure=False)
+    assert np.array_equal(on.xy, off.xy) and on.counts() == off.counts()

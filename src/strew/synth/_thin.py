@@ -229,6 +229,17 @@ that guard the choice took fill_holes' lone pebbles and two sizes p4s35, p4s39 f
 empty_circle 0.156, 0.196 / 0.10)."""
 
 
+MATCH_NN_WORK = 2e7
+"""Bound on :func:`_match_nn`'s work, ``len(chosen) * len(cand) * n`` (removals x
+candidates x the kind's elements): its greedy choice scores every candidate at every
+removal against the whole kind's deciles, so its cost grows as the cube of the output's
+size (two sizes --varied p4s43, seed 1: 0.35 s at 3.5x the exemplar's side, n 857; 2.8 s at
+5x; 12.8 s at 7x, n 3,503, against 1.8 s for the whole synthesis without it). Above the
+bound the pass takes nearest first, as before s70p, so the choice costs at most about 0.75 s
+per pass (about 37 ns per unit of work) and a larger output keeps main's removal order.
+Measured in the stop-64 closing note (``benchmarks/integ39_thin_scale.py``)."""
+
+
 def _nn_deciles_counted(pos: np.ndarray, counted: np.ndarray, alive: np.ndarray, nbr: np.ndarray, nbr_d: np.ndarray) -> tuple:
     """(first alive neighbour's slot per element, deciles of the counted alive elements'
     nearest alive same-kind distance) from neighbour lists ``nbr`` / ``nbr_d`` (n, m)."""
@@ -268,6 +279,8 @@ def _match_nn(state: SynthState, vis: np.ndarray, of_k: np.ndarray, ins: np.ndar
 
     if not THIN_MATCH_NN or len(chosen) == 0:
         return chosen
+    if len(chosen) * len(cand) * int(of_k.sum()) > MATCH_NN_WORK:
+        return chosen  # the greedy choice would cost too much: nearest first (MATCH_NN_WORK)
     ex = _ex_nn_deciles(state.prep, k)
     if ex is None:
         return chosen
