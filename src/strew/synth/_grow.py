@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import time
+import weakref
 from collections.abc import Callable
 
 import numpy as np
@@ -2372,13 +2373,15 @@ def _owed_by_area(state: SynthState):
     geom = state.region.geometry
     # the core grid is computed once per growth iteration (s70h), not per conflict split;
     # the region's grid and its distance to the boundary once per region
+    # (the state itself is checked through a weak reference: an id alone can be reused by
+    # the next synthesis in the process, which would then read this one's core)
     key = (id(state), state.iterations, state.grow_start, id(geom))
     hit = _CORE_CACHE.get("core")
-    if hit is not None and hit[0] == key and hit[1] is geom:
+    if hit is not None and hit[0] == key and hit[1] is geom and hit[3]() is state:
         core, x0, y0, xs, ys, area = hit[2]
     else:
         core, x0, y0, xs, ys, area = _grown_core(geom, pos, cell, er, wall_m)
-        _CORE_CACHE["core"] = (key, geom, (core, x0, y0, xs, ys, area))
+        _CORE_CACHE["core"] = (key, geom, (core, x0, y0, xs, ys, area), weakref.ref(state))
     if dens * area < 4.0:
         return None
     big = cls == int(prep.size_class.max())
